@@ -1,0 +1,173 @@
+#include "exact/closure.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "exact/cone_lp.h"
+#include "exact/json.h"
+
+namespace wrenchkit {
+
+const char* property_name(Property p) {
+  return p == Property::force_closure ? "force_closure" : "form_closure";
+}
+
+Reading reading_of(Property p) {
+  return p == Property::force_closure ? Reading::friction : Reading::frictionless;
+}
+
+namespace {
+
+using Vec3 = std::array<Rational, 3>;
+
+Vec3 as_vec(const Wrench& w) { return {w.fx, w.fy, w.m}; }
+
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+Vec3 primitive_vec(const Vec3& v) {
+  const Rational in[3] = {v[0], v[1], v[2]};
+  Integer out[3];
+  primitive(in, out);
+  return {Rational(out[0]), Rational(out[1]), Rational(out[2])};
+}
+
+// [FC-3] A nonzero twist with power ≥ 0 against every generator.
+Vec3 negative_twist(const Dual_cone& dc, const std::vector<Generator>& gens) {
+  switch (dc.shape) {
+    case Dual_shape::lineality: {
+      if (dc.rank == 0) return {0, 0, 1};
+      if (dc.rank == 2)
+        return primitive_vec(cross(as_vec(gens[dc.basis[0]].w), as_vec(gens[dc.basis[1]].w)));
+      const Vec3 g = as_vec(gens[dc.basis[0]].w);  // rank 1: any t ⊥ g
+      for (int axis = 2; axis >= 0; --axis) {
+        Vec3 e{0, 0, 0};
+        e[axis] = 1;
+        const Vec3 t = cross(g, e);
+        if (t[0] != 0 || t[1] != 0 || t[2] != 0) return primitive_vec(t);
+      }
+      break;
+    }
+    case Dual_shape::polygon:
+    case Dual_shape::arc:
+    case Dual_shape::ray:
+      return primitive_vec(cross(as_vec(gens[dc.edges[0]].w), as_vec(gens[dc.edges[1]].w)));
+    case Dual_shape::zero:
+      break;
+  }
+  throw std::logic_error("negative_twist: no twist for this dual cone");
+}
+
+// [FC-2] Strictly positive weights on a rank-3 subset summing to zero, from the generators H
+// whose cone is already R³: with an independent triple b of H, solve −(g_b1 + g_b2 + g_b3) =
+// Σ μ_h g_h, μ ≥ 0 [FC-4]; then weights μ + 1_b are > 0 on b ∪ supp μ and sum the g's to zero.
+void positive_certificate(const std::vector<Generator>& gens, std::vector<std::size_t> H,
+                          Closure_certificate& cert) {
+  std::sort(H.begin(), H.end());
+  H.erase(std::unique(H.begin(), H.end()), H.end());
+  std::vector<Wrench> hw;
+  for (std::size_t h : H) hw.push_back(gens[h].w);
+  const Exact_kernel k(hw);
+  const Dual_cone basis_scan = compute_dual_cone(k);  // rank and basis of H
+  if (basis_scan.rank != 3 || basis_scan.shape != Dual_shape::zero)
+    throw std::logic_error("positive_certificate: the closing generators do not span R³");
+  const auto& b = basis_scan.basis;
+  Wrench target{-(hw[b[0]].fx + hw[b[1]].fx + hw[b[2]].fx),
+                -(hw[b[0]].fy + hw[b[1]].fy + hw[b[2]].fy),
+                -(hw[b[0]].m + hw[b[1]].m + hw[b[2]].m)};
+  Cone_membership lp = cone_membership(hw, target);
+  if (!lp.member) throw std::logic_error("positive_certificate: exact LP found no combination");
+  for (int i = 0; i < 3; ++i) lp.weights[b[i]] += 1;
+  // Scale to the smallest integer weights.
+  Integer l = 1, g = 0;
+  for (const Rational& w : lp.weights)
+    if (w != 0) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), w.get_den_mpz_t());
+  for (const Rational& w : lp.weights)
+    if (w != 0) {
+      const Integer num = w.get_num() * (l / w.get_den());
+      mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), num.get_mpz_t());
+    }
+  for (std::size_t i = 0; i < H.size(); ++i) {
+    if (lp.weights[i] == 0) continue;
+    const Rational w = Rational(lp.weights[i].get_num() * (l / lp.weights[i].get_den()) / g);
+    cert.combination.push_back({{gens[H[i]].contact, gens[H[i]].edge}, w});
+  }
+  for (int i = 0; i < 3; ++i) cert.independent[i] = {gens[H[b[i]]].contact, gens[H[b[i]]].edge};
+}
+
+}  // namespace
+
+Closure_answer decide_closure(const Scene& scene, Property property) {
+  const std::vector<Generator> gens = generators(scene, reading_of(property));
+  std::vector<Wrench> ws;
+  ws.reserve(gens.size());
+  for (const Generator& g : gens) ws.push_back(g.w);
+  const Exact_kernel kernel(ws);
+  const Dual_cone dc = compute_dual_cone(kernel);
+
+  Closure_answer a;
+  a.rank = dc.rank;
+  a.generators = gens.size();
+  a.shape = dc.shape;
+  a.holds = dc.force_closure();
+  a.certificate.property = property;
+  a.certificate.holds = a.holds;
+  if (a.holds) {
+    std::vector<std::size_t> H = dc.defining;
+    H.push_back(dc.closing);
+    positive_certificate(gens, std::move(H), a.certificate);
+  } else {
+    a.certificate.twist = negative_twist(dc, gens);
+  }
+  return a;
+}
+
+Twist_reading read_twist(const std::array<Rational, 3>& t) {
+  Twist_reading r;
+  const Rational& w = t[2];
+  if (w != 0) {
+    r.label = w > 0 ? '+' : '-';
+    r.point = {-t[1] / w, t[0] / w};
+  } else if (t[0] != 0 || t[1] != 0) {
+    const Rational in[3] = {-t[1], t[0], 0};
+    Integer out[3];
+    primitive(in, out);
+    r.point = {Rational(out[0]), Rational(out[1])};
+  }
+  return r;
+}
+
+std::string certificate_json(const Closure_certificate& c) {
+  auto q = [](const Rational& x) { return json::quote(to_string(x)); };
+  auto ref = [](const Generator_ref& g) {
+    return "\"contact\": " + std::to_string(g.contact) + ", \"edge\": \"" + edge_name(g.edge) + "\"";
+  };
+  std::string s = "{\"wrenchkit_certificate\": 1, \"property\": \"";
+  s += property_name(c.property);
+  s += "\", \"holds\": ";
+  if (c.holds) {
+    s += "true, \"combination\": [";
+    for (std::size_t i = 0; i < c.combination.size(); ++i) {
+      if (i) s += ", ";
+      s += "{" + ref(c.combination[i].first) + ", \"weight\": " + q(c.combination[i].second) + "}";
+    }
+    s += "], \"independent\": [";
+    for (int i = 0; i < 3; ++i) {
+      if (i) s += ", ";
+      s += "{" + ref(c.independent[i]) + "}";
+    }
+    s += "]}";
+  } else {
+    s += "false, \"twist\": [" + q(c.twist[0]) + ", " + q(c.twist[1]) + ", " + q(c.twist[2]) + "]";
+    const Twist_reading r = read_twist(c.twist);
+    if (r.label == 'i')
+      s += ", \"reading\": {\"label\": \"infinity\", \"direction\": [";
+    else
+      s += std::string(", \"reading\": {\"label\": \"") + r.label + "\", \"point\": [";
+    s += q(r.point[0]) + ", " + q(r.point[1]) + "]}}";
+  }
+  return s;
+}
+
+}  // namespace wrenchkit

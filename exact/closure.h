@@ -1,0 +1,68 @@
+// [FC-2] [FC-3] Force closure and first-order form closure, exact, with certificates.
+//
+// Force closure (Mason Def. 5.4): the possible resultants W = pos{contact wrench generators} are all
+// of R³, equivalently W* = {0} (theory.md §3–4). First-order form closure: the same contacts read
+// frictionless admit no nonzero first-order twist (theory.md §7), i.e. the frictionless cone is R³.
+//
+// Decision: core/dual_cone.h [FC-1] with the exact kernel. Every answer carries a certificate
+// (proofs/certificate-format.md):
+//   holds  — strictly positive rational weights on generators summing to the zero wrench, three of
+//            which have a nonzero determinant [FC-2]; found by the exact LP [FC-4] on the few
+//            generators that closed the dual cone;
+//   !holds — a nonzero twist with power ≥ 0 against every generator [FC-3]: an extreme ray of W*,
+//            or the normal of span W when rank W < 3.
+// Exact, never perturbed; every degenerate case of theory.md §5.6 is an ordinary input.
+// Complexity O(n·K) predicates (see dual_cone.h) plus O(K) exact work for the certificate.
+#pragma once
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/dual_cone.h"
+#include "exact/generators.h"
+
+namespace wrenchkit {
+
+enum class Property { force_closure, form_closure };
+const char* property_name(Property p);
+Reading reading_of(Property p);
+
+struct Generator_ref {
+  std::size_t contact = 0;
+  Edge edge = Edge::normal;
+};
+
+struct Closure_certificate {
+  Property property = Property::force_closure;
+  bool holds = false;
+  std::vector<std::pair<Generator_ref, Rational>> combination;  // holds: weights > 0
+  std::array<Generator_ref, 3> independent{};                   // holds
+  std::array<Rational, 3> twist;                                // !holds: primitive integers
+};
+
+struct Closure_answer {
+  bool holds = false;
+  int rank = 0;                  // rank of the generators
+  std::size_t generators = 0;    // number of generators under the reading
+  Dual_shape shape = Dual_shape::lineality;
+  Closure_certificate certificate;
+};
+
+Closure_answer decide_closure(const Scene& scene, Property property);
+
+// The certificate as JSON (format version 1), with the twist's reading as a labeled point or a
+// direction at infinity.
+std::string certificate_json(const Closure_certificate& c);
+
+// The twist read as a point of the two-sided plane, P(t) = (−vy, vx, w) (theory.md §2.2):
+// label '+' or '-' with the rotation centre, or 'i' (infinity) with a primitive direction
+// ((0, 0) for the zero twist, which is no certificate).
+struct Twist_reading {
+  char label = 'i';
+  std::array<Rational, 2> point;  // or direction
+};
+Twist_reading read_twist(const std::array<Rational, 3>& t);
+
+}  // namespace wrenchkit

@@ -1,0 +1,58 @@
+// [FC-0] Contact wrench generators (theory.md §4, §8.2) and the exact predicate kernel over them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/sign.h"
+#include "exact/scene.h"
+
+namespace wrenchkit {
+
+// Which cone a scene's contacts generate: with their friction (force closure, equilibrium) or all
+// read frictionless (first-order form closure, Reuleaux's method; theory.md §7).
+enum class Reading { friction, frictionless };
+
+// Names of generators, as in the certificate format (proofs/certificate-format.md §1).
+enum class Edge { normal, left, right, wrench };
+const char* edge_name(Edge e);
+
+struct Generator {
+  std::size_t contact = 0;  // index into scene.contacts
+  Edge edge = Edge::normal;
+  Wrench w;                 // exact, unscaled: W(p, e) or the wrench given
+};
+
+// W(p, f) = (fx, fy, p × f).
+Wrench wrench_at(const Vec2& p, const Vec2& f);
+
+// The generators of the contact wrench cone, in contact order; per point contact: `normal`
+// (μ = 0 or frictionless reading) or `left` = W(p, n + μ·rot90 n), `right` = W(p, n − μ·rot90 n).
+// Exact; O(#contacts).
+std::vector<Generator> generators(const Scene& scene, Reading reading);
+
+// Exact predicate kernel for core/dual_cone.h over a list of nonzero wrenches. Each wrench is
+// replaced by its primitive integer multiple (a positive scaling: the cone is unchanged); signs
+// are computed in 128-bit integers when every coordinate is below 2^40 in magnitude (exact:
+// a 3×3 determinant is then below 6·2^120 < 2^127) and in GMP integers otherwise. Never uncertain.
+class Exact_kernel {
+ public:
+  explicit Exact_kernel(const std::vector<Wrench>& wrenches);
+  std::size_t size() const { return rows_.size(); }
+  Sign cross_sign(std::size_t i, std::size_t j) const;          // zero iff parallel
+  Sign det_sign(std::size_t i, std::size_t j, std::size_t k) const;
+
+ private:
+  struct Row {
+    Integer v[3];
+    bool small = false;
+    std::int64_t s[3] = {0, 0, 0};
+  };
+  std::vector<Row> rows_;
+};
+
+// The primitive integer vector positively parallel to a nonzero rational 3-vector.
+void primitive(const Rational in[3], Integer out[3]);
+
+}  // namespace wrenchkit

@@ -1,0 +1,42 @@
+// A strict JSON reader (RFC 8259) that keeps every number's text, for exact reading.
+//
+// Rejects: malformed JSON, trailing data, duplicate keys, invalid UTF-8, unescaped control
+// characters, lone surrogates, nesting deeper than the limit. Errors name the line and column.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "exact/limits.h"
+
+namespace wrenchkit::json {
+
+enum class Type { null, boolean, number, string, array, object };
+
+struct Value {
+  Type type = Type::null;
+  bool boolean = false;
+  std::string text;  // number: its exact text; string: its decoded UTF-8 value
+  std::vector<Value> items;                         // array
+  std::vector<std::pair<std::string, Value>> members;  // object, in input order
+
+  const Value* find(std::string_view key) const {
+    for (const auto& m : members)
+      if (m.first == key) return &m.second;
+    return nullptr;
+  }
+};
+
+const char* type_name(Type t);
+
+// Parses a whole document. Throws Input_error("SOURCE:LINE:COL: invalid JSON: …").
+Value parse(std::string_view text, const Input_limits& limits, std::string_view source);
+
+// Writes `s` as a JSON string literal (with quotes), escaping as RFC 8259 requires.
+std::string quote(std::string_view s);
+
+}  // namespace wrenchkit::json

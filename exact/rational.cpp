@@ -1,0 +1,122 @@
+#include "exact/rational.h"
+
+#include <cctype>
+
+namespace wrenchkit {
+namespace {
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// Consumes [0-9]* from s at i; returns the count.
+std::size_t digits(std::string_view s, std::size_t& i) {
+  const std::size_t start = i;
+  while (i < s.size() && is_digit(s[i])) ++i;
+  return i - start;
+}
+
+Integer integer_of(std::string_view ds) {
+  // ds is a non-empty digit string (already length-limited by the caller).
+  return Integer(std::string(ds), 10);
+}
+
+std::optional<Rational> fail(std::string& why, const char* reason) {
+  why = reason;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Rational> parse_rational(std::string_view s, bool json_number,
+                                       const Input_limits& limits, std::string& why) {
+  std::size_t i = 0;
+  bool negative = false;
+  if (i < s.size() && (s[i] == '-' || (!json_number && s[i] == '+'))) {
+    negative = s[i] == '-';
+    ++i;
+  }
+  const std::size_t int_start = i;
+  const std::size_t int_digits = digits(s, i);
+  const std::string_view int_part = s.substr(int_start, int_digits);
+
+  // Fraction p/q (strings only).
+  if (!json_number && i < s.size() && s[i] == '/') {
+    if (int_digits == 0) return fail(why, "is not a number");
+    ++i;
+    const std::size_t den_start = i;
+    const std::size_t den_digits = digits(s, i);
+    if (den_digits == 0 || i != s.size()) return fail(why, "is not a number");
+    if (int_digits + den_digits > limits.max_digits)
+      return fail(why, "has more digits than the digit limit");
+    Integer den = integer_of(s.substr(den_start, den_digits));
+    if (den == 0) return fail(why, "has a zero denominator");
+    Rational q(integer_of(int_part), den);
+    q.canonicalize();
+    if (negative) q = -q;
+    return q;
+  }
+
+  std::string_view frac_part;
+  bool had_point = false;
+  if (i < s.size() && s[i] == '.') {
+    had_point = true;
+    ++i;
+    const std::size_t f_start = i;
+    const std::size_t f_digits = digits(s, i);
+    frac_part = s.substr(f_start, f_digits);
+  }
+  if (int_digits == 0 && frac_part.empty()) return fail(why, "is not a number");
+  if (json_number) {
+    // JSON: int part required, no leading zeros, a point needs digits after it.
+    if (int_digits == 0 || (int_digits > 1 && int_part[0] == '0') ||
+        (had_point && frac_part.empty()))
+      return fail(why, "is not a number");
+  }
+  long exponent = 0;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    bool exp_negative = false;
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) {
+      exp_negative = s[i] == '-';
+      ++i;
+    }
+    const std::size_t e_start = i;
+    const std::size_t e_digits = digits(s, i);
+    if (e_digits == 0) return fail(why, "is not a number");
+    std::size_t k = e_start;
+    while (k < i && s[k] == '0') ++k;  // leading zeros
+    if (i - k > 18) return fail(why, "has an exponent beyond the exponent limit");
+    for (; k < i; ++k) exponent = exponent * 10 + (s[k] - '0');
+    if (exponent > limits.max_exponent)
+      return fail(why, "has an exponent beyond the exponent limit");
+    if (exp_negative) exponent = -exponent;
+  }
+  if (i != s.size()) return fail(why, "is not a number");
+  if (int_digits + frac_part.size() > limits.max_digits)
+    return fail(why, "has more digits than the digit limit");
+
+  std::string mantissa;
+  mantissa.reserve(int_digits + frac_part.size());
+  mantissa.append(int_part);
+  mantissa.append(frac_part);
+  Integer m = integer_of(mantissa);
+  const long scale = exponent - static_cast<long>(frac_part.size());
+  Rational q;
+  if (m == 0) {
+    q = 0;
+  } else if (scale >= 0) {
+    Integer p;
+    mpz_ui_pow_ui(p.get_mpz_t(), 10, static_cast<unsigned long>(scale));
+    q = Rational(m * p);
+  } else {
+    Integer p;
+    mpz_ui_pow_ui(p.get_mpz_t(), 10, static_cast<unsigned long>(-scale));
+    q = Rational(m, p);
+    q.canonicalize();
+  }
+  if (negative) q = -q;
+  return q;
+}
+
+std::string to_string(const Rational& q) { return q.get_str(10); }
+
+}  // namespace wrenchkit

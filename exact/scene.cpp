@@ -1,0 +1,227 @@
+#include "exact/scene.h"
+
+#include <initializer_list>
+
+#include "exact/input_error.h"
+#include "exact/json.h"
+
+namespace wrenchkit {
+namespace {
+
+using json::Type;
+using json::Value;
+
+class Reader {
+ public:
+  explicit Reader(const Input_limits& limits) : limits_(limits) {}
+
+  Scene scene(const Value& root) {
+    expect(root, Type::object, "scene", "an object");
+    keys(root, "", {"wrenchkit", "name", "body", "contacts", "load", "support"});
+    const Value* version = root.find("wrenchkit");
+    if (!version) fail("scene", "missing key \"wrenchkit\" (the format version, 1)");
+    if (number(*version, "wrenchkit") != 1)
+      fail("wrenchkit", display(*version) + " is not a supported format version (only 1)");
+    Scene s;
+    if (const Value* v = root.find("name")) {
+      expect(*v, Type::string, "name", "a string");
+      s.name = v->text;
+    }
+    if (const Value* v = root.find("body")) s.body = body(*v);
+    if (const Value* v = root.find("contacts")) {
+      expect(*v, Type::array, "contacts", "an array");
+      if (v->items.size() > limits_.max_contacts)
+        fail("contacts", "has " + std::to_string(v->items.size()) + " entries, more than the limit " +
+                             std::to_string(limits_.max_contacts) + " (--max-contacts)");
+      for (std::size_t i = 0; i < v->items.size(); ++i)
+        s.contacts.push_back(contact(v->items[i], "contacts[" + std::to_string(i) + "]"));
+    }
+    if (const Value* v = root.find("load")) s.load = load(*v, s.body);
+    if (const Value* v = root.find("support")) s.support = support(*v);
+    return s;
+  }
+
+ private:
+  const Input_limits& limits_;
+
+  [[noreturn]] static void fail(const std::string& path, const std::string& what) {
+    throw Input_error(path + ": " + what);
+  }
+
+  static std::string join(const std::string& path, const char* key) {
+    return path.empty() ? std::string(key) : path + "." + key;
+  }
+
+  // The offending text as the user wrote it, shortened.
+  static std::string display(const Value& v) {
+    std::string t;
+    switch (v.type) {
+      case Type::string: t = json::quote(v.text); break;
+      case Type::number: t = v.text; break;
+      default: return json::type_name(v.type);
+    }
+    if (t.size() > 48) t = t.substr(0, 40) + "… (" + std::to_string(t.size()) + " characters)";
+    return t;
+  }
+
+  static void expect(const Value& v, Type t, const std::string& path, const char* what) {
+    if (v.type != t) fail(path, std::string("expected ") + what + ", got " + json::type_name(v.type));
+  }
+
+  static void keys(const Value& obj, const std::string& path,
+                   std::initializer_list<const char*> allowed) {
+    for (const auto& m : obj.members) {
+      bool ok = false;
+      for (const char* a : allowed) ok |= m.first == a;
+      if (!ok) fail(path.empty() ? "scene" : path, "unknown key " + json::quote(m.first));
+    }
+  }
+
+  static const Value& required(const Value& obj, const std::string& path, const char* key) {
+    const Value* v = obj.find(key);
+    if (!v) fail(path, std::string("missing key \"") + key + "\"");
+    return *v;
+  }
+
+  Rational number(const Value& v, const std::string& path) const {
+    if (v.type != Type::number && v.type != Type::string)
+      fail(path, std::string("expected a number, got ") + json::type_name(v.type));
+    std::string why;
+    auto q = parse_rational(v.text, v.type == Type::number, limits_, why);
+    if (!q) {
+      if (why == "has more digits than the digit limit")
+        why = "has more than " + std::to_string(limits_.max_digits) + " digits (--max-digits)";
+      else if (why == "has an exponent beyond the exponent limit")
+        why = "has an exponent beyond ±" + std::to_string(limits_.max_exponent) + " (--max-exponent)";
+      fail(path, display(v) + " " + why);
+    }
+    return *q;
+  }
+
+  Rational nonnegative(const Value& v, const std::string& path) const {
+    Rational q = number(v, path);
+    if (q < 0) fail(path, display(v) + " is negative (must be >= 0)");
+    return q;
+  }
+
+  Vec2 vec2(const Value& v, const std::string& path) const {
+    if (v.type != Type::array || v.items.size() != 2)
+      fail(path, std::string("expected an array of 2 numbers, got ") +
+                     (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
+                                            : std::string(json::type_name(v.type))));
+    return {number(v.items[0], path + "[0]"), number(v.items[1], path + "[1]")};
+  }
+
+  Wrench wrench3(const Value& v, const std::string& path) const {
+    if (v.type != Type::array || v.items.size() != 3)
+      fail(path, std::string("expected an array of 3 numbers [fx, fy, m], got ") +
+                     (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
+                                            : std::string(json::type_name(v.type))));
+    return {number(v.items[0], path + "[0]"), number(v.items[1], path + "[1]"),
+            number(v.items[2], path + "[2]")};
+  }
+
+  Body body(const Value& v) const {
+    expect(v, Type::object, "body", "an object");
+    keys(v, "body", {"outline", "com"});
+    Body b;
+    if (const Value* o = v.find("outline")) {
+      expect(*o, Type::array, "body.outline", "an array of points");
+      for (std::size_t i = 0; i < o->items.size(); ++i)
+        b.outline.push_back(vec2(o->items[i], "body.outline[" + std::to_string(i) + "]"));
+    }
+    if (const Value* c = v.find("com")) b.com = vec2(*c, "body.com");
+    return b;
+  }
+
+  Contact contact(const Value& v, const std::string& path) const {
+    expect(v, Type::object, path, "an object");
+    Contact c;
+    if (const Value* n = v.find("name")) {
+      expect(*n, Type::string, path + ".name", "a string");
+      c.name = n->text;
+    }
+    if (v.find("wrench")) {
+      keys(v, path, {"wrench", "name"});
+      c.kind = Contact::Kind::wrench;
+      c.wrench = wrench3(*v.find("wrench"), path + ".wrench");
+      if (c.wrench.fx == 0 && c.wrench.fy == 0 && c.wrench.m == 0)
+        fail(path + ".wrench", "zero wrench");
+      return c;
+    }
+    keys(v, path, {"at", "normal", "mu", "name"});
+    c.kind = Contact::Kind::point;
+    c.at = vec2(required(v, path, "at"), path + ".at");
+    c.normal = vec2(required(v, path, "normal"), path + ".normal");
+    if (c.normal.x == 0 && c.normal.y == 0) fail(path + ".normal", "zero vector");
+    if (const Value* mu = v.find("mu")) c.mu = nonnegative(*mu, path + ".mu");
+    return c;
+  }
+
+  Load load(const Value& v, const Body& body) const {
+    expect(v, Type::object, "load", "an object");
+    Load l;
+    if (v.find("gravity")) {
+      keys(v, "load", {"gravity"});
+      const Value& g = *v.find("gravity");
+      l.kind = Load::Kind::gravity;
+      l.weight = number(g, "load.gravity");
+      if (l.weight <= 0) fail("load.gravity", display(g) + " is not positive (a weight must be > 0)");
+      if (!body.com) fail("load.gravity", "needs body.com (the point where the weight acts)");
+    } else if (v.find("wrench")) {
+      keys(v, "load", {"wrench"});
+      l.kind = Load::Kind::wrench;
+      l.wrench = wrench3(*v.find("wrench"), "load.wrench");
+    } else if (v.find("force") || v.find("at")) {
+      keys(v, "load", {"force", "at"});
+      l.kind = Load::Kind::force;
+      l.force = vec2(required(v, "load", "force"), "load.force");
+      l.at = vec2(required(v, "load", "at"), "load.at");
+    } else {
+      keys(v, "load", {});
+      fail("load", "expected one of {\"force\", \"at\"}, {\"wrench\"} or {\"gravity\"}");
+    }
+    return l;
+  }
+
+  Support support(const Value& v) const {
+    expect(v, Type::object, "support", "an object");
+    keys(v, "support", {"mu", "points"});
+    Support s;
+    if (const Value* mu = v.find("mu")) s.mu = nonnegative(*mu, "support.mu");
+    const Value& pts = required(v, "support", "points");
+    expect(pts, Type::array, "support.points", "an array");
+    if (pts.items.empty()) fail("support.points", "empty (a support needs at least one point)");
+    if (pts.items.size() > limits_.max_contacts)
+      fail("support.points", "has more entries than the limit " +
+                                 std::to_string(limits_.max_contacts) + " (--max-contacts)");
+    bool any_force = false;
+    for (std::size_t i = 0; i < pts.items.size(); ++i) {
+      const std::string path = "support.points[" + std::to_string(i) + "]";
+      const Value& p = pts.items[i];
+      expect(p, Type::object, path, "an object");
+      keys(p, path, {"at", "force", "mu"});
+      Support_point sp;
+      sp.at = vec2(required(p, path, "at"), path + ".at");
+      sp.force = nonnegative(required(p, path, "force"), path + ".force");
+      if (const Value* mu = p.find("mu")) sp.mu = nonnegative(*mu, path + ".mu");
+      if (!sp.mu && !s.mu) fail(path, "missing key \"mu\" (and support.mu gives no default)");
+      any_force |= sp.force > 0;
+      s.points.push_back(std::move(sp));
+    }
+    if (!any_force) fail("support.points", "all forces are zero");
+    return s;
+  }
+};
+
+}  // namespace
+
+Scene read_scene(std::string_view json_text, const Input_limits& limits, std::string_view source) {
+  if (json_text.size() > limits.max_file_bytes)
+    throw Input_error(std::string(source) + ": larger than the size limit of " +
+                      std::to_string(limits.max_file_bytes) + " bytes (--max-file-size)");
+  const json::Value root = json::parse(json_text, limits, source);
+  return Reader(limits).scene(root);
+}
+
+}  // namespace wrenchkit

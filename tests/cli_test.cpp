@@ -1,0 +1,162 @@
+// End-to-end tests of the `wrenchkit` command: exit codes (interface.md §2), messages on stderr,
+// nothing on stdout for bad input, certificates written and re-checked, every bad-input class.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Run {
+  int code;
+  std::string out, err;
+};
+
+fs::path scratch() {
+  const fs::path d = fs::temp_directory_path() / ("wrenchkit_cli_test_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+Run run(const std::string& args, const std::string& stdin_text = "") {
+  const fs::path d = scratch();
+  const std::string in = (d / "stdin").string(), out = (d / "stdout").string(), err = (d / "stderr").string();
+  std::ofstream(in, std::ios::binary) << stdin_text;
+  const std::string cmd = std::string("'") + WRENCHKIT_CLI + "' " + args + " < '" + in + "' > '" + out + "' 2> '" + err + "'";
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::read_text(out), test::read_text(err)};
+}
+
+std::string write(const std::string& name, const std::string& text) {
+  const fs::path p = scratch() / name;
+  std::ofstream(p, std::ios::binary) << text;
+  return p.string();
+}
+
+std::string golden(const std::string& name) {
+  return test::source_dir() + "/tests/golden/" + name + ".scene.json";
+}
+
+TEST(Cli, DemoAnswersAndExplains) {
+  const Run r = run("demo");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("force closure: yes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("form closure:  no"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("accepted by the independent checker"), std::string::npos);
+  const Run j = run("demo --json");
+  EXPECT_EQ(j.code, 0);
+  EXPECT_NE(j.out.find("\"force_closure\": true, \"form_closure\": false"), std::string::npos) << j.out;
+}
+
+TEST(Cli, ClosureJsonCertificateRoundTripsThroughCheck) {
+  const std::string cert = (scratch() / "fc.json").string(), form = (scratch() / "fo.json").string();
+  fs::remove(cert);
+  fs::remove(form);
+  const Run r = run("closure --json --mode exact --certificate '" + cert + "' --form-certificate '" + form + "' '" +
+                    golden("two_finger_y1_2_mu1_10") + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"force_closure\": true"), std::string::npos);
+  EXPECT_NE(r.out.find("\"mode\": \"exact\""), std::string::npos);
+  const Run c = run("check '" + golden("two_finger_y1_2_mu1_10") + "' '" + cert + "'");
+  EXPECT_EQ(c.code, 0) << c.out << c.err;
+  EXPECT_EQ(c.out, "accepted\n");
+  const Run f = run("check --json '" + golden("two_finger_y1_2_mu1_10") + "' '" + form + "'");
+  EXPECT_EQ(f.code, 0);
+  EXPECT_EQ(f.out, "{\"accepted\": true, \"reason\": \"\"}\n");
+  // The same certificate does not prove anything about another scene.
+  const Run other = run("check '" + golden("two_finger_y9_10_mu1_4") + "' '" + cert + "'");
+  EXPECT_EQ(other.code, 1);
+  EXPECT_EQ(other.out.rfind("rejected: ", 0), 0u) << other.out;
+}
+
+TEST(Cli, StandardInputAndHumanSummary) {
+  const Run r = run("closure -", test::read_text(golden("vertical_walls_squeeze")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("force closure: no"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("a translation"), std::string::npos) << r.out;
+}
+
+TEST(Cli, TamperedCertificateIsRejectedWithExitOne) {
+  const std::string scene = golden("square_crossed_couples");
+  const std::string bad = write("bad.json",
+      R"({"wrenchkit_certificate": 1, "property": "form_closure", "holds": false, "twist": ["0", "0", "1"]})");
+  const Run r = run("check '" + scene + "' '" + bad + "'");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.out.rfind("rejected: ", 0), 0u) << r.out;
+  const Run garbage = run("check '" + scene + "' '" + write("garbage.json", "{not json") + "'");
+  EXPECT_EQ(garbage.code, 1);
+}
+
+TEST(Cli, EveryBadInputClassExitsTwoWithAMessageAndNoOutput) {
+  const std::string cert = (scratch() / "never.json").string();
+  struct Case { std::string scene, message; };
+  const std::vector<Case> cases = {
+      {"{\"wrenchkit\": 1,", "invalid JSON"},
+      {R"({"wrenchkit": 1, "contacts": {}})", "contacts: expected an array, got an object"},
+      {R"({"wrenchkit": 1, "extra": 1})", "scene: unknown key \"extra\""},
+      {R"({"wrenchkit": 1, "wrenchkit": 1})", "duplicate key"},
+      {R"({"contacts": []})", "missing key \"wrenchkit\""},
+      {R"({"wrenchkit": 1, "contacts": [{"at": [0,0], "normal": [0,0]}]})", "contacts[0].normal: zero vector"},
+      {R"({"wrenchkit": 1, "contacts": [{"at": [0,0], "normal": [0,1], "mu": -1}]})", "contacts[0].mu: -1 is negative"},
+      {R"({"wrenchkit": 1, "support": {"mu": 1, "points": [{"at": [0,0], "force": -2}]}})", "support.points[0].force"},
+      {R"({"wrenchkit": 1, "support": {"mu": 1, "points": [{"at": [0,0], "force": 0}]}})", "all forces are zero"},
+      {R"({"wrenchkit": 1, "contacts": [{"at": [0,"1/0"], "normal": [0,1]}]})", "zero denominator"},
+      {R"({"wrenchkit": 1, "contacts": [{"at": [0,"Infinity"], "normal": [0,1]}]})", "\"Infinity\" is not a number"},
+      {R"({"wrenchkit": 1, "contacts": [{"at": [0,1e10001], "normal": [0,1]}]})", "exponent beyond"},
+      {R"({"wrenchkit": 1, "contacts": [{"at": [0,)" + std::string(10001, '1') + R"(], "normal": [0,1]}]})",
+       "more than 10000 digits"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.scene.substr(0, 80));
+    const Run r = run("closure --json --certificate '" + cert + "' '" + write("bad_scene.json", c.scene) + "'");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err.rfind("wrenchkit: error: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(cert));  // nothing half-written
+  }
+  const Run big = run("closure --max-file-size 10 '" + golden("no_contacts") + "'");
+  EXPECT_EQ(big.code, 2);
+  EXPECT_NE(big.err.find("larger than the size limit of 10 bytes"), std::string::npos);
+  const Run missing = run("closure /nonexistent/scene.json");
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("/nonexistent/scene.json: cannot open"), std::string::npos);
+  const Run bad_scene_check = run("check '" + write("bad2.json", "[]") + "' '" + write("c.json", "{}") + "'");
+  EXPECT_EQ(bad_scene_check.code, 2);
+}
+
+TEST(Cli, UsageErrors) {
+  EXPECT_EQ(run("").code, 2);
+  EXPECT_EQ(run("frobnicate x.json").code, 2);
+  EXPECT_EQ(run("closure --no-such-option x.json").code, 2);
+  EXPECT_EQ(run("closure").code, 2);
+  EXPECT_EQ(run("closure --mode fast x.json").code, 2);
+  const Run fl = run("closure --mode float '" + golden("no_contacts") + "'");
+  EXPECT_EQ(fl.code, 2);
+  EXPECT_NE(fl.err.find("not available in this version"), std::string::npos);
+  EXPECT_EQ(run("closure --max-digits abc x.json").code, 2);
+  EXPECT_EQ(run("check onlyone.json").code, 2);
+  for (const char* h : {"--help", "closure --help", "check --help", "demo --help"}) {
+    const Run r = run(h);
+    EXPECT_EQ(r.code, 0) << h;
+    EXPECT_NE(r.out.find("usage: wrenchkit"), std::string::npos) << h;
+  }
+}
+
+TEST(Cli, LimitsCanBeRaised) {
+  const std::string s = write("long.json", R"({"wrenchkit": 1, "contacts": [{"at": [0,)" + std::string(10001, '1') +
+                                               R"(], "normal": [0,1]}]})");
+  EXPECT_EQ(run("closure '" + s + "'").code, 2);
+  const Run r = run("closure --max-digits 20000 '" + s + "'");
+  EXPECT_EQ(r.code, 0) << r.err;
+}
+
+}  // namespace
+}  // namespace wrenchkit

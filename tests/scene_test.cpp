@@ -1,0 +1,173 @@
+// Scene parser: exact numbers, strict JSON, and every bad-input class of interface.md §1 with the
+// message text pinned (the message names the JSON path and the offending text).
+#include <gtest/gtest.h>
+
+#include "exact/input_error.h"
+#include "exact/rational.h"
+#include "exact/scene.h"
+
+namespace wrenchkit {
+namespace {
+
+Rational exact(const std::string& text, bool json_number) {
+  std::string why;
+  auto q = parse_rational(text, json_number, Input_limits{}, why);
+  EXPECT_TRUE(q.has_value()) << text << ": " << why;
+  return q ? *q : Rational(-999);
+}
+
+TEST(Numbers, DecimalTextIsReadExactly) {
+  EXPECT_EQ(exact("0.1", true), Rational(1, 10));
+  EXPECT_EQ(exact("-2.5e-3", false), Rational(-1, 400));
+  EXPECT_EQ(exact("1E+3", true), 1000);
+  EXPECT_EQ(exact("-0", true), 0);
+  EXPECT_EQ(exact("3/6", false), Rational(1, 2));
+  EXPECT_EQ(exact("-4/3", false), Rational(-4, 3));
+  EXPECT_EQ(exact("+.5", false), Rational(1, 2));
+  EXPECT_EQ(exact("5.", false), 5);
+  EXPECT_EQ(exact("0.000e99", true), 0);
+  EXPECT_EQ(exact("1e-40", true), Rational(Integer(1), Integer("1" + std::string(40, '0'))));
+  EXPECT_EQ(exact("123456789012345678901234567890", true), Rational(Integer("123456789012345678901234567890")));
+  // 0.1 is not the double 0.1000000000000000055511151231257827…
+  EXPECT_NE(exact("0.1", true), Rational(0.1));
+}
+
+TEST(Numbers, BadTextIsRejectedWithAReason) {
+  const Input_limits lim;
+  std::string why;
+  for (const char* bad : {"", "abc", "1/0", "NaN", "nan", "Infinity", "-inf", "0x10", "1 ", " 1", "1/-2",
+                          "1/2/3", "1.5/2", "e5", "1e", "--1", "/2", "1/", ".", "+", "1e+"}) {
+    EXPECT_FALSE(parse_rational(bad, false, lim, why).has_value()) << bad;
+  }
+  // JSON grammar is stricter than the string grammar.
+  for (const char* bad : {"+1", ".5", "5.", "01", "1/2"}) {
+    EXPECT_FALSE(parse_rational(bad, true, lim, why).has_value()) << bad;
+  }
+  EXPECT_FALSE(parse_rational("1/0", false, lim, why).has_value());
+  EXPECT_EQ(why, "has a zero denominator");
+}
+
+TEST(Numbers, LimitsOnDigitsAndExponents) {
+  const Input_limits lim;
+  std::string why;
+  EXPECT_TRUE(parse_rational(std::string(10000, '7'), true, lim, why).has_value());
+  EXPECT_FALSE(parse_rational(std::string(10001, '7'), true, lim, why).has_value());
+  EXPECT_TRUE(parse_rational("1e10000", true, lim, why).has_value());
+  EXPECT_TRUE(parse_rational("1e-10000", true, lim, why).has_value());
+  EXPECT_FALSE(parse_rational("1e10001", true, lim, why).has_value());
+  EXPECT_FALSE(parse_rational("1e99999999999999999999999999", true, lim, why).has_value());
+  EXPECT_TRUE(parse_rational("1e000000000000000000000000005", true, lim, why).has_value());
+  Input_limits raised;
+  raised.max_digits = 20000;
+  EXPECT_TRUE(parse_rational(std::string(10001, '7'), true, raised, why).has_value());
+}
+
+std::string error_of(const std::string& text, const Input_limits& lim = {}) {
+  try {
+    read_scene(text, lim, "s.json");
+  } catch (const Input_error& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(SceneErrors, MessagesNameThePathAndTheValue) {
+  const std::string ok = R"("wrenchkit": 1, )";
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contacts": [{"at": [0,0], "normal": [1,0]}, {"at": [0,0], "normal": [1,0]},
+      {"at": [1,2], "normal": [0, "0.0"]}]})"), "contacts[2].normal: zero vector");
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "support": {"mu": 1, "points": [{"at": [0,0], "force": "abc"}]}})"),
+            "support.points[0].force: \"abc\" is not a number");
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0,0], "normal": [1,0], "mu": "-1/2"}]})"),
+            "contacts[0].mu: \"-1/2\" is negative (must be >= 0)");
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0,0], "nromal": [1,0]}]})"),
+            "contacts[0]: unknown key \"nromal\"");
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0,0]}]})"), "contacts[0]: missing key \"normal\"");
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0,0,1], "normal": [1,0]}]})"),
+            "contacts[0].at: expected an array of 2 numbers, got an array of 3");
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": "here", "normal": [1,0]}]})"),
+            "contacts[0].at: expected an array of 2 numbers, got a string");
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [true, 0], "normal": [1,0]}]})"),
+            "contacts[0].at[0]: expected a number, got a boolean");
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0, "1/0"], "normal": [1,0]}]})"),
+            "contacts[0].at[1]: \"1/0\" has a zero denominator");
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0, "NaN"], "normal": [1,0]}]})"),
+            "contacts[0].at[1]: \"NaN\" is not a number");
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"wrench": [0, 0, "0/5"]}]})"), "contacts[0].wrench: zero wrench");
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"wrench": [1, 0, 0], "mu": 1}]})"),
+            "contacts[0]: unknown key \"mu\"");
+  EXPECT_EQ(error_of(R"({"wrenchkit": 2})"), "wrenchkit: 2 is not a supported format version (only 1)");
+  EXPECT_EQ(error_of(R"({"contacts": []})"), "scene: missing key \"wrenchkit\" (the format version, 1)");
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contact": []})"), "scene: unknown key \"contact\"");
+  EXPECT_EQ(error_of(R"([1, 2])"), "scene: expected an object, got an array");
+  EXPECT_EQ(error_of("{" + ok + R"("support": {"mu": 1, "points": [{"at": [0,0], "force": 0}]}})"),
+            "support.points: all forces are zero");
+  EXPECT_EQ(error_of("{" + ok + R"("support": {"mu": 1, "points": [{"at": [0,0], "force": -1}]}})"),
+            "support.points[0].force: -1 is negative (must be >= 0)");
+  EXPECT_EQ(error_of("{" + ok + R"("support": {"points": [{"at": [0,0], "force": 1}]}})"),
+            "support.points[0]: missing key \"mu\" (and support.mu gives no default)");
+  EXPECT_EQ(error_of("{" + ok + R"("load": {"gravity": 1}})"),
+            "load.gravity: needs body.com (the point where the weight acts)");
+  EXPECT_EQ(error_of("{" + ok + R"("body": {"com": [0,0]}, "load": {"gravity": "0"}})"),
+            "load.gravity: \"0\" is not positive (a weight must be > 0)");
+  EXPECT_EQ(error_of("{" + ok + R"("load": {"force": [0,1]}})"), "load: missing key \"at\"");
+  EXPECT_EQ(error_of("{" + ok + R"("load": {"gravity": 1, "wrench": [0,0,1]}})"), "load: unknown key \"wrench\"");
+  EXPECT_EQ(error_of("{" + ok + R"("load": {}})"),
+            "load: expected one of {\"force\", \"at\"}, {\"wrench\"} or {\"gravity\"}");
+}
+
+TEST(SceneErrors, LimitsAreEnforcedAndNamed) {
+  const std::string big(10001, '9');
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contacts": [{"at": [0, )" + big + R"(], "normal": [1,0]}]})"),
+            "contacts[0].at[1]: 9999999999999999999999999999999999999999… (10001 characters) has more than "
+            "10000 digits (--max-digits)");
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contacts": [{"at": [0, "1e10001"], "normal": [1,0]}]})"),
+            "contacts[0].at[1]: \"1e10001\" has an exponent beyond ±10000 (--max-exponent)");
+  Input_limits small;
+  small.max_file_bytes = 10;
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1})", small), "s.json: larger than the size limit of 10 bytes (--max-file-size)");
+  small = Input_limits{};
+  small.max_contacts = 1;
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contacts": [{"wrench": [1,0,0]}, {"wrench": [1,0,0]}]})", small),
+            "contacts: has 2 entries, more than the limit 1 (--max-contacts)");
+}
+
+TEST(SceneErrors, MalformedJsonNamesLineAndColumn) {
+  EXPECT_EQ(error_of("{\"wrenchkit\": 1,\n  \"name\": \"x\" \"body\": {}}"),
+            "s.json:2:15: invalid JSON: expected ',' or '}' after an object member");
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "wrenchkit": 1})"), "s.json:1:18: invalid JSON: duplicate key \"wrenchkit\"");
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1} x)"), "s.json:1:18: invalid JSON: unexpected data after the JSON value");
+  EXPECT_EQ(error_of(R"({"wrenchkit": NaN})"), "s.json:1:15: invalid JSON: unexpected character, expected a value");
+  EXPECT_EQ(error_of(R"({"wrenchkit": 01})"), "s.json:1:16: invalid JSON: expected ',' or '}' after an object member");
+  EXPECT_EQ(error_of("{\"wrenchkit\": 1, \"name\": \"a\xff\"}"), "s.json:1:28: invalid JSON: invalid UTF-8");
+  EXPECT_EQ(error_of("{\"wrenchkit\": 1, \"name\": \"\\ud800\"}"),
+            "s.json:1:33: invalid JSON: lone high surrogate in \\u escape");
+  EXPECT_EQ(error_of(""), "s.json:1:1: invalid JSON: unexpected end of input, expected a value");
+  EXPECT_EQ(error_of(std::string(65, '[') + std::string(65, ']')),
+            "s.json:1:65: invalid JSON: nesting deeper than 64 levels");
+  // Deep nesting far beyond the limit is refused without recursion trouble.
+  EXPECT_NE(error_of(std::string(1000000, '[')).find("nesting deeper"), std::string::npos);
+}
+
+TEST(SceneModel, ReadsEveryField) {
+  const Scene s = read_scene(R"({
+    "wrenchkit": 1, "name": "corner \u00e9",
+    "body": {"outline": [[0,0],[1,0],[1,1]], "com": ["1/2", 0.5]},
+    "contacts": [{"at": [0,0], "normal": [0,1], "mu": "1/2", "name": "floor"}, {"wrench": [0, 0, "1e-3"]}],
+    "load": {"force": [0,-1], "at": ["1/2","1/2"]},
+    "support": {"mu": "1/2", "points": [{"at": [0,-1], "force": "1/2"}, {"at": [0,1], "force": 0, "mu": 2}]}
+  })", Input_limits{});
+  EXPECT_EQ(s.name, "corner \xc3\xa9");
+  EXPECT_EQ(s.body.outline.size(), 3u);
+  EXPECT_EQ(s.body.com->x, Rational(1, 2));
+  EXPECT_EQ(s.body.com->y, Rational(1, 2));
+  ASSERT_EQ(s.contacts.size(), 2u);
+  EXPECT_EQ(s.contacts[0].mu, Rational(1, 2));
+  EXPECT_EQ(s.contacts[0].name, "floor");
+  EXPECT_EQ(s.contacts[1].kind, Contact::Kind::wrench);
+  EXPECT_EQ(s.contacts[1].wrench.m, Rational(1, 1000));
+  EXPECT_EQ(s.load->kind, Load::Kind::force);
+  EXPECT_EQ(s.support->points[1].mu, Rational(2));
+}
+
+}  // namespace
+}  // namespace wrenchkit

@@ -1,0 +1,129 @@
+#include "tests/test_support.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "proofs/checker/checker.h"
+
+namespace wrenchkit::test {
+
+std::string source_dir() { return WRENCHKIT_SOURCE_DIR; }
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string scene_json(const std::vector<Contact_spec>& contacts, const std::string& name) {
+  std::string s = "{\"wrenchkit\": 1";
+  if (!name.empty()) s += ", \"name\": \"" + name + "\"";
+  s += ", \"contacts\": [";
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact_spec& c = contacts[i];
+    if (i) s += ", ";
+    if (!c.wrench.empty()) {
+      s += "{\"wrench\": " + c.wrench + "}";
+      continue;
+    }
+    s += "{\"at\": [\"" + c.ax + "\", \"" + c.ay + "\"], \"normal\": [\"" + c.nx + "\", \"" + c.ny + "\"]";
+    if (!c.mu.empty()) s += ", \"mu\": \"" + c.mu + "\"";
+    s += "}";
+  }
+  return s + "]}";
+}
+
+std::uint64_t seed(std::uint64_t fallback) {
+  if (const char* e = std::getenv("WRENCHKIT_SEED")) return std::strtoull(e, nullptr, 10);
+  return fallback;
+}
+
+std::vector<Contact_spec> random_contacts(std::mt19937_64& rng, int max_contacts) {
+  static const char* mus[] = {"0", "0", "1/4", "1/2", "1", "2", "1/3"};
+  static const int normals[][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 1}, {-1, 1},
+                                   {1, -1}, {-1, -1}, {2, 1}, {1, 2}, {-2, 3}, {3, -1}};
+  auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  const int k = uni(0, max_contacts);
+  std::vector<Contact_spec> out;
+  for (int i = 0; i < k; ++i) {
+    Contact_spec c;
+    if (uni(0, 11) == 0) {
+      int w[3];
+      do {
+        for (int& x : w) x = uni(-2, 2);
+      } while (w[0] == 0 && w[1] == 0 && w[2] == 0);
+      c.wrench = "[" + std::to_string(w[0]) + ", " + std::to_string(w[1]) + ", " + std::to_string(w[2]) + "]";
+    } else {
+      c.ax = std::to_string(uni(-3, 3));
+      c.ay = std::to_string(uni(-3, 3));
+      const auto& n = normals[uni(0, 11)];
+      const int len = uni(1, 2);  // normals of any length
+      c.nx = std::to_string(n[0] * len);
+      c.ny = std::to_string(n[1] * len);
+      c.mu = mus[uni(0, 6)];
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+std::string dump_failure(const std::string& scene_text, const std::string& tag) {
+  std::filesystem::create_directories("failures");
+  const std::string path = std::filesystem::absolute("failures/" + tag + ".json").string();
+  std::ofstream(path) << scene_text << "\n";
+  return path;
+}
+
+namespace {
+using V = std::array<Rational, 3>;
+V vec(const Wrench& w) { return {w.fx, w.fy, w.m}; }
+V cross(const V& a, const V& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Rational dot(const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+bool zero(const V& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
+}  // namespace
+
+int brute_force_rank(const std::vector<Wrench>& g) {
+  const std::size_t n = g.size();
+  int r = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!zero(vec(g[i]))) r = std::max(r, 1);
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const V c = cross(vec(g[i]), vec(g[j]));
+      if (zero(c)) continue;
+      r = std::max(r, 2);
+      for (std::size_t k = j + 1; k < n; ++k)
+        if (dot(c, vec(g[k])) != 0) return 3;
+    }
+  }
+  return r;
+}
+
+bool brute_force_closure(const std::vector<Wrench>& g) {
+  if (brute_force_rank(g) < 3) return false;
+  for (std::size_t i = 0; i < g.size(); ++i)
+    for (std::size_t j = i + 1; j < g.size(); ++j) {
+      const V c = cross(vec(g[i]), vec(g[j]));
+      if (zero(c)) continue;
+      for (int s : {1, -1}) {
+        bool all = true;
+        for (const Wrench& w : g) all = all && s * sgn(dot(c, vec(w))) >= 0;
+        if (all) return false;
+      }
+    }
+  return true;
+}
+
+::testing::AssertionResult checker_accepts(const std::string& scene_text, const std::string& cert) {
+  const auto r = wrenchkit_checker::check(scene_text, cert);
+  if (r.outcome == wrenchkit_checker::Outcome::accepted) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "checker: " << r.message << "\ncertificate: " << cert
+                                       << "\nscene: " << scene_text;
+}
+
+}  // namespace wrenchkit::test

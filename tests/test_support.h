@@ -1,0 +1,45 @@
+// Shared helpers of the test suite: scene text builders, seeded random scenes, an O(k³) brute
+// force, failure dumps, and the independent checker as a GoogleTest predicate.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "exact/scene.h"
+
+namespace wrenchkit::test {
+
+std::string source_dir();
+std::string read_text(const std::string& path);
+
+// A contact written as text, exactly as a user would (empty mu: none written).
+struct Contact_spec {
+  std::string ax, ay, nx, ny, mu;
+  std::string wrench = "";  // non-empty: a wrench generator "[fx, fy, m]" written verbatim
+};
+std::string scene_json(const std::vector<Contact_spec>& contacts, const std::string& name = "");
+
+// Seed for randomized tests: WRENCHKIT_SEED from the environment, else `fallback`.
+std::uint64_t seed(std::uint64_t fallback);
+
+// Random scene on a small integer grid, so that degenerate configurations (parallel, concurrent,
+// coincident, on a cone edge) are frequent. 0 … max_contacts contacts; a few wrench generators.
+std::vector<Contact_spec> random_contacts(std::mt19937_64& rng, int max_contacts);
+
+// Writes the scene to failures/<tag>.json under the build tree's working directory and returns the
+// path, so a failing random case can be replayed with `wrenchkit closure PATH`.
+std::string dump_failure(const std::string& scene_text, const std::string& tag);
+
+// Brute force (theory.md §3 algorithm 2): rank, and force closure ⇔ rank 3 and no candidate ray
+// ±(g_i × g_j) has power ≥ 0 against every generator. O(k³), exact.
+int brute_force_rank(const std::vector<Wrench>& g);
+bool brute_force_closure(const std::vector<Wrench>& g);
+
+// The independent checker on a scene text and a certificate text.
+::testing::AssertionResult checker_accepts(const std::string& scene_text, const std::string& cert);
+
+}  // namespace wrenchkit::test
