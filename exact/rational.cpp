@@ -72,6 +72,7 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
       return fail(why, "is not a number");
   }
   long exponent = 0;
+  std::size_t exponent_digits = 0;
   if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
     ++i;
     bool exp_negative = false;
@@ -82,6 +83,7 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
     const std::size_t e_start = i;
     const std::size_t e_digits = digits(s, i);
     if (e_digits == 0) return fail(why, "is not a number");
+    exponent_digits = e_digits;
     std::size_t k = e_start;
     while (k < i && s[k] == '0') ++k;  // leading zeros
     if (i - k > 18) return fail(why, "has an exponent beyond the exponent limit");
@@ -91,7 +93,8 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
     if (exp_negative) exponent = -exponent;
   }
   if (i != s.size()) return fail(why, "is not a number");
-  if (int_digits + frac_part.size() > limits.max_digits)
+  // The digit limit counts every digit of the text, exponent included (as the checker does).
+  if (int_digits + frac_part.size() + exponent_digits > limits.max_digits)
     return fail(why, "has more digits than the digit limit");
 
   std::string mantissa;

@@ -14,7 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct Cli_result {
   int code;
   std::string out, err;
 };
@@ -25,7 +25,7 @@ fs::path scratch() {
   return d;
 }
 
-Run run(const std::string& args, const std::string& stdin_text = "") {
+Cli_result run(const std::string& args, const std::string& stdin_text = "") {
   const fs::path d = scratch();
   const std::string in = (d / "stdin").string(), out = (d / "stdout").string(), err = (d / "stderr").string();
   std::ofstream(in, std::ios::binary) << stdin_text;
@@ -45,12 +45,12 @@ std::string golden(const std::string& name) {
 }
 
 TEST(Cli, DemoAnswersAndExplains) {
-  const Run r = run("demo");
+  const Cli_result r = run("demo");
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("force closure: yes"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("form closure:  no"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("accepted by the independent checker"), std::string::npos);
-  const Run j = run("demo --json");
+  const Cli_result j = run("demo --json");
   EXPECT_EQ(j.code, 0);
   EXPECT_NE(j.out.find("\"force_closure\": true, \"form_closure\": false"), std::string::npos) << j.out;
 }
@@ -59,25 +59,25 @@ TEST(Cli, ClosureJsonCertificateRoundTripsThroughCheck) {
   const std::string cert = (scratch() / "fc.json").string(), form = (scratch() / "fo.json").string();
   fs::remove(cert);
   fs::remove(form);
-  const Run r = run("closure --json --mode exact --certificate '" + cert + "' --form-certificate '" + form + "' '" +
+  const Cli_result r = run("closure --json --mode exact --certificate '" + cert + "' --form-certificate '" + form + "' '" +
                     golden("two_finger_y1_2_mu1_10") + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("\"force_closure\": true"), std::string::npos);
   EXPECT_NE(r.out.find("\"mode\": \"exact\""), std::string::npos);
-  const Run c = run("check '" + golden("two_finger_y1_2_mu1_10") + "' '" + cert + "'");
+  const Cli_result c = run("check '" + golden("two_finger_y1_2_mu1_10") + "' '" + cert + "'");
   EXPECT_EQ(c.code, 0) << c.out << c.err;
   EXPECT_EQ(c.out, "accepted\n");
-  const Run f = run("check --json '" + golden("two_finger_y1_2_mu1_10") + "' '" + form + "'");
+  const Cli_result f = run("check --json '" + golden("two_finger_y1_2_mu1_10") + "' '" + form + "'");
   EXPECT_EQ(f.code, 0);
   EXPECT_EQ(f.out, "{\"accepted\": true, \"reason\": \"\"}\n");
   // The same certificate does not prove anything about another scene.
-  const Run other = run("check '" + golden("two_finger_y9_10_mu1_4") + "' '" + cert + "'");
+  const Cli_result other = run("check '" + golden("two_finger_y9_10_mu1_4") + "' '" + cert + "'");
   EXPECT_EQ(other.code, 1);
   EXPECT_EQ(other.out.rfind("rejected: ", 0), 0u) << other.out;
 }
 
 TEST(Cli, StandardInputAndHumanSummary) {
-  const Run r = run("closure -", test::read_text(golden("vertical_walls_squeeze")));
+  const Cli_result r = run("closure -", test::read_text(golden("vertical_walls_squeeze")));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("force closure: no"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("a translation"), std::string::npos) << r.out;
@@ -87,10 +87,10 @@ TEST(Cli, TamperedCertificateIsRejectedWithExitOne) {
   const std::string scene = golden("square_crossed_couples");
   const std::string bad = write("bad.json",
       R"({"wrenchkit_certificate": 1, "property": "form_closure", "holds": false, "twist": ["0", "0", "1"]})");
-  const Run r = run("check '" + scene + "' '" + bad + "'");
+  const Cli_result r = run("check '" + scene + "' '" + bad + "'");
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(r.out.rfind("rejected: ", 0), 0u) << r.out;
-  const Run garbage = run("check '" + scene + "' '" + write("garbage.json", "{not json") + "'");
+  const Cli_result garbage = run("check '" + scene + "' '" + write("garbage.json", "{not json") + "'");
   EXPECT_EQ(garbage.code, 1);
 }
 
@@ -115,20 +115,20 @@ TEST(Cli, EveryBadInputClassExitsTwoWithAMessageAndNoOutput) {
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.scene.substr(0, 80));
-    const Run r = run("closure --json --certificate '" + cert + "' '" + write("bad_scene.json", c.scene) + "'");
+    const Cli_result r = run("closure --json --certificate '" + cert + "' '" + write("bad_scene.json", c.scene) + "'");
     EXPECT_EQ(r.code, 2);
     EXPECT_EQ(r.out, "");
     EXPECT_EQ(r.err.rfind("wrenchkit: error: ", 0), 0u) << r.err;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(cert));  // nothing half-written
   }
-  const Run big = run("closure --max-file-size 10 '" + golden("no_contacts") + "'");
+  const Cli_result big = run("closure --max-file-size 10 '" + golden("no_contacts") + "'");
   EXPECT_EQ(big.code, 2);
   EXPECT_NE(big.err.find("larger than the size limit of 10 bytes"), std::string::npos);
-  const Run missing = run("closure /nonexistent/scene.json");
+  const Cli_result missing = run("closure /nonexistent/scene.json");
   EXPECT_EQ(missing.code, 2);
   EXPECT_NE(missing.err.find("/nonexistent/scene.json: cannot open"), std::string::npos);
-  const Run bad_scene_check = run("check '" + write("bad2.json", "[]") + "' '" + write("c.json", "{}") + "'");
+  const Cli_result bad_scene_check = run("check '" + write("bad2.json", "[]") + "' '" + write("c.json", "{}") + "'");
   EXPECT_EQ(bad_scene_check.code, 2);
 }
 
@@ -138,13 +138,13 @@ TEST(Cli, UsageErrors) {
   EXPECT_EQ(run("closure --no-such-option x.json").code, 2);
   EXPECT_EQ(run("closure").code, 2);
   EXPECT_EQ(run("closure --mode fast x.json").code, 2);
-  const Run fl = run("closure --mode float '" + golden("no_contacts") + "'");
+  const Cli_result fl = run("closure --mode float '" + golden("no_contacts") + "'");
   EXPECT_EQ(fl.code, 2);
   EXPECT_NE(fl.err.find("not available in this version"), std::string::npos);
   EXPECT_EQ(run("closure --max-digits abc x.json").code, 2);
   EXPECT_EQ(run("check onlyone.json").code, 2);
   for (const char* h : {"--help", "closure --help", "check --help", "demo --help"}) {
-    const Run r = run(h);
+    const Cli_result r = run(h);
     EXPECT_EQ(r.code, 0) << h;
     EXPECT_NE(r.out.find("usage: wrenchkit"), std::string::npos) << h;
   }
@@ -154,7 +154,7 @@ TEST(Cli, LimitsCanBeRaised) {
   const std::string s = write("long.json", R"({"wrenchkit": 1, "contacts": [{"at": [0,)" + std::string(10001, '1') +
                                                R"(], "normal": [0,1]}]})");
   EXPECT_EQ(run("closure '" + s + "'").code, 2);
-  const Run r = run("closure --max-digits 20000 '" + s + "'");
+  const Cli_result r = run("closure --max-digits 20000 '" + s + "'");
   EXPECT_EQ(r.code, 0) << r.err;
 }
 

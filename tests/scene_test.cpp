@@ -57,6 +57,11 @@ TEST(Numbers, LimitsOnDigitsAndExponents) {
   EXPECT_FALSE(parse_rational("1e10001", true, lim, why).has_value());
   EXPECT_FALSE(parse_rational("1e99999999999999999999999999", true, lim, why).has_value());
   EXPECT_TRUE(parse_rational("1e000000000000000000000000005", true, lim, why).has_value());
+  // Every digit of the text counts, exponent and denominator included (the checker agrees).
+  EXPECT_TRUE(parse_rational(std::string(9998, '9') + "e10", true, lim, why).has_value());
+  EXPECT_FALSE(parse_rational(std::string(9999, '9') + "e10", true, lim, why).has_value());
+  EXPECT_TRUE(parse_rational(std::string(5000, '9') + "/" + std::string(5000, '7'), false, lim, why).has_value());
+  EXPECT_FALSE(parse_rational(std::string(5000, '9') + "/" + std::string(5001, '7'), false, lim, why).has_value());
   Input_limits raised;
   raised.max_digits = 20000;
   EXPECT_TRUE(parse_rational(std::string(10001, '7'), true, raised, why).has_value());

@@ -1,0 +1,566 @@
+// proofs/checker/checker.cpp - certificate format v1: reading the scene, recomputing its generators,
+// and the conditions of proofs/certificate-format.md §3.1 (holds = true) and §3.2 (holds = false).
+#include "proofs/checker/checker.h"
+
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <climits>
+#include <exception>
+#include <map>
+#include <new>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "proofs/checker/json.h"
+
+namespace wrenchkit_checker {
+namespace {
+
+using detail::Failure;
+using detail::quote;
+using detail::Reader;
+using Kind = Reader::Kind;
+using Q = mpq_class;
+
+struct Wrench {  // (fx, fy, m), m about the origin (theory.md §1.2)
+  Q fx, fy, m;
+};
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// Text for a message, cut if long.
+std::string clip(const std::string& s) {
+  return s.size() <= 64 ? s : s.substr(0, 40) + "... (" + std::to_string(s.size()) + " characters)";
+}
+// A rational for a message; a huge one is not converted to decimal (that alone can take seconds).
+std::string show(const Q& q) {
+  const std::size_t digits = mpz_sizeinbase(q.get_num_mpz_t(), 10) + mpz_sizeinbase(q.get_den_mpz_t(), 10);
+  return digits <= 10000
+             ? clip(q.get_str())
+             : std::string(sgn(q) < 0 ? "-" : "") + "(a rational of about " + std::to_string(digits) + " digits)";
+}
+std::string show(const Q& a, const Q& b) { return "(" + show(a) + ", " + show(b) + ")"; }
+
+// ---------------------------------------------------------------------------------------------
+// Numbers
+
+// The exact value of a scene number (docs/scene-format.md "Numbers"), given the text of a JSON number
+// or of a number string:
+//   decimal := sign? (digits ("." digits?)? | "." digits) exponent?    exponent := [eE] sign? digits
+//   fraction := sign? digits "/" digits (denominator not zero)
+// JSON's number grammar is a subset of `decimal`. The digit and exponent limits are checked on the
+// text before any big number is built (no overflow, no huge power of ten).
+Q scene_number(std::string_view s, const Limits& lim, const std::string& path) {
+  const std::string at = path + ": ";
+  auto not_a_number = [&] { return Failure{at + quote(s) + " is not a number"}; };
+  std::size_t i = 0, digits = 0;
+  auto run = [&] {  // a maximal run of digits
+    const std::size_t begin = i;
+    while (i < s.size() && is_digit(s[i])) ++i;
+    digits += i - begin;
+    return s.substr(begin, i - begin);
+  };
+  auto next = [&](std::string_view one_of) {  // consumes one of these characters, if next
+    return i < s.size() && one_of.find(s[i]) != std::string_view::npos ? (++i, true) : false;
+  };
+  const bool negative = !s.empty() && s[0] == '-';
+  next("+-");
+  const std::string_view whole = run();
+  std::string_view frac, exp, den;
+  bool exp_negative = false;
+  const bool fraction = !whole.empty() && next("/");
+  if (fraction) {
+    den = run();
+    if (den.empty()) throw not_a_number();
+  } else {
+    if (next(".")) frac = run();
+    if (whole.empty() && frac.empty()) throw not_a_number();
+    if (next("eE")) {
+      exp_negative = i < s.size() && s[i] == '-';
+      next("+-");
+      exp = run();
+      if (exp.empty()) throw not_a_number();
+    }
+  }
+  if (i != s.size()) throw not_a_number();
+  if (digits > lim.max_digits)
+    throw Failure{at + "number with " + std::to_string(digits) + " digits (limit " + std::to_string(lim.max_digits) +
+                  ")"};
+  Q q;
+  if (fraction) {
+    if (den.find_first_not_of('0') == std::string_view::npos) throw Failure{at + quote(s) + " has a zero denominator"};
+    q = Q(mpz_class(std::string(whole), 10), mpz_class(std::string(den), 10));  // base 10: "010" is ten
+  } else {
+    exp.remove_prefix(std::min(exp.find_first_not_of('0'), exp.size()));
+    unsigned long long e = exp.size() > 18 ? ULLONG_MAX : 0;  // |exponent|; 18 digits cannot overflow
+    for (std::size_t k = 0; k < exp.size() && e != ULLONG_MAX; ++k) e = e * 10 + static_cast<unsigned>(exp[k] - '0');
+    if (lim.max_exponent < 0 || e > static_cast<unsigned long long>(lim.max_exponent))
+      throw Failure{at + "exponent " + (exp_negative ? "-" : "") + clip(exp.empty() ? "0" : std::string(exp)) +
+                    " out of range (limit " + std::to_string(lim.max_exponent) + ")"};
+    const mpz_class mantissa(std::string(whole) + std::string(frac), 10);
+    if (mantissa == 0) return Q(0);
+    // value = mantissa * 10^scale, |scale| <= max_exponent + max_digits
+    const long long scale =
+        (exp_negative ? -static_cast<long long>(e) : static_cast<long long>(e)) - static_cast<long long>(frac.size());
+    mpz_class ten;
+    mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(scale < 0 ? -scale : scale));
+    q = scale < 0 ? Q(mantissa, ten) : Q(mpz_class(mantissa * ten));
+  }
+  q.canonicalize();
+  return negative ? Q(-q) : q;
+}
+
+// A certificate rational (certificate-format.md §2): a JSON string matching
+// -?(0|[1-9][0-9]*)(/[1-9][0-9]*)? of at most 100000 characters. The grammar is checked here, in
+// full, before GMP sees the text (mpq_set_str alone would accept "1/0" and more).
+Q certificate_rational(const std::string& s, const std::string& path) {
+  if (s.size() > 100000)
+    throw Failure{path + ": rational of " + std::to_string(s.size()) + " characters (limit 100000)"};
+  std::size_t i = !s.empty() && s[0] == '-' ? 1 : 0;
+  auto integer = [&](bool zero_allowed) {  // 0 | [1-9][0-9]*
+    if (i < s.size() && s[i] == '0' && zero_allowed) return ++i, true;
+    if (i >= s.size() || s[i] < '1' || s[i] > '9') return false;
+    while (i < s.size() && is_digit(s[i])) ++i;
+    return true;
+  };
+  bool ok = integer(true);
+  if (ok && i < s.size() && s[i] == '/') ++i, ok = integer(false);
+  if (!ok || i != s.size())
+    throw Failure{path + ": " + quote(s) + " is not a rational of the form -?(0|[1-9][0-9]*)(/[1-9][0-9]*)?"};
+  Q q;
+  mpq_set_str(q.get_mpq_t(), s.c_str(), 10);  // cannot fail: grammar checked, denominator not zero
+  q.canonicalize();
+  return q;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scene
+
+// One entry of contacts[], validated. Its numbers are kept as text and read again when a generator
+// is needed: "1e10000" is 7 bytes of input but 4 KB as a rational, so keeping the text keeps memory
+// proportional to the input.
+struct Contact {
+  bool wrench = false;
+  std::vector<std::string> text;  // point contact: x, y, nx, ny, mu ("0" if absent); wrench: fx, fy, m
+};
+
+std::string read_string(Reader& r) {
+  if (r.peek() != Kind::string) r.fail("expected a string");
+  return r.string();
+}
+
+// A scene number: a JSON number or a number string.
+Q read_number(Reader& r, const Limits& lim, std::string* text = nullptr) {
+  const Kind k = r.peek();
+  if (k != Kind::number && k != Kind::string) r.fail("expected a number (a JSON number or a number string)");
+  std::string s = k == Kind::number ? std::string(r.number()) : r.string();
+  Q q = scene_number(s, lim, r.path());
+  if (text) *text = std::move(s);
+  return q;
+}
+
+// An array of exactly n values; item(k) reads the k-th.
+template <class Item>
+void read_fixed(Reader& r, std::size_t n, const std::string& what, Item item) {
+  if (r.peek() != Kind::array) r.fail("expected " + what);
+  r.begin_array();
+  std::size_t k = 0;
+  while (r.next_item()) {
+    if (k == n) r.fail("expected " + what, true);
+    item(k++);
+  }
+  if (k != n) r.fail("expected " + what);
+}
+
+// n numbers: their texts are appended to `text`; true if all are zero.
+bool read_numbers(Reader& r, const Limits& lim, std::size_t n, std::vector<std::string>& text) {
+  bool zero = true;
+  read_fixed(r, n, "an array of " + std::to_string(n) + " numbers", [&](std::size_t) {
+    text.emplace_back();
+    zero = read_number(r, lim, &text.back()) == 0 && zero;
+  });
+  return zero;
+}
+
+// {at, normal, mu?, name?} (normal != 0, mu >= 0) or {wrench, name?} (wrench != 0).
+Contact read_contact(Reader& r, const Limits& lim) {
+  if (r.peek() != Kind::object)
+    r.fail("expected an object {\"at\", \"normal\", \"mu\"?, \"name\"?} or {\"wrench\", \"name\"?}");
+  r.begin_object();
+  std::vector<std::string> at, normal, wrench;
+  std::string mu = "0", key;
+  std::set<std::string> keys;
+  while (r.next_key(key)) {
+    keys.insert(key);
+    if (key == "at") {
+      read_numbers(r, lim, 2, at);
+    } else if (key == "normal") {
+      if (read_numbers(r, lim, 2, normal)) r.fail("zero vector");
+    } else if (key == "mu") {
+      if (read_number(r, lim, &mu) < 0) r.fail(quote(mu) + " is negative");
+    } else if (key == "wrench") {
+      if (read_numbers(r, lim, 3, wrench)) r.fail("zero wrench");
+    } else if (key == "name") {
+      read_string(r);
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  const bool point = keys.count("at") || keys.count("normal") || keys.count("mu");
+  if (keys.count("wrench")) {
+    if (point) r.fail("a contact has either \"at\", \"normal\" and \"mu\" (a point contact) or \"wrench\", not both");
+    return {true, wrench};
+  }
+  if (!keys.count("at") && !keys.count("normal"))
+    r.fail("expected \"at\" and \"normal\" (a point contact) or \"wrench\"");
+  if (!keys.count("at")) r.fail("missing required key \"at\"");
+  if (!keys.count("normal")) r.fail("missing required key \"normal\"");
+  return {false, {at[0], at[1], normal[0], normal[1], mu}};
+}
+
+// The top-level scene object. body, load and support are not used by the checker: only their type
+// (object) and their JSON well-formedness are checked.
+std::vector<Contact> read_scene(Reader& r, const Limits& lim) {
+  std::vector<Contact> contacts;
+  if (r.peek() != Kind::object) r.fail("a scene must be a JSON object");
+  r.begin_object();
+  bool has_version = false;
+  std::string key;
+  while (r.next_key(key)) {
+    if (key == "wrenchkit") {
+      if (read_number(r, lim) != 1) r.fail("expected 1 (the scene format version)");
+      has_version = true;
+    } else if (key == "name") {
+      read_string(r);
+    } else if (key == "body" || key == "load" || key == "support") {
+      if (r.peek() != Kind::object) r.fail("expected an object");
+      r.skip();
+    } else if (key == "contacts") {
+      if (r.peek() != Kind::array) r.fail("expected an array");
+      r.begin_array();
+      while (r.next_item()) {
+        if (contacts.size() == lim.max_contacts)
+          throw Failure{"contacts: more than " + std::to_string(lim.max_contacts) + " contacts"};
+        contacts.push_back(read_contact(r, lim));
+      }
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  if (!has_version) r.fail("missing required key \"wrenchkit\"");
+  return contacts;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Generators (certificate-format.md §1)
+
+enum class Reading { friction, frictionless };  // of force_closure, of form_closure
+
+struct Generator {
+  const char* edge;
+  Wrench w;
+};
+
+// W(p, f) = (fx, fy, px*fy - py*fx): the wrench of force f acting at point p.
+Wrench force_at(const Q& px, const Q& py, const Q& fx, const Q& fy) { return {fx, fy, px * fy - py * fx}; }
+
+// The generators of one contact under a reading, recomputed exactly from the scene text.
+std::vector<Generator> generators(const Contact& c, Reading reading, const Limits& lim) {
+  std::vector<Q> v;
+  for (const std::string& s : c.text) v.push_back(scene_number(s, lim, "contacts"));  // valid: read before
+  if (c.wrench) return {{"wrench", {v[0], v[1], v[2]}}};
+  const Q &px = v[0], &py = v[1], &nx = v[2], &ny = v[3], &mu = v[4];
+  if (reading == Reading::frictionless || mu == 0) return {{"normal", force_at(px, py, nx, ny)}};
+  // n + mu*rot90(n) = (nx - mu*ny, ny + mu*nx),  n - mu*rot90(n) = (nx + mu*ny, ny - mu*nx)
+  return {{"left", force_at(px, py, nx - mu * ny, ny + mu * nx)},
+          {"right", force_at(px, py, nx + mu * ny, ny - mu * nx)}};
+}
+
+// Power <t, w> = vx*fx + vy*fy + w*m (theory.md §1.4).
+Q power(const Q (&t)[3], const Wrench& g) { return t[0] * g.fx + t[1] * g.fy + t[2] * g.m; }
+
+Q det3(const Wrench& a, const Wrench& b, const Wrench& c) {
+  return a.fx * (b.fy * c.m - b.m * c.fy) - a.fy * (b.fx * c.m - b.m * c.fx) + a.m * (b.fx * c.fy - b.fy * c.fx);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Certificate
+
+struct Ref {  // {"contact": i, "edge": E}
+  std::string path, index, edge;
+  std::size_t contact = SIZE_MAX;  // SIZE_MAX if the index text is too long to be in range
+};
+struct Term {
+  Ref ref;
+  std::string weight_text;
+  Q weight;
+};
+struct Certificate {
+  std::set<std::string> keys;  // the keys present
+  Reading reading = Reading::friction;
+  bool holds = false;
+  std::vector<Term> combination;
+  std::vector<Ref> independent;
+  Q twist[3], where[2];  // where: reading.point or reading.direction
+  std::string label;     // reading.label
+};
+
+Q read_rational(Reader& r, std::string* text = nullptr) {
+  if (r.peek() != Kind::string) r.fail("expected a rational as a JSON string, such as \"-3/4\"");
+  std::string s = r.string();
+  Q q = certificate_rational(s, r.path());
+  if (text) *text = std::move(s);
+  return q;
+}
+
+// {"contact": i, "edge": E} and, if weighted, "weight": "p/q".
+Term read_term(Reader& r, bool weighted) {
+  Term t;
+  t.ref.path = r.path();
+  if (r.peek() != Kind::object)
+    r.fail(weighted ? "expected an object {\"contact\", \"edge\", \"weight\"}"
+                    : "expected an object {\"contact\", \"edge\"}");
+  r.begin_object();
+  std::set<std::string> keys;
+  std::string key;
+  while (r.next_key(key)) {
+    keys.insert(key);
+    if (key == "contact") {
+      if (r.peek() != Kind::number) r.fail("expected a contact index (a JSON integer)");
+      t.ref.index = std::string(r.number());
+      if (t.ref.index.find_first_not_of("0123456789") != std::string::npos)
+        r.fail("expected a contact index: a JSON integer without sign, fraction or exponent, not " + clip(t.ref.index));
+      if (t.ref.index.size() <= 18) {  // no overflow; a longer index is out of range anyway
+        unsigned long long v = 0;
+        for (const char d : t.ref.index) v = v * 10 + static_cast<unsigned>(d - '0');
+        t.ref.contact = v < SIZE_MAX ? static_cast<std::size_t>(v) : SIZE_MAX;
+      }
+    } else if (key == "edge") {
+      t.ref.edge = read_string(r);
+    } else if (key == "weight" && weighted) {
+      t.weight = read_rational(r, &t.weight_text);
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  if (!keys.count("contact")) r.fail("missing required key \"contact\"");
+  if (!keys.count("edge")) r.fail("missing required key \"edge\"");
+  if (weighted && !keys.count("weight")) r.fail("missing required key \"weight\"");
+  return t;
+}
+
+// {"label": "+" | "-", "point": [x, y]} or {"label": "infinity", "direction": [dx, dy]}
+void read_reading(Reader& r, Certificate& c) {
+  if (r.peek() != Kind::object) r.fail("expected an object {\"label\", \"point\"} or {\"label\", \"direction\"}");
+  r.begin_object();
+  std::set<std::string> keys;
+  std::string key;
+  while (r.next_key(key)) {
+    keys.insert(key);
+    if (key == "label") {
+      c.label = r.peek() == Kind::string ? r.string() : "";
+      if (c.label != "+" && c.label != "-" && c.label != "infinity") r.fail("expected \"+\", \"-\" or \"infinity\"");
+    } else if (key == "point" || key == "direction") {
+      read_fixed(r, 2, "an array of two rationals", [&](std::size_t k) { c.where[k] = read_rational(r); });
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  if (!keys.count("label")) r.fail("missing required key \"label\"");
+  const bool infinite = c.label == "infinity", point = keys.count("point") > 0, direction = keys.count("direction") > 0;
+  if (infinite ? point || !direction : !point || direction)
+    r.fail(infinite ? "label \"infinity\" needs \"direction\" and no \"point\""
+                    : "label " + quote(c.label) + " needs \"point\" and no \"direction\"");
+}
+
+Certificate read_certificate(Reader& r) {
+  Certificate c;
+  if (r.peek() != Kind::object) r.fail("a certificate must be a JSON object");
+  r.begin_object();
+  std::string key;
+  while (r.next_key(key)) {
+    c.keys.insert(key);
+    if (key == "wrenchkit_certificate") {
+      if (r.peek() != Kind::number || r.number() != "1") r.fail("expected the integer 1");
+    } else if (key == "property") {
+      const std::string p = r.peek() == Kind::string ? r.string() : "";
+      if (p != "force_closure" && p != "form_closure") r.fail("expected \"force_closure\" or \"form_closure\"");
+      c.reading = p == "force_closure" ? Reading::friction : Reading::frictionless;
+    } else if (key == "holds") {
+      if (r.peek() != Kind::boolean) r.fail("expected true or false");
+      c.holds = r.boolean();
+    } else if (key == "combination") {
+      const std::string what = "expected a non-empty array of {\"contact\", \"edge\", \"weight\"}";
+      if (r.peek() != Kind::array) r.fail(what);
+      r.begin_array();
+      while (r.next_item()) c.combination.push_back(read_term(r, true));
+      if (c.combination.empty()) r.fail(what);
+    } else if (key == "independent") {
+      read_fixed(r, 3, "an array of three {\"contact\", \"edge\"}",
+                 [&](std::size_t) { c.independent.push_back(read_term(r, false).ref); });
+    } else if (key == "twist") {
+      read_fixed(r, 3, "an array of three rationals [vx, vy, w]",
+                 [&](std::size_t k) { c.twist[k] = read_rational(r); });
+    } else if (key == "reading") {
+      read_reading(r, c);
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  return c;
+}
+
+// The keys that must, and must not, be present (certificate-format.md §3).
+void check_keys(const Certificate& c) {
+  auto need = [&c](const char* key) {
+    if (!c.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
+  };
+  auto ban = [&c](const char* key) {
+    if (c.keys.count(key))
+      throw Failure{std::string("key \"") + key + "\" is not allowed when \"holds\" is " +
+                    (c.holds ? "true" : "false")};
+  };
+  need("wrenchkit_certificate"), need("property"), need("holds");
+  if (c.holds)
+    need("combination"), need("independent"), ban("twist"), ban("reading");
+  else
+    need("twist"), ban("combination"), ban("independent");
+}
+
+std::string name(std::size_t contact, const std::string& edge) {
+  return "contacts[" + std::to_string(contact) + "] edge " + edge;
+}
+
+// Rule 1 of §3.1: the reference names an existing contact and an edge that contact has under the
+// reading. Returns that generator, recomputed from the scene.
+Wrench resolve(const Ref& ref, const std::vector<Contact>& contacts, Reading reading, const Limits& lim) {
+  if (ref.contact >= contacts.size())
+    throw Failure{ref.path + ".contact: index " + clip(ref.index) + " is out of range (the scene has " +
+                  std::to_string(contacts.size()) + " contacts)"};
+  std::string edges;
+  for (const Generator& g : generators(contacts[ref.contact], reading, lim)) {
+    if (ref.edge == g.edge) return g.w;
+    edges += (edges.empty() ? "" : " or ") + quote(g.edge);
+  }
+  throw Failure{ref.path + ".edge: contacts[" + std::to_string(ref.contact) + "] has no edge " + quote(ref.edge) +
+                " under the " + (reading == Reading::friction ? "friction" : "frictionless") + " reading (it has " +
+                edges + ")"};
+}
+
+// §3.1, theory [FC-2]. With S the generators of `combination`: (3) and (4) give, for every g_j in S,
+// -g_j = sum_{k != j} (l_k / l_j) g_k in pos(S), so pos(S) is a linear subspace; (5) makes it
+// 3-dimensional, so W contains pos(S) = R^3.
+void check_positive(const Certificate& c, const std::vector<Contact>& contacts, const Limits& lim) {
+  // (2) no generator appears twice in combination. Checked on the references before (1), so that
+  // (1) recomputes each generator at most once.
+  std::map<std::pair<std::size_t, std::string>, std::string> seen;
+  for (const Term& t : c.combination) {
+    const auto [it, fresh] = seen.emplace(std::make_pair(t.ref.contact, t.ref.edge), t.ref.path);
+    if (!fresh)
+      throw Failure{t.ref.path + ": " + name(t.ref.contact, t.ref.edge) + " appears twice (also at " + it->second +
+                    ")"};
+  }
+  // (1) every reference names a generator of the scene under the reading
+  std::vector<Wrench> sum, independent;  // sum: first the terms weight_k g_k
+  for (const Term& t : c.combination) {
+    const Wrench g = resolve(t.ref, contacts, c.reading, lim);
+    sum.push_back({t.weight * g.fx, t.weight * g.fy, t.weight * g.m});
+  }
+  for (const Ref& ref : c.independent) independent.push_back(resolve(ref, contacts, c.reading, lim));
+  // (3) every weight is strictly positive
+  for (const Term& t : c.combination)
+    if (sgn(t.weight) <= 0)
+      throw Failure{t.ref.path + ".weight: " + quote(t.weight_text) + " is not strictly positive"};
+  // (4) sum_k weight_k g_k = (0, 0, 0) exactly. Added as a balanced tree: with k weights of n digits
+  // whose denominators share no factor, that is about log k rounds of work on k n digits, where a
+  // running sum would take k rounds.
+  while (sum.size() > 1) {
+    std::vector<Wrench> half;
+    for (std::size_t k = 0; k + 1 < sum.size(); k += 2)
+      half.push_back({sum[k].fx + sum[k + 1].fx, sum[k].fy + sum[k + 1].fy, sum[k].m + sum[k + 1].m});
+    if (sum.size() % 2 == 1) half.push_back(std::move(sum.back()));
+    sum.swap(half);
+  }
+  const Wrench& total = sum.front();  // combination is not empty
+  if (total.fx != 0 || total.fy != 0 || total.m != 0)
+    throw Failure{"combination: the weighted sum of the generators is (" + show(total.fx) + ", " + show(total.fy) +
+                  ", " + show(total.m) + "), not (0, 0, 0)"};
+  // (5) the three independent generators are in combination, and their determinant is not zero
+  for (const Ref& ref : c.independent)
+    if (!seen.count({ref.contact, ref.edge}))
+      throw Failure{ref.path + ": " + name(ref.contact, ref.edge) + " is not in combination"};
+  if (det3(independent[0], independent[1], independent[2]) == 0)
+    throw Failure{"independent: the three generators are linearly dependent (determinant 0)"};
+}
+
+// §3.2, theory [FC-3]. Every x in W is sum mu_g g with mu >= 0, so <t, x> >= 0, while <t, -t> < 0:
+// the wrench -t is not in W, and W != R^3.
+void check_negative(const Certificate& c, const std::vector<Contact>& contacts, const Limits& lim) {
+  const Q(&t)[3] = c.twist;
+  // (1) the twist is not zero
+  if (t[0] == 0 && t[1] == 0 && t[2] == 0) throw Failure{"twist: the zero twist proves nothing"};
+  // (2) <t, g> >= 0 for every generator g of the scene under the reading. The power is linear in t,
+  // so its sign is that of <T, g> for T = L t, L > 0 the lcm of t's denominators: an integer twist,
+  // which spares the big gcds of adding fractions when t has long denominators.
+  mpz_class L = 1;
+  for (const Q& x : t) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), x.get_den_mpz_t());
+  const Q T[3] = {Q(t[0] * L), Q(t[1] * L), Q(t[2] * L)};
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    for (const Generator& g : generators(contacts[i], c.reading, lim))
+      if (sgn(power(T, g.w)) < 0) throw Failure{"twist: power " + show(power(t, g.w)) + " against " + name(i, g.edge)};
+  // (3) the reading, if present, is P(t) = (-vy, vx, w) on the two-sided plane
+  if (!c.keys.count("reading")) return;
+  const Q &vx = t[0], &vy = t[1], &w = t[2];
+  const std::string label = w > 0 ? "+" : w < 0 ? "-" : "infinity";
+  if (c.label != label)
+    throw Failure{"reading.label: " + quote(c.label) + " does not match the twist, whose label is " + quote(label)};
+  if (w != 0) {
+    const Q cx = -vy / w, cy = vx / w;  // the rotation centre
+    if (c.where[0] != cx || c.where[1] != cy)
+      throw Failure{"reading.point: " + show(c.where[0], c.where[1]) + " is not the rotation centre " + show(cx, cy) +
+                    " of the twist"};
+  } else {  // d = (-vy, vx) != 0 as t != 0; e is a positive multiple of d iff d x e = 0 and d . e > 0
+    const Q dx = -vy, dy = vx, &ex = c.where[0], &ey = c.where[1];
+    if (dx * ey - dy * ex != 0 || dx * ex + dy * ey <= 0)
+      throw Failure{"reading.direction: " + show(ex, ey) +
+                    " is not a positive multiple of (-vy, vx) = " + show(dx, dy)};
+  }
+}
+
+}  // namespace
+
+Result check(std::string_view scene_json, std::string_view certificate_json, const Limits& limits) {
+  std::vector<Contact> contacts;
+  try {
+    Reader r(scene_json, limits.max_depth);
+    contacts = read_scene(r, limits);
+    r.finish();
+  } catch (const Failure& f) {
+    return {Outcome::bad_scene, f.message};
+  } catch (const std::bad_alloc&) {
+    return {Outcome::bad_scene, "out of memory while reading the scene"};
+  } catch (...) {  // not expected; check() never throws
+    return {Outcome::bad_scene, "internal error while reading the scene"};
+  }
+  try {
+    Reader r(certificate_json, limits.max_depth);
+    const Certificate c = read_certificate(r);
+    r.finish();
+    check_keys(c);
+    if (c.holds)
+      check_positive(c, contacts, limits);
+    else
+      check_negative(c, contacts, limits);
+    return {Outcome::accepted, "accepted"};
+  } catch (const Failure& f) {
+    return {Outcome::rejected, f.message};
+  } catch (const std::bad_alloc&) {
+    return {Outcome::rejected, "out of memory while checking the certificate"};
+  } catch (...) {
+    return {Outcome::rejected, "internal error while checking the certificate"};
+  }
+}
+
+}  // namespace wrenchkit_checker

@@ -1,0 +1,51 @@
+// proofs/checker/checker.h - the independent certificate checker of wrenchkit (certificate format v1).
+//
+// check() decides whether a certificate (proofs/certificate-format.md) proves its claim about a scene
+// (docs/scene-format.md):
+//   * holds = true  (theory [FC-2]): strictly positive weights of distinct generators sum to the zero
+//     wrench and three of them are linearly independent, so the contact wrench cone is all of R^3;
+//   * holds = false (theory [FC-3]): a nonzero twist has non-negative power against every generator,
+//     so the cone lies in a closed half-space and is not R^3.
+// Every generator is recomputed from the scene text; the certificate supplies only indices and
+// rationals. All arithmetic is exact (GMP rationals); there is no floating point.
+//
+// Independence: this checker uses the C++17 standard library and GMP only, with its own JSON reader
+// and number parser. It shares no code with the engine (exact/, core/, float/) and does not use CGAL.
+//
+// Robustness: check() never throws and never aborts. Nesting is bounded by `max_depth` and nothing
+// recurses; number texts are checked against the limits before any big number is built; memory is
+// proportional to the input size.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace wrenchkit_checker {
+
+// Limits on the scene (docs/scene-format.md "Limits"); max_depth also applies to the certificate.
+// Certificate rationals are at most 100000 characters (certificate-format.md §2), a fixed limit.
+struct Limits {
+  std::size_t max_digits = 10000;  // digits in one scene number (exponent digits included)
+  long max_exponent = 10000;       // |exponent| of a scene number
+  std::size_t max_depth = 64;      // JSON containers nested in one another
+  std::size_t max_contacts = 100000;
+};
+
+enum class Outcome {
+  accepted,   // the certificate proves its claim for this scene
+  rejected,   // anything wrong with the certificate (malformed, wrong type, failed condition, ...)
+  bad_scene,  // the scene is not a valid scene; the certificate was not examined
+};
+
+struct Result {
+  Outcome outcome;
+  // "accepted", or the reason, naming the JSON path, e.g. "contacts[2].normal: zero vector",
+  // "twist: power -1 against contacts[0] edge normal"; JSON syntax errors read
+  // "<line>:<column>: invalid JSON: <what>".
+  std::string message;
+};
+
+Result check(std::string_view scene_json, std::string_view certificate_json, const Limits& limits = {});
+
+}  // namespace wrenchkit_checker

@@ -1,0 +1,385 @@
+#!/usr/bin/env python3
+"""Writes and verifies the worked examples of proofs/examples/ (certificate format v1).
+
+Every scene and certificate is written from the tables below, then read back from disk and checked
+by a small exact checker written here with Python's fractions (a second implementation, independent
+of the C++ one): each *.valid.json must pass, each *.invalid.json must fail for the reason its
+table entry names. Run from anywhere:  python3 proofs/examples/make_examples.py
+"""
+import json
+import os
+import re
+import sys
+from fractions import Fraction as F
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+# ----------------------------------------------------------------------------------------------
+# Scenes (numbers are written as they should appear in the file)
+
+SCENES = {
+    "block_corner_mu0": {
+        "wrenchkit": 1,
+        "name": "frictionless unit block in a corner (certificate-format.md section 5)",
+        "body": {"outline": [[0, 0], [1, 0], [1, 1], [0, 1]], "com": ["1/2", "1/2"]},
+        "contacts": [
+            {"at": [0, 0], "normal": [0, 1], "name": "floor, left"},
+            {"at": [1, 0], "normal": [0, 1], "name": "floor, right"},
+            {"at": [0, 0], "normal": [1, 0], "name": "wall, bottom"},
+            {"at": [0, 1], "normal": [1, 0], "mu": 0, "name": "wall, top"},
+        ],
+        "load": {"force": [0, -1], "at": ["1/2", "1/2"]},
+    },
+    "square_crossed_couples": {
+        "wrenchkit": 1,
+        "name": "square [0,2]^2 held by two crossed couples, frictionless (certificate-format.md section 5)",
+        "body": {"outline": [[0, 0], [2, 0], [2, 2], [0, 2]]},
+        "contacts": [
+            {"at": ["3/2", 0], "normal": [0, 1], "name": "bottom"},
+            {"at": ["1/2", 2], "normal": [0, -1], "name": "top"},
+            {"at": [0, "3/2"], "normal": [1, 0], "name": "left"},
+            {"at": [2, "1/2"], "normal": [-1, 0], "name": "right"},
+        ],
+    },
+    "two_finger_mu_1_2": {
+        "wrenchkit": 1,
+        "name": "unit square pinched by two fingers with mu = 1/2 (theory.md section 8.5)",
+        "body": {"outline": [[0, 0], [1, 0], [1, 1], [0, 1]]},
+        "contacts": [
+            {"at": [0, "1/2"], "normal": [1, 0], "mu": "1/2", "name": "finger 1"},
+            {"at": [1, 0.5], "normal": [-1, 0], "mu": 0.5, "name": "finger 2"},
+        ],
+    },
+    "triangle_mu_1_10": {
+        "wrenchkit": 1,
+        "name": "triangle made secure by friction, mu = 1/10 (theory.md section 8.7); mixed number forms",
+        "body": {"outline": [[0, 0], [6, 0], [0, 6]], "com": [2, 2]},
+        "contacts": [
+            {"at": [1, 0], "normal": ["0", "1e0"], "mu": 0.1},
+            {"at": ["0.0", "1."], "normal": ["+1/1", 0], "mu": "1e-1"},
+            {"at": ["3.0", "30E-1"], "normal": ["-1", "-.1e1"], "mu": "1/10"},
+        ],
+        "load": {"gravity": 1},
+        "support": {"mu": "1/2", "points": [{"at": [1, 1], "force": 1}]},
+    },
+    "wrench_generators": {
+        "wrenchkit": 1,
+        "name": "four wrench generators that positively span R^3",
+        "contacts": [
+            {"wrench": [1, 0, 0], "name": "push +x"},
+            {"wrench": [0, "1", 0], "name": "push +y"},
+            {"wrench": [0, 0, "1e0"], "name": "counter-clockwise torque"},
+            {"wrench": [-1, -1, -1]},
+        ],
+    },
+}
+
+# ----------------------------------------------------------------------------------------------
+# Certificates: (scene, description, expected, certificate)
+# expected: "valid", or "invalid:<reason>|<text>" where <reason> is what verify() below returns and
+# <text> is a substring of the C++ checker's message (the test suite checks it).
+
+
+def comb(*terms):
+    return [{"contact": c, "edge": e, "weight": w} for c, e, w in terms]
+
+
+def refs(*pairs):
+    return [{"contact": c, "edge": e} for c, e in pairs]
+
+
+def positive(prop, combination, independent):
+    return {"wrenchkit_certificate": 1, "property": prop, "holds": True,
+            "combination": combination, "independent": independent}
+
+
+def negative(prop, twist, reading=None):
+    cert = {"wrenchkit_certificate": 1, "property": prop, "holds": False, "twist": twist}
+    if reading is not None:
+        cert["reading"] = reading
+    return cert
+
+
+SQUARE = comb((0, "normal", "1"), (1, "normal", "1"), (2, "normal", "1"), (3, "normal", "1"))
+SQUARE_IND = refs((0, "normal"), (1, "normal"), (2, "normal"))
+TWO_FINGER = comb((0, "left", "1"), (0, "right", "1"), (1, "left", "1"), (1, "right", "1"))
+TWO_FINGER_IND = refs((0, "left"), (0, "right"), (1, "left"))
+TRIANGLE_EDGES = [(c, e) for c in range(3) for e in ("left", "right")]
+WRENCHES = comb((0, "wrench", "1"), (1, "wrench", "1"), (2, "wrench", "1"), (3, "wrench", "1"))
+WRENCHES_IND = refs((0, "wrench"), (1, "wrench"), (2, "wrench"))
+
+CERTS = [
+    # block in a corner: not in force closure (nor form closure)
+    ("block_corner_mu0", "translate_up", "valid",
+     negative("force_closure", ["0", "1", "0"], {"label": "infinity", "direction": ["-1", "0"]})),
+    ("block_corner_mu0", "form_translate_up", "valid", negative("form_closure", ["0", "1", "0"])),
+    ("block_corner_mu0", "clockwise_about_1_0", "valid",
+     negative("force_closure", ["0", "1", "-1"], {"label": "-", "point": ["1", "0"]})),
+    ("block_corner_mu0", "counter_clockwise_about_0_1", "valid",
+     negative("force_closure", ["2/2", "0", "1"], {"label": "+", "point": ["0", "1"]})),
+    ("block_corner_mu0", "twist_down", "invalid:power|twist: power -1 against contacts[0] edge normal",
+     negative("force_closure", ["0", "-1", "0"])),
+    ("block_corner_mu0", "zero_twist", "invalid:zero twist|twist: the zero twist proves nothing", negative("force_closure", ["0", "0", "-0"])),
+    ("block_corner_mu0", "wrong_reading_label", "invalid:label|reading.label: \"+\" does not match the twist, whose label is \"infinity\"",
+     negative("force_closure", ["0", "1", "0"], {"label": "+", "point": ["0", "0"]})),
+    ("block_corner_mu0", "wrong_reading_direction", "invalid:direction|reading.direction: (1, 0) is not a positive multiple of (-vy, vx) = (-1, 0)",
+     negative("force_closure", ["0", "1", "0"], {"label": "infinity", "direction": ["1", "0"]})),
+    ("block_corner_mu0", "wrong_reading_point", "invalid:point|reading.point: (1, 1) is not the rotation centre (1, 0) of the twist",
+     negative("force_closure", ["0", "1", "-1"], {"label": "-", "point": ["1", "1"]})),
+    ("block_corner_mu0", "claims_closure", "invalid:sum|combination: the weighted sum of the generators is",
+     positive("force_closure", comb((0, "normal", "1"), (2, "normal", "1"), (3, "normal", "1")),
+              refs((0, "normal"), (2, "normal"), (3, "normal")))),
+
+    # square held by crossed couples: form closure
+    ("square_crossed_couples", "form", "valid", positive("form_closure", SQUARE, SQUARE_IND)),
+    ("square_crossed_couples", "force", "valid", positive("force_closure", SQUARE, SQUARE_IND)),
+    ("square_crossed_couples", "weights_not_lowest_terms", "valid",
+     positive("form_closure", comb((3, "normal", "2/4"), (1, "normal", "3/6"), (2, "normal", "1/2"),
+                                   (0, "normal", "50/100")), refs((1, "normal"), (2, "normal"), (3, "normal")))),
+    ("square_crossed_couples", "zero_weight", 'invalid:weight|combination[1].weight: "0" is not strictly positive',
+     positive("form_closure", comb((0, "normal", "1"), (1, "normal", "0"), (2, "normal", "1"), (3, "normal", "1")),
+              SQUARE_IND)),
+    ("square_crossed_couples", "negative_weight", 'invalid:weight|combination[0].weight: "-1" is not strictly positive',
+     positive("form_closure", comb((0, "normal", "-1"), (1, "normal", "-1"), (2, "normal", "-1"), (3, "normal", "-1")),
+              SQUARE_IND)),
+    ("square_crossed_couples", "unbalanced_weights", "invalid:sum|combination: the weighted sum of the generators is (0, -1, -1/2), not (0, 0, 0)",
+     positive("form_closure", comb((0, "normal", "1"), (1, "normal", "2"), (2, "normal", "1"), (3, "normal", "1")),
+              SQUARE_IND)),
+    ("square_crossed_couples", "dependent_triple", "invalid:determinant|independent: the three generators are linearly dependent",
+     positive("form_closure", SQUARE, refs((0, "normal"), (0, "normal"), (1, "normal")))),
+    ("square_crossed_couples", "index_out_of_range", "invalid:reference|combination[3].contact: index 4 is out of range (the scene has 4 contacts)",
+     positive("form_closure", comb((0, "normal", "1"), (1, "normal", "1"), (2, "normal", "1"), (4, "normal", "1")),
+              SQUARE_IND)),
+    ("square_crossed_couples", "huge_index", "invalid:reference|independent[2].contact: index 123456789012345678901234567890 is out of range",
+     positive("form_closure", SQUARE, refs((0, "normal"), (1, "normal"), (123456789012345678901234567890, "normal")))),
+    ("square_crossed_couples", "left_edge_frictionless", 'invalid:reference|combination[0].edge: contacts[0] has no edge "left" under the friction reading (it has "normal")',
+     positive("force_closure", comb((0, "left", "1"), (1, "normal", "1"), (2, "normal", "1"), (3, "normal", "1")),
+              SQUARE_IND)),
+    ("square_crossed_couples", "duplicate_generator", "invalid:duplicate|combination[4]: contacts[0] edge normal appears twice (also at combination[0])",
+     positive("form_closure", comb((0, "normal", "1/2"), (1, "normal", "1"), (2, "normal", "1"), (3, "normal", "1"),
+                                   (0, "normal", "1/2")), SQUARE_IND)),
+    ("square_crossed_couples", "unknown_key", 'invalid:unknown key|unknown key "comment"',
+     dict(positive("form_closure", SQUARE, SQUARE_IND), comment="not part of format v1")),
+    ("square_crossed_couples", "zero_denominator_weight", 'invalid:malformed|combination[0].weight: "1/0" is not a rational',
+     positive("form_closure", comb((0, "normal", "1/0"), (1, "normal", "1"), (2, "normal", "1"), (3, "normal", "1")),
+              SQUARE_IND)),
+    ("square_crossed_couples", "twist_with_holds_true", 'invalid:keys|key "twist" is not allowed when "holds" is true',
+     dict(positive("form_closure", SQUARE, SQUARE_IND), twist=["0", "1", "0"])),
+
+    # two fingers with friction: force closure, not form closure
+    ("two_finger_mu_1_2", "force", "valid", positive("force_closure", TWO_FINGER, TWO_FINGER_IND)),
+    ("two_finger_mu_1_2", "force_scaled", "valid",
+     positive("force_closure", comb((1, "right", "7/3"), (1, "left", "7/3"), (0, "right", "14/6"), (0, "left", "7/3")),
+              refs((1, "right"), (0, "left"), (0, "right")))),
+    ("two_finger_mu_1_2", "form_translate_up", "valid",
+     negative("form_closure", ["0", "1", "0"], {"label": "infinity", "direction": ["-2", "0"]})),
+    ("two_finger_mu_1_2", "normal_edge_frictional", 'invalid:reference|combination[0].edge: contacts[0] has no edge "normal" under the friction reading (it has "left" or "right")',
+     positive("force_closure", comb((0, "normal", "1"), (0, "right", "1"), (1, "left", "1"), (1, "right", "1")),
+              TWO_FINGER_IND)),
+    ("two_finger_mu_1_2", "translate_up_under_friction", "invalid:power|twist: power -1/2 against contacts[0] edge right",
+     negative("force_closure", ["0", "1", "0"])),
+    ("two_finger_mu_1_2", "form_claimed", "invalid:determinant|independent: the three generators are linearly dependent",
+     positive("form_closure", comb((0, "normal", "1"), (1, "normal", "1")),
+              refs((0, "normal"), (1, "normal"), (0, "normal")))),
+
+    # triangle: force closure with mu = 1/10; frictionless reading has rank 2 (normals meet at G = (1,1))
+    ("triangle_mu_1_10", "force", "valid",
+     positive("force_closure", comb(*[(c, e, "1") for c, e in TRIANGLE_EDGES]),
+              refs((0, "left"), (0, "right"), (1, "left")))),
+    ("triangle_mu_1_10", "force_uneven", "valid", None),  # weights computed below
+    ("triangle_mu_1_10", "form_rotation_about_G", "valid",
+     negative("form_closure", ["1", "-1", "1"], {"label": "+", "point": ["1", "1"]})),
+    ("triangle_mu_1_10", "form_rotation_about_G_clockwise", "valid",
+     negative("form_closure", ["-2", "2", "-2"], {"label": "-", "point": ["2/2", "1"]})),
+    ("triangle_mu_1_10", "force_rotation_about_G", "invalid:power|twist: power -1/10 against contacts[0] edge left",
+     negative("force_closure", ["1", "-1", "1"], {"label": "+", "point": ["1", "1"]})),
+    ("triangle_mu_1_10", "form_rank_2", "invalid:determinant|independent: the three generators are linearly dependent",
+     positive("form_closure", comb((0, "normal", "1"), (1, "normal", "1"), (2, "normal", "1")),
+              refs((0, "normal"), (1, "normal"), (2, "normal")))),
+
+    # wrench generators: the same under both readings
+    ("wrench_generators", "force", "valid", positive("force_closure", WRENCHES, WRENCHES_IND)),
+    ("wrench_generators", "form", "valid", positive("form_closure", WRENCHES, WRENCHES_IND)),
+    ("wrench_generators", "normal_edge_on_wrench", 'invalid:reference|combination[0].edge: contacts[0] has no edge "normal" under the friction reading (it has "wrench")',
+     positive("force_closure", comb((0, "normal", "1"), (1, "wrench", "1"), (2, "wrench", "1"), (3, "wrench", "1")),
+              WRENCHES_IND)),
+]
+
+# ----------------------------------------------------------------------------------------------
+# An independent exact checker (Python fractions)
+
+SCENE_NUMBER = re.compile(r"[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?|[+-]?\d+/\d+")
+RATIONAL = re.compile(r"-?(0|[1-9][0-9]*)(/[1-9][0-9]*)?")
+
+
+def number(x):
+    text = x if isinstance(x, str) else str(x)
+    assert SCENE_NUMBER.fullmatch(text), text
+    return F(text)  # Fraction reads decimals, exponents and p/q exactly
+
+
+def generators(contact, friction):
+    if "wrench" in contact:
+        return {"wrench": tuple(number(v) for v in contact["wrench"])}
+    (px, py), (nx, ny) = (number(v) for v in contact["at"]), (number(v) for v in contact["normal"])
+    mu = number(contact.get("mu", 0))
+
+    def W(fx, fy):
+        return (fx, fy, px * fy - py * fx)
+
+    if not friction or mu == 0:
+        return {"normal": W(nx, ny)}
+    return {"left": W(nx - mu * ny, ny + mu * nx), "right": W(nx + mu * ny, ny - mu * nx)}
+
+
+def rational(s):
+    if not isinstance(s, str) or not RATIONAL.fullmatch(s):
+        raise ValueError(f"{s!r} is not a rational")
+    return F(s)
+
+
+def det3(a, b, c):
+    return (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+            + a[2] * (b[0] * c[1] - b[1] * c[0]))
+
+
+def verify(scene, cert):
+    """Returns None if cert proves its claim for scene, else a short reason."""
+    keys = set(cert)
+    allowed = {"wrenchkit_certificate", "property", "holds", "combination", "independent", "twist", "reading"}
+    if keys - allowed:
+        return "unknown key"
+    if cert.get("wrenchkit_certificate") != 1 or cert.get("property") not in ("force_closure", "form_closure"):
+        return "header"
+    friction = cert["property"] == "force_closure"
+    gens = [generators(c, friction) for c in scene["contacts"]]
+    try:
+        if cert["holds"] is True:
+            if keys != {"wrenchkit_certificate", "property", "holds", "combination", "independent"}:
+                return "keys"
+
+            def gen(ref):
+                i, e = ref["contact"], ref["edge"]
+                if not (type(i) is int and 0 <= i < len(gens)):
+                    return None
+                return gens[i].get(e)
+
+            terms = cert["combination"]
+            if any(gen(t) is None for t in terms) or any(gen(r) is None for r in cert["independent"]):
+                return "reference"
+            names = [(t["contact"], t["edge"]) for t in terms]
+            if len(set(names)) != len(names):
+                return "duplicate"
+            weights = [rational(t["weight"]) for t in terms]
+            if any(w <= 0 for w in weights):
+                return "weight"
+            if any(sum(w * gen(t)[k] for w, t in zip(weights, terms)) != 0 for k in range(3)):
+                return "sum"
+            ind = cert["independent"]
+            if len(ind) != 3 or any((r["contact"], r["edge"]) not in names for r in ind):
+                return "independent"
+            if det3(*(gen(r) for r in ind)) == 0:
+                return "determinant"
+            return None
+        if keys - {"reading"} != {"wrenchkit_certificate", "property", "holds", "twist"}:
+            return "keys"
+        vx, vy, w = (rational(v) for v in cert["twist"])
+        if (vx, vy, w) == (0, 0, 0):
+            return "zero twist"
+        for g in (g for c in gens for g in c.values()):
+            if vx * g[0] + vy * g[1] + w * g[2] < 0:
+                return "power"
+        if "reading" in cert:
+            r = cert["reading"]
+            label = "+" if w > 0 else "-" if w < 0 else "infinity"
+            if r["label"] != label:
+                return "label"
+            if w != 0:
+                if set(r) != {"label", "point"} or [rational(v) for v in r["point"]] != [-vy / w, vx / w]:
+                    return "point"
+            else:
+                dx, dy = -vy, vx
+                ex, ey = (rational(v) for v in r["direction"])
+                if set(r) != {"label", "direction"} or dx * ey - dy * ex != 0 or dx * ex + dy * ey <= 0:
+                    return "direction"
+        return None
+    except (ValueError, KeyError, TypeError) as e:
+        return f"malformed: {e}"
+
+
+# ----------------------------------------------------------------------------------------------
+# Computed certificate: an uneven strictly positive combination of the triangle's six edges
+
+
+def triangle_uneven():
+    scene = SCENES["triangle_mu_1_10"]
+    gens = [generators(c, True)[e] for c, e in ((scene["contacts"][i], e) for i, e in TRIANGLE_EDGES)]
+    # Weights 1 sum to zero (each contact's left + right is 2n at p; the normals' wrenches sum to 0).
+    # Add t times a null-space vector that moves weight between contact 0 and contact 1:
+    # solve x0*g0L + x1*g0R + y*g1L = -g1R for (x0, x1, y), then v = (x0, x1, y, 1, 0, 0) is in the null space.
+    A = [[gens[0][k], gens[1][k], gens[2][k], -gens[3][k]] for k in range(3)]
+    for col in range(3):  # Gauss-Jordan on a 3x4 augmented matrix
+        piv = next(r for r in range(col, 3) if A[r][col] != 0)
+        A[col], A[piv] = A[piv], A[col]
+        A[col] = [v / A[col][col] for v in A[col]]
+        for r in range(3):
+            if r != col:
+                A[r] = [a - A[r][col] * b for a, b in zip(A[r], A[col])]
+    null = [A[0][3], A[1][3], A[2][3], F(1), F(0), F(0)]
+    weights = [1 + F(1, 3) * v for v in null]
+    assert all(w > 0 for w in weights)
+    assert all(sum(w * g[k] for w, g in zip(weights, gens)) == 0 for k in range(3))
+    return positive("force_closure", comb(*[(c, e, str(w)) for (c, e), w in zip(TRIANGLE_EDGES, weights)]),
+                    refs((0, "left"), (1, "right"), (2, "left")))
+
+
+# ----------------------------------------------------------------------------------------------
+# Writing
+
+
+def dump(obj, indent=""):
+    """JSON with one contact / term per line: readable and diff-friendly."""
+    if isinstance(obj, dict) and indent == "":
+        inner = [f'  {json.dumps(k)}: {dump(v, "  ")}' for k, v in obj.items()]
+        return "{\n" + ",\n".join(inner) + "\n}\n"
+    if isinstance(obj, list) and obj and all(isinstance(x, dict) for x in obj):
+        return "[\n" + ",\n".join(indent + "  " + json.dumps(x) for x in obj) + "\n" + indent + "]"
+    return json.dumps(obj)
+
+
+def main():
+    for name in os.listdir(HERE):
+        if name.endswith(".json"):
+            os.remove(os.path.join(HERE, name))
+    for name, scene in SCENES.items():
+        with open(os.path.join(HERE, f"{name}.scene.json"), "w") as f:
+            f.write(dump(scene))
+    failures = 0
+    reasons = []
+    for scene_name, desc, expected, cert in CERTS:
+        if cert is None:
+            cert = triangle_uneven()
+        kind = "valid" if expected == "valid" else "invalid"
+        path = os.path.join(HERE, f"{scene_name}.{desc}.{kind}.json")
+        with open(path, "w") as f:
+            f.write(dump(cert))
+        if kind == "invalid":
+            reasons.append(f"{os.path.basename(path)}\t{expected.split('|', 1)[1]}\n")
+        # read both files back from disk, exactly (numbers kept as text)
+        load = lambda p: json.load(open(p), parse_float=str, parse_int=int)  # noqa: E731
+        scene = load(os.path.join(HERE, f"{scene_name}.scene.json"))
+        reason = verify(scene, load(path))
+        want = None if kind == "valid" else expected[len("invalid:"):].split("|")[0]
+        if not (reason == want or (want == "malformed" and reason and reason.startswith(want))):
+            print(f"MISMATCH {os.path.basename(path)}: {reason or 'passes'}")
+            failures += 1
+        else:
+            print(f"ok  {os.path.basename(path)}: {reason or 'passes'}")
+    with open(os.path.join(HERE, "invalid-reasons.tsv"), "w") as f:
+        f.write("# file<TAB>text that the checker's reason must contain (written by make_examples.py)\n")
+        f.writelines(reasons)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
