@@ -76,6 +76,27 @@ TEST(Cli, ClosureJsonCertificateRoundTripsThroughCheck) {
   EXPECT_EQ(other.out.rfind("rejected: ", 0), 0u) << other.out;
 }
 
+TEST(Cli, EveryGoldenSceneThroughTheCommandAndTheChecker) {
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(test::source_dir() + "/tests/golden")) {
+    const std::string file = e.path().string();
+    if (file.size() < 11 || file.compare(file.size() - 11, 11, ".scene.json")) continue;
+    SCOPED_TRACE(file);
+    const std::string expected = test::read_text(file.substr(0, file.size() - 11) + ".expected.json");
+    const std::string cert = (scratch() / "g_fc.json").string(), form = (scratch() / "g_fo.json").string();
+    const Cli_result r = run("closure --json --certificate '" + cert + "' --form-certificate '" + form + "' '" + file + "'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const char* key : {"force_closure", "form_closure"}) {
+      const bool want = expected.find(std::string("\"") + key + "\": true") != std::string::npos;
+      EXPECT_NE(r.out.find(std::string("\"") + key + "\": " + (want ? "true" : "false")), std::string::npos) << key;
+    }
+    EXPECT_EQ(run("check '" + file + "' '" + cert + "'").code, 0);
+    EXPECT_EQ(run("check '" + file + "' '" + form + "'").code, 0);
+    ++n;
+  }
+  EXPECT_GE(n, 36);
+}
+
 TEST(Cli, StandardInputAndHumanSummary) {
   const Cli_result r = run("closure -", test::read_text(golden("vertical_walls_squeeze")));
   EXPECT_EQ(r.code, 0) << r.err;

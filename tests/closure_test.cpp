@@ -292,3 +292,50 @@ TEST(ClosureCertificates, TamperedCertificatesAreRejected) {
 
 }  // namespace
 }  // namespace wrenchkit
+
+namespace wrenchkit {
+namespace {
+
+// ---- Thresholds: random two-finger grasps at μ* and μ* ± 10^-40 against Nguyen's test. ----
+//
+// Two frictional contacts with the same μ are in force closure iff d = p2 − p1 is strictly inside
+// the friction cone at p1 and −d strictly inside the one at p2 (theory.md §8.5): n_i·(±d) > 0 and
+// |rot90(n_i)·(±d)| < μ n_i·(±d). With both n·d conditions true, the threshold is
+// μ* = max(|rot90(n1)·d| / n1·d, |rot90(n2)·d| / −n2·d): closure iff μ > μ*.
+TEST(ClosureThresholds, TwoFingerGraspsAtAndAroundNguyensThreshold) {
+  const std::uint64_t seed = test::seed(42);
+  std::mt19937_64 rng(seed);
+  auto r = [&](int lo, int hi) {
+    return Rational(std::uniform_int_distribution<int>(lo, hi)(rng), std::uniform_int_distribution<int>(1, 97)(rng));
+  };
+  const Rational eps(Integer(1), Integer("1" + std::string(40, '0')));
+  int tested = 0;
+  for (int i = 0; tested < 300 && i < 5000; ++i) {
+    const Rational p1x = r(-50, 50), p1y = r(-50, 50), p2x = r(-50, 50), p2y = r(-50, 50);
+    const Rational dx = p2x - p1x, dy = p2y - p1y;
+    const Rational n1x = r(-20, 20), n1y = r(-20, 20), n2x = r(-20, 20), n2y = r(-20, 20);
+    const Rational a1 = n1x * dx + n1y * dy, a2 = -(n2x * dx + n2y * dy);  // n1·d, n2·(−d)
+    if (a1 <= 0 || a2 <= 0) continue;
+    const Rational t1 = -n1y * dx + n1x * dy, t2 = -(-n2y * dx + n2x * dy);  // rot90(n)·(±d)
+    const Rational mu_star = std::max(abs(t1) / a1, abs(t2) / a2);
+    ++tested;
+    for (int k = -1; k <= 1; ++k) {
+      const Rational mu = mu_star + k * eps;
+      if (mu < 0) continue;
+      const std::string text = scene_json({{to_string(p1x), to_string(p1y), to_string(n1x), to_string(n1y), to_string(mu)},
+                                           {to_string(p2x), to_string(p2y), to_string(n2x), to_string(n2y), to_string(mu)}});
+      const Closure_answer a = decide_closure(read_scene(text, Input_limits{}), Property::force_closure);
+      const auto cert = test::checker_accepts(text, certificate_json(a.certificate));
+      if (a.holds != (k > 0) || !cert) {
+        ADD_FAILURE() << "seed " << seed << " case " << i << " mu = mu* " << (k < 0 ? "- 1e-40" : k > 0 ? "+ 1e-40" : "")
+                      << ": closure " << a.holds << "\n" << cert.message() << "\nscene dumped to "
+                      << test::dump_failure(text, "threshold_" + std::to_string(seed) + "_" + std::to_string(i));
+        return;
+      }
+    }
+  }
+  EXPECT_EQ(tested, 300);
+}
+
+}  // namespace
+}  // namespace wrenchkit

@@ -76,6 +76,22 @@ RC_GTEST_PROP(ClosureProperties, InvariantUnderRationalRotationsAndTranslations,
   same_verdicts(text_of(cs), text_of(moved(cs, Rational(119, 169), Rational(-120, 169), tx, ty)), "rotation_119_120_169");
 }
 
+// Huge and tiny scales and 40-digit rotations: the same exact answers (exact means exact).
+RC_GTEST_PROP(ClosureProperties, InvariantAtExtremeScalesAnd40DigitRotations, ()) {
+  const auto cs = *scene_gen().as("scene");
+  const Integer a("12345678901234567891"), b("98765432109876543211");  // Pythagorean: (a²−b², 2ab, a²+b²)
+  const Rational c(a * a - b * b, a * a + b * b), s(2 * a * b, a * a + b * b);
+  const Rational big(Integer("1000000000000000000")), tiny(Integer(1), Integer("100000000000000000000"));
+  for (const Rational& k : {big, tiny}) {
+    auto scaled = moved(cs, c, s, k * 3, -k / 7);
+    for (C& x : scaled) {
+      x.ax *= k;
+      x.ay *= k;
+    }
+    same_verdicts(text_of(cs), text_of(scaled), k > 1 ? "scale_1e18_rotation_40_digits" : "scale_1e-20_rotation_40_digits");
+  }
+}
+
 RC_GTEST_PROP(ClosureProperties, InvariantUnderPositiveScaling, ()) {
   auto cs = *scene_gen().as("scene");
   const int num = *rc::gen::inRange(1, 1000).as("scale numerator");
