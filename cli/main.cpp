@@ -47,9 +47,9 @@ const char* kClosureHelp =
     "\n"
     "options:\n"
     "  --json                    machine-readable output (docs/cli.md)\n"
-    "  --mode exact|hybrid|float exact: rational arithmetic only; hybrid (default): float filters\n"
-    "                            first, exact where they cannot decide (this version has no float\n"
-    "                            filters yet, so every decision is exact); float: not yet available\n"
+    "  --mode exact|hybrid|float exact: exact arithmetic only; hybrid (default): the float twin's\n"
+    "                            certified predicates, exact arithmetic for each one they cannot\n"
+    "                            decide; float: the twin alone (exit 3 if it cannot decide)\n"
     "  --certificate FILE        write the force-closure certificate to FILE\n"
     "  --form-certificate FILE   write the form-closure certificate to FILE\n"
     "  --max-digits N            digits allowed in one number (default 10000)\n"
@@ -201,14 +201,29 @@ std::string human_verdict(const Closure_answer& a, bool form) {
   return s.str();
 }
 
+struct Undecided : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+Mode mode_of(const std::string& m) {
+  return m == "exact" ? Mode::exact : (m == "float" ? Mode::float_only : Mode::hybrid);
+}
+
+std::string decided_by(const Closure_answer& a, const Closure_answer& b) {
+  const std::string x = a.decided_by(), y = b.decided_by();
+  return x == y ? x : "hybrid";
+}
+
 int run_closure(const Options& o, const std::string& scene_text, const std::string& source,
                 const char* command) {
-  if (o.mode == "float")
-    throw Usage_error("--mode float: the floating-point twin is not available in this version; "
-                      "use --mode exact or hybrid");
   const Scene scene = read_scene(scene_text, o.limits, source);
-  const Closure_answer fc = decide_closure(scene, Property::force_closure);
-  const Closure_answer fo = decide_closure(scene, Property::form_closure);
+  const Mode mode = mode_of(o.mode);
+  const Closure_answer fc = decide_closure(scene, Property::force_closure, mode);
+  const Closure_answer fo = decide_closure(scene, Property::form_closure, mode);
+  if (!fc.decided || !fo.decided)
+    throw Undecided(std::string("the float twin could not certify ") +
+                    (!fc.decided ? (!fo.decided ? "force or form closure" : "force closure") : "form closure") +
+                    " of this scene (a predicate is within its error bound of zero); use --mode hybrid or exact");
   const std::string fc_json = certificate_json(fc.certificate);
   const std::string fo_json = certificate_json(fo.certificate);
   // Every verdict is re-checked by the independent checker before it is reported.
@@ -223,17 +238,21 @@ int run_closure(const Options& o, const std::string& scene_text, const std::stri
 
   if (o.json) {
     std::cout << "{\"command\": \"" << command << "\", \"name\": " << json::quote(scene.name)
-              << ", \"mode\": \"" << o.mode << "\", \"decided_by\": \"exact\""
+              << ", \"mode\": \"" << o.mode << "\", \"decided_by\": \"" << decided_by(fc, fo) << "\""
               << ", \"force_closure\": " << (fc.holds ? "true" : "false")
               << ", \"form_closure\": " << (fo.holds ? "true" : "false")
               << ", \"rank\": {\"force\": " << fc.rank << ", \"form\": " << fo.rank << "}"
               << ", \"generators\": {\"force\": " << fc.generators << ", \"form\": " << fo.generators
-              << "}, \"certificates_checked\": true"
+              << "}, \"predicates\": {\"force\": " << fc.predicates << ", \"form\": " << fo.predicates
+              << "}, \"exact_predicates\": {\"force\": " << fc.exact_predicates << ", \"form\": "
+              << fo.exact_predicates << "}, \"certificates_checked\": true"
               << ", \"certificate\": " << fc_json << ", \"form_certificate\": " << fo_json << "}\n";
   } else {
     std::cout << "scene: " << (scene.name.empty() ? source : scene.name) << "\n"
               << "force closure: " << human_verdict(fc, false) << "\n"
               << "form closure:  " << human_verdict(fo, true) << "\n"
+              << "decided by: " << decided_by(fc, fo) << " (" << fc.exact_predicates + fo.exact_predicates
+              << " of " << fc.predicates + fo.predicates << " predicates in exact arithmetic)\n"
               << "both certificates accepted by the independent checker (exact arithmetic)\n";
   }
   return kAnswered;
@@ -306,6 +325,9 @@ int main(int argc, char** argv) {
   } catch (const wrenchkit::Input_error& e) {
     std::cerr << "wrenchkit: error: " << e.what() << "\n";
     return kBadInput;
+  } catch (const Undecided& e) {
+    std::cerr << "wrenchkit: undecided: " << e.what() << "\n";
+    return kUndecided;
   } catch (const Self_check_failure& e) {
     std::cerr << "wrenchkit: internal error (please report): " << e.what() << "\n";
     return kSelfCheck;

@@ -1,10 +1,13 @@
 #include "exact/closure.h"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 #include "exact/cone_lp.h"
 #include "exact/json.h"
+#include "exact/to_float.h"
+#include "float/float_kernel.h"
 
 namespace wrenchkit {
 
@@ -14,6 +17,15 @@ const char* property_name(Property p) {
 
 Reading reading_of(Property p) {
   return p == Property::force_closure ? Reading::friction : Reading::frictionless;
+}
+
+const char* mode_name(Mode m) {
+  switch (m) {
+    case Mode::exact: return "exact";
+    case Mode::hybrid: return "hybrid";
+    case Mode::float_only: return "float";
+  }
+  return "?";
 }
 
 namespace {
@@ -96,17 +108,75 @@ void positive_certificate(const std::vector<Generator>& gens, std::vector<std::s
   for (int i = 0; i < 3; ++i) cert.independent[i] = {gens[H[b[i]]].contact, gens[H[b[i]]].edge};
 }
 
+// Counts the predicates of an exact kernel.
+struct Counting_exact_kernel {
+  const Exact_kernel& k;
+  mutable std::size_t n = 0;
+  std::size_t size() const { return k.size(); }
+  Sign cross_sign(std::size_t i, std::size_t j) const { return ++n, k.cross_sign(i, j); }
+  Sign det_sign(std::size_t i, std::size_t j, std::size_t l) const { return ++n, k.det_sign(i, j, l); }
+};
+
+// Per-predicate filtering: the twin's certified sign, else the exact sign (the exact kernel is
+// built on the first uncertain predicate only).
+class Hybrid_kernel {
+ public:
+  Hybrid_kernel(const fl::Float_kernel& f, const std::vector<Wrench>& ws, bool fallback)
+      : f_(f), ws_(ws), fallback_(fallback) {}
+  std::size_t size() const { return f_.size(); }
+  Sign cross_sign(std::size_t i, std::size_t j) const {
+    ++n;
+    const Sign s = f_.cross_sign(i, j);
+    return s != Sign::uncertain || !fallback_ ? s : (++exact_n, exact().cross_sign(i, j));
+  }
+  Sign det_sign(std::size_t i, std::size_t j, std::size_t k) const {
+    ++n;
+    const Sign s = f_.det_sign(i, j, k);
+    return s != Sign::uncertain || !fallback_ ? s : (++exact_n, exact().det_sign(i, j, k));
+  }
+  mutable std::size_t n = 0, exact_n = 0;
+
+ private:
+  const Exact_kernel& exact() const {
+    if (!e_) e_ = std::make_unique<Exact_kernel>(ws_);
+    return *e_;
+  }
+  const fl::Float_kernel& f_;
+  const std::vector<Wrench>& ws_;
+  bool fallback_;
+  mutable std::unique_ptr<Exact_kernel> e_;
+};
+
 }  // namespace
 
-Closure_answer decide_closure(const Scene& scene, Property property) {
+Closure_answer decide_closure(const Scene& scene, Property property, Mode mode) {
   const std::vector<Generator> gens = generators(scene, reading_of(property));
   std::vector<Wrench> ws;
   ws.reserve(gens.size());
   for (const Generator& g : gens) ws.push_back(g.w);
-  const Exact_kernel kernel(ws);
-  const Dual_cone dc = compute_dual_cone(kernel);
 
   Closure_answer a;
+  a.mode = mode;
+  Dual_cone dc;
+  if (mode == Mode::exact) {
+    const Exact_kernel exact(ws);
+    const Counting_exact_kernel kernel{exact};
+    dc = compute_dual_cone(kernel);
+    a.predicates = a.exact_predicates = kernel.n;
+  } else {
+    const fl::Float_kernel twin(fl::generators(to_bounded(scene), reading_of(property)));
+    if (twin.size() != ws.size()) throw std::logic_error("decide_closure: twin and engine disagree on generators");
+    const Hybrid_kernel kernel(twin, ws, mode == Mode::hybrid);
+    dc = compute_dual_cone(kernel);
+    a.predicates = kernel.n;
+    a.exact_predicates = kernel.exact_n;
+    if (!dc.decided) {
+      a.decided = false;
+      a.generators = gens.size();
+      return a;
+    }
+  }
+
   a.rank = dc.rank;
   a.generators = gens.size();
   a.shape = dc.shape;

@@ -26,6 +26,13 @@
 namespace wrenchkit {
 
 enum class Property { force_closure, form_closure };
+
+// How signs are decided (interface.md §2): `exact` — exact integer/rational arithmetic only;
+// `hybrid` — the float twin's certified predicates [FL-2], and exact arithmetic for each predicate
+// they leave uncertain (per predicate, as CGAL's Filtered_predicate); `float_only` — the twin alone,
+// which may leave the question undecided.
+enum class Mode { exact, hybrid, float_only };
+const char* mode_name(Mode m);
 const char* property_name(Property p);
 Reading reading_of(Property p);
 
@@ -43,14 +50,23 @@ struct Closure_certificate {
 };
 
 struct Closure_answer {
+  Mode mode = Mode::exact;
+  bool decided = true;           // false only in Mode::float_only: then nothing below is set
   bool holds = false;
   int rank = 0;                  // rank of the generators
   std::size_t generators = 0;    // number of generators under the reading
   Dual_shape shape = Dual_shape::lineality;
-  Closure_certificate certificate;
+  Closure_certificate certificate;   // built exactly from the decision's indices, in every mode
+  std::size_t predicates = 0;        // signs the algorithm asked for
+  std::size_t exact_predicates = 0;  // of which decided in exact arithmetic
+  // "exact", "float" (no exact predicate) or "hybrid" (some of each).
+  const char* decided_by() const {
+    if (mode == Mode::exact) return "exact";
+    return exact_predicates == 0 ? "float" : (exact_predicates == predicates ? "exact" : "hybrid");
+  }
 };
 
-Closure_answer decide_closure(const Scene& scene, Property property);
+Closure_answer decide_closure(const Scene& scene, Property property, Mode mode = Mode::exact);
 
 // The certificate as JSON (format version 1), with the twist's reading as a labeled point or a
 // direction at infinity.

@@ -5,16 +5,6 @@
 
 namespace wrenchkit {
 
-const char* edge_name(Edge e) {
-  switch (e) {
-    case Edge::normal: return "normal";
-    case Edge::left: return "left";
-    case Edge::right: return "right";
-    case Edge::wrench: return "wrench";
-  }
-  return "?";
-}
-
 Wrench wrench_at(const Vec2& p, const Vec2& f) { return {f.x, f.y, p.x * f.y - p.y * f.x}; }
 
 std::vector<Generator> generators(const Scene& scene, Reading reading) {
@@ -24,15 +14,12 @@ std::vector<Generator> generators(const Scene& scene, Reading reading) {
     const Contact& c = scene.contacts[i];
     if (c.kind == Contact::Kind::wrench) {
       out.push_back({i, Edge::wrench, c.wrench});
-    } else if (reading == Reading::frictionless || c.mu == 0) {
-      out.push_back({i, Edge::normal, wrench_at(c.at, c.normal)});
-    } else {
-      // rot90(n) = (−ny, nx); left = n + μ·rot90(n), right = n − μ·rot90(n).
-      const Vec2 left{c.normal.x - c.mu * c.normal.y, c.normal.y + c.mu * c.normal.x};
-      const Vec2 right{c.normal.x + c.mu * c.normal.y, c.normal.y - c.mu * c.normal.x};
-      out.push_back({i, Edge::left, wrench_at(c.at, left)});
-      out.push_back({i, Edge::right, wrench_at(c.at, right)});
+      continue;
     }
+    point_contact_generators(c.at.x, c.at.y, c.normal.x, c.normal.y, c.mu, c.mu != 0, reading,
+                             [&](Edge e, Rational fx, Rational fy, Rational m) {
+                               out.push_back({i, e, Wrench{std::move(fx), std::move(fy), std::move(m)}});
+                             });
   }
   return out;
 }

@@ -5,18 +5,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/contact_generators.h"
 #include "core/sign.h"
 #include "exact/scene.h"
 
 namespace wrenchkit {
-
-// Which cone a scene's contacts generate: with their friction (force closure, equilibrium) or all
-// read frictionless (first-order form closure, Reuleaux's method; theory.md §7).
-enum class Reading { friction, frictionless };
-
-// Names of generators, as in the certificate format (proofs/certificate-format.md §1).
-enum class Edge { normal, left, right, wrench };
-const char* edge_name(Edge e);
 
 struct Generator {
   std::size_t contact = 0;  // index into scene.contacts

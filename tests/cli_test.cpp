@@ -159,9 +159,6 @@ TEST(Cli, UsageErrors) {
   EXPECT_EQ(run("closure --no-such-option x.json").code, 2);
   EXPECT_EQ(run("closure").code, 2);
   EXPECT_EQ(run("closure --mode fast x.json").code, 2);
-  const Cli_result fl = run("closure --mode float '" + golden("no_contacts") + "'");
-  EXPECT_EQ(fl.code, 2);
-  EXPECT_NE(fl.err.find("not available in this version"), std::string::npos);
   EXPECT_EQ(run("closure --max-digits abc x.json").code, 2);
   EXPECT_EQ(run("check onlyone.json").code, 2);
   for (const char* h : {"--help", "closure --help", "check --help", "demo --help"}) {
@@ -169,6 +166,30 @@ TEST(Cli, UsageErrors) {
     EXPECT_EQ(r.code, 0) << h;
     EXPECT_NE(r.out.find("usage: wrenchkit"), std::string::npos) << h;
   }
+}
+
+TEST(Cli, ModesAgreeAndFloatSaysWhenItCannotDecide) {
+  for (const char* mode : {"exact", "hybrid", "float"}) {
+    const Cli_result r = run(std::string("closure --json --mode ") + mode + " '" + golden("triangle_example3_mu_1_10") + "'");
+    EXPECT_EQ(r.code, 0) << mode << r.err;
+    EXPECT_NE(r.out.find("\"force_closure\": true, \"form_closure\": false"), std::string::npos) << mode;
+  }
+  const Cli_result ex = run("closure --json --mode exact '" + golden("triangle_example3_mu_1_10") + "'");
+  EXPECT_NE(ex.out.find("\"decided_by\": \"exact\""), std::string::npos);
+  const Cli_result fl = run("closure --json --mode float '" + golden("triangle_example3_mu_1_10") + "'");
+  EXPECT_NE(fl.out.find("\"decided_by\": \"float\""), std::string::npos) << fl.out;
+  // Concurrent normals written with inexact decimals: the determinant is exactly zero, which no
+  // float bound can certify. Float alone exits 3; hybrid answers exactly.
+  const std::string s = write("tenths.json", R"({"wrenchkit": 1, "contacts": [
+      {"at": [0.1, 0], "normal": [0, 0.1]}, {"at": [0, 0.1], "normal": [0.1, 0]}, {"at": [0.3, 0.3], "normal": [-0.1, -0.1]}]})");
+  const Cli_result f = run("closure --mode float '" + s + "'");
+  EXPECT_EQ(f.code, 3);
+  EXPECT_EQ(f.out, "");
+  EXPECT_NE(f.err.find("wrenchkit: undecided: "), std::string::npos) << f.err;
+  const Cli_result h = run("closure --json '" + s + "'");
+  EXPECT_EQ(h.code, 0) << h.err;
+  EXPECT_NE(h.out.find("\"force_closure\": false"), std::string::npos);
+  EXPECT_EQ(h.out.find("\"exact_predicates\": {\"force\": 0"), std::string::npos) << h.out;  // some went exact
 }
 
 TEST(Cli, LimitsCanBeRaised) {

@@ -1,0 +1,82 @@
+// [FL-1] A double with a certified error bound (running error analysis), for the float twin.
+//
+// A Bounded b stands for an unknown real x with |x − b.v| ≤ b.e. Arithmetic propagates the bound
+// rigorously under IEEE 754 binary64, round-to-nearest, no contraction (-ffp-contract=off, no
+// fast-math): the proof is proofs/notes/FL-1-bounded-arithmetic.md. In short, with u = 2^-53:
+//   * the rounding error of a sum or product is computed *exactly* (TwoSum; fma for products), so
+//     operations on exact operands stay exact (e = 0) or carry exactly their own rounding error;
+//   * propagated input errors use |xy − âb̂| ≤ |â|e_b + |b̂|e_a + e_a·e_b, and every bound computed
+//     in floating point is inflated by (1 + 2^-45), which dominates its own ≤ 6 roundings;
+//   * results that may have lost precision to underflow (0 < |v| < 2^-960, or a zero product of
+//     nonzero factors) get e = +∞; overflow gives ±∞ or NaN, and then e = +∞ or NaN.
+// sign() is certified: it returns a sign only if |v| > e (or e = 0, v exact), else uncertain.
+// Standard library only (float/ builds without GMP and CGAL).
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include "core/sign.h"
+
+namespace wrenchkit::fl {
+
+struct Bounded {
+  double v = 0;  // the computed value
+  double e = 0;  // |exact − v| ≤ e; 0 means v is exact
+
+  static Bounded exact(double x) { return {x, std::isfinite(x) ? 0.0 : kInf}; }
+
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
+  static constexpr double kUnderflow = 0x1p-960;   // below this a result may have lost bits
+  static constexpr double kSlack = 0x1p-1000;      // covers underflowed error terms
+  static constexpr double kInflate = 1 + 0x1p-45;  // dominates the roundings of a bound
+
+  Sign sign() const {
+    if (!(e == e) || !std::isfinite(v)) return Sign::uncertain;  // NaN bound or ±∞/NaN value
+    if (e == 0) return v > 0 ? Sign::positive : (v < 0 ? Sign::negative : Sign::zero);
+    if (v > e) return Sign::positive;
+    if (-v > e) return Sign::negative;
+    return Sign::uncertain;
+  }
+};
+
+namespace detail {
+
+// Marks results that may have been rounded below the normal range.
+inline double guard(double v, double e) {
+  if (v != 0 && std::fabs(v) < Bounded::kUnderflow) return Bounded::kInf;
+  return e;
+}
+
+// The bound of a non-exact operation: inflated, plus slack for underflowed terms.
+inline double up(double e) { return e * Bounded::kInflate + Bounded::kSlack; }
+
+}  // namespace detail
+
+inline Bounded operator-(const Bounded& a) { return {-a.v, a.e}; }
+
+inline Bounded operator+(const Bounded& a, const Bounded& b) {
+  const double v = a.v + b.v;
+  // TwoSum (Knuth): r = (a.v + b.v) − v exactly, for any finite a.v, b.v without overflow.
+  const double bb = v - a.v;
+  const double r = (a.v - (v - bb)) + (b.v - bb);
+  double e;
+  if (a.e == 0 && b.e == 0) e = std::fabs(r);  // exact: only this operation's rounding
+  else e = detail::up(a.e + b.e + std::fabs(r));
+  return {v, detail::guard(v, e)};
+}
+
+inline Bounded operator-(const Bounded& a, const Bounded& b) { return a + (-b); }
+
+inline Bounded operator*(const Bounded& a, const Bounded& b) {
+  const double v = a.v * b.v;
+  if (v == 0 && a.v != 0 && b.v != 0) return {v, Bounded::kInf};  // underflow to zero
+  // fma gives the exact rounding error of the product when v is normal (guard() covers the rest).
+  const double r = std::fma(a.v, b.v, -v);
+  double e;
+  if (a.e == 0 && b.e == 0) e = std::fabs(r);
+  else e = detail::up(std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e + std::fabs(r));
+  return {v, detail::guard(v, e)};
+}
+
+}  // namespace wrenchkit::fl

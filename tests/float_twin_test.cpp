@@ -1,0 +1,188 @@
+// [FL-1] [FL-2] [FL-3] The float twin against the exact engine: every bound contains the exact
+// value; a certified float answer always equals the exact one; hybrid always answers exactly; the
+// twin decides typical scenes by itself; naive floating point is measurably wrong where the twin
+// abstains.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+
+#include "exact/closure.h"
+#include "exact/to_float.h"
+#include "float/bounded.h"
+#include "float/closure_twin.h"
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+
+using fl::Bounded;
+
+// |exact − v| ≤ e, checked in exact arithmetic.
+::testing::AssertionResult contains(const Bounded& b, const Rational& exact) {
+  if (!std::isfinite(b.v) || !(b.e == b.e)) return ::testing::AssertionSuccess();  // no claim made
+  if (b.e == Bounded::kInf) return ::testing::AssertionSuccess();
+  if (abs(exact - Rational(b.v)) <= Rational(b.e)) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "v = " << b.v << ", e = " << b.e << ", exact = " << exact.get_d();
+}
+
+TEST(Bounded, ExactOperandsStayExactAndInexactOnesCarryTheirError) {
+  const Bounded a = Bounded::exact(3), b = Bounded::exact(0.5);
+  EXPECT_EQ((a * b - Bounded::exact(1.5)).e, 0.0);
+  EXPECT_EQ((a * b - Bounded::exact(1.5)).sign(), Sign::zero);  // exact zero is certified
+  const Bounded tenth = to_bounded(Rational(1, 10));
+  EXPECT_GT(tenth.e, 0.0);
+  EXPECT_TRUE(contains(tenth, Rational(1, 10)));
+  // 10 · 0.1 − 1 is exactly 0 for the rational 1/10; the twin cannot certify it, and says so.
+  EXPECT_EQ((Bounded::exact(10) * tenth - Bounded::exact(1)).sign(), Sign::uncertain);
+  EXPECT_EQ(to_bounded(Rational(1, 2)).e, 0.0);
+  EXPECT_EQ(to_bounded(Rational(Integer(1), Integer(1) << 2000)).e, Bounded::kInf);  // below doubles
+  EXPECT_EQ(Bounded::exact(std::numeric_limits<double>::quiet_NaN()).sign(), Sign::uncertain);
+  const Bounded huge = Bounded::exact(1e300);
+  EXPECT_EQ((huge * huge).sign(), Sign::uncertain);  // overflow
+  const Bounded tiny = Bounded::exact(1e-300);
+  EXPECT_EQ((tiny * tiny).sign(), Sign::uncertain);  // underflow
+  EXPECT_EQ((tiny * tiny - tiny * tiny).sign(), Sign::uncertain);
+}
+
+TEST(Bounded, EveryBoundContainsTheExactDeterminant) {
+  std::mt19937_64 rng(test::seed(11));
+  std::uniform_int_distribution<int> num(-1000, 1000), den(1, 1000), scale(-60, 60);
+  int certified = 0;
+  for (int t = 0; t < 20000; ++t) {
+    Rational q[9];
+    Bounded b[9];
+    const int s = scale(rng);
+    for (int i = 0; i < 9; ++i) {
+      q[i] = Rational(num(rng), den(rng));
+      if (s >= 0) q[i] *= Rational(Integer(1) << s);
+      else q[i] /= Rational(Integer(1) << -s);
+      b[i] = to_bounded(q[i]);
+    }
+    // Near-singular half the time: third row = first + second (exactly, in the rationals).
+    if (t % 2) {
+      for (int i = 0; i < 3; ++i) {
+        q[6 + i] = q[i] + q[3 + i];
+        b[6 + i] = to_bounded(q[6 + i]);
+      }
+    }
+    const Rational exact = q[0] * (q[4] * q[8] - q[5] * q[7]) - q[1] * (q[3] * q[8] - q[5] * q[6]) +
+                           q[2] * (q[3] * q[7] - q[4] * q[6]);
+    const Bounded d = b[0] * (b[4] * b[8] - b[5] * b[7]) - b[1] * (b[3] * b[8] - b[5] * b[6]) +
+                      b[2] * (b[3] * b[7] - b[4] * b[6]);
+    ASSERT_TRUE(contains(d, exact)) << "case " << t;
+    const Sign sg = d.sign();
+    if (sg != Sign::uncertain) {
+      ++certified;
+      ASSERT_EQ(sg, sign_of(sgn(exact))) << "case " << t;
+    }
+  }
+  EXPECT_GT(certified, 9000);  // the non-singular half is certified
+}
+
+// ---- Closure: twin and hybrid against exact. ----
+
+struct Tally {
+  int cases = 0, float_decided = 0;
+};
+
+void compare_modes(const std::string& text, Tally& tally, const std::string& tag) {
+  const Scene s = read_scene(text, Input_limits{});
+  for (Property p : {Property::force_closure, Property::form_closure}) {
+    const Closure_answer exact = decide_closure(s, p, Mode::exact);
+    const Closure_answer twin = decide_closure(s, p, Mode::float_only);
+    const Closure_answer hybrid = decide_closure(s, p, Mode::hybrid);
+    ++tally.cases;
+    tally.float_decided += twin.decided;
+    const bool ok = (!twin.decided || twin.holds == exact.holds) && hybrid.decided && hybrid.holds == exact.holds &&
+                    hybrid.rank == exact.rank && test::checker_accepts(text, certificate_json(hybrid.certificate));
+    if (!ok) {
+      FAIL() << property_name(p) << ": exact " << exact.holds << ", twin " << (twin.decided ? twin.holds : -1)
+             << ", hybrid " << hybrid.holds << "; scene dumped to " << test::dump_failure(text, tag);
+    }
+  }
+}
+
+TEST(FloatTwin, CertifiedAnswersEqualExactOnDegenerateRichRandomScenes) {
+  const std::uint64_t seed = test::seed(20261121);
+  std::mt19937_64 rng(seed);
+  Tally t;
+  for (int i = 0; i < 2000; ++i) {
+    compare_modes(test::scene_json(test::random_contacts(rng, 7)), t,
+                  "twin_grid_" + std::to_string(seed) + "_" + std::to_string(i));
+    if (HasFatalFailure()) return;
+  }
+  // Grid scenes are exact in binary (small integers, halves, quarters… and 1/3): many exact zeros
+  // are still certified, since exact operations carry no error.
+  std::printf("[ stats    ] grid scenes: the twin decided %d of %d queries alone\n", t.float_decided, t.cases);
+  EXPECT_GT(t.float_decided, t.cases / 2);
+}
+
+// Random decimal scenes as users write them (0.137 is not a double): generic, so the twin should
+// decide essentially all of them alone.
+std::string decimal_scene(std::mt19937_64& rng, int k) {
+  std::uniform_int_distribution<int> coord(-999, 999), mu(1, 80);
+  std::vector<test::Contact_spec> cs;
+  auto dec = [&](int v) { return std::to_string(v / 1000.0).substr(0, 6 + (v < 0)); };
+  for (int i = 0; i < k; ++i) {
+    int nx = coord(rng), ny = coord(rng);
+    if (nx == 0 && ny == 0) nx = 1;
+    cs.push_back({dec(coord(rng)), dec(coord(rng)), std::to_string(nx), std::to_string(ny),
+                  "0." + std::to_string(mu(rng))});
+  }
+  return test::scene_json(cs);
+}
+
+TEST(FloatTwin, DecidesTypicalScenesByItself) {
+  const std::uint64_t seed = test::seed(5);
+  std::mt19937_64 rng(seed);
+  Tally t;
+  for (int i = 0; i < 1000; ++i) {
+    compare_modes(decimal_scene(rng, 3 + i % 6), t, "twin_decimal_" + std::to_string(seed) + "_" + std::to_string(i));
+    if (HasFatalFailure()) return;
+  }
+  // Form closure of frictionless contacts with generic decimals is generic too: ≥ 99 % overall.
+  std::printf("[ stats    ] decimal scenes: the twin decided %d of %d queries alone\n", t.float_decided, t.cases);
+  EXPECT_GE(t.float_decided * 100, t.cases * 99) << t.float_decided << " of " << t.cases;
+}
+
+TEST(FloatTwin, NearThresholdNeverWrongAndNaiveFloatIs) {
+  // Two fingers with the segment between them 10^-k away from the friction-cone edge (theory.md
+  // §8.5, y2 = 1 ± 10^-k, μ = 1/2): closure iff y2 < 1. For small k the twin certifies; for large
+  // k it abstains; it is never wrong. The naive kernel guesses and is wrong for some k.
+  int naive_wrong = 0, twin_undecided = 0;
+  for (int k = 1; k <= 40; ++k) {
+    for (int side : {-1, 1}) {
+      const std::string y2 = side < 0 ? "0." + std::string(k - 1, '9') + "9" : "1." + std::string(k - 1, '0') + "1";
+      const std::string text = test::scene_json({{"0", "0.5", "1", "0", "0.5"}, {"1", y2, "-1", "0", "0.5"}});
+      const Scene s = read_scene(text, Input_limits{});
+      const bool truth = side < 0;
+      ASSERT_EQ(decide_closure(s, Property::force_closure, Mode::exact).holds, truth) << y2;
+      const Closure_answer twin = decide_closure(s, Property::force_closure, Mode::float_only);
+      if (twin.decided) EXPECT_EQ(twin.holds, truth) << y2;
+      else ++twin_undecided;
+      EXPECT_EQ(decide_closure(s, Property::force_closure, Mode::hybrid).holds, truth) << y2;
+      // Naive: the decimal text parsed to the nearest double (strtod), raw signs.
+      std::vector<fl::Bounded_contact> cs(2);
+      const double pts[2][5] = {{0, 0.5, 1, 0, 0.5}, {1, std::strtod(y2.c_str(), nullptr), -1, 0, 0.5}};
+      for (int c = 0; c < 2; ++c) {
+        cs[c].ax = Bounded::exact(pts[c][0]);
+        cs[c].ay = Bounded::exact(pts[c][1]);
+        cs[c].nx = Bounded::exact(pts[c][2]);
+        cs[c].ny = Bounded::exact(pts[c][3]);
+        cs[c].mu = Bounded::exact(pts[c][4]);
+        cs[c].frictional = true;
+      }
+      const fl::Naive_kernel naive(fl::generators(cs, Reading::friction));
+      naive_wrong += compute_dual_cone(naive).force_closure() != truth;
+    }
+  }
+  std::printf("[ stats    ] 80 near-edge grasps: twin undecided %d (never wrong), naive wrong %d\n", twin_undecided,
+              naive_wrong);
+  EXPECT_GT(twin_undecided, 0);
+  EXPECT_GT(naive_wrong, 0);  // guessing is wrong near the boundary
+}
+
+}  // namespace
+}  // namespace wrenchkit
