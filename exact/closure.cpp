@@ -117,12 +117,34 @@ struct Counting_exact_kernel {
   Sign det_sign(std::size_t i, std::size_t j, std::size_t l) const { return ++n, k.det_sign(i, j, l); }
 };
 
+// The exact generators of a scene, computed on first use only: the float path needs them only for
+// an uncertain predicate or a certificate.
+class Lazy_generators {
+ public:
+  Lazy_generators(const Scene& s, Reading r) : scene_(s), reading_(r) {}
+  const std::vector<Generator>& get() const {
+    if (!gens_) {
+      gens_ = std::make_unique<std::vector<Generator>>(generators(scene_, reading_));
+      ws_ = std::make_unique<std::vector<Wrench>>();
+      for (const Generator& g : *gens_) ws_->push_back(g.w);
+    }
+    return *gens_;
+  }
+  const std::vector<Wrench>& wrenches() const { return get(), *ws_; }
+
+ private:
+  const Scene& scene_;
+  Reading reading_;
+  mutable std::unique_ptr<std::vector<Generator>> gens_;
+  mutable std::unique_ptr<std::vector<Wrench>> ws_;
+};
+
 // Per-predicate filtering: the twin's certified sign, else the exact sign (the exact kernel is
 // built on the first uncertain predicate only).
 class Hybrid_kernel {
  public:
-  Hybrid_kernel(const fl::Float_kernel& f, const std::vector<Wrench>& ws, bool fallback)
-      : f_(f), ws_(ws), fallback_(fallback) {}
+  Hybrid_kernel(const fl::Float_kernel& f, const Lazy_generators& gens, bool fallback)
+      : f_(f), gens_(gens), fallback_(fallback) {}
   std::size_t size() const { return f_.size(); }
   Sign cross_sign(std::size_t i, std::size_t j) const {
     ++n;
@@ -138,51 +160,49 @@ class Hybrid_kernel {
 
  private:
   const Exact_kernel& exact() const {
-    if (!e_) e_ = std::make_unique<Exact_kernel>(ws_);
+    if (!e_) e_ = std::make_unique<Exact_kernel>(gens_.wrenches());
     return *e_;
   }
   const fl::Float_kernel& f_;
-  const std::vector<Wrench>& ws_;
+  const Lazy_generators& gens_;
   bool fallback_;
   mutable std::unique_ptr<Exact_kernel> e_;
 };
 
 }  // namespace
 
-Closure_answer decide_closure(const Scene& scene, Property property, Mode mode) {
-  const std::vector<Generator> gens = generators(scene, reading_of(property));
-  std::vector<Wrench> ws;
-  ws.reserve(gens.size());
-  for (const Generator& g : gens) ws.push_back(g.w);
-
+Closure_answer decide_closure(const Scene& scene, Property property, Mode mode, bool certify) {
+  const Lazy_generators lazy(scene, reading_of(property));
   Closure_answer a;
   a.mode = mode;
   Dual_cone dc;
   if (mode == Mode::exact) {
-    const Exact_kernel exact(ws);
+    const Exact_kernel exact(lazy.wrenches());
     const Counting_exact_kernel kernel{exact};
     dc = compute_dual_cone(kernel);
     a.predicates = a.exact_predicates = kernel.n;
+    a.generators = exact.size();
   } else {
     const fl::Float_kernel twin(fl::generators(to_bounded(scene), reading_of(property)));
-    if (twin.size() != ws.size()) throw std::logic_error("decide_closure: twin and engine disagree on generators");
-    const Hybrid_kernel kernel(twin, ws, mode == Mode::hybrid);
+    const Hybrid_kernel kernel(twin, lazy, mode == Mode::hybrid);
     dc = compute_dual_cone(kernel);
     a.predicates = kernel.n;
     a.exact_predicates = kernel.exact_n;
+    a.generators = twin.size();
     if (!dc.decided) {
       a.decided = false;
-      a.generators = gens.size();
       return a;
     }
   }
 
   a.rank = dc.rank;
-  a.generators = gens.size();
   a.shape = dc.shape;
   a.holds = dc.force_closure();
   a.certificate.property = property;
   a.certificate.holds = a.holds;
+  if (!certify) return a;
+  const std::vector<Generator>& gens = lazy.get();
+  if (gens.size() != a.generators) throw std::logic_error("decide_closure: twin and engine disagree on generators");
   if (a.holds) {
     std::vector<std::size_t> H = dc.defining;
     H.push_back(dc.closing);

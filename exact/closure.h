@@ -66,7 +66,10 @@ struct Closure_answer {
   }
 };
 
-Closure_answer decide_closure(const Scene& scene, Property property, Mode mode = Mode::exact);
+// `certify` false skips building the certificate (for throughput measurements and callers that
+// only need the verdict); every command of the CLI certifies.
+Closure_answer decide_closure(const Scene& scene, Property property, Mode mode = Mode::exact,
+                              bool certify = true);
 
 // The certificate as JSON (format version 1), with the twist's reading as a labeled point or a
 // direction at infinity.
