@@ -1,4 +1,6 @@
 // wrenchkit — the command line (interface.md §2, docs/cli.md).
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -8,6 +10,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli/demo_scene.h"
@@ -31,6 +34,8 @@ const char* kUsage =
     "  check     wrenchkit check SCENE.json CERT.json: the independent checker (proofs/)\n"
     "            accepts (exit 0) or rejects (exit 1) a certificate\n"
     "  demo      closure of a bundled textbook scene (Mason's Example 3), no file needed\n"
+    "  batch     wrenchkit batch closure < scenes.jsonl: one scene per line, one answer per line,\n"
+    "            on all cores (--jobs N)\n"
     "\n"
     "Run 'wrenchkit COMMAND --help' for a command's options. Exit codes: 0 answered, 1 check\n"
     "rejected the certificate, 2 bad input or usage, 3 --mode float could not decide, 4 an\n"
@@ -66,6 +71,23 @@ const char* kCheckHelp =
     "\n"
     "options: --json, and the --max-* limits of 'wrenchkit closure --help'\n";
 
+const char* kBatchHelp =
+    "usage: wrenchkit batch closure [OPTIONS] < scenes.jsonl\n"
+    "\n"
+    "Reads one scene per line (JSON lines) on standard input and writes one JSON answer per line,\n"
+    "in the same order, computed on --jobs threads: the output of 'closure --json' with a \"line\"\n"
+    "field, or {\"line\": N, \"error\": MESSAGE, \"exit_code\": 2} for a bad line (the stream goes\n"
+    "on), {\"line\": N, \"undecided\": …, \"exit_code\": 3} when --mode float cannot decide.\n"
+    "Every certificate is checked by the independent checker, as in 'closure'.\n"
+    "\n"
+    "options:\n"
+    "  --jobs N           threads (default: all cores)\n"
+    "  --verdict-only     skip certificates and their check (throughput runs; the verdicts are\n"
+    "                     the same, but nothing proves them)\n"
+    "  --mode, --max-*    as for closure (--max-file-size limits each line)\n"
+    "Exit code: 0 when every line was answered or reported, 4 if a certificate ever failed its\n"
+    "check (a bug), 70 on an internal error.\n";
+
 const char* kDemoHelp =
     "usage: wrenchkit demo [--json]\n"
     "\n"
@@ -76,6 +98,8 @@ const char* kDemoHelp =
 struct Options {
   bool json = false;
   bool help = false;
+  bool verdict_only = false;  // batch: skip certificates (throughput); never the default
+  unsigned jobs = 0;          // batch: threads, 0 = all cores
   std::string mode = "hybrid";
   std::string certificate_file, form_certificate_file;
   Input_limits limits;
@@ -103,6 +127,12 @@ Options parse_options(int argc, char** argv, int first) {
     if (a == "--json") o.json = true;
     else if (a == "--help" || a == "-h") o.help = true;
     else if (a == "--mode") o.mode = value();
+    else if (a == "--verdict-only") o.verdict_only = true;
+    else if (a == "--jobs") {
+      const std::size_t j = parse_count(a, value());
+      if (j < 1 || j > 1024) throw Usage_error("--jobs: must be between 1 and 1024");
+      o.jobs = static_cast<unsigned>(j);
+    }
     else if (a == "--certificate") o.certificate_file = value();
     else if (a == "--form-certificate") o.form_certificate_file = value();
     else if (a == "--max-digits") o.limits.max_digits = parse_count(a, value());
@@ -214,48 +244,155 @@ std::string decided_by(const Closure_answer& a, const Closure_answer& b) {
   return x == y ? x : "hybrid";
 }
 
+struct Closure_result {
+  Scene scene;
+  Closure_answer fc, fo;
+  std::string fc_json, fo_json;  // empty when not certified (batch --verdict-only)
+};
+
+// Reads, decides both properties, builds both certificates and has the independent checker accept
+// them before anything is reported. Throws Input_error, Undecided or Self_check_failure.
+Closure_result compute_closure(const Options& o, const std::string& scene_text, const std::string& source) {
+  Closure_result r;
+  r.scene = read_scene(scene_text, o.limits, source);
+  const Mode mode = mode_of(o.mode);
+  const bool certify = !o.verdict_only;
+  r.fc = decide_closure(r.scene, Property::force_closure, mode, certify);
+  r.fo = decide_closure(r.scene, Property::form_closure, mode, certify);
+  if (!r.fc.decided || !r.fo.decided)
+    throw Undecided(std::string("the float twin could not certify ") +
+                    (!r.fc.decided ? (!r.fo.decided ? "force or form closure" : "force closure") : "form closure") +
+                    " of this scene (a predicate is within its error bound of zero); use --mode hybrid or exact");
+  if (!certify) return r;
+  r.fc_json = certificate_json(r.fc.certificate);
+  r.fo_json = certificate_json(r.fo.certificate);
+  for (const std::string* cert : {&r.fc_json, &r.fo_json}) {
+    const auto c = wrenchkit_checker::check(scene_text, *cert, checker_limits(o.limits));
+    if (c.outcome != wrenchkit_checker::Outcome::accepted)
+      throw Self_check_failure("the independent checker rejected our own certificate: " + c.message +
+                               "\ncertificate: " + *cert);
+  }
+  return r;
+}
+
+// One line of JSON (no newline); `line` > 0 adds the input line number (batch).
+std::string closure_json(const Options& o, const Closure_result& r, const char* command, std::size_t line = 0) {
+  std::ostringstream s;
+  s << "{";
+  if (line) s << "\"line\": " << line << ", ";
+  s << "\"command\": \"" << command << "\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \""
+    << o.mode << "\", \"decided_by\": \"" << decided_by(r.fc, r.fo) << "\""
+    << ", \"force_closure\": " << (r.fc.holds ? "true" : "false")
+    << ", \"form_closure\": " << (r.fo.holds ? "true" : "false")
+    << ", \"rank\": {\"force\": " << r.fc.rank << ", \"form\": " << r.fo.rank << "}"
+    << ", \"generators\": {\"force\": " << r.fc.generators << ", \"form\": " << r.fo.generators
+    << "}, \"predicates\": {\"force\": " << r.fc.predicates << ", \"form\": " << r.fo.predicates
+    << "}, \"exact_predicates\": {\"force\": " << r.fc.exact_predicates << ", \"form\": "
+    << r.fo.exact_predicates << "}, \"certificates_checked\": " << (r.fc_json.empty() ? "false" : "true");
+  if (!r.fc_json.empty()) s << ", \"certificate\": " << r.fc_json << ", \"form_certificate\": " << r.fo_json;
+  s << "}";
+  return s.str();
+}
+
 int run_closure(const Options& o, const std::string& scene_text, const std::string& source,
                 const char* command) {
-  const Scene scene = read_scene(scene_text, o.limits, source);
-  const Mode mode = mode_of(o.mode);
-  const Closure_answer fc = decide_closure(scene, Property::force_closure, mode);
-  const Closure_answer fo = decide_closure(scene, Property::form_closure, mode);
-  if (!fc.decided || !fo.decided)
-    throw Undecided(std::string("the float twin could not certify ") +
-                    (!fc.decided ? (!fo.decided ? "force or form closure" : "force closure") : "form closure") +
-                    " of this scene (a predicate is within its error bound of zero); use --mode hybrid or exact");
-  const std::string fc_json = certificate_json(fc.certificate);
-  const std::string fo_json = certificate_json(fo.certificate);
-  // Every verdict is re-checked by the independent checker before it is reported.
-  for (const std::string* cert : {&fc_json, &fo_json}) {
-    const auto r = wrenchkit_checker::check(scene_text, *cert, checker_limits(o.limits));
-    if (r.outcome != wrenchkit_checker::Outcome::accepted)
-      throw Self_check_failure("the independent checker rejected our own certificate: " +
-                               r.message + "\ncertificate: " + *cert);
-  }
-  if (!o.certificate_file.empty()) write_file(o.certificate_file, fc_json + "\n");
-  if (!o.form_certificate_file.empty()) write_file(o.form_certificate_file, fo_json + "\n");
-
+  if (o.verdict_only) throw Usage_error("--verdict-only is for batch; closure always certifies");
+  const Closure_result r = compute_closure(o, scene_text, source);
+  if (!o.certificate_file.empty()) write_file(o.certificate_file, r.fc_json + "\n");
+  if (!o.form_certificate_file.empty()) write_file(o.form_certificate_file, r.fo_json + "\n");
   if (o.json) {
-    std::cout << "{\"command\": \"" << command << "\", \"name\": " << json::quote(scene.name)
-              << ", \"mode\": \"" << o.mode << "\", \"decided_by\": \"" << decided_by(fc, fo) << "\""
-              << ", \"force_closure\": " << (fc.holds ? "true" : "false")
-              << ", \"form_closure\": " << (fo.holds ? "true" : "false")
-              << ", \"rank\": {\"force\": " << fc.rank << ", \"form\": " << fo.rank << "}"
-              << ", \"generators\": {\"force\": " << fc.generators << ", \"form\": " << fo.generators
-              << "}, \"predicates\": {\"force\": " << fc.predicates << ", \"form\": " << fo.predicates
-              << "}, \"exact_predicates\": {\"force\": " << fc.exact_predicates << ", \"form\": "
-              << fo.exact_predicates << "}, \"certificates_checked\": true"
-              << ", \"certificate\": " << fc_json << ", \"form_certificate\": " << fo_json << "}\n";
+    std::cout << closure_json(o, r, command) << "\n";
   } else {
-    std::cout << "scene: " << (scene.name.empty() ? source : scene.name) << "\n"
-              << "force closure: " << human_verdict(fc, false) << "\n"
-              << "form closure:  " << human_verdict(fo, true) << "\n"
-              << "decided by: " << decided_by(fc, fo) << " (" << fc.exact_predicates + fo.exact_predicates
-              << " of " << fc.predicates + fo.predicates << " predicates in exact arithmetic)\n"
+    std::cout << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
+              << "force closure: " << human_verdict(r.fc, false) << "\n"
+              << "form closure:  " << human_verdict(r.fo, true) << "\n"
+              << "decided by: " << decided_by(r.fc, r.fo) << " (" << r.fc.exact_predicates + r.fo.exact_predicates
+              << " of " << r.fc.predicates + r.fo.predicates << " predicates in exact arithmetic)\n"
               << "both certificates accepted by the independent checker (exact arithmetic)\n";
   }
   return kAnswered;
+}
+
+// Reads one line of at most `limit` bytes (the rest of a longer line is skipped, bounded memory).
+bool read_line(std::istream& in, std::string& line, std::size_t limit, bool& too_long) {
+  line.clear();
+  too_long = false;
+  std::streambuf* sb = in.rdbuf();
+  bool any = false;
+  for (;;) {
+    const int c = sb->sbumpc();
+    if (c == std::char_traits<char>::eof()) return any;
+    any = true;
+    if (c == '\n') return true;
+    if (line.size() < limit) line.push_back(static_cast<char>(c));
+    else too_long = true;
+  }
+}
+
+std::string error_line(std::size_t line, const char* kind, int code, const std::string& message) {
+  return "{\"line\": " + std::to_string(line) + ", \"" + kind + "\": " + json::quote(message) +
+         ", \"exit_code\": " + std::to_string(code) + "}";
+}
+
+// wrenchkit batch closure: one scene per input line, one JSON answer per output line, in order.
+int run_batch(const Options& o) {
+  if (o.positional.size() != 1 || o.positional[0] != "closure")
+    throw Usage_error("batch needs a command: wrenchkit batch closure [OPTIONS] < scenes.jsonl");
+  if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
+    throw Usage_error("batch writes certificates in its output lines, not to files");
+  unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t chunk = 256 * std::size_t(jobs);
+  std::vector<std::string> lines, out;
+  std::vector<char> too_long;
+  std::atomic<bool> self_check_failed{false}, internal_error{false};
+  std::size_t first_line = 1;
+  std::string line;
+  bool eof = false;
+  while (!eof) {
+    lines.clear();
+    too_long.clear();
+    while (lines.size() < chunk) {
+      bool longer = false;
+      if (!read_line(std::cin, line, o.limits.max_file_bytes, longer)) {
+        eof = true;
+        break;
+      }
+      lines.push_back(line);
+      too_long.push_back(longer);
+    }
+    if (lines.empty()) break;
+    out.assign(lines.size(), std::string());
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+      for (std::size_t i; (i = next++) < lines.size();) {
+        const std::size_t n = first_line + i;
+        try {
+          if (too_long[i])
+            throw Input_error("line larger than the size limit of " + std::to_string(o.limits.max_file_bytes) +
+                              " bytes (--max-file-size)");
+          out[i] = closure_json(o, compute_closure(o, lines[i], "line " + std::to_string(n)), "closure", n);
+        } catch (const Input_error& e) {
+          out[i] = error_line(n, "error", kBadInput, e.what());
+        } catch (const Undecided& e) {
+          out[i] = error_line(n, "undecided", kUndecided, e.what());
+        } catch (const Self_check_failure& e) {
+          self_check_failed = true;
+          out[i] = error_line(n, "internal_error", kSelfCheck, e.what());
+        } catch (const std::exception& e) {
+          internal_error = true;
+          out[i] = error_line(n, "internal_error", kInternal, e.what());
+        }
+      }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < jobs && t < lines.size(); ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    for (const std::string& s : out) std::cout << s << '\n';
+    first_line += lines.size();
+  }
+  std::cout.flush();
+  return self_check_failed ? kSelfCheck : (internal_error ? kInternal : kAnswered);
 }
 
 int run_check(const Options& o) {
@@ -301,6 +438,10 @@ int dispatch(int argc, char** argv) {
   if (command == "check") {
     if (o.help) return std::cout << kCheckHelp, kAnswered;
     return run_check(o);
+  }
+  if (command == "batch") {
+    if (o.help) return std::cout << kBatchHelp, kAnswered;
+    return run_batch(o);
   }
   if (command == "demo") {
     if (o.help) return std::cout << kDemoHelp, kAnswered;

@@ -2,7 +2,9 @@
 // nothing on stdout for bad input, certificates written and re-checked, every bad-input class.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <sstream>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -190,6 +192,60 @@ TEST(Cli, ModesAgreeAndFloatSaysWhenItCannotDecide) {
   EXPECT_EQ(h.code, 0) << h.err;
   EXPECT_NE(h.out.find("\"force_closure\": false"), std::string::npos);
   EXPECT_EQ(h.out.find("\"exact_predicates\": {\"force\": 0"), std::string::npos) << h.out;  // some went exact
+}
+
+TEST(Cli, BatchAnswersEveryLineInOrderOnManyThreads) {
+  // 40 lines: golden scenes interleaved with bad lines; the answers keep the input order.
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(test::source_dir() + "/tests/golden")) {
+    const std::string f = e.path().string();
+    if (f.size() > 11 && !f.compare(f.size() - 11, 11, ".scene.json")) names.push_back(f);
+  }
+  std::sort(names.begin(), names.end());
+  std::string input;
+  std::vector<int> expect;  // 1 closure true, 0 false, -1 error
+  for (int i = 0; i < 40; ++i) {
+    if (i % 7 == 3) {
+      input += i % 2 ? "{\"wrenchkit\": 1, \"contacts\": [{\"at\": [0,0], \"normal\": [0,0]}]}\n" : "not json\n";
+      expect.push_back(-1);
+      continue;
+    }
+    const std::string& f = names[i % names.size()];
+    std::string text = test::read_text(f);
+    text.erase(std::remove(text.begin(), text.end(), '\n'), text.end());
+    input += text + "\n";
+    const std::string expected = test::read_text(f.substr(0, f.size() - 11) + ".expected.json");
+    expect.push_back(expected.find("\"force_closure\": true") != std::string::npos);
+  }
+  for (const char* jobs : {"1", "3"}) {
+    const Cli_result r = run(std::string("batch closure --jobs ") + jobs, input);
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::istringstream out(r.out);
+    std::string line;
+    for (std::size_t i = 0; i < expect.size(); ++i) {
+      ASSERT_TRUE(std::getline(out, line)) << "missing line " << i + 1;
+      EXPECT_EQ(line.rfind("{\"line\": " + std::to_string(i + 1) + ", ", 0), 0u) << line;
+      if (expect[i] < 0) {
+        EXPECT_NE(line.find("\"exit_code\": 2"), std::string::npos) << line;
+      } else {
+        EXPECT_NE(line.find(std::string("\"force_closure\": ") + (expect[i] ? "true" : "false")), std::string::npos);
+        EXPECT_NE(line.find("\"certificates_checked\": true"), std::string::npos);
+      }
+    }
+    EXPECT_FALSE(std::getline(out, line)) << "extra output: " << line;
+  }
+  const Cli_result v = run("batch closure --verdict-only", input);
+  EXPECT_EQ(v.code, 0);
+  EXPECT_NE(v.out.find("\"certificates_checked\": false"), std::string::npos);
+  EXPECT_EQ(run("batch", input).code, 2);
+  EXPECT_EQ(run("batch labels", input).code, 2);
+  EXPECT_EQ(run("closure --verdict-only '" + golden("no_contacts") + "'").code, 2);
+  EXPECT_EQ(run("batch closure --jobs 0", input).code, 2);
+  // A line longer than the limit is an error on its line; the stream goes on.
+  const Cli_result big = run("batch closure --max-file-size 50", std::string(200, ' ') + "{}\n{\"wrenchkit\": 1}\n");
+  EXPECT_EQ(big.code, 0);
+  EXPECT_NE(big.out.find("{\"line\": 1, \"error\": \"line larger than the size limit"), std::string::npos) << big.out;
+  EXPECT_NE(big.out.find("{\"line\": 2, \"command\": \"closure\""), std::string::npos) << big.out;
 }
 
 TEST(Cli, LimitsCanBeRaised) {
