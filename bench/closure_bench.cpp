@@ -65,6 +65,17 @@ void BM_naive_plain_doubles(benchmark::State& st) {
   }
 }
 
+// The certified kernel on precomputed generators: the same work as BM_naive_plain_doubles.
+void BM_twin_kernel_only(benchmark::State& st) {
+  std::vector<std::vector<fl::Bounded3>> sets;
+  for (const Scene& s : parsed(int(st.range(0)))) sets.push_back(fl::generators(to_bounded(s), Reading::friction));
+  std::size_t i = 0;
+  for (auto _ : st) {
+    const fl::Float_kernel k(sets[i++ % sets.size()]);
+    benchmark::DoNotOptimize(compute_dual_cone(k).force_closure());
+  }
+}
+
 void BM_decide(benchmark::State& st, Mode mode, bool certify) {
   const std::vector<Scene> s = parsed(int(st.range(0)));
   std::size_t i = 0;
@@ -80,6 +91,7 @@ void BM_parse(benchmark::State& st) {
 
 BENCHMARK(BM_twin_plain_doubles)->Arg(3)->Arg(6)->Arg(8);
 BENCHMARK(BM_naive_plain_doubles)->Arg(6);
+BENCHMARK(BM_twin_kernel_only)->Arg(6);
 BENCHMARK_CAPTURE(BM_decide, float_verdict_only, Mode::float_only, false)->Arg(6);
 BENCHMARK_CAPTURE(BM_decide, hybrid_verdict_only, Mode::hybrid, false)->Arg(6);
 BENCHMARK_CAPTURE(BM_decide, exact_verdict_only, Mode::exact, false)->Arg(6);

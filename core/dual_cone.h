@@ -103,6 +103,8 @@ class Dual_cone_builder {
  private:
   const Kernel& k_;
   Dual_cone out_;
+  std::vector<Sign> d_;                // vertex signs of the current insertion (reused)
+  std::vector<std::size_t> scratch_;   // the next edge list (reused)
 
   Dual_cone undecided() {
     Dual_cone r;
@@ -146,7 +148,8 @@ class Dual_cone_builder {
     }
     const std::vector<std::size_t>& e = out_.edges;
     const std::size_t K = e.size();
-    std::vector<Sign> d(K);
+    std::vector<Sign>& d = d_;
+    d.resize(K);
     bool any_pos = false, any_neg = false;
     for (std::size_t j = 0; j < K; ++j) {
       d[j] = k_.det_sign(e[j], e[(j + 1) % K], g);
@@ -167,8 +170,8 @@ class Dual_cone_builder {
     std::size_t j1 = j0;
     while (d[(j1 + 1) % K] != Sign::positive) j1 = (j1 + 1) % K;
     // Keep edges j1+1 … j0 (each has an endpoint with d > 0), then insert g.
-    std::vector<std::size_t> next;
-    next.reserve(K + 1);
+    std::vector<std::size_t>& next = scratch_;
+    next.clear();
     for (std::size_t j = (j1 + 1) % K;; j = (j + 1) % K) {
       next.push_back(e[j]);
       if (j == j0) break;
@@ -176,7 +179,7 @@ class Dual_cone_builder {
     next.push_back(g);
     if (out_.shape == Dual_shape::arc && next.size() != 4)
       throw Dual_cone_invariant_error("dual cone: an arc was cut into a non-arc");
-    out_.edges = std::move(next);
+    out_.edges.swap(next);
     out_.defining.clear();
     return true;
   }

@@ -21,7 +21,17 @@ using Bounded3 = std::array<Bounded, 3>;
 
 class Float_kernel {
  public:
-  explicit Float_kernel(std::vector<Bounded3> g) : g_(std::move(g)) {}
+  explicit Float_kernel(std::vector<Bounded3> g) : g_(std::move(g)) {
+    mag_.reserve(g_.size());
+    for (const Bounded3& x : g_) {
+      std::array<double, 6> m{};
+      for (int c = 0; c < 3; ++c) {
+        m[c] = std::fabs(x[c].v);
+        m[3 + c] = x[c].e;
+      }
+      mag_.push_back(m);
+    }
+  }
   std::size_t size() const { return g_.size(); }
   const std::vector<Bounded3>& generators() const { return g_; }
 
@@ -39,7 +49,12 @@ class Float_kernel {
     return uncertain ? Sign::uncertain : Sign::zero;
   }
 
+  // Two stages [FL-2]: a plain-double determinant with a bound from magnitudes (cheap, decides
+  // almost every non-degenerate sign), then the Bounded evaluation [FL-1], whose exact rounding
+  // errors also certify exact zeros of exact data.
   Sign det_sign(std::size_t i, std::size_t j, std::size_t k) const {
+    const Sign fast = det_sign_static(i, j, k);
+    if (fast != Sign::uncertain) return fast;
     const Bounded3& a = g_[i];
     const Bounded3& b = g_[j];
     const Bounded3& c = g_[k];
@@ -48,8 +63,37 @@ class Float_kernel {
     return d.sign();
   }
 
+  // Stage 1 (proofs/notes/FL-1, "Stage 1"): D̂ = det of the doubles in the order above; with
+  // A = |â| + e_a etc., |D − D̂| ≤ Σ_σ (e_a·B·C + |â|·e_b·C + |â|·|b̂|·e_c) + 6u·Σ_σ |â||b̂||ĉ|,
+  // the sums over the six terms of the determinant; the bound is inflated for its own rounding.
+  Sign det_sign_static(std::size_t i, std::size_t j, std::size_t k) const {
+    const Bounded3& a = g_[i];
+    const Bounded3& b = g_[j];
+    const Bounded3& c = g_[k];
+    const double d = a[0].v * (b[1].v * c[2].v - b[2].v * c[1].v) - a[1].v * (b[0].v * c[2].v - b[2].v * c[0].v) +
+                     a[2].v * (b[0].v * c[1].v - b[1].v * c[0].v);
+    const auto& ma = mag_[i];
+    const auto& mb = mag_[j];
+    const auto& mc = mag_[k];
+    double perm = 0, prop = 0;
+    // The six terms a_p·b_q·c_r, (p, q, r) a permutation of (0, 1, 2).
+    static constexpr int kPerm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    for (const auto& s : kPerm) {
+      const double xa = ma[s[0]], xb = mb[s[1]], xc = mc[s[2]];
+      const double ea = ma[3 + s[0]], eb = mb[3 + s[1]], ec = mc[3 + s[2]];
+      perm += xa * xb * xc;
+      prop += ea * (xb + eb) * (xc + ec) + xa * eb * (xc + ec) + xa * xb * ec;
+    }
+    const double bound = (prop + 0x1p-50 * perm) * Bounded::kInflate + Bounded::kSlack;
+    if (!(bound < Bounded::kInf) || !std::isfinite(d) || perm < Bounded::kUnderflow * 0x1p60) return Sign::uncertain;
+    if (d > bound) return Sign::positive;
+    if (-d > bound) return Sign::negative;
+    return Sign::uncertain;
+  }
+
  private:
   std::vector<Bounded3> g_;
+  std::vector<std::array<double, 6>> mag_;  // |v| and e of each coordinate
 };
 
 class Naive_kernel {
