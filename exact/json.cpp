@@ -89,7 +89,7 @@ class Parser {
   Value object(std::size_t depth) {
     Value v;
     v.type = Type::object;
-    std::unordered_set<std::string> seen;  // duplicate keys, in O(1) each
+    std::unordered_set<std::string> seen;  // keys, once the object has 16 members
     ++i_;  // {
     skip_ws();
     if (i_ < s_.size() && s_[i_] == '}') {
@@ -101,7 +101,16 @@ class Parser {
       if (i_ >= s_.size() || s_[i_] != '"') fail("expected a string key");
       const std::size_t key_pos = i_;
       std::string key = string();
-      if (!seen.insert(key).second) {
+      // Duplicate keys: a linear scan while the object is small, a hash set beyond (O(1) each).
+      bool duplicate = false;
+      if (v.members.size() < 16) {
+        for (const auto& m : v.members) duplicate |= m.first == key;
+      } else {
+        if (seen.empty())
+          for (const auto& m : v.members) seen.insert(m.first);
+        duplicate = !seen.insert(key).second;
+      }
+      if (duplicate) {
         i_ = key_pos;
         fail("duplicate key " + quote(key));
       }

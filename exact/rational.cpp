@@ -97,24 +97,48 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
   if (int_digits + frac_part.size() + exponent_digits > limits.max_digits)
     return fail(why, "has more digits than the digit limit");
 
-  std::string mantissa;
-  mantissa.reserve(int_digits + frac_part.size());
-  mantissa.append(int_part);
-  mantissa.append(frac_part);
-  Integer m = integer_of(mantissa);
   const long scale = exponent - static_cast<long>(frac_part.size());
   Rational q;
-  if (m == 0) {
-    q = 0;
-  } else if (scale >= 0) {
-    Integer p;
-    mpz_ui_pow_ui(p.get_mpz_t(), 10, static_cast<unsigned long>(scale));
-    q = Rational(m * p);
+  // Fast path: at most 18 significant digits and |scale| ≤ 18 fit in 64-bit integers (the value is
+  // m·10^scale with m < 10^18 and 10^|scale| ≤ 10^18), so no string-to-GMP conversion is needed.
+  std::size_t lead = 0;  // leading zeros of the mantissa digits
+  while (lead < int_part.size() && int_part[lead] == '0') ++lead;
+  if (lead == int_part.size()) {
+    std::size_t f = 0;
+    while (f < frac_part.size() && frac_part[f] == '0') ++f;
+    lead += f;
+  }
+  const std::size_t significant = int_part.size() + frac_part.size() - lead;
+  if (significant <= 18 && scale >= -18 && scale <= 18 && (scale <= 0 || significant + scale <= 18)) {
+    unsigned long m = 0;
+    for (char c : int_part) m = m * 10 + static_cast<unsigned long>(c - '0');
+    for (char c : frac_part) m = m * 10 + static_cast<unsigned long>(c - '0');
+    unsigned long p = 1;
+    for (long k = 0; k < (scale < 0 ? -scale : scale); ++k) p *= 10;
+    if (scale >= 0) {
+      q = Rational(Integer(m * p));
+    } else {
+      mpq_set_ui(q.get_mpq_t(), m, p);
+      q.canonicalize();
+    }
   } else {
-    Integer p;
-    mpz_ui_pow_ui(p.get_mpz_t(), 10, static_cast<unsigned long>(-scale));
-    q = Rational(m, p);
-    q.canonicalize();
+    std::string mantissa;
+    mantissa.reserve(int_digits + frac_part.size());
+    mantissa.append(int_part);
+    mantissa.append(frac_part);
+    const Integer m = integer_of(mantissa);
+    if (m == 0) {
+      q = 0;
+    } else if (scale >= 0) {
+      Integer p;
+      mpz_ui_pow_ui(p.get_mpz_t(), 10, static_cast<unsigned long>(scale));
+      q = Rational(m * p);
+    } else {
+      Integer p;
+      mpz_ui_pow_ui(p.get_mpz_t(), 10, static_cast<unsigned long>(-scale));
+      q = Rational(m, p);
+      q.canonicalize();
+    }
   }
   if (negative) q = -q;
   return q;

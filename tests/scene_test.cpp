@@ -2,6 +2,8 @@
 // message text pinned (the message names the JSON path and the offending text).
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "exact/input_error.h"
 #include "exact/rational.h"
 #include "exact/scene.h"
@@ -30,6 +32,31 @@ TEST(Numbers, DecimalTextIsReadExactly) {
   EXPECT_EQ(exact("123456789012345678901234567890", true), Rational(Integer("123456789012345678901234567890")));
   // 0.1 is not the double 0.1000000000000000055511151231257827…
   EXPECT_NE(exact("0.1", true), Rational(0.1));
+}
+
+TEST(Numbers, FastAndGeneralPathsAgreeOnRandomDecimals) {
+  // Random digit strings around the 18-digit / 10^±18 boundary of the 64-bit fast path, checked
+  // against an independent construction: Integer(all digits) · 10^(exponent − fraction digits).
+  std::mt19937_64 rng(3);
+  for (int t = 0; t < 20000; ++t) {
+    const int n_int = std::uniform_int_distribution<int>(0, 12)(rng);
+    const int n_frac = std::uniform_int_distribution<int>(n_int == 0 ? 1 : 0, 12)(rng);
+    const int lead_zeros = std::uniform_int_distribution<int>(0, 3)(rng);
+    std::string ip = std::string(lead_zeros, '0'), fp;
+    for (int i = 0; i < n_int; ++i) ip += char('0' + std::uniform_int_distribution<int>(0, 9)(rng));
+    for (int i = 0; i < n_frac; ++i) fp += char('0' + std::uniform_int_distribution<int>(0, 9)(rng));
+    const int e = std::uniform_int_distribution<int>(-25, 25)(rng);
+    const bool neg = rng() & 1;
+    const std::string text = std::string(neg ? "-" : "") + ip + (fp.empty() ? "" : "." + fp) + "e" + std::to_string(e);
+    Integer m((ip + fp).empty() ? "0" : ip + fp, 10);
+    const long scale = e - long(fp.size());
+    Integer p;
+    mpz_ui_pow_ui(p.get_mpz_t(), 10, static_cast<unsigned long>(scale < 0 ? -scale : scale));
+    Rational want = scale >= 0 ? Rational(m * p) : Rational(m, p);
+    want.canonicalize();
+    if (neg) want = -want;
+    ASSERT_EQ(exact(text, false), want) << text;
+  }
 }
 
 TEST(Numbers, BadTextIsRejectedWithAReason) {
