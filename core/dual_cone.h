@@ -28,9 +28,10 @@
 // between them are dropped and k is inserted in their place (the new vertices are g_{e_a} × g_k
 // and g_k × g_{e_b}). If no d is positive, W* collapses to a ray, an arc or {0}.
 //
-// Complexity: O(n) predicates for the rank, then O(K) per insertion: O(n·K) ≤ O(n²) in all, with
-// K the size of the current polygon (small unless the generators are in convex position on a
-// hemisphere). Memory O(n).
+// Complexity: O(n) predicates for the rank; then compute_dual_cone inserts the generators in a fixed
+// pseudo-random order with conflict lists (expected O(n log n) predicates, see run()), while
+// compute_dual_cone_reference tests every vertex at every insertion (O(n·K) ≤ O(n²), K the polygon
+// size) and serves as the tests' oracle. Memory O(n).
 //
 // Exactness: exact with an exact kernel; certified-or-undecided with a filtered kernel.
 #pragma once
@@ -38,6 +39,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <vector>
 
@@ -81,26 +83,205 @@ class Dual_cone_builder {
  public:
   explicit Dual_cone_builder(const Kernel& k) : k_(k) {}
 
-  Dual_cone run() {
+  // The reference version: generators in input order, every vertex tested at every insertion.
+  Dual_cone run_simple() {
+    if (!start()) return out_;
     const std::size_t n = k_.size();
-    if (n == 0) return out_;  // rank 0
-    if (!find_basis(n)) return out_;
-    if (out_.rank < 3) return out_;
-    const std::size_t a = out_.basis[0], b = out_.basis[1], c = out_.basis[2];
-    const Sign s = k_.det_sign(a, b, c);
-    if (s == Sign::uncertain) return undecided();
-    out_.shape = Dual_shape::polygon;
-    out_.edges = (s == Sign::positive) ? std::vector<std::size_t>{a, b, c}
-                                       : std::vector<std::size_t>{a, c, b};
     for (std::size_t g = 0; g < n; ++g) {
-      if (g == a || g == b || g == c) continue;
+      if (is_basis(g)) continue;
       if (!insert(g)) return undecided();
       if (out_.shape == Dual_shape::zero) break;
     }
     return out_;
   }
 
+  // Randomized incremental construction with conflict lists (Clarkson–Shor): generators in a
+  // fixed pseudo-random order; each pending generator remembers one vertex it cuts (d < 0), and
+  // each vertex the pending generators that remember it. Inserting g walks only the vertices it
+  // removes; a pending generator whose vertex was removed can only cut one of the two new vertices
+  // (the part of a convex polygon's boundary on the negative side of a plane is one arc, and it
+  // runs from the removed vertex to any surviving one through a new vertex) — or nothing, and then
+  // it is redundant for good. Expected O(n log n) predicates instead of O(n·K).
+  Dual_cone run() {
+    if (!start()) return out_;
+    const std::size_t n = k_.size();
+    std::vector<std::size_t> order;
+    order.reserve(n);
+    for (std::size_t g = 0; g < n; ++g)
+      if (!is_basis(g)) order.push_back(g);
+    shuffle(order);
+    // The initial triangle as a linked cycle of vertices (edge_in, edge_out).
+    for (std::size_t j = 0; j < 3; ++j) new_vertex(out_.edges[j], out_.edges[(j + 1) % 3]);
+    for (std::size_t j = 0; j < 3; ++j) link(j, (j + 1) % 3);
+    conflict_.assign(n, kNone);
+    for (std::size_t g : order) {
+      for (std::size_t v = 0; v < 3; ++v) {
+        const Sign s = value(v, g);
+        if (s == Sign::uncertain) return undecided();
+        if (s == Sign::negative) {
+          attach(g, v);
+          break;
+        }
+      }
+    }
+    for (std::size_t idx = 0; idx < order.size(); ++idx) {
+      const std::size_t g = order[idx];
+      if (out_.shape != Dual_shape::polygon) {  // collapsed to an arc or a ray: O(1) per generator
+        if (!insert(g)) return undecided();
+        if (out_.shape == Dual_shape::zero) break;
+        continue;
+      }
+      if (conflict_[g] == kNone) continue;  // satisfied by every vertex: redundant
+      const int r = cut(g);
+      if (r < 0) return undecided();
+      if (out_.shape == Dual_shape::zero) break;
+    }
+    if (out_.shape == Dual_shape::polygon) out_.edges = cycle_edges();
+    return out_;
+  }
+
  private:
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  struct Vertex {
+    std::size_t in = 0, out = 0;    // the ray g_in × g_out, between edges `in` and `out`
+    std::size_t prev = 0, next = 0;
+    bool alive = true;
+    std::vector<std::size_t> bucket;  // pending generators that cut this vertex
+  };
+  std::vector<Vertex> vs_;
+  std::vector<std::size_t> conflict_;  // per generator: a vertex it cuts, or kNone
+  std::size_t any_alive_ = 0;
+
+  bool start() {
+    const std::size_t n = k_.size();
+    if (n == 0) return false;  // rank 0
+    if (!find_basis(n)) return false;
+    if (out_.rank < 3) return false;
+    const std::size_t a = out_.basis[0], b = out_.basis[1], c = out_.basis[2];
+    const Sign s = k_.det_sign(a, b, c);
+    if (s == Sign::uncertain) {
+      out_ = undecided();
+      return false;
+    }
+    out_.shape = Dual_shape::polygon;
+    out_.edges = (s == Sign::positive) ? std::vector<std::size_t>{a, b, c}
+                                       : std::vector<std::size_t>{a, c, b};
+    return true;
+  }
+
+  bool is_basis(std::size_t g) const {
+    return g == out_.basis[0] || g == out_.basis[1] || g == out_.basis[2];
+  }
+
+  // A fixed, platform-independent permutation (Fisher–Yates driven by splitmix64), so answers and
+  // certificates are reproducible and the exact and float runs visit generators in the same order.
+  static void shuffle(std::vector<std::size_t>& v) {
+    std::uint64_t x = 0x9E3779B97F4A7C15ull;
+    for (std::size_t i = v.size(); i > 1; --i) {
+      x += 0x9E3779B97F4A7C15ull;
+      std::uint64_t z = x;
+      z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+      z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+      z ^= z >> 31;
+      std::swap(v[i - 1], v[static_cast<std::size_t>(z % i)]);
+    }
+  }
+
+  std::size_t new_vertex(std::size_t in, std::size_t out) {
+    Vertex v;
+    v.in = in;
+    v.out = out;
+    vs_.push_back(std::move(v));
+    any_alive_ = vs_.size() - 1;
+    return vs_.size() - 1;
+  }
+  void link(std::size_t a, std::size_t b) {
+    vs_[a].next = b;
+    vs_[b].prev = a;
+  }
+  Sign value(std::size_t v, std::size_t g) const { return k_.det_sign(vs_[v].in, vs_[v].out, g); }
+  void attach(std::size_t g, std::size_t v) {
+    conflict_[g] = v;
+    vs_[v].bucket.push_back(g);
+  }
+
+  std::vector<std::size_t> cycle_edges() const {
+    std::vector<std::size_t> e;
+    std::size_t v = any_alive_;
+    do {
+      e.push_back(vs_[v].in);
+      v = vs_[v].next;
+    } while (v != any_alive_);
+    return e;
+  }
+
+  // Inserts g, which cuts the vertex conflict_[g]. Returns −1 if a predicate was uncertain.
+  int cut(std::size_t g) {
+    const std::size_t v0 = conflict_[g];
+    // The maximal run of vertices with d ≤ 0 around v0 (d(v0) < 0).
+    std::size_t first = v0, last = v0;
+    bool whole = false;
+    for (;;) {
+      const std::size_t p = vs_[first].prev;
+      if (p == last) {
+        whole = true;
+        break;
+      }
+      const Sign s = value(p, g);
+      if (s == Sign::uncertain) return -1;
+      if (s == Sign::positive) break;
+      first = p;
+    }
+    if (!whole) {
+      for (;;) {
+        const std::size_t q = vs_[last].next;
+        const Sign s = value(q, g);
+        if (s == Sign::uncertain) return -1;
+        if (s == Sign::positive) break;
+        last = q;
+      }
+    }
+    if (whole) {  // no vertex strictly inside: W* collapses (the general rules of collapse())
+      out_.edges = cycle_edges();
+      std::vector<Sign>& d = d_;
+      d.resize(out_.edges.size());
+      for (std::size_t j = 0; j < out_.edges.size(); ++j) {
+        d[j] = k_.det_sign(out_.edges[j], out_.edges[(j + 1) % out_.edges.size()], g);
+        if (d[j] == Sign::uncertain) return -1;
+      }
+      collapse(g, d);
+      return 0;
+    }
+    // Replace the run first … last by (e_first.in, g) and (g, e_last.out).
+    const std::size_t before = vs_[first].prev, after = vs_[last].next;
+    const std::size_t n1 = new_vertex(vs_[first].in, g);
+    const std::size_t n2 = new_vertex(g, vs_[last].out);
+    link(before, n1);
+    link(n1, n2);
+    link(n2, after);
+    // Pending generators of removed vertices move to n1 or n2, or become redundant.
+    for (std::size_t v = first;; v = vs_[v].next) {
+      vs_[v].alive = false;
+      std::vector<std::size_t> bucket;
+      bucket.swap(vs_[v].bucket);
+      for (std::size_t q : bucket) {
+        if (q == g || conflict_[q] != v) continue;
+        conflict_[q] = kNone;
+        for (std::size_t cand : {n1, n2}) {
+          const Sign s = value(cand, q);
+          if (s == Sign::uncertain) return -1;
+          if (s == Sign::negative) {
+            attach(q, cand);
+            break;
+          }
+        }
+      }
+      if (v == last) break;
+    }
+    conflict_[g] = kNone;
+    return 0;
+  }
+
   const Kernel& k_;
   Dual_cone out_;
   std::vector<Sign> d_;                // vertex signs of the current insertion (reused)
@@ -231,10 +412,18 @@ class Dual_cone_builder {
 }  // namespace detail
 
 // [FC-1] See the file comment. Throws detail::Dual_cone_invariant_error if the kernel's signs are
-// inconsistent (a bug).
+// inconsistent (a bug). Randomized incremental construction in a fixed order: expected
+// O(n log n) predicates.
 template <class Kernel>
 Dual_cone compute_dual_cone(const Kernel& kernel) {
   return detail::Dual_cone_builder<Kernel>(kernel).run();
+}
+
+// The same cone by plain incremental clipping in input order, O(n·K): the reference the tests
+// compare the randomized construction with.
+template <class Kernel>
+Dual_cone compute_dual_cone_reference(const Kernel& kernel) {
+  return detail::Dual_cone_builder<Kernel>(kernel).run_simple();
 }
 
 }  // namespace wrenchkit

@@ -3,6 +3,7 @@
 // checker, and tampered certificates rejected.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "core/dual_cone.h"
@@ -335,6 +336,55 @@ TEST(ClosureThresholds, TwoFingerGraspsAtAndAroundNguyensThreshold) {
     }
   }
   EXPECT_EQ(tested, 300);
+}
+
+}  // namespace
+}  // namespace wrenchkit
+
+namespace wrenchkit {
+namespace {
+
+// [FC-1] The randomized construction with conflict lists against the plain reference clipping:
+// same decision, same shape, and (for polygons, arcs, rays) the same cone — every extreme ray of
+// one is an extreme ray of the other.
+TEST(ClosureDifferential, RandomizedConstructionMatchesTheReference) {
+  const std::uint64_t seed = test::seed(99);
+  std::mt19937_64 rng(seed);
+  for (int i = 0; i < 3000; ++i) {
+    const std::string text = scene_json(test::random_contacts(rng, 12));
+    const Scene s = read_scene(text, Input_limits{});
+    for (Property p : {Property::force_closure, Property::form_closure}) {
+      std::vector<Wrench> ws;
+      for (const Generator& g : generators(s, reading_of(p))) ws.push_back(g.w);
+      const Exact_kernel k(ws);
+      const Dual_cone fast = compute_dual_cone(k), ref = compute_dual_cone_reference(k);
+      bool same = fast.shape == ref.shape && fast.rank == ref.rank;
+      if (same && (fast.shape == Dual_shape::polygon || fast.shape == Dual_shape::arc)) {
+        // Same set of extreme rays: each ray of one is a positive multiple of a ray of the other.
+        auto rays = [&](const Dual_cone& d) {
+          std::vector<std::array<Integer, 3>> out;
+          for (std::size_t j = 0; j < d.edges.size(); ++j) {
+            const Wrench& a = ws[d.edges[j]];
+            const Wrench& b = ws[d.edges[(j + 1) % d.edges.size()]];
+            const Rational c[3] = {a.fy * b.m - a.m * b.fy, a.m * b.fx - a.fx * b.m, a.fx * b.fy - a.fy * b.fx};
+            std::array<Integer, 3> r;
+            primitive(c, r.data());
+            out.push_back(r);
+          }
+          std::sort(out.begin(), out.end());
+          out.erase(std::unique(out.begin(), out.end()), out.end());
+          return out;
+        };
+        same = rays(fast) == rays(ref);
+      }
+      if (!same) {
+        ADD_FAILURE() << "seed " << seed << " case " << i << " " << property_name(p) << ": shapes "
+                      << int(fast.shape) << " vs " << int(ref.shape) << "; scene dumped to "
+                      << test::dump_failure(text, "randomized_" + std::to_string(seed) + "_" + std::to_string(i));
+        return;
+      }
+    }
+  }
 }
 
 }  // namespace
