@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <fstream>
@@ -266,6 +267,9 @@ Closure_result compute_closure(const Options& o, const std::string& scene_text, 
   if (!certify) return r;
   r.fc_json = certificate_json(r.fc.certificate);
   r.fo_json = certificate_json(r.fo.certificate);
+  // Test hook: the suite corrupts a certificate to prove the self-check path (exit 4) works.
+  if (const char* f = std::getenv("WRENCHKIT_FAULT_INJECTION"); f && std::string(f) == "corrupt-certificate")
+    r.fc_json.insert(1, "\"injected_fault\": true, ");
   for (const std::string* cert : {&r.fc_json, &r.fo_json}) {
     const auto c = wrenchkit_checker::check(scene_text, *cert, checker_limits(o.limits));
     if (c.outcome != wrenchkit_checker::Outcome::accepted)

@@ -27,14 +27,18 @@ fs::path scratch() {
   return d;
 }
 
-Cli_result run(const std::string& args, const std::string& stdin_text = "") {
+// Runs the command with `env` (e.g. "VAR=value") in front of it.
+Cli_result run_env(const std::string& env, const std::string& args, const std::string& stdin_text = "") {
   const fs::path d = scratch();
   const std::string in = (d / "stdin").string(), out = (d / "stdout").string(), err = (d / "stderr").string();
   std::ofstream(in, std::ios::binary) << stdin_text;
-  const std::string cmd = std::string("'") + WRENCHKIT_CLI + "' " + args + " < '" + in + "' > '" + out + "' 2> '" + err + "'";
+  const std::string cmd = env + (env.empty() ? "" : " ") + "'" + WRENCHKIT_CLI + "' " + args + " < '" + in + "' > '" +
+                          out + "' 2> '" + err + "'";
   const int status = std::system(cmd.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::read_text(out), test::read_text(err)};
 }
+
+Cli_result run(const std::string& args, const std::string& stdin_text = "") { return run_env("", args, stdin_text); }
 
 std::string write(const std::string& name, const std::string& text) {
   const fs::path p = scratch() / name;
@@ -246,6 +250,21 @@ TEST(Cli, BatchAnswersEveryLineInOrderOnManyThreads) {
   EXPECT_EQ(big.code, 0);
   EXPECT_NE(big.out.find("{\"line\": 1, \"error\": \"line larger than the size limit"), std::string::npos) << big.out;
   EXPECT_NE(big.out.find("{\"line\": 2, \"command\": \"closure\""), std::string::npos) << big.out;
+}
+
+TEST(Cli, AFailedSelfCheckExitsFourAndWritesNothing) {
+  const std::string cert = (scratch() / "never4.json").string();
+  fs::remove(cert);
+  const Cli_result r = run_env("WRENCHKIT_FAULT_INJECTION=corrupt-certificate",
+                               "closure --json --certificate '" + cert + "' '" + golden("square_crossed_couples") + "'");
+  EXPECT_EQ(r.code, 4);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("internal error (please report): the independent checker rejected our own certificate"),
+            std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(cert));
+  const Cli_result b = run_env("WRENCHKIT_FAULT_INJECTION=corrupt-certificate", "batch closure", "{\"wrenchkit\": 1}\n");
+  EXPECT_EQ(b.code, 4);
+  EXPECT_NE(b.out.find("\"exit_code\": 4"), std::string::npos) << b.out;
 }
 
 TEST(Cli, LimitsCanBeRaised) {
