@@ -412,10 +412,20 @@ class Dual_cone_builder {
 }  // namespace detail
 
 // [FC-1] See the file comment. Throws detail::Dual_cone_invariant_error if the kernel's signs are
-// inconsistent (a bug). Randomized incremental construction in a fixed order: expected
-// O(n log n) predicates.
+// inconsistent (a bug). Up to kSmallDualCone generators the plain clipping is used (no bookkeeping,
+// fastest for grasps of a few contacts); beyond, randomized incremental construction in a fixed
+// order: expected O(n log n) predicates. Both give the same cone (tests compare them).
+inline constexpr std::size_t kSmallDualCone = 32;
+
 template <class Kernel>
 Dual_cone compute_dual_cone(const Kernel& kernel) {
+  detail::Dual_cone_builder<Kernel> b(kernel);
+  return kernel.size() <= kSmallDualCone ? b.run_simple() : b.run();
+}
+
+// The randomized construction whatever the size (for tests).
+template <class Kernel>
+Dual_cone compute_dual_cone_randomized(const Kernel& kernel) {
   return detail::Dual_cone_builder<Kernel>(kernel).run();
 }
 

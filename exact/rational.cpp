@@ -1,6 +1,7 @@
 #include "exact/rational.h"
 
 #include <cctype>
+#include <cmath>
 
 namespace wrenchkit {
 namespace {
@@ -26,8 +27,17 @@ std::optional<Rational> fail(std::string& why, const char* reason) {
 
 }  // namespace
 
+fl::Bounded to_bounded(const Rational& q) {
+  const double v = q.get_d();  // truncation toward zero: |q − v| < ulp(v)
+  if (!std::isfinite(v)) return {v, fl::Bounded::kInf};
+  if (Rational(v) == q) return {v, 0.0};
+  if (std::fabs(v) < fl::Bounded::kUnderflow) return {v, fl::Bounded::kInf};
+  return {v, std::fabs(v) * 0x1p-51};
+}
+
 std::optional<Rational> parse_rational(std::string_view s, bool json_number,
-                                       const Input_limits& limits, std::string& why) {
+                                       const Input_limits& limits, std::string& why,
+                                       fl::Bounded* approx) {
   std::size_t i = 0;
   bool negative = false;
   if (i < s.size() && (s[i] == '-' || (!json_number && s[i] == '+'))) {
@@ -52,6 +62,7 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
     Rational q(integer_of(int_part), den);
     q.canonicalize();
     if (negative) q = -q;
+    if (approx) *approx = to_bounded(q);
     return q;
   }
 
@@ -99,6 +110,7 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
 
   const long scale = exponent - static_cast<long>(frac_part.size());
   Rational q;
+  bool approx_done = false;
   // Fast path: at most 18 significant digits and |scale| ≤ 18 fit in 64-bit integers (the value is
   // m·10^scale with m < 10^18 and 10^|scale| ≤ 10^18), so no string-to-GMP conversion is needed.
   std::size_t lead = 0;  // leading zeros of the mantissa digits
@@ -121,6 +133,25 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
       mpq_set_ui(q.get_mpq_t(), m, p);
       q.canonicalize();
     }
+    // The certified double straight from the digits: m < 2^53 and p = 10^k ≤ 10^15 < 2^53 are
+    // exact doubles, so one correctly rounded operation gives v, and fma gives its exact error
+    // (the value lies in [10^-18, 10^18], far from underflow and overflow). [FL-4]
+    if (approx) {
+      if (m < (1ul << 53) && p <= 1000000000000000ul) {
+        const double dm = static_cast<double>(m), dp = static_cast<double>(p);
+        if (scale >= 0) {
+          const double v = dm * dp;
+          *approx = {v, std::fabs(std::fma(dm, dp, -v))};  // exact rounding error of the product
+        } else {
+          const double v = dm / dp;
+          const double rem = std::fma(-v, dp, dm);  // m − v·p, exact for a correctly rounded quotient
+          // |m/p − v| = |rem|/p; the division rounds, so inflate (or 0 when exact).
+          *approx = {v, rem == 0 ? 0.0 : (std::fabs(rem) / dp) * fl::Bounded::kInflate};
+        }
+        if (negative) approx->v = -approx->v;
+        approx_done = true;
+      }
+    }
   } else {
     std::string mantissa;
     mantissa.reserve(int_digits + frac_part.size());
@@ -141,6 +172,7 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
     }
   }
   if (negative) q = -q;
+  if (approx && !approx_done) *approx = to_bounded(q);
   return q;
 }
 

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "exact/limits.h"
+#include "float/bounded.h"
 
 namespace wrenchkit {
 
@@ -18,8 +19,16 @@ using Integer = mpz_class;
 // Reads `text` exactly. `json_number` selects JSON's number grammar (text of a JSON number token);
 // otherwise the string grammar (decimal with optional exponent, or p/q). On failure returns
 // nullopt and sets `why` to a short reason ("is not a number", "has more than 10000 digits", …).
+// With `approx`, also sets it to a double with a certified bound on its distance to the exact value
+// [FL-4], computed from the digits when they are short (no rational arithmetic), else from the
+// rational.
 std::optional<Rational> parse_rational(std::string_view text, bool json_number,
-                                       const Input_limits& limits, std::string& why);
+                                       const Input_limits& limits, std::string& why,
+                                       fl::Bounded* approx = nullptr);
+
+// |q − v| ≤ e: v is q rounded toward zero; e = 0 if exact, 2^-51·|v| otherwise (one ulp of a
+// normal double is at most 2^-52·|v|), +∞ if q is outside the normal range of doubles. [FL-4]
+fl::Bounded to_bounded(const Rational& q);
 
 // Lowest terms, "p" or "p/q" (q > 0): the JSON output form of interface.md §3.
 std::string to_string(const Rational& q);

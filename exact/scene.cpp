@@ -83,11 +83,11 @@ class Reader {
     return *v;
   }
 
-  Rational number(const Value& v, const std::string& path) const {
+  Rational number(const Value& v, const std::string& path, fl::Bounded* approx = nullptr) const {
     if (v.type != Type::number && v.type != Type::string)
       fail(path, std::string("expected a number, got ") + json::type_name(v.type));
     std::string why;
-    auto q = parse_rational(v.text, v.type == Type::number, limits_, why);
+    auto q = parse_rational(v.text, v.type == Type::number, limits_, why, approx);
     if (!q) {
       if (why == "has more digits than the digit limit")
         why = "has more than " + std::to_string(limits_.max_digits) + " digits (--max-digits)";
@@ -98,27 +98,27 @@ class Reader {
     return *q;
   }
 
-  Rational nonnegative(const Value& v, const std::string& path) const {
-    Rational q = number(v, path);
+  Rational nonnegative(const Value& v, const std::string& path, fl::Bounded* approx = nullptr) const {
+    Rational q = number(v, path, approx);
     if (q < 0) fail(path, display(v) + " is negative (must be >= 0)");
     return q;
   }
 
-  Vec2 vec2(const Value& v, const std::string& path) const {
+  Vec2 vec2(const Value& v, const std::string& path, fl::Bounded* approx2 = nullptr) const {
     if (v.type != Type::array || v.items.size() != 2)
       fail(path, std::string("expected an array of 2 numbers, got ") +
                      (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
                                             : std::string(json::type_name(v.type))));
-    return {number(v.items[0], path + "[0]"), number(v.items[1], path + "[1]")};
+    return {number(v.items[0], path + "[0]", approx2), number(v.items[1], path + "[1]", approx2 ? approx2 + 1 : nullptr)};
   }
 
-  Wrench wrench3(const Value& v, const std::string& path) const {
+  Wrench wrench3(const Value& v, const std::string& path, fl::Bounded* approx3 = nullptr) const {
     if (v.type != Type::array || v.items.size() != 3)
       fail(path, std::string("expected an array of 3 numbers [fx, fy, m], got ") +
                      (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
                                             : std::string(json::type_name(v.type))));
-    return {number(v.items[0], path + "[0]"), number(v.items[1], path + "[1]"),
-            number(v.items[2], path + "[2]")};
+    return {number(v.items[0], path + "[0]", approx3), number(v.items[1], path + "[1]", approx3 ? approx3 + 1 : nullptr),
+            number(v.items[2], path + "[2]", approx3 ? approx3 + 2 : nullptr)};
   }
 
   Body body(const Value& v) const {
@@ -144,17 +144,30 @@ class Reader {
     if (v.find("wrench")) {
       keys(v, path, {"wrench", "name"});
       c.kind = Contact::Kind::wrench;
-      c.wrench = wrench3(*v.find("wrench"), path + ".wrench");
+      fl::Bounded w[3];
+      c.wrench = wrench3(*v.find("wrench"), path + ".wrench", w);
       if (c.wrench.fx == 0 && c.wrench.fy == 0 && c.wrench.m == 0)
         fail(path + ".wrench", "zero wrench");
+      c.twin.is_wrench = true;
+      c.twin.fx = w[0];
+      c.twin.fy = w[1];
+      c.twin.m = w[2];
+      c.has_twin = true;
       return c;
     }
     keys(v, path, {"at", "normal", "mu", "name"});
     c.kind = Contact::Kind::point;
-    c.at = vec2(required(v, path, "at"), path + ".at");
-    c.normal = vec2(required(v, path, "normal"), path + ".normal");
+    fl::Bounded at[2], n[2];
+    c.at = vec2(required(v, path, "at"), path + ".at", at);
+    c.normal = vec2(required(v, path, "normal"), path + ".normal", n);
     if (c.normal.x == 0 && c.normal.y == 0) fail(path + ".normal", "zero vector");
-    if (const Value* mu = v.find("mu")) c.mu = nonnegative(*mu, path + ".mu");
+    if (const Value* mu = v.find("mu")) c.mu = nonnegative(*mu, path + ".mu", &c.twin.mu);
+    c.twin.ax = at[0];
+    c.twin.ay = at[1];
+    c.twin.nx = n[0];
+    c.twin.ny = n[1];
+    c.twin.frictional = c.mu != 0;  // decided exactly
+    c.has_twin = true;
     return c;
   }
 

@@ -8,6 +8,7 @@
 
 #include "exact/limits.h"
 #include "exact/rational.h"
+#include "float/closure_twin.h"
 
 namespace wrenchkit {
 
@@ -28,6 +29,10 @@ struct Contact {
   Rational mu;      // point contact: Coulomb coefficient ≥ 0 (0 = frictionless)
   Wrench wrench;    // wrench generator: nonzero
   std::string name;
+  // The same contact as certified doubles for the float twin [FL-4], computed by read_scene from
+  // the digits; `has_twin` false (a scene built in code) means: derive it from the rationals.
+  fl::Bounded_contact twin;
+  bool has_twin = false;
 };
 
 struct Load {

@@ -4,18 +4,14 @@
 
 namespace wrenchkit {
 
-fl::Bounded to_bounded(const Rational& q) {
-  const double v = q.get_d();  // truncation toward zero: |q − v| < ulp(v)
-  if (!std::isfinite(v)) return {v, fl::Bounded::kInf};
-  if (Rational(v) == q) return {v, 0.0};
-  if (std::fabs(v) < fl::Bounded::kUnderflow) return {v, fl::Bounded::kInf};
-  return {v, std::fabs(v) * 0x1p-51};
-}
-
 std::vector<fl::Bounded_contact> to_bounded(const Scene& scene) {
   std::vector<fl::Bounded_contact> out;
   out.reserve(scene.contacts.size());
   for (const Contact& c : scene.contacts) {
+    if (c.has_twin) {  // computed from the digits by read_scene
+      out.push_back(c.twin);
+      continue;
+    }
     fl::Bounded_contact b;
     if (c.kind == Contact::Kind::wrench) {
       b.is_wrench = true;

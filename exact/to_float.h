@@ -10,10 +10,6 @@
 
 namespace wrenchkit {
 
-// |q − v| ≤ e: v is q rounded toward zero; e = 0 if exact, 2^-51·|v| otherwise (one ulp of a
-// normal double is at most 2^-52·|v|), +∞ if q is outside the normal range of doubles.
-fl::Bounded to_bounded(const Rational& q);
-
 std::vector<fl::Bounded_contact> to_bounded(const Scene& scene);
 
 }  // namespace wrenchkit

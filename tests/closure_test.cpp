@@ -357,7 +357,7 @@ TEST(ClosureDifferential, RandomizedConstructionMatchesTheReference) {
       std::vector<Wrench> ws;
       for (const Generator& g : generators(s, reading_of(p))) ws.push_back(g.w);
       const Exact_kernel k(ws);
-      const Dual_cone fast = compute_dual_cone(k), ref = compute_dual_cone_reference(k);
+      const Dual_cone fast = compute_dual_cone_randomized(k), ref = compute_dual_cone_reference(k);
       bool same = fast.shape == ref.shape && fast.rank == ref.rank;
       if (same && (fast.shape == Dual_shape::polygon || fast.shape == Dual_shape::arc)) {
         // Same set of extreme rays: each ray of one is a positive multiple of a ray of the other.
@@ -385,6 +385,41 @@ TEST(ClosureDifferential, RandomizedConstructionMatchesTheReference) {
       }
     }
   }
+}
+
+}  // namespace
+}  // namespace wrenchkit
+
+namespace wrenchkit {
+namespace {
+
+// Above kSmallDualCone generators decide_closure uses the randomized construction: its verdicts
+// (against the reference clipping) and its certificates (through the checker), in every mode.
+TEST(ClosureDifferential, LargeScenesUseTheRandomizedPathWithValidCertificates) {
+  const std::uint64_t seed = test::seed(1234);
+  std::mt19937_64 rng(seed);
+  int large = 0;
+  for (int i = 0; i < 150; ++i) {
+    const std::string text = scene_json(test::random_contacts(rng, 70));
+    const Scene s = read_scene(text, Input_limits{});
+    for (Property p : {Property::force_closure, Property::form_closure}) {
+      std::vector<Wrench> ws;
+      for (const Generator& g : generators(s, reading_of(p))) ws.push_back(g.w);
+      large += ws.size() > kSmallDualCone;
+      const bool ref = compute_dual_cone_reference(Exact_kernel(ws)).force_closure();
+      for (Mode m : {Mode::exact, Mode::hybrid}) {
+        const Closure_answer a = decide_closure(s, p, m);
+        const auto cert = test::checker_accepts(text, certificate_json(a.certificate));
+        if (a.holds != ref || !cert) {
+          ADD_FAILURE() << "seed " << seed << " case " << i << " " << property_name(p) << " " << mode_name(m)
+                        << ": " << a.holds << " vs reference " << ref << "\n" << cert.message() << "\nscene dumped to "
+                        << test::dump_failure(text, "large_" + std::to_string(seed) + "_" + std::to_string(i));
+          return;
+        }
+      }
+    }
+  }
+  EXPECT_GT(large, 100);
 }
 
 }  // namespace

@@ -56,6 +56,15 @@ TEST(Numbers, FastAndGeneralPathsAgreeOnRandomDecimals) {
     want.canonicalize();
     if (neg) want = -want;
     ASSERT_EQ(exact(text, false), want) << text;
+    // The certified double computed from the digits [FL-4] contains the exact value.
+    std::string why;
+    fl::Bounded b;
+    ASSERT_TRUE(parse_rational(text, false, Input_limits{}, why, &b).has_value());
+    ASSERT_TRUE(b.e == fl::Bounded::kInf || abs(want - Rational(b.v)) <= Rational(b.e))
+        << text << ": v = " << b.v << ", e = " << b.e;
+    if (b.e == 0) {
+      ASSERT_EQ(Rational(b.v), want) << text;
+    }
   }
 }
 
