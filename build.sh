@@ -3,6 +3,7 @@
 #   ./build.sh demo    install the Debian packages, build, run `wrenchkit demo`
 #   ./build.sh test    install the Debian packages, build, run the whole test suite (CTest)
 #   ./build.sh build   install and build only
+#   ./build.sh stability   regenerate docs/stability.md (near-degenerate stress report)
 # Environment: BUILD_DIR (default build), JOBS (default: number of cores), CXX (compiler).
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -43,8 +44,14 @@ case "${1:-}" in
     install_packages
     build
     ;;
+  stability)
+    install_packages
+    build
+    "${BUILD_DIR:-build}/fuzz/stress_closure" --cases 400 --report docs > /dev/null
+    echo "build.sh: wrote docs/stability.md and docs/stability.svg"
+    ;;
   *)
-    echo "usage: ./build.sh demo|test|build" >&2
+    echo "usage: ./build.sh demo|test|build|stability" >&2
     exit 2
     ;;
 esac

@@ -56,6 +56,9 @@ inline double up(double e) { return e * Bounded::kInflate + Bounded::kSlack; }
 inline Bounded operator-(const Bounded& a) { return {-a.v, a.e}; }
 
 inline Bounded operator+(const Bounded& a, const Bounded& b) {
+  // Adding an exact zero changes nothing.
+  if (b.v == 0 && b.e == 0) return a;
+  if (a.v == 0 && a.e == 0) return b;
   const double v = a.v + b.v;
   // TwoSum (Knuth): r = (a.v + b.v) − v exactly, for any finite a.v, b.v without overflow.
   const double bb = v - a.v;
@@ -69,6 +72,10 @@ inline Bounded operator+(const Bounded& a, const Bounded& b) {
 inline Bounded operator-(const Bounded& a, const Bounded& b) { return a + (-b); }
 
 inline Bounded operator*(const Bounded& a, const Bounded& b) {
+  // An exact zero factor makes an exact zero product, whatever the other factor's error.
+  if ((a.v == 0 && a.e == 0 && std::isfinite(b.v) && b.e == b.e && b.e < Bounded::kInf) ||
+      (b.v == 0 && b.e == 0 && std::isfinite(a.v) && a.e == a.e && a.e < Bounded::kInf))
+    return {0.0, 0.0};
   const double v = a.v * b.v;
   if (v == 0 && a.v != 0 && b.v != 0) return {v, Bounded::kInf};  // underflow to zero
   // fma gives the exact rounding error of the product when v is normal (guard() covers the rest).

@@ -23,6 +23,7 @@ class Float_kernel {
  public:
   explicit Float_kernel(std::vector<Bounded3> g) : g_(std::move(g)) {
     mag_.reserve(g_.size());
+    err_.reserve(g_.size());
     for (const Bounded3& x : g_) {
       std::array<double, 6> m{};
       for (int c = 0; c < 3; ++c) {
@@ -30,6 +31,7 @@ class Float_kernel {
         m[3 + c] = x[c].e;
       }
       mag_.push_back(m);
+      err_.push_back(x[0].e + x[1].e + x[2].e);
     }
   }
   std::size_t size() const { return g_.size(); }
@@ -55,6 +57,18 @@ class Float_kernel {
   Sign det_sign(std::size_t i, std::size_t j, std::size_t k) const {
     const Sign fast = det_sign_static(i, j, k);
     if (fast != Sign::uncertain) return fast;
+    // det is invariant under cyclic permutations of its rows: expand along the row with the largest
+    // input error, so that the 2×2 cofactors come from the other rows — exact when those rows are
+    // exact, and then an exactly zero cofactor stays a certified zero (e.g. two parallel exact
+    // forces with an inexact third: the cancellation happens inside an exact minor).
+    const double ei = err_[i], ej = err_[j], ek = err_[k];
+    if (ej > ei && ej >= ek) {
+      const std::size_t t = i;
+      i = j, j = k, k = t;
+    } else if (ek > ei && ek > ej) {
+      const std::size_t t = k;
+      k = j, j = i, i = t;
+    }
     const Bounded3& a = g_[i];
     const Bounded3& b = g_[j];
     const Bounded3& c = g_[k];
@@ -94,6 +108,7 @@ class Float_kernel {
  private:
   std::vector<Bounded3> g_;
   std::vector<std::array<double, 6>> mag_;  // |v| and e of each coordinate
+  std::vector<double> err_;                 // total input error of each generator
 };
 
 class Naive_kernel {
