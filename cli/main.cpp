@@ -462,6 +462,7 @@ int dispatch(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   using namespace wrenchkit::cli;
+  std::ios::sync_with_stdio(false);  // buffered iostreams (batch reads and writes millions of lines)
   try {
     return dispatch(argc, argv);
   } catch (const Usage_error& e) {

@@ -90,6 +90,7 @@ class Parser {
     Value v;
     v.type = Type::object;
     std::unordered_set<std::string> seen;  // keys, once the object has 16 members
+    v.members.reserve(4);                   // scene objects are small: one allocation
     ++i_;  // {
     skip_ws();
     if (i_ < s_.size() && s_[i_] == '}') {
@@ -135,6 +136,7 @@ class Parser {
   Value array(std::size_t depth) {
     Value v;
     v.type = Type::array;
+    v.items.reserve(3);  // points and wrenches: one allocation
     ++i_;  // [
     skip_ws();
     if (i_ < s_.size() && s_[i_] == ']') {

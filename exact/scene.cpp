@@ -1,6 +1,7 @@
 #include "exact/scene.h"
 
 #include <initializer_list>
+#include <utility>
 
 #include "exact/input_error.h"
 #include "exact/json.h"
@@ -33,6 +34,7 @@ class Reader {
       if (v->items.size() > limits_.max_contacts)
         fail("contacts", "has " + std::to_string(v->items.size()) + " entries, more than the limit " +
                              std::to_string(limits_.max_contacts) + " (--max-contacts)");
+      s.contacts.reserve(v->items.size());  // no reallocation: Contact's rationals would be copied
       for (std::size_t i = 0; i < v->items.size(); ++i)
         s.contacts.push_back(contact(v->items[i], "contacts[" + std::to_string(i) + "]"));
     }
@@ -95,7 +97,7 @@ class Reader {
         why = "has an exponent beyond ±" + std::to_string(limits_.max_exponent) + " (--max-exponent)";
       fail(path, display(v) + " " + why);
     }
-    return *q;
+    return std::move(*q);
   }
 
   Rational nonnegative(const Value& v, const std::string& path, fl::Bounded* approx = nullptr) const {
@@ -209,6 +211,7 @@ class Reader {
       fail("support.points", "has more entries than the limit " +
                                  std::to_string(limits_.max_contacts) + " (--max-contacts)");
     bool any_force = false;
+    s.points.reserve(pts.items.size());
     for (std::size_t i = 0; i < pts.items.size(); ++i) {
       const std::string path = "support.points[" + std::to_string(i) + "]";
       const Value& p = pts.items[i];
