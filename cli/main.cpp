@@ -16,6 +16,7 @@
 
 #include "cli/demo_scene.h"
 #include "exact/closure.h"
+#include "exact/equilibrium.h"
 #include "exact/input_error.h"
 #include "exact/json.h"
 #include "exact/scene.h"
@@ -32,6 +33,8 @@ const char* kUsage =
     "commands:\n"
     "  closure   force closure of the contacts with their friction, and first-order form\n"
     "            closure of the same contacts read frictionless (Reuleaux), with certificates\n"
+    "  equilibrium  can the contacts, with their friction, balance the scene's load? With a\n"
+    "            certificate either way (the contact forces, or a motion the load drives)\n"
     "  check     wrenchkit check SCENE.json CERT.json: the independent checker (proofs/)\n"
     "            accepts (exit 0) or rejects (exit 1) a certificate\n"
     "  demo      closure of a bundled textbook scene (Mason's Example 3), no file needed\n"
@@ -62,6 +65,19 @@ const char* kClosureHelp =
     "  --max-exponent N          largest |decimal exponent| (default 10000)\n"
     "  --max-file-size BYTES     largest scene file (default 67108864)\n"
     "  --max-contacts N          most contacts (default 100000)\n";
+
+const char* kEquilibriumHelp =
+    "usage: wrenchkit equilibrium [OPTIONS] SCENE.json\n"
+    "\n"
+    "Decides, exactly, whether the contacts with their friction can balance the scene's load\n"
+    "(\"load\": a force at a point, a wrench, or gravity at body.com): whether minus the load is a\n"
+    "possible resultant. Balanced: the certificate gives non-negative multiples of the friction-cone\n"
+    "edges that cancel the load. Not balanced: a twist that every contact allows and that the load\n"
+    "drives with positive power. The independent checker re-verifies it before the answer is printed.\n"
+    "\n"
+    "options:\n"
+    "  --json, --certificate FILE, --max-* (as for closure)\n"
+    "  --mode exact|hybrid    both decide exactly (the float twin of equilibrium is not written yet)\n";
 
 const char* kCheckHelp =
     "usage: wrenchkit check [OPTIONS] SCENE.json CERT.json\n"
@@ -399,6 +415,52 @@ int run_batch(const Options& o) {
   return self_check_failed ? kSelfCheck : (internal_error ? kInternal : kAnswered);
 }
 
+int run_equilibrium(const Options& o, const std::string& scene_text, const std::string& source) {
+  if (o.mode == "float")
+    throw Usage_error("--mode float: equilibrium has no float twin yet; use --mode exact or hybrid");
+  if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
+  if (!o.form_certificate_file.empty()) throw Usage_error("--form-certificate is for closure");
+  const Scene scene = read_scene(scene_text, o.limits, source);
+  const Equilibrium_answer a = decide_equilibrium(scene);
+  const std::string cert = certificate_json(a.certificate);
+  const auto c = wrenchkit_checker::check(scene_text, cert, checker_limits(o.limits));
+  if (c.outcome != wrenchkit_checker::Outcome::accepted)
+    throw Self_check_failure("the independent checker rejected our own certificate: " + c.message +
+                             "\ncertificate: " + cert);
+  if (!o.certificate_file.empty()) write_file(o.certificate_file, cert + "\n");
+  const std::array<Rational, 3> load = {a.load.fx, a.load.fy, a.load.m};
+  if (o.json) {
+    std::cout << "{\"command\": \"equilibrium\", \"name\": " << json::quote(scene.name) << ", \"mode\": \""
+              << o.mode << "\", \"decided_by\": \"exact\", \"balanced\": " << (a.balanced ? "true" : "false")
+              << ", \"load\": [" << json::quote(to_string(load[0])) << ", " << json::quote(to_string(load[1]))
+              << ", " << json::quote(to_string(load[2])) << "], \"generators\": " << a.generators
+              << ", \"certificate_checked\": true, \"certificate\": " << cert << "}\n";
+    return kAnswered;
+  }
+  std::cout << "scene: " << (scene.name.empty() ? source : scene.name) << "\n"
+            << "load: the wrench " << vec_text(load) << " (force, moment about the origin)\n"
+            << "balanced: " << (a.balanced ? "yes" : "no") << "\n    certificate: ";
+  if (a.balanced) {
+    if (a.certificate.combination.empty()) std::cout << "the load is zero";
+    else std::cout << "the contact wrenches";
+    for (const auto& [ref, w] : a.certificate.combination)
+      std::cout << " " << to_string(w) << "·c" << ref.contact << "." << edge_name(ref.edge);
+    if (!a.certificate.combination.empty()) std::cout << " cancel the load exactly";
+  } else {
+    const Twist_reading r = read_twist(a.certificate.twist);
+    std::cout << "the twist " << vec_text(a.certificate.twist)
+              << " has power >= 0 against every contact wrench and > 0 against the load";
+    if (r.label == 'i')
+      std::cout << " (a translation toward direction (" << to_string(r.point[0]) << ", " << to_string(r.point[1]) << ") at infinity)";
+    else
+      std::cout << " (a " << (r.label == '+' ? "counter-clockwise" : "clockwise") << " rotation about ("
+                << to_string(r.point[0]) << ", " << to_string(r.point[1]) << "))";
+    std::cout << ": the load drives a motion the contacts allow";
+  }
+  std::cout << "\ncertificate accepted by the independent checker (exact arithmetic)\n";
+  return kAnswered;
+}
+
 int run_check(const Options& o) {
   if (o.positional.size() != 2) throw Usage_error("check needs SCENE.json and CERT.json");
   if (o.positional[0] == "-" && o.positional[1] == "-")
@@ -438,6 +500,12 @@ int dispatch(int argc, char** argv) {
     const std::string& path = o.positional[0];
     const std::string text = read_input(path, o.limits.max_file_bytes);
     return run_closure(o, text, path == "-" ? "<stdin>" : path, "closure");
+  }
+  if (command == "equilibrium") {
+    if (o.help) return std::cout << kEquilibriumHelp, kAnswered;
+    if (o.positional.size() != 1) throw Usage_error("equilibrium needs exactly one SCENE.json");
+    const std::string& path = o.positional[0];
+    return run_equilibrium(o, read_input(path, o.limits.max_file_bytes), path == "-" ? "<stdin>" : path);
   }
   if (command == "check") {
     if (o.help) return std::cout << kCheckHelp, kAnswered;

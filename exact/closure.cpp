@@ -228,36 +228,37 @@ Twist_reading read_twist(const std::array<Rational, 3>& t) {
   return r;
 }
 
-std::string certificate_json(const Closure_certificate& c) {
+std::string combination_json(const std::vector<std::pair<Generator_ref, Rational>>& terms) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    const auto& [ref, w] = terms[i];
+    s += (i ? ", " : "") + std::string("{\"contact\": ") + std::to_string(ref.contact) + ", \"edge\": \"" +
+         edge_name(ref.edge) + "\", \"weight\": " + json::quote(to_string(w)) + "}";
+  }
+  return s + "]";
+}
+
+std::string twist_json(const std::array<Rational, 3>& t) {
   auto q = [](const Rational& x) { return json::quote(to_string(x)); };
-  auto ref = [](const Generator_ref& g) {
-    return "\"contact\": " + std::to_string(g.contact) + ", \"edge\": \"" + edge_name(g.edge) + "\"";
-  };
+  std::string s = "\"twist\": [" + q(t[0]) + ", " + q(t[1]) + ", " + q(t[2]) + "]";
+  const Twist_reading r = read_twist(t);
+  if (r.label == 'i')
+    s += ", \"reading\": {\"label\": \"infinity\", \"direction\": [";
+  else
+    s += std::string(", \"reading\": {\"label\": \"") + r.label + "\", \"point\": [";
+  return s + q(r.point[0]) + ", " + q(r.point[1]) + "]}";
+}
+
+std::string certificate_json(const Closure_certificate& c) {
   std::string s = "{\"wrenchkit_certificate\": 1, \"property\": \"";
   s += property_name(c.property);
   s += "\", \"holds\": ";
-  if (c.holds) {
-    s += "true, \"combination\": [";
-    for (std::size_t i = 0; i < c.combination.size(); ++i) {
-      if (i) s += ", ";
-      s += "{" + ref(c.combination[i].first) + ", \"weight\": " + q(c.combination[i].second) + "}";
-    }
-    s += "], \"independent\": [";
-    for (int i = 0; i < 3; ++i) {
-      if (i) s += ", ";
-      s += "{" + ref(c.independent[i]) + "}";
-    }
-    s += "]}";
-  } else {
-    s += "false, \"twist\": [" + q(c.twist[0]) + ", " + q(c.twist[1]) + ", " + q(c.twist[2]) + "]";
-    const Twist_reading r = read_twist(c.twist);
-    if (r.label == 'i')
-      s += ", \"reading\": {\"label\": \"infinity\", \"direction\": [";
-    else
-      s += std::string(", \"reading\": {\"label\": \"") + r.label + "\", \"point\": [";
-    s += q(r.point[0]) + ", " + q(r.point[1]) + "]}}";
-  }
-  return s;
+  if (!c.holds) return s + "false, " + twist_json(c.twist) + "}";
+  s += "true, \"combination\": " + combination_json(c.combination) + ", \"independent\": [";
+  for (int i = 0; i < 3; ++i)
+    s += (i ? ", " : "") + std::string("{\"contact\": ") + std::to_string(c.independent[i].contact) +
+         ", \"edge\": \"" + edge_name(c.independent[i].edge) + "\"}";
+  return s + "]}";
 }
 
 }  // namespace wrenchkit

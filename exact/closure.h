@@ -75,6 +75,11 @@ Closure_answer decide_closure(const Scene& scene, Property property, Mode mode =
 // direction at infinity.
 std::string certificate_json(const Closure_certificate& c);
 
+// JSON fragments shared by the certificate writers: `[{"contact": i, "edge": E, "weight": "p/q"}, …]`
+// and `"twist": [vx, vy, w], "reading": {…}`.
+std::string combination_json(const std::vector<std::pair<Generator_ref, Rational>>& terms);
+std::string twist_json(const std::array<Rational, 3>& twist);
+
 // The twist read as a point of the two-sided plane, P(t) = (−vy, vx, w) (theory.md §2.2):
 // label '+' or '-' with the rotation centre, or 'i' (infinity) with a primitive direction
 // ((0, 0) for the zero twist, which is no certificate).

@@ -151,7 +151,8 @@ TEST(CheckerBadScene, PinnedMessages) {
   EXPECT_EQ(scene_error(one(R"({"at": [0,0], "at": [0,0], "normal": [0,1]})")), R"(contacts[0]: duplicate key "at")");
   EXPECT_EQ(scene_error(R"({"wrenchkit": 1, "wrenchkit": 1})"), R"(duplicate key "wrenchkit")");
   EXPECT_EQ(scene_error(R"({"wrenchkit": 1, "body": {"com": [0, 0], "com": [1, 1]}})"), R"(body: duplicate key "com")");
-  EXPECT_EQ(scene_error(R"({"wrenchkit": 1, "body": {"a b": {"x": 1, "x": 2}}})"), R"(body["a b"]: duplicate key "x")");
+  EXPECT_EQ(scene_error(R"({"wrenchkit": 1, "support": {"a b": {"x": 1, "x": 2}}})"),
+            R"(support["a b"]: duplicate key "x")");
   EXPECT_EQ(scene_error(R"({"wrenchkit": 2})"), "wrenchkit: expected 1 (the scene format version)");
   EXPECT_EQ(scene_error(R"({"contacts": []})"), R"(missing required key "wrenchkit")");
   EXPECT_EQ(scene_error(R"({"wrenchkit": 1, "contacts": {}})"), "contacts: expected an array");
@@ -217,8 +218,8 @@ TEST(CheckerBadScene, NumberGrammar) {
 TEST(CheckerBadScene, JsonStrictness) {
   EXPECT_EQ(scene_error(""), "1:1: invalid JSON: unexpected end of input");
   EXPECT_EQ(scene_error("{\"wrenchkit\": 1} x"), "1:18: invalid JSON: unexpected data after the JSON value");
-  EXPECT_EQ(scene_error("{\"wrenchkit\": 1,\n \"body\": {\"a\": [1,]}}"),
-            "2:19: invalid JSON: unexpected character ']'");
+  EXPECT_EQ(scene_error("{\"wrenchkit\": 1,\n \"support\": {\"a\": [1,]}}"),
+            "2:22: invalid JSON: unexpected character ']'");
   EXPECT_EQ(scene_error("{\"wrenchkit\": 1,}"), "1:17: invalid JSON: expected a string as object key");
   EXPECT_EQ(scene_error("{\"wrenchkit\" 1}"), "1:14: invalid JSON: expected ':' after an object key");
   EXPECT_EQ(scene_error("{\"wrenchkit\": 1 \"name\": \"x\"}"),
@@ -236,17 +237,17 @@ TEST(CheckerBadScene, JsonStrictness) {
   EXPECT_EQ(scene_error(named("a\tb")), "1:28: invalid JSON: unescaped control character in a string");
   EXPECT_NE(scene_error(named("\\x")).find("invalid escape"), std::string::npos);
   EXPECT_NE(scene_error(named("\\u12G4")).find("four hex digits"), std::string::npos);
-  EXPECT_NE(scene_error("{\"wrenchkit\": 1, \"body\": {\"a\": tru}}").find("invalid literal"), std::string::npos);
-  EXPECT_NE(scene_error("{\"wrenchkit\": 1, \"body\": {\"a\": nul}}").find("invalid literal"), std::string::npos);
+  EXPECT_NE(scene_error("{\"wrenchkit\": 1, \"support\": {\"a\": tru}}").find("invalid literal"), std::string::npos);
+  EXPECT_NE(scene_error("{\"wrenchkit\": 1, \"support\": {\"a\": nul}}").find("invalid literal"), std::string::npos);
 }
 
 TEST(CheckerBadScene, Depth) {
-  // top-level object (1) + body (2) + n arrays
+  // top-level object (1) + support (2) + n arrays (support is not interpreted: any JSON inside)
   auto nested = [](std::size_t n) {
-    return "{\"wrenchkit\": 1, \"body\": {\"a\": " + std::string(n, '[') + std::string(n, ']') + "}}";
+    return "{\"wrenchkit\": 1, \"support\": {\"a\": " + std::string(n, '[') + std::string(n, ']') + "}}";
   };
   EXPECT_NE(check(nested(62), "{}").outcome, Outcome::bad_scene);
-  EXPECT_EQ(scene_error(nested(63)), "1:94: invalid JSON: nested deeper than 64 levels");
+  EXPECT_EQ(scene_error(nested(63)), "1:97: invalid JSON: nested deeper than 64 levels");
   EXPECT_NE(scene_error(nested(1000000)).find("nested deeper than 64 levels"), std::string::npos);
   Limits deep;  // the reader does not recurse: a million levels do not overflow the stack
   deep.max_depth = 2000000;
@@ -371,7 +372,7 @@ TEST(CheckerMalformed, KeysAndTypes) {
               "wrenchkit_certificate: expected the integer 1");
   EXPECT_EQ(
       rejection(block_corner, R"({"wrenchkit_certificate": 1, "property": "closure", "holds": false, )" + twist + "}"),
-      R"(property: expected "force_closure" or "form_closure")");
+      R"(property: expected "force_closure", "form_closure" or "equilibrium")");
   EXPECT_EQ(rejection(block_corner,
                       R"({"wrenchkit_certificate": 1, "property": "force_closure", "holds": "false", )" + twist + "}"),
             "holds: expected true or false");
@@ -478,6 +479,219 @@ TEST(CheckerConditions, PinnedMessages) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Equilibrium (certificate-format.md §3.3): the scene's load, and the certificate's conditions
+
+// `scene` (a JSON object) with `members` added at its end.
+std::string plus(const std::string& scene, const std::string& members) {
+  return scene.substr(0, scene.rfind('}')) + ", " + members + "}";
+}
+const std::string equilibrium_true = R"({"wrenchkit_certificate": 1, "property": "equilibrium", "holds": true, )";
+const std::string equilibrium_false = R"({"wrenchkit_certificate": 1, "property": "equilibrium", "holds": false, )";
+
+TEST(CheckerLoad, BadLoadsAndBodies) {
+  const std::string v1 = R"({"wrenchkit": 1})";
+  const std::string com = R"("body": {"com": [0, 0]})";
+  // the four required ones
+  EXPECT_EQ(scene_error(plus(v1, R"("load": {"x": 1})")), R"(load: unknown key "x")");
+  EXPECT_EQ(scene_error(plus(v1, R"("load": {"gravity": 1})")),
+            "load.gravity: needs body.com (the point where the weight acts)");
+  EXPECT_EQ(scene_error(plus(v1, com + R"(, "load": {"gravity": 0})")),
+            R"(load.gravity: "0" is not positive (a weight must be > 0))");
+  EXPECT_EQ(scene_error(plus(v1, R"("load": [0, -1])")),
+            R"(load: expected an object {"force", "at"}, {"wrench"} or {"gravity"})");
+  // more of them
+  EXPECT_EQ(scene_error(plus(v1, R"("body": {"outline": []}, "load": {"gravity": 1})")),
+            "load.gravity: needs body.com (the point where the weight acts)");
+  EXPECT_EQ(scene_error(plus(v1, R"("load": {"gravity": "0/5"})")),
+            R"(load.gravity: "0/5" is not positive (a weight must be > 0))");
+  EXPECT_EQ(scene_error(plus(v1, com + R"(, "load": {"gravity": "-1/2"})")),
+            R"(load.gravity: "-1/2" is not positive (a weight must be > 0))");
+  EXPECT_EQ(scene_error(plus(v1, com + R"(, "load": {"gravity": 1, "x": 1})")), R"(load: unknown key "x")");
+  EXPECT_EQ(scene_error(plus(v1, R"("load": "gravity")")),
+            R"(load: expected an object {"force", "at"}, {"wrench"} or {"gravity"})");
+  EXPECT_EQ(scene_error(plus(v1, R"("load": {})")),
+            R"(load: expected one of {"force", "at"}, {"wrench"} or {"gravity"})");
+  // mixed forms: gravity, else wrench, else force and at (as the engine reads them); the rest is unknown
+  EXPECT_EQ(scene_error(plus(v1, com + R"(, "load": {"wrench": [0, 0, 1], "gravity": 1})")),
+            R"(load: unknown key "wrench")");
+  EXPECT_EQ(scene_error(plus(v1, R"("load": {"at": [0, 0], "wrench": [0, 0, 1]})")), R"(load: unknown key "at")");
+  EXPECT_EQ(scene_error(plus(v1, R"("load": {"force": [0, 1]})")), R"(load: missing required key "at")");
+  EXPECT_EQ(scene_error(plus(v1, R"("load": {"at": [0, 1]})")), R"(load: missing required key "force")");
+  EXPECT_EQ(scene_error(plus(v1, R"("load": {"gravity": 1, "gravity": 2})")), R"(load: duplicate key "gravity")");
+  // numbers: the scene grammar and limits
+  EXPECT_EQ(scene_error(plus(v1, R"("load": {"wrench": [0, 0]})")), "load.wrench: expected an array of 3 numbers");
+  EXPECT_EQ(scene_error(plus(v1, R"("load": {"force": [0, "x"], "at": [0, 0]})")),
+            R"(load.force[1]: "x" is not a number)");
+  EXPECT_EQ(scene_error(plus(v1, R"("load": {"force": [0, 1], "at": [0, null]})")),
+            "load.at[1]: expected a number (a JSON number or a number string)");
+  EXPECT_EQ(scene_error(plus(v1, com + R"(, "load": {"gravity": "1e10001"})")),
+            "load.gravity: exponent 10001 out of range (limit 10000)");
+  EXPECT_EQ(scene_error(plus(v1, R"("load": {"gravity": 1}, "body": {"com": ["1/0", 0]})")),
+            R"(body.com[0]: "1/0" has a zero denominator)");
+  // body: outline (not interpreted beyond its type) and com; nothing else
+  EXPECT_EQ(scene_error(plus(v1, R"("body": {"mass": 1})")), R"(body: unknown key "mass")");
+  EXPECT_EQ(scene_error(plus(v1, R"("body": {"com": [0, 0, 0]})")), "body.com: expected an array of 2 numbers");
+  EXPECT_EQ(scene_error(plus(v1, R"("body": {"outline": {}})")), "body.outline: expected an array of points");
+  // valid loads, in any member order (body after load)
+  for (const char* ok : {R"("load": {"force": [0, -1], "at": ["1/2", 0.5]})",
+                         R"("load": {"at": [0, 0], "force": [0, 0]})", R"("load": {"wrench": [0, 0, 0]})",
+                         R"("load": {"gravity": "1e-10000"}, "body": {"com": [0, 0]})",
+                         R"("body": {"outline": [[0, 0], [1, 0], [0, 1]], "com": [0, 0]}, "load": {"gravity": 1})"})
+    EXPECT_NE(check(plus(v1, ok), "{}").outcome, Outcome::bad_scene) << ok;
+}
+
+TEST(CheckerLoad, ClosureIgnoresTheLoad) {
+  // force_closure / form_closure certificates are checked exactly as without a load
+  const std::string negative = negative_head + R"("twist": ["0", "1", "0"]})";
+  const std::string positive = positive_head + R"("combination": [{"contact": 0, "edge": "normal", "weight": "1"},
+      {"contact": 1, "edge": "normal", "weight": "1"}, {"contact": 2, "edge": "normal", "weight": "1"},
+      {"contact": 3, "edge": "normal", "weight": "1"}], )" + square_independent + "}";
+  for (const char* load : {R"("load": {"wrench": [1, 2, 3]})", R"("load": {"gravity": 5}, "body": {"com": [9, 9]})"}) {
+    EXPECT_EQ(check(plus(block_corner, load), negative).outcome, Outcome::accepted) << load;
+    EXPECT_EQ(check(plus(square, load), positive).outcome, Outcome::accepted) << load;
+    EXPECT_EQ(rejection(plus(block_corner, load), negative_head + R"("twist": ["0", "-1", "0"]})"),
+              "twist: power -1 against contacts[0] edge normal");
+  }
+}
+
+TEST(CheckerEquilibrium, TheLoadWrench) {
+  // Four wrench generators that positively span R^3: -w_ext = (0, 2, 6) = 2 g1 + 6 g2 for each of these
+  // loads, all w_ext = (0, -2, -6): a force (0,-2) at (3,5) has moment 3*(-2) - 5*0 = -6; gravity 2
+  // at com (3,7) is (0, -2, -2*3) (com_y plays no part); and the wrench itself.
+  const std::string gens =
+      R"({"wrenchkit": 1, "contacts": [{"wrench": [1, 0, 0]}, {"wrench": [0, 1, 0]}, {"wrench": [0, 0, 1]},
+          {"wrench": [-1, -1, -1]}]})";
+  auto cert = [](const std::string& w1, const std::string& w2) {
+    return equilibrium_true + R"("combination": [{"contact": 1, "edge": "wrench", "weight": ")" + w1 +
+           R"("}, {"contact": 2, "edge": "wrench", "weight": ")" + w2 + R"("}]})";
+  };
+  for (const char* load : {R"("load": {"force": [0, "-2"], "at": [3, "5.0"]})",
+                           R"("load": {"at": [3, 5], "force": [0, -2]})",
+                           R"("load": {"gravity": "2"}, "body": {"com": ["3", 7]})",
+                           R"("body": {"com": ["30e-1", -7]}, "load": {"gravity": 2})",
+                           R"("load": {"wrench": [0, -2, "-6"]})"}) {
+    const std::string scene = plus(gens, load);
+    EXPECT_EQ(check(scene, cert("2", "6")).outcome, Outcome::accepted) << load;
+    EXPECT_EQ(check(scene, cert("4/2", "12/2")).outcome, Outcome::accepted) << load;
+    EXPECT_EQ(rejection(scene, cert("2", "-6")), R"(combination[1].weight: "-6" is not strictly positive)") << load;
+    EXPECT_EQ(rejection(scene, cert("2", "5")),
+              "combination: the weighted sum of the generators plus the load is (0, 0, -1), not (0, 0, 0)")
+        << load;
+    EXPECT_EQ(rejection(scene, cert("20", "60")),
+              "combination: the weighted sum of the generators plus the load is (0, 18, 54), not (0, 0, 0)")
+        << load;
+  }
+  // gravity acts at com, not at the origin: with com (0, 7) the load is (0, -2, 0)
+  EXPECT_EQ(rejection(plus(gens, R"("load": {"gravity": 2}, "body": {"com": [0, 7]})"), cert("2", "6")),
+            "combination: the weighted sum of the generators plus the load is (0, 0, 6), not (0, 0, 0)");
+}
+
+TEST(CheckerEquilibrium, EdgeCases) {
+  const std::string empty = equilibrium_true + R"("combination": []})";
+  // an empty combination balances exactly the zero load
+  EXPECT_EQ(check(R"({"wrenchkit": 1, "load": {"wrench": [0, 0, 0]}})", empty).outcome, Outcome::accepted);
+  EXPECT_EQ(check(plus(block_corner, R"("load": {"force": [0, 0], "at": [7, 7]})"), empty).outcome, Outcome::accepted);
+  EXPECT_EQ(rejection(plus(block_corner, R"("load": {"force": [0, -1], "at": ["1/2", "1/2"]})"), empty),
+            "combination: the weighted sum of the generators plus the load is (0, -1, -1/2), not (0, 0, 0)");
+  EXPECT_EQ(rejection(R"({"wrenchkit": 1, "load": {"wrench": [0, 0, "1e-10000"]}})", empty),
+            "combination: the weighted sum of the generators plus the load is "
+            "(0, 0, (a rational of about 10002 digits)), not (0, 0, 0)");
+  // "property" may come after an empty combination; other properties still need a non-empty one
+  EXPECT_EQ(check(R"({"wrenchkit": 1, "load": {"wrench": [0, 0, 0]}})",
+                  R"({"combination": [], "wrenchkit_certificate": 1, "holds": true, "property": "equilibrium"})")
+                .outcome,
+            Outcome::accepted);
+  const std::string non_empty = R"(combination: expected a non-empty array of {"contact", "edge", "weight"})";
+  EXPECT_EQ(rejection(square, R"({"combination": [], "wrenchkit_certificate": 1, "holds": true,
+                                  "property": "form_closure", )" + square_independent + "}"),
+            non_empty);
+  EXPECT_EQ(rejection(square, R"({"wrenchkit_certificate": 1, "holds": true, "combination": []})"), non_empty);
+  EXPECT_EQ(rejection(square, positive_head + R"("combination": [], )" + square_independent + "}"), non_empty);
+  EXPECT_EQ(rejection(square, equilibrium_true + R"("combination": {}})"),
+            R"(combination: expected an array of {"contact", "edge", "weight"})");
+
+  // holds = false: the twist must drive the load with positive power
+  const std::string frictionless = plus(block_corner, R"("load": {"wrench": [0, 0, 1]})");
+  EXPECT_EQ(rejection(frictionless, equilibrium_false + R"("twist": ["0", "1", "0"]})"),
+            "twist: power against the load is 0, not > 0");  // powers 1, 1, 0, 0 against the contacts
+  const std::string gravity = plus(block_corner, R"("load": {"gravity": 1}, "body": {"com": ["1/2", "1/2"]})");
+  EXPECT_EQ(rejection(gravity, equilibrium_false + R"("twist": ["0", "1/2", "0"]})"),
+            "twist: power against the load is -1/2, not > 0");
+  const std::string lifted = plus(block_corner, R"("load": {"force": [0, 1], "at": ["1/2", "1/2"]})");
+  EXPECT_EQ(check(lifted, equilibrium_false + R"("twist": ["0", "1/2", "0"]})").outcome, Outcome::accepted);
+  const std::string up = equilibrium_false + R"("twist": ["0", "1", "0"], "reading": {"label": "infinity", )";
+  EXPECT_EQ(check(lifted, up + R"("direction": ["-1", "0"]}})").outcome, Outcome::accepted);
+  EXPECT_EQ(rejection(lifted, up + R"("direction": ["1", "0"]}})"),
+            "reading.direction: (1, 0) is not a positive multiple of (-vy, vx) = (-1, 0)");
+  EXPECT_EQ(rejection(lifted, equilibrium_false + R"("twist": ["0", "0", "0"]})"),
+            "twist: the zero twist proves nothing");
+  // a generator with negative power is reported before the load
+  EXPECT_EQ(rejection(lifted, equilibrium_false + R"("twist": ["0", "-1", "0"]})"),
+            "twist: power -1 against contacts[0] edge normal");
+
+  // no load: no equilibrium claim, either way
+  EXPECT_EQ(rejection(square, equilibrium_true + R"("combination": [{"contact": 0, "edge": "normal", "weight": "1"},
+      {"contact": 1, "edge": "normal", "weight": "1"}, {"contact": 2, "edge": "normal", "weight": "1"},
+      {"contact": 3, "edge": "normal", "weight": "1"}]})"),
+            R"(property: "equilibrium" needs a scene with a load)");
+  EXPECT_EQ(rejection(block_corner, equilibrium_false + R"("twist": ["0", "1", "0"]})"),
+            R"(property: "equilibrium" needs a scene with a load)");
+  EXPECT_EQ(rejection(R"({"wrenchkit": 1})", empty), R"(property: "equilibrium" needs a scene with a load)");
+
+  // keys
+  const std::string three = R"("independent": [{"contact": 0, "edge": "normal"}, {"contact": 1, "edge": "normal"},
+      {"contact": 2, "edge": "normal"}])";
+  EXPECT_EQ(rejection(gravity, equilibrium_true + R"("combination": [], )" + three + "}"),
+            R"(key "independent" is not allowed when "property" is "equilibrium")");
+  EXPECT_EQ(rejection(gravity, equilibrium_false + R"("twist": ["0", "1", "0"], )" + three + "}"),
+            R"(key "independent" is not allowed when "property" is "equilibrium")");
+  EXPECT_EQ(rejection(gravity, equilibrium_true + R"("twist": ["0", "1", "0"], "combination": []})"),
+            R"(key "twist" is not allowed when "holds" is true)");
+  EXPECT_EQ(rejection(gravity,
+                      equilibrium_true + R"("combination": [], "reading": {"label": "+", "point": ["0", "0"]}})"),
+            R"(key "reading" is not allowed when "holds" is true)");
+  EXPECT_EQ(rejection(gravity, equilibrium_false + R"("twist": ["0", "1", "0"], "combination": []})"),
+            R"(key "combination" is not allowed when "holds" is false)");
+  EXPECT_EQ(rejection(gravity, equilibrium_true + R"("reading": {"label": "+", "point": ["0", "0"]}})"),
+            R"(missing required key "combination")");
+  EXPECT_EQ(rejection(gravity, equilibrium_false + R"("combination": []})"), R"(missing required key "twist")");
+
+  // the friction reading, references and duplicates as in §3.1
+  const std::string rough = R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [0, 1], "mu": 1}],
+      "load": {"force": [0, -2], "at": [0, 0]}})";  // left (-1,1,0), right (1,1,0): -w_ext = left + right
+  EXPECT_EQ(check(rough, equilibrium_true + R"("combination": [{"contact": 0, "edge": "left", "weight": "1"},
+      {"contact": 0, "edge": "right", "weight": "1"}]})").outcome,
+            Outcome::accepted);
+  EXPECT_EQ(rejection(rough, equilibrium_true + R"("combination": [{"contact": 0, "edge": "normal", "weight": "2"}]})"),
+            R"(combination[0].edge: contacts[0] has no edge "normal" under the friction reading )"
+            R"((it has "left" or "right"))");
+  EXPECT_EQ(rejection(rough, equilibrium_true + R"("combination": [{"contact": 0, "edge": "left", "weight": "1/2"},
+      {"contact": 0, "edge": "right", "weight": "1"}, {"contact": 0, "edge": "left", "weight": "1/2"}]})"),
+            "combination[2]: contacts[0] edge left appears twice (also at combination[0])");
+  EXPECT_EQ(rejection(rough, equilibrium_true + R"("combination": [{"contact": 1, "edge": "left", "weight": "1"}]})"),
+            "combination[0].contact: index 1 is out of range (the scene has 1 contacts)");
+  EXPECT_EQ(rejection(rough, equilibrium_true + R"("combination": [{"contact": 0, "edge": "left", "weight": "0"},
+      {"contact": 0, "edge": "right", "weight": "1"}]})"),
+            R"(combination[0].weight: "0" is not strictly positive)");
+}
+
+TEST(CheckerExamples, EquilibriumExamples) {
+  // the block in a corner of theory.md §9 under its loads, and the invalid certificates of the list
+  int valid = 0, invalid = 0;
+  for (const Example& e : load_examples(".valid.json")) valid += e.cert.find(R"("equilibrium")") != std::string::npos;
+  for (const Example& e : load_examples(".invalid.json"))
+    invalid += e.cert.find(R"("equilibrium")") != std::string::npos;
+  EXPECT_GE(valid, 8);
+  EXPECT_GE(invalid, 7);
+  for (const char* f : {"block_corner_mu_1_2_gravity.equilibrium.valid.json",
+                        "block_corner_mu_1_2_push.equilibrium.valid.json",
+                        "block_corner_mu_1_2_pull.not_balanced_translation.valid.json",
+                        "block_corner_mu_1_2_torque.zero_power_against_load.invalid.json",
+                        "square_crossed_couples.equilibrium_without_load.invalid.json"})
+    EXPECT_TRUE(fs::exists(examples / f)) << f;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Mutations of every valid certificate
 
 // Replaces the text of the n-th match of `re`'s first group in `s`.
@@ -500,10 +714,12 @@ const std::regex twist_re(R"re("twist": \[("[^"]*", "[^"]*", "[^"]*")\])re");
 const std::regex component_re(R"re("([^"]*)")re");
 
 TEST(CheckerMutations, PositiveCertificates) {
-  // Sum_k l_k g_k = 0 and every generator is nonzero (normals and friction edges n +- mu rot90(n) are
-  // nonzero, and so are wrench generators), so changing one weight by d != 0 leaves the sum d g_k != 0:
-  // every single-weight change is invalid. Scaling all weights by 10 keeps the certificate valid.
-  int tried = 0;
+  // Sum_k l_k g_k (+ w_ext) = 0 and every generator is nonzero (normals and friction edges
+  // n +- mu rot90(n) are nonzero, and so are wrench generators), so changing one weight by d != 0
+  // leaves the sum d g_k != 0: every single-weight change is invalid. Scaling all weights by 10 keeps a
+  // closure certificate valid; an equilibrium certificate's sum becomes -9 w_ext, not zero (every
+  // example's load is nonzero), so it is rejected: the load is part of the sum.
+  int tried = 0, equilibria = 0;
   for (const Example& e : load_examples(".valid.json")) {
     const auto count = static_cast<std::size_t>(
         std::distance(std::sregex_iterator(e.cert.begin(), e.cert.end(), weight_re), std::sregex_iterator()));
@@ -519,11 +735,16 @@ TEST(CheckerMutations, PositiveCertificates) {
       }
       all10 = replace_group(all10, weight_re, k, times10(weight));
     }
-    if (count > 0) {
+    if (count > 0 && e.cert.find(R"("property": "equilibrium")") != std::string::npos) {
+      ++equilibria;
+      const std::string prefix = "combination: the weighted sum of the generators plus the load is ";
+      EXPECT_EQ(check(e.scene, all10).message.rfind(prefix, 0), 0u) << e.file << " all weights x10";
+    } else if (count > 0) {
       EXPECT_EQ(check(e.scene, all10).outcome, Outcome::accepted) << e.file << " all weights x10";
     }
   }
   EXPECT_GE(tried, 100);
+  EXPECT_GE(equilibria, 5);
 }
 
 TEST(CheckerMutations, NegativeCertificates) {

@@ -267,6 +267,27 @@ TEST(Cli, AFailedSelfCheckExitsFourAndWritesNothing) {
   EXPECT_NE(b.out.find("\"exit_code\": 4"), std::string::npos) << b.out;
 }
 
+TEST(Cli, EquilibriumAnswersWithACheckedCertificate) {
+  const std::string dir = test::source_dir() + "/tests/golden/equilibrium/";
+  const std::string cert = (scratch() / "eq.json").string();
+  fs::remove(cert);
+  const Cli_result yes = run("equilibrium --json --certificate '" + cert + "' '" + dir + "ladder_mu_1_7_gravity.scene.json'");
+  ASSERT_EQ(yes.code, 0) << yes.err;
+  EXPECT_NE(yes.out.find("\"balanced\": true"), std::string::npos) << yes.out;
+  EXPECT_NE(yes.out.find("\"load\": [\"0\", \"-1\", \"1/2\"]"), std::string::npos) << yes.out;
+  EXPECT_EQ(run("check '" + dir + "ladder_mu_1_7_gravity.scene.json' '" + cert + "'").code, 0);
+  // The same certificate does not balance the ladder with less friction.
+  EXPECT_EQ(run("check '" + dir + "ladder_mu_1_8_gravity.scene.json' '" + cert + "'").code, 1);
+  const Cli_result no = run("equilibrium '" + dir + "block_corner_mu_1_2_pull_right_at_0_half.scene.json'");
+  EXPECT_EQ(no.code, 0) << no.err;
+  EXPECT_NE(no.out.find("balanced: no"), std::string::npos) << no.out;
+  const Cli_result none = run("equilibrium '" + golden("square_crossed_couples") + "'");
+  EXPECT_EQ(none.code, 2);
+  EXPECT_NE(none.err.find("load: the scene has no load"), std::string::npos) << none.err;
+  EXPECT_EQ(run("equilibrium --mode float '" + dir + "ladder_mu_1_7_gravity.scene.json'").code, 2);
+  EXPECT_EQ(run("equilibrium --help").code, 0);
+}
+
 TEST(Cli, LimitsCanBeRaised) {
   const std::string s = write("long.json", R"({"wrenchkit": 1, "contacts": [{"at": [0,)" + std::string(10001, '1') +
                                                R"(], "normal": [0,1]}]})");

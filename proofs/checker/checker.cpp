@@ -1,5 +1,6 @@
-// proofs/checker/checker.cpp - certificate format v1: reading the scene, recomputing its generators,
-// and the conditions of proofs/certificate-format.md §3.1 (holds = true) and §3.2 (holds = false).
+// proofs/checker/checker.cpp - certificate format v1: reading the scene, recomputing its generators
+// and its load, and the conditions of proofs/certificate-format.md §3.1 (holds = true), §3.2
+// (holds = false) and §3.3 (equilibrium).
 #include "proofs/checker/checker.h"
 
 #include <gmpxx.h>
@@ -220,13 +221,97 @@ Contact read_contact(Reader& r, const Limits& lim) {
   return {false, {at[0], at[1], normal[0], normal[1], mu}};
 }
 
-// The top-level scene object. body, load and support are not used by the checker: only their type
-// (object) and their JSON well-formedness are checked.
-std::vector<Contact> read_scene(Reader& r, const Limits& lim) {
+// n numbers, read exactly into out[0..n).
+void read_vector(Reader& r, const Limits& lim, std::size_t n, Q* out) {
+  read_fixed(r, n, "an array of " + std::to_string(n) + " numbers",
+             [&](std::size_t k) { out[k] = read_number(r, lim); });
+}
+
+// {"outline"?: [points], "com"?: [x, y]}. Only com is used (by a gravity load); outline must be an
+// array, its points are not interpreted (the checker draws nothing).
+void read_body(Reader& r, const Limits& lim, bool& has_com, Q (&com)[2]) {
+  if (r.peek() != Kind::object) r.fail("expected an object");
+  r.begin_object();
+  std::string key;
+  while (r.next_key(key)) {
+    if (key == "outline") {
+      if (r.peek() != Kind::array) r.fail("expected an array of points");
+      r.skip();
+    } else if (key == "com") {
+      read_vector(r, lim, 2, com);
+      has_com = true;
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+}
+
+// The scene's load as written; its wrench w_ext is computed once the whole scene is read (gravity
+// acts at body.com, and "body" may come after "load").
+struct Load {
+  enum class Form { none, force, wrench, gravity } form = Form::none;
+  Q force[2], at[2], wrench[3], weight;
+};
+
+// Exactly one of {"force": [fx, fy], "at": [x, y]}, {"wrench": [fx, fy, m]}, {"gravity": w} with w > 0.
+// Which form is meant is decided as the engine does (gravity, else wrench, else force/at); any other
+// key, including one of another form, is an unknown key.
+Load read_load(Reader& r, const Limits& lim) {
+  const char* const forms = "{\"force\", \"at\"}, {\"wrench\"} or {\"gravity\"}";
+  if (r.peek() != Kind::object) r.fail(std::string("expected an object ") + forms);
+  r.begin_object();
+  Load load;
+  std::vector<std::string> keys;  // in the order written
+  std::string key;
+  while (r.next_key(key)) {
+    keys.push_back(key);
+    if (key == "force") {
+      read_vector(r, lim, 2, load.force);
+    } else if (key == "at") {
+      read_vector(r, lim, 2, load.at);
+    } else if (key == "wrench") {
+      read_vector(r, lim, 3, load.wrench);
+    } else if (key == "gravity") {
+      std::string text;
+      load.weight = read_number(r, lim, &text);
+      if (load.weight <= 0) r.fail(quote(text) + " is not positive (a weight must be > 0)");
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  // The object is closed: r.fail() now names "load" itself.
+  auto has = [&keys](const char* k) { return std::find(keys.begin(), keys.end(), k) != keys.end(); };
+  std::set<std::string> form;  // the keys of the form meant
+  if (has("gravity"))
+    load.form = Load::Form::gravity, form = {"gravity"};
+  else if (has("wrench"))
+    load.form = Load::Form::wrench, form = {"wrench"};
+  else if (has("force") || has("at"))
+    load.form = Load::Form::force, form = {"force", "at"};
+  else
+    r.fail(std::string("expected one of ") + forms);
+  for (const std::string& k : keys)
+    if (!form.count(k)) r.fail("unknown key " + quote(k));
+  for (const std::string& k : form)
+    if (!has(k.c_str())) r.fail("missing required key " + quote(k));
+  return load;
+}
+
+struct Scene {
   std::vector<Contact> contacts;
+  bool has_load = false;
+  Wrench load;  // w_ext (certificate-format.md §3.3), if has_load
+};
+
+// The top-level scene object. support is not used by the checker: only its type (object) and its
+// JSON well-formedness are checked. body is read for body.com, load for w_ext.
+Scene read_scene(Reader& r, const Limits& lim) {
+  Scene scene;
   if (r.peek() != Kind::object) r.fail("a scene must be a JSON object");
   r.begin_object();
-  bool has_version = false;
+  bool has_version = false, has_com = false;
+  Q com[2];
+  Load load;
   std::string key;
   while (r.next_key(key)) {
     if (key == "wrenchkit") {
@@ -234,23 +319,40 @@ std::vector<Contact> read_scene(Reader& r, const Limits& lim) {
       has_version = true;
     } else if (key == "name") {
       read_string(r);
-    } else if (key == "body" || key == "load" || key == "support") {
+    } else if (key == "body") {
+      read_body(r, lim, has_com, com);
+    } else if (key == "load") {
+      load = read_load(r, lim);
+    } else if (key == "support") {
       if (r.peek() != Kind::object) r.fail("expected an object");
       r.skip();
     } else if (key == "contacts") {
       if (r.peek() != Kind::array) r.fail("expected an array");
       r.begin_array();
       while (r.next_item()) {
-        if (contacts.size() == lim.max_contacts)
+        if (scene.contacts.size() == lim.max_contacts)
           throw Failure{"contacts: more than " + std::to_string(lim.max_contacts) + " contacts"};
-        contacts.push_back(read_contact(r, lim));
+        scene.contacts.push_back(read_contact(r, lim));
       }
     } else {
       r.fail("unknown key " + quote(key), true);
     }
   }
   if (!has_version) r.fail("missing required key \"wrenchkit\"");
-  return contacts;
+  // w_ext (theory.md §9): W(p, f) = (fx, fy, x*fy - y*fx); gravity w at com is W(com, (0, -w)) = (0, -w, -w*com_x)
+  scene.has_load = load.form != Load::Form::none;
+  switch (load.form) {
+    case Load::Form::none: break;
+    case Load::Form::force:
+      scene.load = {load.force[0], load.force[1], load.at[0] * load.force[1] - load.at[1] * load.force[0]};
+      break;
+    case Load::Form::wrench: scene.load = {load.wrench[0], load.wrench[1], load.wrench[2]}; break;
+    case Load::Form::gravity:
+      if (!has_com) throw Failure{"load.gravity: needs body.com (the point where the weight acts)"};
+      scene.load = {0, -load.weight, -load.weight * com[0]};
+      break;
+  }
+  return scene;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -300,6 +402,7 @@ struct Term {
 struct Certificate {
   std::set<std::string> keys;  // the keys present
   Reading reading = Reading::friction;
+  bool equilibrium = false;  // property "equilibrium" (§3.3), read with friction
   bool holds = false;
   std::vector<Term> combination;
   std::vector<Ref> independent;
@@ -379,6 +482,10 @@ Certificate read_certificate(Reader& r) {
   Certificate c;
   if (r.peek() != Kind::object) r.fail("a certificate must be a JSON object");
   r.begin_object();
+  // An empty combination is allowed for "equilibrium" only; if "property" comes after
+  // "combination", that is decided once the whole object is read.
+  const std::string non_empty = "expected a non-empty array of {\"contact\", \"edge\", \"weight\"}";
+  bool empty_combination = false;
   std::string key;
   while (r.next_key(key)) {
     c.keys.insert(key);
@@ -386,17 +493,20 @@ Certificate read_certificate(Reader& r) {
       if (r.peek() != Kind::number || r.number() != "1") r.fail("expected the integer 1");
     } else if (key == "property") {
       const std::string p = r.peek() == Kind::string ? r.string() : "";
-      if (p != "force_closure" && p != "form_closure") r.fail("expected \"force_closure\" or \"form_closure\"");
-      c.reading = p == "force_closure" ? Reading::friction : Reading::frictionless;
+      if (p != "force_closure" && p != "form_closure" && p != "equilibrium")
+        r.fail("expected \"force_closure\", \"form_closure\" or \"equilibrium\"");
+      c.reading = p == "form_closure" ? Reading::frictionless : Reading::friction;
+      c.equilibrium = p == "equilibrium";
     } else if (key == "holds") {
       if (r.peek() != Kind::boolean) r.fail("expected true or false");
       c.holds = r.boolean();
     } else if (key == "combination") {
-      const std::string what = "expected a non-empty array of {\"contact\", \"edge\", \"weight\"}";
-      if (r.peek() != Kind::array) r.fail(what);
+      if (r.peek() != Kind::array)
+        r.fail(c.equilibrium ? "expected an array of {\"contact\", \"edge\", \"weight\"}" : non_empty);
       r.begin_array();
       while (r.next_item()) c.combination.push_back(read_term(r, true));
-      if (c.combination.empty()) r.fail(what);
+      if (c.combination.empty() && c.keys.count("property") && !c.equilibrium) r.fail(non_empty);
+      empty_combination = c.combination.empty();
     } else if (key == "independent") {
       read_fixed(r, 3, "an array of three {\"contact\", \"edge\"}",
                  [&](std::size_t) { c.independent.push_back(read_term(r, false).ref); });
@@ -409,10 +519,11 @@ Certificate read_certificate(Reader& r) {
       r.fail("unknown key " + quote(key), true);
     }
   }
+  if (empty_combination && !c.equilibrium) throw Failure{"combination: " + non_empty};
   return c;
 }
 
-// The keys that must, and must not, be present (certificate-format.md §3).
+// The keys that must, and must not, be present (certificate-format.md §3, §3.3).
 void check_keys(const Certificate& c) {
   auto need = [&c](const char* key) {
     if (!c.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
@@ -422,11 +533,22 @@ void check_keys(const Certificate& c) {
       throw Failure{std::string("key \"") + key + "\" is not allowed when \"holds\" is " +
                     (c.holds ? "true" : "false")};
   };
+  auto no_independent = [&c, &ban] {  // "equilibrium" never uses it
+    if (!c.equilibrium) return ban("independent");
+    if (c.keys.count("independent"))
+      throw Failure{"key \"independent\" is not allowed when \"property\" is \"equilibrium\""};
+  };
   need("wrenchkit_certificate"), need("property"), need("holds");
-  if (c.holds)
-    need("combination"), need("independent"), ban("twist"), ban("reading");
-  else
-    need("twist"), ban("combination"), ban("independent");
+  if (c.holds) {
+    need("combination");
+    if (c.equilibrium)
+      no_independent();
+    else
+      need("independent");
+    ban("twist"), ban("reading");
+  } else {
+    need("twist"), ban("combination"), no_independent();
+  }
 }
 
 std::string name(std::size_t contact, const std::string& edge) {
@@ -452,7 +574,11 @@ Wrench resolve(const Ref& ref, const std::vector<Contact>& contacts, Reading rea
 // §3.1, theory [FC-2]. With S the generators of `combination`: (3) and (4) give, for every g_j in S,
 // -g_j = sum_{k != j} (l_k / l_j) g_k in pos(S), so pos(S) is a linear subspace; (5) makes it
 // 3-dimensional, so W contains pos(S) = R^3.
-void check_positive(const Certificate& c, const std::vector<Contact>& contacts, const Limits& lim) {
+// §3.3, theory [EQ-1], when `load` is w_ext: (1)-(3) as above and (4') sum_k l_k g_k + w_ext = 0, so
+// -w_ext = sum_k l_k g_k is in W: the contact forces l_k (force of g_k) balance the load. There is no
+// (5), and the combination may be empty (then w_ext must be zero).
+void check_positive(const Certificate& c, const std::vector<Contact>& contacts, const Limits& lim,
+                    const Wrench* load) {
   // (2) no generator appears twice in combination. Checked on the references before (1), so that
   // (1) recomputes each generator at most once.
   std::map<std::pair<std::size_t, std::string>, std::string> seen;
@@ -463,7 +589,7 @@ void check_positive(const Certificate& c, const std::vector<Contact>& contacts, 
                     ")"};
   }
   // (1) every reference names a generator of the scene under the reading
-  std::vector<Wrench> sum, independent;  // sum: first the terms weight_k g_k
+  std::vector<Wrench> sum, independent;  // sum: first the terms weight_k g_k, then w_ext if any
   for (const Term& t : c.combination) {
     const Wrench g = resolve(t.ref, contacts, c.reading, lim);
     sum.push_back({t.weight * g.fx, t.weight * g.fy, t.weight * g.m});
@@ -473,9 +599,10 @@ void check_positive(const Certificate& c, const std::vector<Contact>& contacts, 
   for (const Term& t : c.combination)
     if (sgn(t.weight) <= 0)
       throw Failure{t.ref.path + ".weight: " + quote(t.weight_text) + " is not strictly positive"};
-  // (4) sum_k weight_k g_k = (0, 0, 0) exactly. Added as a balanced tree: with k weights of n digits
-  // whose denominators share no factor, that is about log k rounds of work on k n digits, where a
-  // running sum would take k rounds.
+  // (4) sum_k weight_k g_k (+ w_ext) = (0, 0, 0) exactly. Added as a balanced tree: with k weights of
+  // n digits whose denominators share no factor, that is about log k rounds of work on k n digits,
+  // where a running sum would take k rounds.
+  if (load) sum.push_back(*load);
   while (sum.size() > 1) {
     std::vector<Wrench> half;
     for (std::size_t k = 0; k + 1 < sum.size(); k += 2)
@@ -483,10 +610,11 @@ void check_positive(const Certificate& c, const std::vector<Contact>& contacts, 
     if (sum.size() % 2 == 1) half.push_back(std::move(sum.back()));
     sum.swap(half);
   }
-  const Wrench& total = sum.front();  // combination is not empty
+  const Wrench& total = sum.front();  // not empty: combination is not, or there is a load
   if (total.fx != 0 || total.fy != 0 || total.m != 0)
-    throw Failure{"combination: the weighted sum of the generators is (" + show(total.fx) + ", " + show(total.fy) +
-                  ", " + show(total.m) + "), not (0, 0, 0)"};
+    throw Failure{std::string("combination: the weighted sum of the generators ") + (load ? "plus the load " : "") +
+                  "is (" + show(total.fx) + ", " + show(total.fy) + ", " + show(total.m) + "), not (0, 0, 0)"};
+  if (load) return;
   // (5) the three independent generators are in combination, and their determinant is not zero
   for (const Ref& ref : c.independent)
     if (!seen.count({ref.contact, ref.edge}))
@@ -497,7 +625,10 @@ void check_positive(const Certificate& c, const std::vector<Contact>& contacts, 
 
 // §3.2, theory [FC-3]. Every x in W is sum mu_g g with mu >= 0, so <t, x> >= 0, while <t, -t> < 0:
 // the wrench -t is not in W, and W != R^3.
-void check_negative(const Certificate& c, const std::vector<Contact>& contacts, const Limits& lim) {
+// §3.3, theory [EQ-1], when `load` is w_ext: also <t, w_ext> > 0, so <t, -w_ext> < 0 <= <t, x> for every
+// x in W: -w_ext is not in W, and no admissible contact forces balance the load.
+void check_negative(const Certificate& c, const std::vector<Contact>& contacts, const Limits& lim,
+                    const Wrench* load) {
   const Q(&t)[3] = c.twist;
   // (1) the twist is not zero
   if (t[0] == 0 && t[1] == 0 && t[2] == 0) throw Failure{"twist: the zero twist proves nothing"};
@@ -510,6 +641,9 @@ void check_negative(const Certificate& c, const std::vector<Contact>& contacts, 
   for (std::size_t i = 0; i < contacts.size(); ++i)
     for (const Generator& g : generators(contacts[i], c.reading, lim))
       if (sgn(power(T, g.w)) < 0) throw Failure{"twist: power " + show(power(t, g.w)) + " against " + name(i, g.edge)};
+  // (2') equilibrium: <t, w_ext> > 0
+  if (load && sgn(power(T, *load)) <= 0)
+    throw Failure{"twist: power against the load is " + show(power(t, *load)) + ", not > 0"};
   // (3) the reading, if present, is P(t) = (-vy, vx, w) on the two-sided plane
   if (!c.keys.count("reading")) return;
   const Q &vx = t[0], &vy = t[1], &w = t[2];
@@ -532,10 +666,10 @@ void check_negative(const Certificate& c, const std::vector<Contact>& contacts, 
 }  // namespace
 
 Result check(std::string_view scene_json, std::string_view certificate_json, const Limits& limits) {
-  std::vector<Contact> contacts;
+  Scene scene;
   try {
     Reader r(scene_json, limits.max_depth);
-    contacts = read_scene(r, limits);
+    scene = read_scene(r, limits);
     r.finish();
   } catch (const Failure& f) {
     return {Outcome::bad_scene, f.message};
@@ -549,10 +683,12 @@ Result check(std::string_view scene_json, std::string_view certificate_json, con
     const Certificate c = read_certificate(r);
     r.finish();
     check_keys(c);
+    if (c.equilibrium && !scene.has_load) throw Failure{"property: \"equilibrium\" needs a scene with a load"};
+    const Wrench* load = c.equilibrium ? &scene.load : nullptr;
     if (c.holds)
-      check_positive(c, contacts, limits);
+      check_positive(c, scene.contacts, limits, load);
     else
-      check_negative(c, contacts, limits);
+      check_negative(c, scene.contacts, limits, load);
     return {Outcome::accepted, "accepted"};
   } catch (const Failure& f) {
     return {Outcome::rejected, f.message};

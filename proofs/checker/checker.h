@@ -5,9 +5,14 @@
 //   * holds = true  (theory [FC-2]): strictly positive weights of distinct generators sum to the zero
 //     wrench and three of them are linearly independent, so the contact wrench cone is all of R^3;
 //   * holds = false (theory [FC-3]): a nonzero twist has non-negative power against every generator,
-//     so the cone lies in a closed half-space and is not R^3.
-// Every generator is recomputed from the scene text; the certificate supplies only indices and
-// rationals. All arithmetic is exact (GMP rationals); there is no floating point.
+//     so the cone lies in a closed half-space and is not R^3;
+//   * property "equilibrium" (theory [EQ-1], §3.3), about the scene's load w_ext (a force at a point,
+//     a wrench, or gravity at body.com), with the friction generators: holds = true when strictly
+//     positive weights of distinct generators (possibly none) sum to -w_ext; holds = false when a
+//     twist has non-negative power against every generator and positive power against w_ext. A
+//     scene without a load has no equilibrium claim: such a certificate is rejected.
+// Every generator, and the load, is recomputed from the scene text; the certificate supplies only
+// indices and rationals. All arithmetic is exact (GMP rationals); there is no floating point.
 //
 // Independence: this checker uses the C++17 standard library and GMP only, with its own JSON reader
 // and number parser. It shares no code with the engine (exact/, core/, float/) and does not use CGAL.
@@ -41,6 +46,7 @@ enum class Outcome {
 struct Result {
   Outcome outcome;
   // "accepted", or the reason, naming the JSON path, e.g. "contacts[2].normal: zero vector",
+  // "load.gravity: needs body.com (the point where the weight acts)",
   // "twist: power -1 against contacts[0] edge normal"; JSON syntax errors read
   // "<line>:<column>: invalid JSON: <what>".
   std::string message;

@@ -6,6 +6,7 @@ by a small exact checker written here with Python's fractions (a second implemen
 of the C++ one): each *.valid.json must pass, each *.invalid.json must fail for the reason its
 table entry names. Run from anywhere:  python3 proofs/examples/make_examples.py
 """
+import itertools
 import json
 import os
 import re
@@ -16,6 +17,14 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 # ----------------------------------------------------------------------------------------------
 # Scenes (numbers are written as they should appear in the file)
+
+# The block in a corner (theory.md section 9) with friction mu = 1/2 at every contact.
+CORNER_MU_1_2 = [
+    {"at": [0, 0], "normal": [0, 1], "mu": "1/2", "name": "floor, left"},
+    {"at": [1, 0], "normal": [0, 1], "mu": "1/2", "name": "floor, right"},
+    {"at": [0, 0], "normal": [1, 0], "mu": 0.5, "name": "wall, bottom"},
+    {"at": [0, 1], "normal": [1, 0], "mu": "5e-1", "name": "wall, top"},
+]
 
 SCENES = {
     "block_corner_mu0": {
@@ -62,6 +71,34 @@ SCENES = {
         "load": {"gravity": 1},
         "support": {"mu": "1/2", "points": [{"at": [1, 1], "force": 1}]},
     },
+    # theory.md section 9: the block in a corner with mu = 1/2 at all four contacts, under four loads
+    "block_corner_mu_1_2_gravity": {
+        "wrenchkit": 1,
+        "name": "unit block in a corner, mu = 1/2, weight 1 at the centre (theory.md section 9): balanced",
+        "body": {"outline": [[0, 0], [1, 0], [1, 1], [0, 1]], "com": ["1/2", 0.5]},
+        "contacts": CORNER_MU_1_2,
+        "load": {"gravity": 1},
+    },
+    "block_corner_mu_1_2_push": {
+        "wrenchkit": 1,
+        "name": "unit block in a corner, mu = 1/2, pushed by (-1,0) at (1,1/2) (theory.md section 9): balanced",
+        "body": {"outline": [[0, 0], [1, 0], [1, 1], [0, 1]], "com": ["1/2", "1/2"]},
+        "contacts": CORNER_MU_1_2,
+        "load": {"force": [-1, 0], "at": [1, "1/2"]},
+    },
+    "block_corner_mu_1_2_pull": {
+        "wrenchkit": 1,
+        "name": "unit block in a corner, mu = 1/2, pulled by (1,0) at (0,1/2) (theory.md section 9): not balanced",
+        "body": {"outline": [[0, 0], [1, 0], [1, 1], [0, 1]]},
+        "contacts": CORNER_MU_1_2,
+        "load": {"at": [0, "0.5"], "force": ["1", 0]},
+    },
+    "block_corner_mu_1_2_torque": {
+        "wrenchkit": 1,
+        "name": "unit block in a corner, mu = 1/2, a counter-clockwise couple 1 (a wrench load): not balanced",
+        "contacts": CORNER_MU_1_2,
+        "load": {"wrench": [0, 0, "1"]},
+    },
     "wrench_generators": {
         "wrenchkit": 1,
         "name": "four wrench generators that positively span R^3",
@@ -78,6 +115,7 @@ SCENES = {
 # Certificates: (scene, description, expected, certificate)
 # expected: "valid", or "invalid:<reason>|<text>" where <reason> is what verify() below returns and
 # <text> is a substring of the C++ checker's message (the test suite checks it).
+# certificate None: computed by computed() below, which may also give `expected` when that is None.
 
 
 def comb(*terms):
@@ -91,6 +129,10 @@ def refs(*pairs):
 def positive(prop, combination, independent):
     return {"wrenchkit_certificate": 1, "property": prop, "holds": True,
             "combination": combination, "independent": independent}
+
+
+def equilibrium_true(combination):
+    return {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": True, "combination": combination}
 
 
 def negative(prop, twist, reading=None):
@@ -197,6 +239,35 @@ CERTS = [
      positive("form_closure", comb((0, "normal", "1"), (1, "normal", "1"), (2, "normal", "1")),
               refs((0, "normal"), (1, "normal"), (2, "normal")))),
 
+    # block in a corner under a load (theory.md section 9): equilibrium, reading friction
+    ("block_corner_mu0", "equilibrium", "valid",  # load (0,-1) at (1/2,1/2): half on each floor normal
+     equilibrium_true(comb((0, "normal", "1/2"), (1, "normal", "1/2")))),
+    ("block_corner_mu_1_2_gravity", "equilibrium", "valid", None),  # found by balancing_weights()
+    ("block_corner_mu_1_2_gravity", "equilibrium_with_wall", "valid", None),
+    ("block_corner_mu_1_2_gravity", "equilibrium_four_floor_edges", "valid",
+     equilibrium_true(comb((0, "left", "1/4"), (0, "right", "1/4"), (1, "left", "1/4"), (1, "right", "1/4")))),
+    ("block_corner_mu_1_2_gravity", "unbalanced_weights",
+     "invalid:sum|combination: the weighted sum of the generators plus the load is (0, 1/3, 1/6), not (0, 0, 0)",
+     equilibrium_true(comb((0, "left", "1/3"), (0, "right", "1/3"), (1, "left", "1/3"), (1, "right", "1/3")))),
+    ("block_corner_mu_1_2_gravity", "negative_weight", None, None),  # expected and certificate computed
+    ("block_corner_mu_1_2_gravity", "independent_present",
+     'invalid:keys|key "independent" is not allowed when "property" is "equilibrium"', None),
+    ("block_corner_mu_1_2_gravity", "twist_against_balanced_load", "invalid:power|twist: power -1/2 against contacts[2] edge right",
+     negative("equilibrium", ["0", "1", "0"])),
+    ("block_corner_mu_1_2_push", "equilibrium", "valid", None),
+    ("block_corner_mu_1_2_pull", "not_balanced_translation", "valid",
+     negative("equilibrium", ["1", "1", "0"], {"label": "infinity", "direction": ["-1", "1"]})),
+    ("block_corner_mu_1_2_pull", "not_balanced_rotation", "valid",
+     negative("equilibrium", ["2", "1", "1"], {"label": "+", "point": ["-1", "2"]})),
+    ("block_corner_mu_1_2_pull", "push_weights", "invalid:sum|combination: the weighted sum of the generators plus the load is (2, 0, -1), not (0, 0, 0)",
+     None),  # the weights that balance the push: the load's sign matters
+    ("block_corner_mu_1_2_torque", "not_balanced", "valid",
+     negative("equilibrium", ["4/2", "1", "1"], {"label": "+", "point": ["-1", "2"]})),
+    ("block_corner_mu_1_2_torque", "zero_power_against_load", "invalid:load power|twist: power against the load is 0, not > 0",
+     negative("equilibrium", ["1", "1", "0"])),
+    ("square_crossed_couples", "equilibrium_without_load", 'invalid:no load|property: "equilibrium" needs a scene with a load',
+     equilibrium_true(SQUARE)),
+
     # wrench generators: the same under both readings
     ("wrench_generators", "force", "valid", positive("force_closure", WRENCHES, WRENCHES_IND)),
     ("wrench_generators", "form", "valid", positive("form_closure", WRENCHES, WRENCHES_IND)),
@@ -208,6 +279,7 @@ CERTS = [
 # ----------------------------------------------------------------------------------------------
 # An independent exact checker (Python fractions)
 
+PROPERTIES = ("force_closure", "form_closure", "equilibrium")
 SCENE_NUMBER = re.compile(r"[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?|[+-]?\d+/\d+")
 RATIONAL = re.compile(r"-?(0|[1-9][0-9]*)(/[1-9][0-9]*)?")
 
@@ -232,6 +304,22 @@ def generators(contact, friction):
     return {"left": W(nx - mu * ny, ny + mu * nx), "right": W(nx + mu * ny, ny - mu * nx)}
 
 
+def load_wrench(scene):
+    """w_ext of the scene's load (certificate-format.md section 3.3), or None without a load."""
+    load = scene.get("load")
+    if load is None:
+        return None
+    if set(load) == {"gravity"}:
+        w, (cx, _) = number(load["gravity"]), (number(v) for v in scene["body"]["com"])
+        assert w > 0
+        return (F(0), -w, -w * cx)
+    if set(load) == {"wrench"}:
+        return tuple(number(v) for v in load["wrench"])
+    assert set(load) == {"force", "at"}, load
+    (fx, fy), (x, y) = (number(v) for v in load["force"]), (number(v) for v in load["at"])
+    return (fx, fy, x * fy - y * fx)
+
+
 def rational(s):
     if not isinstance(s, str) or not RATIONAL.fullmatch(s):
         raise ValueError(f"{s!r} is not a rational")
@@ -249,14 +337,19 @@ def verify(scene, cert):
     allowed = {"wrenchkit_certificate", "property", "holds", "combination", "independent", "twist", "reading"}
     if keys - allowed:
         return "unknown key"
-    if cert.get("wrenchkit_certificate") != 1 or cert.get("property") not in ("force_closure", "form_closure"):
+    if cert.get("wrenchkit_certificate") != 1 or cert.get("property") not in PROPERTIES:
         return "header"
-    friction = cert["property"] == "force_closure"
-    gens = [generators(c, friction) for c in scene["contacts"]]
+    friction = cert["property"] != "form_closure"
+    equilibrium = cert["property"] == "equilibrium"
+    gens = [generators(c, friction) for c in scene.get("contacts", [])]
+    load = load_wrench(scene) if equilibrium else (F(0), F(0), F(0))
     try:
         if cert["holds"] is True:
-            if keys != {"wrenchkit_certificate", "property", "holds", "combination", "independent"}:
+            wanted = {"wrenchkit_certificate", "property", "holds", "combination"}
+            if keys != (wanted if equilibrium else wanted | {"independent"}):
                 return "keys"
+            if load is None:
+                return "no load"
 
             def gen(ref):
                 i, e = ref["contact"], ref["edge"]
@@ -265,7 +358,9 @@ def verify(scene, cert):
                 return gens[i].get(e)
 
             terms = cert["combination"]
-            if any(gen(t) is None for t in terms) or any(gen(r) is None for r in cert["independent"]):
+            if not terms and not equilibrium:
+                return "empty"
+            if any(gen(t) is None for t in terms) or any(gen(r) is None for r in cert.get("independent", [])):
                 return "reference"
             names = [(t["contact"], t["edge"]) for t in terms]
             if len(set(names)) != len(names):
@@ -273,8 +368,10 @@ def verify(scene, cert):
             weights = [rational(t["weight"]) for t in terms]
             if any(w <= 0 for w in weights):
                 return "weight"
-            if any(sum(w * gen(t)[k] for w, t in zip(weights, terms)) != 0 for k in range(3)):
+            if any(sum(w * gen(t)[k] for w, t in zip(weights, terms)) + load[k] != 0 for k in range(3)):
                 return "sum"
+            if equilibrium:
+                return None
             ind = cert["independent"]
             if len(ind) != 3 or any((r["contact"], r["edge"]) not in names for r in ind):
                 return "independent"
@@ -283,12 +380,16 @@ def verify(scene, cert):
             return None
         if keys - {"reading"} != {"wrenchkit_certificate", "property", "holds", "twist"}:
             return "keys"
+        if load is None:
+            return "no load"
         vx, vy, w = (rational(v) for v in cert["twist"])
         if (vx, vy, w) == (0, 0, 0):
             return "zero twist"
         for g in (g for c in gens for g in c.values()):
             if vx * g[0] + vy * g[1] + w * g[2] < 0:
                 return "power"
+        if equilibrium and vx * load[0] + vy * load[1] + w * load[2] <= 0:
+            return "load power"
         if "reading" in cert:
             r = cert["reading"]
             label = "+" if w > 0 else "-" if w < 0 else "infinity"
@@ -334,6 +435,67 @@ def triangle_uneven():
 
 
 # ----------------------------------------------------------------------------------------------
+# Computed equilibrium certificates: a small exact search over the friction edges (by Caratheodory,
+# if -w_ext is in the cone of the edges it is in the cone of at most three of them)
+
+
+def solve(columns, b):
+    """The unique x with sum_j x_j columns[j] = b (columns independent), or None."""
+    n = len(columns)
+    A = [[columns[j][k] for j in range(n)] + [b[k]] for k in range(3)]
+    for col in range(n):  # Gauss-Jordan on a 3 x (n+1) augmented matrix
+        piv = next((r for r in range(col, 3) if A[r][col] != 0), None)
+        if piv is None:
+            return None
+        A[col], A[piv] = A[piv], A[col]
+        A[col] = [v / A[col][col] for v in A[col]]
+        for r in range(3):
+            if r != col:
+                A[r] = [a - A[r][col] * c for a, c in zip(A[r], A[col])]
+    if any(A[r][n] != 0 for r in range(n, 3)):
+        return None
+    return [A[r][n] for r in range(n)]
+
+
+def balancing_weights(scene_name, use=lambda contact, edge: True, accept=lambda x: all(v > 0 for v in x)):
+    """The first combination (fewest terms, then in scene order) of at most three friction edges
+    allowed by `use` whose weights x satisfy accept(x) and sum_k x_k g_k = -w_ext."""
+    scene = SCENES[scene_name]
+    edges = [(i, e, g) for i, c in enumerate(scene["contacts"]) for e, g in generators(c, True).items() if use(i, e)]
+    minus_load = tuple(-v for v in load_wrench(scene))
+    for k in (1, 2, 3):
+        for subset in itertools.combinations(edges, k):
+            x = solve([g for _, _, g in subset], minus_load)
+            if x is not None and accept(x):
+                return comb(*[(i, e, str(v)) for (i, e, _), v in zip(subset, x)])
+    raise AssertionError(f"no balancing weights for {scene_name}")
+
+
+def computed(scene_name, desc):
+    """(expected, certificate) of a table entry whose certificate (and maybe its expectation) is None."""
+    gravity = "block_corner_mu_1_2_gravity"
+    if (scene_name, desc) == ("triangle_mu_1_10", "force_uneven"):
+        return "valid", triangle_uneven()
+    if (scene_name, desc) == (gravity, "equilibrium"):  # the floor alone carries the weight
+        return "valid", equilibrium_true(balancing_weights(gravity, lambda i, e: i in (0, 1)))
+    if (scene_name, desc) == (gravity, "equilibrium_with_wall"):  # three edges, one of them on the wall
+        return "valid", equilibrium_true(balancing_weights(gravity, lambda i, e: (i, e) in ((0, "left"), (1, "left"), (2, "left"))))
+    if (scene_name, desc) == (gravity, "independent_present"):
+        cert = equilibrium_true(balancing_weights(gravity, lambda i, e: i in (0, 1)))
+        cert["independent"] = refs((0, "left"), (1, "right"), (0, "right"))
+        return None, cert
+    if (scene_name, desc) == (gravity, "negative_weight"):  # weights that do balance, but one is negative
+        terms = balancing_weights(gravity, accept=lambda x: len(x) == 3 and 0 not in x and min(x) < 0)
+        k, bad = next((k, u) for k, u in enumerate(terms) if F(u["weight"]) < 0)
+        return f'invalid:weight|combination[{k}].weight: "{bad["weight"]}" is not strictly positive', equilibrium_true(terms)
+    if (scene_name, desc) == ("block_corner_mu_1_2_push", "equilibrium"):  # the wall alone
+        return "valid", equilibrium_true(balancing_weights("block_corner_mu_1_2_push", lambda i, e: i in (2, 3)))
+    if (scene_name, desc) == ("block_corner_mu_1_2_pull", "push_weights"):
+        return None, equilibrium_true(balancing_weights("block_corner_mu_1_2_push", lambda i, e: i in (2, 3)))
+    raise KeyError((scene_name, desc))
+
+
+# ----------------------------------------------------------------------------------------------
 # Writing
 
 
@@ -358,7 +520,8 @@ def main():
     reasons = []
     for scene_name, desc, expected, cert in CERTS:
         if cert is None:
-            cert = triangle_uneven()
+            exp, cert = computed(scene_name, desc)
+            expected = expected or exp
         kind = "valid" if expected == "valid" else "invalid"
         path = os.path.join(HERE, f"{scene_name}.{desc}.{kind}.json")
         with open(path, "w") as f:
