@@ -37,7 +37,8 @@ const char* kUsage =
     "            certificate either way (the contact forces, or a motion the load drives)\n"
     "  check     wrenchkit check SCENE.json CERT.json: the independent checker (proofs/)\n"
     "            accepts (exit 0) or rejects (exit 1) a certificate\n"
-    "  demo      closure of a bundled textbook scene (Mason's Example 3), no file needed\n"
+    "  analyze   everything the scene calls for: closure, and equilibrium when it has a load\n"
+    "  demo      analyze of a bundled textbook scene (Mason's Example 3), no file needed\n"
     "  batch     wrenchkit batch closure < scenes.jsonl: one scene per line, one answer per line,\n"
     "            on all cores (--jobs N)\n"
     "\n"
@@ -79,6 +80,15 @@ const char* kEquilibriumHelp =
     "  --json, --certificate FILE, --max-* (as for closure)\n"
     "  --mode exact|hybrid    both decide exactly (the float twin of equilibrium is not written yet)\n";
 
+const char* kAnalyzeHelp =
+    "usage: wrenchkit analyze [OPTIONS] SCENE.json\n"
+    "\n"
+    "Everything the scene's contents call for, and nothing else: force and form closure of its\n"
+    "contacts, and equilibrium when it has a load, each with a checked certificate. What the scene\n"
+    "asks for that this version cannot compute (a support's limit surface) is listed as skipped.\n"
+    "\n"
+    "options: --json, --mode, --max-* (as for closure)\n";
+
 const char* kCheckHelp =
     "usage: wrenchkit check [OPTIONS] SCENE.json CERT.json\n"
     "\n"
@@ -108,9 +118,9 @@ const char* kBatchHelp =
 const char* kDemoHelp =
     "usage: wrenchkit demo [--json]\n"
     "\n"
-    "Runs 'closure' on a bundled textbook scene: Mason's Example 3, a triangle held by three\n"
-    "fingers whose normals meet in one point (theory.md §8.7). Frictionless it is not closed;\n"
-    "with friction mu = 1/10 it is in force closure.\n";
+    "Runs 'analyze' on a bundled textbook scene: Mason's Example 3, a triangle held by three\n"
+    "fingers whose normals meet in one point (theory.md §8.7), under its own weight. Frictionless it\n"
+    "is not closed; with friction mu = 1/10 it is in force closure, so gravity is balanced.\n";
 
 struct Options {
   bool json = false;
@@ -415,49 +425,112 @@ int run_batch(const Options& o) {
   return self_check_failed ? kSelfCheck : (internal_error ? kInternal : kAnswered);
 }
 
+struct Equilibrium_result {
+  Equilibrium_answer a;
+  std::string cert;
+};
+
+// Decides equilibrium of a parsed scene and has the independent checker accept the certificate.
+Equilibrium_result compute_equilibrium(const Options& o, const Scene& scene, const std::string& scene_text) {
+  Equilibrium_result r{decide_equilibrium(scene), ""};
+  r.cert = certificate_json(r.a.certificate);
+  const auto c = wrenchkit_checker::check(scene_text, r.cert, checker_limits(o.limits));
+  if (c.outcome != wrenchkit_checker::Outcome::accepted)
+    throw Self_check_failure("the independent checker rejected our own certificate: " + c.message +
+                             "\ncertificate: " + r.cert);
+  return r;
+}
+
+std::string equilibrium_json(const Options& o, const Scene& scene, const Equilibrium_result& r, const char* command) {
+  const Wrench& l = r.a.load;
+  return "{\"command\": \"" + std::string(command) + "\", \"name\": " + json::quote(scene.name) +
+         ", \"mode\": \"" + o.mode + "\", \"decided_by\": \"exact\", \"balanced\": " +
+         (r.a.balanced ? "true" : "false") + ", \"load\": [" + json::quote(to_string(l.fx)) + ", " +
+         json::quote(to_string(l.fy)) + ", " + json::quote(to_string(l.m)) + "], \"generators\": " +
+         std::to_string(r.a.generators) + ", \"certificate_checked\": true, \"certificate\": " + r.cert + "}";
+}
+
+std::string equilibrium_human(const Equilibrium_result& r) {
+  const Equilibrium_answer& a = r.a;
+  const std::array<Rational, 3> load = {a.load.fx, a.load.fy, a.load.m};
+  std::ostringstream s;
+  s << "load: the wrench " << vec_text(load) << " (force, moment about the origin)\n"
+    << "balanced: " << (a.balanced ? "yes" : "no") << "\n    certificate: ";
+  if (a.balanced) {
+    if (a.certificate.combination.empty()) s << "the load is zero";
+    else s << "the contact wrenches";
+    for (const auto& [ref, w] : a.certificate.combination)
+      s << " " << to_string(w) << "·c" << ref.contact << "." << edge_name(ref.edge);
+    if (!a.certificate.combination.empty()) s << " cancel the load exactly";
+  } else {
+    const Twist_reading tr = read_twist(a.certificate.twist);
+    s << "the twist " << vec_text(a.certificate.twist)
+      << " has power >= 0 against every contact wrench and > 0 against the load";
+    if (tr.label == 'i')
+      s << " (a translation toward direction (" << to_string(tr.point[0]) << ", " << to_string(tr.point[1])
+        << ") at infinity)";
+    else
+      s << " (a " << (tr.label == '+' ? "counter-clockwise" : "clockwise") << " rotation about ("
+        << to_string(tr.point[0]) << ", " << to_string(tr.point[1]) << "))";
+    s << ": the load drives a motion the contacts allow";
+  }
+  s << "\n";
+  return s.str();
+}
+
 int run_equilibrium(const Options& o, const std::string& scene_text, const std::string& source) {
   if (o.mode == "float")
     throw Usage_error("--mode float: equilibrium has no float twin yet; use --mode exact or hybrid");
   if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
   if (!o.form_certificate_file.empty()) throw Usage_error("--form-certificate is for closure");
   const Scene scene = read_scene(scene_text, o.limits, source);
-  const Equilibrium_answer a = decide_equilibrium(scene);
-  const std::string cert = certificate_json(a.certificate);
-  const auto c = wrenchkit_checker::check(scene_text, cert, checker_limits(o.limits));
-  if (c.outcome != wrenchkit_checker::Outcome::accepted)
-    throw Self_check_failure("the independent checker rejected our own certificate: " + c.message +
-                             "\ncertificate: " + cert);
-  if (!o.certificate_file.empty()) write_file(o.certificate_file, cert + "\n");
-  const std::array<Rational, 3> load = {a.load.fx, a.load.fy, a.load.m};
+  const Equilibrium_result r = compute_equilibrium(o, scene, scene_text);
+  if (!o.certificate_file.empty()) write_file(o.certificate_file, r.cert + "\n");
   if (o.json) {
-    std::cout << "{\"command\": \"equilibrium\", \"name\": " << json::quote(scene.name) << ", \"mode\": \""
-              << o.mode << "\", \"decided_by\": \"exact\", \"balanced\": " << (a.balanced ? "true" : "false")
-              << ", \"load\": [" << json::quote(to_string(load[0])) << ", " << json::quote(to_string(load[1]))
-              << ", " << json::quote(to_string(load[2])) << "], \"generators\": " << a.generators
-              << ", \"certificate_checked\": true, \"certificate\": " << cert << "}\n";
+    std::cout << equilibrium_json(o, scene, r, "equilibrium") << "\n";
+  } else {
+    std::cout << "scene: " << (scene.name.empty() ? source : scene.name) << "\n"
+              << equilibrium_human(r) << "certificate accepted by the independent checker (exact arithmetic)\n";
+  }
+  return kAnswered;
+}
+
+// analyze: everything the scene's contents call for, and nothing else — closure of its contacts
+// (always: no contacts is an answer too), equilibrium when it has a load. What a scene asks for
+// that this version cannot compute yet is listed under "skipped", never silently dropped.
+int run_analyze(const Options& o, const std::string& scene_text, const std::string& source, const char* command) {
+  if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
+  if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
+    throw Usage_error("analyze writes its certificates in its JSON output; use closure or equilibrium for files");
+  const Closure_result c = compute_closure(o, scene_text, source);
+  std::optional<Equilibrium_result> e;
+  if (c.scene.load) {
+    if (o.mode == "float")
+      throw Usage_error("--mode float: equilibrium has no float twin yet; use --mode exact or hybrid");
+    e = compute_equilibrium(o, c.scene, scene_text);
+  }
+  std::vector<std::pair<std::string, std::string>> skipped;
+  if (c.scene.support)
+    skipped.push_back({"limit_surface", "the scene has a support; limit surfaces are not implemented in this version"});
+  if (o.json) {
+    std::cout << "{\"command\": \"" << command << "\", \"name\": " << json::quote(c.scene.name)
+              << ", \"closure\": " << closure_json(o, c, "closure");
+    if (e) std::cout << ", \"equilibrium\": " << equilibrium_json(o, c.scene, *e, "equilibrium");
+    std::cout << ", \"skipped\": [";
+    for (std::size_t i = 0; i < skipped.size(); ++i)
+      std::cout << (i ? ", " : "") << "{\"what\": " << json::quote(skipped[i].first)
+                << ", \"why\": " << json::quote(skipped[i].second) << "}";
+    std::cout << "]}\n";
     return kAnswered;
   }
-  std::cout << "scene: " << (scene.name.empty() ? source : scene.name) << "\n"
-            << "load: the wrench " << vec_text(load) << " (force, moment about the origin)\n"
-            << "balanced: " << (a.balanced ? "yes" : "no") << "\n    certificate: ";
-  if (a.balanced) {
-    if (a.certificate.combination.empty()) std::cout << "the load is zero";
-    else std::cout << "the contact wrenches";
-    for (const auto& [ref, w] : a.certificate.combination)
-      std::cout << " " << to_string(w) << "·c" << ref.contact << "." << edge_name(ref.edge);
-    if (!a.certificate.combination.empty()) std::cout << " cancel the load exactly";
-  } else {
-    const Twist_reading r = read_twist(a.certificate.twist);
-    std::cout << "the twist " << vec_text(a.certificate.twist)
-              << " has power >= 0 against every contact wrench and > 0 against the load";
-    if (r.label == 'i')
-      std::cout << " (a translation toward direction (" << to_string(r.point[0]) << ", " << to_string(r.point[1]) << ") at infinity)";
-    else
-      std::cout << " (a " << (r.label == '+' ? "counter-clockwise" : "clockwise") << " rotation about ("
-                << to_string(r.point[0]) << ", " << to_string(r.point[1]) << "))";
-    std::cout << ": the load drives a motion the contacts allow";
-  }
-  std::cout << "\ncertificate accepted by the independent checker (exact arithmetic)\n";
+  std::cout << "scene: " << (c.scene.name.empty() ? source : c.scene.name) << "\n"
+            << "force closure: " << human_verdict(c.fc, false) << "\n"
+            << "form closure:  " << human_verdict(c.fo, true) << "\n";
+  if (e) std::cout << equilibrium_human(*e);
+  for (const auto& [what, why] : skipped) std::cout << "skipped " << what << ": " << why << "\n";
+  std::cout << "decided by: " << decided_by(c.fc, c.fo) << " for closure"
+            << (e ? ", exact for equilibrium" : "") << "\n"
+            << "every certificate accepted by the independent checker (exact arithmetic)\n";
   return kAnswered;
 }
 
@@ -501,6 +574,12 @@ int dispatch(int argc, char** argv) {
     const std::string text = read_input(path, o.limits.max_file_bytes);
     return run_closure(o, text, path == "-" ? "<stdin>" : path, "closure");
   }
+  if (command == "analyze") {
+    if (o.help) return std::cout << kAnalyzeHelp, kAnswered;
+    if (o.positional.size() != 1) throw Usage_error("analyze needs exactly one SCENE.json");
+    const std::string& path = o.positional[0];
+    return run_analyze(o, read_input(path, o.limits.max_file_bytes), path == "-" ? "<stdin>" : path, "analyze");
+  }
   if (command == "equilibrium") {
     if (o.help) return std::cout << kEquilibriumHelp, kAnswered;
     if (o.positional.size() != 1) throw Usage_error("equilibrium needs exactly one SCENE.json");
@@ -519,8 +598,8 @@ int dispatch(int argc, char** argv) {
     if (o.help) return std::cout << kDemoHelp, kAnswered;
     if (!o.positional.empty()) throw Usage_error("demo takes no scene file");
     if (!o.json)
-      std::cout << "wrenchkit demo: 'wrenchkit closure' on a bundled scene (theory.md §8.7)\n\n";
-    return run_closure(o, kDemoScene, "demo", "demo");
+      std::cout << "wrenchkit demo: 'wrenchkit analyze' on a bundled scene (theory.md §8.7, with gravity)\n\n";
+    return run_analyze(o, kDemoScene, "demo", "demo");
   }
   throw Usage_error("unknown command \"" + command + "\" (try wrenchkit --help)");
 }

@@ -288,6 +288,31 @@ TEST(Cli, EquilibriumAnswersWithACheckedCertificate) {
   EXPECT_EQ(run("equilibrium --help").code, 0);
 }
 
+TEST(Cli, AnalyzeComputesWhatTheSceneCallsFor) {
+  // Contacts only: closure, no equilibrium.
+  const Cli_result c = run("analyze --json '" + golden("square_crossed_couples") + "'");
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_NE(c.out.find("\"closure\": {"), std::string::npos);
+  EXPECT_EQ(c.out.find("\"equilibrium\""), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("\"skipped\": []"), std::string::npos);
+  // A load: equilibrium too; a support: listed as skipped, not silently dropped.
+  const std::string s = write("analyze.json", R"({"wrenchkit": 1, "body": {"com": [0, 1]},
+      "contacts": [{"at": [-1, 0], "normal": [0, 1]}, {"at": [1, 0], "normal": [0, 1]}],
+      "load": {"gravity": 2}, "support": {"mu": 1, "points": [{"at": [0, 0], "force": 1}]}})");
+  const Cli_result e = run("analyze --json '" + s + "'");
+  ASSERT_EQ(e.code, 0) << e.err;
+  EXPECT_NE(e.out.find("\"equilibrium\": {"), std::string::npos) << e.out;
+  EXPECT_NE(e.out.find("\"balanced\": true"), std::string::npos) << e.out;
+  EXPECT_NE(e.out.find("{\"what\": \"limit_surface\""), std::string::npos) << e.out;
+  const Cli_result h = run("analyze '" + s + "'");
+  EXPECT_NE(h.out.find("balanced: yes"), std::string::npos) << h.out;
+  EXPECT_NE(h.out.find("skipped limit_surface"), std::string::npos) << h.out;
+  EXPECT_EQ(run("analyze --mode float '" + s + "'").code, 2);
+  EXPECT_EQ(run("analyze --certificate x.json '" + s + "'").code, 2);
+  const Cli_result d = run("demo");
+  EXPECT_NE(d.out.find("balanced: yes"), std::string::npos) << d.out;
+}
+
 TEST(Cli, LimitsCanBeRaised) {
   const std::string s = write("long.json", R"({"wrenchkit": 1, "contacts": [{"at": [0,)" + std::string(10001, '1') +
                                                R"(], "normal": [0,1]}]})");
