@@ -1,0 +1,43 @@
+// wrenchkit check SCENE CERT: the independent checker of proofs/.
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "cli/common.h"
+#include "exact/input_error.h"
+#include "exact/json.h"
+
+namespace wrenchkit::cli {
+
+int run_check(const Options& o) {
+  if (o.positional.size() != 2) throw Usage_error("check needs SCENE.json and CERT.json");
+  if (o.positional[0] == "-" && o.positional[1] == "-")
+    throw Usage_error("check: SCENE.json and CERT.json cannot both be standard input");
+  const std::string scene = read_input(o.positional[0], o.limits.max_file_bytes);
+  const std::string cert = read_input(o.positional[1], o.limits.max_file_bytes);
+  const auto r = wrenchkit_checker::check(scene, cert, checker_limits(o.limits));
+  using wrenchkit_checker::Outcome;
+  if (r.outcome == Outcome::bad_scene) throw Input_error(o.positional[0] + ": " + r.message);
+  const bool ok = r.outcome == Outcome::accepted;
+  if (o.json)
+    std::cout << "{\"accepted\": " << (ok ? "true" : "false")
+              << ", \"reason\": " << json::quote(ok ? "" : r.message) << "}\n";
+  else
+    std::cout << (ok ? "accepted" : "rejected: " + r.message) << "\n";
+  return ok ? kAnswered : kRejected;
+}
+
+}  // namespace wrenchkit::cli

@@ -1,0 +1,121 @@
+// Options, file I/O and small formatting helpers of the wrenchkit command.
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "cli/common.h"
+#include "exact/input_error.h"
+
+namespace wrenchkit::cli {
+
+namespace {
+
+std::size_t parse_count(const std::string& opt, const std::string& v) {
+  if (v.empty() || v.size() > 18 || v.find_first_not_of("0123456789") != std::string::npos)
+    throw Usage_error(opt + ": \"" + v + "\" is not a non-negative integer");
+  return std::stoull(v);
+}
+
+}  // namespace
+
+Options parse_options(int argc, char** argv, int first) {
+  Options o;
+  for (int i = first; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw Usage_error(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--json") o.json = true;
+    else if (a == "--help" || a == "-h") o.help = true;
+    else if (a == "--mode") o.mode = value();
+    else if (a == "--verdict-only") o.verdict_only = true;
+    else if (a == "--jobs") {
+      const std::size_t j = parse_count(a, value());
+      if (j < 1 || j > 1024) throw Usage_error("--jobs: must be between 1 and 1024");
+      o.jobs = static_cast<unsigned>(j);
+    }
+    else if (a == "--certificate") o.certificate_file = value();
+    else if (a == "--form-certificate") o.form_certificate_file = value();
+    else if (a == "--max-digits") o.limits.max_digits = parse_count(a, value());
+    else if (a == "--max-exponent") o.limits.max_exponent = static_cast<long>(parse_count(a, value()));
+    else if (a == "--max-file-size") o.limits.max_file_bytes = parse_count(a, value());
+    else if (a == "--max-contacts") o.limits.max_contacts = parse_count(a, value());
+    else if (a.size() > 1 && a[0] == '-' && a != "-") throw Usage_error("unknown option " + a);
+    else o.positional.push_back(a);
+  }
+  if (o.mode != "exact" && o.mode != "hybrid" && o.mode != "float")
+    throw Usage_error("--mode: \"" + o.mode + "\" is not one of exact, hybrid, float");
+  return o;
+}
+
+std::string read_input(const std::string& path, std::size_t limit) {
+  std::istream* in = &std::cin;
+  std::ifstream file;
+  if (path != "-") {
+    file.open(path, std::ios::binary);
+    if (!file) throw Input_error(path + ": cannot open (" + std::strerror(errno) + ")");
+    in = &file;
+  }
+  std::string data;
+  char buf[1 << 16];
+  while (*in) {
+    in->read(buf, sizeof buf);
+    data.append(buf, static_cast<std::size_t>(in->gcount()));
+    if (data.size() > limit)
+      throw Input_error(path + ": larger than the size limit of " + std::to_string(limit) +
+                        " bytes (--max-file-size)");
+  }
+  if (in->bad()) throw Input_error(path + ": read error");
+  return data;
+}
+
+void write_file(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp-wrenchkit";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw Input_error(path + ": cannot write (" + std::strerror(errno) + ")");
+    out << text;
+    out.flush();
+    if (!out) {
+      std::remove(tmp.c_str());
+      throw Input_error(path + ": write failed");
+    }
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw Input_error(path + ": cannot write (" + std::strerror(errno) + ")");
+  }
+}
+
+wrenchkit_checker::Limits checker_limits(const Input_limits& l) {
+  wrenchkit_checker::Limits c;
+  c.max_digits = l.max_digits;
+  c.max_exponent = l.max_exponent;
+  c.max_depth = l.max_depth;
+  c.max_contacts = l.max_contacts;
+  return c;
+}
+
+std::string vec_text(const std::array<Rational, 3>& v) {
+  return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")";
+}
+
+Mode mode_of(const std::string& m) {
+  return m == "exact" ? Mode::exact : (m == "float" ? Mode::float_only : Mode::hybrid);
+}
+
+}  // namespace wrenchkit::cli
