@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "exact/closure.h"
+#include "exact/equilibrium.h"
 #include "exact/input_error.h"
 #include "exact/scene.h"
 #include "proofs/checker/checker.h"
@@ -36,9 +37,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const bool claims_holds = cert.find("\"holds\": true") != std::string_view::npos ||
                             cert.find("\"holds\":true") != std::string_view::npos;
   const bool form = cert.find("form_closure") != std::string_view::npos;
+  const bool equilibrium = cert.find("equilibrium") != std::string_view::npos;
+  if (equilibrium && !scene.load) {
+    std::cerr << "checker accepted an equilibrium claim on a scene without load\n";
+    std::abort();
+  }
   const bool holds =
-      wrenchkit::decide_closure(scene, form ? wrenchkit::Property::form_closure : wrenchkit::Property::force_closure)
-          .holds;
+      equilibrium ? wrenchkit::decide_equilibrium(scene).balanced
+                  : wrenchkit::decide_closure(scene, form ? wrenchkit::Property::form_closure
+                                                          : wrenchkit::Property::force_closure)
+                        .holds;
   if (holds != claims_holds) {
     std::cerr << "checker accepted a false claim\n";
     std::abort();

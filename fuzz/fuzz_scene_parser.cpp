@@ -1,13 +1,16 @@
 // libFuzzer target: any bytes as a scene. The parser must never crash, hang or allocate without
-// bound; when it accepts, closure must answer and the independent checker must accept both of
-// its certificates (engine parser and checker parser agree on every scene the engine accepts).
+// bound; when it accepts, closure (exact and hybrid) and, with a load, equilibrium must answer and
+// the independent checker must accept every certificate (engine parser and checker parser agree on
+// every scene the engine accepts).
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
 #include <string_view>
+#include <vector>
 
 #include "exact/closure.h"
+#include "exact/equilibrium.h"
 #include "exact/input_error.h"
 #include "exact/scene.h"
 #include "proofs/checker/checker.h"
@@ -28,8 +31,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   cl.max_digits = limits.max_digits;
   cl.max_exponent = limits.max_exponent;
   cl.max_contacts = limits.max_contacts;
-  for (auto p : {wrenchkit::Property::force_closure, wrenchkit::Property::form_closure}) {
-    const std::string cert = wrenchkit::certificate_json(wrenchkit::decide_closure(scene, p).certificate);
+  std::vector<std::string> certs;
+  for (auto p : {wrenchkit::Property::force_closure, wrenchkit::Property::form_closure})
+    for (auto m : {wrenchkit::Mode::exact, wrenchkit::Mode::hybrid})
+      certs.push_back(wrenchkit::certificate_json(wrenchkit::decide_closure(scene, p, m).certificate));
+  if (scene.load) certs.push_back(wrenchkit::certificate_json(wrenchkit::decide_equilibrium(scene).certificate));
+  for (const std::string& cert : certs) {
     const auto r = wrenchkit_checker::check(text, cert, cl);
     if (r.outcome != wrenchkit_checker::Outcome::accepted) {
       std::cerr << "checker: " << r.message << "\ncertificate: " << cert << "\n";
