@@ -1,18 +1,7 @@
 // wrenchkit analyze (and demo): everything the scene's contents call for.
-#include <algorithm>
-#include <array>
-#include <atomic>
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <exception>
-#include <fstream>
 #include <iostream>
 #include <optional>
-#include <sstream>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 

@@ -1,19 +1,9 @@
 // wrenchkit batch COMMAND: JSON lines in, one answer per line, in order, on --jobs threads.
 #include <algorithm>
-#include <array>
 #include <atomic>
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <exception>
-#include <fstream>
 #include <iostream>
-#include <optional>
-#include <sstream>
 #include <string>
 #include <thread>
-#include <utility>
 #include <vector>
 
 #include "cli/common.h"

@@ -1,20 +1,6 @@
 // wrenchkit check SCENE CERT: the independent checker of proofs/.
-#include <algorithm>
-#include <array>
-#include <atomic>
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <exception>
-#include <fstream>
 #include <iostream>
-#include <optional>
-#include <sstream>
 #include <string>
-#include <thread>
-#include <utility>
-#include <vector>
 
 #include "cli/common.h"
 #include "exact/input_error.h"

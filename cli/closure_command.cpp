@@ -1,20 +1,8 @@
 // wrenchkit closure: force closure and first-order form closure, with checked certificates.
-#include <algorithm>
-#include <array>
-#include <atomic>
-#include <cerrno>
-#include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <exception>
-#include <fstream>
 #include <iostream>
-#include <optional>
 #include <sstream>
 #include <string>
-#include <thread>
-#include <utility>
-#include <vector>
 
 #include "cli/common.h"
 #include "exact/json.h"

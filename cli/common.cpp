@@ -1,19 +1,10 @@
 // Options, file I/O and small formatting helpers of the wrenchkit command.
-#include <algorithm>
-#include <array>
-#include <atomic>
 #include <cerrno>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <exception>
 #include <fstream>
 #include <iostream>
-#include <optional>
-#include <sstream>
 #include <string>
-#include <thread>
-#include <utility>
 #include <vector>
 
 #include "cli/common.h"

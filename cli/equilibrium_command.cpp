@@ -1,20 +1,8 @@
 // wrenchkit equilibrium: can the contacts balance the scene's load? With a checked certificate.
-#include <algorithm>
 #include <array>
-#include <atomic>
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <exception>
-#include <fstream>
 #include <iostream>
-#include <optional>
 #include <sstream>
 #include <string>
-#include <thread>
-#include <utility>
-#include <vector>
 
 #include "cli/common.h"
 #include "exact/json.h"
