@@ -72,7 +72,7 @@ int run_batch(const Options& o) {
           if (too_long[i])
             throw Input_error("line larger than the size limit of " + std::to_string(o.limits.max_file_bytes) +
                               " bytes (--max-file-size)");
-          out[i] = closure_json(o, compute_closure(o, lines[i], "line " + std::to_string(n)), "closure", n);
+          out[i] = closure_json(o, compute_closure(o, lines[i], "line " + std::to_string(n), true), "closure", n);
         } catch (const Input_error& e) {
           out[i] = error_line(n, "error", kBadInput, e.what());
         } catch (const Undecided& e) {

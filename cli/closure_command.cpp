@@ -44,9 +44,10 @@ std::string decided_by(const Closure_answer& a, const Closure_answer& b) {
   return x == y ? x : "hybrid";
 }
 
-Closure_result compute_closure(const Options& o, const std::string& scene_text, const std::string& source) {
+Closure_result compute_closure(const Options& o, const std::string& scene_text, const std::string& source,
+                               bool lazy) {
   Closure_result r;
-  r.scene = read_scene(scene_text, o.limits, source);
+  r.scene = read_scene(scene_text, o.limits, source, lazy && o.mode != "exact");
   const Mode mode = mode_of(o.mode);
   const bool certify = !o.verdict_only;
   r.fc = decide_closure(r.scene, Property::force_closure, mode, certify);

@@ -55,7 +55,9 @@ struct Closure_result {
   Closure_answer fc, fo;
   std::string fc_json, fo_json;  // empty when not certified (batch --verdict-only)
 };
-Closure_result compute_closure(const Options& o, const std::string& scene_text, const std::string& source);
+// `lazy`: read the scene lazily (batch: rationals only if an exact predicate or a certificate needs them).
+Closure_result compute_closure(const Options& o, const std::string& scene_text, const std::string& source,
+                               bool lazy = false);
 std::string closure_json(const Options& o, const Closure_result& r, const char* command, std::size_t line = 0);
 std::string closure_human(const Closure_result& r);
 std::string decided_by(const Closure_answer& a, const Closure_answer& b);

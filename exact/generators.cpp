@@ -1,6 +1,7 @@
 #include "exact/generators.h"
 
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
 
 namespace wrenchkit {
@@ -11,7 +12,9 @@ std::vector<Generator> generators(const Scene& scene, Reading reading) {
   std::vector<Generator> out;
   out.reserve(2 * scene.contacts.size());
   for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
-    const Contact& c = scene.contacts[i];
+    std::optional<Contact> built;  // rationals of a lazily read contact, built here
+    if (scene.contacts[i].exact_pending) built = exact_contact(scene.contacts[i]);
+    const Contact& c = built ? *built : scene.contacts[i];
     if (c.kind == Contact::Kind::wrench) {
       out.push_back({i, Edge::wrench, c.wrench});
       continue;

@@ -20,11 +20,6 @@ Integer integer_of(std::string_view ds) {
   return Integer(std::string(ds), 10);
 }
 
-std::optional<Rational> fail(std::string& why, const char* reason) {
-  why = reason;
-  return std::nullopt;
-}
-
 }  // namespace
 
 fl::Bounded to_bounded(const Rational& q) {
@@ -35,9 +30,16 @@ fl::Bounded to_bounded(const Rational& q) {
   return {v, std::fabs(v) * 0x1p-51};
 }
 
-std::optional<Rational> parse_rational(std::string_view s, bool json_number,
-                                       const Input_limits& limits, std::string& why,
-                                       fl::Bounded* approx) {
+namespace {
+
+// The grammar, the limits, the certified double and the exact sign of a number; the exact value
+// into `out` unless `out` is null and the digits make it unnecessary (then `*exact_skipped`).
+bool parse_impl(std::string_view s, bool json_number, const Input_limits& limits, std::string& why,
+                fl::Bounded* approx, Rational* out, int* sign) {
+  auto fail = [&why](const char* reason) {
+    why = reason;
+    return false;
+  };
   std::size_t i = 0;
   bool negative = false;
   if (i < s.size() && (s[i] == '-' || (!json_number && s[i] == '+'))) {
@@ -50,20 +52,22 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
 
   // Fraction p/q (strings only).
   if (!json_number && i < s.size() && s[i] == '/') {
-    if (int_digits == 0) return fail(why, "is not a number");
+    if (int_digits == 0) return fail("is not a number");
     ++i;
     const std::size_t den_start = i;
     const std::size_t den_digits = digits(s, i);
-    if (den_digits == 0 || i != s.size()) return fail(why, "is not a number");
+    if (den_digits == 0 || i != s.size()) return fail("is not a number");
     if (int_digits + den_digits > limits.max_digits)
-      return fail(why, "has more digits than the digit limit");
+      return fail("has more digits than the digit limit");
     Integer den = integer_of(s.substr(den_start, den_digits));
-    if (den == 0) return fail(why, "has a zero denominator");
+    if (den == 0) return fail("has a zero denominator");
     Rational q(integer_of(int_part), den);
     q.canonicalize();
     if (negative) q = -q;
     if (approx) *approx = to_bounded(q);
-    return q;
+    if (sign) *sign = sgn(q);
+    if (out) *out = std::move(q);
+    return true;
   }
 
   std::string_view frac_part;
@@ -75,12 +79,12 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
     const std::size_t f_digits = digits(s, i);
     frac_part = s.substr(f_start, f_digits);
   }
-  if (int_digits == 0 && frac_part.empty()) return fail(why, "is not a number");
+  if (int_digits == 0 && frac_part.empty()) return fail("is not a number");
   if (json_number) {
     // JSON: int part required, no leading zeros, a point needs digits after it.
     if (int_digits == 0 || (int_digits > 1 && int_part[0] == '0') ||
         (had_point && frac_part.empty()))
-      return fail(why, "is not a number");
+      return fail("is not a number");
   }
   long exponent = 0;
   std::size_t exponent_digits = 0;
@@ -93,20 +97,20 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
     }
     const std::size_t e_start = i;
     const std::size_t e_digits = digits(s, i);
-    if (e_digits == 0) return fail(why, "is not a number");
+    if (e_digits == 0) return fail("is not a number");
     exponent_digits = e_digits;
     std::size_t k = e_start;
     while (k < i && s[k] == '0') ++k;  // leading zeros
-    if (i - k > 18) return fail(why, "has an exponent beyond the exponent limit");
+    if (i - k > 18) return fail("has an exponent beyond the exponent limit");
     for (; k < i; ++k) exponent = exponent * 10 + (s[k] - '0');
     if (exponent > limits.max_exponent)
-      return fail(why, "has an exponent beyond the exponent limit");
+      return fail("has an exponent beyond the exponent limit");
     if (exp_negative) exponent = -exponent;
   }
-  if (i != s.size()) return fail(why, "is not a number");
+  if (i != s.size()) return fail("is not a number");
   // The digit limit counts every digit of the text, exponent included (as the checker does).
   if (int_digits + frac_part.size() + exponent_digits > limits.max_digits)
-    return fail(why, "has more digits than the digit limit");
+    return fail("has more digits than the digit limit");
 
   const long scale = exponent - static_cast<long>(frac_part.size());
   Rational q;
@@ -127,11 +131,15 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
     for (char c : frac_part) m = m * 10 + static_cast<unsigned long>(c - '0');
     unsigned long p = 1;
     for (long k = 0; k < (scale < 0 ? -scale : scale); ++k) p *= 10;
-    if (scale >= 0) {
-      q = Rational(Integer(m * p));
-    } else {
-      mpq_set_ui(q.get_mpq_t(), m, p);
-      q.canonicalize();
+    if (sign) *sign = m == 0 ? 0 : (negative ? -1 : 1);
+    const bool need_exact = out != nullptr || !approx || !(m < (1ul << 53) && p <= 1000000000000000ul);
+    if (need_exact) {
+      if (scale >= 0) {
+        q = Rational(Integer(m * p));
+      } else {
+        mpq_set_ui(q.get_mpq_t(), m, p);
+        q.canonicalize();
+      }
     }
     // The certified double straight from the digits: m < 2^53 and p = 10^k ≤ 10^15 < 2^53 are
     // exact doubles, so one correctly rounded operation gives v, and fma gives its exact error
@@ -173,8 +181,25 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number,
   }
   if (negative) q = -q;
   if (approx && !approx_done) *approx = to_bounded(q);
+  if (sign && !approx_done) *sign = sgn(q);
+  if (out) *out = std::move(q);
+  return true;
+}
+
+}  // namespace
+
+std::optional<Rational> parse_rational(std::string_view s, bool json_number, const Input_limits& limits,
+                                       std::string& why, fl::Bounded* approx) {
+  Rational q;
+  if (!parse_impl(s, json_number, limits, why, approx, &q, nullptr)) return std::nullopt;
   return q;
 }
+
+bool scan_number(std::string_view s, bool json_number, const Input_limits& limits, std::string& why,
+                 fl::Bounded& approx, int& sign) {
+  return parse_impl(s, json_number, limits, why, &approx, nullptr, &sign);
+}
+
 
 std::string to_string(const Rational& q) { return q.get_str(10); }
 

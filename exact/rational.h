@@ -26,6 +26,12 @@ std::optional<Rational> parse_rational(std::string_view text, bool json_number,
                                        const Input_limits& limits, std::string& why,
                                        fl::Bounded* approx = nullptr);
 
+// Validates `text` exactly as parse_rational does and returns its certified double and its exact
+// sign (−1, 0, 1), building no rational when the digits are short enough to avoid it (≤ 18
+// significant digits, |scale| ≤ 15). For the lazy scene reading of the float path.
+bool scan_number(std::string_view text, bool json_number, const Input_limits& limits, std::string& why,
+                 fl::Bounded& approx, int& sign);
+
 // |q − v| ≤ e: v is q rounded toward zero; e = 0 if exact, 2^-51·|v| otherwise (one ulp of a
 // normal double is at most 2^-52·|v|), +∞ if q is outside the normal range of doubles. [FL-4]
 fl::Bounded to_bounded(const Rational& q);

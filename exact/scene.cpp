@@ -1,6 +1,8 @@
 #include "exact/scene.h"
 
 #include <initializer_list>
+#include <limits>
+#include <stdexcept>
 #include <utility>
 
 #include "exact/input_error.h"
@@ -14,7 +16,7 @@ using json::Value;
 
 class Reader {
  public:
-  explicit Reader(const Input_limits& limits) : limits_(limits) {}
+  Reader(const Input_limits& limits, bool lazy) : limits_(limits), lazy_(lazy) {}
 
   Scene scene(const Value& root) {
     expect(root, Type::object, "scene", "an object");
@@ -45,6 +47,7 @@ class Reader {
 
  private:
   const Input_limits& limits_;
+  bool lazy_;
 
   [[noreturn]] static void fail(const std::string& path, const std::string& what) {
     throw Input_error(path + ": " + what);
@@ -100,6 +103,29 @@ class Reader {
     return std::move(*q);
   }
 
+  // Lazy reading of one contact number: validated and turned into a certified double and an exact
+  // sign from its digits; its text is kept for exact_contact().
+  int lazy_number(const Value& v, const std::string& path, Contact& c, int slot, fl::Bounded& approx) const {
+    if (v.type != Type::number && v.type != Type::string)
+      fail(path, std::string("expected a number, got ") + json::type_name(v.type));
+    std::string why;
+    int sign = 0;
+    if (!scan_number(v.text, v.type == Type::number, limits_, why, approx, sign)) {
+      number(v, path);  // the same message as the exact reading
+    }
+    c.number_text[slot] = v.text;
+    c.number_is_json[slot] = v.type == Type::number;
+    return sign;
+  }
+
+  const Value& pair_item(const Value& v, const std::string& path, std::size_t n, std::size_t i) const {
+    if (v.type != Type::array || v.items.size() != n)
+      fail(path, std::string("expected an array of ") + (n == 2 ? "2 numbers" : "3 numbers [fx, fy, m]") + ", got " +
+                     (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
+                                            : std::string(json::type_name(v.type))));
+    return v.items[i];
+  }
+
   Rational nonnegative(const Value& v, const std::string& path, fl::Bounded* approx = nullptr) const {
     Rational q = number(v, path, approx);
     if (q < 0) fail(path, display(v) + " is negative (must be >= 0)");
@@ -143,6 +169,7 @@ class Reader {
       expect(*n, Type::string, path + ".name", "a string");
       c.name = n->text;
     }
+    if (lazy_) return lazy_contact(v, path, std::move(c));
     if (v.find("wrench")) {
       keys(v, path, {"wrench", "name"});
       c.kind = Contact::Kind::wrench;
@@ -170,6 +197,46 @@ class Reader {
     c.twin.ny = n[1];
     c.twin.frictional = c.mu != 0;  // decided exactly
     c.has_twin = true;
+    return c;
+  }
+
+  // The lazy twin of contact(): the same checks in the same order, on exact signs.
+  Contact lazy_contact(const Value& v, const std::string& path, Contact c) const {
+    c.exact_pending = true;
+    c.has_twin = true;
+    if (v.find("wrench")) {
+      keys(v, path, {"wrench", "name"});
+      c.kind = Contact::Kind::wrench;
+      c.twin.is_wrench = true;
+      const Value& w = *v.find("wrench");
+      const std::string wp = path + ".wrench";
+      fl::Bounded* out[3] = {&c.twin.fx, &c.twin.fy, &c.twin.m};
+      int nonzero = 0;
+      for (int i = 0; i < 3; ++i)
+        nonzero |= lazy_number(pair_item(w, wp, 3, i), wp + "[" + std::to_string(i) + "]", c, i, *out[i]);
+      if (!nonzero) fail(wp, "zero wrench");
+      return c;
+    }
+    keys(v, path, {"at", "normal", "mu", "name"});
+    c.kind = Contact::Kind::point;
+    const Value& at = required(v, path, "at");
+    const std::string ap = path + ".at";
+    lazy_number(pair_item(at, ap, 2, 0), ap + "[0]", c, 0, c.twin.ax);
+    lazy_number(pair_item(at, ap, 2, 1), ap + "[1]", c, 1, c.twin.ay);
+    const Value& n = required(v, path, "normal");
+    const std::string np = path + ".normal";
+    const int sx = lazy_number(pair_item(n, np, 2, 0), np + "[0]", c, 2, c.twin.nx);
+    const int sy = lazy_number(pair_item(n, np, 2, 1), np + "[1]", c, 3, c.twin.ny);
+    if (sx == 0 && sy == 0) fail(np, "zero vector");
+    int smu = 0;
+    c.number_text[4] = "0";
+    c.number_is_json[4] = true;
+    c.twin.mu = fl::Bounded::exact(0);
+    if (const Value* mu = v.find("mu")) {
+      smu = lazy_number(*mu, path + ".mu", c, 4, c.twin.mu);
+      if (smu < 0) fail(path + ".mu", display(*mu) + " is negative (must be >= 0)");
+    }
+    c.twin.frictional = smu != 0;
     return c;
   }
 
@@ -232,12 +299,35 @@ class Reader {
 
 }  // namespace
 
-Scene read_scene(std::string_view json_text, const Input_limits& limits, std::string_view source) {
+Contact exact_contact(const Contact& c) {
+  if (!c.exact_pending) return c;
+  Contact e = c;
+  Input_limits unlimited;  // the texts were validated against the caller's limits already
+  unlimited.max_digits = static_cast<std::size_t>(-1);
+  unlimited.max_exponent = std::numeric_limits<long>::max();
+  auto q = [&](int slot) {
+    std::string why;
+    auto r = parse_rational(c.number_text[slot], c.number_is_json[slot], unlimited, why);
+    if (!r) throw std::logic_error("exact_contact: a validated number no longer parses");
+    return *r;
+  };
+  if (c.kind == Contact::Kind::wrench) {
+    e.wrench = {q(0), q(1), q(2)};
+  } else {
+    e.at = {q(0), q(1)};
+    e.normal = {q(2), q(3)};
+    e.mu = q(4);
+  }
+  e.exact_pending = false;
+  return e;
+}
+
+Scene read_scene(std::string_view json_text, const Input_limits& limits, std::string_view source, bool lazy) {
   if (json_text.size() > limits.max_file_bytes)
     throw Input_error(std::string(source) + ": larger than the size limit of " +
                       std::to_string(limits.max_file_bytes) + " bytes (--max-file-size)");
   const json::Value root = json::parse(json_text, limits, source);
-  return Reader(limits).scene(root);
+  return Reader(limits, lazy).scene(root);
 }
 
 }  // namespace wrenchkit

@@ -1,6 +1,7 @@
 // The scene model (interface.md §1, docs/scene-format.md): every number an exact rational.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -33,7 +34,16 @@ struct Contact {
   // the digits; `has_twin` false (a scene built in code) means: derive it from the rationals.
   fl::Bounded_contact twin;
   bool has_twin = false;
+  // Lazy reading (read_scene(…, lazy = true)): the rationals above are NOT filled; the numbers'
+  // texts are kept (point: at x, at y, normal x, normal y, mu; wrench: fx, fy, m) and
+  // exact_contact() builds them when exact arithmetic is needed. Validation was exact all the same.
+  bool exact_pending = false;
+  std::array<std::string, 5> number_text;
+  std::array<bool, 5> number_is_json{};
 };
+
+// The contact with its rationals filled (a copy when it was read lazily).
+Contact exact_contact(const Contact& c);
 
 struct Load {
   enum class Kind { force, wrench, gravity };
@@ -69,7 +79,9 @@ struct Scene {
 
 // Reads and validates a scene. Throws Input_error naming the JSON path and the offending text
 // (or "SOURCE:LINE:COL: invalid JSON: …"). `source` names the input in messages.
+// `lazy`: contacts keep their numbers as text and certified doubles (for the float twin) and build
+// rationals only on demand (exact_contact); same validation, same errors.
 Scene read_scene(std::string_view json_text, const Input_limits& limits,
-                 std::string_view source = "scene");
+                 std::string_view source = "scene", bool lazy = false);
 
 }  // namespace wrenchkit

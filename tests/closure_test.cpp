@@ -424,3 +424,28 @@ TEST(ClosureDifferential, LargeScenesUseTheRandomizedPathWithValidCertificates) 
 
 }  // namespace
 }  // namespace wrenchkit
+
+namespace wrenchkit {
+namespace {
+
+// Lazily read scenes (batch) give the same answers and valid certificates in every mode.
+TEST(ClosureDifferential, LazySceneReadingGivesTheSameAnswers) {
+  std::mt19937_64 rng(test::seed(4242));
+  for (int i = 0; i < 500; ++i) {
+    const std::string text = scene_json(test::random_contacts(rng, 8));
+    const Scene eager = read_scene(text, Input_limits{});
+    const Scene lazy = read_scene(text, Input_limits{}, "scene", true);
+    for (Property p : {Property::force_closure, Property::form_closure})
+      for (Mode m : {Mode::exact, Mode::hybrid, Mode::float_only}) {
+        const Closure_answer a = decide_closure(eager, p, m), b = decide_closure(lazy, p, m);
+        ASSERT_EQ(a.decided, b.decided) << text;
+        if (!a.decided) continue;
+        ASSERT_EQ(a.holds, b.holds) << text;
+        ASSERT_EQ(a.rank, b.rank) << text;
+        ASSERT_TRUE(test::checker_accepts(text, certificate_json(b.certificate)));
+      }
+  }
+}
+
+}  // namespace
+}  // namespace wrenchkit

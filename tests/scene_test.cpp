@@ -189,6 +189,52 @@ TEST(SceneErrors, MalformedJsonNamesLineAndColumn) {
   EXPECT_NE(error_of(std::string(1000000, '[')).find("nesting deeper"), std::string::npos);
 }
 
+// The lazy reading (batch) must accept and reject exactly what the eager one does, with the same
+// messages, and give the same rationals on demand.
+TEST(SceneModel, LazyReadingMatchesTheEagerOne) {
+  const std::vector<std::string> texts = {
+      R"({"wrenchkit": 1, "contacts": [{"at": [0.1, "1/3"], "normal": [1, "-2.5e-3"], "mu": "0.5"}, {"wrench": [0, 0, 1]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0,0], "normal": [0, "0.000"]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0,0], "normal": [1,0], "mu": "-0.0"}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0,0], "normal": [1,0], "mu": "-1e-30"}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0,0,1], "normal": [1,0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0,"x"], "normal": [1,0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"wrench": [0, "0/7", "0e5"]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"wrench": [0, 0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, "1/0"], "normal": [1,0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 1e10001], "normal": [1,0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 123456789012345678901234567890.5], "normal": [1e-300, 0], "mu": 1e300}]})",
+      R"({"wrenchkit": 1, "contacts": [{"normal": [1,0]}]})",
+  };
+  for (const std::string& t : texts) {
+    SCOPED_TRACE(t);
+    std::string eager_error, lazy_error;
+    Scene eager, lazy;
+    try { eager = read_scene(t, Input_limits{}, "s"); } catch (const Input_error& e) { eager_error = e.what(); }
+    try { lazy = read_scene(t, Input_limits{}, "s", true); } catch (const Input_error& e) { lazy_error = e.what(); }
+    EXPECT_EQ(eager_error, lazy_error);
+    if (!eager_error.empty()) continue;
+    ASSERT_EQ(eager.contacts.size(), lazy.contacts.size());
+    for (std::size_t i = 0; i < eager.contacts.size(); ++i) {
+      const Contact a = eager.contacts[i], b = exact_contact(lazy.contacts[i]);
+      EXPECT_TRUE(lazy.contacts[i].exact_pending);
+      EXPECT_EQ(a.at.x, b.at.x);
+      EXPECT_EQ(a.at.y, b.at.y);
+      EXPECT_EQ(a.normal.x, b.normal.x);
+      EXPECT_EQ(a.normal.y, b.normal.y);
+      EXPECT_EQ(a.mu, b.mu);
+      EXPECT_EQ(a.wrench.m, b.wrench.m);
+      EXPECT_EQ(a.twin.frictional, lazy.contacts[i].twin.frictional);
+      for (int k = 0; k < 3; ++k) {  // the same certified doubles
+        const fl::Bounded* x[] = {&a.twin.ax, &a.twin.nx, &a.twin.mu};
+        const fl::Bounded* y[] = {&lazy.contacts[i].twin.ax, &lazy.contacts[i].twin.nx, &lazy.contacts[i].twin.mu};
+        EXPECT_EQ(x[k]->v, y[k]->v);
+        EXPECT_EQ(x[k]->e, y[k]->e);
+      }
+    }
+  }
+}
+
 TEST(SceneModel, ReadsEveryField) {
   const Scene s = read_scene(R"({
     "wrenchkit": 1, "name": "corner \u00e9",
