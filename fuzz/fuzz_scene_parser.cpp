@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -21,11 +22,30 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   limits.max_digits = 200;  // keep big-number work small per input
   limits.max_exponent = 200;
   limits.max_contacts = 64;
-  wrenchkit::Scene scene;
+  wrenchkit::Scene scene, lazy;
+  std::string eager_error, lazy_error;
   try {
     scene = wrenchkit::read_scene(text, limits, "fuzz");
-  } catch (const wrenchkit::Input_error&) {
-    return 0;
+  } catch (const wrenchkit::Input_error& e) {
+    eager_error = e.what();
+  }
+  try {  // the lazy reading (batch) must accept and reject exactly the same, with the same message
+    lazy = wrenchkit::read_scene(text, limits, "fuzz", true);
+  } catch (const wrenchkit::Input_error& e) {
+    lazy_error = e.what();
+  }
+  if (eager_error != lazy_error) {
+    std::cerr << "eager: " << eager_error << "\nlazy: " << lazy_error << "\n";
+    std::abort();
+  }
+  if (!eager_error.empty()) return 0;
+  for (auto p : {wrenchkit::Property::force_closure, wrenchkit::Property::form_closure}) {
+    const auto a = wrenchkit::decide_closure(scene, p, wrenchkit::Mode::hybrid, false);
+    const auto b = wrenchkit::decide_closure(lazy, p, wrenchkit::Mode::hybrid, false);
+    if (a.holds != b.holds || a.rank != b.rank) {
+      std::cerr << "lazy and eager scenes disagree\n";
+      std::abort();
+    }
   }
   wrenchkit_checker::Limits cl;
   cl.max_digits = limits.max_digits;
