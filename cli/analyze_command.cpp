@@ -19,11 +19,7 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
     throw Usage_error("analyze writes its certificates in its JSON output; use closure or equilibrium for files");
   const Closure_result c = compute_closure(o, scene_text, source);
   std::optional<Equilibrium_result> e;
-  if (c.scene.load) {
-    if (o.mode == "float")
-      throw Usage_error("--mode float: equilibrium has no float twin yet; use --mode exact or hybrid");
-    e = compute_equilibrium(o, c.scene, scene_text);
-  }
+  if (c.scene.load) e = compute_equilibrium(o, c.scene, scene_text);
   std::vector<std::pair<std::string, std::string>> skipped;
   if (c.scene.support)
     skipped.push_back({"limit_surface", "the scene has a support; limit surfaces are not implemented in this version"});
@@ -42,7 +38,7 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
   if (e) std::cout << equilibrium_human(*e);
   for (const auto& [what, why] : skipped) std::cout << "skipped " << what << ": " << why << "\n";
   std::cout << "decided by: " << decided_by(c.fc, c.fo) << " for closure"
-            << (e ? ", exact for equilibrium" : "") << "\n"
+            << (e ? std::string(", ") + e->a.decided_by() + " for equilibrium" : std::string()) << "\n"
             << "every certificate accepted by the independent checker (exact arithmetic)\n";
   return kAnswered;
 }

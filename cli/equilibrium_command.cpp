@@ -10,7 +10,10 @@
 namespace wrenchkit::cli {
 
 Equilibrium_result compute_equilibrium(const Options& o, const Scene& scene, const std::string& scene_text) {
-  Equilibrium_result r{decide_equilibrium(scene), ""};
+  Equilibrium_result r{decide_equilibrium(scene, mode_of(o.mode)), ""};
+  if (!r.a.decided)
+    throw Undecided("the float twin could not certify equilibrium of this scene (a predicate is within its "
+                    "error bound of zero, or the contact wrenches have rank < 3); use --mode hybrid or exact");
   r.cert = certificate_json(r.a.certificate);
   const auto c = wrenchkit_checker::check(scene_text, r.cert, checker_limits(o.limits));
   if (c.outcome != wrenchkit_checker::Outcome::accepted)
@@ -22,7 +25,7 @@ Equilibrium_result compute_equilibrium(const Options& o, const Scene& scene, con
 std::string equilibrium_json(const Options& o, const Scene& scene, const Equilibrium_result& r, const char* command) {
   const Wrench& l = r.a.load;
   return "{\"command\": \"" + std::string(command) + "\", \"name\": " + json::quote(scene.name) +
-         ", \"mode\": \"" + o.mode + "\", \"decided_by\": \"exact\", \"balanced\": " +
+         ", \"mode\": \"" + o.mode + "\", \"decided_by\": \"" + r.a.decided_by() + "\", \"balanced\": " +
          (r.a.balanced ? "true" : "false") + ", \"load\": [" + json::quote(to_string(l.fx)) + ", " +
          json::quote(to_string(l.fy)) + ", " + json::quote(to_string(l.m)) + "], \"generators\": " +
          std::to_string(r.a.generators) + ", \"certificate_checked\": true, \"certificate\": " + r.cert + "}";
@@ -57,8 +60,6 @@ std::string equilibrium_human(const Equilibrium_result& r) {
 }
 
 int run_equilibrium(const Options& o, const std::string& scene_text, const std::string& source) {
-  if (o.mode == "float")
-    throw Usage_error("--mode float: equilibrium has no float twin yet; use --mode exact or hybrid");
   if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
   if (!o.form_certificate_file.empty()) throw Usage_error("--form-certificate is for closure");
   const Scene scene = read_scene(scene_text, o.limits, source);

@@ -61,7 +61,9 @@ const char* kEquilibriumHelp =
     "\n"
     "options:\n"
     "  --json, --certificate FILE, --max-* (as for closure)\n"
-    "  --mode exact|hybrid    both decide exactly (the float twin of equilibrium is not written yet)\n";
+    "  --mode exact|hybrid|float  exact: the exact cone LP; hybrid (default): the float twin's\n"
+    "                             certified signs on the dual cone, exact where they cannot decide;\n"
+    "                             float: the twin alone (exit 3 if it cannot decide)\n";
 
 const char* kAnalyzeHelp =
     "usage: wrenchkit analyze [OPTIONS] SCENE.json\n"

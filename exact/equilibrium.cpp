@@ -1,7 +1,12 @@
 #include "exact/equilibrium.h"
 
+#include <stdexcept>
+
+#include "core/dual_cone.h"
 #include "exact/cone_lp.h"
+#include "exact/hybrid_kernel.h"
 #include "exact/input_error.h"
+#include "exact/to_float.h"
 
 namespace wrenchkit {
 
@@ -18,19 +23,17 @@ Wrench load_wrench(const Scene& scene) {
   return wrench_at(l.at, l.force);
 }
 
-Equilibrium_answer decide_equilibrium(const Scene& scene) {
-  if (!scene.load) throw Input_error("load: the scene has no load (equilibrium needs one)");
-  Equilibrium_answer a;
-  a.load = load_wrench(scene);
-  const std::vector<Generator> gens = generators(scene, Reading::friction);
-  a.generators = gens.size();
+namespace {
+
+// [EQ-1] The exact LP decides and certifies: balancing weights, or a Farkas twist.
+void decide_by_lp(const std::vector<Generator>& gens, Equilibrium_answer& a, bool certify) {
   std::vector<Wrench> ws;
   ws.reserve(gens.size());
   for (const Generator& g : gens) ws.push_back(g.w);
-  const Wrench target{-a.load.fx, -a.load.fy, -a.load.m};
-  const Cone_membership m = cone_membership(ws, target);
+  const Cone_membership m = cone_membership(ws, Wrench{-a.load.fx, -a.load.fy, -a.load.m});
   a.balanced = m.member;
   a.certificate.holds = m.member;
+  if (!certify) return;
   if (m.member) {
     for (std::size_t i = 0; i < gens.size(); ++i)
       if (m.weights[i] != 0) a.certificate.combination.push_back({{gens[i].contact, gens[i].edge}, m.weights[i]});
@@ -38,6 +41,101 @@ Equilibrium_answer decide_equilibrium(const Scene& scene) {
     const Rational in[3] = {m.twist[0], m.twist[1], m.twist[2]};
     Integer out[3];
     primitive(in, out);
+    a.certificate.twist = {Rational(out[0]), Rational(out[1]), Rational(out[2])};
+  }
+}
+
+// The load as error-bounded doubles [FL-4].
+fl::Bounded3 load_bounded(const Scene& scene) {
+  const Load& l = *scene.load;
+  switch (l.kind) {
+    case Load::Kind::wrench:
+      return {to_bounded(l.wrench.fx), to_bounded(l.wrench.fy), to_bounded(l.wrench.m)};
+    case Load::Kind::gravity: {
+      const fl::Bounded w = to_bounded(l.weight);
+      return {fl::Bounded::exact(0), -w, -(w * to_bounded(scene.body.com->x))};
+    }
+    case Load::Kind::force:
+      break;
+  }
+  const fl::Bounded fx = to_bounded(l.force.x), fy = to_bounded(l.force.y);
+  return {fx, fy, to_bounded(l.at.x) * fy - to_bounded(l.at.y) * fx};
+}
+
+}  // namespace
+
+Equilibrium_answer decide_equilibrium(const Scene& scene, Mode mode, bool certify) {
+  if (!scene.load) throw Input_error("load: the scene has no load (equilibrium needs one)");
+  Equilibrium_answer a;
+  a.mode = mode;
+  a.load = load_wrench(scene);
+  if (mode != Mode::exact && a.load.fx == 0 && a.load.fy == 0 && a.load.m == 0) {
+    a.generators = generators(scene, Reading::friction).size();
+    a.balanced = a.certificate.holds = true;  // the zero load needs no force
+    return a;
+  }
+  if (mode == Mode::exact) {
+    const std::vector<Generator> gens = generators(scene, Reading::friction);
+    a.generators = gens.size();
+    decide_by_lp(gens, a, certify);
+    return a;
+  }
+  // [EQ-2] The dual cone over the filtered kernel, with the load as an extra row (index n).
+  std::vector<fl::Bounded3> rows = fl::generators(to_bounded(scene), Reading::friction);
+  const std::size_t n = rows.size();
+  a.generators = n;
+  rows.push_back(load_bounded(scene));
+  const fl::Float_kernel twin(std::move(rows));
+  const Lazy_generators lazy(scene, Reading::friction, {a.load});
+  const Hybrid_kernel kernel(twin, lazy, mode == Mode::hybrid);
+  const Dual_cone dc = compute_dual_cone(First_rows<Hybrid_kernel>{kernel, n});
+  auto undecided = [&] {
+    a.decided = false;
+    a.predicates = kernel.n;
+    a.exact_predicates = kernel.exact_n;
+    return a;
+  };
+  if (!dc.decided) return undecided();
+  if (dc.rank < 3) {  // W* has a lineality space: decide by the exact LP (hybrid) or abstain (float)
+    if (mode == Mode::float_only) return undecided();
+    a.predicates = kernel.n + 1;
+    a.exact_predicates = kernel.exact_n + 1;
+    decide_by_lp(lazy.get(), a, certify);
+    return a;
+  }
+  a.balanced = true;
+  std::size_t va = 0, vb = 0;  // an extreme ray g_va × g_vb of W* with ⟨ray, w⟩ > 0, if any
+  if (dc.shape != Dual_shape::zero) {
+    const std::vector<std::size_t>& e = dc.edges;
+    const std::size_t K = dc.shape == Dual_shape::ray ? 1 : e.size();
+    for (std::size_t j = 0; j < K && a.balanced; ++j) {
+      const std::size_t p = e[j], q = e[(j + 1) % e.size()];
+      const Sign s = kernel.det_sign(p, q, n);
+      if (s == Sign::uncertain) return undecided();
+      if (s == Sign::positive) {
+        a.balanced = false;
+        va = p;
+        vb = q;
+      }
+    }
+  }
+  a.predicates = kernel.n;
+  a.exact_predicates = kernel.exact_n;
+  a.certificate.holds = a.balanced;
+  if (!certify) return a;
+  const std::vector<Generator>& gens = lazy.get();
+  if (gens.size() != n) throw std::logic_error("decide_equilibrium: twin and engine disagree on generators");
+  if (a.balanced) {
+    Equilibrium_answer lp = a;
+    decide_by_lp(gens, lp, true);
+    if (!lp.balanced) throw std::logic_error("decide_equilibrium: dual cone and LP disagree");
+    a.certificate = lp.certificate;
+  } else {
+    const Wrench& g = gens[va].w;
+    const Wrench& h = gens[vb].w;
+    const Rational t[3] = {g.fy * h.m - g.m * h.fy, g.m * h.fx - g.fx * h.m, g.fx * h.fy - g.fy * h.fx};
+    Integer out[3];
+    primitive(t, out);
     a.certificate.twist = {Rational(out[0]), Rational(out[1]), Rational(out[2])};
   }
   return a;

@@ -31,14 +31,26 @@ struct Equilibrium_certificate {
 };
 
 struct Equilibrium_answer {
+  Mode mode = Mode::exact;
+  bool decided = true;  // false only in Mode::float_only
   bool balanced = false;
   Wrench load;
   std::size_t generators = 0;
-  Equilibrium_certificate certificate;
+  Equilibrium_certificate certificate;  // built exactly, in every mode (when certify)
+  std::size_t predicates = 0, exact_predicates = 0;  // signs of the dual-cone path (hybrid, float)
+  const char* decided_by() const {
+    if (mode == Mode::exact) return "exact";
+    return exact_predicates == 0 ? "float" : (exact_predicates == predicates ? "exact" : "hybrid");
+  }
 };
 
 // Throws Input_error("load: …") if the scene has no load.
-Equilibrium_answer decide_equilibrium(const Scene& scene);
+//   exact:       the exact cone LP [FC-4] decides and certifies;
+//   hybrid/float [EQ-2]: the dual cone W* [FC-1] over the filtered kernel; when rank W = 3,
+//                −w ∈ W ⇔ det[g_a; g_b; w] ≤ 0 at every extreme ray g_a × g_b of W* (and always when
+//                W* = {0}). Rank < 3: hybrid decides by the exact LP, float says undecided.
+// `certify` false skips the certificate (throughput).
+Equilibrium_answer decide_equilibrium(const Scene& scene, Mode mode = Mode::exact, bool certify = true);
 
 std::string certificate_json(const Equilibrium_certificate& c);
 

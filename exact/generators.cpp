@@ -55,6 +55,11 @@ Exact_kernel::Exact_kernel(const std::vector<Wrench>& wrenches) {
   for (const Wrench& w : wrenches) {
     const Rational in[3] = {w.fx, w.fy, w.m};
     Row r;
+    if (w.fx == 0 && w.fy == 0 && w.m == 0) {  // a zero row (an extra row such as a zero load)
+      r.small = true;
+      rows_.push_back(std::move(r));
+      continue;
+    }
     primitive(in, r.v);
     r.small = true;
     for (int c = 0; c < 3; ++c) r.small &= abs(r.v[c]) < kSmallBound;

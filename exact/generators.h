@@ -29,6 +29,8 @@ std::vector<Generator> generators(const Scene& scene, Reading reading);
 // replaced by its primitive integer multiple (a positive scaling: the cone is unchanged); signs
 // are computed in 128-bit integers when every coordinate is below 2^40 in magnitude (exact:
 // a 3×3 determinant is then below 6·2^120 < 2^127) and in GMP integers otherwise. Never uncertain.
+// Zero rows are allowed (their determinants are zero); the dual-cone algorithm itself needs
+// nonzero generators, which scenes guarantee.
 class Exact_kernel {
  public:
   explicit Exact_kernel(const std::vector<Wrench>& wrenches);

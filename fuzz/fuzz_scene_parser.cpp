@@ -55,7 +55,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (auto p : {wrenchkit::Property::force_closure, wrenchkit::Property::form_closure})
     for (auto m : {wrenchkit::Mode::exact, wrenchkit::Mode::hybrid})
       certs.push_back(wrenchkit::certificate_json(wrenchkit::decide_closure(scene, p, m).certificate));
-  if (scene.load) certs.push_back(wrenchkit::certificate_json(wrenchkit::decide_equilibrium(scene).certificate));
+  if (scene.load) {
+    const auto exact = wrenchkit::decide_equilibrium(scene, wrenchkit::Mode::exact);
+    certs.push_back(wrenchkit::certificate_json(exact.certificate));
+    for (auto m : {wrenchkit::Mode::hybrid, wrenchkit::Mode::float_only}) {
+      const auto e = wrenchkit::decide_equilibrium(scene, m);
+      if ((m == wrenchkit::Mode::hybrid && !e.decided) || (e.decided && e.balanced != exact.balanced)) {
+        std::cerr << "equilibrium: mode " << wrenchkit::mode_name(m) << " disagrees with exact\n";
+        std::abort();
+      }
+      if (e.decided) certs.push_back(wrenchkit::certificate_json(e.certificate));
+    }
+  }
   for (const std::string& cert : certs) {
     const auto r = wrenchkit_checker::check(text, cert, cl);
     if (r.outcome != wrenchkit_checker::Outcome::accepted) {

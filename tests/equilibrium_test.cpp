@@ -65,9 +65,17 @@ TEST(EquilibriumGolden, TextbookScenesOfTheory9) {
     const std::string text = test::read_text(f);
     const bool want = test::read_text(f.substr(0, f.size() - 11) + ".expected.json").find("\"balanced\": true") !=
                       std::string::npos;
-    const Equilibrium_answer a = decide_equilibrium(read_scene(text, Input_limits{}));
+    const Scene s = read_scene(text, Input_limits{});
+    const Equilibrium_answer a = decide_equilibrium(s);
     EXPECT_EQ(a.balanced, want);
     EXPECT_TRUE(test::checker_accepts(text, certificate_json(a.certificate)));
+    for (Mode m : {Mode::hybrid, Mode::float_only}) {
+      const Equilibrium_answer b = decide_equilibrium(s, m);
+      EXPECT_TRUE(b.decided || m == Mode::float_only);
+      if (!b.decided) continue;
+      EXPECT_EQ(b.balanced, want) << mode_name(m);
+      EXPECT_TRUE(test::checker_accepts(text, certificate_json(b.certificate))) << mode_name(m);
+    }
     ++n;
   }
   EXPECT_GE(n, 28);
@@ -120,6 +128,21 @@ TEST(Equilibrium, AgreesWithBruteForceOnRandomScenesAndLoads) {
       return;
     }
     balanced += a.balanced;
+    // [EQ-2] The dual-cone path agrees: hybrid always, float whenever it decides.
+    for (Mode m : {Mode::hybrid, Mode::float_only}) {
+      const Equilibrium_answer b = decide_equilibrium(s, m);
+      if (m == Mode::hybrid) {
+        ASSERT_TRUE(b.decided);
+      }
+      if (!b.decided) continue;
+      const auto ok = test::checker_accepts(text, certificate_json(b.certificate));
+      if (b.balanced != brute || !ok) {
+        ADD_FAILURE() << "seed " << seed << " case " << i << " " << mode_name(m) << ": " << b.balanced
+                      << " vs brute force " << brute << "\n" << ok.message() << "\nscene dumped to "
+                      << test::dump_failure(text, "equilibrium_mode_" + std::to_string(seed) + "_" + std::to_string(i));
+        return;
+      }
+    }
     // Tampering: a doubled weight no longer cancels the load; a negated twist has negative power
     // against the load.
     Equilibrium_certificate t = a.certificate;
