@@ -19,6 +19,7 @@
 
 #include "core/dual_cone.h"
 #include "exact/closure.h"
+#include "exact/equilibrium.h"
 #include "float/closure_twin.h"
 
 namespace {
@@ -27,6 +28,13 @@ using namespace wrenchkit;
 
 struct Spec {
   double ax, ay, nx, ny, mu;
+  std::string mu_text = "";  // written instead of mu when set (an exact fraction)
+};
+
+// An optional load for equilibrium families: gravity w at (cx, cy).
+struct Gravity {
+  bool present = false;
+  double cx = 0, cy = 0, w = 1;
 };
 
 // Decimal text with 17 significant digits: exactly what the double prints, read exactly by the
@@ -37,12 +45,14 @@ std::string num(double x) {
   return b;
 }
 
-std::string scene_text(const std::vector<Spec>& cs) {
-  std::string s = "{\"wrenchkit\": 1, \"contacts\": [";
+std::string scene_text(const std::vector<Spec>& cs, const Gravity& g = {}) {
+  std::string s = "{\"wrenchkit\": 1, ";
+  if (g.present) s += "\"body\": {\"com\": [" + num(g.cx) + ", " + num(g.cy) + "]}, \"load\": {\"gravity\": " + num(g.w) + "}, ";
+  s += "\"contacts\": [";
   for (std::size_t i = 0; i < cs.size(); ++i) {
     const Spec& c = cs[i];
     s += (i ? ", " : "") + std::string("{\"at\": [") + num(c.ax) + ", " + num(c.ay) + "], \"normal\": [" + num(c.nx) +
-         ", " + num(c.ny) + "], \"mu\": " + num(c.mu) + "}";
+         ", " + num(c.ny) + "], \"mu\": " + (c.mu_text.empty() ? num(c.mu) : "\"" + c.mu_text + "\"") + "}";
   }
   return s + "]}";
 }
@@ -53,6 +63,8 @@ struct Family {
   const char* what;
   Property property;
   std::function<std::vector<Spec>(std::mt19937_64&, double eps)> make;
+  bool equilibrium = false;  // decide equilibrium of the gravity load below instead of closure
+  std::function<Gravity(const std::vector<Spec>&)> load = nullptr;
 };
 
 double uni(std::mt19937_64& r, double a, double b) { return std::uniform_real_distribution<double>(a, b)(r); }
@@ -107,7 +119,58 @@ std::vector<Family> families() {
          return place({{0, 0.5, 1, 0, mu}, {1, y2, -1, 0, mu}}, uni(r, 0, 6.28), 1e6 * uni(r, 1, 2), -1e6 * uni(r, 1, 2),
                       1e3);
        }},
+      {"ladder_equilibrium",
+       "leaning square under gravity (equilibrium), μ = (1/7)·(1 ± ε) written as an exact fraction: balanced iff μ ≥ 1/7",
+       Property::force_closure,
+       [](std::mt19937_64& r, double eps) {
+         // μ = (10^k ± 1) / (7·10^k) written as an exact fraction, ε = 10^-k; the naive reading
+         // divides the two integers in double, as float code would.
+         const int k = static_cast<int>(std::lround(-std::log10(eps)));
+         const bool above = r() & 1;
+         const std::string p = above ? "1" + std::string(k - 1, '0') + "1" : std::string(k, '9');
+         const std::string q = "7" + std::string(k, '0');
+         const double mu = std::strtod(p.c_str(), nullptr) / std::strtod(q.c_str(), nullptr);
+         // Floor contact at (0,0) n=(0,1), wall contact at (−4,3) n=(1,0); the COM is at (−1/2, 7/2),
+         // carried as a third record that the harness turns into the gravity load.
+         std::vector<Spec> cs{{0, 0, 0, 1, mu}, {-4, 3, 1, 0, mu}, {-0.5, 3.5, 0, 0, -1}};
+         cs[0].mu_text = cs[1].mu_text = p + "/" + q;
+         return cs;
+       },
+       true,
+       [](const std::vector<Spec>& cs) { return Gravity{true, cs[2].ax, cs[2].ay, 1}; }},
   };
+}
+
+// The naive equilibrium: the same doubles, raw signs on the dual cone's extreme rays (rank 3).
+bool naive_balanced(const std::vector<Spec>& cs, const Gravity& g) {
+  std::vector<fl::Bounded_contact> b;
+  for (const Spec& c : cs) {
+    fl::Bounded_contact k;
+    k.ax = fl::Bounded::exact(c.ax);
+    k.ay = fl::Bounded::exact(c.ay);
+    k.nx = fl::Bounded::exact(c.nx);
+    k.ny = fl::Bounded::exact(c.ny);
+    k.mu = fl::Bounded::exact(c.mu);
+    k.frictional = c.mu != 0;
+    b.push_back(k);
+  }
+  std::vector<fl::Bounded3> rows = fl::generators(b, Reading::friction);
+  const std::size_t n = rows.size();
+  rows.push_back({fl::Bounded::exact(0), fl::Bounded::exact(-g.w), fl::Bounded::exact(-g.w * g.cx)});
+  const fl::Naive_kernel k(rows);
+  struct First {
+    const fl::Naive_kernel& k;
+    std::size_t n;
+    std::size_t size() const { return n; }
+    Sign cross_sign(std::size_t i, std::size_t j) const { return k.cross_sign(i, j); }
+    Sign det_sign(std::size_t i, std::size_t j, std::size_t l) const { return k.det_sign(i, j, l); }
+  };
+  const Dual_cone dc = compute_dual_cone(First{k, n});
+  if (dc.shape == Dual_shape::zero) return true;
+  const std::size_t K = dc.shape == Dual_shape::ray ? 1 : dc.edges.size();
+  for (std::size_t j = 0; j < K; ++j)
+    if (k.det_sign(dc.edges[j], dc.edges[(j + 1) % dc.edges.size()], n) == Sign::positive) return false;
+  return true;
 }
 
 bool naive_closure(const std::vector<Spec>& cs, Property p) {
@@ -208,20 +271,36 @@ int main(int argc, char** argv) {
       row.family = fam.name;
       row.eps = eps;
       for (int c = 0; c < cases; ++c) {
-        const std::vector<Spec> cs = fam.make(rng, eps);
-        const std::string text = scene_text(cs);
+        std::vector<Spec> cs = fam.make(rng, eps);
+        Gravity grav;
+        if (fam.equilibrium) {
+          grav = fam.load(cs);
+          cs.pop_back();  // the COM record is not a contact
+        }
+        const std::string text = scene_text(cs, grav);
         const Scene scene = read_scene(text, Input_limits{});
+        struct Verdict {
+          bool decided, holds;
+        };
+        auto decide = [&](Mode m) -> Verdict {
+          if (fam.equilibrium) {
+            const Equilibrium_answer a = decide_equilibrium(scene, m, false);
+            return {a.decided, a.balanced};
+          }
+          const Closure_answer a = decide_closure(scene, fam.property, m, false);
+          return {a.decided, a.holds};
+        };
         double t = now();
-        const Closure_answer exact = decide_closure(scene, fam.property, Mode::exact, false);
+        const Verdict exact = decide(Mode::exact);
         row.t_exact += now() - t;
         t = now();
-        const Closure_answer twin = decide_closure(scene, fam.property, Mode::float_only, false);
+        const Verdict twin = decide(Mode::float_only);
         row.t_twin += now() - t;
         t = now();
-        const Closure_answer hybrid = decide_closure(scene, fam.property, Mode::hybrid, false);
+        const Verdict hybrid = decide(Mode::hybrid);
         row.t_hybrid += now() - t;
         t = now();
-        const bool naive = naive_closure(cs, fam.property);
+        const bool naive = fam.equilibrium ? naive_balanced(cs, grav) : naive_closure(cs, fam.property);
         row.t_naive += now() - t;
         ++row.cases;
         row.naive_wrong += naive != exact.holds;
