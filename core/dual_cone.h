@@ -423,6 +423,41 @@ Dual_cone compute_dual_cone(const Kernel& kernel) {
   return kernel.size() <= kSmallDualCone ? b.run_simple() : b.run();
 }
 
+// Restricts a kernel to its first n rows as generators; predicates may still name row n and beyond
+// (equilibrium asks det(g_a, g_b, w) with the load w as an extra row).
+template <class Kernel>
+struct First_rows {
+  const Kernel& k;
+  std::size_t n;
+  std::size_t size() const { return n; }
+  Sign cross_sign(std::size_t i, std::size_t j) const { return k.cross_sign(i, j); }
+  Sign det_sign(std::size_t i, std::size_t j, std::size_t l) const { return k.det_sign(i, j, l); }
+};
+
+// [EQ-2] Is the load in kernel row `w` balanced, −w ∈ W, given the dual cone W* of the generators
+// (decided, rank 3, so W* is the conic hull of its extreme rays g_a × g_b)? −w ∈ W ⇔ ⟨r, −w⟩ ≥ 0
+// for every extreme ray r ⇔ det[g_a; g_b; w] ≤ 0 at every vertex; always when W* = {0}.
+// Returns positive (balanced), negative (not balanced; `witness` = a vertex {a, b} whose ray
+// g_a × g_b has power > 0 against the load) or uncertain.
+template <class Kernel>
+Sign load_balanced(const Kernel& kernel, const Dual_cone& dc, std::size_t w,
+                   std::array<std::size_t, 2>* witness = nullptr) {
+  if (!dc.decided || dc.rank < 3) throw std::logic_error("load_balanced: needs a decided rank-3 dual cone");
+  if (dc.shape == Dual_shape::zero) return Sign::positive;
+  const std::vector<std::size_t>& e = dc.edges;
+  const std::size_t K = dc.shape == Dual_shape::ray ? 1 : e.size();
+  for (std::size_t j = 0; j < K; ++j) {
+    const std::size_t a = e[j], b = e[(j + 1) % e.size()];
+    const Sign s = kernel.det_sign(a, b, w);
+    if (s == Sign::uncertain) return s;
+    if (s == Sign::positive) {
+      if (witness) *witness = {a, b};
+      return Sign::negative;
+    }
+  }
+  return Sign::positive;
+}
+
 // The randomized construction whatever the size (for tests).
 template <class Kernel>
 Dual_cone compute_dual_cone_randomized(const Kernel& kernel) {

@@ -30,21 +30,6 @@ const char* mode_name(Mode m) {
 
 namespace {
 
-using Vec3 = std::array<Rational, 3>;
-
-Vec3 as_vec(const Wrench& w) { return {w.fx, w.fy, w.m}; }
-
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-Vec3 primitive_vec(const Vec3& v) {
-  const Rational in[3] = {v[0], v[1], v[2]};
-  Integer out[3];
-  primitive(in, out);
-  return {Rational(out[0]), Rational(out[1]), Rational(out[2])};
-}
-
 // [FC-3] A nonzero twist with power ≥ 0 against every generator.
 Vec3 negative_twist(const Dual_cone& dc, const std::vector<Generator>& gens) {
   switch (dc.shape) {

@@ -38,10 +38,7 @@ void decide_by_lp(const std::vector<Generator>& gens, Equilibrium_answer& a, boo
     for (std::size_t i = 0; i < gens.size(); ++i)
       if (m.weights[i] != 0) a.certificate.combination.push_back({{gens[i].contact, gens[i].edge}, m.weights[i]});
   } else {
-    const Rational in[3] = {m.twist[0], m.twist[1], m.twist[2]};
-    Integer out[3];
-    primitive(in, out);
-    a.certificate.twist = {Rational(out[0]), Rational(out[1]), Rational(out[2])};
+    a.certificate.twist = primitive_vec(m.twist);
   }
 }
 
@@ -103,22 +100,10 @@ Equilibrium_answer decide_equilibrium(const Scene& scene, Mode mode, bool certif
     decide_by_lp(lazy.get(), a, certify);
     return a;
   }
-  a.balanced = true;
-  std::size_t va = 0, vb = 0;  // an extreme ray g_va × g_vb of W* with ⟨ray, w⟩ > 0, if any
-  if (dc.shape != Dual_shape::zero) {
-    const std::vector<std::size_t>& e = dc.edges;
-    const std::size_t K = dc.shape == Dual_shape::ray ? 1 : e.size();
-    for (std::size_t j = 0; j < K && a.balanced; ++j) {
-      const std::size_t p = e[j], q = e[(j + 1) % e.size()];
-      const Sign s = kernel.det_sign(p, q, n);
-      if (s == Sign::uncertain) return undecided();
-      if (s == Sign::positive) {
-        a.balanced = false;
-        va = p;
-        vb = q;
-      }
-    }
-  }
+  std::array<std::size_t, 2> witness{};  // an extreme ray of W* with ⟨ray, w⟩ > 0, if any
+  const Sign balanced = load_balanced(kernel, dc, n, &witness);
+  if (balanced == Sign::uncertain) return undecided();
+  a.balanced = balanced == Sign::positive;
   a.predicates = kernel.n;
   a.exact_predicates = kernel.exact_n;
   a.certificate.holds = a.balanced;
@@ -131,12 +116,7 @@ Equilibrium_answer decide_equilibrium(const Scene& scene, Mode mode, bool certif
     if (!lp.balanced) throw std::logic_error("decide_equilibrium: dual cone and LP disagree");
     a.certificate = lp.certificate;
   } else {
-    const Wrench& g = gens[va].w;
-    const Wrench& h = gens[vb].w;
-    const Rational t[3] = {g.fy * h.m - g.m * h.fy, g.m * h.fx - g.fx * h.m, g.fx * h.fy - g.fy * h.fx};
-    Integer out[3];
-    primitive(t, out);
-    a.certificate.twist = {Rational(out[0]), Rational(out[1]), Rational(out[2])};
+    a.certificate.twist = primitive_vec(cross(as_vec(gens[witness[0]].w), as_vec(gens[witness[1]].w)));
   }
   return a;
 }

@@ -39,6 +39,19 @@ void primitive(const Rational in[3], Integer out[3]) {
   for (int c = 0; c < 3; ++c) mpz_divexact(out[c].get_mpz_t(), out[c].get_mpz_t(), g.get_mpz_t());
 }
 
+Vec3 as_vec(const Wrench& w) { return {w.fx, w.fy, w.m}; }
+
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+Vec3 primitive_vec(const Vec3& v) {
+  const Rational in[3] = {v[0], v[1], v[2]};
+  Integer out[3];
+  primitive(in, out);
+  return {Rational(out[0]), Rational(out[1]), Rational(out[2])};
+}
+
 namespace {
 
 __extension__ typedef __int128 i128;  // GCC and Clang both provide it

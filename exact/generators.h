@@ -1,6 +1,7 @@
 // [FC-0] Contact wrench generators (theory.md §4, §8.2) and the exact predicate kernel over them.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -49,5 +50,11 @@ class Exact_kernel {
 
 // The primitive integer vector positively parallel to a nonzero rational 3-vector.
 void primitive(const Rational in[3], Integer out[3]);
+
+using Vec3 = std::array<Rational, 3>;
+Vec3 as_vec(const Wrench& w);
+Vec3 cross(const Vec3& a, const Vec3& b);
+// `primitive` for a Vec3, as rationals (how twists are written in certificates).
+Vec3 primitive_vec(const Vec3& v);
 
 }  // namespace wrenchkit

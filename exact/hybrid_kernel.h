@@ -78,15 +78,4 @@ class Hybrid_kernel {
 };
 
 
-// Restricts a kernel to its first n rows as generators; predicates may still name row n and beyond
-// (equilibrium asks det(g_a, g_b, w) with the load w as an extra row).
-template <class Kernel>
-struct First_rows {
-  const Kernel& k;
-  std::size_t n;
-  std::size_t size() const { return n; }
-  Sign cross_sign(std::size_t i, std::size_t j) const { return k.cross_sign(i, j); }
-  Sign det_sign(std::size_t i, std::size_t j, std::size_t l) const { return k.det_sign(i, j, l); }
-};
-
 }  // namespace wrenchkit

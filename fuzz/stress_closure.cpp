@@ -141,8 +141,9 @@ std::vector<Family> families() {
   };
 }
 
-// The naive equilibrium: the same doubles, raw signs on the dual cone's extreme rays (rank 3).
-bool naive_balanced(const std::vector<Spec>& cs, const Gravity& g) {
+// The naive reading of a scene: the doubles themselves (strtod of the same text gives them back),
+// and raw double signs (Naive_kernel), through the same generic algorithms as the twin.
+std::vector<fl::Bounded3> naive_generators(const std::vector<Spec>& cs, Reading reading) {
   std::vector<fl::Bounded_contact> b;
   for (const Spec& c : cs) {
     fl::Bounded_contact k;
@@ -154,39 +155,21 @@ bool naive_balanced(const std::vector<Spec>& cs, const Gravity& g) {
     k.frictional = c.mu != 0;
     b.push_back(k);
   }
-  std::vector<fl::Bounded3> rows = fl::generators(b, Reading::friction);
+  return fl::generators(b, reading);
+}
+
+bool naive_balanced(const std::vector<Spec>& cs, const Gravity& g) {
+  std::vector<fl::Bounded3> rows = naive_generators(cs, Reading::friction);
   const std::size_t n = rows.size();
   rows.push_back({fl::Bounded::exact(0), fl::Bounded::exact(-g.w), fl::Bounded::exact(-g.w * g.cx)});
   const fl::Naive_kernel k(rows);
-  struct First {
-    const fl::Naive_kernel& k;
-    std::size_t n;
-    std::size_t size() const { return n; }
-    Sign cross_sign(std::size_t i, std::size_t j) const { return k.cross_sign(i, j); }
-    Sign det_sign(std::size_t i, std::size_t j, std::size_t l) const { return k.det_sign(i, j, l); }
-  };
-  const Dual_cone dc = compute_dual_cone(First{k, n});
-  if (dc.shape == Dual_shape::zero) return true;
-  const std::size_t K = dc.shape == Dual_shape::ray ? 1 : dc.edges.size();
-  for (std::size_t j = 0; j < K; ++j)
-    if (k.det_sign(dc.edges[j], dc.edges[(j + 1) % dc.edges.size()], n) == Sign::positive) return false;
-  return true;
+  const Dual_cone dc = compute_dual_cone(First_rows<fl::Naive_kernel>{k, n});
+  if (dc.rank < 3) return false;  // naive code would not special-case it either; counts as a guess
+  return load_balanced(k, dc, n) == Sign::positive;
 }
 
 bool naive_closure(const std::vector<Spec>& cs, Property p) {
-  // strtod of the same text gives back these doubles exactly: the naive reading of the scene.
-  std::vector<fl::Bounded_contact> b;
-  for (const Spec& c : cs) {
-    fl::Bounded_contact k;
-    k.ax = fl::Bounded::exact(c.ax);
-    k.ay = fl::Bounded::exact(c.ay);
-    k.nx = fl::Bounded::exact(c.nx);
-    k.ny = fl::Bounded::exact(c.ny);
-    k.mu = fl::Bounded::exact(c.mu);
-    k.frictional = c.mu != 0;
-    b.push_back(k);
-  }
-  const fl::Naive_kernel k(fl::generators(b, reading_of(p)));
+  const fl::Naive_kernel k(naive_generators(cs, reading_of(p)));
   return compute_dual_cone(k).force_closure();
 }
 

@@ -84,11 +84,9 @@ TEST(Cli, ClosureJsonCertificateRoundTripsThroughCheck) {
 
 TEST(Cli, EveryGoldenSceneThroughTheCommandAndTheChecker) {
   int n = 0;
-  for (const auto& e : fs::directory_iterator(test::source_dir() + "/tests/golden")) {
-    const std::string file = e.path().string();
-    if (file.size() < 11 || file.compare(file.size() - 11, 11, ".scene.json")) continue;
+  for (const std::string& file : test::scene_files("tests/golden")) {
     SCOPED_TRACE(file);
-    const std::string expected = test::read_text(file.substr(0, file.size() - 11) + ".expected.json");
+    const std::string expected = test::expected_of(file);
     const std::string cert = (scratch() / "g_fc.json").string(), form = (scratch() / "g_fo.json").string();
     const Cli_result r = run("closure --json --certificate '" + cert + "' --form-certificate '" + form + "' '" + file + "'");
     ASSERT_EQ(r.code, 0) << r.err;
@@ -200,12 +198,7 @@ TEST(Cli, ModesAgreeAndFloatSaysWhenItCannotDecide) {
 
 TEST(Cli, BatchAnswersEveryLineInOrderOnManyThreads) {
   // 40 lines: golden scenes interleaved with bad lines; the answers keep the input order.
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(test::source_dir() + "/tests/golden")) {
-    const std::string f = e.path().string();
-    if (f.size() > 11 && !f.compare(f.size() - 11, 11, ".scene.json")) names.push_back(f);
-  }
-  std::sort(names.begin(), names.end());
+  const std::vector<std::string> names = test::scene_files("tests/golden");
   std::string input;
   std::vector<int> expect;  // 1 closure true, 0 false, -1 error
   for (int i = 0; i < 40; ++i) {
@@ -218,7 +211,7 @@ TEST(Cli, BatchAnswersEveryLineInOrderOnManyThreads) {
     std::string text = test::read_text(f);
     text.erase(std::remove(text.begin(), text.end(), '\n'), text.end());
     input += text + "\n";
-    const std::string expected = test::read_text(f.substr(0, f.size() - 11) + ".expected.json");
+    const std::string expected = test::expected_of(f);
     expect.push_back(expected.find("\"force_closure\": true") != std::string::npos);
   }
   for (const char* jobs : {"1", "3"}) {

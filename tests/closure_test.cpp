@@ -291,11 +291,6 @@ TEST(ClosureCertificates, TamperedCertificatesAreRejected) {
   EXPECT_GT(negatives, 20);
 }
 
-}  // namespace
-}  // namespace wrenchkit
-
-namespace wrenchkit {
-namespace {
 
 // ---- Thresholds: random two-finger grasps at μ* and μ* ± 10^-40 against Nguyen's test. ----
 //
@@ -338,11 +333,6 @@ TEST(ClosureThresholds, TwoFingerGraspsAtAndAroundNguyensThreshold) {
   EXPECT_EQ(tested, 300);
 }
 
-}  // namespace
-}  // namespace wrenchkit
-
-namespace wrenchkit {
-namespace {
 
 // [FC-1] The randomized construction with conflict lists against the plain reference clipping:
 // same decision, same shape, and (for polygons, arcs, rays) the same cone — every extreme ray of
@@ -387,11 +377,6 @@ TEST(ClosureDifferential, RandomizedConstructionMatchesTheReference) {
   }
 }
 
-}  // namespace
-}  // namespace wrenchkit
-
-namespace wrenchkit {
-namespace {
 
 // Above kSmallDualCone generators decide_closure uses the randomized construction: its verdicts
 // (against the reference clipping) and its certificates (through the checker), in every mode.
@@ -422,11 +407,6 @@ TEST(ClosureDifferential, LargeScenesUseTheRandomizedPathWithValidCertificates) 
   EXPECT_GT(large, 100);
 }
 
-}  // namespace
-}  // namespace wrenchkit
-
-namespace wrenchkit {
-namespace {
 
 // Lazily read scenes (batch) give the same answers and valid certificates in every mode.
 TEST(ClosureDifferential, LazySceneReadingGivesTheSameAnswers) {

@@ -3,7 +3,6 @@
 // Carathéodory brute force, every certificate through the independent checker, tampering.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <random>
 
 #include "exact/equilibrium.h"
@@ -13,7 +12,6 @@
 namespace wrenchkit {
 namespace {
 
-namespace fs = std::filesystem;
 using V = std::array<Rational, 3>;
 
 // −w ∈ pos(g) by Carathéodory: some ≤ 3 generators with a non-negative exact solution.
@@ -58,13 +56,10 @@ bool brute_force_balanced(const std::vector<Wrench>& g, const Wrench& w) {
 
 TEST(EquilibriumGolden, TextbookScenesOfTheory9) {
   int n = 0;
-  for (const auto& e : fs::directory_iterator(test::source_dir() + "/tests/golden/equilibrium")) {
-    const std::string f = e.path().string();
-    if (f.size() < 11 || f.compare(f.size() - 11, 11, ".scene.json")) continue;
+  for (const std::string& f : test::scene_files("tests/golden/equilibrium")) {
     SCOPED_TRACE(f);
     const std::string text = test::read_text(f);
-    const bool want = test::read_text(f.substr(0, f.size() - 11) + ".expected.json").find("\"balanced\": true") !=
-                      std::string::npos;
+    const bool want = test::expected_of(f).find("\"balanced\": true") != std::string::npos;
     const Scene s = read_scene(text, Input_limits{});
     const Equilibrium_answer a = decide_equilibrium(s);
     EXPECT_EQ(a.balanced, want);

@@ -3,7 +3,6 @@
 // brute force). Every certificate is re-checked by the independent checker.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <regex>
 
 #include "cli/demo_scene.h"
@@ -12,8 +11,6 @@
 
 namespace wrenchkit {
 namespace {
-
-namespace fs = std::filesystem;
 
 bool expected_bool(const std::string& expected, const std::string& key) {
   std::smatch m;
@@ -30,16 +27,11 @@ int expected_rank(const std::string& expected, const std::string& key) {
 }
 
 TEST(Golden, EveryTextbookSceneHasItsExpectedVerdictAndACheckedCertificate) {
-  const fs::path dir = fs::path(test::source_dir()) / "tests" / "golden";
   int count = 0;
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    const std::string file = entry.path().filename().string();
-    const std::string suffix = ".scene.json";
-    if (file.size() <= suffix.size() || file.compare(file.size() - suffix.size(), suffix.size(), suffix)) continue;
-    const std::string name = file.substr(0, file.size() - suffix.size());
-    SCOPED_TRACE(name);
-    const std::string text = test::read_text(entry.path().string());
-    const std::string expected = test::read_text((dir / (name + ".expected.json")).string());
+  for (const std::string& file : test::scene_files("tests/golden")) {
+    SCOPED_TRACE(file);
+    const std::string text = test::read_text(file);
+    const std::string expected = test::expected_of(file);
     const Scene s = read_scene(text, Input_limits{});
     const Closure_answer fc = decide_closure(s, Property::force_closure);
     const Closure_answer fo = decide_closure(s, Property::form_closure);

@@ -1,5 +1,6 @@
 #include "tests/test_support.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +18,21 @@ std::string read_text(const std::string& path) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+std::vector<std::string> scene_files(const std::string& folder) {
+  std::vector<std::string> out;
+  const std::string suffix = ".scene.json";
+  for (const auto& e : std::filesystem::directory_iterator(source_dir() + "/" + folder)) {
+    const std::string f = e.path().string();
+    if (f.size() > suffix.size() && !f.compare(f.size() - suffix.size(), suffix.size(), suffix)) out.push_back(f);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string expected_of(const std::string& scene_file) {
+  return read_text(scene_file.substr(0, scene_file.size() - std::string(".scene.json").size()) + ".expected.json");
 }
 
 std::string scene_json(const std::vector<Contact_spec>& contacts, const std::string& name) {

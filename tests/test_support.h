@@ -15,6 +15,10 @@ namespace wrenchkit::test {
 
 std::string source_dir();
 std::string read_text(const std::string& path);
+// The *.scene.json files of a folder under the source tree (not recursive), sorted, and the text of
+// the matching *.expected.json.
+std::vector<std::string> scene_files(const std::string& folder);
+std::string expected_of(const std::string& scene_file);
 
 // A contact written as text, exactly as a user would (empty mu: none written).
 struct Contact_spec {
