@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
+#include <string>
 #include <string_view>
 
 #include "exact/closure.h"
@@ -12,6 +13,28 @@
 #include "exact/input_error.h"
 #include "exact/scene.h"
 #include "proofs/checker/checker.h"
+
+namespace {
+
+// The JSON value text right after the key `"key"` and its colon (whitespace skipped), up to the next
+// ',' or '}'. The checker accepted the certificate, so it is valid JSON with each key once; keys
+// and string values of a certificate never contain the key text of another member.
+std::string_view value_of(std::string_view json, std::string_view key) {
+  const std::string quoted = "\"" + std::string(key) + "\"";
+  std::size_t i = json.find(quoted);
+  if (i == std::string_view::npos) return {};
+  i += quoted.size();
+  auto ws = [&] { while (i < json.size() && (json[i] == ' ' || json[i] == '\t' || json[i] == '\n' || json[i] == '\r')) ++i; };
+  ws();
+  if (i < json.size() && json[i] == ':') ++i;
+  ws();
+  const std::size_t end = json.find_first_of(",}", i);
+  std::string_view v = json.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i);
+  while (!v.empty() && (v.back() == ' ' || v.back() == '\n' || v.back() == '\r' || v.back() == '\t')) v.remove_suffix(1);
+  return v;
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view all(reinterpret_cast<const char*>(data), size);
@@ -34,10 +57,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const wrenchkit::Input_error& e) {
     return 0;  // the checker reads only what it needs; the engine's schema is stricter
   }
-  const bool claims_holds = cert.find("\"holds\": true") != std::string_view::npos ||
-                            cert.find("\"holds\":true") != std::string_view::npos;
-  const bool form = cert.find("form_closure") != std::string_view::npos;
-  const bool equilibrium = cert.find("equilibrium") != std::string_view::npos;
+  // The claim, read token-wise (JSON allows whitespace around the colon).
+  const bool claims_holds = value_of(cert, "holds") == "true";
+  const std::string_view property = value_of(cert, "property");
+  const bool form = property == "\"form_closure\"";
+  const bool equilibrium = property == "\"equilibrium\"";
   if (equilibrium && !scene.load) {
     std::cerr << "checker accepted an equilibrium claim on a scene without load\n";
     std::abort();
