@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -45,12 +46,38 @@ Options parse_options(int argc, char** argv, int first) {
     else if (a == "--max-exponent") o.limits.max_exponent = static_cast<long>(parse_count(a, value()));
     else if (a == "--max-file-size") o.limits.max_file_bytes = parse_count(a, value());
     else if (a == "--max-contacts") o.limits.max_contacts = parse_count(a, value());
+    else if (a == "--resultant" || a == "--center" || a == "--sense" || a == "--direction" ||
+             a == "--twist" || a == "--what" || a == "-o" || a == "--output") {
+      std::string& slot = o.values[a == "-o" ? "--output" : a];
+      if (!slot.empty()) throw Usage_error(a + " given twice");
+      slot = value();
+      if (slot.empty()) throw Usage_error(a + ": empty value");
+    }
     else if (a.size() > 1 && a[0] == '-' && a != "-") throw Usage_error("unknown option " + a);
     else o.positional.push_back(a);
   }
   if (o.mode != "exact" && o.mode != "hybrid" && o.mode != "float")
     throw Usage_error("--mode: \"" + o.mode + "\" is not one of exact, hybrid, float");
   return o;
+}
+
+std::vector<Rational> parse_vector(const Options& o, const std::string& option, std::size_t n) {
+  const std::string& text = o.values.at(option);
+  std::vector<Rational> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    std::string why;
+    const std::optional<Rational> q = parse_rational(part, false, o.limits, why);
+    if (!q) throw Usage_error(option + ": \"" + part + "\" " + why);
+    out.push_back(*q);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (out.size() != n)
+    throw Usage_error(option + ": \"" + text + "\" needs " + std::to_string(n) + " comma-separated numbers");
+  return out;
 }
 
 std::string read_input(const std::string& path, std::size_t limit) {

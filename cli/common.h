@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -27,6 +28,10 @@ struct Options {
   std::string certificate_file, form_certificate_file;
   Input_limits limits;
   std::vector<std::string> positional;
+  // Command-specific options with a value (--resultant, --center, --sense, --direction,
+  // --twist, --what, --output/-o): set only when given.
+  std::map<std::string, std::string> values;
+  bool has(const std::string& option) const { return values.count(option) != 0; }
 };
 
 // Exit 2 (usage), 3 (--mode float undecided), 4 (our own certificate rejected: a bug).
@@ -41,6 +46,8 @@ struct Self_check_failure : std::runtime_error {
 };
 
 Options parse_options(int argc, char** argv, int first);
+// The exact numbers of a "a,b,…" option value (decimal or p/q each, as in scenes); exactly n of them.
+std::vector<Rational> parse_vector(const Options& o, const std::string& option, std::size_t n);
 // Reads a whole file (or standard input for "-"), refusing more than `limit` bytes.
 std::string read_input(const std::string& path, std::size_t limit);
 // Writes FILE atomically: a temporary beside it, then a rename, so nothing is half-written.
@@ -77,5 +84,11 @@ int run_equilibrium(const Options& o, const std::string& scene_text, const std::
 int run_analyze(const Options& o, const std::string& scene_text, const std::string& source, const char* command);
 int run_batch(const Options& o);
 int run_check(const Options& o);
+
+// labels_command.cpp: labels, dual, reuleaux;  render_command.cpp: render
+int run_labels(const Options& o, const std::string& scene_text, const std::string& source);
+int run_dual(const Options& o, const std::string& scene_text, const std::string& source);
+int run_reuleaux(const Options& o, const std::string& scene_text, const std::string& source);
+int run_render(const Options& o, const std::string& scene_text, const std::string& source);
 
 }  // namespace wrenchkit::cli

@@ -18,6 +18,12 @@ const char* kUsage =
     "            closure of the same contacts read frictionless (Reuleaux), with certificates\n"
     "  equilibrium  can the contacts, with their friction, balance the scene's load? With a\n"
     "            certificate either way (the contact forces, or a motion the load drives)\n"
+    "  labels    the moment labels of the contact wrench cone: the + and - regions, the +- set\n"
+    "            and the labeled points at infinity, exactly (Mason ch. 5)\n"
+    "  dual      the force-dual polygon of the contact wrench cone on the two-sided plane\n"
+    "  reuleaux  Reuleaux's method: feasible rotation centres of the contacts read frictionless,\n"
+    "            and per-contact modes (break/slide/stick) of a given motion\n"
+    "  render    an SVG picture: render SCENE.json --what labels|dual|reuleaux -o FILE.svg\n"
     "  check     wrenchkit check SCENE.json CERT.json: the independent checker (proofs/)\n"
     "            accepts (exit 0) or rejects (exit 1) a certificate\n"
     "  analyze   everything the scene calls for: closure, and equilibrium when it has a load\n"
@@ -64,6 +70,60 @@ const char* kEquilibriumHelp =
     "  --mode exact|hybrid|float  exact: the exact cone LP; hybrid (default): the float twin's\n"
     "                             certified signs on the dual cone, exact where they cannot decide;\n"
     "                             float: the twin alone (exit 3 if it cannot decide)\n";
+
+const char* kLabelsHelp =
+    "usage: wrenchkit labels [OPTIONS] SCENE.json\n"
+    "\n"
+    "Moment labeling of the contact wrench cone W (friction included), exactly (theory.md §5):\n"
+    "  +   points about which every possible contact wrench has moment >= 0 (the centres of the\n"
+    "      counter-clockwise rotations every contact allows), - the same for <= 0 (clockwise),\n"
+    "  +-  points about which every moment is zero, and the labeled points at infinity (the\n"
+    "      translations every contact allows). Force closure <=> nothing is labeled.\n"
+    "Regions are exact: rational corners counter-clockwise and primitive integer directions where\n"
+    "they run to infinity; region = conv(vertices) + pos(directions) (docs/cli.md).\n"
+    "\n"
+    "options:\n"
+    "  --json                    machine-readable output (docs/cli.md)\n"
+    "  --resultant fx,fy,m       is this wrench a possible resultant of the contact forces?\n"
+    "  --max-*                   input limits, as for closure\n"
+    "With a load in the scene, also whether it can be balanced (read on the labels).\n";
+
+const char* kDualHelp =
+    "usage: wrenchkit dual [OPTIONS] SCENE.json\n"
+    "\n"
+    "The force dual (theory.md §6): each wrench w = (fx, fy, m) is the point D(w) = (-fy, fx, m) of\n"
+    "the two-sided plane (front sheet m > 0, back sheet m < 0, at infinity m = 0), and the wrench\n"
+    "cone is a convex polygon through infinity. covers_all <=> force closure. When the + label\n"
+    "region has interior points, also the ordinary polygon about a reference point inside it.\n"
+    "\n"
+    "options: --json, --max-* (as for closure)\n";
+
+const char* kReuleauxHelp =
+    "usage: wrenchkit reuleaux [OPTIONS] SCENE.json\n"
+    "\n"
+    "Reuleaux's method (theory.md §7): the contacts read frictionless; the + / - regions are the\n"
+    "feasible counter-clockwise / clockwise rotation centres, the labeled points at infinity the\n"
+    "feasible translations. None at all <=> first-order form closure. With a motion, each contact's\n"
+    "mode: break (v.n > 0), slide (v.n = 0, v != 0), stick (v = 0), penetrate (v.n < 0).\n"
+    "\n"
+    "options:\n"
+    "  --json\n"
+    "  --center x,y [--sense ccw|cw]   a rotation about (x, y) (default counter-clockwise)\n"
+    "  --direction dx,dy               the translation toward the point at infinity (dx, dy)\n"
+    "                                  (velocity (dy, -dx), theory.md §5.1)\n"
+    "  --twist vx,vy,w                 any twist\n"
+    "  --max-*                         input limits, as for closure\n";
+
+const char* kRenderHelp =
+    "usage: wrenchkit render SCENE.json --what labels|dual|reuleaux [-o FILE.svg]\n"
+    "\n"
+    "Draws the construction as an SVG picture (standard output without -o): the body, the\n"
+    "contacts with their friction cones (or normals), the lines of force, the + / - regions\n"
+    "shaded and clipped to a disc whose rim is the circle at infinity (labeled directions drawn\n"
+    "on it, arrows where regions run off), the load, and a legend. Exact construction, drawn in\n"
+    "floating point. docs/gallery.md shows the textbook cases.\n"
+    "\n"
+    "options: --what labels|dual|reuleaux, -o/--output FILE, --max-*\n";
 
 const char* kAnalyzeHelp =
     "usage: wrenchkit analyze [OPTIONS] SCENE.json\n"
@@ -123,6 +183,17 @@ int dispatch(int argc, char** argv) {
     return kAnswered;
   }
   const Options o = parse_options(argc, argv, 2);
+  const auto scene_command = [&](const char* help, int (*run)(const Options&, const std::string&, const std::string&)) {
+    if (o.help) return std::cout << help, static_cast<int>(kAnswered);
+    if (o.positional.size() != 1) throw Usage_error(command + " needs exactly one SCENE.json");
+    const std::string& path = o.positional[0];
+    return run(o, read_input(path, o.limits.max_file_bytes), path == "-" ? "<stdin>" : path);
+  };
+  if (command == "labels") return scene_command(kLabelsHelp, run_labels);
+  if (command == "dual") return scene_command(kDualHelp, run_dual);
+  if (command == "reuleaux") return scene_command(kReuleauxHelp, run_reuleaux);
+  if (command == "render") return scene_command(kRenderHelp, run_render);
+  if (!o.values.empty()) throw Usage_error(o.values.begin()->first + " is not an option of " + command);
   if (command == "closure") {
     if (o.help) return std::cout << kClosureHelp, kAnswered;
     if (o.positional.size() != 1) throw Usage_error("closure needs exactly one SCENE.json");

@@ -320,5 +320,138 @@ TEST(Cli, LimitsCanBeRaised) {
   EXPECT_EQ(r.code, 0) << r.err;
 }
 
+
+// A minimal XML well-formedness check of an SVG: one root <svg>, every tag closed in order,
+// attributes quoted, no "nan"/"inf" coordinates.
+::testing::AssertionResult well_formed_svg(const std::string& svg) {
+  if (svg.rfind("<?xml", 0) != 0) return ::testing::AssertionFailure() << "no XML declaration";
+  if (svg.find("nan") != std::string::npos || svg.find("inf\"") != std::string::npos)
+    return ::testing::AssertionFailure() << "non-finite number";
+  std::vector<std::string> open;
+  std::size_t i = svg.find("?>") + 2, roots = 0;
+  while ((i = svg.find('<', i)) != std::string::npos) {
+    const std::size_t end = svg.find('>', i);
+    if (end == std::string::npos) return ::testing::AssertionFailure() << "unterminated tag at " << i;
+    const std::string tag = svg.substr(i + 1, end - i - 1);
+    if (tag.empty()) return ::testing::AssertionFailure() << "empty tag";
+    if (std::count(tag.begin(), tag.end(), '"') % 2) return ::testing::AssertionFailure() << "unbalanced quotes: " << tag;
+    if (tag[0] == '/') {
+      if (open.empty() || open.back() != tag.substr(1)) return ::testing::AssertionFailure() << "mismatched </" << tag;
+      open.pop_back();
+    } else if (tag.back() != '/') {
+      const std::string name = tag.substr(0, tag.find_first_of(" \n"));
+      if (open.empty()) ++roots;
+      if (open.empty() && name != "svg") return ::testing::AssertionFailure() << "root is " << name;
+      open.push_back(name);
+    }
+    i = end + 1;
+  }
+  if (!open.empty()) return ::testing::AssertionFailure() << "unclosed <" << open.back();
+  if (roots != 1) return ::testing::AssertionFailure() << roots << " roots";
+  return ::testing::AssertionSuccess();
+}
+
+TEST(Cli, LabelsAnswerExactlyAndAgreeWithClosure) {
+  const Cli_result r = run("labels --json '" + golden("block_corner_mu_0") + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"plus\": {\"empty\": false, \"shape\": \"wedge\", \"vertices\": [[\"0\", \"1\"]], "
+                       "\"directions\": [[\"0\", \"1\"], [\"-1\", \"0\"]]}"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"infinity\": [{\"from\": [\"0\", \"1\"], \"to\": [\"-1\", \"0\"]}]"), std::string::npos);
+  const Cli_result h = run("labels '" + golden("block_corner_mu_0") + "'");
+  EXPECT_NE(h.out.find("the wedge at (0, 1)"), std::string::npos) << h.out;
+  // Possible resultants (theory.md §5.5): the upward force through the centre yes; a push to the left
+  // at (0, 1/2) (the reaction a pull to the right would need) no.
+  EXPECT_NE(run("labels --json --resultant 0,1,1/2 '" + golden("block_corner_mu_0") + "'").out.find("\"possible\": true"),
+            std::string::npos);
+  EXPECT_NE(run("labels --json --resultant -1,0,1/2 '" + golden("block_corner_mu_0") + "'").out.find("\"possible\": false"),
+            std::string::npos);
+  for (const std::string& file : test::scene_files("tests/golden")) {
+    SCOPED_TRACE(file);
+    const bool fc = test::expected_of(file).find("\"force_closure\": true") != std::string::npos;
+    const bool fo = test::expected_of(file).find("\"form_closure\": true") != std::string::npos;
+    const Cli_result l = run("labels --json '" + file + "'");
+    ASSERT_EQ(l.code, 0) << l.err;
+    EXPECT_NE(l.out.find(std::string("\"force_closure\": ") + (fc ? "true" : "false")), std::string::npos);
+    const Cli_result d = run("dual --json '" + file + "'");
+    ASSERT_EQ(d.code, 0) << d.err;
+    EXPECT_NE(d.out.find(std::string("\"covers_all\": ") + (fc ? "true" : "false")), std::string::npos);
+    const Cli_result u = run("reuleaux --json '" + file + "'");
+    ASSERT_EQ(u.code, 0) << u.err;
+    EXPECT_NE(u.out.find(std::string("\"form_closure\": ") + (fo ? "true" : "false")), std::string::npos);
+  }
+}
+
+TEST(Cli, LabelsReadTheLoad) {
+  for (const std::string& file : test::scene_files("tests/golden/equilibrium")) {
+    SCOPED_TRACE(file);
+    const bool balanced = test::expected_of(file).find("\"balanced\": true") != std::string::npos;
+    const Cli_result l = run("labels --json '" + file + "'");
+    ASSERT_EQ(l.code, 0) << l.err;
+    EXPECT_NE(l.out.find(std::string("\"balanced\": ") + (balanced ? "true" : "false")), std::string::npos) << l.out;
+  }
+}
+
+TEST(Cli, DualAboutAReferencePoint) {
+  const Cli_result d = run("dual --json '" + golden("block_corner_mu_0") + "'");
+  ASSERT_EQ(d.code, 0) << d.err;
+  EXPECT_NE(d.out.find("\"reference\": {\"point\": [\"-1\", \"2\"]"), std::string::npos) << d.out;
+  EXPECT_NE(d.out.find("[\"-1/2\", \"0\"]"), std::string::npos) << d.out;
+  const Cli_result h = run("dual '" + golden("triangle_example3_mu_1_10") + "'");
+  EXPECT_NE(h.out.find("yes (force closure)"), std::string::npos) << h.out;
+}
+
+TEST(Cli, ReuleauxModes) {
+  const std::string pin = golden("square_pinwheel");
+  const Cli_result cw = run("reuleaux --json --center 1,1 --sense cw '" + pin + "'");
+  ASSERT_EQ(cw.code, 0) << cw.err;
+  EXPECT_NE(cw.out.find("\"feasible\": true"), std::string::npos) << cw.out;
+  const Cli_result ccw = run("reuleaux --json --center 1,1 '" + pin + "'");
+  EXPECT_NE(ccw.out.find("\"feasible\": false"), std::string::npos) << ccw.out;
+  EXPECT_NE(ccw.out.find("\"mode\": \"penetrate\""), std::string::npos) << ccw.out;
+  const Cli_result corner = run("reuleaux --center 1/2,1/2 --sense cw '" + pin + "'");
+  EXPECT_NE(corner.out.find("feasible, marginal"), std::string::npos) << corner.out;
+  EXPECT_NE(corner.out.find(": slide"), std::string::npos) << corner.out;
+  for (const char* bad : {"--center 1 ", "--center a,b ", "--center 1,1 --sense up ", "--sense cw ",
+                          "--center 1,1 --twist 1,0,0 ", "--twist 0,0,0 ", "--direction 0,0 ", "--what labels "}) {
+    const Cli_result b = run(std::string("reuleaux ") + bad + "'" + pin + "'");
+    EXPECT_EQ(b.code, 2) << bad;
+    EXPECT_TRUE(b.out.empty()) << bad;
+    EXPECT_FALSE(b.err.empty()) << bad;
+  }
+  EXPECT_EQ(run("closure --center 1,1 '" + pin + "'").code, 2);
+  EXPECT_EQ(run("labels --resultant 1,2 '" + pin + "'").code, 2);
+}
+
+TEST(Cli, RenderDrawsEveryGoldenScene) {
+  int n = 0;
+  std::vector<std::string> files = test::scene_files("tests/golden");
+  for (const std::string& f : test::scene_files("tests/golden/equilibrium")) files.push_back(f);
+  for (const std::string& file : files)
+    for (const char* what : {"labels", "dual", "reuleaux"}) {
+      SCOPED_TRACE(file + " " + what);
+      const Cli_result r = run(std::string("render --what ") + what + " '" + file + "'");
+      ASSERT_EQ(r.code, 0) << r.err;
+      EXPECT_TRUE(well_formed_svg(r.out));
+      ++n;
+    }
+  EXPECT_GE(n, 3 * 60);
+  const std::string out = (scratch() / "pic.svg").string();
+  fs::remove(out);
+  ASSERT_EQ(run("render --what labels -o '" + out + "' '" + golden("ladder_mu_1_7") + "'").code, 0);
+  const std::string svg = test::read_text(out);
+  EXPECT_TRUE(well_formed_svg(svg));
+  for (const char* part : {"<clipPath", "fill=\"#2f6fd0\"", "fill=\"#d0453f\"", "<title>"})
+    EXPECT_NE(svg.find(part), std::string::npos) << part;
+  fs::remove(out);
+  EXPECT_EQ(run("render --what pictures -o '" + out + "' '" + golden("ladder_mu_1_7") + "'").code, 2);
+  EXPECT_EQ(run("render -o '" + out + "' '" + golden("ladder_mu_1_7") + "'").code, 2);
+  EXPECT_FALSE(fs::exists(out));
+  const std::string bad = write("bad.json", R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [0, 0]}]})");
+  const Cli_result b = run("render --what labels -o '" + out + "' '" + bad + "'");
+  EXPECT_EQ(b.code, 2);
+  EXPECT_NE(b.err.find("contacts[0].normal"), std::string::npos) << b.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 }  // namespace
 }  // namespace wrenchkit

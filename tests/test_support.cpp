@@ -1,3 +1,4 @@
+#include <array>
 #include "tests/test_support.h"
 
 #include <algorithm>
@@ -118,6 +119,46 @@ int brute_force_rank(const std::vector<Wrench>& g) {
     }
   }
   return r;
+}
+
+// Carathéodory: some ≤ 3 generators with a non-negative exact solution.
+bool brute_force_in_cone(const std::vector<Wrench>& g, const std::array<Rational, 3>& x) {
+  using V = std::array<Rational, 3>;
+  if (x[0] == 0 && x[1] == 0 && x[2] == 0) return true;
+  auto vec = [](const Wrench& a) { return V{a.fx, a.fy, a.m}; };
+  auto det = [](const V& a, const V& b, const V& c) -> Rational {
+    return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+  };
+  auto cross = [](const V& a, const V& b) {
+    return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  const std::size_t n = g.size();
+  for (std::size_t i = 0; i < n; ++i) {  // x = λ g_i
+    const V a = vec(g[i]);
+    const V c = cross(a, x);
+    if (c[0] == 0 && c[1] == 0 && c[2] == 0 && a[0] * x[0] + a[1] * x[1] + a[2] * x[2] > 0) return true;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {  // x = λ g_i + μ g_j in their plane
+      const V a = vec(g[i]), b = vec(g[j]), nrm = cross(a, b);
+      if (nrm[0] == 0 && nrm[1] == 0 && nrm[2] == 0) continue;
+      if (nrm[0] * x[0] + nrm[1] * x[1] + nrm[2] * x[2] != 0) continue;
+      // λ = (x × b)·n / |n|², μ = (a × x)·n / |n|²: signs of the numerators decide.
+      const V xb = cross(x, b), ax = cross(a, x);
+      const Rational l = xb[0] * nrm[0] + xb[1] * nrm[1] + xb[2] * nrm[2];
+      const Rational m = ax[0] * nrm[0] + ax[1] * nrm[1] + ax[2] * nrm[2];
+      if (l >= 0 && m >= 0) return true;
+    }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      for (std::size_t k = j + 1; k < n; ++k) {  // Cramer
+        const V a = vec(g[i]), b = vec(g[j]), c = vec(g[k]);
+        const Rational d = det(a, b, c);
+        if (d == 0) continue;
+        const Rational l1 = det(x, b, c) / d, l2 = det(a, x, c) / d, l3 = det(a, b, x) / d;
+        if (l1 >= 0 && l2 >= 0 && l3 >= 0) return true;
+      }
+  return false;
 }
 
 bool brute_force_closure(const std::vector<Wrench>& g) {

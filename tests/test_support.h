@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <random>
 #include <string>
@@ -42,6 +43,8 @@ std::string dump_failure(const std::string& scene_text, const std::string& tag);
 // ±(g_i × g_j) has power ≥ 0 against every generator. O(k³), exact.
 int brute_force_rank(const std::vector<Wrench>& g);
 bool brute_force_closure(const std::vector<Wrench>& g);
+// x ∈ pos(g) by Carathéodory: x is a non-negative combination of ≤ 3 generators. O(k³), exact.
+bool brute_force_in_cone(const std::vector<Wrench>& g, const std::array<Rational, 3>& x);
 
 // The independent checker on a scene text and a certificate text.
 ::testing::AssertionResult checker_accepts(const std::string& scene_text, const std::string& cert);

@@ -1,0 +1,254 @@
+// wrenchkit labels | dual | reuleaux: the graphical statics of Mason ch. 5–6, exactly
+// (exact/moment_labels.h, exact/force_dual.h).
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "cli/common.h"
+#include "exact/force_dual.h"
+#include "exact/json.h"
+
+namespace wrenchkit::cli {
+
+namespace {
+
+std::string pt(const Vec2& p) { return "(" + to_string(p.x) + ", " + to_string(p.y) + ")"; }
+
+std::string points_text(const std::vector<Vec2>& v) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + pt(v[i]);
+  return s;
+}
+
+std::string region_text(const Region& r) {
+  using S = Region::Shape;
+  switch (r.shape) {
+    case S::empty: return "empty";
+    case S::point: return "the single point " + pt(r.vertices[0]);
+    case S::segment: return "the segment " + points_text(r.vertices);
+    case S::polygon: return "the polygon " + points_text(r.vertices) + " (counter-clockwise)";
+    case S::ray: return "the ray from " + pt(r.vertices[0]) + " toward " + pt(r.directions[0]);
+    case S::wedge:
+      return "the wedge at " + pt(r.vertices[0]) + " between directions " + pt(r.directions[0]) + " and " +
+             pt(r.directions[1]);
+    case S::unbounded_polygon:
+      return "the unbounded polygon with corners " + points_text(r.vertices) + ", running off toward " +
+             points_text(r.directions);
+    case S::line: return "the line through " + pt(r.vertices[0]) + " along " + pt(r.directions[0]);
+    case S::strip:
+      return "the strip between the lines through " + pt(r.vertices[0]) + " and " + pt(r.vertices[1]) + " along " +
+             pt(r.directions[0]);
+    case S::half_plane:
+      return "the half-plane bounded by the line through " + pt(r.vertices[0]) + " along " + pt(r.directions[0]) +
+             ", on the side of " + pt(r.directions[1]);
+    case S::plane: return "the whole plane";
+  }
+  return "?";
+}
+
+std::string infinity_text(const Cone2& c) {
+  using S = Cone2::Shape;
+  switch (c.shape) {
+    case S::zero: return "none";
+    case S::ray: return "the direction " + pt(c.extreme[0]);
+    case S::line: return "the opposite directions " + pt(c.extreme[0]) + " and " + pt(c.extreme[1]);
+    case S::wedge: return "the arc from " + pt(c.extreme[0]) + " counter-clockwise to " + pt(c.extreme[1]);
+    case S::half_plane: return "the half-circle from " + pt(c.extreme[0]) + " counter-clockwise to " + pt(c.extreme[2]);
+    case S::plane: return "every direction";
+  }
+  return "?";
+}
+
+std::string both_text(const Both_set& b) {
+  switch (b.kind) {
+    case Both_set::Kind::none: return "none";
+    case Both_set::Kind::point: return "the point " + pt(b.point) + " (every line of force passes through it)";
+    case Both_set::Kind::line: return "the line through " + pt(b.point) + " along " + pt(b.direction);
+    case Both_set::Kind::plane: return "the whole plane (no contact wrench at all)";
+  }
+  return "?";
+}
+
+std::string labels_human(const Moment_labels& l) {
+  std::ostringstream s;
+  s << "+ (counter-clockwise rotation centres): " << region_text(l.plus) << "\n"
+    << "- (clockwise rotation centres):         " << region_text(l.minus) << "\n"
+    << "+- (every moment zero):                 " << both_text(l.both) << "\n"
+    << "labeled points at infinity (translations): " << infinity_text(l.infinity) << "\n";
+  return s.str();
+}
+
+std::string wrench_json(const Vec3& w) {
+  return "[" + json::quote(to_string(w[0])) + ", " + json::quote(to_string(w[1])) + ", " + json::quote(to_string(w[2])) + "]";
+}
+
+struct Labelled_scene {
+  Scene scene;
+  std::vector<Generator> gens;
+  std::vector<Wrench> wrenches;
+  Moment_labels labels;
+};
+
+Labelled_scene label(const Options& o, const std::string& text, const std::string& source, Reading reading) {
+  if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
+  if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
+    throw Usage_error("--certificate is for closure and equilibrium");
+  Labelled_scene s{read_scene(text, o.limits, source), {}, {}, {}};
+  s.gens = generators(s.scene, reading);
+  for (const Generator& g : s.gens) s.wrenches.push_back(g.w);
+  s.labels = moment_labels(s.wrenches);
+  return s;
+}
+
+void only_options(const Options& o, const char* command, std::initializer_list<const char*> allowed) {
+  for (const auto& [k, v] : o.values) {
+    bool ok = false;
+    for (const char* a : allowed) ok |= k == a;
+    if (!ok) throw Usage_error(k + " is not an option of " + command);
+  }
+}
+
+// The scene's load read on the labels: balanced ⇔ −w ∈ W (theory.md §5.5).
+std::string load_json(const Labelled_scene& s) {
+  if (!s.scene.load) return "";
+  const Vec3 w = as_vec(load_wrench(s.scene));
+  const bool balanced = in_cone(s.labels.cone, {-w[0], -w[1], -w[2]});
+  return ", \"load\": {\"wrench\": " + wrench_json(w) + ", \"balanced\": " + (balanced ? "true" : "false") + "}";
+}
+
+}  // namespace
+
+int run_labels(const Options& o, const std::string& text, const std::string& source) {
+  only_options(o, "labels", {"--resultant"});
+  const Labelled_scene s = label(o, text, source, Reading::friction);
+  std::string query;
+  bool possible = false;
+  Vec3 w;
+  if (o.has("--resultant")) {
+    const std::vector<Rational> v = parse_vector(o, "--resultant", 3);
+    w = {v[0], v[1], v[2]};
+    possible = in_cone(s.labels.cone, w);
+    query = ", \"resultant\": {\"wrench\": " + wrench_json(w) + ", \"possible\": " + (possible ? "true" : "false") + "}";
+  }
+  if (o.json) {
+    std::cout << "{\"command\": \"labels\", \"name\": " << json::quote(s.scene.name) << ", \"reading\": \"friction\""
+              << ", \"rank\": " << s.labels.cone.rank << ", \"force_closure\": "
+              << (s.labels.cone.force_closure() ? "true" : "false") << ", " << labels_json_fields(s.labels) << query
+              << load_json(s) << "}\n";
+    return kAnswered;
+  }
+  std::cout << "scene: " << (s.scene.name.empty() ? source : s.scene.name) << "\n"
+            << "moment labels of the contact wrench cone (with friction; exact):\n"
+            << labels_human(s.labels)
+            << "force closure: " << (s.labels.cone.force_closure() ? "yes" : "no") << " (nothing labeled, infinity included)\n";
+  if (o.has("--resultant"))
+    std::cout << "resultant " << vec_text({w[0], w[1], w[2]}) << ": " << (possible ? "possible" : "not possible") << "\n";
+  return kAnswered;
+}
+
+int run_dual(const Options& o, const std::string& text, const std::string& source) {
+  only_options(o, "dual", {});
+  const Labelled_scene s = label(o, text, source, Reading::friction);
+  const Force_dual d = force_dual(s.labels, s.wrenches);
+  if (o.json) {
+    std::ostringstream j;
+    const auto pts = [](const std::vector<Vec2>& v) {
+      std::string r = "[";
+      for (std::size_t i = 0; i < v.size(); ++i) r += (i ? ", " : "") + point_json(v[i]);
+      return r + "]";
+    };
+    j << "{\"command\": \"dual\", \"name\": " << json::quote(s.scene.name) << ", \"covers_all\": "
+      << (d.covers_all ? "true" : "false") << ", \"plus_sheet\": " << pts(d.plus_sheet.vertices)
+      << ", \"minus_sheet\": " << pts(d.minus_sheet.vertices) << ", \"infinity\": " << infinity_json(d.infinity)
+      << ", \"plus_region\": " << region_json(d.plus_sheet) << ", \"minus_region\": " << region_json(d.minus_sheet)
+      << ", \"generators\": [";
+    for (std::size_t i = 0; i < s.gens.size(); ++i)
+      j << (i ? ", " : "") << "{\"contact\": " << s.gens[i].contact << ", \"edge\": \"" << edge_name(s.gens[i].edge)
+        << "\", \"dual\": " << dual_point_json(d.generators[i]) << "}";
+    j << "], \"reference\": ";
+    if (d.reference)
+      j << "{\"point\": " << point_json(*d.reference) << ", \"polygon\": " << region_json(d.about_reference) << "}";
+    else
+      j << "null";
+    if (s.scene.load) {
+      const Vec3 w = as_vec(load_wrench(s.scene));
+      j << ", \"load\": {\"antipode\": " << dual_point_json(dual_point({-w[0], -w[1], -w[2]}))
+        << ", \"balanced\": " << (in_cone(s.labels.cone, {-w[0], -w[1], -w[2]}) ? "true" : "false") << "}";
+    }
+    j << "}\n";
+    std::cout << j.str();
+    return kAnswered;
+  }
+  std::cout << "scene: " << (s.scene.name.empty() ? source : s.scene.name) << "\n"
+            << "force dual of the contact wrench cone (D(w) = (-fy, fx, m); exact):\n"
+            << "covers the whole two-sided plane: " << (d.covers_all ? "yes (force closure)" : "no") << "\n"
+            << "+ sheet (m > 0): " << region_text(d.plus_sheet) << "\n"
+            << "- sheet (m < 0): " << region_text(d.minus_sheet) << "\n"
+            << "at infinity (m = 0): " << infinity_text(d.infinity) << "\n";
+  if (d.reference)
+    std::cout << "about the reference point " << pt(*d.reference) << " (inside the + region of the labels) the dual is "
+              << region_text(d.about_reference) << "\n";
+  return kAnswered;
+}
+
+int run_reuleaux(const Options& o, const std::string& text, const std::string& source) {
+  only_options(o, "reuleaux", {"--center", "--sense", "--direction", "--twist"});
+  const int queries = o.has("--center") + o.has("--direction") + o.has("--twist");
+  if (queries > 1) throw Usage_error("give at most one of --center, --direction, --twist");
+  if (o.has("--sense") && !o.has("--center")) throw Usage_error("--sense goes with --center");
+  const Labelled_scene s = label(o, text, source, Reading::frictionless);
+  Vec3 t;
+  if (o.has("--center")) {
+    const std::vector<Rational> c = parse_vector(o, "--center", 2);
+    int sense = 1;
+    if (o.has("--sense")) {
+      const std::string& v = o.values.at("--sense");
+      if (v == "ccw" || v == "+") sense = 1;
+      else if (v == "cw" || v == "-") sense = -1;
+      else throw Usage_error("--sense: \"" + v + "\" is not one of ccw, cw");
+    }
+    t = rotation_twist({c[0], c[1]}, sense);
+  } else if (o.has("--direction")) {
+    const std::vector<Rational> d = parse_vector(o, "--direction", 2);
+    if (d[0] == 0 && d[1] == 0) throw Usage_error("--direction: the zero vector is no direction");
+    t = translation_twist({d[0], d[1]});
+  } else if (o.has("--twist")) {
+    const std::vector<Rational> v = parse_vector(o, "--twist", 3);
+    if (v[0] == 0 && v[1] == 0 && v[2] == 0) throw Usage_error("--twist: the zero twist is no motion");
+    t = {v[0], v[1], v[2]};
+  }
+  Mode_answer m;
+  if (queries) m = contact_modes(s.scene, t);
+  const bool closed = s.labels.cone.force_closure();
+  if (o.json) {
+    std::cout << "{\"command\": \"reuleaux\", \"name\": " << json::quote(s.scene.name)
+              << ", \"reading\": \"frictionless\", \"rank\": " << s.labels.cone.rank
+              << ", \"form_closure\": " << (closed ? "true" : "false") << ", " << labels_json_fields(s.labels);
+    if (queries) {
+      const std::array<Rational, 3> ta = {t[0], t[1], t[2]};
+      std::cout << ", \"query\": {" << twist_json(ta) << ", \"feasible\": " << (m.feasible ? "true" : "false")
+                << ", \"marginal\": " << (m.marginal ? "true" : "false") << ", \"modes\": [";
+      for (std::size_t i = 0; i < m.modes.size(); ++i)
+        std::cout << (i ? ", " : "") << "{\"contact\": " << i << ", \"mode\": \"" << mode_name(m.modes[i]) << "\"}";
+      std::cout << "]}";
+    }
+    std::cout << "}\n";
+    return kAnswered;
+  }
+  std::cout << "scene: " << (s.scene.name.empty() ? source : s.scene.name) << "\n"
+            << "Reuleaux's method: the contacts read frictionless (exact)\n"
+            << labels_human(s.labels)
+            << "first-order form closure: " << (closed ? "yes (no feasible rotation centre or translation)" : "no")
+            << "\n";
+  if (queries) {
+    std::cout << "twist " << vec_text({t[0], t[1], t[2]}) << ": "
+              << (m.feasible ? (m.marginal ? "feasible, marginal (keeps some contacts to first order)" : "feasible")
+                             : "infeasible (penetrates)")
+              << "\n";
+    for (std::size_t i = 0; i < m.modes.size(); ++i)
+      std::cout << "  contact " << i << ": " << mode_name(m.modes[i]) << "\n";
+  }
+  return kAnswered;
+}
+
+}  // namespace wrenchkit::cli

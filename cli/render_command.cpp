@@ -1,0 +1,237 @@
+// wrenchkit render SCENE --what labels|dual|reuleaux [-o FILE.svg]: the figure a reader of Mason's
+// book expects — body, contacts with friction cones or normals, lines of force, the shaded + / −
+// regions clipped to a disc whose rim is the circle at infinity (labeled directions drawn on it),
+// arrows where regions run off to infinity, the load, a legend. Computed exactly, drawn in double.
+#include <cmath>
+#include <iostream>
+#include <string>
+
+#include "cli/common.h"
+#include "cli/svg_canvas.h"
+#include "exact/force_dual.h"
+
+namespace wrenchkit::cli {
+
+namespace {
+
+const char* kPlus = "#2f6fd0";
+const char* kMinus = "#d0453f";
+const char* kBoth = "#111111";
+const char* kInfinity = "#8a3fbf";
+const char* kLoad = "#1e8c3a";
+const char* kCone = "#f0a030";
+
+std::string swatch(const std::string& colour, double opacity = 0.45) {
+  return "fill=\"" + colour + "\" fill-opacity=\"" + std::to_string(opacity).substr(0, 4) + "\" stroke=\"" + colour + "\"";
+}
+
+P2 unit(P2 d) {
+  const double n = std::hypot(d.x, d.y);
+  return n > 0 ? P2{d.x / n, d.y / n} : P2{1, 0};
+}
+
+// The view: every finite point the picture shows, with a margin.
+struct Bounds {
+  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  void add(P2 p) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+    x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+  }
+  void add(const Region& r) {
+    for (const Vec2& v : r.vertices) add(to_p2(v));
+  }
+  Svg_canvas canvas(const std::string& title) const {
+    if (x0 > x1) return Svg_canvas({0, 0}, 1, title);
+    const P2 c{(x0 + x1) / 2, (y0 + y1) / 2};
+    double r = 0.5 * std::hypot(x1 - x0, y1 - y0) * 1.35;
+    if (!(r > 0)) r = std::max(1.0, std::hypot(c.x, c.y));
+    return Svg_canvas(c, r, title);
+  }
+};
+
+Vec2 load_point(const Scene& s) {
+  const Load& l = *s.load;
+  if (l.kind == Load::Kind::force) return l.at;
+  if (l.kind == Load::Kind::gravity && s.body.com) return *s.body.com;
+  return {0, 0};
+}
+
+void add_scene_bounds(Bounds& b, const Scene& s) {
+  for (const Vec2& v : s.body.outline) b.add(to_p2(v));
+  if (s.body.com) b.add(to_p2(*s.body.com));
+  for (const Contact& stored : s.contacts) {
+    if (stored.kind != Contact::Kind::point) continue;
+    b.add(to_p2(exact_contact(stored).at));
+  }
+  if (s.load && s.load->kind != Load::Kind::wrench) b.add(to_p2(load_point(s)));
+}
+
+// Body, lines of force, contacts (friction cones or directed normals), load.
+void draw_scene(Svg_canvas& c, const Scene& s, const std::vector<Generator>& gens, bool frictionless) {
+  const double L = 0.13 * c.world_radius();
+  if (s.body.outline.size() >= 2) {
+    std::vector<P2> o;
+    for (const Vec2& v : s.body.outline) o.push_back(to_p2(v));
+    c.polygon(o, "fill=\"#d8d8d8\" fill-opacity=\"0.55\" stroke=\"#333\" stroke-width=\"2\"");
+  }
+  for (const Generator& g : gens) {
+    const P2 f = unit({g.w.fx.get_d(), g.w.fy.get_d()});
+    if (g.w.fx == 0 && g.w.fy == 0) continue;
+    // A point of the line of action: p with p × f = m, p = m (f_y, −f_x) / |f|².
+    const Rational n2 = g.w.fx * g.w.fx + g.w.fy * g.w.fy;
+    const P2 p{Rational(g.w.m * g.w.fy / n2).get_d(), Rational(-g.w.m * g.w.fx / n2).get_d()};
+    c.full_line(p, f, "stroke=\"#777\" stroke-width=\"1\" stroke-dasharray=\"6 4\"");
+  }
+  for (std::size_t i = 0; i < s.contacts.size(); ++i) {
+    const Contact ct = exact_contact(s.contacts[i]);
+    if (ct.kind != Contact::Kind::point) continue;
+    const P2 p = to_p2(ct.at), n = unit(to_p2(ct.normal));
+    const double mu = frictionless ? 0 : ct.mu.get_d();
+    if (mu > 0) {
+      const P2 t{-n.y, n.x};
+      const P2 eL = unit({n.x + mu * t.x, n.y + mu * t.y}), eR = unit({n.x - mu * t.x, n.y - mu * t.y});
+      c.polygon({p, {p.x + 1.6 * L * eL.x, p.y + 1.6 * L * eL.y}, {p.x + 1.6 * L * eR.x, p.y + 1.6 * L * eR.y}},
+                "fill=\"" + std::string(kCone) + "\" fill-opacity=\"0.55\" stroke=\"" + kCone + "\"");
+    }
+    c.arrow(p, {p.x + L * n.x, p.y + L * n.y}, "#222", 2.5);
+    c.dot(p, 3.5, "fill=\"#222\"");
+    c.text(p, "c" + std::to_string(i), "fill=\"#222\"");
+  }
+  if (s.body.com) {
+    c.dot(to_p2(*s.body.com), 5, "fill=\"white\" stroke=\"#222\" stroke-width=\"1.5\"");
+  }
+  if (s.load) {
+    const Wrench w = load_wrench(s);
+    if (w.fx == 0 && w.fy == 0) {
+      c.caption("load: a pure moment " + to_string(w.m));
+    } else {
+      P2 at = to_p2(load_point(s));
+      if (s.load->kind == Load::Kind::wrench) {
+        const Rational n2 = w.fx * w.fx + w.fy * w.fy;
+        at = {Rational(w.m * w.fy / n2).get_d(), Rational(-w.m * w.fx / n2).get_d()};
+      }
+      const P2 f = unit({w.fx.get_d(), w.fy.get_d()});
+      c.arrow(at, {at.x + 1.4 * L * f.x, at.y + 1.4 * L * f.y}, kLoad, 3);
+      c.text({at.x + 1.4 * L * f.x, at.y + 1.4 * L * f.y}, "load", "fill=\"" + std::string(kLoad) + "\"");
+    }
+  }
+}
+
+void draw_labels(Svg_canvas& c, const Moment_labels& l) {
+  c.region(l.plus, kPlus, kPlus, "+");
+  c.region(l.minus, kMinus, kMinus, "\u2212");
+  switch (l.both.kind) {
+    case Both_set::Kind::point:
+      c.dot(to_p2(l.both.point), 7, "fill=\"white\" stroke=\"" + std::string(kBoth) + "\" stroke-width=\"3\"");
+      c.text(to_p2(l.both.point), "\u00b1", "font-weight=\"bold\"");
+      break;
+    case Both_set::Kind::line:
+      c.full_line(to_p2(l.both.point), to_p2(l.both.direction), "stroke=\"" + std::string(kBoth) + "\" stroke-width=\"3\"");
+      break;
+    case Both_set::Kind::plane:
+    case Both_set::Kind::none:
+      break;
+  }
+  c.infinity_cone(l.infinity, kInfinity);
+}
+
+void labels_legend(Svg_canvas& c, bool frictionless) {
+  c.legend(swatch(kPlus), "+ : counter-clockwise rotation centres (every moment >= 0)");
+  c.legend(swatch(kMinus), "\u2212 : clockwise rotation centres (every moment <= 0)");
+  c.legend(swatch(kBoth, 1), "\u00b1 : every line of force passes through (all moments zero)");
+  c.legend(swatch(kInfinity, 1), "labeled points at infinity (translations), on the rim");
+  if (!frictionless) c.legend(swatch(kCone, 0.55), "friction cones; arrows: contact normals");
+  else c.legend(swatch("#222", 1), "contact normals (frictionless reading)");
+  c.legend("fill=\"none\" stroke=\"#777\" stroke-dasharray=\"6 4\"", "lines of force of the cone's generators");
+  c.legend(swatch(kLoad, 1), "load");
+}
+
+std::string title_of(const Scene& s, const std::string& source, const char* what) {
+  return (s.name.empty() ? source : s.name) + " \u2014 " + what;
+}
+
+}  // namespace
+
+int run_render(const Options& o, const std::string& text, const std::string& source) {
+  for (const auto& [k, v] : o.values)
+    if (k != "--what" && k != "--output") throw Usage_error(k + " is not an option of render");
+  if (!o.has("--what")) throw Usage_error("render needs --what labels|dual|reuleaux");
+  const std::string what = o.values.at("--what");
+  if (what != "labels" && what != "dual" && what != "reuleaux")
+    throw Usage_error("--what: \"" + what + "\" is not one of labels, dual, reuleaux");
+  if (o.json) throw Usage_error("render writes SVG; --json is not an option of render");
+  const Scene s = read_scene(text, o.limits, source);
+  const bool frictionless = what == "reuleaux";
+  const std::vector<Generator> gens = generators(s, frictionless ? Reading::frictionless : Reading::friction);
+  std::vector<Wrench> ws;
+  for (const Generator& g : gens) ws.push_back(g.w);
+  const Moment_labels l = moment_labels(ws);
+  std::string svg;
+  if (what == "labels" || what == "reuleaux") {
+    Bounds b;
+    add_scene_bounds(b, s);
+    b.add(l.plus);
+    b.add(l.minus);
+    if (l.both.kind != Both_set::Kind::none && l.both.kind != Both_set::Kind::plane) b.add(to_p2(l.both.point));
+    Svg_canvas c = b.canvas(title_of(s, source, frictionless ? "Reuleaux's method (frictionless)" : "moment labels"));
+    draw_labels(c, l);
+    draw_scene(c, s, gens, frictionless);
+    labels_legend(c, frictionless);
+    const bool closed = l.cone.force_closure();
+    c.caption(frictionless ? std::string("first-order form closure: ") + (closed ? "yes" : "no")
+                           : std::string("force closure: ") + (closed ? "yes (nothing labeled)" : "no"));
+    if (l.both.kind == Both_set::Kind::plane) c.caption("no contact wrench: every point is labeled \u00b1");
+    svg = c.finish();
+  } else {
+    const Force_dual d = force_dual(l, ws);
+    Bounds b;
+    b.add({0, 0});
+    b.add(d.plus_sheet);
+    b.add(d.minus_sheet);
+    for (const Dual_point& p : d.generators)
+      if (p.sheet != 'i') b.add(to_p2(p.at));
+    Svg_canvas c = b.canvas(title_of(s, source, "force dual"));
+    c.region(d.plus_sheet, kPlus, kPlus, "+ sheet");
+    c.region(d.minus_sheet, kMinus, kMinus, "\u2212 sheet");
+    c.infinity_cone(d.infinity, kInfinity);
+    c.dot({0, 0}, 3, "fill=\"#222\"");
+    c.text({0, 0}, "O");
+    for (std::size_t i = 0; i < d.generators.size(); ++i) {
+      const Dual_point& p = d.generators[i];
+      const std::string name = "c" + std::to_string(gens[i].contact) + (gens[i].edge == Edge::left ? "L" : gens[i].edge == Edge::right ? "R" : "");
+      if (p.sheet == 'i') {
+        c.infinity_dot(to_p2(p.at), "#222");
+      } else if (p.sheet == '+') {
+        c.dot(to_p2(p.at), 5, "fill=\"" + std::string(kPlus) + "\" stroke=\"#222\"");
+        c.text(to_p2(p.at), name);
+      } else {
+        c.dot(to_p2(p.at), 5, "fill=\"white\" stroke=\"" + std::string(kMinus) + "\" stroke-width=\"2\"");
+        c.text(to_p2(p.at), name + "\u2032");
+      }
+    }
+    if (s.load) {
+      const Vec3 w = as_vec(load_wrench(s));
+      const Dual_point a = dual_point({-w[0], -w[1], -w[2]});
+      if (a.sheet == '0') {
+        c.caption("load: zero");
+      } else if (a.sheet == 'i') {
+        c.infinity_dot(to_p2(a.at), kLoad);
+      } else {
+        c.dot(to_p2(a.at), 7, "fill=\"" + std::string(kLoad) + "\" stroke=\"#111\"");
+        c.text(to_p2(a.at), std::string("\u2212load (") + a.sheet + " sheet)", "fill=\"" + std::string(kLoad) + "\"");
+      }
+    }
+    c.legend(swatch(kPlus), "front (+) sheet of the dual polygon: wrenches with m > 0 (filled dots)");
+    c.legend(swatch(kMinus), "back (\u2212) sheet: wrenches with m < 0, drawn where they sit (hollow dots)");
+    c.legend(swatch(kInfinity, 1), "points at infinity of the polygon: forces through the origin O");
+    c.legend(swatch(kLoad, 1), "antipode of the load: balanced iff it lies in the polygon");
+    c.caption(std::string("covers the whole two-sided plane: ") + (d.covers_all ? "yes (force closure)" : "no") +
+              "   D(w) = (\u2212fy, fx, m)");
+    svg = c.finish();
+  }
+  if (o.has("--output")) write_file(o.values.at("--output"), svg);
+  else std::cout << svg;
+  return kAnswered;
+}
+
+}  // namespace wrenchkit::cli

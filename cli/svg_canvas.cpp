@@ -1,0 +1,301 @@
+#include "cli/svg_canvas.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace wrenchkit::cli {
+
+namespace {
+
+constexpr double kWidth = 720, kDiscPx = 320, kCx = 360, kCy = 390;
+constexpr double kPi = 3.14159265358979323846;
+
+std::string num(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f", std::isfinite(v) ? v : 0.0);
+  return b;
+}
+
+P2 unit(P2 d) {
+  const double n = std::hypot(d.x, d.y);
+  return n > 0 ? P2{d.x / n, d.y / n} : P2{1, 0};
+}
+
+// Liang–Barsky: the part of segment a→b inside the box; false if none.
+bool clip_segment(P2& a, P2& b, double x0, double y0, double x1, double y1) {
+  double t0 = 0, t1 = 1;
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double p[4] = {-dx, dx, -dy, dy}, q[4] = {a.x - x0, x1 - a.x, a.y - y0, y1 - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  const P2 a0 = a;
+  a = {a0.x + t0 * dx, a0.y + t0 * dy};
+  b = {a0.x + t1 * dx, a0.y + t1 * dy};
+  return true;
+}
+
+}  // namespace
+
+P2 to_p2(const Vec2& v) { return {v.x.get_d(), v.y.get_d()}; }
+
+std::string xml_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '&': o += "&amp;"; break;
+      case '<': o += "&lt;"; break;
+      case '>': o += "&gt;"; break;
+      case '"': o += "&quot;"; break;
+      default:
+        if (static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t') o += c;
+    }
+  }
+  return o;
+}
+
+Svg_canvas::Svg_canvas(P2 centre, double radius, std::string title)
+    : centre_(centre), radius_(radius > 0 && std::isfinite(radius) ? radius : 1), title_(std::move(title)) {}
+
+P2 Svg_canvas::screen(P2 w) const {
+  const double s = kDiscPx / radius_;
+  return {kCx + (w.x - centre_.x) * s, kCy - (w.y - centre_.y) * s};
+}
+
+std::vector<P2> Svg_canvas::clip(const std::vector<P2>& poly) const {
+  const double r = 1.05 * radius_;
+  const double lo[2] = {centre_.x - r, centre_.y - r}, hi[2] = {centre_.x + r, centre_.y + r};
+  std::vector<P2> out = poly;
+  for (int axis = 0; axis < 2; ++axis)
+    for (int side = 0; side < 2; ++side) {
+      const auto inside = [&](P2 p) {
+        const double v = axis == 0 ? p.x : p.y;
+        return side == 0 ? v >= lo[axis] : v <= hi[axis];
+      };
+      const auto cut = [&](P2 a, P2 b) {
+        const double bound = side == 0 ? lo[axis] : hi[axis];
+        const double va = axis == 0 ? a.x : a.y, vb = axis == 0 ? b.x : b.y;
+        const double t = (bound - va) / (vb - va);
+        return P2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+      };
+      std::vector<P2> in;
+      in.swap(out);
+      for (std::size_t i = 0; i < in.size(); ++i) {
+        const P2 a = in[i], b = in[(i + 1) % in.size()];
+        if (inside(a)) {
+          out.push_back(a);
+          if (!inside(b)) out.push_back(cut(a, b));
+        } else if (inside(b)) {
+          out.push_back(cut(a, b));
+        }
+      }
+    }
+  return out;
+}
+
+void Svg_canvas::polygon(const std::vector<P2>& pts, const std::string& style) {
+  const std::vector<P2> c = clip(pts);
+  if (c.size() < 3) return;
+  body_ += "<polygon points=\"";
+  for (const P2& p : c) {
+    const P2 s = screen(p);
+    body_ += num(s.x) + "," + num(s.y) + " ";
+  }
+  body_ += "\" " + style + "/>\n";
+}
+
+void Svg_canvas::line(P2 a, P2 b, const std::string& style) {
+  const double r = 1.05 * radius_;
+  if (!clip_segment(a, b, centre_.x - r, centre_.y - r, centre_.x + r, centre_.y + r)) return;
+  const P2 sa = screen(a), sb = screen(b);
+  body_ += "<line x1=\"" + num(sa.x) + "\" y1=\"" + num(sa.y) + "\" x2=\"" + num(sb.x) + "\" y2=\"" + num(sb.y) +
+           "\" " + style + "/>\n";
+}
+
+void Svg_canvas::full_line(P2 p, P2 d, const std::string& style) {
+  const P2 u = unit(d);
+  const double far = 4 * (radius_ + std::hypot(p.x - centre_.x, p.y - centre_.y));
+  line({p.x - far * u.x, p.y - far * u.y}, {p.x + far * u.x, p.y + far * u.y}, style);
+}
+
+void Svg_canvas::arrowhead(P2 tip, P2 dir, const std::string& colour) {
+  const P2 s = screen(tip);
+  P2 d = unit(dir);
+  d.y = -d.y;  // screen y runs down
+  const P2 n{-d.y, d.x};
+  const double L = 11, W = 5;
+  const P2 a{s.x - L * d.x + W * n.x, s.y - L * d.y + W * n.y}, b{s.x - L * d.x - W * n.x, s.y - L * d.y - W * n.y};
+  body_ += "<polygon points=\"" + num(s.x) + "," + num(s.y) + " " + num(a.x) + "," + num(a.y) + " " + num(b.x) + "," +
+           num(b.y) + "\" fill=\"" + colour + "\"/>\n";
+}
+
+void Svg_canvas::arrow(P2 from, P2 to, const std::string& colour, double width) {
+  line(from, to, "stroke=\"" + colour + "\" stroke-width=\"" + num(width) + "\"");
+  arrowhead(to, {to.x - from.x, to.y - from.y}, colour);
+}
+
+void Svg_canvas::dot(P2 p, double r_px, const std::string& style) {
+  if (std::hypot(p.x - centre_.x, p.y - centre_.y) > 1.05 * radius_) return;
+  const P2 s = screen(p);
+  body_ += "<circle cx=\"" + num(s.x) + "\" cy=\"" + num(s.y) + "\" r=\"" + num(r_px) + "\" " + style + "/>\n";
+}
+
+void Svg_canvas::text(P2 p, const std::string& s, const std::string& style) {
+  if (std::hypot(p.x - centre_.x, p.y - centre_.y) > radius_) return;
+  const P2 q = screen(p);
+  body_ += "<text x=\"" + num(q.x + 6) + "\" y=\"" + num(q.y - 6) + "\" font-size=\"13\" " + style + ">" +
+           xml_escape(s) + "</text>\n";
+}
+
+void Svg_canvas::region(const Region& r, const std::string& fill, const std::string& stroke, const std::string& label) {
+  using S = Region::Shape;
+  if (r.empty()) return;
+  std::vector<P2> v;
+  for (const Vec2& x : r.vertices) v.push_back(to_p2(x));
+  std::vector<P2> d;
+  for (const Vec2& x : r.directions) d.push_back(unit(to_p2(x)));
+  const std::string line_style = "stroke=\"" + stroke + "\" stroke-width=\"5\" stroke-linecap=\"round\" opacity=\"0.8\"";
+  const std::string area_style = "fill=\"" + fill + "\" fill-opacity=\"0.45\" stroke=\"" + stroke + "\" stroke-width=\"1.5\"";
+  P2 anchor = v.empty() ? centre_ : v[0];
+  double far = 4 * radius_;
+  for (const P2& p : v) far = std::max(far, 4 * (radius_ + std::hypot(p.x - centre_.x, p.y - centre_.y)));
+  const auto away = [&](P2 p, P2 u) { return P2{p.x + far * u.x, p.y + far * u.y}; };
+  // Arrowheads where the region runs off to infinity: on its boundary rays, just inside the rim.
+  const auto run_off = [&](P2 from, P2 u) {
+    const double t = 0.9 * radius_;
+    // The point of the ray from + s·u at distance 0.9·radius from the centre (if the ray gets there).
+    const double bx = from.x - centre_.x, by = from.y - centre_.y;
+    const double b = bx * u.x + by * u.y, c = bx * bx + by * by - t * t;
+    const double disc = b * b - c;
+    if (disc < 0) return;
+    const double s = -b + std::sqrt(disc);
+    if (s <= 0) return;
+    arrowhead({from.x + s * u.x, from.y + s * u.y}, u, stroke);
+  };
+  switch (r.shape) {
+    case S::empty: return;
+    case S::point: dot(v[0], 6, "fill=\"" + fill + "\" stroke=\"" + stroke + "\" stroke-width=\"2\""); break;
+    case S::segment: line(v[0], v[1], line_style); break;
+    case S::ray:
+      line(v[0], away(v[0], d[0]), line_style);
+      run_off(v[0], d[0]);
+      break;
+    case S::line:
+      full_line(v[0], d[0], line_style);
+      run_off(v[0], d[0]);
+      run_off(v[0], d[1]);
+      break;
+    case S::strip:
+      polygon({away(v[0], d[1]), away(v[0], d[0]), away(v[1], d[0]), away(v[1], d[1])}, area_style);
+      run_off(v[0], d[0]);
+      run_off(v[1], d[1]);
+      break;
+    case S::polygon: polygon(v, area_style); break;
+    case S::plane:
+      polygon({{centre_.x - 2 * radius_, centre_.y - 2 * radius_}, {centre_.x + 2 * radius_, centre_.y - 2 * radius_},
+               {centre_.x + 2 * radius_, centre_.y + 2 * radius_}, {centre_.x - 2 * radius_, centre_.y + 2 * radius_}},
+              area_style);
+      break;
+    case S::half_plane:
+    case S::wedge:
+    case S::unbounded_polygon: {
+      // Corners, then far points sweeping counter-clockwise from the outgoing direction d_1 to the
+      // incoming direction d_k (theory of the REGION format: docs/cli.md).
+      std::vector<P2> poly = v;
+      const double a1 = std::atan2(d.front().y, d.front().x);
+      double ak = std::atan2(d.back().y, d.back().x);
+      while (ak < a1) ak += 2 * kPi;
+      if (r.shape == S::half_plane) ak = a1 + kPi;
+      const P2 last = v.back(), first = v.front();
+      const int steps = std::max(2, static_cast<int>((ak - a1) / (kPi / 18)) + 1);
+      for (int i = 0; i <= steps; ++i) {
+        const double a = a1 + (ak - a1) * i / steps;
+        const P2 from = i == 0 ? last : (i == steps ? first : P2{(last.x + first.x) / 2, (last.y + first.y) / 2});
+        poly.push_back(away(from, {std::cos(a), std::sin(a)}));
+      }
+      polygon(poly, area_style);
+      run_off(last, d.front());
+      run_off(first, d.back());
+      if (r.shape == S::half_plane) run_off(first, d[1]);
+      anchor = v[v.size() / 2];
+      break;
+    }
+  }
+  if (!label.empty()) text(anchor, label, "font-weight=\"bold\" fill=\"" + stroke + "\"");
+}
+
+void Svg_canvas::infinity_arc(P2 from, P2 to, bool full, const std::string& colour) {
+  const double a0 = std::atan2(from.y, from.x);
+  double a1 = std::atan2(to.y, to.x);
+  while (a1 <= a0) a1 += 2 * kPi;
+  if (full) a1 = a0 + 2 * kPi;
+  const double R = kDiscPx + 6;
+  std::string path = "<path d=\"";
+  const int steps = std::max(2, static_cast<int>((a1 - a0) / (kPi / 90)));
+  for (int i = 0; i <= steps; ++i) {
+    const double a = a0 + (a1 - a0) * i / steps;
+    path += (i ? " L " : "M ") + num(kCx + R * std::cos(a)) + " " + num(kCy - R * std::sin(a));
+  }
+  rim_ += path + "\" fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"7\" stroke-linecap=\"round\"/>\n";
+}
+
+void Svg_canvas::infinity_dot(P2 d, const std::string& colour) {
+  const P2 u = unit(d);
+  const double R = kDiscPx + 6;
+  rim_ += "<circle cx=\"" + num(kCx + R * u.x) + "\" cy=\"" + num(kCy - R * u.y) + "\" r=\"6\" fill=\"" + colour +
+           "\"/>\n";
+}
+
+void Svg_canvas::infinity_cone(const Cone2& c, const std::string& colour) {
+  using S = Cone2::Shape;
+  switch (c.shape) {
+    case S::zero: break;
+    case S::ray: infinity_dot(to_p2(c.extreme[0]), colour); break;
+    case S::line:
+      infinity_dot(to_p2(c.extreme[0]), colour);
+      infinity_dot(to_p2(c.extreme[1]), colour);
+      break;
+    case S::wedge: infinity_arc(to_p2(c.extreme[0]), to_p2(c.extreme[1]), false, colour); break;
+    case S::half_plane: infinity_arc(to_p2(c.extreme[0]), to_p2(c.extreme[2]), false, colour); break;
+    case S::plane: infinity_arc({1, 0}, {1, 0}, true, colour); break;
+  }
+}
+
+void Svg_canvas::legend(const std::string& swatch_style, const std::string& text) { legend_.push_back({swatch_style, text}); }
+void Svg_canvas::caption(const std::string& text) { captions_.push_back(text); }
+
+std::string Svg_canvas::finish() const {
+  const double top = kCy + kDiscPx + 30;
+  const double height = top + 22.0 * static_cast<double>(legend_.size() + captions_.size()) + 16;
+  std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
+                  num(kWidth) + "\" height=\"" + num(height) + "\" viewBox=\"0 0 " + num(kWidth) + " " + num(height) +
+                  "\" font-family=\"sans-serif\">\n";
+  s += "<title>" + xml_escape(title_) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  s += "<defs><clipPath id=\"view\"><circle cx=\"" + num(kCx) + "\" cy=\"" + num(kCy) + "\" r=\"" + num(kDiscPx) +
+       "\"/></clipPath></defs>\n";
+  s += "<text x=\"" + num(kCx) + "\" y=\"34\" font-size=\"18\" text-anchor=\"middle\">" + xml_escape(title_) + "</text>\n";
+  s += "<circle cx=\"" + num(kCx) + "\" cy=\"" + num(kCy) + "\" r=\"" + num(kDiscPx + 6) +
+       "\" fill=\"none\" stroke=\"#bbb\" stroke-width=\"1\" stroke-dasharray=\"4 4\"/>\n";
+  s += "<g clip-path=\"url(#view)\">\n" + body_ + "</g>\n" + rim_;
+  double y = top;
+  for (const auto& [style, text] : legend_) {
+    s += "<rect x=\"40\" y=\"" + num(y - 12) + "\" width=\"26\" height=\"14\" " + style + "/>\n";
+    s += "<text x=\"76\" y=\"" + num(y) + "\" font-size=\"13\">" + xml_escape(text) + "</text>\n";
+    y += 22;
+  }
+  for (const std::string& c : captions_) {
+    s += "<text x=\"40\" y=\"" + num(y) + "\" font-size=\"13\">" + xml_escape(c) + "</text>\n";
+    y += 22;
+  }
+  return s + "</svg>\n";
+}
+
+}  // namespace wrenchkit::cli
