@@ -4,6 +4,7 @@
 #   ./build.sh test    install the Debian packages, build, run the whole test suite (CTest)
 #   ./build.sh build   install and build only
 #   ./build.sh stability   regenerate docs/stability.md (near-degenerate stress report)
+#   ./build.sh gallery     regenerate the pictures of docs/gallery.md
 # Environment: BUILD_DIR (default build), JOBS (default: number of cores), CXX (compiler).
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -50,8 +51,13 @@ case "${1:-}" in
     "${BUILD_DIR:-build}/fuzz/stress_closure" --cases 400 --report docs > /dev/null
     echo "build.sh: wrote docs/stability.md and docs/stability.svg"
     ;;
+  gallery)
+    install_packages
+    build
+    docs/gallery/make_gallery.sh "${BUILD_DIR:-build}"
+    ;;
   *)
-    echo "usage: ./build.sh demo|test|build|stability" >&2
+    echo "usage: ./build.sh demo|test|build|stability|gallery" >&2
     exit 2
     ;;
 esac

@@ -40,12 +40,12 @@ struct Bounds {
   void add(const Region& r) {
     for (const Vec2& v : r.vertices) add(to_p2(v));
   }
-  Svg_canvas canvas(const std::string& title) const {
-    if (x0 > x1) return Svg_canvas({0, 0}, 1, title);
+  Svg_canvas canvas(const std::string& title, const std::string& subtitle) const {
+    if (x0 > x1) return Svg_canvas({0, 0}, 1, title, subtitle);
     const P2 c{(x0 + x1) / 2, (y0 + y1) / 2};
     double r = 0.5 * std::hypot(x1 - x0, y1 - y0) * 1.35;
     if (!(r > 0)) r = std::max(1.0, std::hypot(c.x, c.y));
-    return Svg_canvas(c, r, title);
+    return Svg_canvas(c, r, title, subtitle);
   }
 };
 
@@ -117,9 +117,15 @@ void draw_scene(Svg_canvas& c, const Scene& s, const std::vector<Generator>& gen
   }
 }
 
+// A + or − region that is only the ± point (concurrent lines of force) is drawn as that point.
+bool only_both_point(const Region& r, const Both_set& b) {
+  return r.shape == Region::Shape::point && b.kind == Both_set::Kind::point && r.vertices[0].x == b.point.x &&
+         r.vertices[0].y == b.point.y;
+}
+
 void draw_labels(Svg_canvas& c, const Moment_labels& l) {
-  c.region(l.plus, kPlus, kPlus, "+");
-  c.region(l.minus, kMinus, kMinus, "\u2212");
+  if (!only_both_point(l.plus, l.both)) c.region(l.plus, kPlus, kPlus, "+");
+  if (!only_both_point(l.minus, l.both)) c.region(l.minus, kMinus, kMinus, "\u2212");
   switch (l.both.kind) {
     case Both_set::Kind::point:
       c.dot(to_p2(l.both.point), 7, "fill=\"white\" stroke=\"" + std::string(kBoth) + "\" stroke-width=\"3\"");
@@ -135,20 +141,20 @@ void draw_labels(Svg_canvas& c, const Moment_labels& l) {
   c.infinity_cone(l.infinity, kInfinity);
 }
 
-void labels_legend(Svg_canvas& c, bool frictionless) {
-  c.legend(swatch(kPlus), "+ : counter-clockwise rotation centres (every moment >= 0)");
-  c.legend(swatch(kMinus), "\u2212 : clockwise rotation centres (every moment <= 0)");
-  c.legend(swatch(kBoth, 1), "\u00b1 : every line of force passes through (all moments zero)");
-  c.legend(swatch(kInfinity, 1), "labeled points at infinity (translations), on the rim");
+void labels_legend(Svg_canvas& c, const Moment_labels& l, const Scene& s, bool frictionless) {
+  if (!l.plus.empty() && !only_both_point(l.plus, l.both)) c.legend(swatch(kPlus), "+ : counter-clockwise rotation centres (every moment >= 0)");
+  if (!l.minus.empty() && !only_both_point(l.minus, l.both)) c.legend(swatch(kMinus), "\u2212 : clockwise rotation centres (every moment <= 0)");
+  if (l.both.kind == Both_set::Kind::point || l.both.kind == Both_set::Kind::line)
+    c.legend(swatch(kBoth, 1), "\u00b1 : every line of force passes through (all moments zero)");
+  if (l.infinity.shape != Cone2::Shape::zero)
+    c.legend(swatch(kInfinity, 1), "labeled points at infinity (translations), on the rim");
   if (!frictionless) c.legend(swatch(kCone, 0.55), "friction cones; arrows: contact normals");
   else c.legend(swatch("#222", 1), "contact normals (frictionless reading)");
   c.legend("fill=\"none\" stroke=\"#777\" stroke-dasharray=\"6 4\"", "lines of force of the cone's generators");
-  c.legend(swatch(kLoad, 1), "load");
+  if (s.load) c.legend(swatch(kLoad, 1), "load");
 }
 
-std::string title_of(const Scene& s, const std::string& source, const char* what) {
-  return (s.name.empty() ? source : s.name) + " \u2014 " + what;
-}
+std::string title_of(const Scene& s, const std::string& source) { return s.name.empty() ? source : s.name; }
 
 }  // namespace
 
@@ -173,10 +179,11 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
     b.add(l.plus);
     b.add(l.minus);
     if (l.both.kind != Both_set::Kind::none && l.both.kind != Both_set::Kind::plane) b.add(to_p2(l.both.point));
-    Svg_canvas c = b.canvas(title_of(s, source, frictionless ? "Reuleaux's method (frictionless)" : "moment labels"));
+    Svg_canvas c = b.canvas(title_of(s, source), frictionless ? "Reuleaux's method: the contacts read frictionless"
+                                                              : "moment labels of the contact wrench cone");
     draw_labels(c, l);
     draw_scene(c, s, gens, frictionless);
-    labels_legend(c, frictionless);
+    labels_legend(c, l, s, frictionless);
     const bool closed = l.cone.force_closure();
     c.caption(frictionless ? std::string("first-order form closure: ") + (closed ? "yes" : "no")
                            : std::string("force closure: ") + (closed ? "yes (nothing labeled)" : "no"));
@@ -189,8 +196,13 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
     b.add(d.plus_sheet);
     b.add(d.minus_sheet);
     for (const Dual_point& p : d.generators)
-      if (p.sheet != 'i') b.add(to_p2(p.at));
-    Svg_canvas c = b.canvas(title_of(s, source, "force dual"));
+      if (p.sheet == '+' || p.sheet == '-') b.add(to_p2(p.at));
+    if (s.load) {
+      const Vec3 w = as_vec(load_wrench(s));
+      const Dual_point a = dual_point({-w[0], -w[1], -w[2]});
+      if (a.sheet == '+' || a.sheet == '-') b.add(to_p2(a.at));
+    }
+    Svg_canvas c = b.canvas(title_of(s, source), "force dual of the contact wrench cone on the two-sided plane");
     c.region(d.plus_sheet, kPlus, kPlus, "+ sheet");
     c.region(d.minus_sheet, kMinus, kMinus, "\u2212 sheet");
     c.infinity_cone(d.infinity, kInfinity);
@@ -218,15 +230,19 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
         c.infinity_dot(to_p2(a.at), kLoad);
       } else {
         c.dot(to_p2(a.at), 7, "fill=\"" + std::string(kLoad) + "\" stroke=\"#111\"");
-        c.text(to_p2(a.at), std::string("\u2212load (") + a.sheet + " sheet)", "fill=\"" + std::string(kLoad) + "\"");
+        c.text(to_p2(a.at), std::string("\u2212load"), "fill=\"" + std::string(kLoad) + "\"");
       }
     }
-    c.legend(swatch(kPlus), "front (+) sheet of the dual polygon: wrenches with m > 0 (filled dots)");
-    c.legend(swatch(kMinus), "back (\u2212) sheet: wrenches with m < 0, drawn where they sit (hollow dots)");
-    c.legend(swatch(kInfinity, 1), "points at infinity of the polygon: forces through the origin O");
-    c.legend(swatch(kLoad, 1), "antipode of the load: balanced iff it lies in the polygon");
-    c.caption(std::string("covers the whole two-sided plane: ") + (d.covers_all ? "yes (force closure)" : "no") +
-              "   D(w) = (\u2212fy, fx, m)");
+    if (!d.plus_sheet.empty()) c.legend(swatch(kPlus), "front (+) sheet of the dual polygon: wrenches with m > 0 (filled dots)");
+    if (!d.minus_sheet.empty()) c.legend(swatch(kMinus), "back (\u2212) sheet: wrenches with m < 0, drawn where they sit (hollow dots)");
+    if (d.infinity.shape != Cone2::Shape::zero) c.legend(swatch(kInfinity, 1), "points at infinity of the polygon: forces through the origin O");
+    if (s.load) c.legend(swatch(kLoad, 1), "antipode of the load: balanced iff it lies in the polygon");
+    c.caption(std::string("covers the whole two-sided plane: ") + (d.covers_all ? "yes (force closure)" : "no"));
+    c.caption("a wrench (fx, fy, m) is the point D(w) = (\u2212fy, fx, m): (\u2212fy/m, fx/m) on the sheet of sign m");
+    if (s.load) {
+      const Vec3 w = as_vec(load_wrench(s));
+      c.caption(std::string("load balanced: ") + (in_cone(l.cone, {-w[0], -w[1], -w[2]}) ? "yes" : "no"));
+    }
     svg = c.finish();
   }
   if (o.has("--output")) write_file(o.values.at("--output"), svg);

@@ -8,7 +8,7 @@ namespace wrenchkit::cli {
 
 namespace {
 
-constexpr double kWidth = 720, kDiscPx = 320, kCx = 360, kCy = 390;
+constexpr double kWidth = 720, kDiscPx = 320, kCx = 360, kCy = 396;
 constexpr double kPi = 3.14159265358979323846;
 
 std::string num(double v) {
@@ -62,8 +62,11 @@ std::string xml_escape(const std::string& s) {
   return o;
 }
 
-Svg_canvas::Svg_canvas(P2 centre, double radius, std::string title)
-    : centre_(centre), radius_(radius > 0 && std::isfinite(radius) ? radius : 1), title_(std::move(title)) {}
+Svg_canvas::Svg_canvas(P2 centre, double radius, std::string title, std::string subtitle)
+    : centre_(centre),
+      radius_(radius > 0 && std::isfinite(radius) ? radius : 1),
+      title_(std::move(title)),
+      subtitle_(std::move(subtitle)) {}
 
 P2 Svg_canvas::screen(P2 w) const {
   const double s = kDiscPx / radius_;
@@ -101,15 +104,16 @@ std::vector<P2> Svg_canvas::clip(const std::vector<P2>& poly) const {
   return out;
 }
 
-void Svg_canvas::polygon(const std::vector<P2>& pts, const std::string& style) {
+std::vector<P2> Svg_canvas::polygon(const std::vector<P2>& pts, const std::string& style) {
   const std::vector<P2> c = clip(pts);
-  if (c.size() < 3) return;
+  if (c.size() < 3) return c;
   body_ += "<polygon points=\"";
   for (const P2& p : c) {
     const P2 s = screen(p);
     body_ += num(s.x) + "," + num(s.y) + " ";
   }
   body_ += "\" " + style + "/>\n";
+  return c;
 }
 
 void Svg_canvas::line(P2 a, P2 b, const std::string& style) {
@@ -151,7 +155,8 @@ void Svg_canvas::dot(P2 p, double r_px, const std::string& style) {
 void Svg_canvas::text(P2 p, const std::string& s, const std::string& style) {
   if (std::hypot(p.x - centre_.x, p.y - centre_.y) > radius_) return;
   const P2 q = screen(p);
-  body_ += "<text x=\"" + num(q.x + 6) + "\" y=\"" + num(q.y - 6) + "\" font-size=\"13\" " + style + ">" +
+  const bool sized = style.find("font-size") != std::string::npos;
+  body_ += "<text x=\"" + num(q.x + 6) + "\" y=\"" + num(q.y - 6) + "\" " + (sized ? "" : "font-size=\"13\" ") + style + ">" +
            xml_escape(s) + "</text>\n";
 }
 
@@ -168,6 +173,12 @@ void Svg_canvas::region(const Region& r, const std::string& fill, const std::str
   double far = 4 * radius_;
   for (const P2& p : v) far = std::max(far, 4 * (radius_ + std::hypot(p.x - centre_.x, p.y - centre_.y)));
   const auto away = [&](P2 p, P2 u) { return P2{p.x + far * u.x, p.y + far * u.y}; };
+  const auto centroid = [&](const std::vector<P2>& c) {
+    if (c.empty()) return;
+    P2 m{0, 0};
+    for (const P2& p : c) m.x += p.x / static_cast<double>(c.size()), m.y += p.y / static_cast<double>(c.size());
+    anchor = m;
+  };
   // Arrowheads where the region runs off to infinity: on its boundary rays, just inside the rim.
   const auto run_off = [&](P2 from, P2 u) {
     const double t = 0.9 * radius_;
@@ -194,11 +205,11 @@ void Svg_canvas::region(const Region& r, const std::string& fill, const std::str
       run_off(v[0], d[1]);
       break;
     case S::strip:
-      polygon({away(v[0], d[1]), away(v[0], d[0]), away(v[1], d[0]), away(v[1], d[1])}, area_style);
+      centroid(polygon({away(v[0], d[1]), away(v[0], d[0]), away(v[1], d[0]), away(v[1], d[1])}, area_style));
       run_off(v[0], d[0]);
       run_off(v[1], d[1]);
       break;
-    case S::polygon: polygon(v, area_style); break;
+    case S::polygon: centroid(polygon(v, area_style)); break;
     case S::plane:
       polygon({{centre_.x - 2 * radius_, centre_.y - 2 * radius_}, {centre_.x + 2 * radius_, centre_.y - 2 * radius_},
                {centre_.x + 2 * radius_, centre_.y + 2 * radius_}, {centre_.x - 2 * radius_, centre_.y + 2 * radius_}},
@@ -221,15 +232,14 @@ void Svg_canvas::region(const Region& r, const std::string& fill, const std::str
         const P2 from = i == 0 ? last : (i == steps ? first : P2{(last.x + first.x) / 2, (last.y + first.y) / 2});
         poly.push_back(away(from, {std::cos(a), std::sin(a)}));
       }
-      polygon(poly, area_style);
+      centroid(polygon(poly, area_style));
       run_off(last, d.front());
       run_off(first, d.back());
       if (r.shape == S::half_plane) run_off(first, d[1]);
-      anchor = v[v.size() / 2];
       break;
     }
   }
-  if (!label.empty()) text(anchor, label, "font-weight=\"bold\" fill=\"" + stroke + "\"");
+  if (!label.empty()) text(anchor, label, "font-size=\"20\" font-weight=\"bold\" fill=\"" + stroke + "\"");
 }
 
 void Svg_canvas::infinity_arc(P2 from, P2 to, bool full, const std::string& colour) {
@@ -278,10 +288,12 @@ std::string Svg_canvas::finish() const {
   std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
                   num(kWidth) + "\" height=\"" + num(height) + "\" viewBox=\"0 0 " + num(kWidth) + " " + num(height) +
                   "\" font-family=\"sans-serif\">\n";
-  s += "<title>" + xml_escape(title_) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  s += "<title>" + xml_escape(title_ + " \u2014 " + subtitle_) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   s += "<defs><clipPath id=\"view\"><circle cx=\"" + num(kCx) + "\" cy=\"" + num(kCy) + "\" r=\"" + num(kDiscPx) +
        "\"/></clipPath></defs>\n";
-  s += "<text x=\"" + num(kCx) + "\" y=\"34\" font-size=\"18\" text-anchor=\"middle\">" + xml_escape(title_) + "</text>\n";
+  s += "<text x=\"" + num(kCx) + "\" y=\"28\" font-size=\"16\" text-anchor=\"middle\">" + xml_escape(title_) + "</text>\n";
+  s += "<text x=\"" + num(kCx) + "\" y=\"50\" font-size=\"14\" fill=\"#555\" text-anchor=\"middle\">" +
+       xml_escape(subtitle_) + "</text>\n";
   s += "<circle cx=\"" + num(kCx) + "\" cy=\"" + num(kCy) + "\" r=\"" + num(kDiscPx + 6) +
        "\" fill=\"none\" stroke=\"#bbb\" stroke-width=\"1\" stroke-dasharray=\"4 4\"/>\n";
   s += "<g clip-path=\"url(#view)\">\n" + body_ + "</g>\n" + rim_;

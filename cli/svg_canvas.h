@@ -21,11 +21,12 @@ P2 to_p2(const Vec2& v);
 class Svg_canvas {
  public:
   // The view: a disc of world radius `radius` about `centre`, drawn on a square canvas.
-  Svg_canvas(P2 centre, double radius, std::string title);
+  Svg_canvas(P2 centre, double radius, std::string title, std::string subtitle = "");
 
   // World-space drawing (clipped to the view disc).
   void region(const Region& r, const std::string& fill, const std::string& stroke, const std::string& label);
-  void polygon(const std::vector<P2>& pts, const std::string& style);
+  // Returns the clipped polygon (world coordinates).
+  std::vector<P2> polygon(const std::vector<P2>& pts, const std::string& style);
   void line(P2 a, P2 b, const std::string& style);
   void full_line(P2 through, P2 direction, const std::string& style);  // the whole line, clipped
   void arrow(P2 from, P2 to, const std::string& colour, double width = 2);
@@ -50,7 +51,7 @@ class Svg_canvas {
 
   P2 centre_;
   double radius_;
-  std::string title_;
+  std::string title_, subtitle_;
   std::string body_;  // clipped to the view disc
   std::string rim_;   // on the circle at infinity
   std::vector<std::pair<std::string, std::string>> legend_;
