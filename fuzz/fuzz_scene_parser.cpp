@@ -12,6 +12,7 @@
 
 #include "exact/closure.h"
 #include "exact/equilibrium.h"
+#include "exact/force_dual.h"
 #include "exact/input_error.h"
 #include "exact/scene.h"
 #include "proofs/checker/checker.h"
@@ -45,6 +46,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (a.holds != b.holds || a.rank != b.rank) {
       std::cerr << "lazy and eager scenes disagree\n";
       std::abort();
+    }
+  }
+  // Labels and the force dual come from the same cone: nothing labeled ⇔ closure ⇔ the dual covers
+  // everything; the load read on the labels agrees with equilibrium.
+  for (auto p : {wrenchkit::Property::force_closure, wrenchkit::Property::form_closure}) {
+    const auto reading = wrenchkit::reading_of(p);
+    std::vector<wrenchkit::Wrench> w;
+    for (const auto& g : wrenchkit::generators(scene, reading)) w.push_back(g.w);
+    const auto l = wrenchkit::moment_labels(w);
+    const auto d = wrenchkit::force_dual(l, w);
+    const bool holds = wrenchkit::decide_closure(scene, p, wrenchkit::Mode::exact, false).holds;
+    if (l.nothing_labeled() != holds || d.covers_all != holds) {
+      std::cerr << "labels / dual disagree with closure\n";
+      std::abort();
+    }
+    if (scene.load && reading == wrenchkit::Reading::friction) {
+      const auto x = wrenchkit::as_vec(wrenchkit::load_wrench(scene));
+      if (wrenchkit::in_cone(l.cone, {-x[0], -x[1], -x[2]}) !=
+          wrenchkit::decide_equilibrium(scene, wrenchkit::Mode::exact, false).balanced) {
+        std::cerr << "labels disagree with equilibrium\n";
+        std::abort();
+      }
     }
   }
   wrenchkit_checker::Limits cl;
