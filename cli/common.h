@@ -78,4 +78,9 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
 int run_batch(const Options& o);
 int run_check(const Options& o);
 
+// limit_surface_command.cpp, sliding_command.cpp: they read their own options (--sides, --twist, …)
+// and pass the rest to parse_options.
+int run_limit_surface(int argc, char** argv);
+int run_sliding(int argc, char** argv);
+
 }  // namespace wrenchkit::cli

@@ -20,6 +20,9 @@ const char* kUsage =
     "            certificate either way (the contact forces, or a motion the load drives)\n"
     "  check     wrenchkit check SCENE.json CERT.json: the independent checker (proofs/)\n"
     "            accepts (exit 0) or rejects (exit 1) a certificate\n"
+    "  limit-surface  certified polygonal inner and outer limit surfaces of the scene's support,\n"
+    "            with queries: the load for a twist, sticks/slides for a load (--sides, --tolerance)\n"
+    "  sliding   centre of friction and the frictional load of the support for a twist (--twist)\n"
     "  analyze   everything the scene calls for: closure, and equilibrium when it has a load\n"
     "  demo      analyze of a bundled textbook scene (Mason's Example 3), no file needed\n"
     "  batch     wrenchkit batch closure < scenes.jsonl: one scene per line, one answer per line,\n"
@@ -122,6 +125,8 @@ int dispatch(int argc, char** argv) {
     std::cout << "wrenchkit 0.1.0\n";
     return kAnswered;
   }
+  if (command == "limit-surface") return run_limit_surface(argc, argv);  // own options, then parse_options
+  if (command == "sliding") return run_sliding(argc, argv);
   const Options o = parse_options(argc, argv, 2);
   if (command == "closure") {
     if (o.help) return std::cout << kClosureHelp, kAnswered;
