@@ -33,8 +33,9 @@
 namespace wrenchkit {
 
 constexpr int kMaxSides = 4096;
-// Refuse to build polytopes with more candidate normals than this (a clear error, not a hang).
-constexpr std::uint64_t kMaxCandidates = 4000000;
+// Refuse to build polytopes with more candidate normals than this (a clear error, not a hang or an
+// unbounded allocation; measured ~2.6 kB per candidate for both polytopes).
+constexpr std::uint64_t kMaxCandidates = 400000;  // ≈ 1 GB (10 points, N = 128: 368 660)
 
 using Vec3q = std::array<Rational, 3>;
 using Vec3z = std::array<Integer, 3>;
