@@ -266,7 +266,9 @@ int run_limit_surface(int argc, char** argv) {
   const std::string convention =
       "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
       "the friction wrench on the slider is its negative";
-  const std::string ratio = std::to_string(1 / std::sqrt(d.lambda_sq.get_d()) - 1);
+  char ratio_buf[32];
+  std::snprintf(ratio_buf, sizeof ratio_buf, "%.6g", 1 / std::sqrt(d.lambda_sq.get_d()) - 1);
+  const std::string ratio = ratio_buf;
   if (o.json) {
     std::ostringstream s;
     s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(scene.name) << ", \"convention\": "
