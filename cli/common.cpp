@@ -47,7 +47,7 @@ Options parse_options(int argc, char** argv, int first) {
     else if (a == "--max-file-size") o.limits.max_file_bytes = parse_count(a, value());
     else if (a == "--max-contacts") o.limits.max_contacts = parse_count(a, value());
     else if (a == "--resultant" || a == "--center" || a == "--sense" || a == "--direction" ||
-             a == "--twist" || a == "--what" || a == "-o" || a == "--output") {
+             a == "--twist" || a == "--what" || a == "-o" || a == "--output" || a == "--sides") {
       std::string& slot = o.values[a == "-o" ? "--output" : a];
       if (!slot.empty()) throw Usage_error(a + " given twice");
       slot = value();

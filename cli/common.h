@@ -29,7 +29,7 @@ struct Options {
   Input_limits limits;
   std::vector<std::string> positional;
   // Command-specific options with a value (--resultant, --center, --sense, --direction,
-  // --twist, --what, --output/-o): set only when given.
+  // --twist, --what, --output/-o, --sides for render): set only when given.
   std::map<std::string, std::string> values;
   bool has(const std::string& option) const { return values.count(option) != 0; }
 };
@@ -90,5 +90,10 @@ int run_labels(const Options& o, const std::string& scene_text, const std::strin
 int run_dual(const Options& o, const std::string& scene_text, const std::string& source);
 int run_reuleaux(const Options& o, const std::string& scene_text, const std::string& source);
 int run_render(const Options& o, const std::string& scene_text, const std::string& source);
+
+// limit_surface_command.cpp, sliding_command.cpp: they read their own options (--sides, --twist, …)
+// and pass the rest to parse_options.
+int run_limit_surface(int argc, char** argv);
+int run_sliding(int argc, char** argv);
 
 }  // namespace wrenchkit::cli

@@ -23,9 +23,13 @@ const char* kUsage =
     "  dual      the force-dual polygon of the contact wrench cone on the two-sided plane\n"
     "  reuleaux  Reuleaux's method: feasible rotation centres of the contacts read frictionless,\n"
     "            and per-contact modes (break/slide/stick) of a given motion\n"
-    "  render    an SVG picture: render SCENE.json --what labels|dual|reuleaux -o FILE.svg\n"
+    "  render    an SVG picture: render SCENE.json --what labels|dual|reuleaux|limit-surface\n"
+    "            -o FILE.svg\n"
     "  check     wrenchkit check SCENE.json CERT.json: the independent checker (proofs/)\n"
     "            accepts (exit 0) or rejects (exit 1) a certificate\n"
+    "  limit-surface  certified polygonal inner and outer limit surfaces of the scene's support,\n"
+    "            with queries: the load for a twist, sticks/slides for a load (--sides, --tolerance)\n"
+    "  sliding   centre of friction and the frictional load of the support for a twist (--twist)\n"
     "  analyze   everything the scene calls for: closure, and equilibrium when it has a load\n"
     "  demo      analyze of a bundled textbook scene (Mason's Example 3), no file needed\n"
     "  batch     wrenchkit batch closure < scenes.jsonl: one scene per line, one answer per line,\n"
@@ -115,7 +119,7 @@ const char* kReuleauxHelp =
     "  --max-*                         input limits, as for closure\n";
 
 const char* kRenderHelp =
-    "usage: wrenchkit render SCENE.json --what labels|dual|reuleaux [-o FILE.svg]\n"
+    "usage: wrenchkit render SCENE.json --what labels|dual|reuleaux|limit-surface [-o FILE.svg]\n"
     "\n"
     "Draws the construction as an SVG picture (standard output without -o): the body, the\n"
     "contacts with their friction cones (or normals), the lines of force, the + / - regions\n"
@@ -123,14 +127,18 @@ const char* kRenderHelp =
     "on it, arrows where regions run off), the load, and a legend. Exact construction, drawn in\n"
     "floating point. docs/gallery.md shows the textbook cases.\n"
     "\n"
-    "options: --what labels|dual|reuleaux, -o/--output FILE, --max-*\n";
+    "With --what limit-surface: the support's inner and outer polygonal limit surfaces (the f_y = 0\n"
+    "slice, the (f_x, m) and (f_x, f_y) projections), --sides N as for limit-surface (default 32).\n"
+    "\n"
+    "options: --what labels|dual|reuleaux|limit-surface, -o/--output FILE, --sides N, --max-*\n";
 
 const char* kAnalyzeHelp =
     "usage: wrenchkit analyze [OPTIONS] SCENE.json\n"
     "\n"
     "Everything the scene's contents call for, and nothing else: force and form closure of its\n"
-    "contacts, and equilibrium when it has a load, each with a checked certificate. What the scene\n"
-    "asks for that this version cannot compute (a support's limit surface) is listed as skipped.\n"
+    "contacts, and equilibrium when it has a load, each with a checked certificate; a summary of the\n"
+    "limit surface (N = 32 sides or fewer for large supports) when it has a support. What cannot be\n"
+    "computed within analyze's budget is listed as skipped.\n"
     "\n"
     "options: --json, --mode, --max-* (as for closure)\n";
 
@@ -182,6 +190,8 @@ int dispatch(int argc, char** argv) {
     std::cout << "wrenchkit 0.1.0\n";
     return kAnswered;
   }
+  if (command == "limit-surface") return run_limit_surface(argc, argv);  // own options, then parse_options
+  if (command == "sliding") return run_sliding(argc, argv);
   const Options o = parse_options(argc, argv, 2);
   const auto scene_command = [&](const char* help, int (*run)(const Options&, const std::string&, const std::string&)) {
     if (o.help) return std::cout << help, static_cast<int>(kAnswered);

@@ -302,10 +302,10 @@ TEST(Cli, AnalyzeComputesWhatTheSceneCallsFor) {
   ASSERT_EQ(e.code, 0) << e.err;
   EXPECT_NE(e.out.find("\"equilibrium\": {"), std::string::npos) << e.out;
   EXPECT_NE(e.out.find("\"balanced\": true"), std::string::npos) << e.out;
-  EXPECT_NE(e.out.find("{\"what\": \"limit_surface\""), std::string::npos) << e.out;
+  EXPECT_NE(e.out.find("\"limit_surface\": {\"sides\": 32"), std::string::npos) << e.out;
   const Cli_result h = run("analyze '" + s + "'");
   EXPECT_NE(h.out.find("balanced: yes"), std::string::npos) << h.out;
-  EXPECT_NE(h.out.find("skipped limit_surface"), std::string::npos) << h.out;
+  EXPECT_NE(h.out.find("limit surface (32 sides)"), std::string::npos) << h.out;
   EXPECT_EQ(run("analyze --mode float '" + s + "'").code, 3);  // two collinear forces: rank 2, float abstains
   EXPECT_EQ(run("analyze --certificate x.json '" + s + "'").code, 2);
   const Cli_result d = run("demo");
@@ -443,6 +443,13 @@ TEST(Cli, RenderDrawsEveryGoldenScene) {
   for (const char* part : {"<clipPath", "fill=\"#2f6fd0\"", "fill=\"#d0453f\"", "<title>"})
     EXPECT_NE(svg.find(part), std::string::npos) << part;
   fs::remove(out);
+  const Cli_result ls = run("render --what limit-surface --sides 8 '" + test::source_dir() +
+                            "/tests/golden/limit_surface/barbell.scene.json'");
+  ASSERT_EQ(ls.code, 0) << ls.err;
+  EXPECT_TRUE(well_formed_svg(ls.out));
+  EXPECT_EQ(run("render --what limit-surface --sides 7 '" + golden("ladder_mu_1_7") + "'").code, 2);
+  EXPECT_EQ(run("render --what limit-surface '" + golden("ladder_mu_1_7") + "'").code, 2);  // no support
+  EXPECT_EQ(run("render --what labels --sides 8 '" + golden("ladder_mu_1_7") + "'").code, 2);
   EXPECT_EQ(run("render --what pictures -o '" + out + "' '" + golden("ladder_mu_1_7") + "'").code, 2);
   EXPECT_EQ(run("render -o '" + out + "' '" + golden("ladder_mu_1_7") + "'").code, 2);
   EXPECT_FALSE(fs::exists(out));

@@ -26,5 +26,6 @@ square_crossed_reuleaux       reuleaux  square_crossed_couples
 square_aligned_reuleaux       reuleaux  square_aligned
 triangle_concurrent_reuleaux  reuleaux  triangle_four_concurrent
 two_finger_labels             labels    two_finger_y9_10_mu1_4
+barbell_limit_surface         limit-surface limit_surface/barbell
 LIST
 echo "make_gallery: wrote docs/gallery/*.svg"

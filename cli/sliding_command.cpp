@@ -1,0 +1,165 @@
+// wrenchkit sliding: centre of friction and the frictional load of the scene's support for a twist
+// (theory.md §10, §11.5) [LS-4]. Exact for translations; exact bounds for rotations.
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/common.h"
+#include "exact/input_error.h"
+#include "exact/json.h"
+#include "exact/sliding.h"
+
+namespace wrenchkit::cli {
+
+const char* kSlidingHelp =
+    "usage: wrenchkit sliding [OPTIONS] SCENE.json\n"
+    "\n"
+    "Planar sliding of the body on the scene's \"support\" (theory.md §10): the centre of friction\n"
+    "(pressure centroid, exact) and, with --twist, the frictional load for that motion.\n"
+    "  translation (w = 0): the load is the force mu*f0 along v through the friction centroid,\n"
+    "    exactly: load = (mu*f0/|v|) * (vx, vy, c x v); printed as an exact vector when |v| is rational;\n"
+    "  rotation about a point c: the power h = sum mu_i f_i |v_i| lies between the exact polygonal\n"
+    "    bounds h_in <= h <= h_out (theory.md §12.3), the loads of LS_in and LS_out are given exactly,\n"
+    "    and an exact rational box contains the true load. When c is a support point the load is a\n"
+    "    FACET: that point's friction disc, translated; the box then contains the facet's centre.\n"
+    "\n"
+    "Sign convention (theory.md §1.5): the LOAD is the wrench the slider applies to the support,\n"
+    "parallel to the sliding velocity; the friction wrench on the slider is its negative.\n"
+    "\n"
+    "options:\n"
+    "  --twist vx,vy,w   the motion (exact numbers: 1, -1/2, 0.25); not the zero twist\n"
+    "  --sides N         sides of the polygons for the bounds (even, 4..4096, default 64)\n"
+    "  --json, --max-digits N, --max-exponent N, --max-file-size BYTES  (as for closure)\n";
+
+namespace {
+
+std::string jq(const Rational& q) { return json::quote(to_string(q)); }
+std::string jv(const Vec3q& v) { return "[" + jq(v[0]) + ", " + jq(v[1]) + ", " + jq(v[2]) + "]"; }
+std::string tv(const Vec3q& v) { return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")"; }
+std::string face_json(const Ls_face& f) {
+  std::string s = "{\"dimension\": " + std::to_string(f.dimension) + ", \"vertices\": [";
+  for (std::size_t i = 0; i < f.vertices.size(); ++i) s += (i ? ", " : "") + jv(f.vertices[i]);
+  return s + "]}";
+}
+
+}  // namespace
+
+int run_sliding(int argc, char** argv) {
+  std::vector<char*> rest = {argv[0], argv[1]};
+  std::string twist_text, sides_text;
+  bool has_twist = false;
+  int sides = 64;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw Usage_error(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--twist") {
+      twist_text = value();
+      has_twist = true;
+    } else if (a == "--sides") {
+      sides_text = value();
+      if (sides_text.empty() || sides_text.size() > 6 || sides_text.find_first_not_of("0123456789") != std::string::npos)
+        throw Usage_error("--sides: \"" + sides_text + "\" is not a positive integer");
+      sides = std::stoi(sides_text);
+      if (sides < 4 || sides % 2 != 0 || sides > kMaxSides)
+        throw Usage_error("--sides: " + sides_text + " must be even and between 4 and " + std::to_string(kMaxSides));
+    } else {
+      rest.push_back(argv[i]);
+    }
+  }
+  const Options o = parse_options(static_cast<int>(rest.size()), rest.data(), 2);
+  if (o.help) return std::cout << kSlidingHelp, kAnswered;
+  if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
+  if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
+    throw Usage_error("sliding writes no certificate file");
+  if (o.positional.size() != 1) throw Usage_error("sliding needs exactly one SCENE.json");
+  std::optional<Vec3q> twist;
+  if (has_twist) {
+    std::vector<std::string> parts(1);
+    for (char c : twist_text) {
+      if (c == ',') parts.emplace_back();
+      else parts.back() += c;
+    }
+    if (parts.size() != 3)
+      throw Usage_error("--twist: \"" + twist_text + "\" is not three numbers vx,vy,w separated by commas");
+    Vec3q t;
+    for (std::size_t i = 0; i < 3; ++i) {
+      std::string why;
+      const auto q = parse_rational(parts[i], false, o.limits, why);
+      if (!q) throw Usage_error("--twist: \"" + parts[i] + "\" " + why);
+      t[i] = *q;
+    }
+    if (t[0] == 0 && t[1] == 0 && t[2] == 0)
+      throw Usage_error("--twist: \"" + twist_text + "\" is the zero twist (no motion, no load)");
+    twist = t;
+  }
+  const std::string& path = o.positional[0];
+  const std::string source = path == "-" ? "<stdin>" : path;
+  const Scene scene = read_scene(read_input(path, o.limits.max_file_bytes), o.limits, source);
+  if (!scene.support) throw Input_error(source + ": support: the scene has no \"support\" (sliding needs one)");
+  const Polygonal_ls model(merge_support(*scene.support), make_directions(sides));
+  const Sliding_answer a = compute_sliding(model, twist);
+  const char* convention =
+      "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
+      "the friction wrench on the slider is its negative";
+  const char* kinds[] = {"facet", "vertex", "smooth"};
+  if (o.json) {
+    std::ostringstream s;
+    s << "{\"command\": \"sliding\", \"name\": " << json::quote(scene.name) << ", \"convention\": " << json::quote(convention)
+      << ", \"center_of_friction\": [" << jq(a.center_of_friction.x) << ", " << jq(a.center_of_friction.y)
+      << "], \"friction_centroid\": [" << jq(a.friction_centroid.x) << ", " << jq(a.friction_centroid.y)
+      << "], \"mu_f0\": " << jq(a.mu_f0);
+    if (a.has_twist) {
+      s << ", \"twist\": " << jv(a.twist) << ", \"motion\": \"" << (a.translation ? "translation" : "rotation") << "\"";
+      if (a.translation) {
+        s << ", \"load_direction\": " << jv(a.load_direction) << ", \"speed_squared\": " << jq(a.speed_squared)
+          << ", \"load\": " << (a.load ? jv(*a.load) : std::string("null"));
+      } else {
+        s << ", \"rotation_center\": [" << jq(a.rotation_center.x) << ", " << jq(a.rotation_center.y) << "]";
+      }
+      s << ", \"true_surface\": {\"kind\": \"" << kinds[static_cast<int>(a.cls.kind)] << "\", \"text\": "
+        << json::quote(a.cls.text);
+      if (a.cls.support_point >= 0) {
+        const Ls_point& p = model.support().points[static_cast<std::size_t>(a.cls.support_point)];
+        s << ", \"facet_disc\": {\"at\": [" << jq(p.at.x) << ", " << jq(p.at.y) << "], \"radius\": " << jq(p.rho) << "}";
+      }
+      s << "}, \"sides\": " << sides << ", \"lambda_squared\": " << jq(model.directions().lambda_sq)
+        << ", \"power\": {\"inner\": " << jq(a.h_inner) << ", \"outer\": " << jq(a.h_outer) << ", \"lower\": "
+        << jq(a.h_lo) << ", \"upper\": " << jq(a.h_hi) << "}, \"load_box\": {\"lower\": " << jv(a.load_lo)
+        << ", \"upper\": " << jv(a.load_hi) << ", \"of\": \""
+        << (a.cls.kind == Twist_kind::facet ? "the facet's centre" : "the load") << "\"}, \"inner_load\": "
+        << face_json(a.inner_face) << ", \"outer_load\": " << face_json(a.outer_face);
+    }
+    s << "}\n";
+    std::cout << s.str();
+    return kAnswered;
+  }
+  std::ostringstream s;
+  s << "scene: " << (scene.name.empty() ? source : scene.name) << "\n"
+    << "centre of friction: (" << to_string(a.center_of_friction.x) << ", " << to_string(a.center_of_friction.y) << ")\n"
+    << "mu*f0 = " << to_string(a.mu_f0) << ", friction centroid (" << to_string(a.friction_centroid.x) << ", "
+    << to_string(a.friction_centroid.y) << ")\n";
+  if (a.has_twist) {
+    s << "twist " << tv(a.twist) << ": " << a.cls.text << "\n";
+    if (a.translation) {
+      if (a.load) s << "load: " << tv(*a.load) << " (exact)\n";
+      else
+        s << "load: (mu*f0/|v|) * " << tv(a.load_direction) << " with |v|^2 = " << to_string(a.speed_squared)
+          << " (exact)\n";
+    } else {
+      s << "power h between " << to_string(a.h_inner) << " and " << to_string(a.h_outer) << " (polygonal, " << sides
+        << " sides)\n";
+    }
+    s << "load box: " << tv(a.load_lo) << " .. " << tv(a.load_hi)
+      << (a.cls.kind == Twist_kind::facet ? " (the facet's centre)\n" : "\n");
+  }
+  s << "convention: " << convention << "\n";
+  std::cout << s.str();
+  return kAnswered;
+}
+
+}  // namespace wrenchkit::cli

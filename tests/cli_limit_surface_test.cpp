@@ -1,0 +1,225 @@
+// End-to-end tests of `wrenchkit limit-surface` and `wrenchkit sliding` (docs/limit-surface.md):
+// every option, the JSON fields, the exports (OFF/OBJ/SVG well-formed, counts matching), and every
+// bad-input class (exit 2, a message naming the option or field, nothing on stdout).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Cli_result {
+  int code;
+  std::string out, err;
+};
+
+fs::path scratch() {
+  const fs::path d = fs::temp_directory_path() / ("wrenchkit_cli_ls_test_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+Cli_result run(const std::string& args, const std::string& stdin_text = "") {
+  const fs::path d = scratch();
+  const std::string in = (d / "stdin").string(), out = (d / "stdout").string(), err = (d / "stderr").string();
+  std::ofstream(in, std::ios::binary) << stdin_text;
+  const std::string cmd = "'" + std::string(WRENCHKIT_CLI) + "' " + args + " < '" + in + "' > '" + out + "' 2> '" + err + "'";
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::read_text(out), test::read_text(err)};
+}
+
+std::string golden(const std::string& name) {
+  return "'" + test::source_dir() + "/tests/golden/limit_surface/" + name + ".scene.json'";
+}
+
+// The integer after "key": in a JSON text (first occurrence after `from`).
+long field(const std::string& json, const std::string& key, std::size_t from = 0) {
+  const std::size_t p = json.find("\"" + key + "\": ", from);
+  if (p == std::string::npos) return -1;
+  return std::stol(json.substr(p + key.size() + 4));
+}
+
+bool has(const std::string& s, const std::string& what) { return s.find(what) != std::string::npos; }
+
+TEST(CliLimitSurface, BarbellJsonCountsAndCertificate) {
+  const Cli_result r = run("limit-surface --json --sides 8 " + golden("barbell"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\"sides\": 8, \"lambda_squared\": \"")) << r.out;
+  const std::size_t in = r.out.find("\"inner\": "), out = r.out.find("\"outer\": ");
+  EXPECT_EQ(field(r.out, "facets", in), 22);  // theory.md §12.4: octagons, 22 facets
+  EXPECT_EQ(field(r.out, "rotation_facets", in), 4);
+  EXPECT_EQ(field(r.out, "dimension", out), 3);
+  EXPECT_TRUE(has(r.out, "\"collinear\": true"));
+  EXPECT_TRUE(has(r.out, "the slider applies to the support"));  // the sign convention is stated
+  EXPECT_TRUE(r.err.empty());
+  const Cli_result h = run("limit-surface --sides 8 " + golden("barbell"));
+  EXPECT_EQ(h.code, 0);
+  EXPECT_TRUE(has(h.out, "inner: 22 facets")) << h.out;
+  EXPECT_TRUE(has(h.out, "certificate: lambda^2 = "));
+}
+
+TEST(CliLimitSurface, TwistAndLoadQueries) {
+  const Cli_result r = run("limit-surface --json --sides 8 --twist -1,0,1 --load 0,0,1/2 " + golden("barbell"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\"load_for_twist\": {\"inner\": {\"dimension\": 2")) << r.out;  // a facet
+  EXPECT_TRUE(has(r.out, "\"kind\": \"facet\""));
+  EXPECT_TRUE(has(r.out, "\"motion\": \"sticks\""));
+  const Cli_result s = run("limit-surface --json --sides 8 --load 0,0,2 " + golden("barbell"));
+  EXPECT_TRUE(has(s.out, "\"motion\": \"slides\"")) << s.out;
+  EXPECT_TRUE(has(s.out, "\"twist_cone\": {\"outer\": {\"generators\": [["));
+  const Cli_result u = run("limit-surface --json --sides 8 --load 0,0,1 " + golden("barbell"));
+  EXPECT_TRUE(has(u.out, "\"motion\": \"undecided\"")) << u.out;
+  const Cli_result h = run("limit-surface --sides 8 --load 0,0,1 --twist 0,0,1 " + golden("barbell"));
+  EXPECT_TRUE(has(h.out, "undecided: refine")) << h.out;
+  EXPECT_TRUE(has(h.out, "non-smooth point")) << h.out;
+}
+
+TEST(CliLimitSurface, ToleranceAndListAndDegenerateScenes) {
+  const Cli_result r = run("limit-surface --json --tolerance 1/100 " + golden("coincident_collinear"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\"tolerance\": \"1/100\"")) << r.out;
+  EXPECT_GT(field(r.out, "sides"), 4);
+  EXPECT_EQ(field(r.out, "points"), 3);  // (0,0) given twice is merged; (5,1) has mu 0 and is dropped
+  const Cli_result one = run("limit-surface --json --sides 6 --list " + golden("single_point"));
+  ASSERT_EQ(one.code, 0) << one.err;
+  EXPECT_EQ(field(one.out, "dimension"), 2);
+  EXPECT_TRUE(has(one.out, "\"vertex_list\": [["));
+  const Cli_result z = run("limit-surface --json --load 1,0,0 " + golden("zero_friction"));
+  ASSERT_EQ(z.code, 0) << z.err;
+  EXPECT_EQ(field(z.out, "dimension"), 0);
+  EXPECT_TRUE(has(z.out, "\"motion\": \"slides\""));
+}
+
+TEST(CliLimitSurface, ExportsAreWellFormedAndMatchTheCounts) {
+  const fs::path d = scratch();
+  const std::string off = (d / "ls.off").string(), obj = (d / "ls.obj").string(), svg = (d / "ls.svg").string();
+  const Cli_result r = run("limit-surface --json --sides 6 --off '" + off + "' --obj '" + obj + "' --svg '" + svg + "' " +
+                           golden("barbell"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::size_t in = r.out.find("\"inner\": "), out = r.out.find("\"outer\": ");
+  const long fi = field(r.out, "facets", in), vi = field(r.out, "vertices", in);
+  const long fo = field(r.out, "facets", out), vo = field(r.out, "vertices", out);
+  std::istringstream o(test::read_text(off));
+  std::string line;
+  std::getline(o, line);
+  EXPECT_EQ(line, "OFF");
+  do std::getline(o, line);
+  while (!line.empty() && line[0] == '#');
+  long nv = 0, nf = 0, ne = 0;
+  std::istringstream(line) >> nv >> nf >> ne;
+  EXPECT_EQ(nv, vi + vo);
+  EXPECT_EQ(nf, fi + fo);
+  long vlines = 0, flines = 0;
+  for (long i = 0; i < nv && std::getline(o, line); ++i) ++vlines;
+  while (std::getline(o, line)) {
+    std::istringstream f(line);
+    long k = 0;
+    f >> k;
+    long idx = 0, got = 0;
+    while (got < k && f >> idx) {
+      EXPECT_GE(idx, 0);
+      EXPECT_LT(idx, nv);
+      ++got;
+    }
+    EXPECT_EQ(got, k);
+    ++flines;
+  }
+  EXPECT_EQ(vlines, nv);
+  EXPECT_EQ(flines, nf);
+  const std::string objt = test::read_text(obj);
+  long ov = 0, of = 0;
+  std::istringstream ob(objt);
+  while (std::getline(ob, line)) {
+    ov += line.rfind("v ", 0) == 0;
+    of += line.rfind("f ", 0) == 0;
+  }
+  EXPECT_EQ(ov, vi + vo);
+  EXPECT_EQ(of, fi + fo);
+  EXPECT_TRUE(has(objt, "o inner\n") && has(objt, "o outer\n"));
+  const std::string s = test::read_text(svg);
+  EXPECT_EQ(s.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
+  EXPECT_EQ(s.substr(s.size() - 7), "</svg>\n");
+  EXPECT_TRUE(has(s, "slice f_y = 0") && has(s, "projection onto (f_x, f_y)") && has(s, "<polygon points="));
+  EXPECT_FALSE(fs::exists(off + ".tmp-wrenchkit"));
+}
+
+TEST(CliSliding, CentreOfFrictionAndLoads) {
+  const Cli_result r = run("sliding --json --twist 3,4,0 " + golden("barbell"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\"center_of_friction\": [\"0\", \"0\"]")) << r.out;
+  EXPECT_TRUE(has(r.out, "\"load\": [\"3/5\", \"4/5\", \"0\"]"));
+  const Cli_result f = run("sliding --json --sides 16 --twist -1,0,1 " + golden("barbell"));
+  ASSERT_EQ(f.code, 0) << f.err;
+  EXPECT_TRUE(has(f.out, "\"kind\": \"facet\"")) << f.out;
+  EXPECT_TRUE(has(f.out, "\"facet_disc\": {\"at\": [\"0\", \"-1\"], \"radius\": \"1/2\"}"));
+  EXPECT_TRUE(has(f.out, "\"load_box\": {\"lower\": [\"-1/2\", \"0\", \"1/2\"], \"upper\": [\"-1/2\", \"0\", \"1/2\"]"));
+  const Cli_result c = run("sliding " + golden("ten_points"));
+  EXPECT_EQ(c.code, 0);
+  EXPECT_TRUE(has(c.out, "centre of friction: ("));
+  const Cli_result h = run("sliding --twist 1,1,0 " + golden("single_point"));
+  EXPECT_TRUE(has(h.out, "(mu*f0/|v|) * (1, 1, ")) << h.out;
+}
+
+TEST(CliLimitSurface, HelpTexts) {
+  const Cli_result a = run("limit-surface --help");
+  EXPECT_EQ(a.code, 0);
+  EXPECT_TRUE(has(a.out, "--tolerance EPS") && has(a.out, "theory.md §1.5"));
+  const Cli_result b = run("sliding --help");
+  EXPECT_EQ(b.code, 0);
+  EXPECT_TRUE(has(b.out, "--twist vx,vy,w"));
+  const Cli_result c = run("--help");
+  EXPECT_TRUE(has(c.out, "limit-surface") && has(c.out, "sliding"));
+}
+
+TEST(CliLimitSurface, BadInputExitsTwoWithAClearMessageAndNoOutput) {
+  const std::string b = golden("barbell");
+  const struct {
+    std::string args, message;
+  } cases[] = {
+      {"limit-surface --sides 3 " + b, "--sides: 3"},
+      {"limit-surface --sides 7 " + b, "--sides: 7"},
+      {"limit-surface --sides 5000 " + b, "--sides: 5000"},
+      {"limit-surface --sides abc " + b, "--sides: \"abc\""},
+      {"limit-surface --sides " , "--sides needs a value"},
+      {"limit-surface --twist 1,2 " + b, "--twist: \"1,2\""},
+      {"limit-surface --twist a,0,1 " + b, "--twist: \"a\""},
+      {"limit-surface --twist 0,0,0 " + b, "zero twist"},
+      {"limit-surface --load 1,2,3,4 " + b, "--load: \"1,2,3,4\""},
+      {"limit-surface --tolerance 0 " + b, "--tolerance: \"0\""},
+      {"limit-surface --tolerance -1 " + b, "--tolerance: \"-1\""},
+      {"limit-surface --tolerance 1e-30 " + b, "--tolerance: 1e-30 needs more than 4096"},
+      {"limit-surface --sides 8 --tolerance 0.1 " + b, "exclude each other"},
+      {"limit-surface --bogus " + b, "unknown option --bogus"},
+      {"limit-surface " + golden("no_support"), "support"},
+      {"limit-surface --sides 4096 " + golden("ten_points"), "candidate normals"},
+      {"limit-surface", "exactly one SCENE.json"},
+      {"sliding --twist 0,0,0 " + b, "zero twist"},
+      {"sliding --twist 1,x,0 " + b, "--twist: \"x\""},
+      {"sliding --sides 9 " + b, "--sides: 9"},
+      {"sliding " + golden("no_support"), "support"},
+      {"limit-surface --off /nonexistent-dir/x.off " + b, "/nonexistent-dir/x.off"},
+  };
+  for (const auto& c : cases) {
+    const Cli_result r = run(c.args);
+    EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
+    EXPECT_TRUE(r.out.empty()) << c.args << "\n" << r.out;
+    EXPECT_TRUE(has(r.err, c.message)) << c.args << "\n" << r.err;
+  }
+  // Bad scene text is reported with its JSON path.
+  const Cli_result j = run("limit-surface -",
+                           "{\"wrenchkit\": 1, \"support\": {\"mu\": 1, \"points\": [{\"at\": [0,0], \"force\": \"abc\"}]}}");
+  EXPECT_EQ(j.code, 2);
+  EXPECT_TRUE(has(j.err, "support.points[0].force")) << j.err;
+  EXPECT_TRUE(j.out.empty());
+}
+
+}  // namespace
+}  // namespace wrenchkit
