@@ -128,6 +128,14 @@ wrenchkit_checker::Limits checker_limits(const Input_limits& l) {
   return c;
 }
 
+std::string human_number(const Rational& q) {
+  std::string t = to_string(q);
+  if (t.size() <= 24) return t;
+  char b[40];
+  std::snprintf(b, sizeof b, "~%.12g", q.get_d());
+  return b;
+}
+
 std::string vec_text(const std::array<Rational, 3>& v) {
   return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")";
 }

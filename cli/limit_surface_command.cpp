@@ -164,7 +164,7 @@ std::string obj_text(const Ls_polytope& in, const Ls_polytope& out) {
   return s.str();
 }
 
-std::string gauge_text(const std::optional<Rational>& g) { return g ? to_string(*g) : std::string("infinite"); }
+std::string gauge_text(const std::optional<Rational>& g) { return g ? human_number(*g) : std::string("infinite"); }
 std::string gauge_json(const std::optional<Rational>& g) { return g ? jq(*g) : std::string("null"); }
 
 }  // namespace

@@ -37,7 +37,9 @@ namespace {
 
 std::string jq(const Rational& q) { return json::quote(to_string(q)); }
 std::string jv(const Vec3q& v) { return "[" + jq(v[0]) + ", " + jq(v[1]) + ", " + jq(v[2]) + "]"; }
-std::string tv(const Vec3q& v) { return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")"; }
+std::string thv(const Vec3q& v) {
+  return "(" + human_number(v[0]) + ", " + human_number(v[1]) + ", " + human_number(v[2]) + ")";
+}
 std::string face_json(const Ls_face& f) {
   std::string s = "{\"dimension\": " + std::to_string(f.dimension) + ", \"vertices\": [";
   for (std::size_t i = 0; i < f.vertices.size(); ++i) s += (i ? ", " : "") + jv(f.vertices[i]);
@@ -140,21 +142,21 @@ int run_sliding(int argc, char** argv) {
   }
   std::ostringstream s;
   s << "scene: " << (scene.name.empty() ? source : scene.name) << "\n"
-    << "centre of friction: (" << to_string(a.center_of_friction.x) << ", " << to_string(a.center_of_friction.y) << ")\n"
-    << "mu*f0 = " << to_string(a.mu_f0) << ", friction centroid (" << to_string(a.friction_centroid.x) << ", "
-    << to_string(a.friction_centroid.y) << ")\n";
+    << "centre of friction: (" << human_number(a.center_of_friction.x) << ", " << human_number(a.center_of_friction.y) << ")\n"
+    << "mu*f0 = " << human_number(a.mu_f0) << ", friction centroid (" << human_number(a.friction_centroid.x) << ", "
+    << human_number(a.friction_centroid.y) << ")\n";
   if (a.has_twist) {
-    s << "twist " << tv(a.twist) << ": " << a.cls.text << "\n";
+    s << "twist " << thv(a.twist) << ": " << a.cls.text << "\n";
     if (a.translation) {
-      if (a.load) s << "load: " << tv(*a.load) << " (exact)\n";
+      if (a.load) s << "load: " << thv(*a.load) << " (exact)\n";
       else
-        s << "load: (mu*f0/|v|) * " << tv(a.load_direction) << " with |v|^2 = " << to_string(a.speed_squared)
+        s << "load: (mu*f0/|v|) * " << thv(a.load_direction) << " with |v|^2 = " << human_number(a.speed_squared)
           << " (exact)\n";
     } else {
-      s << "power h between " << to_string(a.h_inner) << " and " << to_string(a.h_outer) << " (polygonal, " << sides
+      s << "power h between " << human_number(a.h_inner) << " and " << human_number(a.h_outer) << " (polygonal, " << sides
         << " sides)\n";
     }
-    s << "load box: " << tv(a.load_lo) << " .. " << tv(a.load_hi)
+    s << "load box: " << thv(a.load_lo) << " .. " << thv(a.load_hi)
       << (a.cls.kind == Twist_kind::facet ? " (the facet's centre)\n" : "\n");
   }
   s << "convention: " << convention << "\n";
