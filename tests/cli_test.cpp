@@ -16,26 +16,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Cli_result {
-  int code;
-  std::string out, err;
-};
+using test::Cli_result;
 
-fs::path scratch() {
-  const fs::path d = fs::temp_directory_path() / ("wrenchkit_cli_test_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+fs::path scratch() { return test::scratch_dir("cli_test"); }
 
 // Runs the command with `env` (e.g. "VAR=value") in front of it.
 Cli_result run_env(const std::string& env, const std::string& args, const std::string& stdin_text = "") {
-  const fs::path d = scratch();
-  const std::string in = (d / "stdin").string(), out = (d / "stdout").string(), err = (d / "stderr").string();
-  std::ofstream(in, std::ios::binary) << stdin_text;
-  const std::string cmd = env + (env.empty() ? "" : " ") + "'" + WRENCHKIT_CLI + "' " + args + " < '" + in + "' > '" +
-                          out + "' 2> '" + err + "'";
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::read_text(out), test::read_text(err)};
+  return test::run_cli(WRENCHKIT_CLI, env, args, stdin_text, "cli_test");
 }
 
 Cli_result run(const std::string& args, const std::string& stdin_text = "") { return run_env("", args, stdin_text); }

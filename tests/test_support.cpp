@@ -1,7 +1,10 @@
-#include <array>
 #include "tests/test_support.h"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -122,6 +125,24 @@ int brute_force_rank(const std::vector<Wrench>& g) {
 }
 
 // Carathéodory: some ≤ 3 generators with a non-negative exact solution.
+std::string scratch_dir(const std::string& tag) {
+  namespace fs = std::filesystem;
+  const fs::path d = fs::temp_directory_path() / ("wrenchkit_" + tag + "_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d.string();
+}
+
+Cli_result run_cli(const std::string& exe, const std::string& env, const std::string& args,
+                   const std::string& stdin_text, const std::string& tag) {
+  const std::string d = scratch_dir(tag);
+  const std::string in = d + "/stdin", out = d + "/stdout", err = d + "/stderr";
+  std::ofstream(in, std::ios::binary) << stdin_text;
+  const std::string cmd = env + (env.empty() ? "" : " ") + "'" + exe + "' " + args + " < '" + in + "' > '" + out +
+                          "' 2> '" + err + "'";
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
+}
+
 bool brute_force_in_cone(const std::vector<Wrench>& g, const std::array<Rational, 3>& x) {
   using V = std::array<Rational, 3>;
   if (x[0] == 0 && x[1] == 0 && x[2] == 0) return true;

@@ -46,6 +46,16 @@ bool brute_force_closure(const std::vector<Wrench>& g);
 // x ∈ pos(g) by Carathéodory: x is a non-negative combination of ≤ 3 generators. O(k³), exact.
 bool brute_force_in_cone(const std::vector<Wrench>& g, const std::array<Rational, 3>& x);
 
+// Runs a command line `env exe args` with stdin_text on standard input, in a per-process scratch
+// folder under the system temp dir named after `tag`; returns the exit code and both outputs.
+struct Cli_result {
+  int code;
+  std::string out, err;
+};
+std::string scratch_dir(const std::string& tag);
+Cli_result run_cli(const std::string& exe, const std::string& env, const std::string& args,
+                   const std::string& stdin_text, const std::string& tag);
+
 // The independent checker on a scene text and a certificate text.
 ::testing::AssertionResult checker_accepts(const std::string& scene_text, const std::string& cert);
 
