@@ -437,12 +437,14 @@ TEST(LabelsDifferential, HugeTinyAndLongRationals) {
     EXPECT_TRUE(eq(l.plus.vertices.at(0), {Rational(0), Rational(s)}));
     EXPECT_TRUE(eq(l.minus.vertices.at(0), {Rational(s), Rational(0)}));
   }
-  // Threshold ± 10^-40: the ladder's marginal + corner crosses the centre of mass's vertical.
-  const std::string dir = test::source_dir() + "/tests/golden/";
-  for (const char* f : {"ladder_threshold_at", "ladder_threshold_above_1e-40", "ladder_threshold_below_1e-40"}) {
-    const std::string text = test::read_text(dir + f + ".scene.json");
+  // Every golden scene (thresholds ± 10^-40, a 40-digit rotation, scales 10^18 and 10^-20, the
+  // textbook cases, with and without loads) against the brute forces.
+  std::vector<std::string> files = test::scene_files("tests/golden");
+  for (const std::string& f : test::scene_files("tests/golden/equilibrium")) files.push_back(f);
+  for (const std::string& f : files) {
     std::mt19937_64 rng(1);
-    check_labels_against_brute_force(text, rng, f);
+    check_labels_against_brute_force(test::read_text(f), rng, "golden_" + f.substr(f.rfind('/') + 1));
+    if (HasFatalFailure()) return;
   }
 }
 
