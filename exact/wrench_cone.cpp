@@ -1,5 +1,6 @@
 #include "exact/wrench_cone.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "exact/planar_region.h"
@@ -21,9 +22,14 @@ std::vector<Vec3> extreme_rays(const Dual_cone& dc, const std::vector<Vec3>& g) 
     case Dual_shape::polygon:
       for (std::size_t j = 0; j < e.size(); ++j) r.push_back(primitive_vec(cross(g[e[j]], g[e[(j + 1) % e.size()]])));
       break;
-    case Dual_shape::arc:  // (p, e, q, e'): between g_p × g_e and g_e × g_q
-      r.push_back(primitive_vec(cross(g[e[0]], g[e[1]])));
-      r.push_back(primitive_vec(cross(g[e[1]], g[e[2]])));
+    case Dual_shape::arc:
+      // (p, e, q, e') up to a cyclic rotation (a cut of an arc keeps the cycle, not its start): each
+      // of the two rays g_p × g_e, g_e × g_q appears at two consecutive pairs. Found by fuzz_structured.
+      for (std::size_t j = 0; j < 4; ++j) {
+        const Vec3 v = primitive_vec(cross(g[e[j]], g[e[(j + 1) % 4]]));
+        if (std::find(r.begin(), r.end(), v) == r.end()) r.push_back(v);
+      }
+      if (r.size() != 2) throw std::logic_error("wrench_cone: an arc without two distinct rays");
       break;
     case Dual_shape::ray:
       r.push_back(primitive_vec(cross(g[e[0]], g[e[1]])));

@@ -448,5 +448,24 @@ TEST(LabelsDifferential, HugeTinyAndLongRationals) {
   }
 }
 
+// Found by fuzz_structured: an arc-shaped W* whose edge cycle starts at the arc's plane generator
+// ((e, q, e', p) instead of (p, e, q, e')) was read as one ray twice; R₊ must hold (0, −4).
+TEST(LabelsRegression, ArcWithRotatedEdgeCycle) {
+  const std::string text = R"({"wrenchkit": 1, "contacts": [
+    {"at": ["0", "-1"], "normal": ["-1", "-2"], "mu": "1/10"}, {"at": ["-4", "-4"], "normal": ["1", "0"]},
+    {"at": ["-4", "-4"], "normal": ["-2", "0"]}, {"at": ["-4", "-4"], "normal": ["-2", "-2"]},
+    {"at": ["-4", "-4"], "normal": ["-2", "-2"]}, {"at": ["0", "-4"], "normal": ["-2", "-2"]}],
+    "load": {"wrench": ["-1", "1", "-3"]}})";
+  const Scene s = read_scene(text, Input_limits{});
+  const Moment_labels l = moment_labels(s, Reading::friction);
+  EXPECT_EQ(l.cone.dual.size(), 2u);
+  EXPECT_TRUE(region_contains(l.plus, P("0", "-4"))) << region_json(l.plus);
+  EXPECT_TRUE(region_contains(l.minus, P("-4", "-4"))) << region_json(l.minus);
+  const Vec3 w = as_vec(load_wrench(s));
+  EXPECT_EQ(in_cone(l.cone, {-w[0], -w[1], -w[2]}), decide_equilibrium(s).balanced);
+  std::mt19937_64 rng(3);
+  check_labels_against_brute_force(text, rng, "arc_rotated");
+}
+
 }  // namespace
 }  // namespace wrenchkit
