@@ -1,101 +1,12 @@
 // libFuzzer target: any bytes as a scene. The parser must never crash, hang or allocate without
-// bound; when it accepts, closure (exact and hybrid) and, with a load, equilibrium must answer and
-// the independent checker must accept every certificate (engine parser and checker parser agree on
-// every scene the engine accepts).
+// bound; when it accepts, every promise of fuzz/scene_checks.h must hold.
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
-#include <iostream>
-#include <string>
 #include <string_view>
-#include <vector>
 
-#include "exact/closure.h"
-#include "exact/equilibrium.h"
-#include "exact/force_dual.h"
-#include "exact/input_error.h"
-#include "exact/scene.h"
-#include "proofs/checker/checker.h"
+#include "fuzz/scene_checks.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string_view text(reinterpret_cast<const char*>(data), size);
-  wrenchkit::Input_limits limits;
-  limits.max_digits = 200;  // keep big-number work small per input
-  limits.max_exponent = 200;
-  limits.max_contacts = 64;
-  wrenchkit::Scene scene, lazy;
-  std::string eager_error, lazy_error;
-  try {
-    scene = wrenchkit::read_scene(text, limits, "fuzz");
-  } catch (const wrenchkit::Input_error& e) {
-    eager_error = e.what();
-  }
-  try {  // the lazy reading (batch) must accept and reject exactly the same, with the same message
-    lazy = wrenchkit::read_scene(text, limits, "fuzz", true);
-  } catch (const wrenchkit::Input_error& e) {
-    lazy_error = e.what();
-  }
-  if (eager_error != lazy_error) {
-    std::cerr << "eager: " << eager_error << "\nlazy: " << lazy_error << "\n";
-    std::abort();
-  }
-  if (!eager_error.empty()) return 0;
-  for (auto p : {wrenchkit::Property::force_closure, wrenchkit::Property::form_closure}) {
-    const auto a = wrenchkit::decide_closure(scene, p, wrenchkit::Mode::hybrid, false);
-    const auto b = wrenchkit::decide_closure(lazy, p, wrenchkit::Mode::hybrid, false);
-    if (a.holds != b.holds || a.rank != b.rank) {
-      std::cerr << "lazy and eager scenes disagree\n";
-      std::abort();
-    }
-  }
-  // Labels and the force dual come from the same cone: nothing labeled ⇔ closure ⇔ the dual covers
-  // everything; the load read on the labels agrees with equilibrium.
-  for (auto p : {wrenchkit::Property::force_closure, wrenchkit::Property::form_closure}) {
-    const auto reading = wrenchkit::reading_of(p);
-    std::vector<wrenchkit::Wrench> w;
-    for (const auto& g : wrenchkit::generators(scene, reading)) w.push_back(g.w);
-    const auto l = wrenchkit::moment_labels(w);
-    const auto d = wrenchkit::force_dual(l, w);
-    const bool holds = wrenchkit::decide_closure(scene, p, wrenchkit::Mode::exact, false).holds;
-    if (l.nothing_labeled() != holds || d.covers_all != holds) {
-      std::cerr << "labels / dual disagree with closure\n";
-      std::abort();
-    }
-    if (scene.load && reading == wrenchkit::Reading::friction) {
-      const auto x = wrenchkit::as_vec(wrenchkit::load_wrench(scene));
-      if (wrenchkit::in_cone(l.cone, {-x[0], -x[1], -x[2]}) !=
-          wrenchkit::decide_equilibrium(scene, wrenchkit::Mode::exact, false).balanced) {
-        std::cerr << "labels disagree with equilibrium\n";
-        std::abort();
-      }
-    }
-  }
-  wrenchkit_checker::Limits cl;
-  cl.max_digits = limits.max_digits;
-  cl.max_exponent = limits.max_exponent;
-  cl.max_contacts = limits.max_contacts;
-  std::vector<std::string> certs;
-  for (auto p : {wrenchkit::Property::force_closure, wrenchkit::Property::form_closure})
-    for (auto m : {wrenchkit::Mode::exact, wrenchkit::Mode::hybrid})
-      certs.push_back(wrenchkit::certificate_json(wrenchkit::decide_closure(scene, p, m).certificate));
-  if (scene.load) {
-    const auto exact = wrenchkit::decide_equilibrium(scene, wrenchkit::Mode::exact);
-    certs.push_back(wrenchkit::certificate_json(exact.certificate));
-    for (auto m : {wrenchkit::Mode::hybrid, wrenchkit::Mode::float_only}) {
-      const auto e = wrenchkit::decide_equilibrium(scene, m);
-      if ((m == wrenchkit::Mode::hybrid && !e.decided) || (e.decided && e.balanced != exact.balanced)) {
-        std::cerr << "equilibrium: mode " << wrenchkit::mode_name(m) << " disagrees with exact\n";
-        std::abort();
-      }
-      if (e.decided) certs.push_back(wrenchkit::certificate_json(e.certificate));
-    }
-  }
-  for (const std::string& cert : certs) {
-    const auto r = wrenchkit_checker::check(text, cert, cl);
-    if (r.outcome != wrenchkit_checker::Outcome::accepted) {
-      std::cerr << "checker: " << r.message << "\ncertificate: " << cert << "\n";
-      std::abort();
-    }
-  }
+  check_scene_text(std::string_view(reinterpret_cast<const char*>(data), size));
   return 0;
 }

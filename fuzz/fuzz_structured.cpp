@@ -1,0 +1,121 @@
+// libFuzzer target: structured scenes built from the fuzzer's bytes, biased toward the degenerate
+// and near-degenerate configurations where floating point goes wrong (theory.md §5.6, §8.5, §9):
+// grid contacts (parallel, concurrent, coincident), two-finger grasps at Nguyen's threshold ± ε,
+// normals concurrent up to ε, the ladder at μ* = 1/7 ± ε under gravity, pure wrench generators, and
+// everything scaled by 10^k. ε = ±10^-j with j up to 60. Every promise of fuzz/scene_checks.h must
+// hold on every scene (float-vs-exact differential, engine → checker, round trip, labels vs closure).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "fuzz/scene_checks.h"
+
+namespace {
+
+struct Bytes {
+  const std::uint8_t* p;
+  std::size_t n;
+  int next(int mod) {  // 0 … mod−1, 0 once the bytes run out
+    if (n == 0) return 0;
+    --n;
+    return *p++ % mod;
+  }
+  int small(int lo, int hi) { return lo + next(hi - lo + 1); }
+};
+
+std::string pow10(int k) { return k >= 0 ? "1" + std::string(k, '0') : "1/1" + std::string(-k, '0'); }
+
+std::string frac(long p, long q, Bytes& b) {
+  const int j = b.small(1, 60), s = b.next(3) - 1;
+  mpq_class v(p, q);
+  v.canonicalize();
+  if (s != 0) {
+    mpz_class ten;
+    mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(j));
+    v += mpq_class(s) / mpq_class(ten);
+  }
+  if (v < 0) v = -v;  // a friction coefficient or a coordinate that must stay ≥ 0
+  return "\"" + v.get_str() + "\"";
+}
+std::string num(long p, long q = 1) {
+  mpq_class v(p, q);
+  v.canonicalize();
+  return "\"" + v.get_str() + "\"";
+}
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  Bytes b{data, size};
+  const int family = b.next(6);
+  std::string contacts, load;
+  const auto point = [&](const std::string& x, const std::string& y, const std::string& nx, const std::string& ny,
+                         const std::string& mu) {
+    if (!contacts.empty()) contacts += ", ";
+    contacts += "{\"at\": [" + x + ", " + y + "], \"normal\": [" + nx + ", " + ny + "], \"mu\": " + mu + "}";
+  };
+  const char* mus[] = {"0", "\"1/10\"", "\"1/4\"", "\"1/2\"", "1", "2"};
+  switch (family) {
+    case 0: {  // grid contacts: parallel, concurrent and coincident configurations are frequent
+      const int n = b.small(1, 7);
+      for (int i = 0; i < n; ++i) {
+        int nx = b.small(-2, 2), ny = b.small(-2, 2);
+        if (nx == 0 && ny == 0) ny = 1;
+        point(num(b.small(-4, 4)), num(b.small(-4, 4)), num(nx), num(ny), mus[b.next(6)]);
+      }
+      break;
+    }
+    case 1: {  // two fingers facing along x, offset dy: closure iff |dy|/dx ≤ μ (Nguyen); μ at it ± ε
+      const int dx = b.small(1, 9), dy = b.small(-9, 9);
+      point("0", "0", "1", "0", frac(dy < 0 ? -dy : dy, dx, b));
+      point(num(dx), num(dy), "-1", "0", frac(dy < 0 ? -dy : dy, dx, b));
+      break;
+    }
+    case 2: {  // normals concurrent at G = (1, 1), one contact moved by ε
+      point("1", "0", "0", "1", mus[b.next(2)]);
+      point("0", frac(1, 1, b), "1", "0", mus[b.next(2)]);
+      point("3", "3", "-1", "-1", mus[b.next(2)]);
+      if (b.next(2)) point("2", "0", "0", "1", "0");
+      break;
+    }
+    case 3: {  // the ladder (theory.md §9): equilibrium iff μ ≥ 1/7; μ = 1/7 ± ε
+      const std::string mu = frac(1, 7, b);
+      point("0", "0", "0", "1", mu);
+      point("-4", "3", "1", "0", mu);
+      load = ", \"body\": {\"com\": [\"-1/2\", \"7/2\"]}, \"load\": {\"gravity\": " + num(b.small(1, 5)) + "}";
+      break;
+    }
+    case 4: {  // a grid scene scaled by 10^k
+      const int k = b.small(-40, 40), n = b.small(2, 5);
+      for (int i = 0; i < n; ++i) {
+        const std::string s = pow10(k);
+        mpq_class x(b.small(-3, 3)), y(b.small(-3, 3)), f(s);
+        f.canonicalize();
+        x *= f;
+        y *= f;
+        int nx = b.small(-1, 1), ny = b.small(-1, 1);
+        if (nx == 0 && ny == 0) nx = 1;
+        point("\"" + x.get_str() + "\"", "\"" + y.get_str() + "\"", num(nx), num(ny), mus[b.next(4)]);
+      }
+      break;
+    }
+    default: {  // pure wrench generators, pure moments among them
+      const int n = b.small(1, 6);
+      for (int i = 0; i < n; ++i) {
+        int fx = b.small(-2, 2), fy = b.small(-2, 2), m = b.small(-2, 2);
+        if (fx == 0 && fy == 0 && m == 0) m = 1;
+        if (!contacts.empty()) contacts += ", ";
+        contacts += "{\"wrench\": [" + num(fx) + ", " + num(fy) + ", " + num(m) + "]}";
+      }
+      break;
+    }
+  }
+  if (load.empty() && b.next(2))
+    load = ", \"load\": {\"wrench\": [" + num(b.small(-3, 3)) + ", " + num(b.small(-3, 3)) + ", " +
+           num(b.small(-3, 3)) + "]}";
+  const std::string text = "{\"wrenchkit\": 1, \"contacts\": [" + contacts + "]" + load + "}";
+  if (!check_scene_text(text)) {
+    std::cerr << "structured scene rejected:\n" << text << "\n";
+    std::abort();
+  }
+  return 0;
+}
