@@ -1,0 +1,241 @@
+// [FL-6] The float twin of moment labels and the force dual against the exact engine: when the twin
+// decides, its shapes, corner counts and corner order are the exact ones and every constructed corner
+// and direction lies within its stated bound of the exact one (checked in exact arithmetic); when it
+// does not, it says why (uncertain, rank < 3, W not pointed) and never answers. Point labels and
+// cone membership likewise. Golden scenes, degenerate-rich grid scenes, generic decimal scenes.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <random>
+#include <sstream>
+
+#include "exact/closure.h"
+#include "exact/force_dual.h"
+#include "exact/to_float.h"
+#include "float/labels_twin.h"
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+
+using fl::Bounded;
+
+// The exact x lies within the bound: |x − v| ≤ e (an infinite bound claims nothing and fails here:
+// a decided twin must give finite bounds).
+bool within(const Bounded& b, const Rational& x) {
+  return std::isfinite(b.v) && std::isfinite(b.e) && abs(x - Rational(b.v)) <= Rational(b.e);
+}
+bool same_point(const fl::Point2& f, const Vec2& e) { return within(f.x, e.x) && within(f.y, e.y); }
+
+// Some positive multiple s·e of the exact direction lies in the box of the float direction.
+bool same_direction(const fl::Point2& f, const Vec2& e) {
+  if (!std::isfinite(f.x.e) || !std::isfinite(f.y.e)) return false;
+  Rational lo = 0, hi;  // s ∈ (0, ∞) ∩ [lo, hi]
+  bool bounded = false;
+  for (const auto& [b, d] : {std::pair<Bounded, Rational>{f.x, e.x}, {f.y, e.y}}) {
+    const Rational l = Rational(b.v) - Rational(b.e), h = Rational(b.v) + Rational(b.e);
+    if (d == 0) {
+      if (l > 0 || h < 0) return false;
+      continue;
+    }
+    Rational a = l / d, c = h / d;
+    if (d < 0) std::swap(a, c);
+    if (a > lo) lo = a;
+    if (!bounded || c < hi) hi = c, bounded = true;
+  }
+  return !bounded || (hi > 0 && lo <= hi);
+}
+
+std::string describe(const fl::Region2& f) {
+  std::ostringstream o;
+  o << fl::shape_name(f.shape) << " [";
+  for (const auto& p : f.vertices) o << "(" << p.x.v << "±" << p.x.e << ", " << p.y.v << "±" << p.y.e << ") ";
+  o << "] dirs [";
+  for (const auto& p : f.directions) o << "(" << p.x.v << ", " << p.y.v << ") ";
+  return o.str() + "]";
+}
+
+// The float region is the exact one: same shape, corners within their bounds in the same cyclic order
+// (bounded regions may start anywhere; unbounded ones start after the entering direction in both),
+// directions parallel within their bounds, in order.
+::testing::AssertionResult same_region(const fl::Region2& f, const Region& e) {
+  const auto fail = [&](const char* why) {
+    return ::testing::AssertionFailure() << why << ": float " << describe(f) << " vs exact " << region_json(e);
+  };
+  if (std::string(fl::shape_name(f.shape)) != shape_name(e.shape)) return fail("shape");
+  if (f.shape == fl::Region2::Shape::plane) return ::testing::AssertionSuccess();
+  if (f.vertices.size() != e.vertices.size() || f.directions.size() != e.directions.size()) return fail("counts");
+  const std::size_t n = e.vertices.size();
+  bool found = false;
+  for (std::size_t k = 0; k < (e.bounded() ? n : std::min<std::size_t>(n, 1)) && !found; ++k) {
+    bool all = true;
+    for (std::size_t i = 0; i < n && all; ++i) all = same_point(f.vertices[i], e.vertices[(i + k) % n]);
+    found = all;
+  }
+  if (n > 0 && !found) return fail("corners");
+  for (std::size_t i = 0; i < e.directions.size(); ++i)
+    if (!same_direction(f.directions[i], e.directions[i])) return fail("directions");
+  return ::testing::AssertionSuccess();
+}
+
+::testing::AssertionResult same_arc(const fl::Arc2& f, const Cone2& e) {
+  const char* names[] = {"none", "direction", "arc", "whole circle"};
+  const std::string fs = names[static_cast<int>(f.shape)];
+  if (fs != shape_name(e.shape)) return ::testing::AssertionFailure() << "infinity: float " << fs << " vs " << infinity_json(e);
+  for (std::size_t i = 0; i < e.extreme.size() && f.shape != fl::Arc2::Shape::full; ++i)
+    if (!same_direction(f.extreme[i], e.extreme[i]))
+      return ::testing::AssertionFailure() << "infinity direction " << i << ": " << infinity_json(e);
+  return ::testing::AssertionSuccess();
+}
+
+struct Tally {
+  int cases = 0, rank3 = 0, decided = 0, dual_decided = 0;
+};
+
+std::vector<fl::Bounded3> twin_generators(const Scene& s, Reading r) { return fl::generators(to_bounded(s), r); }
+
+// Everything the twin says about one scene, against the exact engine.
+void compare_labels(const std::string& text, Tally& t, const std::string& tag) {
+  const Scene s = read_scene(text, Input_limits{});
+  for (Reading r : {Reading::friction, Reading::frictionless}) {
+    const Moment_labels exact = moment_labels(s, r);
+    std::vector<Wrench> w;
+    for (const Generator& g : generators(s, r)) w.push_back(g.w);
+    const Force_dual exact_dual = force_dual(exact, w);
+    const std::vector<fl::Bounded3> g = twin_generators(s, r);
+    const Dual_cone dc = compute_dual_cone(fl::Float_kernel(g));
+    const fl::Labels_twin f = fl::moment_labels(g, dc);
+    const fl::Dual_twin fd = fl::force_dual(g, dc);
+    ++t.cases;
+    t.rank3 += exact.cone.rank == 3;
+    const std::string where = tag + (r == Reading::friction ? " (friction)" : " (frictionless)");
+    if (f.decided()) {
+      ++t.decided;
+      ASSERT_EQ(exact.cone.rank, 3) << where;
+      ASSERT_TRUE(same_region(f.plus, exact.plus)) << "R+ " << where << "; dumped to " << test::dump_failure(text, tag);
+      ASSERT_TRUE(same_region(f.minus, exact.minus)) << "R- " << where << "; dumped to " << test::dump_failure(text, tag);
+      ASSERT_TRUE(same_arc(f.infinity, exact.infinity)) << where << "; dumped to " << test::dump_failure(text, tag);
+      ASSERT_EQ(f.nothing_labeled(), exact.nothing_labeled()) << where;
+    } else if (f.status == fl::Twin_status::rank_deficient) {
+      ASSERT_LT(exact.cone.rank, 3) << where;
+    } else {
+      ASSERT_EQ(f.status, fl::Twin_status::uncertain) << where;
+    }
+    if (fd.decided()) {
+      ++t.dual_decided;
+      ASSERT_EQ(fd.covers_all, exact_dual.covers_all) << where;
+      ASSERT_TRUE(same_region(fd.plus_sheet, exact_dual.plus_sheet)) << "+ sheet " << where << "; dumped to " << test::dump_failure(text, tag);
+      ASSERT_TRUE(same_region(fd.minus_sheet, exact_dual.minus_sheet)) << "- sheet " << where << "; dumped to " << test::dump_failure(text, tag);
+      ASSERT_TRUE(same_arc(fd.infinity, exact_dual.infinity)) << "dual " << where;
+    }
+    // Dual points of the generators.
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      const fl::Dual_point_twin fp = fl::dual_point(g[i]);
+      const Dual_point ep = dual_point(as_vec(w[i]));
+      if (fp.sheet == '?') continue;
+      ASSERT_EQ(fp.sheet, ep.sheet) << where << " generator " << i;
+      if (fp.sheet == 'i') { ASSERT_TRUE(same_direction(fp.at, ep.at)) << where; }
+      else {
+        ASSERT_TRUE(same_point(fp.at, ep.at)) << where << " generator " << i << ": float (" << fp.at.x.v << "±"
+                                              << fp.at.x.e << ", " << fp.at.y.v << "±" << fp.at.y.e << ") exact "
+                                              << point_json(ep.at) << "; dumped to " << test::dump_failure(text, tag);
+      }
+    }
+    // Point labels and membership at the exact corners, their midpoints and a few grid points.
+    std::vector<Vec2> probes = {{0, 0}, {1, 1}, {Rational(-1, 2), Rational(3, 2)}, {2, -1}};
+    for (const Region* reg : {&exact.plus, &exact.minus})
+      for (const Vec2& v : reg->vertices) probes.push_back(v);
+    for (const Vec2& c : probes) {
+      const char fl_label = fl::label_of(g, to_bounded(c.x), to_bounded(c.y));
+      if (fl_label == '?') continue;
+      bool pos = false, neg = false;
+      for (const Wrench& x : w) {
+        const Rational m = x.m - c.x * x.fy + c.y * x.fx;
+        pos |= m > 0;
+        neg |= m < 0;
+      }
+      const char truth = pos && neg ? '0' : (pos ? '+' : (neg ? '-' : 'b'));
+      ASSERT_EQ(fl_label, truth) << where << " at (" << c.x << ", " << c.y << ")";
+    }
+    for (const Vec3& x : std::vector<Vec3>{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}, {1, 1, Rational(1, 3)}}) {
+      const fl::Truth m = fl::in_cone(f, {to_bounded(x[0]), to_bounded(x[1]), to_bounded(x[2])});
+      if (m != fl::Truth::uncertain) { ASSERT_EQ(m == fl::Truth::yes, in_cone(exact.cone, x)) << where; }
+    }
+  }
+}
+
+TEST(LabelsTwin, GoldenScenes) {
+  Tally t;
+  for (const std::string& f : test::scene_files("tests/golden")) {
+    compare_labels(test::read_text(f), t, f);
+    if (HasFatalFailure()) return;
+  }
+  std::printf("[ stats    ] golden: the twin decided %d of %d label sets alone (%d of rank 3; %d duals)\n", t.decided,
+              t.cases, t.rank3, t.dual_decided);
+  // The goldens are thresholds ± 10^-40, 40-digit rotations, 10^±18 scales and exact degeneracies:
+  // the twin must still decide most rank-3 ones (the rest go to exact arithmetic in hybrid).
+  EXPECT_GT(t.decided * 2, t.rank3);
+}
+
+TEST(LabelsTwin, DegenerateRichGridScenes) {
+  const std::uint64_t seed = test::seed(20261122);
+  std::mt19937_64 rng(seed);
+  Tally t;
+  for (int i = 0; i < 1500; ++i) {
+    compare_labels(test::scene_json(test::random_contacts(rng, 7)), t,
+                   "labels_twin_grid_" + std::to_string(seed) + "_" + std::to_string(i));
+    if (HasFatalFailure()) return;
+  }
+  std::printf("[ stats    ] grid: the twin decided %d of %d label sets alone (%d duals)\n", t.decided, t.cases,
+              t.dual_decided);
+  EXPECT_GT(t.decided, t.cases / 3);
+}
+
+TEST(LabelsTwin, DecidesTypicalScenesByItself) {
+  const std::uint64_t seed = test::seed(6);
+  std::mt19937_64 rng(seed);
+  Tally t;
+  for (int i = 0; i < 600; ++i) {
+    compare_labels(test::scene_json(test::decimal_contacts(rng, 1 + i % 8)), t,
+                   "labels_twin_decimal_" + std::to_string(seed) + "_" + std::to_string(i));
+    if (HasFatalFailure()) return;
+  }
+  std::printf("[ stats    ] decimal: the twin decided %d of %d label sets alone (%d duals)\n", t.decided, t.cases,
+              t.dual_decided);
+  // One frictionless contact has rank 1 and two have rank ≤ 2: those are the twin's "rank < 3".
+  EXPECT_GE(t.decided * 100, (t.cases - 600 / 8 * 2 - 600 / 8) * 99);
+}
+
+TEST(LabelsTwin, RobotSideApiOnPlainDoubles) {
+  // theory.md §5.8: the frictionless block in a corner: R+ = {x ≤ 0, y ≥ 1} (corner (0, 1)),
+  // R- = {x ≥ 1, y ≤ 0} (corner (1, 0)), infinity the quarter circle d_x ≤ 0, d_y ≥ 0 (translations up
+  // or to the right).
+  const std::vector<fl::Point_contact> corner = {{0, 0, 0, 1}, {1, 0, 0, 1}, {0, 0, 1, 0}, {0, 1, 1, 0}};
+  const fl::Labels_twin l = fl::moment_labels(corner);
+  ASSERT_TRUE(l.decided());
+  ASSERT_EQ(l.plus.shape, fl::Region2::Shape::wedge);
+  EXPECT_EQ(l.plus.vertices[0].x.v, 0);
+  EXPECT_EQ(l.plus.vertices[0].y.v, 1);
+  EXPECT_EQ(l.plus.vertices[0].x.e, 0);  // exact data, exact corner
+  ASSERT_EQ(l.minus.shape, fl::Region2::Shape::wedge);
+  EXPECT_EQ(l.minus.vertices[0].x.v, 1);
+  EXPECT_EQ(l.minus.vertices[0].y.v, 0);
+  ASSERT_EQ(l.infinity.shape, fl::Arc2::Shape::wedge);
+  EXPECT_EQ(l.infinity.extreme[0].x.v, 0);  // counter-clockwise from (0, 1) …
+  EXPECT_GT(l.infinity.extreme[0].y.v, 0);
+  EXPECT_LT(l.infinity.extreme[1].x.v, 0);  // … to (−1, 0): d_x ≤ 0, d_y ≥ 0
+  EXPECT_EQ(l.infinity.extreme[1].y.v, 0);
+  // Gravity at (1/2, 1/2) is balanced: −load = (0, 1, 1/2) is a possible resultant; a pull is not.
+  EXPECT_EQ(fl::in_cone(l, {Bounded::exact(0), Bounded::exact(1), Bounded::exact(0.5)}), fl::Truth::yes);
+  EXPECT_EQ(fl::in_cone(l, {Bounded::exact(-1), Bounded::exact(0), Bounded::exact(-0.5)}), fl::Truth::no);
+  // Force closure: nothing labeled (Example 3 with μ = 1/8, theory.md §8.7).
+  std::vector<fl::Point_contact> tri = {{1, 0, 0, 1, 0.125}, {0, 1, 1, 0, 0.125}, {3, 3, -1, -1, 0.125}};
+  const fl::Labels_twin closed = fl::moment_labels(tri);
+  ASSERT_TRUE(closed.decided());
+  EXPECT_TRUE(closed.nothing_labeled());
+  // The same frictionless: rank 2 (concurrent at G = (1, 1)): the twin declines.
+  EXPECT_EQ(fl::moment_labels(tri, Reading::frictionless).status, fl::Twin_status::rank_deficient);
+}
+
+}  // namespace
+}  // namespace wrenchkit
