@@ -206,6 +206,31 @@ TEST(LabelsTwin, DecidesTypicalScenesByItself) {
   EXPECT_GE(t.decided * 100, (t.cases - 600 / 8 * 2 - 600 / 8) * 99);
 }
 
+// Hybrid labels: the cone's signs from the twin, exact where it is uncertain; the answer is the exact one.
+TEST(LabelsHybrid, SameAnswerAsExactWithFewExactPredicates) {
+  const std::uint64_t seed = test::seed(7);
+  std::mt19937_64 rng(seed);
+  std::size_t predicates = 0, exact_predicates = 0;
+  std::vector<std::string> texts;
+  for (const std::string& f : test::scene_files("tests/golden")) texts.push_back(test::read_text(f));
+  for (int i = 0; i < 600; ++i) texts.push_back(test::scene_json(test::random_contacts(rng, 7)));
+  for (int i = 0; i < 300; ++i) texts.push_back(test::scene_json(test::decimal_contacts(rng, 1 + i % 8)));
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    const Scene s = read_scene(texts[i], Input_limits{});
+    for (Reading r : {Reading::friction, Reading::frictionless}) {
+      const Moment_labels e = moment_labels(s, r, Mode::exact), h = moment_labels(s, r, Mode::hybrid);
+      const std::string tag = "labels_hybrid_" + std::to_string(seed) + "_" + std::to_string(i);
+      ASSERT_EQ(labels_json_fields(h), labels_json_fields(e)) << "dumped to " << test::dump_failure(texts[i], tag);
+      ASSERT_EQ(h.cone.rank, e.cone.rank);
+      ASSERT_EQ(e.cone.exact_predicates, e.cone.predicates);
+      predicates += h.cone.predicates;
+      exact_predicates += h.cone.exact_predicates;
+    }
+  }
+  std::printf("[ stats    ] hybrid labels: %zu of %zu predicates in exact arithmetic\n", exact_predicates, predicates);
+  EXPECT_LT(exact_predicates * 10, predicates);
+}
+
 TEST(LabelsTwin, RobotSideApiOnPlainDoubles) {
   // theory.md §5.8: the frictionless block in a corner: R+ = {x ≤ 0, y ≥ 1} (corner (0, 1)),
   // R- = {x ≥ 1, y ≤ 0} (corner (1, 0)), infinity the quarter circle d_x ≤ 0, d_y ≥ 0 (translations up
