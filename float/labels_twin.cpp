@@ -11,6 +11,13 @@ Bounded dot(const Bounded3& a, const Bounded3& b) { return a[0] * b[0] + a[1] * 
 Bounded3 J(const Bounded3& u) { return {-u[1], u[0], u[2]}; }
 Bounded3 neg(const Bounded3& u) { return {-u[0], -u[1], -u[2]}; }
 
+// The certified sign, or — for the naive variant only (benchmarks, stress tests) — the raw sign of the
+// computed value, a guess.
+Sign sign_of(const Bounded& b, bool naive) {
+  if (!naive) return b.sign();
+  return b.v > 0 ? Sign::positive : (b.v < 0 ? Sign::negative : Sign::zero);
+}
+
 // One item of the walk around a cone's boundary: a corner on the front sheet or a direction.
 struct Item {
   bool vertex;
@@ -20,11 +27,11 @@ struct Item {
 // Walks the extreme rays p_0 … p_{K−1} (counter-clockwise; `closed`: consecutive pairs wrap around,
 // else an open chain) and returns the items in boundary order, rotated so that the run of corners
 // comes first; false when a sign is uncertain.
-bool walk(const std::vector<Bounded3>& p, bool closed, std::vector<Item>& items) {
+bool walk(const std::vector<Bounded3>& p, bool closed, bool naive, std::vector<Item>& items) {
   const std::size_t K = p.size();
   std::vector<Sign> z(K);
   for (std::size_t j = 0; j < K; ++j)
-    if ((z[j] = p[j][2].sign()) == Sign::uncertain) return false;
+    if ((z[j] = sign_of(p[j][2], naive)) == Sign::uncertain) return false;
   items.clear();
   for (std::size_t j = 0; j < K; ++j) {
     if (z[j] == Sign::positive) {
@@ -80,7 +87,7 @@ Region2 region_of(const std::vector<Item>& items) {
 }
 
 // pos(directions) as an arc, extremes counter-clockwise; false when the order is uncertain.
-bool arc_of(const std::vector<Item>& items, Arc2& out) {
+bool arc_of(const std::vector<Item>& items, bool naive, Arc2& out) {
   out = Arc2{};
   for (const Item& i : items)
     if (!i.vertex) out.extreme.push_back(i.p);
@@ -92,7 +99,7 @@ bool arc_of(const std::vector<Item>& items, Arc2& out) {
   if (out.extreme.size() != 2) return false;  // a pointed cone meets Z = 0 in at most two extreme rays
   const Point2& a = out.extreme[0];
   const Point2& b = out.extreme[1];
-  const Sign s = (a.x * b.y - a.y * b.x).sign();
+  const Sign s = sign_of(a.x * b.y - a.y * b.x, naive);
   if (s == Sign::uncertain || s == Sign::zero) return false;
   if (s == Sign::negative) std::swap(out.extreme[0], out.extreme[1]);
   out.shape = Arc2::Shape::wedge;
@@ -100,14 +107,14 @@ bool arc_of(const std::vector<Item>& items, Arc2& out) {
 }
 
 // Front and back sheets and infinity of the pointed cone pos(p) (p counter-clockwise).
-bool slices(const std::vector<Bounded3>& p, bool closed, Region2& front, Region2& back, Arc2& infinity) {
+bool slices(const std::vector<Bounded3>& p, bool closed, bool naive, Region2& front, Region2& back, Arc2& infinity) {
   std::vector<Item> items;
-  if (!walk(p, closed, items)) return false;
+  if (!walk(p, closed, naive, items)) return false;
   front = region_of(items);
-  if (!arc_of(items, infinity)) return false;
+  if (!arc_of(items, naive, infinity)) return false;
   std::vector<Bounded3> q;  // −p, reversed: counter-clockwise again
   for (std::size_t j = p.size(); j-- > 0;) q.push_back(neg(p[j]));
-  if (!walk(q, closed, items)) return false;
+  if (!walk(q, closed, naive, items)) return false;
   back = region_of(items);
   return true;
 }
@@ -145,7 +152,9 @@ const char* status_name(Twin_status s) {
   return "?";
 }
 
-Labels_twin moment_labels(const std::vector<Bounded3>& g, const Dual_cone& dc) {
+namespace {
+
+Labels_twin labels_of(const std::vector<Bounded3>& g, const Dual_cone& dc, bool naive) {
   Labels_twin l;
   l.rank = dc.rank;
   l.shape = dc.shape;
@@ -176,9 +185,17 @@ Labels_twin moment_labels(const std::vector<Bounded3>& g, const Dual_cone& dc) {
   }
   std::vector<Bounded3> P;  // rotation centres P(t) = J t
   for (const Bounded3& t : l.rays) P.push_back(J(t));
-  if (!slices(P, closed, l.plus, l.minus, l.infinity)) return l;
+  if (!slices(P, closed, naive, l.plus, l.minus, l.infinity)) return l;
   l.status = Twin_status::decided;
   return l;
+}
+
+}  // namespace
+
+Labels_twin moment_labels(const std::vector<Bounded3>& g, const Dual_cone& dc) { return labels_of(g, dc, false); }
+
+Labels_twin moment_labels_naive(const std::vector<Bounded3>& g) {
+  return labels_of(g, compute_dual_cone(Naive_kernel(g)), true);
 }
 
 Labels_twin moment_labels(const std::vector<Bounded3>& g) {
@@ -230,7 +247,7 @@ Dual_twin force_dual(const std::vector<Bounded3>& g, const Dual_cone& dc) {
   // W* a polygon ⇒ W pointed, with the edge generators as its extreme rays in the same orientation.
   std::vector<Bounded3> D;
   for (std::size_t j : dc.edges) D.push_back(J(g[j]));
-  if (!slices(D, true, d.plus_sheet, d.minus_sheet, d.infinity)) return d;
+  if (!slices(D, true, false, d.plus_sheet, d.minus_sheet, d.infinity)) return d;
   d.status = Twin_status::decided;
   return d;
 }

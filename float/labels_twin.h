@@ -82,6 +82,9 @@ struct Labels_twin {
 // computed over the same generators (`dc`), or computing it.
 Labels_twin moment_labels(const std::vector<Bounded3>& generators, const Dual_cone& dc);
 Labels_twin moment_labels(const std::vector<Bounded3>& generators);
+// The NAIVE variant, for benchmarks and stress tests only: raw double signs everywhere (Naive_kernel for
+// the cone, unchecked signs in the slicing). It guesses and is sometimes wrong; never answer a user with it.
+Labels_twin moment_labels_naive(const std::vector<Bounded3>& generators);
 // Robot-side: the labels of point contacts with their friction (Reading::friction) or read
 // frictionless (Reuleaux's feasible rotation centres). Throws std::invalid_argument as force_closure.
 Labels_twin moment_labels(const std::vector<Point_contact>& contacts, Reading reading = Reading::friction);

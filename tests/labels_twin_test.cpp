@@ -231,6 +231,33 @@ TEST(LabelsHybrid, SameAnswerAsExactWithFewExactPredicates) {
   EXPECT_LT(exact_predicates * 10, predicates);
 }
 
+// Near a friction-cone edge (theory.md §8.5: y2 = 1 ± 10^-k): the twin abstains or is right; the naive variant
+// (raw signs) guesses and is sometimes wrong about whether anything is labeled.
+TEST(LabelsTwin, NearThresholdNeverWrongAndNaiveIs) {
+  int naive_wrong = 0, twin_undecided = 0;
+  for (int k = 1; k <= 40; ++k) {
+    for (int side : {-1, 1}) {
+      const std::string y2 = side < 0 ? "0." + std::string(k - 1, '9') + "9" : "1." + std::string(k - 1, '0') + "1";
+      const std::string text = test::scene_json({{"0", "0.5", "1", "0", "0.5"}, {"1", y2, "-1", "0", "0.5"}});
+      const Scene s = read_scene(text, Input_limits{});
+      const bool closed = side < 0;
+      ASSERT_EQ(moment_labels(s, Reading::friction).nothing_labeled(), closed) << y2;
+      const std::vector<fl::Bounded3> g = twin_generators(s, Reading::friction);
+      const fl::Labels_twin twin = fl::moment_labels(g);
+      if (twin.decided()) { EXPECT_EQ(twin.nothing_labeled(), closed) << y2; }
+      else ++twin_undecided;
+      // Naive: the text parsed to the nearest double, raw signs.
+      std::vector<fl::Point_contact> pc = {{0, 0.5, 1, 0, 0.5}, {1, std::strtod(y2.c_str(), nullptr), -1, 0, 0.5}};
+      const fl::Labels_twin naive = fl::moment_labels_naive(fl::generators(fl::bounded_contacts(pc), Reading::friction));
+      naive_wrong += !naive.decided() || naive.nothing_labeled() != closed;
+    }
+  }
+  std::printf("[ stats    ] 80 near-edge grasps: labels twin undecided %d (never wrong), naive wrong %d\n", twin_undecided,
+              naive_wrong);
+  EXPECT_GT(twin_undecided, 0);
+  EXPECT_GT(naive_wrong, 0);
+}
+
 TEST(LabelsTwin, RobotSideApiOnPlainDoubles) {
   // theory.md §5.8: the frictionless block in a corner: R+ = {x ≤ 0, y ≥ 1} (corner (0, 1)),
   // R- = {x ≥ 1, y ≤ 0} (corner (1, 0)), infinity the quarter circle d_x ≤ 0, d_y ≥ 0 (translations up

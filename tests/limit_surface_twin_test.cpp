@@ -188,6 +188,35 @@ TEST(LimitSurfaceTwin, StickSlideAgreesWithTheExactPolygons) {
   EXPECT_GT(near_decided * 2, near);  // where the N = 16 polygons (λ ≈ 0.98) cannot tell
 }
 
+// decide_motion: hybrid answers whatever exact answers, the same way, and more (no N to refine).
+TEST(LimitSurfaceTwin, HybridMotionNeverContradictsExact) {
+  std::mt19937_64 rng(test::seed(33));
+  const Directions d = make_directions(8);
+  int exact_decided = 0, hybrid_decided = 0, by_float = 0;
+  for (int t = 0; t < 20; ++t) {
+    const Polygonal_ls model(merge_support(random_support(rng, 2 + t % 3)), d);
+    const Ls_polytope in = model.build(Side::inner), out = model.build(Side::outer);
+    for (const Rational& scale : {rq(1, 2), rq(97, 100), rq(103, 100), rq(2, 1)}) {
+      const Sliding_answer a = compute_sliding(model, random_twist(rng));
+      Vec3q p;
+      for (int c = 0; c < 3; ++c) p[c] = scale * (a.load_lo[c] + a.load_hi[c]) / 2;
+      const Motion_decision e = decide_motion(model, p, Mode::exact, &in, &out);
+      const Motion_decision h = decide_motion(model, p, Mode::hybrid, &in, &out);
+      const Motion_decision f = decide_motion(model, p, Mode::float_only);
+      exact_decided += e.motion != Motion::undecided;
+      hybrid_decided += h.motion != Motion::undecided;
+      by_float += std::string(h.decided_by) == "float";
+      if (e.motion != Motion::undecided) { ASSERT_EQ(h.motion, e.motion) << "case " << t; }
+      if (f.motion != Motion::undecided) { ASSERT_EQ(f.motion, h.motion) << "case " << t; }
+      ASSERT_EQ(std::string(e.decided_by), e.motion == Motion::undecided ? "none" : "polygons");
+      ASSERT_EQ(h.motion, scale < 1 ? Motion::sticks : Motion::slides) << "case " << t;  // ±3 % of LS
+    }
+  }
+  std::printf("[ stats    ] motion: exact (N = 8) decided %d of 80, hybrid %d (%d by the float search)\n", exact_decided,
+              hybrid_decided, by_float);
+  EXPECT_GT(hybrid_decided, exact_decided);
+}
+
 }  // namespace
 }  // namespace wrenchkit
 
