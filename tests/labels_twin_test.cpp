@@ -12,6 +12,7 @@
 #include "exact/closure.h"
 #include "exact/force_dual.h"
 #include "exact/to_float.h"
+#include "exact/twin_agreement.h"
 #include "float/labels_twin.h"
 #include "tests/test_support.h"
 
@@ -19,74 +20,6 @@ namespace wrenchkit {
 namespace {
 
 using fl::Bounded;
-
-// The exact x lies within the bound: |x − v| ≤ e (an infinite bound claims nothing and fails here:
-// a decided twin must give finite bounds).
-bool within(const Bounded& b, const Rational& x) {
-  return std::isfinite(b.v) && std::isfinite(b.e) && abs(x - Rational(b.v)) <= Rational(b.e);
-}
-bool same_point(const fl::Point2& f, const Vec2& e) { return within(f.x, e.x) && within(f.y, e.y); }
-
-// Some positive multiple s·e of the exact direction lies in the box of the float direction.
-bool same_direction(const fl::Point2& f, const Vec2& e) {
-  if (!std::isfinite(f.x.e) || !std::isfinite(f.y.e)) return false;
-  Rational lo = 0, hi;  // s ∈ (0, ∞) ∩ [lo, hi]
-  bool bounded = false;
-  for (const auto& [b, d] : {std::pair<Bounded, Rational>{f.x, e.x}, {f.y, e.y}}) {
-    const Rational l = Rational(b.v) - Rational(b.e), h = Rational(b.v) + Rational(b.e);
-    if (d == 0) {
-      if (l > 0 || h < 0) return false;
-      continue;
-    }
-    Rational a = l / d, c = h / d;
-    if (d < 0) std::swap(a, c);
-    if (a > lo) lo = a;
-    if (!bounded || c < hi) hi = c, bounded = true;
-  }
-  return !bounded || (hi > 0 && lo <= hi);
-}
-
-std::string describe(const fl::Region2& f) {
-  std::ostringstream o;
-  o << fl::shape_name(f.shape) << " [";
-  for (const auto& p : f.vertices) o << "(" << p.x.v << "±" << p.x.e << ", " << p.y.v << "±" << p.y.e << ") ";
-  o << "] dirs [";
-  for (const auto& p : f.directions) o << "(" << p.x.v << ", " << p.y.v << ") ";
-  return o.str() + "]";
-}
-
-// The float region is the exact one: same shape, corners within their bounds in the same cyclic order
-// (bounded regions may start anywhere; unbounded ones start after the entering direction in both),
-// directions parallel within their bounds, in order.
-::testing::AssertionResult same_region(const fl::Region2& f, const Region& e) {
-  const auto fail = [&](const char* why) {
-    return ::testing::AssertionFailure() << why << ": float " << describe(f) << " vs exact " << region_json(e);
-  };
-  if (std::string(fl::shape_name(f.shape)) != shape_name(e.shape)) return fail("shape");
-  if (f.shape == fl::Region2::Shape::plane) return ::testing::AssertionSuccess();
-  if (f.vertices.size() != e.vertices.size() || f.directions.size() != e.directions.size()) return fail("counts");
-  const std::size_t n = e.vertices.size();
-  bool found = false;
-  for (std::size_t k = 0; k < (e.bounded() ? n : std::min<std::size_t>(n, 1)) && !found; ++k) {
-    bool all = true;
-    for (std::size_t i = 0; i < n && all; ++i) all = same_point(f.vertices[i], e.vertices[(i + k) % n]);
-    found = all;
-  }
-  if (n > 0 && !found) return fail("corners");
-  for (std::size_t i = 0; i < e.directions.size(); ++i)
-    if (!same_direction(f.directions[i], e.directions[i])) return fail("directions");
-  return ::testing::AssertionSuccess();
-}
-
-::testing::AssertionResult same_arc(const fl::Arc2& f, const Cone2& e) {
-  const char* names[] = {"none", "direction", "arc", "whole circle"};
-  const std::string fs = names[static_cast<int>(f.shape)];
-  if (fs != shape_name(e.shape)) return ::testing::AssertionFailure() << "infinity: float " << fs << " vs " << infinity_json(e);
-  for (std::size_t i = 0; i < e.extreme.size() && f.shape != fl::Arc2::Shape::full; ++i)
-    if (!same_direction(f.extreme[i], e.extreme[i]))
-      return ::testing::AssertionFailure() << "infinity direction " << i << ": " << infinity_json(e);
-  return ::testing::AssertionSuccess();
-}
 
 struct Tally {
   int cases = 0, rank3 = 0, decided = 0, dual_decided = 0;
@@ -109,25 +42,12 @@ void compare_labels(const std::string& text, Tally& t, const std::string& tag) {
     ++t.cases;
     t.rank3 += exact.cone.rank == 3;
     const std::string where = tag + (r == Reading::friction ? " (friction)" : " (frictionless)");
-    if (f.decided()) {
-      ++t.decided;
-      ASSERT_EQ(exact.cone.rank, 3) << where;
-      ASSERT_TRUE(same_region(f.plus, exact.plus)) << "R+ " << where << "; dumped to " << test::dump_failure(text, tag);
-      ASSERT_TRUE(same_region(f.minus, exact.minus)) << "R- " << where << "; dumped to " << test::dump_failure(text, tag);
-      ASSERT_TRUE(same_arc(f.infinity, exact.infinity)) << where << "; dumped to " << test::dump_failure(text, tag);
-      ASSERT_EQ(f.nothing_labeled(), exact.nothing_labeled()) << where;
-    } else if (f.status == fl::Twin_status::rank_deficient) {
-      ASSERT_LT(exact.cone.rank, 3) << where;
-    } else {
-      ASSERT_EQ(f.status, fl::Twin_status::uncertain) << where;
-    }
-    if (fd.decided()) {
-      ++t.dual_decided;
-      ASSERT_EQ(fd.covers_all, exact_dual.covers_all) << where;
-      ASSERT_TRUE(same_region(fd.plus_sheet, exact_dual.plus_sheet)) << "+ sheet " << where << "; dumped to " << test::dump_failure(text, tag);
-      ASSERT_TRUE(same_region(fd.minus_sheet, exact_dual.minus_sheet)) << "- sheet " << where << "; dumped to " << test::dump_failure(text, tag);
-      ASSERT_TRUE(same_arc(fd.infinity, exact_dual.infinity)) << "dual " << where;
-    }
+    const std::string dis = labels_disagreement(f, exact);
+    ASSERT_EQ(dis, "") << where << "; dumped to " << test::dump_failure(text, tag);
+    if (f.decided()) ++t.decided;
+    const std::string dd = dual_disagreement(fd, exact_dual);
+    ASSERT_EQ(dd, "") << where << "; dumped to " << test::dump_failure(text, tag);
+    t.dual_decided += fd.decided();
     // Dual points of the generators.
     for (std::size_t i = 0; i < g.size(); ++i) {
       const fl::Dual_point_twin fp = fl::dual_point(g[i]);
