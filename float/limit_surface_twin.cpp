@@ -215,7 +215,10 @@ Motion_answer classify_load(const std::vector<Support_point_twin>& s, const Boun
     q[(axis + 2) % 3] = ex(t0);
     const Bounded f = support_function(sp, q) - (q[0] * ps[0] + q[1] * ps[1] + q[2] * ps[2]);
     ++a.cells;
-    if (!(f.e < Bounded::kInf) || !std::isfinite(f.v)) return false;
+    if (!(f.e < Bounded::kInf) || !std::isfinite(f.v)) {  // no bound here: the cell cannot be dropped
+      a.motion = M::undecided;
+      return true;
+    }
     if (upper(f) <= 0) {  // h(q) ≤ q·p: p is not in the interior
       a.motion = M::slides;
       a.witness = to_input_frame(q);

@@ -106,6 +106,10 @@ TEST(LimitSurfaceTwin, SinglePointFlatDiscAndZeroSurface) {
   EXPECT_EQ(fl::classify_load(none, B(0, 0, 0)).motion, fl::Motion_twin::sticks);
   EXPECT_EQ(fl::classify_load(none, B(0, 0, 1)).motion, fl::Motion_twin::slides);
   EXPECT_THROW(fl::bounded_support({{0, 0, -1, 0.5}}), std::invalid_argument);
+  // Coordinates near the top of the double range: bounds overflow; the search abstains rather than guess.
+  const auto huge = fl::bounded_support({{1e300, 0, 1, 1}, {-1e300, 0, 1, 1}});
+  EXPECT_NE(fl::classify_load(huge, B(0.5, 0, 0)).motion, fl::Motion_twin::slides);
+  EXPECT_NE(fl::classify_load(huge, B(5, 0, 0)).motion, fl::Motion_twin::sticks);
 }
 
 TEST(LimitSurfaceTwin, TrueValuesLieInTheExactBrackets) {
