@@ -58,7 +58,6 @@ const Golden kGoldens[] = {
 #include "cli/reference_goldens.inc"
 };
 
-constexpr std::uint64_t kDefaultSeed = 20261122;
 const int kEpsilonExponents[] = {2, 6, 10, 14, 16, 20, 40};
 
 std::uint64_t splitmix64(std::uint64_t x) {
