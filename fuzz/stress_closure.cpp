@@ -1,6 +1,6 @@
 // Numerical-stability stress test of closure (docs/stability.md): families of scenes at a controlled
 // distance ε from a degenerate configuration, written as decimal text as users write them. For
-// each family and ε: how often naive floating point (strtod + raw double signs) is wrong, how often
+// each family and ε (fuzz/families.h): how often naive floating point (strtod + raw double signs) is wrong, how often
 // the certified twin abstains, and that the twin and hybrid are never wrong; times per query. The
 // truth is the exact engine (itself verified against brute force in tests/).
 //
@@ -17,161 +17,12 @@
 #include <string>
 #include <vector>
 
-#include "core/dual_cone.h"
-#include "exact/closure.h"
-#include "exact/equilibrium.h"
-#include "float/closure_twin.h"
+#include "fuzz/families.h"
 
 namespace {
 
 using namespace wrenchkit;
-
-struct Spec {
-  double ax, ay, nx, ny, mu;
-  std::string mu_text = "";  // written instead of mu when set (an exact fraction)
-};
-
-// An optional load for equilibrium families: gravity w at (cx, cy).
-struct Gravity {
-  bool present = false;
-  double cx = 0, cy = 0, w = 1;
-};
-
-// Decimal text with 17 significant digits: exactly what the double prints, read exactly by the
-// engine; the naive path parses it back to the same double.
-std::string num(double x) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", x);
-  return b;
-}
-
-std::string scene_text(const std::vector<Spec>& cs, const Gravity& g = {}) {
-  std::string s = "{\"wrenchkit\": 1, ";
-  if (g.present) s += "\"body\": {\"com\": [" + num(g.cx) + ", " + num(g.cy) + "]}, \"load\": {\"gravity\": " + num(g.w) + "}, ";
-  s += "\"contacts\": [";
-  for (std::size_t i = 0; i < cs.size(); ++i) {
-    const Spec& c = cs[i];
-    s += (i ? ", " : "") + std::string("{\"at\": [") + num(c.ax) + ", " + num(c.ay) + "], \"normal\": [" + num(c.nx) +
-         ", " + num(c.ny) + "], \"mu\": " + (c.mu_text.empty() ? num(c.mu) : "\"" + c.mu_text + "\"") + "}";
-  }
-  return s + "]}";
-}
-
-// A family builds a scene at distance ε from a degeneracy, from random base parameters.
-struct Family {
-  const char* name;
-  const char* what;
-  Property property;
-  std::function<std::vector<Spec>(std::mt19937_64&, double eps)> make;
-  bool equilibrium = false;  // decide equilibrium of the gravity load below instead of closure
-  std::function<Gravity(const std::vector<Spec>&)> load = nullptr;
-};
-
-double uni(std::mt19937_64& r, double a, double b) { return std::uniform_real_distribution<double>(a, b)(r); }
-
-// Rotate and translate a configuration (exact structure is kept only up to rounding: that is the
-// point — the decimal text is the scene).
-std::vector<Spec> place(std::vector<Spec> cs, double angle, double tx, double ty, double scale) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  for (Spec& k : cs) {
-    const double x = k.ax * scale, y = k.ay * scale;
-    k.ax = c * x - s * y + tx;
-    k.ay = s * x + c * y + ty;
-    const double nx = c * k.nx - s * k.ny, ny = s * k.nx + c * k.ny;
-    k.nx = nx;
-    k.ny = ny;
-  }
-  return cs;
-}
-
-std::vector<Family> families() {
-  return {
-      {"friction_threshold", "two fingers, μ = μ*·(1 ± ε): closure iff μ > μ*", Property::force_closure,
-       [](std::mt19937_64& r, double eps) {
-         const double y2 = uni(r, 0.6, 0.95), mu_star = (y2 - 0.5);  // d = (1, y2 − 1/2)
-         const double mu = mu_star * (1 + ((r() & 1) ? eps : -eps));
-         return place({{0, 0.5, 1, 0, mu}, {1, y2, -1, 0, mu}}, uni(r, 0, 6.28), uni(r, -5, 5), uni(r, -5, 5), 1);
-       }},
-      {"cone_edge", "two fingers, the segment between them ε (in slope) from the friction-cone edge", Property::force_closure,
-       [](std::mt19937_64& r, double eps) {
-         const double mu = uni(r, 0.2, 0.8), y2 = 0.5 + mu * (1 + ((r() & 1) ? eps : -eps));
-         return place({{0, 0.5, 1, 0, mu}, {1, y2, -1, 0, mu}}, uni(r, 0, 6.28), uni(r, -5, 5), uni(r, -5, 5), 1);
-       }},
-      {"nearly_concurrent", "Example 3 frictionless: third normal ε off the common point (rank 2 vs 3)", Property::form_closure,
-       [](std::mt19937_64& r, double eps) {
-         const double off = (r() & 1) ? eps : -eps;
-         return place({{1, 0, 0, 1, 0}, {0, 1, 1, 0, 0}, {3, 3 + off, -1, -1, 0}, {uni(r, 1.5, 2.5), 4, 0, -1, 0}},
-                      uni(r, 0, 6.28), uni(r, -5, 5), uni(r, -5, 5), uni(r, 0.5, 2));
-       }},
-      {"nearly_parallel",
-       "vertical-walls squeeze (integer offsets) with one wall tilted by ε: never closed, so the verdict does not "
-       "flip; it shows exactly parallel exact walls certified next to an inexact one",
-       Property::force_closure,
-       [](std::mt19937_64& r, double eps) {
-         const double t = (r() & 1) ? eps : -eps;
-         return place({{-1, 1, 1, t, 0}, {-1, -1, 1, 0, 0}, {1, 1, -1, 0, 0}, {1, -1, -1, 0, 0}}, 0,
-                      std::round(uni(r, -5, 5)), std::round(uni(r, -5, 5)), 1);
-       }},
-      {"huge_offset", "friction threshold ±ε, the grasp translated by 10^6 and scaled by 10^3", Property::force_closure,
-       [](std::mt19937_64& r, double eps) {
-         const double y2 = uni(r, 0.6, 0.95), mu_star = (y2 - 0.5);
-         const double mu = mu_star * (1 + ((r() & 1) ? eps : -eps));
-         return place({{0, 0.5, 1, 0, mu}, {1, y2, -1, 0, mu}}, uni(r, 0, 6.28), 1e6 * uni(r, 1, 2), -1e6 * uni(r, 1, 2),
-                      1e3);
-       }},
-      {"ladder_equilibrium",
-       "leaning square under gravity (equilibrium), μ = (1/7)·(1 ± ε) written as an exact fraction: balanced iff μ ≥ 1/7",
-       Property::force_closure,
-       [](std::mt19937_64& r, double eps) {
-         // μ = (10^k ± 1) / (7·10^k) written as an exact fraction, ε = 10^-k; the naive reading
-         // divides the two integers in double, as float code would.
-         const int k = static_cast<int>(std::lround(-std::log10(eps)));
-         const bool above = r() & 1;
-         const std::string p = above ? "1" + std::string(k - 1, '0') + "1" : std::string(k, '9');
-         const std::string q = "7" + std::string(k, '0');
-         const double mu = std::strtod(p.c_str(), nullptr) / std::strtod(q.c_str(), nullptr);
-         // Floor contact at (0,0) n=(0,1), wall contact at (−4,3) n=(1,0); the COM is at (−1/2, 7/2),
-         // carried as a third record that the harness turns into the gravity load.
-         std::vector<Spec> cs{{0, 0, 0, 1, mu}, {-4, 3, 1, 0, mu}, {-0.5, 3.5, 0, 0, -1}};
-         cs[0].mu_text = cs[1].mu_text = p + "/" + q;
-         return cs;
-       },
-       true,
-       [](const std::vector<Spec>& cs) { return Gravity{true, cs[2].ax, cs[2].ay, 1}; }},
-  };
-}
-
-// The naive reading of a scene: the doubles themselves (strtod of the same text gives them back),
-// and raw double signs (Naive_kernel), through the same generic algorithms as the twin.
-std::vector<fl::Bounded3> naive_generators(const std::vector<Spec>& cs, Reading reading) {
-  std::vector<fl::Bounded_contact> b;
-  for (const Spec& c : cs) {
-    fl::Bounded_contact k;
-    k.ax = fl::Bounded::exact(c.ax);
-    k.ay = fl::Bounded::exact(c.ay);
-    k.nx = fl::Bounded::exact(c.nx);
-    k.ny = fl::Bounded::exact(c.ny);
-    k.mu = fl::Bounded::exact(c.mu);
-    k.frictional = c.mu != 0;
-    b.push_back(k);
-  }
-  return fl::generators(b, reading);
-}
-
-bool naive_balanced(const std::vector<Spec>& cs, const Gravity& g) {
-  std::vector<fl::Bounded3> rows = naive_generators(cs, Reading::friction);
-  const std::size_t n = rows.size();
-  rows.push_back({fl::Bounded::exact(0), fl::Bounded::exact(-g.w), fl::Bounded::exact(-g.w * g.cx)});
-  const fl::Naive_kernel k(rows);
-  const Dual_cone dc = compute_dual_cone(First_rows<fl::Naive_kernel>{k, n});
-  if (dc.rank < 3) return false;  // naive code would not special-case it either; counts as a guess
-  return load_balanced(k, dc, n) == Sign::positive;
-}
-
-bool naive_closure(const std::vector<Spec>& cs, Property p) {
-  const fl::Naive_kernel k(naive_generators(cs, reading_of(p)));
-  return compute_dual_cone(k).force_closure();
-}
+using families::Family;
 
 struct Row {
   std::string family;
@@ -244,7 +95,7 @@ int main(int argc, char** argv) {
     }
   }
   const std::vector<double> epsilons = {1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-13, 1e-14, 1e-15, 1e-16, 1e-20, 1e-30, 1e-40};
-  const auto fams = families();
+  const std::vector<Family>& fams = families::all();
   std::vector<Row> rows;
   bool failed = false;
   for (const Family& fam : fams) {
@@ -254,45 +105,28 @@ int main(int argc, char** argv) {
       row.family = fam.name;
       row.eps = eps;
       for (int c = 0; c < cases; ++c) {
-        std::vector<Spec> cs = fam.make(rng, eps);
-        Gravity grav;
-        if (fam.equilibrium) {
-          grav = fam.load(cs);
-          cs.pop_back();  // the COM record is not a contact
-        }
-        const std::string text = scene_text(cs, grav);
-        const Scene scene = read_scene(text, Input_limits{});
-        struct Verdict {
-          bool decided, holds;
-        };
-        auto decide = [&](Mode m) -> Verdict {
-          if (fam.equilibrium) {
-            const Equilibrium_answer a = decide_equilibrium(scene, m, false);
-            return {a.decided, a.balanced};
-          }
-          const Closure_answer a = decide_closure(scene, fam.property, m, false);
-          return {a.decided, a.holds};
-        };
+        const families::Case k = families::make_case(fam, eps, rng);
+        const Scene scene = read_scene(k.text, Input_limits{});
         double t = now();
-        const Verdict exact = decide(Mode::exact);
+        const families::Verdict exact = families::decide(scene, fam.question, Mode::exact);
         row.t_exact += now() - t;
         t = now();
-        const Verdict twin = decide(Mode::float_only);
+        const families::Verdict twin = families::decide(scene, fam.question, Mode::float_only);
         row.t_twin += now() - t;
         t = now();
-        const Verdict hybrid = decide(Mode::hybrid);
+        const families::Verdict hybrid = families::decide(scene, fam.question, Mode::hybrid);
         row.t_hybrid += now() - t;
         t = now();
-        const bool naive = fam.equilibrium ? naive_balanced(cs, grav) : naive_closure(cs, fam.property);
+        const bool naive = families::naive_verdict(k);
         row.t_naive += now() - t;
         ++row.cases;
         row.naive_wrong += naive != exact.holds;
         row.twin_undecided += !twin.decided;
         row.twin_wrong += twin.decided && twin.holds != exact.holds;
         row.hybrid_wrong += hybrid.holds != exact.holds;
-        if ((twin.decided && twin.holds != exact.holds) || hybrid.holds != exact.holds) {
+        if (exact.holds != k.expected || (twin.decided && twin.holds != exact.holds) || hybrid.holds != exact.holds) {
           std::fprintf(stderr, "WRONG certified answer, family %s eps %g seed %llu case %d:\n%s\n", fam.name, eps,
-                       static_cast<unsigned long long>(seed), c, text.c_str());
+                       static_cast<unsigned long long>(seed), c, k.text.c_str());
           failed = true;
         }
       }
