@@ -60,8 +60,6 @@ namespace {
 using wide::i128;
 using wide::u128;
 
-Sign sign_int(int s) { return s < 0 ? Sign::negative : (s > 0 ? Sign::positive : Sign::zero); }
-Sign signz(const Integer& v) { return sign_of(sgn(v)); }
 
 constexpr std::int64_t kSmall40 = std::int64_t(1) << 40;
 
@@ -132,12 +130,12 @@ Integer to_integer(i128 v) {
   return v < 0 ? Integer(-r) : r;
 }
 
-// The primitive form of the integer vector e (|entries| < 2^127) as a kernel row: s and its tier
+// The integer vector e (|entries| < 2^127) as a kernel row: s and its tier
 // (0: < 2^40, 1: ≤ 2^62 − 1), or tier 2 with v. The zero vector stays zero (tier 0).
 void int128_row(i128 e[3], std::int64_t s[3], std::uint8_t& tier, std::array<Integer, 3>& v) {
   tier = 0;
   if (!wide::fits62(e[0]) || !wide::fits62(e[1]) || !wide::fits62(e[2])) {
-    // Rows of tier 2 must be primitive (cross_sign compares them); smaller rows need not be.
+    // Divided by the gcd of its entries when that brings it to 62 bits (then fixed-width signs).
     const u128 g = gcd128(gcd128(uabs(e[0]), uabs(e[1])), uabs(e[2]));
     for (int c = 0; c < 3; ++c) e[c] /= static_cast<i128>(g);
     if (!wide::fits62(e[0]) || !wide::fits62(e[1]) || !wide::fits62(e[2])) {
@@ -175,23 +173,24 @@ void Exact_kernel::push_rational(const Rational in[3]) {
     push_int128(i128(num[0]) * (l / den[0]), i128(num[1]) * (l / den[1]), i128(num[2]) * (l / den[2]));  // < 2^124
     return;
   }
+  // Otherwise GMP integers: scale by the product of the denominators (positive; no gcd).
+  const Integer& d0 = in[0].get_den();
+  const Integer& d1 = in[1].get_den();
+  const Integer& d2 = in[2].get_den();
+  push_big({in[0].get_num() * d1 * d2, in[1].get_num() * d0 * d2, in[2].get_num() * d0 * d1});
+}
+
+void Exact_kernel::push_big(std::array<Integer, 3> v) {
   Row r;
-  if (in[0] != 0 || in[1] != 0 || in[2] != 0) {
-    std::array<Integer, 3> v;
-    primitive(in, v.data());
-    bool fits = true, small = true;
-    for (int c = 0; c < 3; ++c) {
-      fits = fits && mpz_fits_slong_p(v[c].get_mpz_t()) && wide::fits62(v[c].get_si());
-      if (fits) {
-        r.s[c] = v[c].get_si();
-        small = small && r.s[c] < kSmall40 && r.s[c] > -kSmall40;
-      }
-    }
-    r.tier = !fits ? 2 : (small ? 0 : 1);
-    if (r.tier == 2) {
-      r.big = static_cast<std::uint32_t>(big_.size());
-      big_.push_back(std::move(v));
-    }
+  bool fits = true;
+  for (int c = 0; c < 3 && fits; ++c) fits = small_z(v[c].get_mpz_t(), r.s[c]);
+  if (fits) {
+    for (int c = 0; c < 3; ++c)
+      if (r.s[c] >= kSmall40 || r.s[c] <= -kSmall40) r.tier = 1;
+  } else {
+    r.tier = 2;
+    r.big = static_cast<std::uint32_t>(big_.size());
+    big_.push_back(std::move(v));
   }
   rows_.push_back(r);
 }
@@ -238,11 +237,19 @@ Exact_kernel::Exact_kernel(const Scene& scene, Reading reading) {
       rows_.resize(before);
       big_.resize(big_before);
     }
-    point_contact_generators(c.at.x, c.at.y, c.normal.x, c.normal.y, c.mu, frictional, reading,
-                             [&](Edge, const Rational& fx, const Rational& fy, const Rational& m) {
-                               const Rational in[3] = {fx, fy, m};
-                               push_rational(in);
-                             });
+    // The same formulas in GMP integers, with products of denominators as common denominators.
+    const Integer &axn = c.at.x.get_num(), &axd = c.at.x.get_den(), &ayn = c.at.y.get_num(), &ayd = c.at.y.get_den();
+    const Integer &nxn = c.normal.x.get_num(), &nxd = c.normal.x.get_den();
+    const Integer &nyn = c.normal.y.get_num(), &nyd = c.normal.y.get_den();
+    const Integer dpz = axd * ayd, pxz = axn * ayd, pyz = ayn * axd, nx = nxn * nyd, ny = nyn * nxd;
+    auto emit_big = [&](const Integer& fx, const Integer& fy) { push_big({dpz * fx, dpz * fy, pxz * fy - pyz * fx}); };
+    if (reading == Reading::frictionless || !frictional) {
+      emit_big(nx, ny);
+    } else {
+      const Integer &mn = c.mu.get_num(), &md = c.mu.get_den();
+      emit_big(md * nx - mn * ny, md * ny + mn * nx);
+      emit_big(md * nx + mn * ny, md * ny - mn * nx);
+    }
   }
 }
 
@@ -250,6 +257,39 @@ std::array<Integer, 3> Exact_kernel::row(std::size_t i) const {
   const Row& r = rows_[i];
   if (r.tier == 2) return big_[r.big];
   return {Integer(static_cast<long>(r.s[0])), Integer(static_cast<long>(r.s[1])), Integer(static_cast<long>(r.s[2]))};
+}
+
+namespace {
+
+// GMP scratch integers, reused (no allocation per predicate once warm); one set per thread.
+struct Scratch {
+  mpz_t r[9], t, u;
+  Scratch() {
+    for (mpz_t& x : r) mpz_init(x);
+    mpz_init(t);
+    mpz_init(u);
+  }
+  ~Scratch() {
+    for (mpz_t& x : r) mpz_clear(x);
+    mpz_clear(t);
+    mpz_clear(u);
+  }
+};
+
+Scratch& scratch() {
+  thread_local Scratch s;
+  return s;
+}
+
+}  // namespace
+
+// Row i as GMP integers in out[0..2].
+void Exact_kernel::load(std::size_t i, mpz_ptr out) const {
+  const Row& r = rows_[i];
+  for (int c = 0; c < 3; ++c) {
+    if (r.tier == 2) mpz_set(out + c, big_[r.big][c].get_mpz_t());
+    else mpz_set_si(out + c, static_cast<long>(r.s[c]));
+  }
 }
 
 Sign Exact_kernel::cross_sign(std::size_t i, std::size_t j) const {
@@ -260,13 +300,16 @@ Sign Exact_kernel::cross_sign(std::size_t i, std::size_t j) const {
             wide::minor2(a.s[0], a.s[1], b.s[0], b.s[1]) == 0)
                ? Sign::zero
                : Sign::positive;
-  // Primitive vectors are parallel iff equal or opposite; a row of tier 2 has an entry that no
-  // row of tier < 2 has, so mixed tiers are never parallel.
-  if (a.tier != b.tier) return Sign::positive;
-  const std::array<Integer, 3>&u = big_[a.big], &v = big_[b.big];
-  const bool same = u[0] == v[0] && u[1] == v[1] && u[2] == v[2];
-  const bool opposite = u[0] == -v[0] && u[1] == -v[1] && u[2] == -v[2];
-  return (same || opposite) ? Sign::zero : Sign::positive;
+  Scratch& z = scratch();
+  load(i, z.r[0]);
+  load(j, z.r[3]);
+  mpz_srcptr x = z.r[0], y = z.r[3];
+  for (const auto& [p, q] : {std::pair<int, int>{1, 2}, {0, 2}, {0, 1}}) {
+    mpz_mul(z.t, x + p, y + q);
+    mpz_mul(z.u, x + q, y + p);
+    if (mpz_cmp(z.t, z.u) != 0) return Sign::positive;
+  }
+  return Sign::zero;
 }
 
 Sign Exact_kernel::det_sign(std::size_t i, std::size_t j, std::size_t k) const {
@@ -274,12 +317,22 @@ Sign Exact_kernel::det_sign(std::size_t i, std::size_t j, std::size_t k) const {
   const Row& b = rows_[j];
   const Row& c = rows_[k];
   const int tier = std::max({a.tier, b.tier, c.tier});
-  if (tier == 0) return sign_int(wide::det3_sign_small(a.s, b.s, c.s));
-  if (tier == 1) return sign_int(wide::det3_sign(a.s, b.s, c.s));
-  const std::array<Integer, 3> x = row(i), y = row(j), z = row(k);
-  const Integer d = x[0] * (y[1] * z[2] - y[2] * z[1]) - x[1] * (y[0] * z[2] - y[2] * z[0]) +
-                    x[2] * (y[0] * z[1] - y[1] * z[0]);
-  return signz(d);
+  if (tier == 0) return sign_of(wide::det3_sign_small(a.s, b.s, c.s));
+  if (tier == 1) return sign_of(wide::det3_sign(a.s, b.s, c.s));
+  Scratch& z = scratch();
+  load(i, z.r[0]);
+  load(j, z.r[3]);
+  load(k, z.r[6]);
+  mpz_srcptr x = z.r[0], y = z.r[3], w = z.r[6];
+  // x0 (y1 w2 − y2 w1) − x1 (y0 w2 − y2 w0) + x2 (y0 w1 − y1 w0), accumulated in z.t.
+  mpz_set_ui(z.t, 0);
+  const int terms[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};  // cyclic: + x_a (y_b w_c − y_c w_b)
+  for (const auto& [p, q, r] : terms) {
+    mpz_mul(z.u, y + q, w + r);
+    mpz_submul(z.u, y + r, w + q);
+    mpz_addmul(z.t, x + p, z.u);
+  }
+  return sign_of(mpz_sgn(z.t));
 }
 
 }  // namespace wrenchkit

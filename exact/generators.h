@@ -28,7 +28,7 @@ Wrench wrench_at(const Vec2& p, const Vec2& f);
 std::vector<Generator> generators(const Scene& scene, Reading reading);
 
 // Exact predicate kernel for core/dual_cone.h over a list of nonzero wrenches. Each wrench is
-// replaced by its primitive integer multiple (a positive scaling: the cone is unchanged). Signs are
+// replaced by a positive integer multiple (the cone is unchanged). Signs are
 // exact integer arithmetic in three tiers: __int128 when every entry of the rows involved is below
 // 2^40 (a 3×3 determinant is then below 6·2^120 < 2^127), the fixed-width Int192 of
 // exact/wide_int.h when below 2^62, GMP integers otherwise. Never uncertain, never floating point.
@@ -45,7 +45,7 @@ class Exact_kernel {
   Sign cross_sign(std::size_t i, std::size_t j) const;          // zero iff parallel
   Sign det_sign(std::size_t i, std::size_t j, std::size_t k) const;
 
-  // The primitive row i (for tests).
+  // Row i: a positive integer multiple of wrench i (for tests).
   std::array<Integer, 3> row(std::size_t i) const;
 
  private:
@@ -55,6 +55,8 @@ class Exact_kernel {
     std::uint32_t big = 0;          // tier 2: index into big_
   };
   void push_rational(const Rational in[3]);
+  void push_big(std::array<Integer, 3> v);
+  void load(std::size_t i, mpz_ptr out) const;
   void push_int128(wide::i128 x, wide::i128 y, wide::i128 z);
   std::vector<Row> rows_;
   std::vector<std::array<Integer, 3>> big_;

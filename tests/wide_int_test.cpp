@@ -195,5 +195,26 @@ TEST(ExactKernelRows, SceneRowsArePositiveMultiplesOfTheGeneratorsAndSignsAgreeW
   for (int tier : tiers) EXPECT_GT(tier, 50);
 }
 
+TEST(ExactKernelRows, ParallelRowsOfDifferentTiersAreParallel) {
+  // The same contact written with a small and with a 31-digit normal: rows of tier 0 and tier 2
+  // (not reduced), parallel all the same; and a third contact that is not.
+  const std::string big = "1" + std::string(30, '0');
+  const std::string text = test::scene_json({{"1/3", "2", "1", "0", "1/2"},
+                                             {"1/3", "2", big, "0", "1/2"},
+                                             {"1/3", "2", big, "1", "1/2"}});
+  const Scene scene = read_scene(text, Input_limits{});
+  const Exact_kernel k(scene, Reading::friction);
+  ASSERT_EQ(k.size(), 6u);
+  EXPECT_EQ(k.cross_sign(0, 2), Sign::zero);
+  EXPECT_EQ(k.cross_sign(1, 3), Sign::zero);
+  EXPECT_EQ(k.cross_sign(2, 0), Sign::zero);
+  EXPECT_EQ(k.cross_sign(0, 1), Sign::positive);
+  EXPECT_EQ(k.cross_sign(0, 4), Sign::positive);
+  EXPECT_EQ(k.det_sign(0, 2, 1), Sign::zero);
+  EXPECT_EQ(k.det_sign(0, 1, 4), sign_of(mpq_det_sign(rationals(generators(scene, Reading::friction)[0].w),
+                                                      rationals(generators(scene, Reading::friction)[1].w),
+                                                      rationals(generators(scene, Reading::friction)[4].w))));
+}
+
 }  // namespace
 }  // namespace wrenchkit
