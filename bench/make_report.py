@@ -30,7 +30,7 @@ PEER_TEXT = {
 
 
 def us(b):
-    t = b["real_time"]
+    t = b["cpu_time"]
     return t * {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}[b["time_unit"]]
 
 
@@ -170,8 +170,9 @@ def main():
     md.append("Regenerate with `%s` (builds with `-DWRENCHKIT_BUILD_BENCH=ON`, runs `build/bench/wrenchkit_bench` "
               "with JSON output, then `bench/make_report.py`). Every ratio below is measured in the same run.\n" % command)
     md.append("Machine: %d cores at %s MHz, shared with other work and noisy (load average %s when the run started); "
-              "%s, library build type of Google Benchmark: %s. Times are wall-clock means per query (Google Benchmark "
-              "`real_time`); our rows start from a parsed scene (generator construction included), the peers' rows "
+              "%s, library build type of Google Benchmark: %s (the harness library, not our code: ours is built "
+              "`-O2`). Times are CPU time per query (Google Benchmark `cpu_time`, single-threaded code; wall-clock "
+              "time on this shared machine also counts other people's work); our rows start from a parsed scene (generator construction included), the peers' rows "
               "from precomputed wrenches (their construction not counted), so the ratios favour the peers.\n"
               % (ctx.get("num_cpus", 0), ctx.get("mhz_per_cpu", "?"),
                  ", ".join("%.2f" % x for x in ctx.get("load_avg", [])), ctx.get("date", "?"),

@@ -203,7 +203,7 @@ Exact_kernel::Exact_kernel(const std::vector<Wrench>& wrenches) {
   }
 }
 
-Exact_kernel::Exact_kernel(const Scene& scene, Reading reading) {
+Exact_kernel::Exact_kernel(const Scene& scene, Reading reading, const std::vector<Wrench>& extra) {
   rows_.reserve(2 * scene.contacts.size());
   for (const Contact& original : scene.contacts) {
     std::optional<Contact> built;  // rationals of a lazily read contact
@@ -250,6 +250,10 @@ Exact_kernel::Exact_kernel(const Scene& scene, Reading reading) {
       emit_big(md * nx - mn * ny, md * ny + mn * nx);
       emit_big(md * nx + mn * ny, md * ny - mn * nx);
     }
+  }
+  for (const Wrench& w : extra) {
+    const Rational in[3] = {w.fx, w.fy, w.m};
+    push_rational(in);
   }
 }
 

@@ -40,7 +40,8 @@ class Exact_kernel {
   // The rows of generators(scene, reading), in the same order, computed directly in integers from
   // each contact's numerators and denominators when they are small (no rational arithmetic, no
   // allocation), through the rationals otherwise. The same primitive rows either way.
-  Exact_kernel(const Scene& scene, Reading reading);
+  // `extra`: rows appended after the generators (equilibrium's load).
+  Exact_kernel(const Scene& scene, Reading reading, const std::vector<Wrench>& extra = {});
   std::size_t size() const { return rows_.size(); }
   Sign cross_sign(std::size_t i, std::size_t j) const;          // zero iff parallel
   Sign det_sign(std::size_t i, std::size_t j, std::size_t k) const;

@@ -38,6 +38,11 @@ class Lazy_generators {
     return *gens_;
   }
   const std::vector<Wrench>& wrenches() const { return get(), *ws_; }
+  // The exact kernel of the generators and the extra rows, built from the contacts' integers
+  // directly (Exact_kernel(scene, reading)): no rational generators needed.
+  std::unique_ptr<Exact_kernel> kernel() const {
+    return std::make_unique<Exact_kernel>(scene_, reading_, extra_);
+  }
 
  private:
   const Scene& scene_;
@@ -68,7 +73,7 @@ class Hybrid_kernel {
 
  private:
   const Exact_kernel& exact() const {
-    if (!e_) e_ = std::make_unique<Exact_kernel>(gens_.wrenches());
+    if (!e_) e_ = gens_.kernel();
     return *e_;
   }
   const fl::Float_kernel& f_;
