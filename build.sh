@@ -5,7 +5,7 @@
 #   ./build.sh build   install and build only
 #   ./build.sh stability   regenerate docs/stability.md (near-degenerate stress report)
 #   ./build.sh gallery     regenerate the pictures of docs/gallery.md
-#   ./build.sh bench       run the benchmark suite (~10 min) and regenerate docs/benchmarks.md + plots
+#   ./build.sh bench       run the benchmark suite (2–5 min) and regenerate docs/benchmarks.md + plots
 # Environment: BUILD_DIR (default build), JOBS (default: number of cores), CXX (compiler).
 set -euo pipefail
 cd "$(dirname "$0")"
