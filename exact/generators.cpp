@@ -60,7 +60,6 @@ namespace {
 using wide::i128;
 using wide::u128;
 
-
 constexpr std::int64_t kSmall40 = std::int64_t(1) << 40;
 
 u128 uabs(i128 v) { return v < 0 ? 0 - static_cast<u128>(v) : static_cast<u128>(v); }
