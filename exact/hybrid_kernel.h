@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "exact/generators.h"
@@ -27,26 +28,32 @@ class Lazy_generators {
  public:
   // `extra`: rows appended after the generators for predicates only (equilibrium's load).
   Lazy_generators(const Scene& s, Reading r, std::vector<Wrench> extra = {})
-      : scene_(s), reading_(r), extra_(std::move(extra)) {}
+      : scene_(&s), reading_(r), extra_(std::move(extra)) {}
+  // Wrenches that are already exact (no scene behind them): only wrenches() is available.
+  explicit Lazy_generators(std::vector<Wrench> ready)
+      : ws_(std::make_unique<std::vector<Wrench>>(std::move(ready))) {}
   const std::vector<Generator>& get() const {
     if (!gens_) {
-      gens_ = std::make_unique<std::vector<Generator>>(generators(scene_, reading_));
+      if (!scene_) throw std::logic_error("Lazy_generators: no scene behind these wrenches");
+      gens_ = std::make_unique<std::vector<Generator>>(generators(*scene_, reading_));
       ws_ = std::make_unique<std::vector<Wrench>>();
       for (const Generator& g : *gens_) ws_->push_back(g.w);
       for (const Wrench& w : extra_) ws_->push_back(w);
     }
     return *gens_;
   }
-  const std::vector<Wrench>& wrenches() const { return get(), *ws_; }
-  // The exact kernel of the generators and the extra rows, built from the contacts' integers
-  // directly (Exact_kernel(scene, reading)): no rational generators needed.
+  const std::vector<Wrench>& wrenches() const { return ws_ ? *ws_ : (get(), *ws_); }
+  // The exact kernel of the generators and the extra rows: built from the contacts' integers
+  // directly (Exact_kernel(scene, reading, extra): no rational generators) when a scene is behind
+  // them, else from the ready wrenches.
   std::unique_ptr<Exact_kernel> kernel() const {
-    return std::make_unique<Exact_kernel>(scene_, reading_, extra_);
+    if (!scene_) return std::make_unique<Exact_kernel>(wrenches());
+    return std::make_unique<Exact_kernel>(*scene_, reading_, extra_);
   }
 
  private:
-  const Scene& scene_;
-  Reading reading_;
+  const Scene* scene_ = nullptr;
+  Reading reading_ = Reading::friction;
   std::vector<Wrench> extra_;
   mutable std::unique_ptr<std::vector<Generator>> gens_;
   mutable std::unique_ptr<std::vector<Wrench>> ws_;
