@@ -15,9 +15,10 @@ COLORS = {
     "naive": "#d62728", "twin": "#ff7f0e", "hybrid": "#2ca02c", "exact": "#1f77b4",
     "qhull_graspit": "#9467bd", "qhull_strict": "#c5b0d5", "cgal_epick": "#8c564b", "cgal_epeck": "#e377c2",
     "cdd_gmp": "#7f7f7f", "glpk_exact": "#bcbd22", "exact_polygonal": "#1f77b4",
-    "cgal_epeck_minkowski_hull": "#e377c2",
+    "cgal_epeck_minkowski_hull": "#e377c2", "float_polygonal": "#ff7f0e", "float_true": "#2ca02c",
 }
 OURS = ["naive", "twin", "hybrid", "exact"]
+LABELS = ["labels_naive", "labels_twin", "labels_hybrid", "labels_exact"]
 PEERS = ["qhull_graspit", "qhull_strict", "cgal_epick", "cgal_epeck", "cdd_gmp", "glpk_exact"]
 PEER_TEXT = {
     "qhull_graspit": "qhull `Pp n Qx QJ C-0.0001`, closure iff no facet offset > 0 (GraspIt!)",
@@ -260,7 +261,7 @@ def main():
               "family tables (it reaches the exact path only where the twin abstains).\n")
 
     # ---------------- (a) closure, labels, equilibrium
-    md.append("## (a) Closure and equilibrium: time per query against wrong verdicts\n")
+    md.append("## (a) Closure, labels and equilibrium: time per query against wrong verdicts\n")
     md.append("Families of `fuzz/families.h` (also the stress report's, `docs/stability.md`): scenes at distance ε "
               "from a degenerate configuration, written as 17-significant-digit decimals; %d cases per family and ε; "
               "the truth is the exact verdict. *naive*: raw double signs (a guess); *twin*: the certified float "
@@ -317,6 +318,28 @@ def main():
         open(os.path.join(docs, "benchmarks", fn), "w").write(plot.svg())
         md.append("\n![%s](benchmarks/%s)\n" % (f, fn))
 
+    # labels
+    lab_fams = [f for f in fam_keys if get("family", f, eps_keys[0], "labels_exact")]
+    if lab_fams:
+        md.append("### Moment labels on the same families\n")
+        md.append("Moment labels (theory.md §5) of the same scenes under the family's reading: *labels_naive* raw "
+                  "doubles (`fl::moment_labels_naive`), *labels_twin* the certified float twin (wrong = not within "
+                  "its stated bounds of the exact labels, `labels_disagreement`), *labels_hybrid* and "
+                  "*labels_exact* the exact construction with float-first or exact signs. A naive labeling is "
+                  "wrong when its shapes or vertex counts differ from the exact ones. No peer computes labels.\n")
+        md.append("| family | ε | " + " | ".join(LABELS) + " |")
+        md.append("|---|---|" + "---|" * len(LABELS))
+        for f in lab_fams:
+            for e in eps_keys:
+                cells = []
+                for m in LABELS:
+                    b = get("family", f, e, m)
+                    extra = ", ".join(x for x in [("%d wrong" % b["wrong"]) if b["wrong"] else "",
+                                                  ("%d undecided" % b["undecided"]) if b["undecided"] else ""] if x)
+                    cells.append(fmt_t(us(b)) + ((" (" + extra + ")") if extra else ""))
+                md.append("| %s | %s | %s |" % (f, e, " | ".join(cells)))
+        md.append("")
+
     # generic
     md.append("## Generic grasps (random, not near-degenerate)\n")
     md.append("Random grasps: contacts on the unit circle (6 decimals), inward normals perturbed, μ in [0.1, 0.6] "
@@ -347,8 +370,8 @@ def main():
               "the certified relative error 1/λ − 1 (theory.md §12). *exact_polygonal*: `Polygonal_ls::build` of the "
               "inner polytope; *cgal_epeck_minkowski_hull*: CGAL's exact `convex_hull_3` (Epeck) of all N³ Minkowski "
               "vertex sums of the same summand polygons (same polytope: the vertex counts agree, checked in the "
-              "run). The float polygonal limit surface and the float true support function rows come with the "
-              "float limit-surface twin (not on this branch).\n")
+              "run). Building the polytope is exact-only (the float twin evaluates values per query, below).\n")
+    md.append("Building the whole polytope:\n")
     md.append("| N | 1/λ − 1 | vertices | exact polygonal | CGAL generic hull | ratio |\n|---|---|---|---|---|---|")
     sides = sorted({int(k[1]) for k in bench if k[0] == "ls_sides"})
     ls_plot = Plot("Limit surface: time against certified relative error", "1/λ − 1", "time (µs)", xlog=True, ylog=True)
@@ -365,6 +388,32 @@ def main():
         ls_plot.add(k, v)
     open(os.path.join(docs, "benchmarks", "limit_surface.svg"), "w").write(ls_plot.svg())
     md.append("\n![limit surface](benchmarks/limit_surface.svg)\n")
+
+    md.append("One support-function value h(q) per query, on 64 random integer twists, same support: the exact "
+              "polygonal value (`Polygonal_ls::support_value`, rational, binary search per point), the float "
+              "polygonal value (`fl::polygonal_support`, certified, a scan of the N directions per point) and the "
+              "float TRUE support function (`fl::support_function`, square roots in certified `Bounded` "
+              "arithmetic: no polygon, its error is rounding only). Relative error: the certified bound on "
+              "|value − h| / h (for the float polygonal value, 1/λ − 1 from the lower end of its certified λ² plus "
+              "the value's own rounding bound).\n")
+    md.append("| N | exact polygonal | float polygonal | certified 1/λ − 1 | float true (error) |\n|---|---|---|---|---|")
+    qn = sorted({int(k[1]) for k in bench if k[0] == "ls_query" and k[1] != "true"})
+    true_q = get("ls_query", "true", "float_true")
+    qplot = Plot("Support value per query against certified relative error", "certified relative error",
+                 "time per query (µs)", xlog=True, ylog=True)
+    qp = {"exact_polygonal": [], "float_polygonal": [], "float_true": []}
+    for n in qn:
+        a, b = get("ls_query", n, "exact_polygonal"), get("ls_query", n, "float_polygonal")
+        md.append("| %d | %s | %s | %.3g | |" % (n, fmt_t(us(a)), fmt_t(us(b)), b["rel_error"]))
+        qp["exact_polygonal"].append((a["rel_error"], us(a)))
+        qp["float_polygonal"].append((b["rel_error"], us(b)))
+    if true_q:
+        md.append("| true | | | | %s (%.2g) |" % (fmt_t(us(true_q)), true_q["rel_error"]))
+        qp["float_true"].append((true_q["rel_error"], us(true_q)))
+    for k, v in qp.items():
+        qplot.add(k, v)
+    open(os.path.join(docs, "benchmarks", "limit_surface_query.svg"), "w").write(qplot.svg())
+    md.append("\n![support value per query](benchmarks/limit_surface_query.svg)\n")
 
     # ---------------- (c) growth
     md.append("## (c) Growth\n")

@@ -4,12 +4,17 @@
 // (bench/make_report.py turns it into docs/benchmarks.md and docs/benchmarks/*.svg).
 //
 //   family/FAMILY/EPS/METHOD   near-degenerate families (fuzz/families.h), 64 cases each:
-//                              counters wrong, failures, undecided, cases (against the exact verdict)
+//                              counters wrong, failures, undecided, cases (against the exact verdict);
+//                              labels_* methods: moment labels, wrong = not the exact labels' shapes
+//                              and counts (twin: not within its stated bounds of them)
 //   generic/N/METHOD           random generic N-contact grasps (256 scenes): the twin's own targets
 //   contacts/N/METHOD          growth with the number of contacts (3 … 10^4)
 //   ls_sides/N/METHOD          exact polygonal limit surface vs CGAL's generic hull, 3 support points,
 //                              N directions: counters rel_error (1/λ − 1), vertices
 //   ls_points/K/METHOD         growth with the number of support points (N = 8)
+//   ls_query/N/METHOD          one support-function value h(q): exact polygonal, float polygonal (N
+//                              directions) and the float TRUE support function (N = "true"):
+//                              counter rel_error (certified bound on |value − h|/h)
 //
 //   wrenchkit_bench [--smoke] [Google Benchmark flags]
 // --smoke: small sizes, for the CI test that keeps the suite from rotting. Exit status 1 if one of
@@ -29,8 +34,12 @@
 #include "bench/peers.h"
 #include "exact/closure.h"
 #include "exact/limit_surface.h"
+#include "exact/moment_labels.h"
+#include "exact/twin_agreement.h"
 #include "exact/to_float.h"
 #include "float/closure_twin.h"
+#include "float/labels_twin.h"
+#include "float/limit_surface_twin.h"
 #include "fuzz/families.h"
 
 namespace {
@@ -51,7 +60,31 @@ struct Prepared {
   std::vector<peers::Wrench_d> wd;
   std::vector<peers::Wrench_q> wq;
   fam::Case family_case;  // for the naive reading (families only)
+  std::string labels;     // the exact moment labels' shapes and counts (closure families)
 };
+
+Reading reading_of(fam::Question q) {
+  return q == fam::Question::form_closure ? Reading::frictionless : Reading::friction;
+}
+
+// The combinatorics of a labeling: shapes and vertex/direction counts of R+, R−, the ± set and R∞.
+std::string signature(const Moment_labels& l) {
+  auto region = [](const Region& r) {
+    return std::string(shape_name(r.shape)) + "/" + std::to_string(r.vertices.size()) + "/" +
+           std::to_string(r.directions.size());
+  };
+  return region(l.plus) + " " + region(l.minus) + " both" + std::to_string(int(l.both.kind)) + " " +
+         shape_name(l.infinity.shape) + "/" + std::to_string(l.infinity.extreme.size());
+}
+std::string signature(const fl::Labels_twin& l) {
+  auto region = [](const fl::Region2& r) {
+    return std::string(fl::shape_name(r.shape)) + "/" + std::to_string(r.vertices.size()) + "/" +
+           std::to_string(r.directions.size());
+  };
+  const Cone2::Shape inf[] = {Cone2::Shape::zero, Cone2::Shape::ray, Cone2::Shape::wedge, Cone2::Shape::plane};
+  return region(l.plus) + " " + region(l.minus) + " both0 " + shape_name(inf[int(l.infinity.shape)]) + "/" +
+         std::to_string(l.infinity.extreme.size());
+}
 
 Prepared prepare(const std::string& text, fam::Question q) {
   Prepared p;
@@ -59,6 +92,7 @@ Prepared prepare(const std::string& text, fam::Question q) {
   p.scene = read_scene(text, Input_limits{});
   p.question = q;
   p.expected = fam::decide(p.scene, q, Mode::exact).holds;
+  if (q != fam::Question::equilibrium) p.labels = signature(moment_labels(p.scene, reading_of(q), Mode::exact));
   if (q != fam::Question::equilibrium) {
     const Reading r = q == fam::Question::force_closure ? Reading::friction : Reading::frictionless;
     for (const fl::Bounded3& g : fl::generators(to_bounded(p.scene), r)) p.wd.push_back({g[0].v, g[1].v, g[2].v});
@@ -82,7 +116,41 @@ struct Named_method {
   Method run;
   bool certified;  // ours: must never be wrong
   bool peer;
+  bool agreement = false;  // run() says 1 agrees with the exact answer, 0 does not (not a verdict)
+  Method timed = nullptr;  // what is timed, when run() also does the checking
 };
+
+// Moment labels (theory.md §5): 1 the same labeling as exact, 0 not, -1 the twin abstained.
+std::vector<Named_method> label_methods() {
+  return {
+      {"labels_naive",
+       [](const Prepared& p) {
+         const fl::Labels_twin l = fl::moment_labels_naive(fam::naive_generators(p.family_case));
+         return int(l.decided() && signature(l) == p.labels);
+       },
+       false, false, true},
+      {"labels_twin",
+       [](const Prepared& p) {
+         const fl::Labels_twin l = fl::moment_labels(fl::generators(to_bounded(p.scene), reading_of(p.question)));
+         if (!l.decided()) return -1;
+         return int(labels_disagreement(l, moment_labels(p.scene, reading_of(p.question), Mode::exact)).empty());
+       },
+       true, false, true,
+       [](const Prepared& p) {
+         return int(fl::moment_labels(fl::generators(to_bounded(p.scene), reading_of(p.question))).decided());
+       }},
+      {"labels_hybrid",
+       [](const Prepared& p) {
+         return int(signature(moment_labels(p.scene, reading_of(p.question), Mode::hybrid)) == p.labels);
+       },
+       true, false, true},
+      {"labels_exact",
+       [](const Prepared& p) {
+         return int(signature(moment_labels(p.scene, reading_of(p.question), Mode::exact)) == p.labels);
+       },
+       true, false, true},
+  };
+}
 
 std::vector<Named_method> methods(bool with_peers, bool naive) {
   std::vector<Named_method> m;
@@ -108,14 +176,15 @@ void register_set(const std::string& name, std::shared_ptr<const std::vector<Pre
       const int v = method.run(p);
       if (v == -1) ++undecided;
       else if (v == -2) ++failures;
-      else if ((v == 1) != p.expected) ++wrong;
+      else if (method.agreement ? v != 1 : (v == 1) != p.expected) ++wrong;
     }
     if (method.certified && wrong > 0) {
       std::fprintf(stderr, "WRONG certified verdict: %s (%d wrong)\n", name.c_str(), wrong);
       g_failed = true;
     }
+    const Method& timed = method.timed ? method.timed : method.run;
     std::size_t i = 0;
-    for (auto _ : st) benchmark::DoNotOptimize(method.run((*set)[i++ % set->size()]));
+    for (auto _ : st) benchmark::DoNotOptimize(timed((*set)[i++ % set->size()]));
     st.counters["wrong"] = wrong;
     st.counters["failures"] = failures;
     st.counters["undecided"] = undecided;
@@ -143,7 +212,10 @@ void register_families() {
         p.family_case = std::move(k);
         set->push_back(std::move(p));
       }
-      for (const Named_method& m : methods(f.question != fam::Question::equilibrium, true))
+      std::vector<Named_method> ms = methods(f.question != fam::Question::equilibrium, true);
+      if (f.question != fam::Question::equilibrium)
+        for (Named_method& m : label_methods()) ms.push_back(std::move(m));
+      for (const Named_method& m : ms)
         register_set("family/" + std::string(f.name) + "/" + eps_name(e) + "/" + m.name, set, m);
     }
 }
@@ -259,7 +331,59 @@ void register_ls(const std::string& name, int k, int sides, bool peer) {
   })->Unit(benchmark::kMillisecond);
 }
 
+// Per-query support values on 64 random integer twists: exact polygonal (rational), float polygonal
+// and float true (float/limit_surface_twin.h), each with its certified relative error.
+void register_ls_query(int sides) {  // sides 0: the true support function
+  const std::string name = "ls_query/" + (sides ? std::to_string(sides) : std::string("true")) + "/";
+  auto run = [sides](benchmark::State& st, int which) {  // 0 exact polygonal, 1 float polygonal, 2 float true
+    std::mt19937_64 rng(11 + 3);
+    const Ls_support sup = merge_support(random_support(3, rng));
+    std::vector<fl::Support_point_twin> twin;
+    for (const Ls_point& p : sup.points)
+      twin.push_back({to_bounded(p.at.x), to_bounded(p.at.y), to_bounded(p.force), to_bounded(p.rho)});
+    std::vector<Vec3q> qs;
+    std::vector<fl::Bounded3> qb;
+    for (int i = 0; i < 64; ++i) {
+      const long a = long(rng() % 21) - 10, b = long(rng() % 21) - 10, c = long(rng() % 21) - 10;
+      if (a == 0 && b == 0 && c == 0) continue;
+      qs.push_back({Rational(a), Rational(b), Rational(c)});
+      qb.push_back({fl::Bounded::exact(double(a)), fl::Bounded::exact(double(b)), fl::Bounded::exact(double(c))});
+    }
+    double rel = 0;
+    std::size_t i = 0;
+    if (which == 0) {
+      const Directions dirs = make_directions(sides);
+      const Polygonal_ls ls(sup, dirs);
+      rel = 1 / std::sqrt(dirs.lambda_sq.get_d()) - 1;
+      for (auto _ : st) benchmark::DoNotOptimize(ls.support_value(Side::inner, qs[i++ % qs.size()]));
+    } else if (which == 1) {
+      const fl::Directions_twin d = fl::make_directions(sides);
+      double value_rel = 0;
+      for (const fl::Bounded3& q : qb) {
+        const fl::Bounded h = fl::polygonal_support(twin, d, false, q);
+        value_rel = std::max(value_rel, h.e / std::fabs(h.v));
+      }
+      rel = 1 / std::sqrt(d.lambda_sq.v - d.lambda_sq.e) - 1 + value_rel;
+      for (auto _ : st) benchmark::DoNotOptimize(fl::polygonal_support(twin, d, false, qb[i++ % qb.size()]).v);
+    } else {
+      for (const fl::Bounded3& q : qb) {
+        const fl::Bounded h = fl::support_function(twin, q);
+        rel = std::max(rel, h.e / std::fabs(h.v));
+      }
+      for (auto _ : st) benchmark::DoNotOptimize(fl::support_function(twin, qb[i++ % qb.size()]).v);
+    }
+    st.counters["rel_error"] = rel;
+  };
+  if (sides) {
+    benchmark::RegisterBenchmark((name + "exact_polygonal").c_str(), run, 0)->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark((name + "float_polygonal").c_str(), run, 1)->Unit(benchmark::kMicrosecond);
+  } else {
+    benchmark::RegisterBenchmark((name + "float_true").c_str(), run, 2)->Unit(benchmark::kMicrosecond);
+  }
+}
+
 void register_limit_surface() {
+  for (int n : g_smoke ? std::vector<int>{4, 0} : std::vector<int>{4, 8, 16, 32, 64, 256, 1024, 0}) register_ls_query(n);
   for (int n : g_smoke ? std::vector<int>{4, 8} : std::vector<int>{4, 8, 16, 32, 64}) {
     register_ls("ls_sides/" + std::to_string(n) + "/exact_polygonal", 3, n, false);
     if (n <= 32) register_ls("ls_sides/" + std::to_string(n) + "/cgal_epeck_minkowski_hull", 3, n, true);

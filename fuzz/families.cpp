@@ -168,6 +168,10 @@ Case make_case(const Family& f, double eps, std::uint64_t seed) {
   return make_case(f, eps, rng);
 }
 
+std::vector<fl::Bounded3> naive_generators(const Case& c) {
+  return naive_generators(c.contacts, c.question == Question::form_closure ? Reading::frictionless : Reading::friction);
+}
+
 bool naive_verdict(const Case& c) {
   if (c.question != Question::equilibrium) {
     const Reading reading = c.question == Question::force_closure ? Reading::friction : Reading::frictionless;

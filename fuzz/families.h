@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "exact/closure.h"
+#include "float/float_kernel.h"
 
 namespace wrenchkit::families {
 
@@ -87,6 +88,9 @@ Verdict decide(const Scene& scene, Question q, Mode mode);
 // The naive verdict: the contacts' doubles with raw double signs (fl::Naive_kernel) through
 // core/dual_cone.h. A guess; for measurements only.
 bool naive_verdict(const Case& c);
+// The naive generators of a closure case (the contacts' doubles, raw double arithmetic) under the
+// case's reading, for naive variants of other constructions (labels).
+std::vector<fl::Bounded3> naive_generators(const Case& c);
 
 // Generic random grasps for throughput (not near-degenerate): `contacts` contacts on the unit
 // circle (6 decimals), inward normals perturbed by up to ±0.3, μ in [0.1, 0.6] (3 decimals).
