@@ -37,8 +37,9 @@ void point_contact_generators(const T& px, const T& py, const T& nx, const T& ny
     at_p(Edge::normal, nx, ny);
     return;
   }
-  at_p(Edge::left, nx - mu * ny, ny + mu * nx);
-  at_p(Edge::right, nx + mu * ny, ny - mu * nx);
+  const T mny = mu * ny, mnx = mu * nx;
+  at_p(Edge::left, nx - mny, ny + mnx);
+  at_p(Edge::right, nx + mny, ny - mnx);
 }
 
 }  // namespace wrenchkit

@@ -23,24 +23,39 @@ class Float_kernel {
  public:
   explicit Float_kernel(std::vector<Bounded3> g) : g_(std::move(g)) {
     mag_.reserve(g_.size());
-    err_.reserve(g_.size());
     for (const Bounded3& x : g_) {
-      std::array<double, 6> m{};
+      Magnitudes m{};
       for (int c = 0; c < 3; ++c) {
-        m[c] = std::fabs(x[c].v);
-        m[3 + c] = x[c].e;
+        m.abs[c] = std::fabs(x[c].v);
+        // An upper bound of the exact |x_c|: |v| + e rounded up (a sum and a nudge of 2^-51 cover
+        // both roundings; proofs/notes/FL-1, "Stage 1").
+        m.up[c] = x[c].e == 0 ? m.abs[c] : (m.abs[c] + x[c].e) * (1 + 0x1p-51);
       }
+      m.err = x[0].e + x[1].e + x[2].e;
       mag_.push_back(m);
-      err_.push_back(x[0].e + x[1].e + x[2].e);
     }
   }
   std::size_t size() const { return g_.size(); }
   const std::vector<Bounded3>& generators() const { return g_; }
 
   // zero iff g_i × g_j = 0: every minor certified zero; positive if one is certified nonzero.
+  // Stage 1 as for det_sign: a minor's static bound (proofs/notes/FL-1, "Stage 1") certifies most
+  // non-parallel pairs without Bounded arithmetic.
   Sign cross_sign(std::size_t i, std::size_t j) const {
     const Bounded3& a = g_[i];
     const Bounded3& b = g_[j];
+    const Magnitudes& ma = mag_[i];
+    const Magnitudes& mb = mag_[j];
+    for (int p = 0; p < 3; ++p) {
+      const int q = (p + 1) % 3, r = (p + 2) % 3;
+      const double m = a[q].v * b[r].v - a[r].v * b[q].v;
+      const double perm = ma.abs[q] * mb.abs[r] + ma.abs[r] * mb.abs[q];
+      const double perm_up = ma.up[q] * mb.up[r] + ma.up[r] * mb.up[q];
+      const double bound =
+          (perm_up * (1 + 0x1p-48) - perm * (1 - 0x1p-48) + 0x1p-49 * perm) * Bounded::kInflate + Bounded::kSlack;
+      if (bound < Bounded::kInf && std::isfinite(m) && perm >= Bounded::kUnderflow * 0x1p60 && std::fabs(m) > bound)
+        return Sign::positive;
+    }
     const Sign s[3] = {(a[1] * b[2] - a[2] * b[1]).sign(), (a[2] * b[0] - a[0] * b[2]).sign(),
                        (a[0] * b[1] - a[1] * b[0]).sign()};
     bool uncertain = false;
@@ -61,7 +76,7 @@ class Float_kernel {
     // input error, so that the 2×2 cofactors come from the other rows — exact when those rows are
     // exact, and then an exactly zero cofactor stays a certified zero (e.g. two parallel exact
     // forces with an inexact third: the cancellation happens inside an exact minor).
-    const double ei = err_[i], ej = err_[j], ek = err_[k];
+    const double ei = mag_[i].err, ej = mag_[j].err, ek = mag_[k].err;
     if (ej > ei && ej >= ek) {
       const std::size_t t = i;
       i = j, j = k, k = t;
@@ -78,27 +93,21 @@ class Float_kernel {
   }
 
   // Stage 1 (proofs/notes/FL-1, "Stage 1"): D̂ = det of the doubles in the order above; with
-  // A = |â| + e_a etc., |D − D̂| ≤ Σ_σ (e_a·B·C + |â|·e_b·C + |â|·|b̂|·e_c) + 6u·Σ_σ |â||b̂||ĉ|,
-  // the sums over the six terms of the determinant; the bound is inflated for its own rounding.
+  // A = |â| and A' ≥ |â| + e_a ≥ |a| (per coordinate), and perm(·) the permanent of three rows,
+  //   |D − D̂| ≤ perm(A', B', C') − perm(A, B, C) + 8u·perm(A, B, C),
+  // evaluated with outward-rounding nudges (two permanents of 9 products each).
   Sign det_sign_static(std::size_t i, std::size_t j, std::size_t k) const {
     const Bounded3& a = g_[i];
     const Bounded3& b = g_[j];
     const Bounded3& c = g_[k];
     const double d = a[0].v * (b[1].v * c[2].v - b[2].v * c[1].v) - a[1].v * (b[0].v * c[2].v - b[2].v * c[0].v) +
                      a[2].v * (b[0].v * c[1].v - b[1].v * c[0].v);
-    const auto& ma = mag_[i];
-    const auto& mb = mag_[j];
-    const auto& mc = mag_[k];
-    double perm = 0, prop = 0;
-    // The six terms a_p·b_q·c_r, (p, q, r) a permutation of (0, 1, 2).
-    static constexpr int kPerm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-    for (const auto& s : kPerm) {
-      const double xa = ma[s[0]], xb = mb[s[1]], xc = mc[s[2]];
-      const double ea = ma[3 + s[0]], eb = mb[3 + s[1]], ec = mc[3 + s[2]];
-      perm += xa * xb * xc;
-      prop += ea * (xb + eb) * (xc + ec) + xa * eb * (xc + ec) + xa * xb * ec;
-    }
-    const double bound = (prop + 0x1p-50 * perm) * Bounded::kInflate + Bounded::kSlack;
+    const double perm = permanent(mag_[i].abs, mag_[j].abs, mag_[k].abs);
+    const double perm_up = mag_[i].err + mag_[j].err + mag_[k].err == 0
+                               ? perm
+                               : permanent(mag_[i].up, mag_[j].up, mag_[k].up);
+    const double bound =
+        (perm_up * (1 + 0x1p-48) - perm * (1 - 0x1p-48) + 0x1p-49 * perm) * Bounded::kInflate + Bounded::kSlack;
     if (!(bound < Bounded::kInf) || !std::isfinite(d) || perm < Bounded::kUnderflow * 0x1p60) return Sign::uncertain;
     if (d > bound) return Sign::positive;
     if (-d > bound) return Sign::negative;
@@ -106,9 +115,17 @@ class Float_kernel {
   }
 
  private:
+  struct Magnitudes {
+    std::array<double, 3> abs;  // |v| of each coordinate
+    std::array<double, 3> up;   // an upper bound of the exact |x| of each coordinate
+    double err;                 // total input error of the generator
+  };
+  // Σ over the six permutations σ of x_σ0·y_σ1·z_σ2 (non-negative entries).
+  static double permanent(const std::array<double, 3>& x, const std::array<double, 3>& y, const std::array<double, 3>& z) {
+    return x[0] * (y[1] * z[2] + y[2] * z[1]) + x[1] * (y[0] * z[2] + y[2] * z[0]) + x[2] * (y[0] * z[1] + y[1] * z[0]);
+  }
   std::vector<Bounded3> g_;
-  std::vector<std::array<double, 6>> mag_;  // |v| and e of each coordinate
-  std::vector<double> err_;                 // total input error of each generator
+  std::vector<Magnitudes> mag_;
 };
 
 class Naive_kernel {
