@@ -112,9 +112,10 @@ inline Bounded operator/(const Bounded& a, const Bounded& b) {
   } else {
     round = std::fabs(v) * 0x1p-53 + 0x1p-1074;
   }
-  // |x_a/x_b − a.v/b.v| ≤ (a.e·|b.v| + |a.v|·b.e) / (|b.v|·(|b.v| − b.e)).
+  // |x_a/x_b − a.v/b.v| ≤ (a.e + |a.v/b.v|·b.e) / (|b.v| − b.e), with |a.v/b.v| ≤ |v|(1 + 2^-52); the slack
+  // 2^-1000 covers an underflowed product. (Written without |b.v|², which overflows for |b.v| > 2^512.)
   double prop = 0;
-  if (a.e != 0 || b.e != 0) prop = (a.e * bv + std::fabs(a.v) * b.e) / (bv * (bv - b.e));
+  if (a.e != 0 || b.e != 0) prop = (a.e + std::fabs(v) * (1 + 0x1p-52) * b.e + 0x1p-1000) / (bv - b.e);
   return {v, detail::up(prop + round)};
 }
 
