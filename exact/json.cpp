@@ -20,6 +20,13 @@ class Parser {
     return v;
   }
 
+  std::string string_at(std::size_t& pos) {
+    i_ = pos;
+    std::string out = string();
+    pos = i_;
+    return out;
+  }
+
  private:
   std::string_view s_;
   const Input_limits& limits_;
@@ -304,6 +311,11 @@ const char* type_name(Type t) {
 
 Value parse(std::string_view text, const Input_limits& limits, std::string_view source) {
   return Parser(text, limits, source).document();
+}
+
+std::string decode_string(std::string_view text, std::size_t& pos, const Input_limits& limits,
+                          std::string_view source) {
+  return Parser(text, limits, source).string_at(pos);
 }
 
 std::string quote(std::string_view s) {

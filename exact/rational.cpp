@@ -195,6 +195,11 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number, con
   return q;
 }
 
+bool parse_rational_into(std::string_view s, bool json_number, const Input_limits& limits, std::string& why,
+                         Rational& out, fl::Bounded* approx) {
+  return parse_impl(s, json_number, limits, why, approx, &out, nullptr);
+}
+
 bool scan_number(std::string_view s, bool json_number, const Input_limits& limits, std::string& why,
                  fl::Bounded& approx, int& sign) {
   return parse_impl(s, json_number, limits, why, &approx, nullptr, &sign);
