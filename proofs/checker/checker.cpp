@@ -663,21 +663,8 @@ void check_negative(const Certificate& c, const std::vector<Contact>& contacts, 
   }
 }
 
-}  // namespace
-
-Result check(std::string_view scene_json, std::string_view certificate_json, const Limits& limits) {
-  Scene scene;
-  try {
-    Reader r(scene_json, limits.max_depth);
-    scene = read_scene(r, limits);
-    r.finish();
-  } catch (const Failure& f) {
-    return {Outcome::bad_scene, f.message};
-  } catch (const std::bad_alloc&) {
-    return {Outcome::bad_scene, "out of memory while reading the scene"};
-  } catch (...) {  // not expected; check() never throws
-    return {Outcome::bad_scene, "internal error while reading the scene"};
-  }
+// The certificate against an already read scene.
+Result check_certificate(const Scene& scene, std::string_view certificate_json, const Limits& limits) {
   try {
     Reader r(certificate_json, limits.max_depth);
     const Certificate c = read_certificate(r);
@@ -697,6 +684,43 @@ Result check(std::string_view scene_json, std::string_view certificate_json, con
   } catch (...) {
     return {Outcome::rejected, "internal error while checking the certificate"};
   }
+}
+
+// The scene, or the bad_scene result that check() gives for it.
+bool read_whole_scene(std::string_view scene_json, const Limits& limits, Scene& scene, Result& bad) {
+  try {
+    Reader r(scene_json, limits.max_depth);
+    scene = read_scene(r, limits);
+    r.finish();
+    return true;
+  } catch (const Failure& f) {
+    bad = {Outcome::bad_scene, f.message};
+  } catch (const std::bad_alloc&) {
+    bad = {Outcome::bad_scene, "out of memory while reading the scene"};
+  } catch (...) {  // not expected; check() never throws
+    bad = {Outcome::bad_scene, "internal error while reading the scene"};
+  }
+  return false;
+}
+
+}  // namespace
+
+Result check(std::string_view scene_json, std::string_view certificate_json, const Limits& limits) {
+  Scene scene;
+  Result bad;
+  if (!read_whole_scene(scene_json, limits, scene, bad)) return bad;
+  return check_certificate(scene, certificate_json, limits);
+}
+
+std::vector<Result> check_all(std::string_view scene_json, const std::vector<std::string_view>& certificates,
+                              const Limits& limits) {
+  Scene scene;
+  Result bad;
+  if (!read_whole_scene(scene_json, limits, scene, bad)) return std::vector<Result>(certificates.size(), bad);
+  std::vector<Result> out;
+  out.reserve(certificates.size());
+  for (const std::string_view c : certificates) out.push_back(check_certificate(scene, c, limits));
+  return out;
 }
 
 }  // namespace wrenchkit_checker
