@@ -182,25 +182,7 @@ class Stream {
   // A JSON number token, by json.cpp's grammar.
   std::string_view number_token() {
     const std::size_t start = i_;
-    const auto digit = [&](std::size_t k) { return k < s_.size() && s_[k] >= '0' && s_[k] <= '9'; };
-    if (s_[i_] == '-') ++i_;
-    if (!digit(i_)) defer();
-    if (s_[i_] == '0') {
-      ++i_;
-    } else {
-      while (digit(i_)) ++i_;
-    }
-    if (i_ < s_.size() && s_[i_] == '.') {
-      ++i_;
-      if (!digit(i_)) defer();
-      while (digit(i_)) ++i_;
-    }
-    if (i_ < s_.size() && (s_[i_] == 'e' || s_[i_] == 'E')) {
-      ++i_;
-      if (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) ++i_;
-      if (!digit(i_)) defer();
-      while (digit(i_)) ++i_;
-    }
+    if (!json::skip_number(s_, i_)) defer();
     return s_.substr(start, i_ - start);
   }
 
