@@ -1,5 +1,6 @@
-// [BATCH] Many scenes at once (interface.md §2 `batch`, docs/design.md): answers in input order, computed on `jobs` threads,
-// each scene's error a value and never an exception, memory bounded whatever the number of scenes.
+// [BATCH] Many scenes at once (interface.md §2 `batch`, docs/design.md): answers in input order,
+// computed on `jobs` threads, each scene's error a value and never an exception, memory bounded
+// whatever the number of scenes.
 //
 //   ordered_map     the ordered parallel map under every batch: the CLI's `wrenchkit batch COMMAND`
 //                   and batch_closure below;
