@@ -61,8 +61,7 @@ void ordered_map(unsigned jobs, Next&& next, Work&& work, Emit&& emit, std::size
   unsigned busy = 0;
   bool stop = false;
   std::vector<std::thread> pool;
-  const auto helper = [&](unsigned t) {
-    std::size_t seen = 0;
+  const auto helper = [&](unsigned t, std::size_t seen) {  // seen: the generation before its first
     for (;;) {
       {
         std::unique_lock<std::mutex> lock(m);
@@ -90,7 +89,7 @@ void ordered_map(unsigned jobs, Next&& next, Work&& work, Emit&& emit, std::size
       if (count == 0) break;
       cursor = 0;
       const unsigned helpers = static_cast<unsigned>(std::min<std::size_t>(threads, count)) - 1;
-      while (pool.size() < helpers) pool.emplace_back(helper, static_cast<unsigned>(pool.size() + 1));
+      while (pool.size() < helpers) pool.emplace_back(helper, static_cast<unsigned>(pool.size() + 1), generation);
       if (!pool.empty()) {
         {
           std::lock_guard<std::mutex> lock(m);
