@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # wrenchkit's one entry point for a fresh Debian 12 machine (run as root, or with sudo available).
 #   ./build.sh demo    install the Debian packages, build, run `wrenchkit demo`
-#   ./build.sh test    install the Debian packages, build, run the whole test suite (CTest)
+#   ./build.sh test    install the Debian packages, build, run the whole test suite (CTest), then
+#                      the fuzz smoke: every libFuzzer target for FUZZ_SECONDS (default 20) each
+#   ./build.sh fuzz [SECONDS]  build the libFuzzer targets (clang, ASan+UBSan) and run each for SECONDS
+#                      (default 3600) on a copy of its committed corpus; a finding stops it (exit 1) and
+#                      leaves the input in fuzz-findings/
 #   ./build.sh build   install and build only
 #   ./build.sh stability   regenerate docs/stability.md (near-degenerate stress report)
 #   ./build.sh gallery     regenerate the pictures of docs/gallery.md
@@ -9,7 +13,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-PACKAGES=(g++ cmake ninja-build ccache libgmp-dev libgtest-dev librapidcheck-dev)
+PACKAGES=(g++ cmake ninja-build ccache libgmp-dev libgtest-dev librapidcheck-dev clang libclang-rt-14-dev)
 
 install_packages() {
   local missing=()
@@ -30,6 +34,36 @@ build() {
   cmake --build "$dir" -j "${JOBS:-$(nproc)}"
 }
 
+# The libFuzzer targets of fuzz/ in their own build (clang; every library instrumented), each run for
+# $1 seconds on a scratch copy of its committed corpus (the committed seeds stay as they are).
+fuzz() {
+  local seconds="$1" dir="${FUZZ_BUILD_DIR:-build-fuzz}"
+  CXX=clang++ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWRENCHKIT_FUZZ=ON \
+    -DWRENCHKIT_BUILD_TESTS=OFF >/dev/null
+  cmake --build "$dir" -j "${JOBS:-$(nproc)}"
+  mkdir -p fuzz-findings
+  local target corpus work
+  for target in fuzz_scene_parser fuzz_checker fuzz_structured; do
+    case "$target" in
+      fuzz_scene_parser) corpus=fuzz/corpus/scene ;;
+      fuzz_checker) corpus=fuzz/corpus/checker ;;
+      fuzz_structured) corpus=fuzz/corpus/structured ;;
+    esac
+    work=$(mktemp -d)
+    cp -r "$corpus"/. "$work"/
+    echo "build.sh: fuzzing $target for ${seconds}s"
+    if ! "$dir/fuzz/$target" "$work" -dict=fuzz/scene.dict -max_total_time="$seconds" -timeout=30 \
+         -rss_limit_mb=4096 -artifact_prefix=fuzz-findings/"$target"- -print_final_stats=1 >"$work.log" 2>&1; then
+      tail -n 40 "$work.log"
+      echo "build.sh: $target found a problem; the input is in fuzz-findings/" >&2
+      rm -rf "$work"
+      return 1
+    fi
+    grep -E "^(Done|stat::number_of_executed_units)" "$work.log" | tail -n 1
+    rm -rf "$work" "$work.log"
+  done
+}
+
 case "${1:-}" in
   demo)
     install_packages
@@ -40,6 +74,11 @@ case "${1:-}" in
     install_packages
     build
     ctest --test-dir "${BUILD_DIR:-build}" --output-on-failure -j "${JOBS:-$(nproc)}"
+    fuzz "${FUZZ_SECONDS:-20}"
+    ;;
+  fuzz)
+    install_packages
+    fuzz "${2:-3600}"
     ;;
   build)
     install_packages
@@ -57,7 +96,7 @@ case "${1:-}" in
     docs/gallery/make_gallery.sh "${BUILD_DIR:-build}"
     ;;
   *)
-    echo "usage: ./build.sh demo|test|build|stability|gallery" >&2
+    echo "usage: ./build.sh demo|test|build|fuzz [SECONDS]|stability|gallery" >&2
     exit 2
     ;;
 esac

@@ -19,15 +19,6 @@ Reading reading_of(Property p) {
   return p == Property::force_closure ? Reading::friction : Reading::frictionless;
 }
 
-const char* mode_name(Mode m) {
-  switch (m) {
-    case Mode::exact: return "exact";
-    case Mode::hybrid: return "hybrid";
-    case Mode::float_only: return "float";
-  }
-  return "?";
-}
-
 namespace {
 
 // [FC-3] A nonzero twist with power ≥ 0 against every generator.

@@ -22,17 +22,12 @@
 
 #include "core/dual_cone.h"
 #include "exact/generators.h"
+#include "exact/mode.h"
 
 namespace wrenchkit {
 
 enum class Property { force_closure, form_closure };
 
-// How signs are decided (interface.md §2): `exact` — exact integer/rational arithmetic only;
-// `hybrid` — the float twin's certified predicates [FL-2], and exact arithmetic for each predicate
-// they leave uncertain (per predicate, as CGAL's Filtered_predicate); `float_only` — the twin alone,
-// which may leave the question undecided.
-enum class Mode { exact, hybrid, float_only };
-const char* mode_name(Mode m);
 const char* property_name(Property p);
 Reading reading_of(Property p);
 

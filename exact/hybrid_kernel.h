@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "exact/generators.h"
@@ -27,21 +28,25 @@ class Lazy_generators {
  public:
   // `extra`: rows appended after the generators for predicates only (equilibrium's load).
   Lazy_generators(const Scene& s, Reading r, std::vector<Wrench> extra = {})
-      : scene_(s), reading_(r), extra_(std::move(extra)) {}
+      : scene_(&s), reading_(r), extra_(std::move(extra)) {}
+  // Wrenches that are already exact (no scene behind them): only wrenches() is available.
+  explicit Lazy_generators(std::vector<Wrench> ready)
+      : ws_(std::make_unique<std::vector<Wrench>>(std::move(ready))) {}
   const std::vector<Generator>& get() const {
     if (!gens_) {
-      gens_ = std::make_unique<std::vector<Generator>>(generators(scene_, reading_));
+      if (!scene_) throw std::logic_error("Lazy_generators: no scene behind these wrenches");
+      gens_ = std::make_unique<std::vector<Generator>>(generators(*scene_, reading_));
       ws_ = std::make_unique<std::vector<Wrench>>();
       for (const Generator& g : *gens_) ws_->push_back(g.w);
       for (const Wrench& w : extra_) ws_->push_back(w);
     }
     return *gens_;
   }
-  const std::vector<Wrench>& wrenches() const { return get(), *ws_; }
+  const std::vector<Wrench>& wrenches() const { return ws_ ? *ws_ : (get(), *ws_); }
 
  private:
-  const Scene& scene_;
-  Reading reading_;
+  const Scene* scene_ = nullptr;
+  Reading reading_ = Reading::friction;
   std::vector<Wrench> extra_;
   mutable std::unique_ptr<std::vector<Generator>> gens_;
   mutable std::unique_ptr<std::vector<Wrench>> ws_;

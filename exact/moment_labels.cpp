@@ -2,6 +2,8 @@
 
 #include <optional>
 
+#include "exact/to_float.h"
+
 namespace wrenchkit {
 
 namespace {
@@ -42,9 +44,9 @@ Both_set both_of(const Wrench_cone& c) {
 
 }  // namespace
 
-Moment_labels moment_labels(const std::vector<Wrench>& generators) {
+Moment_labels moment_labels(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin) {
   Moment_labels l;
-  l.cone = wrench_cone(generators);
+  l.cone = wrench_cone(generators, mode, twin);
   const std::vector<Vec3> p = centres(l.cone.dual);
   l.plus = slice_front(p, l.cone.dual_pointed);
   l.minus = slice_front(negated(p), l.cone.dual_pointed);
@@ -53,10 +55,12 @@ Moment_labels moment_labels(const std::vector<Wrench>& generators) {
   return l;
 }
 
-Moment_labels moment_labels(const Scene& scene, Reading reading) {
+Moment_labels moment_labels(const Scene& scene, Reading reading, Mode mode) {
   std::vector<Wrench> w;
   for (const Generator& g : generators(scene, reading)) w.push_back(g.w);
-  return moment_labels(w);
+  if (mode != Mode::hybrid) return moment_labels(w, mode);
+  const std::vector<fl::Bounded3> twin = fl::generators(to_bounded(scene), reading);
+  return moment_labels(w, mode, &twin);
 }
 
 std::string both_json(const Both_set& b) {

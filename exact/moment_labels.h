@@ -37,8 +37,10 @@ struct Moment_labels {
   }
 };
 
-Moment_labels moment_labels(const std::vector<Wrench>& generators);
-Moment_labels moment_labels(const Scene& scene, Reading reading);
+// `mode` exact or hybrid (the same answer; see wrench_cone).
+Moment_labels moment_labels(const std::vector<Wrench>& generators, Mode mode = Mode::exact,
+                            const std::vector<fl::Bounded3>* twin = nullptr);
+Moment_labels moment_labels(const Scene& scene, Reading reading, Mode mode = Mode::exact);
 
 // JSON per interface.md §3: {"plus": REGION, "minus": REGION, "both": [...], "infinity": [...]}
 // (without the outer braces' neighbours: the caller adds fields).

@@ -120,4 +120,35 @@ Sliding_answer compute_sliding(const Polygonal_ls& model, const std::optional<Ve
   return a;
 }
 
+std::vector<fl::Support_point_twin> twin_support(const Ls_support& s) {
+  std::vector<fl::Support_point_twin> out;
+  out.reserve(s.points.size());
+  for (const Ls_point& p : s.points)
+    out.push_back({to_bounded(p.at.x), to_bounded(p.at.y), to_bounded(p.force), to_bounded(p.rho)});
+  return out;
+}
+
+Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mode, const Ls_polytope* inner,
+                              const Ls_polytope* outer) {
+  Motion_decision d;
+  if (mode != Mode::exact) {
+    const fl::Motion_answer f =
+        fl::classify_load(twin_support(model.support()), {to_bounded(p[0]), to_bounded(p[1]), to_bounded(p[2])});
+    d.cells = f.cells;
+    if (f.motion != fl::Motion_twin::undecided) {
+      d.motion = f.motion == fl::Motion_twin::sticks ? Motion::sticks : Motion::slides;
+      d.decided_by = "float";
+      d.witness = f.witness;
+      return d;
+    }
+    if (mode == Mode::float_only) return d;
+  }
+  std::optional<Ls_polytope> built_in, built_out;
+  if (!inner) inner = &built_in.emplace(model.build(Side::inner));
+  if (!outer) outer = &built_out.emplace(model.build(Side::outer));
+  d.motion = classify_load(model.gauge(*inner, Side::inner, p), model.gauge(*outer, Side::outer, p));
+  if (d.motion != Motion::undecided) d.decided_by = "polygons";
+  return d;
+}
+
 }  // namespace wrenchkit

@@ -16,6 +16,8 @@
 #include <string>
 
 #include "exact/limit_surface.h"
+#include "exact/mode.h"
+#include "float/limit_surface_twin.h"
 
 namespace wrenchkit {
 
@@ -55,5 +57,24 @@ struct Sliding_answer {
 
 // Precondition: q ≠ 0 when given (throws std::invalid_argument).
 Sliding_answer compute_sliding(const Polygonal_ls& model, const std::optional<Vec3q>& q);
+
+// The merged support as the float twin's points (each value with its conversion bound) [FL-4].
+std::vector<fl::Support_point_twin> twin_support(const Ls_support& s);
+
+// Does the load p stick or slide on the TRUE limit surface (interior / not)?
+//   exact  — the polygons [LS-3]: g_in(p) < 1 sticks, g_out(p) ≥ 1 slides, else undecided (refine N);
+//   hybrid — the float twin's certified search on the true LS first [FL-7], the polygons only when it is
+//            undecided (a load within the search's resolution of LS);
+//   float  — the search alone.
+// Both are certified, so hybrid never contradicts exact; it decides more often (no N to refine). The
+// polytopes are needed only when the search is undecided: pass them, or nullptr to have them built here.
+struct Motion_decision {
+  Motion motion = Motion::undecided;
+  const char* decided_by = "none";  // "float" (the search), "polygons", or "none"
+  std::size_t cells = 0;            // twists the search evaluated
+  std::array<double, 3> witness{};  // slides by the search: a twist with h(q) ≤ q·p
+};
+Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& load, Mode mode,
+                              const Ls_polytope* inner = nullptr, const Ls_polytope* outer = nullptr);
 
 }  // namespace wrenchkit

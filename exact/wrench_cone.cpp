@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "exact/hybrid_kernel.h"
 #include "exact/planar_region.h"
 
 namespace wrenchkit {
@@ -56,20 +57,47 @@ void push_pm(std::vector<Vec3>& out, const Vec3& v) {
   out.push_back(neg3(v));
 }
 
+fl::Bounded3 bounded_of(const Wrench& w) { return {to_bounded(w.fx), to_bounded(w.fy), to_bounded(w.m)}; }
+
+// [FC-1] on the wrenches: exact, or hybrid (the twin's certified sign, exact where uncertain).
+Dual_cone dual_cone_of(const std::vector<Wrench>& ws, const std::vector<fl::Bounded3>& twin, Mode mode,
+                       Wrench_cone& counts) {
+  if (mode == Mode::exact) {
+    const Exact_kernel exact(ws);
+    const Counting_exact_kernel k{exact};
+    Dual_cone dc = compute_dual_cone(k);
+    counts.predicates += k.n;
+    counts.exact_predicates += k.n;
+    return dc;
+  }
+  const fl::Float_kernel f(twin);
+  const Lazy_generators lazy(ws);
+  const Hybrid_kernel k(f, lazy, true);
+  Dual_cone dc = compute_dual_cone(k);
+  counts.predicates += k.n;
+  counts.exact_predicates += k.exact_n;
+  return dc;
+}
+
 }  // namespace
 
 Vec3 J(const Vec3& u) { return {-u[1], u[0], u[2]}; }
 
-Wrench_cone wrench_cone(const std::vector<Wrench>& generators) {
+Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin) {
+  if (mode == Mode::float_only) throw std::invalid_argument("wrench_cone: the float twin is fl::moment_labels");
+  if (twin && twin->size() != generators.size()) throw std::invalid_argument("wrench_cone: twin of another size");
   std::vector<Wrench> ws;
   std::vector<Vec3> g;
-  for (const Wrench& w : generators) {
+  std::vector<fl::Bounded3> tw;
+  for (std::size_t i = 0; i < generators.size(); ++i) {
+    const Wrench& w = generators[i];
     if (w.fx == 0 && w.fy == 0 && w.m == 0) continue;
     ws.push_back(w);
     g.push_back(primitive_vec(as_vec(w)));
+    if (mode == Mode::hybrid) tw.push_back(twin ? (*twin)[i] : bounded_of(w));
   }
   Wrench_cone c;
-  const Dual_cone dc = compute_dual_cone(Exact_kernel(ws));
+  const Dual_cone dc = dual_cone_of(ws, tw, mode, c);
   c.rank = dc.rank;
   c.shape = dc.shape;
   const Vec3 e[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -109,7 +137,8 @@ Wrench_cone wrench_cone(const std::vector<Wrench>& generators) {
     with_n.push_back(Wrench{n[0], n[1], n[2]});
     std::vector<Vec3> gn = g;
     gn.push_back(n);
-    const Dual_cone half = compute_dual_cone(Exact_kernel(with_n));
+    if (mode == Mode::hybrid) tw.push_back(bounded_of(with_n.back()));
+    const Dual_cone half = dual_cone_of(with_n, tw, mode, c);
     if (half.rank != 3) throw std::logic_error("wrench_cone: rank did not rise to 3");
     c.dual = extreme_rays(half, gn);
     c.dual.push_back(neg3(n));

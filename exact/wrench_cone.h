@@ -20,6 +20,8 @@
 
 #include "core/dual_cone.h"
 #include "exact/generators.h"
+#include "exact/mode.h"
+#include "float/float_kernel.h"
 
 namespace wrenchkit {
 
@@ -31,11 +33,18 @@ struct Wrench_cone {
   std::vector<Vec3> primal;              // generators of W, wrenches (fx, fy, m)
   bool primal_pointed = true;            // `primal` = extreme rays of a pointed W, in cyclic order
   std::vector<Vec3> lineality;           // a basis of W* ∩ −W* = (span W)^⊥ (3 − rank vectors)
+  // How the dual cone's signs were decided (hybrid: the float twin first, exact where it was
+  // uncertain; the constructions above are exact in every mode).
+  std::size_t predicates = 0, exact_predicates = 0;
   bool force_closure() const { return rank == 3 && shape == Dual_shape::zero; }
 };
 
-// Zero wrenches are ignored.
-Wrench_cone wrench_cone(const std::vector<Wrench>& generators);
+// Zero wrenches are ignored. `mode` exact or hybrid (float_only is the float twin's business:
+// float/labels_twin.h); in hybrid mode `twin` holds the same generators as certified doubles (for a
+// scene: fl::generators(to_bounded(scene), reading)), else they are converted from the rationals.
+// The answer is the same in both modes; hybrid decides most signs in floating point.
+Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode = Mode::exact,
+                        const std::vector<fl::Bounded3>* twin = nullptr);
 
 // w ∈ W ⇔ ⟨t, w⟩ ≥ 0 for every generator t of W* (W = W**). Exact.
 bool in_cone(const Wrench_cone& c, const Vec3& w);

@@ -86,4 +86,65 @@ inline Bounded operator*(const Bounded& a, const Bounded& b) {
   return {v, detail::guard(v, e)};
 }
 
+// [FL-5] Division, square root, max and abs (proofs/notes/FL-1-bounded-arithmetic.md, "FL-5").
+//
+// a / b needs b certified nonzero (|b.v| > b.e); otherwise the result is uncertain (e = +∞).
+// Operands within 2^-900 … 2^900 and a normal quotient keep the rounding error exactly computable
+// (the remainder a.v − v·b.v is then representable: fma gives it), so an exact quotient of exact data
+// stays exact; outside that range the standard model's error u·|v| + 2^-1074 is used.
+inline Bounded operator/(const Bounded& a, const Bounded& b) {
+  const double bv = std::fabs(b.v);
+  if (!(bv > b.e) || !std::isfinite(b.v) || !(b.e < Bounded::kInf) || !std::isfinite(a.v) || !(a.e == a.e))
+    return {a.v / b.v, Bounded::kInf};
+  if (a.v == 0 && a.e == 0) return {0.0, 0.0};  // an exact zero over a certified nonzero
+  const double v = a.v / b.v;
+  if (!std::isfinite(v) || (v == 0) != (a.v == 0) || (v != 0 && std::fabs(v) < Bounded::kUnderflow))
+    return {v, Bounded::kInf};  // overflow or (gradual) underflow
+  double round = 0;
+  const bool safe = std::fabs(a.v) > 0x1p-900 && std::fabs(a.v) < 0x1p900 && bv > 0x1p-900 && bv < 0x1p900;
+  if (a.v == 0) {
+    // 0 / b.v = 0 exactly: only the propagated error below.
+  } else if (safe) {
+    const double r = std::fma(-v, b.v, a.v);  // a.v − v·b.v, exact
+    if (r == 0 && a.e == 0 && b.e == 0) return {v, 0.0};
+    round = std::fabs(r) / bv;
+  } else {
+    round = std::fabs(v) * 0x1p-53 + 0x1p-1074;
+  }
+  // |x_a/x_b − a.v/b.v| ≤ (a.e·|b.v| + |a.v|·b.e) / (|b.v|·(|b.v| − b.e)).
+  double prop = 0;
+  if (a.e != 0 || b.e != 0) prop = (a.e * bv + std::fabs(a.v) * b.e) / (bv * (bv - b.e));
+  return {v, detail::up(prop + round)};
+}
+
+// √a for an exact value known to be ≥ 0 (a sum of squares, a squared length): a computed value
+// below zero is read as 0. |√x − √s| ≤ min(e/√s, √e) for s = max(a.v, 0), plus the rounding of √.
+inline Bounded sqrt(const Bounded& a) {
+  if (!std::isfinite(a.v) || !(a.e == a.e) || !(a.e < Bounded::kInf)) return {std::sqrt(std::fabs(a.v)), Bounded::kInf};
+  if (a.v < 0 && -a.v > a.e) return {0.0, Bounded::kInf};  // certified negative: not a square
+  const double s = a.v > 0 ? a.v : 0.0;
+  const double v = std::sqrt(s);
+  if (a.e == 0 && (s == 0 || (s > 0x1p-900 && std::fma(v, v, -s) == 0))) return {v, 0.0};  // exact square
+  double prop = 0;
+  if (a.e != 0) prop = s > 0 ? std::fmin(a.e / v, std::sqrt(a.e)) : std::sqrt(a.e);
+  return {v, detail::up(prop + v * 0x1p-52 + 0x1p-1074)};
+}
+
+// max and |·| are 1-Lipschitz: the larger bound covers the result.
+inline Bounded max(const Bounded& a, const Bounded& b) { return {a.v > b.v ? a.v : b.v, a.e > b.e ? a.e : b.e}; }
+inline Bounded abs(const Bounded& a) { return {std::fabs(a.v), a.e}; }
+
+// The interval [v − e, v + e] rounded outward (for reports and comparisons with exact values).
+// (Each is one subtraction or addition and one product: a relative nudge of 2^-50 covers both roundings.)
+inline double lower(const Bounded& a) {
+  if (a.e == 0) return a.v;
+  const double d = a.v - a.e;
+  return d * (d > 0 ? 1 - 0x1p-50 : 1 + 0x1p-50) - 0x1p-1074;
+}
+inline double upper(const Bounded& a) {
+  if (a.e == 0) return a.v;
+  const double d = a.v + a.e;
+  return d * (d > 0 ? 1 + 0x1p-50 : 1 - 0x1p-50) + 0x1p-1074;
+}
+
 }  // namespace wrenchkit::fl

@@ -27,9 +27,7 @@ Dual_cone dual_cone(const std::vector<Bounded_contact>& contacts, Reading readin
   return compute_dual_cone(kernel);
 }
 
-namespace {
-
-std::vector<Bounded_contact> bounded(const std::vector<Point_contact>& contacts) {
+std::vector<Bounded_contact> bounded_contacts(const std::vector<Point_contact>& contacts) {
   std::vector<Bounded_contact> out;
   out.reserve(contacts.size());
   for (std::size_t i = 0; i < contacts.size(); ++i) {
@@ -50,6 +48,8 @@ std::vector<Bounded_contact> bounded(const std::vector<Point_contact>& contacts)
   return out;
 }
 
+namespace {
+
 Verdict verdict(const Dual_cone& dc) {
   if (!dc.decided) return Verdict::undecided;
   return dc.force_closure() ? Verdict::closed : Verdict::open;
@@ -58,11 +58,11 @@ Verdict verdict(const Dual_cone& dc) {
 }  // namespace
 
 Verdict force_closure(const std::vector<Point_contact>& contacts) {
-  return verdict(dual_cone(bounded(contacts), Reading::friction));
+  return verdict(dual_cone(bounded_contacts(contacts), Reading::friction));
 }
 
 Verdict form_closure(const std::vector<Point_contact>& contacts) {
-  return verdict(dual_cone(bounded(contacts), Reading::frictionless));
+  return verdict(dual_cone(bounded_contacts(contacts), Reading::frictionless));
 }
 
 }  // namespace wrenchkit::fl

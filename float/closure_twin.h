@@ -34,6 +34,10 @@ struct Bounded_contact {
 // The generators in the order of core/contact_generators.h (the exact engine's order).
 std::vector<Bounded3> generators(const std::vector<Bounded_contact>& contacts, Reading reading);
 
+// Plain-double contacts as exact Bounded inputs (each double is the exact value it denotes).
+// Throws std::invalid_argument for a zero normal, a negative or non-finite μ.
+std::vector<Bounded_contact> bounded_contacts(const std::vector<Point_contact>& contacts);
+
 enum class Verdict { closed, open, undecided };
 
 // Force closure (friction reading) and first-order form closure (frictionless reading).

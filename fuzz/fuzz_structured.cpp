@@ -1,8 +1,8 @@
 // libFuzzer target: structured scenes built from the fuzzer's bytes, biased toward the degenerate
 // and near-degenerate configurations where floating point goes wrong (theory.md §5.6, §8.5, §9):
 // grid contacts (parallel, concurrent, coincident), two-finger grasps at Nguyen's threshold ± ε,
-// normals concurrent up to ε, the ladder at μ* = 1/7 ± ε under gravity, pure wrench generators, and
-// everything scaled by 10^k. ε = ±10^-j with j up to 60. Every promise of fuzz/scene_checks.h must
+// normals concurrent up to ε, the ladder at μ* = 1/7 ± ε under gravity, pure wrench generators,
+// everything scaled by 10^k, and small supports (coincident, collinear points) under loads. ε = ±10^-j with j up to 60. Every promise of fuzz/scene_checks.h must
 // hold on every scene (float-vs-exact differential, engine → checker, round trip, labels vs closure).
 #include <cstddef>
 #include <cstdint>
@@ -46,7 +46,7 @@ std::string num(long p, long q = 1) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Bytes b{data, size};
-  const int family = b.next(6);
+  const int family = b.next(7);
   std::string contacts, load;
   const auto point = [&](const std::string& x, const std::string& y, const std::string& nx, const std::string& ny,
                          const std::string& mu) {
@@ -96,6 +96,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (nx == 0 && ny == 0) nx = 1;
         point("\"" + x.get_str() + "\"", "\"" + y.get_str() + "\"", num(nx), num(ny), mus[b.next(4)]);
       }
+      break;
+    }
+    case 6: {  // a small support (coincident and collinear points frequent) under a load near its limit surface
+      const int k = b.small(1, 4);
+      std::string pts;
+      for (int i = 0; i < k; ++i)
+        pts += std::string(i ? ", " : "") + "{\"at\": [" + num(b.small(-2, 2)) + ", " + num(b.small(-2, 2)) +
+               "], \"force\": " + num(b.small(0, 3) + (i == 0)) + "}";
+      load = ", \"support\": {\"mu\": " + std::string(mus[1 + b.next(5)]) + ", \"points\": [" + pts +
+             "]}, \"load\": {\"wrench\": [" + frac(b.small(0, 3), 2, b) + ", " + num(b.small(-3, 3)) + ", " +
+             frac(b.small(0, 5), 3, b) + "]}";
+      point("0", "0", "1", "0", "0");
       break;
     }
     default: {  // pure wrench generators, pure moments among them

@@ -8,7 +8,11 @@
 //   * closure: hybrid (always decided) and a decided float twin agree with exact;
 //   * labels and the force dual agree with closure, the labels' load reading with equilibrium;
 //   * every certificate (closure exact/hybrid, equilibrium in every mode) is accepted by the
-//     independent checker, and float/hybrid equilibrium agrees with exact.
+//     independent checker, and float/hybrid equilibrium agrees with exact;
+//   * hybrid labels are the exact labels; the labels and force-dual twins agree with them within their
+//     stated bounds (exact/twin_agreement.h);
+//   * with a small support: the float twin's true h lies in the exact polygonal bracket, and hybrid and
+//     float stick/slide never contradict the exact polygons.
 #pragma once
 
 #include <cstddef>
@@ -26,7 +30,10 @@
 #include "exact/input_error.h"
 #include "exact/scene.h"
 #include "exact/scene_writer.h"
+#include "exact/sliding.h"
 #include "exact/streaming_scene_reader.h"
+#include "exact/to_float.h"
+#include "exact/twin_agreement.h"
 #include "proofs/checker/checker.h"
 
 namespace scene_checks_detail {
@@ -202,12 +209,52 @@ inline bool check_scene_text(std::string_view text) {
       std::cerr << "labels / dual disagree with closure\n" << printed;
       std::abort();
     }
+    if (wrenchkit::labels_json_fields(wrenchkit::moment_labels(scene, reading, wrenchkit::Mode::hybrid)) !=
+        wrenchkit::labels_json_fields(l)) {
+      std::cerr << "hybrid labels differ from exact labels\n" << printed;
+      std::abort();
+    }
+    const std::vector<wrenchkit::fl::Bounded3> tg = wrenchkit::fl::generators(wrenchkit::to_bounded(scene), reading);
+    const wrenchkit::Dual_cone tdc = wrenchkit::compute_dual_cone(wrenchkit::fl::Float_kernel(tg));
+    const std::string why = wrenchkit::labels_disagreement(wrenchkit::fl::moment_labels(tg, tdc), l) +
+                            wrenchkit::dual_disagreement(wrenchkit::fl::force_dual(tg, tdc), d);
+    if (!why.empty()) {
+      std::cerr << "labels twin disagrees with exact: " << why << "\n" << printed;
+      std::abort();
+    }
     if (scene.load && reading == wrenchkit::Reading::friction) {
       const auto x = wrenchkit::as_vec(wrenchkit::load_wrench(scene));
       if (wrenchkit::in_cone(l.cone, {-x[0], -x[1], -x[2]}) !=
           wrenchkit::decide_equilibrium(scene, wrenchkit::Mode::exact, false).balanced) {
         std::cerr << "labels disagree with equilibrium\n" << printed;
         std::abort();
+      }
+    }
+  }
+  if (scene.support && scene.support->points.size() <= 4) {
+    const wrenchkit::Polygonal_ls model(wrenchkit::merge_support(*scene.support), wrenchkit::make_directions(8));
+    const auto tw = wrenchkit::twin_support(model.support());
+    const wrenchkit::Ls_polytope in = model.build(wrenchkit::Side::inner), out = model.build(wrenchkit::Side::outer);
+    const wrenchkit::Vec3q twists[] = {{1, 0, 0}, {0, 1, 1}, {wrenchkit::Rational(1, 3), -2, -1}};
+    for (const auto& q : twists) {
+      const auto h = wrenchkit::fl::support_function(tw, {wrenchkit::to_bounded(q[0]), wrenchkit::to_bounded(q[1]),
+                                                          wrenchkit::to_bounded(q[2])});
+      const wrenchkit::Rational lo(wrenchkit::fl::lower(h)), hi(wrenchkit::fl::upper(h));
+      if (std::isfinite(h.e) &&
+          (hi < model.support_value(wrenchkit::Side::inner, q) || lo > model.support_value(wrenchkit::Side::outer, q))) {
+        std::cerr << "float h outside the exact polygonal bracket\n" << printed;
+        std::abort();
+      }
+    }
+    if (scene.load) {
+      const auto p = wrenchkit::as_vec(wrenchkit::load_wrench(scene));
+      const auto e = wrenchkit::decide_motion(model, p, wrenchkit::Mode::exact, &in, &out);
+      for (auto m : {wrenchkit::Mode::hybrid, wrenchkit::Mode::float_only}) {
+        const auto f = wrenchkit::decide_motion(model, p, m, &in, &out);
+        if (e.motion != wrenchkit::Motion::undecided && f.motion != wrenchkit::Motion::undecided && f.motion != e.motion) {
+          std::cerr << "stick/slide: mode " << wrenchkit::mode_name(m) << " contradicts the exact polygons\n" << printed;
+          std::abort();
+        }
       }
     }
   }

@@ -5,6 +5,9 @@
 #include <stdexcept>
 
 #include "float/closure_twin.h"
+#include "float/labels_twin.h"
+#include "float/limit_surface_twin.h"
+#include "float/pressure.h"
 
 namespace wrenchkit::fl {
 namespace {
@@ -33,6 +36,23 @@ TEST(FloatOnly, BadInputThrowsAndNonFiniteIsUndecided) {
   EXPECT_THROW(force_closure({{0, 0, 1, 0, -1}}), std::invalid_argument);
   const double inf = std::numeric_limits<double>::infinity();
   EXPECT_EQ(force_closure({{inf, 0, 1, 0}, {1, 0, -1, 0}, {0, 1, 0, -1}, {0, -1, 0, 1}}), Verdict::undecided);
+}
+
+TEST(FloatOnly, LabelsSlidingAndPressureOnPlainDoubles) {
+  // Two fingers with μ = 1/2 (theory.md §8.5): force closure, so nothing is labeled.
+  const Labels_twin two = moment_labels(std::vector<Point_contact>{{0, 0.5, 1, 0, 0.5}, {1, 0.9, -1, 0, 0.5}});
+  ASSERT_TRUE(two.decided());
+  EXPECT_TRUE(two.nothing_labeled());
+  // The barbell (theory.md §14.2): translation (1, 0, 0) gives the load (1, 0, 0); it slides at 1.01 of it.
+  const auto bb = bounded_support({{0, -1, 1, 0.5}, {0, 1, 1, 0.5}});
+  const Bounded3 tx = {Bounded::exact(1), Bounded::exact(0), Bounded::exact(0)};
+  EXPECT_EQ(support_function(bb, tx).v, 1);
+  EXPECT_EQ(classify_load(bb, {Bounded::exact(1.01), Bounded::exact(0), Bounded::exact(0)}).motion, Motion_twin::slides);
+  // A uniform unit square: translation load μ f0 = 1/2.
+  const Pressure_cells sq = discretize(uniform_pressure({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.5, 1), 8);
+  const Bounded h = support_function(sq, tx);
+  EXPECT_LE(lower(h), 0.5);
+  EXPECT_GE(upper(h), 0.5);
 }
 
 }  // namespace

@@ -81,6 +81,46 @@ TEST(Bounded, EveryBoundContainsTheExactDeterminant) {
   EXPECT_GT(certified, 9000);  // the non-singular half is certified
 }
 
+// [FL-5] Quotients and square roots: the bound contains the exact value (checked exactly: for √,
+// the exact root r of the exact square s satisfies (v − e)² ≤ s ≤ (v + e)² when v − e ≥ 0).
+TEST(Bounded, QuotientsAndSquareRootsContainTheExactValue) {
+  std::mt19937_64 rng(test::seed(12));
+  std::uniform_int_distribution<int> num(-1000, 1000), den(1, 1000), scale(-60, 60);
+  int exact_quotients = 0;
+  for (int t = 0; t < 20000; ++t) {
+    const int s = scale(rng);
+    Rational a(num(rng), den(rng)), b(num(rng), den(rng));
+    if (t % 3 == 0) {  // exact dyadic quotients
+      a = Rational(num(rng));
+      b = Rational(1 << (t % 7));
+    }
+    if (s >= 0) a *= Rational(Integer(1) << s);
+    else a /= Rational(Integer(1) << -s);
+    const Bounded ba = to_bounded(a), bb = to_bounded(b);
+    const Bounded qt = ba / bb;
+    if (b == 0) {
+      EXPECT_EQ(qt.sign(), Sign::uncertain);
+      continue;
+    }
+    ASSERT_TRUE(contains(qt, a / b)) << "case " << t;
+    exact_quotients += qt.e == 0;
+    if (qt.sign() != Sign::uncertain) { ASSERT_EQ(qt.sign(), sign_of(sgn(a / b))); }
+    // √ of a square computed with errors: x² + y² for inexact x, y.
+    const Rational sq = a * a + b * b;
+    const Bounded bs = fl::sqrt(ba * ba + bb * bb);
+    ASSERT_TRUE(std::isfinite(bs.e)) << "case " << t;
+    const Rational lo = Rational(fl::lower(bs)), hi = Rational(fl::upper(bs));
+    ASSERT_LE(lo < 0 ? Rational(0) : lo * lo, sq) << "case " << t;
+    ASSERT_GE(hi * hi, sq) << "case " << t;
+  }
+  EXPECT_GT(exact_quotients, 3000);  // exact data stays exact
+  EXPECT_EQ(fl::sqrt(Bounded::exact(2.25)).e, 0.0);  // √ of an exact square is exact
+  EXPECT_GT(fl::sqrt(Bounded::exact(2)).e, 0.0);
+  EXPECT_EQ((Bounded::exact(1) / Bounded{1e-3, 2e-3}).sign(), Sign::uncertain);  // divisor not certified ≠ 0
+  EXPECT_EQ(fl::sqrt(Bounded{-1, 0.5}).sign(), Sign::uncertain);                 // certified negative
+  EXPECT_EQ((Bounded::exact(1e300) / Bounded::exact(1e-300)).sign(), Sign::uncertain);  // overflow
+}
+
 // ---- Closure: twin and hybrid against exact. ----
 
 struct Tally {
@@ -119,27 +159,12 @@ TEST(FloatTwin, CertifiedAnswersEqualExactOnDegenerateRichRandomScenes) {
   EXPECT_GT(t.float_decided, t.cases / 2);
 }
 
-// Random decimal scenes as users write them (0.137 is not a double): generic, so the twin should
-// decide essentially all of them alone.
-std::string decimal_scene(std::mt19937_64& rng, int k) {
-  std::uniform_int_distribution<int> coord(-999, 999), mu(1, 80);
-  std::vector<test::Contact_spec> cs;
-  auto dec = [&](int v) { return std::to_string(v / 1000.0).substr(0, 6 + (v < 0)); };
-  for (int i = 0; i < k; ++i) {
-    int nx = coord(rng), ny = coord(rng);
-    if (nx == 0 && ny == 0) nx = 1;
-    cs.push_back({dec(coord(rng)), dec(coord(rng)), std::to_string(nx), std::to_string(ny),
-                  "0." + std::to_string(mu(rng))});
-  }
-  return test::scene_json(cs);
-}
-
 TEST(FloatTwin, DecidesTypicalScenesByItself) {
   const std::uint64_t seed = test::seed(5);
   std::mt19937_64 rng(seed);
   Tally t;
   for (int i = 0; i < 1000; ++i) {
-    compare_modes(decimal_scene(rng, 3 + i % 6), t, "twin_decimal_" + std::to_string(seed) + "_" + std::to_string(i));
+    compare_modes(test::scene_json(test::decimal_contacts(rng, 3 + i % 6)), t, "twin_decimal_" + std::to_string(seed) + "_" + std::to_string(i));
     if (HasFatalFailure()) return;
   }
   // Form closure of frictionless contacts with generic decimals is generic too: ≥ 99 % overall.

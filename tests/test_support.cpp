@@ -91,6 +91,18 @@ std::vector<Contact_spec> random_contacts(std::mt19937_64& rng, int max_contacts
   return out;
 }
 
+std::vector<Contact_spec> decimal_contacts(std::mt19937_64& rng, int k) {
+  std::uniform_int_distribution<int> coord(-999, 999), mu(1, 80);
+  std::vector<Contact_spec> cs;
+  auto dec = [&](int v) { return std::to_string(v / 1000.0).substr(0, 6 + (v < 0)); };
+  for (int i = 0; i < k; ++i) {
+    int nx = coord(rng), ny = coord(rng);
+    if (nx == 0 && ny == 0) nx = 1;
+    cs.push_back({dec(coord(rng)), dec(coord(rng)), std::to_string(nx), std::to_string(ny), "0." + std::to_string(mu(rng))});
+  }
+  return cs;
+}
+
 std::string dump_failure(const std::string& scene_text, const std::string& tag) {
   std::filesystem::create_directories("failures");
   const std::string path = std::filesystem::absolute("failures/" + tag + ".json").string();

@@ -35,6 +35,10 @@ std::uint64_t seed(std::uint64_t fallback);
 // coincident, on a cone edge) are frequent. 0 … max_contacts contacts; a few wrench generators.
 std::vector<Contact_spec> random_contacts(std::mt19937_64& rng, int max_contacts);
 
+// Random contacts as users write them: decimal coordinates with 3 digits (0.137 is not a double),
+// integer normals, μ in 0.01 … 0.80: generic, nothing exactly degenerate by construction.
+std::vector<Contact_spec> decimal_contacts(std::mt19937_64& rng, int contacts);
+
 // Writes the scene to failures/<tag>.json under the build tree's working directory and returns the
 // path, so a failing random case can be replayed with `wrenchkit closure PATH`.
 std::string dump_failure(const std::string& scene_text, const std::string& tag);

@@ -1,0 +1,213 @@
+// [FL-6] The float twin of moment labels and the force dual against the exact engine: when the twin
+// decides, its shapes, corner counts and corner order are the exact ones and every constructed corner
+// and direction lies within its stated bound of the exact one (checked in exact arithmetic); when it
+// does not, it says why (uncertain, rank < 3, W not pointed) and never answers. Point labels and
+// cone membership likewise. Golden scenes, degenerate-rich grid scenes, generic decimal scenes.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <random>
+#include <sstream>
+
+#include "exact/closure.h"
+#include "exact/force_dual.h"
+#include "exact/to_float.h"
+#include "exact/twin_agreement.h"
+#include "float/labels_twin.h"
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+
+using fl::Bounded;
+
+struct Tally {
+  int cases = 0, rank3 = 0, decided = 0, dual_decided = 0;
+};
+
+std::vector<fl::Bounded3> twin_generators(const Scene& s, Reading r) { return fl::generators(to_bounded(s), r); }
+
+// Everything the twin says about one scene, against the exact engine.
+void compare_labels(const std::string& text, Tally& t, const std::string& tag) {
+  const Scene s = read_scene(text, Input_limits{});
+  for (Reading r : {Reading::friction, Reading::frictionless}) {
+    const Moment_labels exact = moment_labels(s, r);
+    std::vector<Wrench> w;
+    for (const Generator& g : generators(s, r)) w.push_back(g.w);
+    const Force_dual exact_dual = force_dual(exact, w);
+    const std::vector<fl::Bounded3> g = twin_generators(s, r);
+    const Dual_cone dc = compute_dual_cone(fl::Float_kernel(g));
+    const fl::Labels_twin f = fl::moment_labels(g, dc);
+    const fl::Dual_twin fd = fl::force_dual(g, dc);
+    ++t.cases;
+    t.rank3 += exact.cone.rank == 3;
+    const std::string where = tag + (r == Reading::friction ? " (friction)" : " (frictionless)");
+    const std::string dis = labels_disagreement(f, exact);
+    ASSERT_EQ(dis, "") << where << "; dumped to " << test::dump_failure(text, tag);
+    if (f.decided()) ++t.decided;
+    const std::string dd = dual_disagreement(fd, exact_dual);
+    ASSERT_EQ(dd, "") << where << "; dumped to " << test::dump_failure(text, tag);
+    t.dual_decided += fd.decided();
+    // Dual points of the generators.
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      const fl::Dual_point_twin fp = fl::dual_point(g[i]);
+      const Dual_point ep = dual_point(as_vec(w[i]));
+      if (fp.sheet == '?') continue;
+      ASSERT_EQ(fp.sheet, ep.sheet) << where << " generator " << i;
+      if (fp.sheet == 'i') { ASSERT_TRUE(same_direction(fp.at, ep.at)) << where; }
+      else {
+        ASSERT_TRUE(same_point(fp.at, ep.at)) << where << " generator " << i << ": float (" << fp.at.x.v << "±"
+                                              << fp.at.x.e << ", " << fp.at.y.v << "±" << fp.at.y.e << ") exact "
+                                              << point_json(ep.at) << "; dumped to " << test::dump_failure(text, tag);
+      }
+    }
+    // Point labels and membership at the exact corners, their midpoints and a few grid points.
+    std::vector<Vec2> probes = {{0, 0}, {1, 1}, {Rational(-1, 2), Rational(3, 2)}, {2, -1}};
+    for (const Region* reg : {&exact.plus, &exact.minus})
+      for (const Vec2& v : reg->vertices) probes.push_back(v);
+    for (const Vec2& c : probes) {
+      const char fl_label = fl::label_of(g, to_bounded(c.x), to_bounded(c.y));
+      if (fl_label == '?') continue;
+      bool pos = false, neg = false;
+      for (const Wrench& x : w) {
+        const Rational m = x.m - c.x * x.fy + c.y * x.fx;
+        pos |= m > 0;
+        neg |= m < 0;
+      }
+      const char truth = pos && neg ? '0' : (pos ? '+' : (neg ? '-' : 'b'));
+      ASSERT_EQ(fl_label, truth) << where << " at (" << c.x << ", " << c.y << ")";
+    }
+    for (const Vec3& x : std::vector<Vec3>{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}, {1, 1, Rational(1, 3)}}) {
+      const fl::Truth m = fl::in_cone(f, {to_bounded(x[0]), to_bounded(x[1]), to_bounded(x[2])});
+      if (m != fl::Truth::uncertain) { ASSERT_EQ(m == fl::Truth::yes, in_cone(exact.cone, x)) << where; }
+    }
+  }
+}
+
+TEST(LabelsTwin, GoldenScenes) {
+  Tally t;
+  for (const std::string& f : test::scene_files("tests/golden")) {
+    compare_labels(test::read_text(f), t, f);
+    if (HasFatalFailure()) return;
+  }
+  std::printf("[ stats    ] golden: the twin decided %d of %d label sets alone (%d of rank 3; %d duals)\n", t.decided,
+              t.cases, t.rank3, t.dual_decided);
+  // The goldens are thresholds ± 10^-40, 40-digit rotations, 10^±18 scales and exact degeneracies:
+  // the twin must still decide most rank-3 ones (the rest go to exact arithmetic in hybrid).
+  EXPECT_GT(t.decided * 2, t.rank3);
+}
+
+TEST(LabelsTwin, DegenerateRichGridScenes) {
+  const std::uint64_t seed = test::seed(20261122);
+  std::mt19937_64 rng(seed);
+  Tally t;
+  for (int i = 0; i < 1500; ++i) {
+    compare_labels(test::scene_json(test::random_contacts(rng, 7)), t,
+                   "labels_twin_grid_" + std::to_string(seed) + "_" + std::to_string(i));
+    if (HasFatalFailure()) return;
+  }
+  std::printf("[ stats    ] grid: the twin decided %d of %d label sets alone (%d duals)\n", t.decided, t.cases,
+              t.dual_decided);
+  EXPECT_GT(t.decided, t.cases / 3);
+}
+
+TEST(LabelsTwin, DecidesTypicalScenesByItself) {
+  const std::uint64_t seed = test::seed(6);
+  std::mt19937_64 rng(seed);
+  Tally t;
+  for (int i = 0; i < 600; ++i) {
+    compare_labels(test::scene_json(test::decimal_contacts(rng, 1 + i % 8)), t,
+                   "labels_twin_decimal_" + std::to_string(seed) + "_" + std::to_string(i));
+    if (HasFatalFailure()) return;
+  }
+  std::printf("[ stats    ] decimal: the twin decided %d of %d label sets alone (%d duals)\n", t.decided, t.cases,
+              t.dual_decided);
+  // One frictionless contact has rank 1 and two have rank ≤ 2: those are the twin's "rank < 3".
+  EXPECT_GE(t.decided * 100, (t.cases - 600 / 8 * 2 - 600 / 8) * 99);
+}
+
+// Hybrid labels: the cone's signs from the twin, exact where it is uncertain; the answer is the exact one.
+TEST(LabelsHybrid, SameAnswerAsExactWithFewExactPredicates) {
+  const std::uint64_t seed = test::seed(7);
+  std::mt19937_64 rng(seed);
+  std::size_t predicates = 0, exact_predicates = 0;
+  std::vector<std::string> texts;
+  for (const std::string& f : test::scene_files("tests/golden")) texts.push_back(test::read_text(f));
+  for (int i = 0; i < 600; ++i) texts.push_back(test::scene_json(test::random_contacts(rng, 7)));
+  for (int i = 0; i < 300; ++i) texts.push_back(test::scene_json(test::decimal_contacts(rng, 1 + i % 8)));
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    const Scene s = read_scene(texts[i], Input_limits{});
+    for (Reading r : {Reading::friction, Reading::frictionless}) {
+      const Moment_labels e = moment_labels(s, r, Mode::exact), h = moment_labels(s, r, Mode::hybrid);
+      const std::string tag = "labels_hybrid_" + std::to_string(seed) + "_" + std::to_string(i);
+      ASSERT_EQ(labels_json_fields(h), labels_json_fields(e)) << "dumped to " << test::dump_failure(texts[i], tag);
+      ASSERT_EQ(h.cone.rank, e.cone.rank);
+      ASSERT_EQ(e.cone.exact_predicates, e.cone.predicates);
+      predicates += h.cone.predicates;
+      exact_predicates += h.cone.exact_predicates;
+    }
+  }
+  std::printf("[ stats    ] hybrid labels: %zu of %zu predicates in exact arithmetic\n", exact_predicates, predicates);
+  EXPECT_LT(exact_predicates * 10, predicates);
+}
+
+// Near a friction-cone edge (theory.md §8.5: y2 = 1 ± 10^-k): the twin abstains or is right; the naive variant
+// (raw signs) guesses and is sometimes wrong about whether anything is labeled.
+TEST(LabelsTwin, NearThresholdNeverWrongAndNaiveIs) {
+  int naive_wrong = 0, twin_undecided = 0;
+  for (int k = 1; k <= 40; ++k) {
+    for (int side : {-1, 1}) {
+      const std::string y2 = side < 0 ? "0." + std::string(k - 1, '9') + "9" : "1." + std::string(k - 1, '0') + "1";
+      const std::string text = test::scene_json({{"0", "0.5", "1", "0", "0.5"}, {"1", y2, "-1", "0", "0.5"}});
+      const Scene s = read_scene(text, Input_limits{});
+      const bool closed = side < 0;
+      ASSERT_EQ(moment_labels(s, Reading::friction).nothing_labeled(), closed) << y2;
+      const std::vector<fl::Bounded3> g = twin_generators(s, Reading::friction);
+      const fl::Labels_twin twin = fl::moment_labels(g);
+      if (twin.decided()) { EXPECT_EQ(twin.nothing_labeled(), closed) << y2; }
+      else ++twin_undecided;
+      // Naive: the text parsed to the nearest double, raw signs.
+      std::vector<fl::Point_contact> pc = {{0, 0.5, 1, 0, 0.5}, {1, std::strtod(y2.c_str(), nullptr), -1, 0, 0.5}};
+      const fl::Labels_twin naive = fl::moment_labels_naive(fl::generators(fl::bounded_contacts(pc), Reading::friction));
+      naive_wrong += !naive.decided() || naive.nothing_labeled() != closed;
+    }
+  }
+  std::printf("[ stats    ] 80 near-edge grasps: labels twin undecided %d (never wrong), naive wrong %d\n", twin_undecided,
+              naive_wrong);
+  EXPECT_GT(twin_undecided, 0);
+  EXPECT_GT(naive_wrong, 0);
+}
+
+TEST(LabelsTwin, RobotSideApiOnPlainDoubles) {
+  // theory.md §5.8: the frictionless block in a corner: R+ = {x ≤ 0, y ≥ 1} (corner (0, 1)),
+  // R- = {x ≥ 1, y ≤ 0} (corner (1, 0)), infinity the quarter circle d_x ≤ 0, d_y ≥ 0 (translations up
+  // or to the right).
+  const std::vector<fl::Point_contact> corner = {{0, 0, 0, 1}, {1, 0, 0, 1}, {0, 0, 1, 0}, {0, 1, 1, 0}};
+  const fl::Labels_twin l = fl::moment_labels(corner);
+  ASSERT_TRUE(l.decided());
+  ASSERT_EQ(l.plus.shape, fl::Region2::Shape::wedge);
+  EXPECT_EQ(l.plus.vertices[0].x.v, 0);
+  EXPECT_EQ(l.plus.vertices[0].y.v, 1);
+  EXPECT_EQ(l.plus.vertices[0].x.e, 0);  // exact data, exact corner
+  ASSERT_EQ(l.minus.shape, fl::Region2::Shape::wedge);
+  EXPECT_EQ(l.minus.vertices[0].x.v, 1);
+  EXPECT_EQ(l.minus.vertices[0].y.v, 0);
+  ASSERT_EQ(l.infinity.shape, fl::Arc2::Shape::wedge);
+  EXPECT_EQ(l.infinity.extreme[0].x.v, 0);  // counter-clockwise from (0, 1) …
+  EXPECT_GT(l.infinity.extreme[0].y.v, 0);
+  EXPECT_LT(l.infinity.extreme[1].x.v, 0);  // … to (−1, 0): d_x ≤ 0, d_y ≥ 0
+  EXPECT_EQ(l.infinity.extreme[1].y.v, 0);
+  // Gravity at (1/2, 1/2) is balanced: −load = (0, 1, 1/2) is a possible resultant; a pull is not.
+  EXPECT_EQ(fl::in_cone(l, {Bounded::exact(0), Bounded::exact(1), Bounded::exact(0.5)}), fl::Truth::yes);
+  EXPECT_EQ(fl::in_cone(l, {Bounded::exact(-1), Bounded::exact(0), Bounded::exact(-0.5)}), fl::Truth::no);
+  // Force closure: nothing labeled (Example 3 with μ = 1/8, theory.md §8.7).
+  std::vector<fl::Point_contact> tri = {{1, 0, 0, 1, 0.125}, {0, 1, 1, 0, 0.125}, {3, 3, -1, -1, 0.125}};
+  const fl::Labels_twin closed = fl::moment_labels(tri);
+  ASSERT_TRUE(closed.decided());
+  EXPECT_TRUE(closed.nothing_labeled());
+  // The same frictionless: rank 2 (concurrent at G = (1, 1)): the twin declines.
+  EXPECT_EQ(fl::moment_labels(tri, Reading::frictionless).status, fl::Twin_status::rank_deficient);
+}
+
+}  // namespace
+}  // namespace wrenchkit
