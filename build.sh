@@ -13,7 +13,8 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-PACKAGES=(g++ cmake ninja-build ccache libgmp-dev libgtest-dev librapidcheck-dev clang libclang-rt-14-dev)
+PACKAGES=(g++ cmake ninja-build ccache libgmp-dev libgtest-dev librapidcheck-dev clang libclang-rt-14-dev
+          pybind11-dev python3-dev python3-pytest python3-scipy)
 
 install_packages() {
   local missing=()

@@ -5,6 +5,7 @@
 
 #include "cli/common.h"
 #include "cli/demo_scene.h"
+#include "cli/reference.h"
 #include "exact/input_error.h"
 
 namespace wrenchkit::cli {
@@ -33,7 +34,11 @@ const char* kUsage =
     "  analyze   everything the scene calls for: closure, and equilibrium when it has a load\n"
     "  demo      analyze of a bundled textbook scene (Mason's Example 3), no file needed\n"
     "  batch     wrenchkit batch COMMAND < scenes.jsonl: one scene per line, one JSON answer per\n"
-    "            line in order, on all cores (--jobs N), for every command above but render, check\n"
+    "            line in order, on all cores (--jobs N), for each command that answers per scene\n"
+    "  reference wrenchkit reference --out DIR: the reference corpus for other implementations\n"
+    "            (scenes, exact answers, checked certificates, distance to a degenerate boundary)\n"
+    "  compare   wrenchkit compare DIR ANSWERS: another implementation's answers (JSON lines or\n"
+    "            CSV) against the corpus; each disagreement with its scene (exit 1 if any)\n"
     "\n"
     "Run 'wrenchkit COMMAND --help' for a command's options. Exit codes: 0 answered, 1 check\n"
     "rejected the certificate, 2 bad input or usage, 3 --mode float could not decide, 4 an\n"
@@ -194,6 +199,8 @@ int dispatch(int argc, char** argv) {
     std::cout << "wrenchkit 0.1.0\n";
     return kAnswered;
   }
+  if (command == "reference") return run_reference(argc, argv);
+  if (command == "compare") return run_compare(argc, argv);
   const Options o = parse_options(argc, argv, 2);
   const auto scene_command = [&](const char* help, int (*run)(const Options&, const std::string&, const std::string&)) {
     if (o.help) return std::cout << help, static_cast<int>(kAnswered);

@@ -78,6 +78,7 @@ inline Bounded operator*(const Bounded& a, const Bounded& b) {
     return {0.0, 0.0};
   const double v = a.v * b.v;
   if (v == 0 && a.v != 0 && b.v != 0) return {v, Bounded::kInf};  // underflow to zero
+  if (!(a.e < Bounded::kInf) || !(b.e < Bounded::kInf)) return {v, Bounded::kInf};  // no bound (never 0·∞ = NaN)
   // fma gives the exact rounding error of the product when v is normal (guard() covers the rest).
   const double r = std::fma(a.v, b.v, -v);
   double e;

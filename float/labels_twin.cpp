@@ -1,5 +1,7 @@
 #include "float/labels_twin.h"
 
+#include <cmath>
+
 namespace wrenchkit::fl {
 
 namespace {
@@ -119,6 +121,24 @@ bool slices(const std::vector<Bounded3>& p, bool closed, bool naive, Region2& fr
   return true;
 }
 
+// Every constructed coordinate has a finite value and a finite bound (else the construction says nothing
+// and the answer is reported uncertain, for the exact engine to give).
+bool finite(const Point2& p) {
+  return std::isfinite(p.x.v) && std::isfinite(p.y.v) && p.x.e < Bounded::kInf && p.y.e < Bounded::kInf;
+}
+bool finite(const Region2& r) {
+  for (const Point2& p : r.vertices)
+    if (!finite(p)) return false;
+  for (const Point2& p : r.directions)
+    if (!finite(p)) return false;
+  return true;
+}
+bool finite(const Arc2& a) {
+  for (const Point2& p : a.extreme)
+    if (!finite(p)) return false;
+  return true;
+}
+
 Region2 whole_plane() {
   Region2 r;
   r.shape = Region2::Shape::plane;
@@ -186,6 +206,7 @@ Labels_twin labels_of(const std::vector<Bounded3>& g, const Dual_cone& dc, bool 
   std::vector<Bounded3> P;  // rotation centres P(t) = J t
   for (const Bounded3& t : l.rays) P.push_back(J(t));
   if (!slices(P, closed, naive, l.plus, l.minus, l.infinity)) return l;
+  if (!naive && (!finite(l.plus) || !finite(l.minus) || !finite(l.infinity))) return l;
   l.status = Twin_status::decided;
   return l;
 }
@@ -248,6 +269,7 @@ Dual_twin force_dual(const std::vector<Bounded3>& g, const Dual_cone& dc) {
   std::vector<Bounded3> D;
   for (std::size_t j : dc.edges) D.push_back(J(g[j]));
   if (!slices(D, true, false, d.plus_sheet, d.minus_sheet, d.infinity)) return d;
+  if (!finite(d.plus_sheet) || !finite(d.minus_sheet) || !finite(d.infinity)) return d;
   d.status = Twin_status::decided;
   return d;
 }

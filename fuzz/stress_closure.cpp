@@ -1,5 +1,6 @@
 // Numerical-stability stress test of closure (docs/stability.md): families of scenes at a controlled
-// distance ε from a degenerate configuration, written as decimal text as users write them. For
+// distance ε from a degenerate configuration (exact/stress_families.h [ST-1]), written as decimal
+// text as users write them. For
 // each family and ε: how often naive floating point (strtod + raw double signs) is wrong, how often
 // the certified twin abstains, and that the twin and hybrid are never wrong; times per query. The
 // truth is the exact engine (itself verified against brute force in tests/).
@@ -20,132 +21,29 @@
 #include "core/dual_cone.h"
 #include "exact/closure.h"
 #include "exact/equilibrium.h"
+#include "exact/stress_families.h"
 #include "float/closure_twin.h"
 
 namespace {
 
 using namespace wrenchkit;
 
-struct Spec {
-  double ax, ay, nx, ny, mu;
-  std::string mu_text = "";  // written instead of mu when set (an exact fraction)
-};
+using stress::Contact_spec;
+using stress::Gravity_spec;
 
-// An optional load for equilibrium families: gravity w at (cx, cy).
-struct Gravity {
-  bool present = false;
-  double cx = 0, cy = 0, w = 1;
-};
-
-// Decimal text with 17 significant digits: exactly what the double prints, read exactly by the
-// engine; the naive path parses it back to the same double.
-std::string num(double x) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", x);
-  return b;
-}
-
-std::string scene_text(const std::vector<Spec>& cs, const Gravity& g = {}) {
-  std::string s = "{\"wrenchkit\": 1, ";
-  if (g.present) s += "\"body\": {\"com\": [" + num(g.cx) + ", " + num(g.cy) + "]}, \"load\": {\"gravity\": " + num(g.w) + "}, ";
-  s += "\"contacts\": [";
-  for (std::size_t i = 0; i < cs.size(); ++i) {
-    const Spec& c = cs[i];
-    s += (i ? ", " : "") + std::string("{\"at\": [") + num(c.ax) + ", " + num(c.ay) + "], \"normal\": [" + num(c.nx) +
-         ", " + num(c.ny) + "], \"mu\": " + (c.mu_text.empty() ? num(c.mu) : "\"" + c.mu_text + "\"") + "}";
-  }
-  return s + "]}";
-}
-
-// A family builds a scene at distance ε from a degeneracy, from random base parameters.
-struct Family {
-  const char* name;
-  const char* what;
-  Property property;
-  std::function<std::vector<Spec>(std::mt19937_64&, double eps)> make;
-  bool equilibrium = false;  // decide equilibrium of the gravity load below instead of closure
-  std::function<Gravity(const std::vector<Spec>&)> load = nullptr;
-};
-
-double uni(std::mt19937_64& r, double a, double b) { return std::uniform_real_distribution<double>(a, b)(r); }
-
-// Rotate and translate a configuration (exact structure is kept only up to rounding: that is the
-// point — the decimal text is the scene).
-std::vector<Spec> place(std::vector<Spec> cs, double angle, double tx, double ty, double scale) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  for (Spec& k : cs) {
-    const double x = k.ax * scale, y = k.ay * scale;
-    k.ax = c * x - s * y + tx;
-    k.ay = s * x + c * y + ty;
-    const double nx = c * k.nx - s * k.ny, ny = s * k.nx + c * k.ny;
-    k.nx = nx;
-    k.ny = ny;
-  }
-  return cs;
-}
-
-std::vector<Family> families() {
-  return {
-      {"friction_threshold", "two fingers, μ = μ*·(1 ± ε): closure iff μ > μ*", Property::force_closure,
-       [](std::mt19937_64& r, double eps) {
-         const double y2 = uni(r, 0.6, 0.95), mu_star = (y2 - 0.5);  // d = (1, y2 − 1/2)
-         const double mu = mu_star * (1 + ((r() & 1) ? eps : -eps));
-         return place({{0, 0.5, 1, 0, mu}, {1, y2, -1, 0, mu}}, uni(r, 0, 6.28), uni(r, -5, 5), uni(r, -5, 5), 1);
-       }},
-      {"cone_edge", "two fingers, the segment between them ε (in slope) from the friction-cone edge", Property::force_closure,
-       [](std::mt19937_64& r, double eps) {
-         const double mu = uni(r, 0.2, 0.8), y2 = 0.5 + mu * (1 + ((r() & 1) ? eps : -eps));
-         return place({{0, 0.5, 1, 0, mu}, {1, y2, -1, 0, mu}}, uni(r, 0, 6.28), uni(r, -5, 5), uni(r, -5, 5), 1);
-       }},
-      {"nearly_concurrent", "Example 3 frictionless: third normal ε off the common point (rank 2 vs 3)", Property::form_closure,
-       [](std::mt19937_64& r, double eps) {
-         const double off = (r() & 1) ? eps : -eps;
-         return place({{1, 0, 0, 1, 0}, {0, 1, 1, 0, 0}, {3, 3 + off, -1, -1, 0}, {uni(r, 1.5, 2.5), 4, 0, -1, 0}},
-                      uni(r, 0, 6.28), uni(r, -5, 5), uni(r, -5, 5), uni(r, 0.5, 2));
-       }},
-      {"nearly_parallel",
-       "vertical-walls squeeze (integer offsets) with one wall tilted by ε: never closed, so the verdict does not "
-       "flip; it shows exactly parallel exact walls certified next to an inexact one",
-       Property::force_closure,
-       [](std::mt19937_64& r, double eps) {
-         const double t = (r() & 1) ? eps : -eps;
-         return place({{-1, 1, 1, t, 0}, {-1, -1, 1, 0, 0}, {1, 1, -1, 0, 0}, {1, -1, -1, 0, 0}}, 0,
-                      std::round(uni(r, -5, 5)), std::round(uni(r, -5, 5)), 1);
-       }},
-      {"huge_offset", "friction threshold ±ε, the grasp translated by 10^6 and scaled by 10^3", Property::force_closure,
-       [](std::mt19937_64& r, double eps) {
-         const double y2 = uni(r, 0.6, 0.95), mu_star = (y2 - 0.5);
-         const double mu = mu_star * (1 + ((r() & 1) ? eps : -eps));
-         return place({{0, 0.5, 1, 0, mu}, {1, y2, -1, 0, mu}}, uni(r, 0, 6.28), 1e6 * uni(r, 1, 2), -1e6 * uni(r, 1, 2),
-                      1e3);
-       }},
-      {"ladder_equilibrium",
-       "leaning square under gravity (equilibrium), μ = (1/7)·(1 ± ε) written as an exact fraction: balanced iff μ ≥ 1/7",
-       Property::force_closure,
-       [](std::mt19937_64& r, double eps) {
-         // μ = (10^k ± 1) / (7·10^k) written as an exact fraction, ε = 10^-k; the naive reading
-         // divides the two integers in double, as float code would.
-         const int k = static_cast<int>(std::lround(-std::log10(eps)));
-         const bool above = r() & 1;
-         const std::string p = above ? "1" + std::string(k - 1, '0') + "1" : std::string(k, '9');
-         const std::string q = "7" + std::string(k, '0');
-         const double mu = std::strtod(p.c_str(), nullptr) / std::strtod(q.c_str(), nullptr);
-         // Floor contact at (0,0) n=(0,1), wall contact at (−4,3) n=(1,0); the COM is at (−1/2, 7/2),
-         // carried as a third record that the harness turns into the gravity load.
-         std::vector<Spec> cs{{0, 0, 0, 1, mu}, {-4, 3, 1, 0, mu}, {-0.5, 3.5, 0, 0, -1}};
-         cs[0].mu_text = cs[1].mu_text = p + "/" + q;
-         return cs;
-       },
-       true,
-       [](const std::vector<Spec>& cs) { return Gravity{true, cs[2].ax, cs[2].ay, 1}; }},
-  };
+// The families of exact/stress_families.h that have a distance ε (the random ones do not).
+std::vector<const stress::Family*> families() {
+  std::vector<const stress::Family*> out;
+  for (const stress::Family& f : stress::families())
+    if (f.uses_epsilon) out.push_back(&f);
+  return out;
 }
 
 // The naive reading of a scene: the doubles themselves (strtod of the same text gives them back),
 // and raw double signs (Naive_kernel), through the same generic algorithms as the twin.
-std::vector<fl::Bounded3> naive_generators(const std::vector<Spec>& cs, Reading reading) {
+std::vector<fl::Bounded3> naive_generators(const std::vector<Contact_spec>& cs, Reading reading) {
   std::vector<fl::Bounded_contact> b;
-  for (const Spec& c : cs) {
+  for (const Contact_spec& c : cs) {
     fl::Bounded_contact k;
     k.ax = fl::Bounded::exact(c.ax);
     k.ay = fl::Bounded::exact(c.ay);
@@ -158,7 +56,7 @@ std::vector<fl::Bounded3> naive_generators(const std::vector<Spec>& cs, Reading 
   return fl::generators(b, reading);
 }
 
-bool naive_balanced(const std::vector<Spec>& cs, const Gravity& g) {
+bool naive_balanced(const std::vector<Contact_spec>& cs, const Gravity_spec& g) {
   std::vector<fl::Bounded3> rows = naive_generators(cs, Reading::friction);
   const std::size_t n = rows.size();
   rows.push_back({fl::Bounded::exact(0), fl::Bounded::exact(-g.w), fl::Bounded::exact(-g.w * g.cx)});
@@ -168,7 +66,7 @@ bool naive_balanced(const std::vector<Spec>& cs, const Gravity& g) {
   return load_balanced(k, dc, n) == Sign::positive;
 }
 
-bool naive_closure(const std::vector<Spec>& cs, Property p) {
+bool naive_closure(const std::vector<Contact_spec>& cs, Property p) {
   const fl::Naive_kernel k(naive_generators(cs, reading_of(p)));
   return compute_dual_cone(k).force_closure();
 }
@@ -184,7 +82,7 @@ double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-void write_svg(const std::vector<Row>& rows, const std::vector<Family>& fams, const std::string& path) {
+void write_svg(const std::vector<Row>& rows, const std::vector<const stress::Family*>& fams, const std::string& path) {
   // Error rate (%) against −log10 ε, one panel per family: naive wrong (red), twin undecided
   // (orange), twin wrong and hybrid wrong (blue, green: always on the zero line).
   const int W = 300, H = 200, pad = 40;
@@ -193,7 +91,7 @@ void write_svg(const std::vector<Row>& rows, const std::vector<Family>& fams, co
     << "' font-family='sans-serif' font-size='10'>\n<rect width='100%' height='100%' fill='white'/>\n";
   for (std::size_t f = 0; f < fams.size(); ++f) {
     const int x0 = int(f) * W + pad, y0 = 20, w = W - pad - 10, h = H - 40;
-    s << "<text x='" << x0 << "' y='12' font-weight='bold'>" << fams[f].name << "</text>\n";
+    s << "<text x='" << x0 << "' y='12' font-weight='bold'>" << fams[f]->name << "</text>\n";
     s << "<rect x='" << x0 << "' y='" << y0 << "' width='" << w << "' height='" << h
       << "' fill='none' stroke='#888'/>\n";
     for (int pct : {0, 50, 100}) {
@@ -217,7 +115,7 @@ void write_svg(const std::vector<Row>& rows, const std::vector<Family>& fams, co
     for (const Series& se : series) {
       s << "<polyline fill='none' stroke='" << se.color << "' stroke-width='2' points='";
       for (const Row& r : rows)
-        if (r.family == fams[f].name) s << X(r.eps) << "," << y0 + h - h * se.rate(r) / 100.0 << " ";
+        if (r.family == fams[f]->name) s << X(r.eps) << "," << y0 + h - h * se.rate(r) / 100.0 << " ";
       s << "'/>\n";
     }
   }
@@ -247,30 +145,31 @@ int main(int argc, char** argv) {
   const auto fams = families();
   std::vector<Row> rows;
   bool failed = false;
-  for (const Family& fam : fams) {
-    std::mt19937_64 rng(seed);
+  for (const stress::Family* family : fams) {
+    const stress::Family& fam = *family;
+    const bool equilibrium = fam.question == stress::Question::equilibrium;
+    const Property property =
+        fam.question == stress::Question::form_closure ? Property::form_closure : Property::force_closure;
+    stress::Rng rng(seed);
     for (double eps : epsilons) {
       Row row;
       row.family = fam.name;
       row.eps = eps;
       for (int c = 0; c < cases; ++c) {
-        std::vector<Spec> cs = fam.make(rng, eps);
-        Gravity grav;
-        if (fam.equilibrium) {
-          grav = fam.load(cs);
-          cs.pop_back();  // the COM record is not a contact
-        }
-        const std::string text = scene_text(cs, grav);
+        const stress::Family_scene fs = stress::make_scene(fam, eps, rng);
+        const std::vector<Contact_spec>& cs = fs.contacts;
+        const Gravity_spec& grav = fs.gravity;
+        const std::string& text = fs.text;
         const Scene scene = read_scene(text, Input_limits{});
         struct Verdict {
           bool decided, holds;
         };
         auto decide = [&](Mode m) -> Verdict {
-          if (fam.equilibrium) {
+          if (equilibrium) {
             const Equilibrium_answer a = decide_equilibrium(scene, m, false);
             return {a.decided, a.balanced};
           }
-          const Closure_answer a = decide_closure(scene, fam.property, m, false);
+          const Closure_answer a = decide_closure(scene, property, m, false);
           return {a.decided, a.holds};
         };
         double t = now();
@@ -283,7 +182,7 @@ int main(int argc, char** argv) {
         const Verdict hybrid = decide(Mode::hybrid);
         row.t_hybrid += now() - t;
         t = now();
-        const bool naive = fam.equilibrium ? naive_balanced(cs, grav) : naive_closure(cs, fam.property);
+        const bool naive = equilibrium ? naive_balanced(cs, grav) : naive_closure(cs, property);
         row.t_naive += now() - t;
         ++row.cases;
         row.naive_wrong += naive != exact.holds;
@@ -322,7 +221,7 @@ int main(int argc, char** argv) {
         << "a sign is within its error bound). *hybrid*: the default mode (twin, exact where the twin abstains).\n"
         << "Times are per query, verdict only (no certificate), on a noisy shared 2-core machine.\n\n"
         << "| family | what |\n|---|---|\n";
-    for (const Family& f : fams) out << "| " << f.name << " | " << f.what << " |\n";
+    for (const stress::Family* f : fams) out << "| " << f->name << " | " << f->what << " |\n";
     out << "\n![error rates against ε](stability.svg)\n\n" << md.str()
         << "\nReading: naive double signs start to go wrong when ε approaches the rounding level of the input (about\n"
         << "1e-16 relative, earlier with large offsets) and are wrong about half the time below it. The certified twin\n"

@@ -119,6 +119,12 @@ TEST(Bounded, QuotientsAndSquareRootsContainTheExactValue) {
   EXPECT_EQ((Bounded::exact(1) / Bounded{1e-3, 2e-3}).sign(), Sign::uncertain);  // divisor not certified ≠ 0
   EXPECT_EQ(fl::sqrt(Bounded{-1, 0.5}).sign(), Sign::uncertain);                 // certified negative
   EXPECT_EQ((Bounded::exact(1e300) / Bounded::exact(1e-300)).sign(), Sign::uncertain);  // overflow
+  // A product with an unbounded factor is unbounded — never 0·∞ = NaN (found by fuzz_scene_parser:
+  // an underflowed zero times an exact value gave a NaN bound to a labels corner).
+  const Bounded lost{0.0, Bounded::kInf};
+  EXPECT_EQ((lost * Bounded::exact(3)).e, Bounded::kInf);
+  EXPECT_EQ((Bounded::exact(3) * lost).e, Bounded::kInf);
+  EXPECT_EQ((lost * Bounded{2, 0.5}).e, Bounded::kInf);
 }
 
 // ---- Closure: twin and hybrid against exact. ----

@@ -1,0 +1,371 @@
+// wrenchkit reference: the reference corpus for other implementations (docs/reference-format.md):
+// golden textbook scenes, near-degenerate families and random scenes, each with its exact answers,
+// certificates re-checked by the independent checker, and its distance to a degenerate boundary.
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/common.h"
+#include "cli/reference.h"
+#include "exact/boundary_distance.h"
+#include "exact/input_error.h"
+#include "exact/json.h"
+#include "exact/limit_surface.h"
+#include "exact/moment_labels.h"
+#include "exact/scene_writer.h"
+#include "exact/sliding.h"
+#include "exact/stress_families.h"
+
+namespace wrenchkit::cli {
+
+const char* kReferenceHelp =
+    "usage: wrenchkit reference --out DIR [OPTIONS]\n"
+    "\n"
+    "Writes the reference corpus for testing other grasp and sliding implementations against exact\n"
+    "answers (docs/reference-format.md): the golden textbook scenes of tests/golden, the near-degenerate\n"
+    "families of docs/stability.md at several distances eps, and random scenes (generic decimal text;\n"
+    "degenerate-rich integer grids). Each scene comes with its exact answers (force and form closure,\n"
+    "equilibrium when it has a load, moment labels, limit-surface bounds when it has a support), its\n"
+    "certificates (each accepted by the independent checker before it is written), and how close it is\n"
+    "to a degenerate boundary. Deterministic: the same options give the same bytes on every run.\n"
+    "\n"
+    "DIR gets reference.jsonl (one scene per line), scenes/ID.json (each scene's canonical text),\n"
+    "expected.csv (the simple verdicts) and manifest.json. DIR must not exist, be empty, or hold an\n"
+    "earlier corpus (which is replaced); nothing is written unless the whole corpus was built.\n"
+    "Compare an implementation's answers with: wrenchkit compare DIR answers.jsonl\n"
+    "\n"
+    "options:\n"
+    "  --out DIR       where to write the corpus (required)\n"
+    "  --seed S        seed of the families and random scenes (default 20261122)\n"
+    "  --cases N       scenes per near-degenerate family and eps (default 2; 20 for a big corpus)\n"
+    "  --random N      scenes per random family (default 100; 2000 for a big corpus)\n"
+    "  --sides N       polygon sides of the limit-surface bounds (even, 4..64, default 16)\n"
+    "  --json          print the summary as JSON\n";
+
+namespace {
+
+struct Golden {
+  const char* name;
+  const char* scene;
+  const char* expected;
+};
+const Golden kGoldens[] = {
+#include "cli/reference_goldens.inc"
+};
+
+const int kEpsilonExponents[] = {2, 6, 10, 14, 16, 20, 40};
+
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+std::string jq(const Rational& q) { return json::quote(to_string(q)); }
+std::string jv(const Vec3q& v) { return "[" + jq(v[0]) + ", " + jq(v[1]) + ", " + jq(v[2]) + "]"; }
+std::string jd(double d) {  // a double for reading, as a JSON number
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", d);
+  return b;
+}
+std::string jd(const std::optional<double>& d) { return d ? jd(*d) : "null"; }
+
+// The canonical text (exact/scene_writer.h) on one line: newlines (never inside strings, which
+// json::quote escapes) and their indentation removed.
+std::string one_line(const std::string& canonical) {
+  std::string s;
+  for (std::size_t i = 0; i < canonical.size(); ++i) {
+    if (canonical[i] != '\n') {
+      s += canonical[i];
+      continue;
+    }
+    while (i + 1 < canonical.size() && canonical[i + 1] == ' ') ++i;
+    if (!s.empty() && s.back() == ',') s += ' ';
+  }
+  return s;
+}
+
+struct Entry {
+  std::string id, family, source, epsilon, side, seed;  // empty: JSON null
+  std::string text;                                      // the scene as generated
+  std::string expected;                                  // golden: the expected answers
+};
+
+std::vector<Entry> corpus_entries(const Reference_options& ro) {
+  std::vector<Entry> out;
+  for (const Golden& g : kGoldens) {
+    std::string name = g.name, family = "golden", id = "golden." + name;
+    for (char& c : id)
+      if (c == '/') c = '.';
+    out.push_back({id, family, "tests/golden/" + name + ".scene.json", "", "", "", g.scene, g.expected});
+  }
+  int family_index = 0;
+  for (const stress::Family& f : stress::families()) {
+    ++family_index;
+    if (!f.uses_epsilon) continue;
+    for (int k : kEpsilonExponents)
+      for (int c = 0; c < ro.cases; ++c) {
+        const std::uint64_t seed =
+            splitmix64(ro.seed ^ splitmix64(static_cast<std::uint64_t>(family_index * 100000 + k * 1000 + c)));
+        const stress::Family_scene s = stress::make_scene(f.name, std::stod("1e-" + std::to_string(k)), seed);
+        out.push_back({std::string(f.name) + ".1e-" + std::to_string(k) + "." + std::to_string(c), f.name, "",
+                       "1e-" + std::to_string(k), s.above ? "above" : "below", std::to_string(seed), s.text, ""});
+      }
+  }
+  family_index = 0;
+  for (const stress::Family& f : stress::families()) {
+    ++family_index;
+    if (f.uses_epsilon) continue;
+    char num[16];
+    for (int c = 0; c < ro.random; ++c) {
+      const std::uint64_t seed = splitmix64(ro.seed ^ splitmix64(static_cast<std::uint64_t>(family_index) << 32 | c));
+      std::snprintf(num, sizeof num, "%04d", c);
+      out.push_back({std::string(f.name) + "." + num, f.name, "", "", "", std::to_string(seed),
+                     stress::make_scene(f.name, 0, seed).text, ""});
+    }
+  }
+  return out;
+}
+
+std::string flip_json(const std::optional<Friction_flip>& f) {
+  if (!f) return "null";
+  return "{\"flips_between\": [" + jq(f->lo) + ", " + jq(f->hi) + "], \"distance\": " + jd(f->distance) + "}";
+}
+
+std::string boundary_json(const Boundary_distance& b, const std::string& epsilon, bool load) {
+  std::string s = "{\"epsilon\": " + (epsilon.empty() ? std::string("null") : epsilon) +
+                  ", \"distance\": " + jd(b.distance) + ", \"nearest\": " +
+                  (b.nearest.empty() ? std::string("null") : json::quote(b.nearest)) +
+                  ", \"exact_zero_determinants\": " + std::to_string(b.exact_zeros()) +
+                  ", \"min_relative_determinant\": {\"force_closure\": " + jd(b.force.min_relative) +
+                  ", \"form_closure\": " + jd(b.form.min_relative);
+  if (load) s += ", \"equilibrium\": " + jd(b.equilibrium.min_relative);
+  s += "}, \"friction_scale\": {\"force_closure\": " + flip_json(b.closure_flip);
+  if (load) s += ", \"equilibrium\": " + flip_json(b.equilibrium_flip);
+  return s + "}}";
+}
+
+// The twists at which the power is bracketed: translations along x and y, a rotation about the
+// origin, a generic twist, and a rotation about the first support point (a facet of the true LS).
+std::vector<Vec3q> reference_twists(const Ls_support& s) {
+  std::vector<Vec3q> t = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 2, 3}};
+  if (!s.points.empty()) t.push_back({s.points[0].at.y, -s.points[0].at.x, 1});
+  return t;
+}
+
+std::string limit_surface_json(const Scene& scene, int sides) {
+  const Polygonal_ls model(merge_support(*scene.support), make_directions(sides));
+  if (model.candidate_count() > kMaxCandidates) throw Usage_error("--sides: too many for the corpus' supports");
+  const Ls_polytope in = model.build(Side::inner), out = model.build(Side::outer);
+  const Sliding_answer base = compute_sliding(model, std::nullopt);
+  std::string s = "{\"sides\": " + std::to_string(sides) + ", \"lambda_squared\": " +
+                  jq(model.directions().lambda_sq) + ", \"dimension\": " + std::to_string(model.dimension()) +
+                  ", \"center_of_friction\": [" + jq(base.center_of_friction.x) + ", " +
+                  jq(base.center_of_friction.y) + "], \"mu_f0\": " + jq(base.mu_f0) + ", \"inner\": {\"facets\": " +
+                  std::to_string(in.facets.size()) + ", \"vertices\": " + std::to_string(in.vertices.size()) +
+                  "}, \"outer\": {\"facets\": " + std::to_string(out.facets.size()) + ", \"vertices\": " +
+                  std::to_string(out.vertices.size()) + "}, \"twists\": [";
+  const char* kinds[] = {"facet", "vertex", "smooth"};
+  const std::vector<Vec3q> twists = reference_twists(model.support());
+  for (std::size_t i = 0; i < twists.size(); ++i) {
+    const Sliding_answer a = compute_sliding(model, twists[i]);
+    s += (i ? ", " : "") + std::string("{\"twist\": ") + jv(twists[i]) + ", \"h_inner\": " + jq(a.h_inner) +
+         ", \"h_outer\": " + jq(a.h_outer) + ", \"power_bracket\": [" + jq(a.h_lo) + ", " + jq(a.h_hi) +
+         "], \"true_surface\": \"" + kinds[static_cast<int>(a.cls.kind)] + "\"}";
+  }
+  return s + "]}";
+}
+
+// A golden's expected answers against ours: a disagreement is a bug in one of them (exit 4).
+void check_expected(const Entry& e, bool fc, bool fo, int rank_force, int rank_form, const bool* balanced) {
+  if (e.expected.empty()) return;
+  const json::Value v = json::parse(e.expected, Input_limits{}, e.source);
+  auto expect_bool = [&](const char* key, bool ours) {
+    if (const json::Value* x = v.find(key); x && x->type == json::Type::boolean && x->boolean != ours)
+      throw Self_check_failure(e.id + ": " + key + " is " + (ours ? "true" : "false") + ", the golden file says " +
+                               (x->boolean ? "true" : "false"));
+  };
+  expect_bool("force_closure", fc);
+  expect_bool("form_closure", fo);
+  if (balanced) expect_bool("balanced", *balanced);
+  if (const json::Value* r = v.find("rank")) {
+    const json::Value* a = r->find("force");
+    const json::Value* b = r->find("form");
+    if ((a && a->text != std::to_string(rank_force)) || (b && b->text != std::to_string(rank_form)))
+      throw Self_check_failure(e.id + ": rank differs from the golden file");
+  }
+}
+
+struct Built {
+  std::string line, canonical, csv;
+  std::size_t certificates = 0;
+};
+
+Built build_line(const Entry& e, const Reference_options& ro) {
+  Options o;
+  o.mode = "exact";
+  const Scene parsed = read_scene(e.text, o.limits, e.id);
+  Built b;
+  b.canonical = write_scene(parsed);
+  const std::string text = one_line(b.canonical);
+  if (write_scene(read_scene(text, o.limits, e.id)) != b.canonical)
+    throw Self_check_failure(e.id + ": the one-line scene does not read back to the canonical scene");
+  // Closure and equilibrium through the commands' own checked path: every certificate is accepted by
+  // the independent checker (on `text`, the bytes written) before we go on.
+  Scene scene;
+  const Closure_item c = compute_closure(o, text, e.id, &scene);
+  std::optional<Equilibrium_result> eq;
+  if (scene.load) eq = compute_equilibrium(o, scene, text);
+  bool balanced = eq && eq->a.balanced;
+  check_expected(e, c.force.holds, c.form.holds, c.force.rank, c.form.rank, eq ? &balanced : nullptr);
+  const Moment_labels labels = moment_labels(scene, Reading::friction);
+  const Boundary_distance bd = boundary_distance(scene);
+
+  std::ostringstream s;
+  const auto str_or_null = [](const std::string& x) { return x.empty() ? std::string("null") : json::quote(x); };
+  s << "{\"id\": " << json::quote(e.id) << ", \"family\": " << json::quote(e.family)
+    << ", \"epsilon\": " << str_or_null(e.epsilon) << ", \"side\": " << str_or_null(e.side)
+    << ", \"seed\": " << str_or_null(e.seed) << ", \"source\": " << str_or_null(e.source)
+    << ", \"scene_file\": " << json::quote("scenes/" + e.id + ".json") << ", \"scene\": " << text
+    << ", \"force_closure\": " << (c.force.holds ? "true" : "false")
+    << ", \"form_closure\": " << (c.form.holds ? "true" : "false") << ", \"rank\": {\"force\": " << c.force.rank
+    << ", \"form\": " << c.form.rank << "}";
+  if (eq) {
+    const Wrench& l = eq->a.load;
+    s << ", \"equilibrium\": " << (eq->a.balanced ? "true" : "false") << ", \"load\": [" << jq(l.fx) << ", "
+      << jq(l.fy) << ", " << jq(l.m) << "]";
+  }
+  s << ", \"labels\": {" << labels_json_fields(labels) << "}";
+  if (scene.support) s << ", \"limit_surface\": " << limit_surface_json(scene, ro.sides);
+  s << ", \"certificates\": {\"force_closure\": " << c.force_certificate << ", \"form_closure\": " << c.form_certificate;
+  if (eq) s << ", \"equilibrium\": " << eq->cert;
+  s << "}, \"boundary\": " << boundary_json(bd, e.epsilon, eq.has_value()) << "}";
+  b.line = s.str();
+  b.certificates = eq ? 3 : 2;
+  b.csv = e.id + "," + (c.force.holds ? "true" : "false") + "," + (c.form.holds ? "true" : "false") + "," +
+          (eq ? (eq->a.balanced ? "true" : "false") : "");
+  return b;
+}
+
+namespace fs = std::filesystem;
+
+void write_text(const fs::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.flush();
+  if (!out) throw Input_error(p.string() + ": cannot write");
+}
+
+// DIR may be missing, empty, or an earlier corpus (it has our manifest.json); anything else is refused.
+void check_out_dir(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) return;
+  if (!fs::is_directory(dir, ec)) throw Usage_error("--out: " + dir.string() + " exists and is not a directory");
+  if (fs::is_empty(dir, ec)) return;
+  std::ifstream m(dir / "manifest.json");
+  std::string head(64, '\0');
+  m.read(head.data(), 64);
+  if (head.find("\"wrenchkit_reference\"") == std::string::npos)
+    throw Usage_error("--out: " + dir.string() +
+                      " is not empty and holds no wrenchkit reference corpus (manifest.json); refusing to replace it");
+}
+
+}  // namespace
+
+Reference_corpus build_reference(const Reference_options& ro) {
+  Reference_corpus corpus;
+  for (const Entry& e : corpus_entries(ro)) {
+    Built b = build_line(e, ro);
+    corpus.ids.push_back(e.id);
+    corpus.lines.push_back(std::move(b.line));
+    corpus.scenes.push_back(std::move(b.canonical));
+    corpus.csv.push_back(std::move(b.csv));
+    corpus.certificates += b.certificates;
+  }
+  return corpus;
+}
+
+int run_reference(int argc, char** argv) {
+  Reference_options ro;
+  std::string out_dir;
+  std::vector<char*> rest = {argv[0], argv[1]};
+  auto count = [](const std::string& opt, const std::string& v, long lo, long hi) {
+    if (v.empty() || v.size() > 9 || v.find_first_not_of("0123456789") != std::string::npos || std::stol(v) < lo ||
+        std::stol(v) > hi)
+      throw Usage_error(opt + ": \"" + v + "\" is not an integer between " + std::to_string(lo) + " and " +
+                        std::to_string(hi));
+    return static_cast<int>(std::stol(v));
+  };
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw Usage_error(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--out") out_dir = value();
+    else if (a == "--seed") {
+      const std::string v = value();
+      if (v.empty() || v.size() > 19 || v.find_first_not_of("0123456789") != std::string::npos)
+        throw Usage_error("--seed: \"" + v + "\" is not a non-negative integer");
+      ro.seed = std::stoull(v);
+    } else if (a == "--cases") ro.cases = count(a, value(), 0, 1000);
+    else if (a == "--random") ro.random = count(a, value(), 0, 100000);
+    else if (a == "--sides") {
+      ro.sides = count(a, value(), 4, 64);
+      if (ro.sides % 2) throw Usage_error("--sides: must be even");
+    } else rest.push_back(argv[i]);
+  }
+  const Options o = parse_options(static_cast<int>(rest.size()), rest.data(), 2);
+  if (o.help) return std::cout << kReferenceHelp, kAnswered;
+  if (!o.positional.empty()) throw Usage_error("reference takes no scene file (it writes a corpus to --out DIR)");
+  if (out_dir.empty()) throw Usage_error("reference needs --out DIR");
+  const fs::path dir(out_dir);
+  check_out_dir(dir);
+
+  const Reference_corpus corpus = build_reference(ro);
+
+  // Everything goes to a temporary sibling first, then replaces DIR in one rename.
+  const fs::path tmp = dir.string() + ".tmp-wrenchkit";
+  std::error_code ec;
+  fs::remove_all(tmp, ec);
+  fs::create_directories(tmp / "scenes", ec);
+  if (ec) throw Input_error(out_dir + ": cannot create (" + ec.message() + ")");
+  std::string jsonl, csv = "id,force_closure,form_closure,equilibrium\n";
+  for (std::size_t i = 0; i < corpus.ids.size(); ++i) {
+    jsonl += corpus.lines[i] + "\n";
+    csv += corpus.csv[i] + "\n";
+    write_text(tmp / "scenes" / (corpus.ids[i] + ".json"), corpus.scenes[i]);
+  }
+  write_text(tmp / "reference.jsonl", jsonl);
+  write_text(tmp / "expected.csv", csv);
+  std::string eps = "[";
+  for (int k : kEpsilonExponents) eps += (eps.size() > 1 ? ", \"1e-" : "\"1e-") + std::to_string(k) + "\"";
+  const std::string manifest =
+      "{\"wrenchkit_reference\": 1, \"generator\": \"wrenchkit 0.1.0\", \"format\": \"docs/reference-format.md\", "
+      "\"seed\": \"" + std::to_string(ro.seed) + "\", \"cases\": " + std::to_string(ro.cases) +
+      ", \"random\": " + std::to_string(ro.random) + ", \"sides\": " + std::to_string(ro.sides) +
+      ", \"epsilons\": " + eps + "], \"scenes\": " + std::to_string(corpus.ids.size()) +
+      ", \"files\": {\"corpus\": \"reference.jsonl\", \"scenes\": \"scenes/\", \"verdicts\": \"expected.csv\"}}\n";
+  write_text(tmp / "manifest.json", manifest);
+  fs::remove_all(dir, ec);
+  fs::rename(tmp, dir, ec);
+  if (ec) throw Input_error(out_dir + ": cannot write (" + ec.message() + ")");
+
+  const std::size_t certificates = corpus.certificates;
+  if (o.json)
+    std::cout << "{\"command\": \"reference\", \"out\": " << json::quote(out_dir) << ", \"scenes\": " << corpus.ids.size()
+              << ", \"certificates_checked\": " << certificates << ", \"bytes\": " << jsonl.size() << "}\n";
+  else
+    std::cout << "wrote " << corpus.ids.size() << " scenes to " << out_dir << "/reference.jsonl (" << jsonl.size()
+              << " bytes), scenes/, expected.csv, manifest.json\n"
+              << "all " << certificates << " certificates accepted by the independent checker (exact arithmetic)\n";
+  return kAnswered;
+}
+
+}  // namespace wrenchkit::cli

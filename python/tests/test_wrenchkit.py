@@ -1,0 +1,238 @@
+"""pytest suite of the wrenchkit Python package (run by CTest as python_pytest; docs/python.md).
+
+Golden cases of theory.md (block in a corner, the ladder's mu* = 1/7, two-finger grasps, the barbell),
+exact number reading from every Python type, certificates through the independent checker, errors
+with the command line's messages.
+"""
+import json
+import os
+import subprocess
+from decimal import Decimal
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+
+import wrenchkit
+
+SOURCE = Path(os.environ.get("WRENCHKIT_SOURCE_DIR", Path(__file__).resolve().parents[2]))
+GOLDEN = SOURCE / "tests" / "golden"
+CLI = os.environ.get("WRENCHKIT_CLI")
+
+
+def two_fingers(y2, mu):
+    return {"contacts": [{"at": [0, "1/2"], "normal": [1, 0], "mu": mu},
+                         {"at": [1, y2], "normal": [-1, 0], "mu": mu}]}
+
+
+# ---- golden textbook cases --------------------------------------------------------------------------
+
+def test_two_finger_grasp_closes_iff_mu_exceeds_the_slope():
+    # d = (1, y2 - 1/2): force closure iff mu > |y2 - 1/2| (Nguyen); exactly at the slope it is not.
+    assert wrenchkit.closure(two_fingers("1/2", "1/10"))["force_closure"] is True
+    assert wrenchkit.closure(two_fingers(1, "1/2"))["force_closure"] is False
+    assert wrenchkit.closure(two_fingers(1, "0.5000000000000000000000000000000000000001"))["force_closure"] is True
+    r = wrenchkit.closure(two_fingers("1/2", Fraction(1, 10)))
+    assert r["form_closure"] is False and r["rank"] == {"force": 3, "form": 1}
+
+
+@pytest.mark.parametrize("scene_file", sorted(p.name for p in GOLDEN.glob("*.scene.json")))
+def test_every_closure_golden_matches_its_expected_file(scene_file):
+    expected = json.loads((GOLDEN / scene_file.replace(".scene.", ".expected.")).read_text())
+    r = wrenchkit.closure(GOLDEN / scene_file, mode="exact")
+    assert r["force_closure"] == expected["force_closure"]
+    assert r["form_closure"] == expected["form_closure"]
+    assert r["rank"] == expected["rank"]
+    for key in ("certificate", "form_certificate"):
+        assert wrenchkit.check(GOLDEN / scene_file, r[key]) == {"accepted": True, "reason": ""}
+        assert wrenchkit.check(GOLDEN / scene_file, r[key + "_json"])["accepted"]
+
+
+@pytest.mark.parametrize("scene_file", sorted(p.name for p in (GOLDEN / "equilibrium").glob("*.scene.json")))
+def test_every_equilibrium_golden(scene_file):
+    path = GOLDEN / "equilibrium" / scene_file
+    expected = json.loads(path.with_name(scene_file.replace(".scene.", ".expected.")).read_text())
+    r = wrenchkit.equilibrium(path)
+    assert r["balanced"] == expected["balanced"]
+    assert wrenchkit.check(path, r["certificate"])["accepted"]
+
+
+def ladder(mu):
+    return {"body": {"com": ["-1/2", "7/2"]},
+            "contacts": [{"at": [0, 0], "normal": [0, 1], "mu": mu}, {"at": [-4, 3], "normal": [1, 0], "mu": mu}],
+            "load": {"gravity": 1}}
+
+
+def test_ladder_stands_iff_mu_at_least_one_seventh():
+    # theory.md section 9: the leaning square stands iff mu >= 1/7, exactly, also at 1/7 +- 10^-40.
+    assert wrenchkit.equilibrium(ladder(Fraction(1, 7)))["balanced"] is True
+    assert wrenchkit.equilibrium(ladder(Fraction(1, 8)))["balanced"] is False
+    tiny = Fraction(1, 10**40)
+    assert wrenchkit.equilibrium(ladder(Fraction(1, 7) + tiny))["balanced"] is True
+    assert wrenchkit.equilibrium(ladder(Fraction(1, 7) - tiny))["balanced"] is False
+    r = wrenchkit.equilibrium(ladder("1/7"), mode="exact")
+    assert r["load"] == (0, -1, Fraction(1, 2))
+    weights = {(t["contact"], t["edge"]): t["weight"] for t in r["certificate"]["combination"]}
+    assert all(isinstance(w, Fraction) and w > 0 for w in weights.values())
+    # The weights balance the load exactly: sum of w * generator + load = 0, recomputed here.
+    total = [Fraction(0)] * 3
+    gens = {(0, "left"): (-Fraction(1, 7), 1, 0), (0, "right"): (Fraction(1, 7), 1, 0),
+            (1, "left"): (1, Fraction(1, 7)), (1, "right"): (1, -Fraction(1, 7))}
+    for (c, e), w in weights.items():
+        f = gens[(c, e)]
+        p = (0, 0) if c == 0 else (-4, 3)
+        wrench = (f[0], f[1], p[0] * f[1] - p[1] * f[0])
+        total = [t + w * x for t, x in zip(total, wrench)]
+    assert [t + l for t, l in zip(total, r["load"])] == [0, 0, 0]
+
+
+def block_in_corner(mu):
+    return {"body": {"com": ["1/2", "1/2"]},
+            "contacts": [{"at": [0, 0], "normal": [0, 1], "mu": mu}, {"at": [1, 0], "normal": [0, 1], "mu": mu},
+                         {"at": [0, 0], "normal": [1, 0], "mu": mu}, {"at": [0, 1], "normal": [1, 0], "mu": mu}]}
+
+
+def test_block_in_a_corner_labels():
+    # Frictionless block in a corner (theory.md section 5): + region the wedge at (0, 1) opening to
+    # (0, 1) and (-1, 0); - region the wedge at (1, 0); translations up-left at infinity.
+    lab = wrenchkit.labels(block_in_corner(0))
+    assert lab["force_closure"] is False
+    assert lab["plus"]["shape"] == "wedge" and lab["plus"]["vertices"] == [(0, 1)]
+    assert lab["plus"]["directions"] == [(0, 1), (-1, 0)]
+    assert lab["minus"]["vertices"] == [(1, 0)]
+    assert lab["infinity"] == [{"from": (0, 1), "to": (-1, 0)}]
+    assert all(isinstance(x, Fraction) for v in lab["plus"]["vertices"] for x in v)
+    # With mu = 1/2 the + corner moves to (-2/3, 4/3).
+    assert wrenchkit.labels(block_in_corner("1/2"))["plus"]["vertices"] == [(Fraction(-2, 3), Fraction(4, 3))]
+    # Reuleaux reading: the same contacts frictionless.
+    assert wrenchkit.labels(block_in_corner("1/2"), reading="frictionless")["plus"]["vertices"] == [(0, 1)]
+
+
+def test_block_in_a_corner_under_a_push():
+    s = dict(block_in_corner("1/2"), load={"force": [0, -1], "at": [1, 1]})
+    assert wrenchkit.equilibrium(s)["balanced"] is True
+    assert wrenchkit.labels(s)["load"]["balanced"] is True
+
+
+def test_dual_covers_all_iff_force_closure():
+    assert wrenchkit.dual(two_fingers("1/2", "1/10"))["covers_all"] is True
+    d = wrenchkit.dual(block_in_corner(0))
+    assert d["covers_all"] is False
+    assert len(d["generators"]) == 4 and d["generators"][0]["dual"]["sheet"] in ("+", "-", "infinity")
+
+
+BARBELL = {"support": {"mu": 1, "points": [{"at": [0, -1], "force": "1/2"}, {"at": [0, 1], "force": "1/2"}]}}
+
+
+def test_barbell_limit_surface_and_sliding():
+    # theory.md section 14.2: translation load mu*f0 = 1; rotation about the centre: moment 1.
+    ls = wrenchkit.limit_surface(BARBELL, 32, twist=(0, 0, 1), load=(0, 0, "1/2"))
+    lam2 = ls["lambda_squared"]
+    assert isinstance(lam2, Fraction) and Fraction(99, 100) < lam2 < 1
+    assert ls["h_inner"] <= 1 <= ls["h_outer"]
+    assert ls["motion"] == "sticks"
+    assert wrenchkit.limit_surface(BARBELL, 32, load=(0, 0, 2))["motion"] == "slides"
+    assert ls["inner"]["facets"] > 0 and ls["outer"]["vertices"] > 0
+    t = wrenchkit.sliding(BARBELL, twist=(1, 0, 0))
+    assert t["motion"] == "translation" and t["load"] == (1, 0, 0)
+    r = wrenchkit.sliding(BARBELL, twist=(0, 0, 1))
+    assert r["power_bracket"] == (1, 1)
+    assert r["center_of_friction"] == (0, 0)
+    assert wrenchkit.limit_surface(BARBELL, tolerance="0.01")["sides"] >= 4
+
+
+# ---- exact numbers from Python values ---------------------------------------------------------------
+
+def test_numbers_are_read_exactly_from_their_text():
+    canon = wrenchkit.Scene(two_fingers("1/2", "1/10")).json
+    for mu in ("0.1", Fraction(1, 10), Decimal("0.1"), 0.1, "1e-1"):
+        assert wrenchkit.Scene(two_fingers("1/2", mu)).json == canon, mu
+    # Fraction(0.1) is the double's exact binary value, a different scene.
+    assert "3602879701896397/36028797018963968" in wrenchkit.Scene(two_fingers("1/2", Fraction(0.1))).json
+    assert wrenchkit.Scene(two_fingers(Fraction(1, 2), 1)).json == wrenchkit.Scene(two_fingers("0.5", "1")).json
+
+
+def test_scene_from_json_text_and_path(tmp_path):
+    text = json.dumps({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [0, 1]}]})
+    p = tmp_path / "s.json"
+    p.write_text(text)
+    assert wrenchkit.Scene(text).json == wrenchkit.Scene(p).json == wrenchkit.Scene(str(p)).json
+    assert len(wrenchkit.Scene(p)) == 1
+
+
+def test_numpy_numbers_if_available():
+    np = pytest.importorskip("numpy")
+    a = wrenchkit.Scene(two_fingers(np.int64(1), np.float64(0.5))).json
+    assert a == wrenchkit.Scene(two_fingers(1, "0.5")).json
+
+
+# ---- certificates and the checker ------------------------------------------------------------------
+
+def test_a_tampered_certificate_is_rejected_with_a_reason():
+    s = wrenchkit.Scene(two_fingers("1/2", "1/10"))
+    cert = wrenchkit.closure(s)["certificate"]
+    assert cert["holds"] is True
+    bad = json.loads(json.dumps(cert, default=str))
+    bad["combination"][0]["weight"] = str(cert["combination"][0]["weight"] * 2)
+    r = wrenchkit.check(s, bad)
+    assert r["accepted"] is False and r["reason"]
+
+
+def test_float_mode_may_be_undecided():
+    # Exactly on the cone edge: the twin cannot certify a zero of decimal input that is not a double.
+    s = two_fingers("0.6", "0.1")
+    with pytest.raises(wrenchkit.UndecidedError, match="float twin could not certify"):
+        wrenchkit.closure(s, mode="float")
+    assert wrenchkit.closure(s, mode="hybrid")["force_closure"] is False
+
+
+# ---- errors: InputError with the command line's message ---------------------------------------------
+
+BAD = [
+    ({"contacts": [{"at": [0, 0], "normal": [0, 0]}]}, "contacts[0].normal: zero vector"),
+    ({"contacts": [{"at": [0, 0], "normal": [0, 1], "mu": "-1/2"}]}, "contacts[0].mu"),
+    ({"contacts": [{"at": [0, 0], "normal": [0, 1], "mu": "abc"}]}, 'contacts[0].mu: "abc" is not a number'),
+    ({"contacts": [{"at": [0, 0], "normal": [0, 1], "muu": 1}]}, "muu"),
+    ({"contacts": [{"at": [0, 0], "normal": [0, 1], "mu": "1/0"}]}, "contacts[0].mu"),
+]
+
+
+@pytest.mark.parametrize("scene,message", BAD)
+def test_bad_scenes_raise_input_error(scene, message):
+    with pytest.raises(wrenchkit.InputError, match=None) as e:
+        wrenchkit.Scene(scene)
+    assert message in str(e.value)
+    assert isinstance(e.value, ValueError)
+
+
+@pytest.mark.skipif(not CLI, reason="WRENCHKIT_CLI not set")
+@pytest.mark.parametrize("scene,message", BAD)
+def test_messages_are_the_command_lines(scene, message, tmp_path):
+    p = tmp_path / "bad.json"
+    p.write_text(json.dumps(json.loads(wrenchkit._to_json(dict({"wrenchkit": 1}, **scene)))))
+    cli = subprocess.run([CLI, "closure", str(p)], capture_output=True, text=True)
+    assert cli.returncode == 2
+    with pytest.raises(wrenchkit.InputError) as e:
+        wrenchkit.Scene(p)
+    assert cli.stderr.strip() == "wrenchkit: error: " + str(e.value)
+
+
+def test_other_input_errors():
+    with pytest.raises(wrenchkit.InputError, match="load: "):
+        wrenchkit.equilibrium(two_fingers("1/2", "1/10"))
+    with pytest.raises(wrenchkit.InputError, match='support: the scene has no "support"'):
+        wrenchkit.limit_surface(two_fingers("1/2", "1/10"))
+    with pytest.raises(wrenchkit.InputError, match="sides: 5 must be even"):
+        wrenchkit.limit_surface(BARBELL, 5)
+    with pytest.raises(wrenchkit.InputError, match="twist: the zero twist"):
+        wrenchkit.sliding(BARBELL, twist=(0, 0, 0))
+    with pytest.raises(wrenchkit.InputError, match='mode: "fast" is not one of'):
+        wrenchkit.closure(two_fingers(1, 1), mode="fast")
+    with pytest.raises(wrenchkit.InputError, match="nan is not a finite number"):
+        wrenchkit.Scene(two_fingers(1, float("nan")))
+    with pytest.raises(wrenchkit.InputError, match="cannot open"):
+        wrenchkit.Scene("/nonexistent/scene.json")
+    with pytest.raises(wrenchkit.InputError, match="invalid JSON"):
+        wrenchkit.Scene('{"wrenchkit": 1,')
+    with pytest.raises(wrenchkit.InputError, match="max_contacts|contacts"):
+        wrenchkit.Scene(two_fingers(1, 1), limits={"max_contacts": 1})

@@ -1,0 +1,255 @@
+"""wrenchkit: exact, certified planar contact statics (Mason, *Mechanics of Robotic Manipulation*, ch. 5-6).
+
+    >>> import wrenchkit
+    >>> from fractions import Fraction
+    >>> s = wrenchkit.Scene({"contacts": [
+    ...     {"at": [0, "1/2"], "normal": [1, 0], "mu": Fraction(1, 10)},
+    ...     {"at": [1, "1/2"], "normal": [-1, 0], "mu": "0.1"}]})
+    >>> r = wrenchkit.closure(s)
+    >>> r["force_closure"], r["form_closure"]
+    (True, False)
+    >>> wrenchkit.check(s, r["certificate"])["accepted"]
+    True
+
+Numbers. Every number of a scene is read EXACTLY, from its text:
+  * int, fractions.Fraction, decimal.Decimal: their exact value;
+  * str: decimal text ("0.1" is 1/10, "-2.5e-3") or a fraction "p/q";
+  * float: ITS SHORTEST REPR, i.e. the decimal text Python prints: 0.1 is read as 1/10, exactly as
+    the JSON scene files are, NOT as the binary double 0.1000000000000000055511151231257827...
+    For the double's exact binary value pass Fraction(x) (Fraction(0.1) == 3602879701896397/36028797018963968).
+    NaN and infinities are refused (InputError).
+Every exact number in a result is a fractions.Fraction; verdicts are bools; certificates are dicts
+(with Fractions) and JSON text ("certificate_json") that the independent checker accepts.
+Errors in the input raise wrenchkit.InputError (a ValueError) with the command line's message,
+naming the JSON path and the offending value. See docs/python.md.
+"""
+
+import decimal as _decimal
+import fractions as _fractions
+import json as _json
+import math as _math
+import numbers as _numbers
+import os as _os
+
+__version__ = "0.1.0"
+
+
+class InputError(ValueError):
+    """Bad input: the message names the JSON path (or argument) and the offending value."""
+
+
+class UndecidedError(RuntimeError):
+    """mode="float": the floating-point twin could not certify the answer (use "hybrid" or "exact")."""
+
+
+class InternalError(RuntimeError):
+    """An answer failed its own certificate check, or an internal invariant broke: always a bug."""
+
+
+from . import _core  # noqa: E402  (the exception classes above are handed to the native module)
+
+_core._set_exceptions(InputError, InternalError, UndecidedError)
+
+__all__ = ["Scene", "closure", "force_closure", "form_closure", "equilibrium", "labels", "dual",
+           "limit_surface", "sliding", "check", "InputError", "UndecidedError", "InternalError"]
+
+
+def _number_text(x, path):
+    """The exact decimal or p/q text of a Python number (see the module docstring)."""
+    if isinstance(x, bool):
+        raise InputError(f"{path}: {x!r} is a boolean, not a number")
+    if isinstance(x, _numbers.Integral):
+        return str(int(x))
+    if isinstance(x, _fractions.Fraction):
+        return f"{x.numerator}/{x.denominator}"
+    if isinstance(x, _decimal.Decimal):
+        if not x.is_finite():
+            raise InputError(f"{path}: {x} is not a finite number")
+        return str(x)
+    if isinstance(x, float):
+        if not _math.isfinite(x):
+            raise InputError(f"{path}: {x!r} is not a finite number")
+        return repr(x)
+    if isinstance(x, _numbers.Rational):
+        return f"{x.numerator}/{x.denominator}"
+    if isinstance(x, _numbers.Real):  # e.g. numpy.float64
+        return _number_text(float(x), path)
+    if isinstance(x, str):
+        return x
+    raise InputError(f"{path}: {x!r} ({type(x).__name__}) is not a number")
+
+
+def _to_json(v, path="scene"):
+    """Scene JSON text from Python values: numbers become exact JSON strings (read exactly)."""
+    if isinstance(v, dict):
+        parts = []
+        for k, x in v.items():
+            if not isinstance(k, str):
+                raise InputError(f"{path}: key {k!r} is not a string")
+            parts.append(_json.dumps(k) + ": " + _to_json(x, k if path == "scene" else f"{path}.{k}"))
+        return "{" + ", ".join(parts) + "}"
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_to_json(x, f"{path}[{i}]") for i, x in enumerate(v)) + "]"
+    if isinstance(v, str):
+        return _json.dumps(v)
+    if v is None or isinstance(v, bool):
+        return _json.dumps(v)
+    if path.endswith("wrenchkit") and isinstance(v, _numbers.Integral):
+        return str(int(v))
+    return _json.dumps(_number_text(v, path))
+
+
+class Scene:
+    """A scene (docs/scene-format.md), read and validated exactly.
+
+    Scene(data) where data is a dict (or list-free mapping) in the JSON scene format with Python
+    numbers (int, str, Fraction, Decimal, float: see the module docstring), a JSON text (a str that
+    starts with "{"), or a path to a JSON scene file (str or os.PathLike). "wrenchkit": 1 may be
+    omitted from a dict. limits: max_digits, max_exponent, max_file_size, max_contacts (as the CLI's
+    --max-* options). Raises InputError with the command line's message.
+    """
+
+    def __init__(self, data, *, limits=None):
+        limits = dict(limits or {})
+        if isinstance(data, Scene):
+            self._s = data._s
+            return
+        if isinstance(data, dict):
+            if "wrenchkit" not in data:
+                data = {"wrenchkit": 1, **data}
+            text, source = _to_json(data), "scene"
+        elif isinstance(data, str) and data.lstrip().startswith("{"):
+            text, source = data, "scene"
+        elif isinstance(data, (str, _os.PathLike)):
+            source = _os.fspath(data)
+            try:
+                with open(source, "rb") as f:
+                    raw = f.read()
+            except OSError as e:
+                raise InputError(f"{source}: cannot open ({e.strerror})") from None
+            try:
+                text = raw.decode("utf-8")
+            except UnicodeDecodeError as e:
+                raise InputError(f"{source}: invalid UTF-8 at byte {e.start}") from None
+        else:
+            raise InputError(f"scene: {type(data).__name__} is not a dict, JSON text or path")
+        self._s = _core.read(text, source, limits)
+
+    @property
+    def json(self):
+        """The canonical JSON text of the scene (every number an exact "p/q" string)."""
+        return self._s.text
+
+    @property
+    def name(self):
+        return self._s.name
+
+    @property
+    def has_load(self):
+        return self._s.has_load
+
+    @property
+    def has_support(self):
+        return self._s.has_support
+
+    def __len__(self):
+        return self._s.contacts
+
+    def __repr__(self):
+        return f"wrenchkit.Scene({self._s.text.strip()!s})"
+
+
+def _scene(s):
+    return s._s if isinstance(s, Scene) else Scene(s)._s
+
+
+def _vec(v, what):
+    if v is None:
+        return None
+    if isinstance(v, str):
+        v = v.split(",")
+    return [_number_text(x, f"{what}[{i}]") for i, x in enumerate(v)]
+
+
+def closure(scene, mode="hybrid"):
+    """Force closure (with friction) and first-order form closure (frictionless), with certificates.
+
+    Returns {"force_closure": bool, "form_closure": bool, "rank": {"force", "form"}, "generators",
+    "decided_by", "certificate": dict, "form_certificate": dict, "certificate_json": str,
+    "form_certificate_json": str}. Both certificates were accepted by the independent checker.
+    mode: "hybrid" (default; exact answers), "exact", or "float" (may raise UndecidedError).
+    """
+    return _core.closure(_scene(scene), mode)
+
+
+def force_closure(scene):
+    """Force closure of the scene's contacts with their friction (bool, exact)."""
+    return closure(scene)["force_closure"]
+
+
+def form_closure(scene):
+    """First-order form closure of the scene's contacts read frictionless (bool, exact)."""
+    return closure(scene)["form_closure"]
+
+
+def equilibrium(scene, mode="hybrid"):
+    """Can the contacts balance the scene's load? {"balanced", "load": (fx, fy, m), "certificate", ...}."""
+    return _core.equilibrium(_scene(scene), mode)
+
+
+def labels(scene, reading="friction"):
+    """Moment labels (theory.md section 5): {"plus", "minus": REGION, "both", "infinity", "rank", ...}.
+
+    A REGION is {"empty", "shape", "vertices": [(x, y) Fractions, counter-clockwise], "directions"}.
+    reading="frictionless" gives Reuleaux's feasible rotation centres.
+    """
+    return _core.labels(_scene(scene), reading)
+
+
+def dual(scene):
+    """The force dual (theory.md section 6): {"covers_all", "plus_region", "minus_region", ...}."""
+    return _core.dual(_scene(scene))
+
+
+def limit_surface(scene, sides=32, *, tolerance=None, twist=None, load=None):
+    """Certified polygonal limit surfaces of the scene's support (docs/limit-surface.md).
+
+    {"sides", "lambda_squared", "inner"/"outer": {"facets", "vertices", "edges"}, ...}; with
+    twist=(vx, vy, w) also "h_inner" <= h <= "h_outer" and the loads; with load=(fx, fy, m) also
+    "motion": "sticks" | "slides" | "undecided". tolerance (a number) picks the smallest sides whose
+    certified relative error is at most tolerance.
+    """
+    tol = None if tolerance is None else _number_text(tolerance, "tolerance")
+    return _core.limit_surface(_scene(scene), int(sides), tol, _vec(twist, "twist"), _vec(load, "load"))
+
+
+def sliding(scene, twist=None, sides=64):
+    """Centre of friction and the frictional load for a twist (theory.md section 10), exact bounds."""
+    return _core.sliding(_scene(scene), _vec(twist, "twist"), int(sides))
+
+
+def _certificate_text(c):
+    if isinstance(c, str):
+        return c
+    if isinstance(c, dict):
+        def enc(v):
+            if isinstance(v, dict):
+                return {k: enc(x) for k, x in v.items()}
+            if isinstance(v, (list, tuple)):
+                return [enc(x) for x in v]
+            if isinstance(v, bool) or v is None or isinstance(v, str):
+                return v
+            if isinstance(v, _fractions.Fraction):
+                return f"{v.numerator}/{v.denominator}"
+            return v
+        return _json.dumps(enc(c))
+    raise InputError(f"certificate: {type(c).__name__} is not a dict or JSON text")
+
+
+def check(scene, certificate):
+    """The independent checker (proofs/checker, GMP only): does the certificate prove its claim?
+
+    certificate: a dict (as returned here, Fractions allowed) or JSON text. Returns
+    {"accepted": bool, "reason": str}; raises InputError if the scene itself is bad.
+    """
+    return _core.check(_scene(scene), _certificate_text(certificate))

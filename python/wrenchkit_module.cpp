@@ -1,0 +1,521 @@
+// The Python bindings' native part (`wrenchkit._core`, pybind11): scenes from JSON text, and every
+// exact answer as Python objects — fractions.Fraction for every exact number, bool for verdicts,
+// certificates as dicts and as the JSON text the independent checker accepts. The package
+// (python/wrenchkit/__init__.py) builds scene JSON from Python values and documents the API
+// (docs/python.md). Errors: Input_error → wrenchkit.InputError (a ValueError) with the CLI's message.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "exact/closure.h"
+#include "exact/equilibrium.h"
+#include "exact/force_dual.h"
+#include "exact/input_error.h"
+#include "exact/json.h"
+#include "exact/limit_surface.h"
+#include "exact/moment_labels.h"
+#include "exact/scene_writer.h"
+#include "exact/sliding.h"
+#include "proofs/checker/checker.h"
+
+namespace py = pybind11;
+using namespace wrenchkit;
+
+namespace {
+
+// The exception classes are created in Python (wrenchkit/__init__.py passes them in at import).
+py::object g_input_error, g_internal_error, g_undecided_error;
+
+struct Undecided_exception {
+  std::string message;
+};
+
+py::object fraction(const Rational& q) {
+  static py::object F = py::module_::import("fractions").attr("Fraction");
+  return F(py::str(to_string(q)));
+}
+py::tuple point(const Vec2& p) { return py::make_tuple(fraction(p.x), fraction(p.y)); }
+py::tuple triple(const Rational& a, const Rational& b, const Rational& c) {
+  return py::make_tuple(fraction(a), fraction(b), fraction(c));
+}
+py::tuple triple(const Vec3& v) { return triple(v[0], v[1], v[2]); }
+
+// A scene as read by the engine, with the canonical text the checker is given.
+struct Py_scene {
+  Scene scene;
+  std::string text;    // canonical (exact/scene_writer.h)
+  std::string source;  // names the input in messages
+};
+
+Input_limits limits_of(const py::dict& l) {
+  Input_limits x;
+  if (l.contains("max_digits")) x.max_digits = l["max_digits"].cast<std::size_t>();
+  if (l.contains("max_exponent")) x.max_exponent = l["max_exponent"].cast<long>();
+  if (l.contains("max_file_size")) x.max_file_bytes = l["max_file_size"].cast<std::size_t>();
+  if (l.contains("max_contacts")) x.max_contacts = l["max_contacts"].cast<std::size_t>();
+  return x;
+}
+
+Py_scene read_text(const std::string& text, const std::string& source, const py::dict& limits) {
+  const Input_limits l = limits_of(limits);
+  if (text.size() > l.max_file_bytes)
+    throw Input_error(source + ": larger than the size limit of " + std::to_string(l.max_file_bytes) +
+                      " bytes (max_file_size)");
+  Py_scene s{read_scene(text, l, source), "", source};
+  s.text = write_scene(s.scene);
+  return s;
+}
+
+Mode mode_of(const std::string& m) {
+  if (m == "exact") return Mode::exact;
+  if (m == "hybrid") return Mode::hybrid;
+  if (m == "float") return Mode::float_only;
+  throw Input_error("mode: \"" + m + "\" is not one of exact, hybrid, float");
+}
+
+Rational number(const std::string& text, const std::string& what) {
+  std::string why;
+  const auto q = parse_rational(text, false, Input_limits{}, why);
+  if (!q) throw Input_error(what + ": \"" + text + "\" " + why);
+  return *q;
+}
+Vec3q vec3(const std::vector<std::string>& t, const std::string& what) {
+  if (t.size() != 3) throw Input_error(what + ": needs 3 numbers, got " + std::to_string(t.size()));
+  return {number(t[0], what + "[0]"), number(t[1], what + "[1]"), number(t[2], what + "[2]")};
+}
+
+void self_check(const Py_scene& s, const std::string& cert) {
+  const auto r = wrenchkit_checker::check(s.text, cert);
+  if (r.outcome != wrenchkit_checker::Outcome::accepted)
+    throw std::runtime_error("the independent checker rejected our own certificate (a bug, please report): " +
+                             r.message + "\ncertificate: " + cert);
+}
+
+py::dict reading_dict(const std::array<Rational, 3>& twist) {
+  const Twist_reading r = read_twist(twist);
+  py::dict d;
+  if (r.label == 'i') {
+    d["label"] = "infinity";
+    d["direction"] = py::make_tuple(fraction(r.point[0]), fraction(r.point[1]));
+  } else {
+    d["label"] = std::string(1, r.label);
+    d["point"] = py::make_tuple(fraction(r.point[0]), fraction(r.point[1]));
+  }
+  return d;
+}
+
+py::list combination_list(const std::vector<std::pair<Generator_ref, Rational>>& c) {
+  py::list l;
+  for (const auto& [ref, w] : c) {
+    py::dict t;
+    t["contact"] = ref.contact;
+    t["edge"] = edge_name(ref.edge);
+    t["weight"] = fraction(w);
+    l.append(t);
+  }
+  return l;
+}
+
+py::dict closure_certificate(const Closure_certificate& c) {
+  py::dict d;
+  d["wrenchkit_certificate"] = 1;
+  d["property"] = property_name(c.property);
+  d["holds"] = c.holds;
+  if (c.holds) {
+    d["combination"] = combination_list(c.combination);
+    py::list ind;
+    for (const Generator_ref& r : c.independent) {
+      py::dict t;
+      t["contact"] = r.contact;
+      t["edge"] = edge_name(r.edge);
+      ind.append(t);
+    }
+    d["independent"] = ind;
+  } else {
+    d["twist"] = triple(c.twist[0], c.twist[1], c.twist[2]);
+    d["reading"] = reading_dict(c.twist);
+  }
+  return d;
+}
+
+py::dict closure(const Py_scene& s, const std::string& mode) {
+  const Mode m = mode_of(mode);
+  const Closure_answer fc = decide_closure(s.scene, Property::force_closure, m);
+  const Closure_answer fo = decide_closure(s.scene, Property::form_closure, m);
+  if (!fc.decided || !fo.decided)
+    throw Undecided_exception{"the float twin could not certify " +
+                          std::string(!fc.decided ? (!fo.decided ? "force or form closure" : "force closure") : "form closure") +
+                          " of this scene (a predicate is within its error bound of zero); use mode hybrid or exact"};
+  const std::string fc_json = certificate_json(fc.certificate), fo_json = certificate_json(fo.certificate);
+  self_check(s, fc_json);
+  self_check(s, fo_json);
+  py::dict d;
+  d["force_closure"] = fc.holds;
+  d["form_closure"] = fo.holds;
+  py::dict rank, gens;
+  rank["force"] = fc.rank;
+  rank["form"] = fo.rank;
+  gens["force"] = fc.generators;
+  gens["form"] = fo.generators;
+  d["rank"] = rank;
+  d["generators"] = gens;
+  d["mode"] = mode;
+  const std::string x = fc.decided_by(), y = fo.decided_by();
+  d["decided_by"] = x == y ? x : "hybrid";
+  d["certificate"] = closure_certificate(fc.certificate);
+  d["form_certificate"] = closure_certificate(fo.certificate);
+  d["certificate_json"] = fc_json;
+  d["form_certificate_json"] = fo_json;
+  return d;
+}
+
+py::dict equilibrium(const Py_scene& s, const std::string& mode) {
+  const Equilibrium_answer a = decide_equilibrium(s.scene, mode_of(mode));
+  if (!a.decided)
+    throw Undecided_exception{"the float twin could not certify equilibrium of this scene (a predicate is "
+                          "within its error bound of zero, or the contact wrenches have rank < 3); use mode hybrid or exact"};
+  const std::string cert = certificate_json(a.certificate);
+  self_check(s, cert);
+  py::dict c;
+  c["wrenchkit_certificate"] = 1;
+  c["property"] = "equilibrium";
+  c["holds"] = a.balanced;
+  if (a.balanced) c["combination"] = combination_list(a.certificate.combination);
+  else {
+    c["twist"] = triple(a.certificate.twist[0], a.certificate.twist[1], a.certificate.twist[2]);
+    c["reading"] = reading_dict(a.certificate.twist);
+  }
+  py::dict d;
+  d["balanced"] = a.balanced;
+  d["load"] = triple(a.load.fx, a.load.fy, a.load.m);
+  d["generators"] = a.generators;
+  d["mode"] = mode;
+  d["decided_by"] = a.decided_by();
+  d["certificate"] = c;
+  d["certificate_json"] = cert;
+  return d;
+}
+
+py::dict region(const Region& r) {
+  py::dict d;
+  d["empty"] = r.empty();
+  d["shape"] = shape_name(r.shape);
+  py::list v, dirs;
+  for (const Vec2& p : r.vertices) v.append(point(p));
+  for (const Vec2& p : r.directions) dirs.append(point(p));
+  d["vertices"] = v;
+  d["directions"] = dirs;
+  return d;
+}
+
+py::list infinity(const Cone2& c) {
+  py::list l;
+  using S = Cone2::Shape;
+  switch (c.shape) {
+    case S::zero: break;
+    case S::ray:
+    case S::line:
+      for (const Vec2& d : c.extreme) {
+        py::dict x;
+        x["direction"] = point(d);
+        l.append(x);
+      }
+      break;
+    case S::wedge: {
+      py::dict x;
+      x["from"] = point(c.extreme[0]);
+      x["to"] = point(c.extreme[1]);
+      l.append(x);
+      break;
+    }
+    case S::half_plane: {
+      py::dict x;
+      x["from"] = point(c.extreme[0]);
+      x["to"] = point(c.extreme[2]);
+      l.append(x);
+      break;
+    }
+    case S::plane: {
+      py::dict x;
+      x["from"] = py::make_tuple(fraction(1), fraction(0));
+      x["to"] = py::make_tuple(fraction(1), fraction(0));
+      x["full"] = true;
+      l.append(x);
+      break;
+    }
+  }
+  return l;
+}
+
+py::list both(const Both_set& b) {
+  py::list l;
+  py::dict x;
+  switch (b.kind) {
+    case Both_set::Kind::none: return l;
+    case Both_set::Kind::point: x["point"] = point(b.point); break;
+    case Both_set::Kind::line: {
+      py::dict line;
+      line["through"] = point(b.point);
+      line["direction"] = point(b.direction);
+      x["line"] = line;
+      break;
+    }
+    case Both_set::Kind::plane: x["plane"] = true; break;
+  }
+  l.append(x);
+  return l;
+}
+
+Reading reading_of_text(const std::string& r) {
+  if (r == "friction") return Reading::friction;
+  if (r == "frictionless") return Reading::frictionless;
+  throw Input_error("reading: \"" + r + "\" is not one of friction, frictionless");
+}
+
+py::dict labels(const Py_scene& s, const std::string& reading) {
+  const Reading rd = reading_of_text(reading);
+  const Moment_labels l = moment_labels(s.scene, rd);
+  py::dict d;
+  d["reading"] = reading;
+  d["rank"] = l.cone.rank;
+  d[rd == Reading::friction ? "force_closure" : "form_closure"] = l.cone.force_closure();
+  d["plus"] = region(l.plus);
+  d["minus"] = region(l.minus);
+  d["both"] = both(l.both);
+  d["infinity"] = infinity(l.infinity);
+  if (s.scene.load && rd == Reading::friction) {
+    const Vec3 w = as_vec(load_wrench(s.scene));
+    py::dict ld;
+    ld["wrench"] = triple(w);
+    ld["balanced"] = in_cone(l.cone, {-w[0], -w[1], -w[2]});
+    d["load"] = ld;
+  }
+  return d;
+}
+
+py::object dual_point_obj(const Dual_point& p) {
+  py::dict d;
+  if (p.sheet == 'i') {
+    d["sheet"] = "infinity";
+    d["direction"] = point(p.at);
+  } else if (p.sheet == '0') {
+    d["sheet"] = "zero";
+  } else {
+    d["sheet"] = std::string(1, p.sheet);
+    d["point"] = point(p.at);
+  }
+  return d;
+}
+
+py::dict dual(const Py_scene& s) {
+  std::vector<Generator> gens = generators(s.scene, Reading::friction);
+  std::vector<Wrench> w;
+  for (const Generator& g : gens) w.push_back(g.w);
+  const Moment_labels l = moment_labels(w);
+  const Force_dual f = force_dual(l, w);
+  py::dict d;
+  d["covers_all"] = f.covers_all;
+  d["plus_region"] = region(f.plus_sheet);
+  d["minus_region"] = region(f.minus_sheet);
+  d["infinity"] = infinity(f.infinity);
+  py::list g;
+  for (std::size_t i = 0; i < gens.size(); ++i) {
+    py::dict x;
+    x["contact"] = gens[i].contact;
+    x["edge"] = edge_name(gens[i].edge);
+    x["dual"] = dual_point_obj(f.generators[i]);
+    g.append(x);
+  }
+  d["generators"] = g;
+  if (f.reference) {
+    py::dict r;
+    r["point"] = point(*f.reference);
+    r["polygon"] = region(f.about_reference);
+    d["reference"] = r;
+  } else {
+    d["reference"] = py::none();
+  }
+  return d;
+}
+
+py::dict face(const Ls_face& f) {
+  py::dict d;
+  d["dimension"] = f.dimension;
+  py::list v;
+  for (const Vec3q& x : f.vertices) v.append(triple(x));
+  d["vertices"] = v;
+  return d;
+}
+
+py::dict polytope(const Ls_polytope& P) {
+  py::dict d;
+  d["dimension"] = P.dimension;
+  d["facets"] = P.facets.size();
+  d["vertices"] = P.vertices.size();
+  d["edges"] = P.edges;
+  return d;
+}
+
+const Support& support_of(const Py_scene& s, const char* what) {
+  if (!s.scene.support)
+    throw Input_error(s.source + ": support: the scene has no \"support\" (" + what + " needs one)");
+  return *s.scene.support;
+}
+
+int checked_sides(int sides) {
+  if (sides < 4 || sides % 2 != 0 || sides > kMaxSides)
+    throw Input_error("sides: " + std::to_string(sides) + " must be even and between 4 and " + std::to_string(kMaxSides));
+  return sides;
+}
+
+Vec3q nonzero_twist(const std::vector<std::string>& t) {
+  const Vec3q q = vec3(t, "twist");
+  if (q[0] == 0 && q[1] == 0 && q[2] == 0) throw Input_error("twist: the zero twist (no motion, no load)");
+  return q;
+}
+
+py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::string>& tolerance,
+                       const std::optional<std::vector<std::string>>& twist,
+                       const std::optional<std::vector<std::string>>& load) {
+  const Support& sup = support_of(s, "limit_surface");
+  if (tolerance) {
+    const Rational e = number(*tolerance, "tolerance");
+    if (e <= 0) throw Input_error("tolerance: \"" + *tolerance + "\" must be > 0");
+    sides = smallest_sides(e, kMaxSides);
+    if (sides == 0)
+      throw Input_error("tolerance: " + *tolerance + " needs more than " + std::to_string(kMaxSides) + " sides");
+  }
+  checked_sides(sides);
+  std::optional<Vec3q> q, p;
+  if (twist) q = nonzero_twist(*twist);
+  if (load) p = vec3(*load, "load");
+  const Polygonal_ls model(merge_support(sup), make_directions(sides));
+  if (model.candidate_count() > kMaxCandidates)
+    throw Input_error("sides: " + std::to_string(sides) + " with " + std::to_string(model.support().points.size()) +
+                      " distinct support points needs " + std::to_string(model.candidate_count()) +
+                      " candidate normals, more than the limit " + std::to_string(kMaxCandidates) + "; use fewer sides");
+  const Ls_polytope in = model.build(Side::inner), out = model.build(Side::outer);
+  const Sliding_answer sa = compute_sliding(model, q);
+  std::optional<Rational> g_in, g_out;
+  Motion motion = Motion::undecided;
+  if (p) {
+    g_in = model.gauge(in, Side::inner, *p);
+    g_out = model.gauge(out, Side::outer, *p);
+    motion = classify_load(g_in, g_out);
+  }
+  py::dict d;
+  d["sides"] = sides;
+  d["lambda_squared"] = fraction(model.directions().lambda_sq);
+  d["dimension"] = model.dimension();
+  d["center_of_friction"] = point(sa.center_of_friction);
+  d["mu_f0"] = fraction(sa.mu_f0);
+  d["inner"] = polytope(in);
+  d["outer"] = polytope(out);
+  if (q) {
+    d["twist"] = triple(*q);
+    d["h_inner"] = fraction(sa.h_inner);
+    d["h_outer"] = fraction(sa.h_outer);
+    d["inner_load"] = face(sa.inner_face);
+    d["outer_load"] = face(sa.outer_face);
+  }
+  if (p) {
+    d["load"] = triple(*p);
+    d["motion"] = motion_name(motion);
+    py::dict g;
+    g["inner"] = g_in ? fraction(*g_in) : py::none();
+    g["outer"] = g_out ? fraction(*g_out) : py::none();
+    d["gauge"] = g;
+  }
+  return d;
+}
+
+py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>>& twist, int sides) {
+  const Support& sup = support_of(s, "sliding");
+  checked_sides(sides);
+  std::optional<Vec3q> q;
+  if (twist) q = nonzero_twist(*twist);
+  const Polygonal_ls model(merge_support(sup), make_directions(sides));
+  const Sliding_answer a = compute_sliding(model, q);
+  py::dict d;
+  d["center_of_friction"] = point(a.center_of_friction);
+  d["friction_centroid"] = point(a.friction_centroid);
+  d["mu_f0"] = fraction(a.mu_f0);
+  if (a.has_twist) {
+    const char* kinds[] = {"facet", "vertex", "smooth"};
+    d["twist"] = triple(a.twist);
+    d["motion"] = a.translation ? "translation" : "rotation";
+    if (a.translation) {
+      d["load_direction"] = triple(a.load_direction);
+      d["speed_squared"] = fraction(a.speed_squared);
+      d["load"] = a.load ? py::object(triple(*a.load)) : py::object(py::none());
+    } else {
+      d["rotation_center"] = point(a.rotation_center);
+    }
+    d["true_surface"] = kinds[static_cast<int>(a.cls.kind)];
+    d["true_surface_text"] = a.cls.text;
+    d["sides"] = sides;
+    d["lambda_squared"] = fraction(model.directions().lambda_sq);
+    d["h_inner"] = fraction(a.h_inner);
+    d["h_outer"] = fraction(a.h_outer);
+    d["power_bracket"] = py::make_tuple(fraction(a.h_lo), fraction(a.h_hi));
+    d["load_box"] = py::make_tuple(triple(a.load_lo), triple(a.load_hi));
+    d["inner_load"] = face(a.inner_face);
+    d["outer_load"] = face(a.outer_face);
+  }
+  return d;
+}
+
+py::dict check(const Py_scene& s, const std::string& certificate) {
+  const auto r = wrenchkit_checker::check(s.text, certificate);
+  if (r.outcome == wrenchkit_checker::Outcome::bad_scene) throw Input_error(r.message);
+  py::dict d;
+  d["accepted"] = r.outcome == wrenchkit_checker::Outcome::accepted;
+  d["reason"] = r.outcome == wrenchkit_checker::Outcome::accepted ? std::string() : r.message;
+  return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "wrenchkit's native engine (use the wrenchkit package, not this module)";
+  m.def("_set_exceptions", [](py::object input, py::object internal, py::object undecided) {
+    g_input_error = input;
+    g_internal_error = internal;
+    g_undecided_error = undecided;
+  });
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const Input_error& e) {
+      PyErr_SetString(g_input_error.ptr(), e.what());
+    } catch (const Undecided_exception& e) {
+      PyErr_SetString(g_undecided_error.ptr(), e.message.c_str());
+    } catch (const std::invalid_argument& e) {
+      PyErr_SetString(g_input_error.ptr(), e.what());
+    } catch (const std::length_error& e) {
+      PyErr_SetString(g_input_error.ptr(), e.what());
+    } catch (const std::runtime_error& e) {
+      PyErr_SetString(g_internal_error.ptr(), e.what());
+    } catch (const std::logic_error& e) {
+      PyErr_SetString(g_internal_error.ptr(), (std::string("internal error (please report): ") + e.what()).c_str());
+    }
+  });
+  py::class_<Py_scene>(m, "_Scene")
+      .def_readonly("text", &Py_scene::text)
+      .def_readonly("source", &Py_scene::source)
+      .def_property_readonly("name", [](const Py_scene& s) { return s.scene.name; })
+      .def_property_readonly("contacts", [](const Py_scene& s) { return s.scene.contacts.size(); })
+      .def_property_readonly("has_load", [](const Py_scene& s) { return s.scene.load.has_value(); })
+      .def_property_readonly("has_support", [](const Py_scene& s) { return s.scene.support.has_value(); });
+  m.def("read", &read_text, py::arg("text"), py::arg("source"), py::arg("limits"));
+  m.def("closure", &closure);
+  m.def("equilibrium", &equilibrium);
+  m.def("labels", &labels);
+  m.def("dual", &dual);
+  m.def("limit_surface", &limit_surface);
+  m.def("sliding", &sliding);
+  m.def("check", &check);
+}

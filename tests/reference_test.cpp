@@ -1,0 +1,378 @@
+// The reference corpus for other implementations (docs/reference-format.md): the shared scene
+// families [ST-1], the boundary measure [RF-1], and `wrenchkit reference` / `wrenchkit compare` end to
+// end — deterministic bytes, every certificate accepted by the independent checker, every answer
+// re-derived by brute force, disagreements and bad input reported as documented.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "exact/boundary_distance.h"
+#include "exact/equilibrium.h"
+#include "exact/generators.h"
+#include "exact/json.h"
+#include "exact/scene_writer.h"
+#include "exact/stress_families.h"
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Cli_result;
+
+// ---- [ST-1] the scene families -------------------------------------------------------------------
+
+TEST(StressFamilies, SameSeedSameBytesAndPinnedText) {
+  for (const stress::Family& f : stress::families()) {
+    const auto a = stress::make_scene(f.name, 1e-10, 42), b = stress::make_scene(f.name, 1e-10, 42);
+    EXPECT_EQ(a.text, b.text) << f.name;
+    EXPECT_NO_THROW(read_scene(a.text, Input_limits{})) << f.name << "\n" << a.text;
+  }
+  // The bytes are pinned: the corpus must be reproducible on every platform and every version
+  // (mt19937_64 and IEEE +, −, ×, ÷ only). A change here changes every corpus: bump its version.
+  EXPECT_EQ(stress::make_scene("friction_threshold", 1e-10, 42).text,
+            "{\"wrenchkit\": 1, \"contacts\": [{\"at\": [2.0327902363446251, -3.5313974184334911], \"normal\": "
+            "[0.21175149048427691, 0.97732354227128249], \"mu\": 0.36430443649765815}, {\"at\": "
+            "[1.8884984244502627, -2.4769318687360808], \"normal\": [-0.21175149048427691, -0.97732354227128249], "
+            "\"mu\": 0.36430443649765815}]}");
+  EXPECT_EQ(stress::make_scene("ladder_equilibrium", 1e-6, 1).text.find("\"mu\": \"999999/7000000\"") !=
+                std::string::npos ||
+            stress::make_scene("ladder_equilibrium", 1e-6, 1).text.find("\"mu\": \"1000001/7000000\"") !=
+                std::string::npos,
+            true);
+}
+
+TEST(StressFamilies, UnknownFamilyAndBadEpsilonThrow) {
+  EXPECT_THROW(stress::make_scene("no_such_family", 1e-3, 1), std::invalid_argument);
+  EXPECT_THROW(stress::make_scene("cone_edge", 0, 1), std::invalid_argument);
+  EXPECT_THROW(stress::make_scene("cone_edge", 2, 1), std::invalid_argument);
+  EXPECT_NO_THROW(stress::make_scene("random_grid", 0, 1));  // random families ignore ε
+}
+
+TEST(StressFamilies, NearDegenerateFamiliesLandOnTheStatedSide) {
+  // friction_threshold: closure iff above (μ = μ*(1 + ε)); ε large enough that rounding cannot flip it.
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const auto s = stress::make_scene("friction_threshold", 1e-6, seed);
+    EXPECT_EQ(decide_closure(read_scene(s.text, Input_limits{}), Property::force_closure).holds, s.above) << s.text;
+    const auto l = stress::make_scene("ladder_equilibrium", 1e-30, seed);  // exact fractions: any ε
+    EXPECT_EQ(decide_equilibrium(read_scene(l.text, Input_limits{})).balanced, l.above) << l.text;
+  }
+}
+
+// ---- [RF-1] the boundary measure -------------------------------------------------------------------
+
+TEST(BoundaryDistance, FrictionScaleBracketsTheThreshold) {
+  // Two fingers at y = 1/2 and y = 1, d = (1, 1/2): closure iff μ > 1/2. At μ = 1/2·(1 + 10^-6) the flip
+  // is at s* = 1/(1 + 10^-6): the bracket must contain it and the distance be about 10^-6.
+  const std::string scene = test::scene_json({{"0", "1/2", "1", "0", "1000001/2000000"}, {"1", "1", "-1", "0", "1000001/2000000"}});
+  const Boundary_distance b = boundary_distance(read_scene(scene, Input_limits{}));
+  ASSERT_TRUE(b.closure_flip);
+  const Rational s_star = Rational(1000000, 1000001);
+  EXPECT_LT(b.closure_flip->lo, s_star);
+  EXPECT_GE(b.closure_flip->hi, s_star);
+  EXPECT_GT(b.closure_flip->distance, 0.9e-6);
+  EXPECT_LT(b.closure_flip->distance, 1.1e-6);
+  ASSERT_TRUE(b.distance);
+  EXPECT_LE(*b.distance, b.closure_flip->distance);
+}
+
+TEST(BoundaryDistance, ExactlyAtTheLadderThresholdIsWithin2ToMinus160) {
+  const std::string text = test::read_text(test::source_dir() + "/tests/golden/equilibrium/ladder_mu_1_7_gravity.scene.json");
+  const Boundary_distance b = boundary_distance(read_scene(text, Input_limits{}));
+  ASSERT_TRUE(b.equilibrium_flip);
+  EXPECT_EQ(b.equilibrium_flip->hi, 1);  // balanced at μ = 1/7 exactly, not below
+  EXPECT_LT(b.equilibrium_flip->distance, 1e-48);
+  EXPECT_EQ(b.nearest, "friction_scale");
+}
+
+TEST(BoundaryDistance, DeterminantMeasureFollowsEpsilonAndIgnoresPlacement) {
+  // nearly_concurrent at ε: the smallest deciding determinant is about ε (the family's geometry), and
+  // the same scene moved by 10^6 and scaled by 10^3 measures the same (the scene's own frame).
+  for (double eps : {1e-4, 1e-8, 1e-12}) {
+    const auto s = stress::make_scene("nearly_concurrent", eps, 7);
+    const Boundary_distance b = boundary_distance(read_scene(s.text, Input_limits{}));
+    ASSERT_TRUE(b.form.min_relative);
+    EXPECT_GT(*b.form.min_relative, eps / 100) << s.text;
+    EXPECT_LT(*b.form.min_relative, eps * 100) << s.text;
+  }
+  const std::string near = test::scene_json({{"1", "0", "0", "1", "0"}, {"0", "1", "1", "0", "0"},
+                                             {"3", "3.000000001", "-1", "-1", "0"}, {"2", "4", "0", "-1", "0"}});
+  const std::string moved = test::scene_json({{"1000001000", "2000000000", "0", "1", "0"}, {"1000000000", "2000001000", "1", "0", "0"},
+                                              {"1000003000", "2000003000.000001", "-1", "-1", "0"}, {"1000002000", "2000004000", "0", "-1", "0"}});
+  const auto a = boundary_distance(read_scene(near, Input_limits{}));
+  const auto b = boundary_distance(read_scene(moved, Input_limits{}));
+  ASSERT_TRUE(a.form.min_relative && b.form.min_relative);
+  EXPECT_NEAR(*a.form.min_relative / *b.form.min_relative, 1.0, 1e-6);
+}
+
+TEST(BoundaryDistance, ExactDegeneraciesAreCountedAndFrictionlessHasNoScale) {
+  // Vertical walls squeeze: parallel frictionless walls, exactly degenerate determinants.
+  const std::string text = test::read_text(test::source_dir() + "/tests/golden/vertical_walls_squeeze.scene.json");
+  const Boundary_distance b = boundary_distance(read_scene(text, Input_limits{}));
+  EXPECT_GT(b.exact_zeros(), 0u);
+  EXPECT_FALSE(b.closure_flip);
+}
+
+// ---- wrenchkit reference / compare ------------------------------------------------------------------
+
+fs::path scratch() { return test::scratch_dir("reference_test"); }
+Cli_result run(const std::string& args, const std::string& in = "") {
+  return test::run_cli(WRENCHKIT_CLI, "", args, in, "reference_test");
+}
+
+std::map<std::string, std::string> files_of(const fs::path& dir) {
+  std::map<std::string, std::string> m;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) m[fs::relative(e.path(), dir).string()] = test::read_text(e.path().string());
+  return m;
+}
+
+// JSON text of a DOM value (numbers keep their text): the certificates as the checker reads them.
+std::string text_of(const json::Value& v) {
+  switch (v.type) {
+    case json::Type::null: return "null";
+    case json::Type::boolean: return v.boolean ? "true" : "false";
+    case json::Type::number: return v.text;
+    case json::Type::string: return json::quote(v.text);
+    case json::Type::array: {
+      std::string s = "[";
+      for (std::size_t i = 0; i < v.items.size(); ++i) s += (i ? ", " : "") + text_of(v.items[i]);
+      return s + "]";
+    }
+    case json::Type::object: {
+      std::string s = "{";
+      for (std::size_t i = 0; i < v.members.size(); ++i)
+        s += (i ? ", " : "") + json::quote(v.members[i].first) + ": " + text_of(v.members[i].second);
+      return s + "}";
+    }
+  }
+  return "";
+}
+
+class Corpus : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = (scratch() / "corpus").string();
+    fs::remove_all(dir_);
+    const Cli_result r = run("reference --out '" + dir_ + "'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::istringstream in(test::read_text(dir_ + "/reference.jsonl"));
+    for (std::string line; std::getline(in, line);) lines_.push_back(json::parse(line, Input_limits{}, "corpus"));
+  }
+  static std::string dir_;
+  static std::vector<json::Value> lines_;
+};
+std::string Corpus::dir_;
+std::vector<json::Value> Corpus::lines_;
+
+TEST_F(Corpus, SameBytesOnEveryRun) {
+  const std::string again = (scratch() / "again").string();
+  fs::remove_all(again);
+  const Cli_result r = run("reference --out '" + again + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto a = files_of(dir_), b = files_of(again);
+  EXPECT_GT(a.size(), 300u);
+  EXPECT_TRUE(a == b) << "two runs of wrenchkit reference differ";
+  // Modest by default: a few MB at most.
+  EXPECT_LT(fs::file_size(dir_ + "/reference.jsonl"), 3u << 20);
+}
+
+TEST_F(Corpus, HoldsEveryKindOfScene) {
+  std::map<std::string, int> families;
+  int with_load = 0, with_support = 0;
+  for (const json::Value& v : lines_) {
+    ++families[v.find("family")->text];
+    with_load += v.find("equilibrium") != nullptr;
+    with_support += v.find("limit_surface") != nullptr;
+  }
+  for (const char* f : {"golden", "friction_threshold", "cone_edge", "nearly_concurrent", "nearly_parallel", "huge_offset",
+                        "ladder_equilibrium", "random_generic", "random_grid"})
+    EXPECT_GT(families[f], 0) << f;
+  EXPECT_GT(with_load, 50);
+  EXPECT_GT(with_support, 20);
+}
+
+TEST_F(Corpus, EveryCertificateIsAcceptedByTheIndependentChecker) {
+  std::size_t checked = 0;
+  for (const json::Value& v : lines_) {
+    const std::string scene = text_of(*v.find("scene"));
+    for (const auto& [what, cert] : v.find("certificates")->members) {
+      EXPECT_TRUE(test::checker_accepts(scene, text_of(cert))) << v.find("id")->text << " " << what;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 700u);
+}
+
+TEST_F(Corpus, SceneFilesAreCanonicalAndMatchTheLines) {
+  for (const json::Value& v : lines_) {
+    const std::string file = test::read_text(dir_ + "/" + v.find("scene_file")->text);
+    const Scene from_file = read_scene(file, Input_limits{});
+    EXPECT_EQ(write_scene(from_file), file) << v.find("id")->text;
+    EXPECT_EQ(write_scene(read_scene(text_of(*v.find("scene")), Input_limits{})), file) << v.find("id")->text;
+  }
+}
+
+TEST_F(Corpus, AnswersAgreeWithBruteForce) {
+  // Independent re-derivation (tests/test_support: O(k³) brute force over the generators, Carathéodory
+  // for the load), not the engine's dual cone.
+  for (const json::Value& v : lines_) {
+    const std::string id = v.find("id")->text;
+    const Scene s = read_scene(text_of(*v.find("scene")), Input_limits{});
+    std::vector<Wrench> fr, fl;
+    for (const Generator& g : generators(s, Reading::friction)) fr.push_back(g.w);
+    for (const Generator& g : generators(s, Reading::frictionless)) fl.push_back(g.w);
+    EXPECT_EQ(test::brute_force_closure(fr), v.find("force_closure")->boolean) << id;
+    EXPECT_EQ(test::brute_force_closure(fl), v.find("form_closure")->boolean) << id;
+    if (const json::Value* eq = v.find("equilibrium")) {
+      const Wrench w = load_wrench(s);
+      EXPECT_EQ(test::brute_force_in_cone(fr, {-w.fx, -w.fy, -w.m}), eq->boolean) << id;
+    }
+  }
+}
+
+TEST_F(Corpus, GoldenAndFamilyFieldsAreAsDocumented) {
+  int goldens = 0;
+  for (const json::Value& v : lines_) {
+    const std::string family = v.find("family")->text;
+    const json::Value& b = *v.find("boundary");
+    if (family == "golden") {
+      ++goldens;
+      EXPECT_EQ(v.find("epsilon")->type, json::Type::null);
+      EXPECT_TRUE(fs::exists(test::source_dir() + "/" + v.find("source")->text)) << v.find("source")->text;
+    } else if (family.rfind("random", 0) != 0) {
+      EXPECT_EQ(v.find("epsilon")->text, b.find("epsilon")->text);
+    }
+    if (const json::Value* ls = v.find("limit_surface")) {
+      for (const json::Value& t : ls->find("twists")->items) {
+        const Rational lo(t.find("power_bracket")->items[0].text), hi(t.find("power_bracket")->items[1].text);
+        const Rational in(t.find("h_inner")->text), out(t.find("h_outer")->text);
+        EXPECT_LE(lo, hi);
+        EXPECT_LE(in, hi);  // h_in ≤ h ≤ h_out
+        EXPECT_GE(out, lo);
+      }
+    }
+  }
+  EXPECT_GE(goldens, 60);
+}
+
+TEST_F(Corpus, CompareAgreesWithItsOwnVerdicts) {
+  Cli_result r = run("compare '" + dir_ + "' '" + dir_ + "/expected.csv'");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("every given answer agrees"), std::string::npos) << r.out;
+  // The same as JSON lines, with numbers: the corpus' own centre of friction and powers (as decimals
+  // within tolerance), and labels.
+  std::string jsonl;
+  for (const json::Value& v : lines_) {
+    jsonl += "{\"id\": " + json::quote(v.find("id")->text) + ", \"force_closure\": " + text_of(*v.find("force_closure"));
+    if (const json::Value* ls = v.find("limit_surface")) {
+      jsonl += ", \"center_of_friction\": " + text_of(*ls->find("center_of_friction")) + ", \"power\": [";
+      const auto& tw = ls->find("twists")->items;
+      for (std::size_t i = 0; i < tw.size(); ++i)
+        jsonl += (i ? ", " : "") + stress::number_text(Rational(tw[i].find("power_bracket")->items[0].text).get_d());
+      jsonl += "]";
+    }
+    const json::Value& plus = *v.find("labels")->find("plus");
+    jsonl += ", \"labels\": {\"plus\": {\"empty\": " + text_of(*plus.find("empty")) + ", \"vertices\": " +
+             text_of(*plus.find("vertices")) + "}}}\n";
+  }
+  r = run("compare --json '" + dir_ + "' -", jsonl);
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("\"agree\": true"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"power\": {\"compared\": "), std::string::npos) << r.out;
+}
+
+TEST_F(Corpus, CompareReportsADisagreementWithItsScene) {
+  // Flip one verdict far from any boundary and one near it: exit 1, both named, far one first.
+  std::string csv = test::read_text(dir_ + "/expected.csv");
+  auto flip = [&](const std::string& id) {
+    const std::size_t at = csv.find("\n" + id + ",") + 1;
+    const std::size_t comma = csv.find(',', at) + 1;
+    const bool was_true = csv.compare(comma, 4, "true") == 0;
+    csv.replace(comma, was_true ? 4 : 5, was_true ? "false" : "true");
+  };
+  flip("golden.two_finger_y1_2_mu1_10");
+  flip("friction_threshold.1e-16.0");
+  const fs::path answers = scratch() / "flipped.csv";
+  std::ofstream(answers) << csv;
+  const Cli_result r = run("compare '" + dir_ + "' '" + answers.string() + "'");
+  EXPECT_EQ(r.code, 1) << r.err;
+  const std::size_t far = r.out.find("golden.two_finger_y1_2_mu1_10"), near = r.out.find("friction_threshold.1e-16.0");
+  ASSERT_NE(far, std::string::npos) << r.out;
+  ASSERT_NE(near, std::string::npos) << r.out;
+  EXPECT_LT(far, near) << r.out;
+  EXPECT_NE(r.out.find("2 disagreements: 1 far from any degenerate boundary"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("scenes/friction_threshold.1e-16.0.json"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("eps 1e-16"), std::string::npos) << r.out;
+  const Cli_result j = run("compare --json '" + dir_ + "' '" + answers.string() + "'");
+  EXPECT_EQ(j.code, 1);
+  EXPECT_NE(j.out.find("\"near_boundary\": 1, \"far_from_boundary\": 1, \"agree\": false"), std::string::npos) << j.out;
+}
+
+TEST_F(Corpus, CompareBadInputNamesLineAndField) {
+  struct Case {
+    std::string name, text, message;
+  };
+  const std::vector<Case> cases = {
+      {"a.jsonl", "{\"id\": \"golden.ladder_mu_1_7\", \"force_closure\": false}\n{\"id\": \"nope\"}\n",
+       "a.jsonl:2: id: \"nope\" is not in the corpus"},
+      {"b.jsonl", "\n{\"id\": \"golden.ladder_mu_1_7\", \"force_closure\": \"no\"}\n",
+       "b.jsonl:2: force_closure: \"no\" is not true, false or null"},
+      {"c.jsonl", "{\"id\": \"golden.ladder_mu_1_7\", \"forceclosure\": true}\n", "c.jsonl:1: \"forceclosure\": unknown field"},
+      {"d.jsonl", "{\"id\": \"golden.ladder_mu_1_7\",\n", "d.jsonl:1:"},
+      {"e.jsonl", "{\"id\": \"golden.ladder_mu_1_7\"}\n{\"id\": \"golden.ladder_mu_1_7\"}\n", "e.jsonl:2: id: \"golden.ladder_mu_1_7\" is answered twice"},
+      {"f.csv", "id,force_closure,grip\n", "f.csv:1: column 3: \"grip\" is not one of"},
+      {"g.csv", "id,force_closure\ngolden.ladder_mu_1_7,maybe\n", "g.csv:2: force_closure: \"maybe\" is not true, false, 1, 0 or empty"},
+      {"h.csv", "id,force_closure\ngolden.ladder_mu_1_7\n", "h.csv:2: 1 cells, the header has 2"},
+      {"i.jsonl", "{\"id\": \"golden.ladder_mu_1_7\", \"equilibrium\": true}\n", "i.jsonl:1: equilibrium: scene \"golden.ladder_mu_1_7\" has no load"},
+      {"j.jsonl", "{\"id\": \"golden.limit_surface.barbell\", \"power\": [1, 2]}\n", "j.jsonl:1: power: 2 values, the scene has 5 twists"},
+  };
+  for (const Case& c : cases) {
+    const fs::path p = scratch() / c.name;
+    std::ofstream(p) << c.text;
+    const Cli_result r = run("compare '" + dir_ + "' '" + p.string() + "'");
+    EXPECT_EQ(r.code, 2) << c.name << ": " << r.out;
+    EXPECT_TRUE(r.out.empty()) << c.name;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.name << ": " << r.err;
+  }
+  EXPECT_EQ(run("compare '" + dir_ + "'").code, 2);
+  EXPECT_EQ(run("compare --rtol -1 '" + dir_ + "' x.jsonl").code, 2);
+}
+
+TEST(ReferenceCli, RefusesADirectoryThatIsNotACorpusAndWritesNothingOnError) {
+  const fs::path d = scratch() / "precious";
+  fs::remove_all(d);
+  fs::create_directories(d);
+  std::ofstream(d / "thesis.tex") << "do not delete";
+  const Cli_result r = run("reference --out '" + d.string() + "'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("holds no wrenchkit reference corpus"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(d / "thesis.tex"));
+  EXPECT_FALSE(fs::exists(d / "reference.jsonl"));
+  EXPECT_EQ(run("reference").code, 2);
+  EXPECT_EQ(run("reference --out x --sides 5").code, 2);
+  EXPECT_EQ(run("reference --out x --cases lots").code, 2);
+  const Cli_result h = run("reference --help");
+  EXPECT_EQ(h.code, 0);
+  EXPECT_NE(h.out.find("--out DIR"), std::string::npos);
+}
+
+TEST(ReferenceCli, SmallCorpusReplacesAnEarlierOne) {
+  const fs::path d = scratch() / "small";
+  fs::remove_all(d);
+  Cli_result r = run("reference --out '" + d.string() + "' --cases 1 --random 3 --seed 5 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"command\": \"reference\""), std::string::npos) << r.out;
+  r = run("reference --out '" + d.string() + "' --cases 0 --random 1 --seed 5");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string manifest = test::read_text((d / "manifest.json").string());
+  EXPECT_NE(manifest.find("\"cases\": 0, \"random\": 1"), std::string::npos) << manifest;
+  EXPECT_FALSE(fs::exists(d.string() + ".tmp-wrenchkit"));
+}
+
+}  // namespace
+}  // namespace wrenchkit
