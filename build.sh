@@ -9,12 +9,15 @@
 #   ./build.sh build   install and build only
 #   ./build.sh stability   regenerate docs/stability.md (near-degenerate stress report)
 #   ./build.sh gallery     regenerate the pictures of docs/gallery.md
+#   ./build.sh bench       run the benchmark suite (2–5 min) and regenerate docs/benchmarks.md + plots
 # Environment: BUILD_DIR (default build), JOBS (default: number of cores), CXX (compiler).
 set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(g++ cmake ninja-build ccache libgmp-dev libgtest-dev librapidcheck-dev clang libclang-rt-14-dev
           pybind11-dev python3-dev python3-pytest python3-scipy)
+# The benchmark suite and its peers (bench/; built and smoke-tested by `test` so it never rots).
+PACKAGES+=(libbenchmark-dev libqhull-dev libcdd-dev libglpk-dev libcgal-dev)
 
 install_packages() {
   local missing=()
@@ -31,7 +34,7 @@ install_packages() {
 
 build() {
   local dir="${BUILD_DIR:-build}"
-  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWRENCHKIT_WERROR=ON >/dev/null
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWRENCHKIT_WERROR=ON -DWRENCHKIT_BUILD_BENCH=ON >/dev/null
   cmake --build "$dir" -j "${JOBS:-$(nproc)}"
 }
 
@@ -96,8 +99,18 @@ case "${1:-}" in
     build
     docs/gallery/make_gallery.sh "${BUILD_DIR:-build}"
     ;;
+  bench)
+    PACKAGES+=(python3)  # the report generator (standard library only)
+    install_packages
+    build
+    out="${BUILD_DIR:-build}/bench/results.json"
+    "${BUILD_DIR:-build}/bench/wrenchkit_bench" --benchmark_min_time=0.05 --benchmark_format=console \
+      --benchmark_out_format=json --benchmark_out="$out"
+    /usr/bin/python3 bench/make_report.py "$out" docs
+    echo "build.sh: wrote docs/benchmarks.md and docs/benchmarks/*.svg"
+    ;;
   *)
-    echo "usage: ./build.sh demo|test|build|fuzz [SECONDS]|stability|gallery" >&2
+    echo "usage: ./build.sh demo|test|build|fuzz [SECONDS]|stability|gallery|bench" >&2
     exit 2
     ;;
 esac

@@ -92,7 +92,7 @@ Closure_answer decide_closure(const Scene& scene, Property property, Mode mode, 
   a.mode = mode;
   Dual_cone dc;
   if (mode == Mode::exact) {
-    const Exact_kernel exact(lazy.wrenches());
+    const Exact_kernel exact(scene, reading_of(property));  // integer rows straight from the contacts
     const Counting_exact_kernel kernel{exact};
     dc = compute_dual_cone(kernel);
     a.predicates = a.exact_predicates = kernel.n;

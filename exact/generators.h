@@ -9,6 +9,7 @@
 #include "core/contact_generators.h"
 #include "core/sign.h"
 #include "exact/scene.h"
+#include "exact/wide_int.h"
 
 namespace wrenchkit {
 
@@ -27,25 +28,39 @@ Wrench wrench_at(const Vec2& p, const Vec2& f);
 std::vector<Generator> generators(const Scene& scene, Reading reading);
 
 // Exact predicate kernel for core/dual_cone.h over a list of nonzero wrenches. Each wrench is
-// replaced by its primitive integer multiple (a positive scaling: the cone is unchanged); signs
-// are computed in 128-bit integers when every coordinate is below 2^40 in magnitude (exact:
-// a 3×3 determinant is then below 6·2^120 < 2^127) and in GMP integers otherwise. Never uncertain.
+// replaced by a positive integer multiple (the cone is unchanged). Signs are
+// exact integer arithmetic in three tiers: __int128 when every entry of the rows involved is below
+// 2^40 (a 3×3 determinant is then below 6·2^120 < 2^127), the fixed-width Int192 of
+// exact/wide_int.h when below 2^62, GMP integers otherwise. Never uncertain, never floating point.
 // Zero rows are allowed (their determinants are zero); the dual-cone algorithm itself needs
 // nonzero generators, which scenes guarantee.
 class Exact_kernel {
  public:
   explicit Exact_kernel(const std::vector<Wrench>& wrenches);
+  // The rows of generators(scene, reading), in the same order, computed directly in integers from
+  // each contact's numerators and denominators when they are small (no rational arithmetic, no
+  // allocation), through the rationals otherwise. The same primitive rows either way.
+  // `extra`: rows appended after the generators (equilibrium's load).
+  Exact_kernel(const Scene& scene, Reading reading, const std::vector<Wrench>& extra = {});
   std::size_t size() const { return rows_.size(); }
   Sign cross_sign(std::size_t i, std::size_t j) const;          // zero iff parallel
   Sign det_sign(std::size_t i, std::size_t j, std::size_t k) const;
 
+  // Row i: a positive integer multiple of wrench i (for tests).
+  std::array<Integer, 3> row(std::size_t i) const;
+
  private:
   struct Row {
-    Integer v[3];
-    bool small = false;
-    std::int64_t s[3] = {0, 0, 0};
+    std::int64_t s[3] = {0, 0, 0};  // tier 0, 1
+    std::uint8_t tier = 0;          // 0: |entries| < 2^40; 1: ≤ 2^62 − 1; 2: larger (big_ only)
+    std::uint32_t big = 0;          // tier 2: index into big_
   };
+  void push_rational(const Rational in[3]);
+  void push_big(std::array<Integer, 3> v);
+  void load(std::size_t i, mpz_ptr out) const;
+  void push_int128(wide::i128 x, wide::i128 y, wide::i128 z);
   std::vector<Row> rows_;
+  std::vector<std::array<Integer, 3>> big_;
 };
 
 // The primitive integer vector positively parallel to a nonzero rational 3-vector.

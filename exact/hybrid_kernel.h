@@ -43,6 +43,13 @@ class Lazy_generators {
     return *gens_;
   }
   const std::vector<Wrench>& wrenches() const { return ws_ ? *ws_ : (get(), *ws_); }
+  // The exact kernel of the generators and the extra rows: built from the contacts' integers
+  // directly (Exact_kernel(scene, reading, extra): no rational generators) when a scene is behind
+  // them, else from the ready wrenches.
+  std::unique_ptr<Exact_kernel> kernel() const {
+    if (!scene_) return std::make_unique<Exact_kernel>(wrenches());
+    return std::make_unique<Exact_kernel>(*scene_, reading_, extra_);
+  }
 
  private:
   const Scene* scene_ = nullptr;
@@ -73,7 +80,7 @@ class Hybrid_kernel {
 
  private:
   const Exact_kernel& exact() const {
-    if (!e_) e_ = std::make_unique<Exact_kernel>(gens_.wrenches());
+    if (!e_) e_ = gens_.kernel();
     return *e_;
   }
   const fl::Float_kernel& f_;

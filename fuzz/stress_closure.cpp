@@ -1,7 +1,6 @@
 // Numerical-stability stress test of closure (docs/stability.md): families of scenes at a controlled
-// distance ε from a degenerate configuration (exact/stress_families.h [ST-1]), written as decimal
-// text as users write them. For
-// each family and ε: how often naive floating point (strtod + raw double signs) is wrong, how often
+// distance ε from a degenerate configuration, written as decimal text as users write them. For
+// each family and ε (fuzz/families.h): how often naive floating point (strtod + raw double signs) is wrong, how often
 // the certified twin abstains, and that the twin and hybrid are never wrong; times per query. The
 // truth is the exact engine (itself verified against brute force in tests/).
 //
@@ -18,58 +17,12 @@
 #include <string>
 #include <vector>
 
-#include "core/dual_cone.h"
-#include "exact/closure.h"
-#include "exact/equilibrium.h"
-#include "exact/stress_families.h"
-#include "float/closure_twin.h"
+#include "fuzz/families.h"
 
 namespace {
 
 using namespace wrenchkit;
-
-using stress::Contact_spec;
-using stress::Gravity_spec;
-
-// The families of exact/stress_families.h that have a distance ε (the random ones do not).
-std::vector<const stress::Family*> families() {
-  std::vector<const stress::Family*> out;
-  for (const stress::Family& f : stress::families())
-    if (f.uses_epsilon) out.push_back(&f);
-  return out;
-}
-
-// The naive reading of a scene: the doubles themselves (strtod of the same text gives them back),
-// and raw double signs (Naive_kernel), through the same generic algorithms as the twin.
-std::vector<fl::Bounded3> naive_generators(const std::vector<Contact_spec>& cs, Reading reading) {
-  std::vector<fl::Bounded_contact> b;
-  for (const Contact_spec& c : cs) {
-    fl::Bounded_contact k;
-    k.ax = fl::Bounded::exact(c.ax);
-    k.ay = fl::Bounded::exact(c.ay);
-    k.nx = fl::Bounded::exact(c.nx);
-    k.ny = fl::Bounded::exact(c.ny);
-    k.mu = fl::Bounded::exact(c.mu);
-    k.frictional = c.mu != 0;
-    b.push_back(k);
-  }
-  return fl::generators(b, reading);
-}
-
-bool naive_balanced(const std::vector<Contact_spec>& cs, const Gravity_spec& g) {
-  std::vector<fl::Bounded3> rows = naive_generators(cs, Reading::friction);
-  const std::size_t n = rows.size();
-  rows.push_back({fl::Bounded::exact(0), fl::Bounded::exact(-g.w), fl::Bounded::exact(-g.w * g.cx)});
-  const fl::Naive_kernel k(rows);
-  const Dual_cone dc = compute_dual_cone(First_rows<fl::Naive_kernel>{k, n});
-  if (dc.rank < 3) return false;  // naive code would not special-case it either; counts as a guess
-  return load_balanced(k, dc, n) == Sign::positive;
-}
-
-bool naive_closure(const std::vector<Contact_spec>& cs, Property p) {
-  const fl::Naive_kernel k(naive_generators(cs, reading_of(p)));
-  return compute_dual_cone(k).force_closure();
-}
+using families::Family;
 
 struct Row {
   std::string family;
@@ -82,7 +35,7 @@ double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-void write_svg(const std::vector<Row>& rows, const std::vector<const stress::Family*>& fams, const std::string& path) {
+void write_svg(const std::vector<Row>& rows, const std::vector<Family>& fams, const std::string& path) {
   // Error rate (%) against −log10 ε, one panel per family: naive wrong (red), twin undecided
   // (orange), twin wrong and hybrid wrong (blue, green: always on the zero line).
   const int W = 300, H = 200, pad = 40;
@@ -91,7 +44,7 @@ void write_svg(const std::vector<Row>& rows, const std::vector<const stress::Fam
     << "' font-family='sans-serif' font-size='10'>\n<rect width='100%' height='100%' fill='white'/>\n";
   for (std::size_t f = 0; f < fams.size(); ++f) {
     const int x0 = int(f) * W + pad, y0 = 20, w = W - pad - 10, h = H - 40;
-    s << "<text x='" << x0 << "' y='12' font-weight='bold'>" << fams[f]->name << "</text>\n";
+    s << "<text x='" << x0 << "' y='12' font-weight='bold'>" << fams[f].name << "</text>\n";
     s << "<rect x='" << x0 << "' y='" << y0 << "' width='" << w << "' height='" << h
       << "' fill='none' stroke='#888'/>\n";
     for (int pct : {0, 50, 100}) {
@@ -115,7 +68,7 @@ void write_svg(const std::vector<Row>& rows, const std::vector<const stress::Fam
     for (const Series& se : series) {
       s << "<polyline fill='none' stroke='" << se.color << "' stroke-width='2' points='";
       for (const Row& r : rows)
-        if (r.family == fams[f]->name) s << X(r.eps) << "," << y0 + h - h * se.rate(r) / 100.0 << " ";
+        if (r.family == fams[f].name) s << X(r.eps) << "," << y0 + h - h * se.rate(r) / 100.0 << " ";
       s << "'/>\n";
     }
   }
@@ -142,56 +95,38 @@ int main(int argc, char** argv) {
     }
   }
   const std::vector<double> epsilons = {1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-13, 1e-14, 1e-15, 1e-16, 1e-20, 1e-30, 1e-40};
-  const auto fams = families();
+  const std::vector<Family>& fams = families::all();
   std::vector<Row> rows;
   bool failed = false;
-  for (const stress::Family* family : fams) {
-    const stress::Family& fam = *family;
-    const bool equilibrium = fam.question == stress::Question::equilibrium;
-    const Property property =
-        fam.question == stress::Question::form_closure ? Property::form_closure : Property::force_closure;
+  for (const Family& fam : fams) {
     stress::Rng rng(seed);
     for (double eps : epsilons) {
       Row row;
       row.family = fam.name;
       row.eps = eps;
       for (int c = 0; c < cases; ++c) {
-        const stress::Family_scene fs = stress::make_scene(fam, eps, rng);
-        const std::vector<Contact_spec>& cs = fs.contacts;
-        const Gravity_spec& grav = fs.gravity;
-        const std::string& text = fs.text;
-        const Scene scene = read_scene(text, Input_limits{});
-        struct Verdict {
-          bool decided, holds;
-        };
-        auto decide = [&](Mode m) -> Verdict {
-          if (equilibrium) {
-            const Equilibrium_answer a = decide_equilibrium(scene, m, false);
-            return {a.decided, a.balanced};
-          }
-          const Closure_answer a = decide_closure(scene, property, m, false);
-          return {a.decided, a.holds};
-        };
+        const families::Case k = families::make_case(fam, eps, rng);
+        const Scene scene = read_scene(k.text, Input_limits{});
         double t = now();
-        const Verdict exact = decide(Mode::exact);
+        const families::Verdict exact = families::decide(scene, fam.question, Mode::exact);
         row.t_exact += now() - t;
         t = now();
-        const Verdict twin = decide(Mode::float_only);
+        const families::Verdict twin = families::decide(scene, fam.question, Mode::float_only);
         row.t_twin += now() - t;
         t = now();
-        const Verdict hybrid = decide(Mode::hybrid);
+        const families::Verdict hybrid = families::decide(scene, fam.question, Mode::hybrid);
         row.t_hybrid += now() - t;
         t = now();
-        const bool naive = equilibrium ? naive_balanced(cs, grav) : naive_closure(cs, property);
+        const bool naive = families::naive_verdict(k);
         row.t_naive += now() - t;
         ++row.cases;
         row.naive_wrong += naive != exact.holds;
         row.twin_undecided += !twin.decided;
         row.twin_wrong += twin.decided && twin.holds != exact.holds;
         row.hybrid_wrong += hybrid.holds != exact.holds;
-        if ((twin.decided && twin.holds != exact.holds) || hybrid.holds != exact.holds) {
+        if (exact.holds != k.expected || (twin.decided && twin.holds != exact.holds) || hybrid.holds != exact.holds) {
           std::fprintf(stderr, "WRONG certified answer, family %s eps %g seed %llu case %d:\n%s\n", fam.name, eps,
-                       static_cast<unsigned long long>(seed), c, text.c_str());
+                       static_cast<unsigned long long>(seed), c, k.text.c_str());
           failed = true;
         }
       }
@@ -221,7 +156,7 @@ int main(int argc, char** argv) {
         << "a sign is within its error bound). *hybrid*: the default mode (twin, exact where the twin abstains).\n"
         << "Times are per query, verdict only (no certificate), on a noisy shared 2-core machine.\n\n"
         << "| family | what |\n|---|---|\n";
-    for (const stress::Family* f : fams) out << "| " << f->name << " | " << f->what << " |\n";
+    for (const Family& f : fams) out << "| " << f.name << " | " << f.what << " |\n";
     out << "\n![error rates against ε](stability.svg)\n\n" << md.str()
         << "\nReading: naive double signs start to go wrong when ε approaches the rounding level of the input (about\n"
         << "1e-16 relative, earlier with large offsets) and are wrong about half the time below it. The certified twin\n"

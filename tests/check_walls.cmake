@@ -2,6 +2,7 @@
 #   core/   standard library and core/ only
 #   float/  no GMP, no CGAL, nothing from exact/ or proofs/
 #   proofs/ no CGAL, nothing from exact/, core/, float/, cli/
+#   exact/, cli/: no peer library (qhull, cddlib, GLPK) and nothing from bench/
 set(failures "")
 function(check_dir dir forbidden_regex what)
   file(GLOB_RECURSE files "${ROOT}/${dir}/*.h" "${ROOT}/${dir}/*.hpp" "${ROOT}/${dir}/*.cpp")
@@ -17,6 +18,10 @@ endfunction()
 check_dir(core "<gmp|<CGAL/|<boost/|\"(exact|float|proofs|cli)/" "core/ is standard library only")
 check_dir(float "<gmp|<CGAL/|\"(exact|proofs|cli)/" "float/ has no GMP, no CGAL, no exact engine")
 check_dir(proofs "<CGAL/|\"(exact|core|float|cli)/" "proofs/ shares no code with the engine")
+# The benchmarks' peers (qhull, cddlib, GLPK, bench/) are never part of the engine or the command.
+foreach(dir exact cli)
+  check_dir(${dir} "<libqhull|<cdd/|<glpk|\"bench/" "peers stay in bench/")
+endforeach()
 if(failures)
   message(FATAL_ERROR "dependency walls broken:${failures}")
 endif()

@@ -1,0 +1,416 @@
+// The benchmark suite of docs/benchmarks.md: run time against error, ours and the peers', on the
+// same scenes in the same run. Google Benchmark; names are SECTION/PARAMETERS/METHOD and the
+// counters carry the verdict quality, so one JSON file holds the whole report
+// (bench/make_report.py turns it into docs/benchmarks.md and docs/benchmarks/*.svg).
+//
+//   family/FAMILY/EPS/METHOD   near-degenerate families (fuzz/families.h), 64 cases each:
+//                              counters wrong, failures, undecided, cases (against the exact verdict);
+//                              labels_* methods: moment labels, wrong = not the exact labels' shapes
+//                              and counts (twin: not within its stated bounds of them)
+//   generic/N/METHOD           random generic N-contact grasps (256 scenes): the twin's own targets
+//   contacts/N/METHOD          growth with the number of contacts (3 … 10^4)
+//   ls_sides/N/METHOD          exact polygonal limit surface vs CGAL's generic hull, 3 support points,
+//                              N directions: counters rel_error (1/λ − 1), vertices
+//   ls_points/K/METHOD         growth with the number of support points (N = 8)
+//   ls_query/N/METHOD          one support-function value h(q): exact polygonal, float polygonal (N
+//                              directions) and the float TRUE support function (N = "true"):
+//                              counter rel_error (certified bound on |value − h|/h)
+//
+//   wrenchkit_bench [--smoke] [Google Benchmark flags]
+// --smoke: small sizes, for the CI test that keeps the suite from rotting. Exit status 1 if one of
+// our certified methods (twin, hybrid, exact) was ever wrong, or an exact peer disagreed with the
+// exact limit surface's vertex count.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bench/peers.h"
+#include "exact/closure.h"
+#include "exact/limit_surface.h"
+#include "exact/moment_labels.h"
+#include "exact/twin_agreement.h"
+#include "exact/to_float.h"
+#include "float/closure_twin.h"
+#include "float/labels_twin.h"
+#include "float/limit_surface_twin.h"
+#include "fuzz/families.h"
+
+namespace {
+
+using namespace wrenchkit;
+namespace fam = wrenchkit::families;
+
+bool g_smoke = false;
+bool g_failed = false;
+
+// One scene ready for every method: parsed, the double wrenches (computed in double from the
+// scene's doubles, as float peers' users do) and the exact rational wrenches.
+struct Prepared {
+  std::string text;
+  Scene scene;
+  fam::Question question = fam::Question::force_closure;
+  bool expected = false;
+  std::vector<peers::Wrench_d> wd;
+  std::vector<peers::Wrench_q> wq;
+  fam::Case family_case;  // for the naive reading (families only)
+  std::string labels;     // the exact moment labels' shapes and counts (closure families)
+};
+
+Reading reading_of(fam::Question q) {
+  return q == fam::Question::form_closure ? Reading::frictionless : Reading::friction;
+}
+
+// The combinatorics of a labeling: shapes and vertex/direction counts of R+, R−, the ± set and R∞.
+std::string signature(const Moment_labels& l) {
+  auto region = [](const Region& r) {
+    return std::string(shape_name(r.shape)) + "/" + std::to_string(r.vertices.size()) + "/" +
+           std::to_string(r.directions.size());
+  };
+  return region(l.plus) + " " + region(l.minus) + " both" + std::to_string(int(l.both.kind)) + " " +
+         shape_name(l.infinity.shape) + "/" + std::to_string(l.infinity.extreme.size());
+}
+std::string signature(const fl::Labels_twin& l) {
+  auto region = [](const fl::Region2& r) {
+    return std::string(fl::shape_name(r.shape)) + "/" + std::to_string(r.vertices.size()) + "/" +
+           std::to_string(r.directions.size());
+  };
+  const Cone2::Shape inf[] = {Cone2::Shape::zero, Cone2::Shape::ray, Cone2::Shape::wedge, Cone2::Shape::plane};
+  return region(l.plus) + " " + region(l.minus) + " both0 " + shape_name(inf[int(l.infinity.shape)]) + "/" +
+         std::to_string(l.infinity.extreme.size());
+}
+
+Prepared prepare(const std::string& text, fam::Question q) {
+  Prepared p;
+  p.text = text;
+  p.scene = read_scene(text, Input_limits{});
+  p.question = q;
+  p.expected = fam::decide(p.scene, q, Mode::exact).holds;
+  if (q != fam::Question::equilibrium) p.labels = signature(moment_labels(p.scene, reading_of(q), Mode::exact));
+  if (q != fam::Question::equilibrium) {
+    const Reading r = q == fam::Question::force_closure ? Reading::friction : Reading::frictionless;
+    for (const fl::Bounded3& g : fl::generators(to_bounded(p.scene), r)) p.wd.push_back({g[0].v, g[1].v, g[2].v});
+    for (const Generator& g : generators(p.scene, r)) p.wq.push_back({g.w.fx, g.w.fy, g.w.m});
+  }
+  return p;
+}
+
+// A method answers one prepared scene: 1 holds, 0 does not, -1 undecided (twin), -2 failure (peer).
+using Method = std::function<int(const Prepared&)>;
+
+int of(peers::Verdict v) { return v == peers::Verdict::closure ? 1 : (v == peers::Verdict::no_closure ? 0 : -2); }
+
+int ours(const Prepared& p, Mode m) {
+  const fam::Verdict v = fam::decide(p.scene, p.question, m);
+  return v.decided ? int(v.holds) : -1;
+}
+
+struct Named_method {
+  std::string name;
+  Method run;
+  bool certified;  // ours: must never be wrong
+  bool peer;
+  bool agreement = false;  // run() says 1 agrees with the exact answer, 0 does not (not a verdict)
+  Method timed = nullptr;  // what is timed, when run() also does the checking
+};
+
+// Moment labels (theory.md §5): 1 the same labeling as exact, 0 not, -1 the twin abstained.
+std::vector<Named_method> label_methods() {
+  return {
+      {"labels_naive",
+       [](const Prepared& p) {
+         const fl::Labels_twin l = fl::moment_labels_naive(fam::naive_generators(p.family_case));
+         return int(l.decided() && signature(l) == p.labels);
+       },
+       false, false, true},
+      {"labels_twin",
+       [](const Prepared& p) {
+         const fl::Labels_twin l = fl::moment_labels(fl::generators(to_bounded(p.scene), reading_of(p.question)));
+         if (!l.decided()) return -1;
+         return int(labels_disagreement(l, moment_labels(p.scene, reading_of(p.question), Mode::exact)).empty());
+       },
+       true, false, true,
+       [](const Prepared& p) {
+         return int(fl::moment_labels(fl::generators(to_bounded(p.scene), reading_of(p.question))).decided());
+       }},
+      {"labels_hybrid",
+       [](const Prepared& p) {
+         return int(signature(moment_labels(p.scene, reading_of(p.question), Mode::hybrid)) == p.labels);
+       },
+       true, false, true},
+      {"labels_exact",
+       [](const Prepared& p) {
+         return int(signature(moment_labels(p.scene, reading_of(p.question), Mode::exact)) == p.labels);
+       },
+       true, false, true},
+  };
+}
+
+std::vector<Named_method> methods(bool with_peers, bool naive) {
+  std::vector<Named_method> m;
+  if (naive) m.push_back({"naive", [](const Prepared& p) { return int(fam::naive_verdict(p.family_case)); }, false, false});
+  m.push_back({"twin", [](const Prepared& p) { return ours(p, Mode::float_only); }, true, false});
+  m.push_back({"hybrid", [](const Prepared& p) { return ours(p, Mode::hybrid); }, true, false});
+  m.push_back({"exact", [](const Prepared& p) { return ours(p, Mode::exact); }, true, false});
+  if (!with_peers) return m;
+  m.push_back({"qhull_graspit", [](const Prepared& p) { return of(peers::qhull_graspit(p.wd)); }, false, true});
+  m.push_back({"qhull_strict", [](const Prepared& p) { return of(peers::qhull_strict(p.wd)); }, false, true});
+  m.push_back({"cgal_epick", [](const Prepared& p) { return of(peers::cgal_epick(p.wd)); }, false, true});
+  m.push_back({"cgal_epeck", [](const Prepared& p) { return of(peers::cgal_epeck(p.wq)); }, false, true});
+  m.push_back({"cdd_gmp", [](const Prepared& p) { return of(peers::cdd_gmp(p.wq)); }, false, true});
+  m.push_back({"glpk_exact", [](const Prepared& p) { return of(peers::glpk_exact(p.wd)); }, false, true});
+  return m;
+}
+
+// Registers the timing of `method` over `set`; verdict quality is counted once, before timing.
+void register_set(const std::string& name, std::shared_ptr<const std::vector<Prepared>> set, Named_method method) {
+  benchmark::RegisterBenchmark(name.c_str(), [set, method, name](benchmark::State& st) {
+    int wrong = 0, failures = 0, undecided = 0;
+    for (const Prepared& p : *set) {
+      const int v = method.run(p);
+      if (v == -1) ++undecided;
+      else if (v == -2) ++failures;
+      else if (method.agreement ? v != 1 : (v == 1) != p.expected) ++wrong;
+    }
+    if (method.certified && wrong > 0) {
+      std::fprintf(stderr, "WRONG certified verdict: %s (%d wrong)\n", name.c_str(), wrong);
+      g_failed = true;
+    }
+    const Method& timed = method.timed ? method.timed : method.run;
+    std::size_t i = 0;
+    for (auto _ : st) benchmark::DoNotOptimize(timed((*set)[i++ % set->size()]));
+    st.counters["wrong"] = wrong;
+    st.counters["failures"] = failures;
+    st.counters["undecided"] = undecided;
+    st.counters["cases"] = double(set->size());
+  })->Unit(benchmark::kMicrosecond);
+}
+
+std::string eps_name(double eps) {
+  char b[32];
+  std::snprintf(b, sizeof b, "1e%d", static_cast<int>(std::lround(std::log10(eps))));
+  return b;
+}
+
+void register_families() {
+  const std::vector<double> eps = g_smoke ? std::vector<double>{1e-3, 1e-17}
+                                          : std::vector<double>{1e-3, 1e-8, 1e-13, 1e-15, 1e-17, 1e-30};
+  const int cases = g_smoke ? 4 : 64;
+  for (const fam::Family& f : fam::all())
+    for (double e : eps) {
+      auto set = std::make_shared<std::vector<Prepared>>();
+      stress::Rng rng(20261122);
+      for (int c = 0; c < cases; ++c) {
+        fam::Case k = fam::make_case(f, e, rng);
+        Prepared p = prepare(k.text, f.question);
+        p.family_case = std::move(k);
+        set->push_back(std::move(p));
+      }
+      std::vector<Named_method> ms = methods(f.question != fam::Question::equilibrium, true);
+      if (f.question != fam::Question::equilibrium)
+        for (Named_method& m : label_methods()) ms.push_back(std::move(m));
+      for (const Named_method& m : ms)
+        register_set("family/" + std::string(f.name) + "/" + eps_name(e) + "/" + m.name, set, m);
+    }
+}
+
+// Generic random grasps: the float twin's targets (issue 5) and the peers at ordinary scenes.
+void register_generic() {
+  for (int n : g_smoke ? std::vector<int>{6} : std::vector<int>{3, 4, 6, 8}) {
+    auto set = std::make_shared<std::vector<Prepared>>();
+    stress::Rng rng(20261121 + n);
+    for (int s = 0; s < (g_smoke ? 8 : 256); ++s)
+      set->push_back(prepare(fam::random_grasp_text(n, rng), fam::Question::force_closure));
+    const std::string base = "generic/" + std::to_string(n) + "/";
+    // The robot-side API on plain doubles (float/closure_twin.h): no scene, no GMP.
+    auto contacts = std::make_shared<std::vector<std::vector<fl::Point_contact>>>();
+    for (const Prepared& p : *set) {
+      std::vector<fl::Point_contact> c;
+      for (const Contact& k : p.scene.contacts)
+        c.push_back({k.at.x.get_d(), k.at.y.get_d(), k.normal.x.get_d(), k.normal.y.get_d(), k.mu.get_d()});
+      contacts->push_back(std::move(c));
+    }
+    benchmark::RegisterBenchmark((base + "twin_api").c_str(), [contacts](benchmark::State& st) {
+      int decided = 0;
+      for (const auto& c : *contacts) decided += fl::force_closure(c) != fl::Verdict::undecided;
+      std::size_t i = 0;
+      for (auto _ : st) benchmark::DoNotOptimize(fl::force_closure((*contacts)[i++ % contacts->size()]));
+      st.counters["decided"] = decided;
+      st.counters["cases"] = double(contacts->size());
+    })->Unit(benchmark::kMicrosecond);
+    // Hybrid: how many queries the twin decided alone (no exact predicate).
+    benchmark::RegisterBenchmark((base + "hybrid_twin_alone").c_str(), [set](benchmark::State& st) {
+      int alone = 0;
+      for (const Prepared& p : *set)
+        alone += decide_closure(p.scene, Property::force_closure, Mode::hybrid, false).exact_predicates == 0;
+      for (auto _ : st) benchmark::DoNotOptimize(alone);
+      st.counters["decided"] = alone;
+      st.counters["cases"] = double(set->size());
+    })->Iterations(1);
+    for (bool certify : {true}) {
+      for (Mode m : {Mode::hybrid, Mode::exact}) {
+        const std::string name = base + mode_name(m) + "_certified";
+        benchmark::RegisterBenchmark(name.c_str(), [set, m, certify](benchmark::State& st) {
+          std::size_t i = 0;
+          for (auto _ : st)
+            benchmark::DoNotOptimize(decide_closure((*set)[i++ % set->size()].scene, Property::force_closure, m, certify).holds);
+        })->Unit(benchmark::kMicrosecond);
+      }
+    }
+    for (const Named_method& m : methods(true, false)) register_set(base + m.name, set, m);
+  }
+}
+
+void register_growth() {
+  const std::vector<int> sizes = g_smoke ? std::vector<int>{3, 30}
+                                         : std::vector<int>{3, 10, 30, 100, 300, 1000, 3000, 10000};
+  for (int n : sizes) {
+    auto set = std::make_shared<std::vector<Prepared>>();
+    stress::Rng rng(7 + n);
+    for (int s = 0; s < (n <= 300 ? 16 : 4); ++s) set->push_back(prepare(fam::random_grasp_text(n, rng), fam::Question::force_closure));
+    for (const Named_method& m : methods(true, false)) {
+      if ((m.name == "cdd_gmp" || m.name == "glpk_exact") && n > 300) continue;  // seconds per query
+      register_set("contacts/" + std::to_string(n) + "/" + m.name, set, m);
+    }
+  }
+}
+
+// A support of k points: random positions on a 1/100 grid in [-1, 1]², normal forces 1 … 10, μ = 1/2.
+Support random_support(int k, std::mt19937_64& rng) {
+  Support s;
+  s.mu = Rational(1, 2);
+  for (int i = 0; i < k; ++i) {
+    Support_point p;
+    p.at = {Rational(static_cast<long>(rng() % 201) - 100, 100), Rational(static_cast<long>(rng() % 201) - 100, 100)};
+    p.force = Rational(static_cast<long>(1 + rng() % 10));
+    s.points.push_back(p);
+  }
+  return s;
+}
+
+// The summand polygons A_i(ρ_i P) of the inner polytope, as the generic hull's input.
+std::vector<std::vector<peers::Wrench_q>> summands(const Polygonal_ls& ls) {
+  std::vector<std::vector<peers::Wrench_q>> out;
+  for (const Ls_point& pt : ls.support().points) {
+    std::vector<peers::Wrench_q> poly;
+    for (const Vec2& u : ls.unit_vertices(Side::inner)) {
+      const Rational fx = pt.rho * u.x, fy = pt.rho * u.y;
+      poly.push_back({fx, fy, pt.at.x * fy - pt.at.y * fx});
+    }
+    out.push_back(std::move(poly));
+  }
+  return out;
+}
+
+void register_ls(const std::string& name, int k, int sides, bool peer) {
+  benchmark::RegisterBenchmark(name.c_str(), [k, sides, peer, name](benchmark::State& st) {
+    std::mt19937_64 rng(11 + k);
+    const Ls_support sup = merge_support(random_support(k, rng));
+    const Directions dirs = make_directions(sides);
+    const Polygonal_ls probe(sup, dirs);
+    const std::size_t ours = probe.build(Side::inner).vertices.size();
+    std::size_t vertices = ours;
+    if (peer) {
+      const auto polys = summands(probe);
+      for (auto _ : st) vertices = peers::cgal_minkowski_hull_vertices(polys);
+      if (vertices != ours) {
+        std::fprintf(stderr, "%s: CGAL hull has %zu vertices, ours %zu\n", name.c_str(), vertices, ours);
+        g_failed = true;
+      }
+    } else {
+      for (auto _ : st) benchmark::DoNotOptimize(Polygonal_ls(sup, dirs).build(Side::inner).facets.size());
+    }
+    st.counters["rel_error"] = 1 / std::sqrt(dirs.lambda_sq.get_d()) - 1;
+    st.counters["vertices"] = double(vertices);
+  })->Unit(benchmark::kMillisecond);
+}
+
+// Per-query support values on 64 random integer twists: exact polygonal (rational), float polygonal
+// and float true (float/limit_surface_twin.h), each with its certified relative error.
+void register_ls_query(int sides) {  // sides 0: the true support function
+  const std::string name = "ls_query/" + (sides ? std::to_string(sides) : std::string("true")) + "/";
+  auto run = [sides](benchmark::State& st, int which) {  // 0 exact polygonal, 1 float polygonal, 2 float true
+    std::mt19937_64 rng(11 + 3);
+    const Ls_support sup = merge_support(random_support(3, rng));
+    std::vector<fl::Support_point_twin> twin;
+    for (const Ls_point& p : sup.points)
+      twin.push_back({to_bounded(p.at.x), to_bounded(p.at.y), to_bounded(p.force), to_bounded(p.rho)});
+    std::vector<Vec3q> qs;
+    std::vector<fl::Bounded3> qb;
+    for (int i = 0; i < 64; ++i) {
+      const long a = long(rng() % 21) - 10, b = long(rng() % 21) - 10, c = long(rng() % 21) - 10;
+      if (a == 0 && b == 0 && c == 0) continue;
+      qs.push_back({Rational(a), Rational(b), Rational(c)});
+      qb.push_back({fl::Bounded::exact(double(a)), fl::Bounded::exact(double(b)), fl::Bounded::exact(double(c))});
+    }
+    double rel = 0;
+    std::size_t i = 0;
+    if (which == 0) {
+      const Directions dirs = make_directions(sides);
+      const Polygonal_ls ls(sup, dirs);
+      rel = 1 / std::sqrt(dirs.lambda_sq.get_d()) - 1;
+      for (auto _ : st) benchmark::DoNotOptimize(ls.support_value(Side::inner, qs[i++ % qs.size()]));
+    } else if (which == 1) {
+      const fl::Directions_twin d = fl::make_directions(sides);
+      double value_rel = 0;
+      for (const fl::Bounded3& q : qb) {
+        const fl::Bounded h = fl::polygonal_support(twin, d, false, q);
+        value_rel = std::max(value_rel, h.e / std::fabs(h.v));
+      }
+      rel = 1 / std::sqrt(d.lambda_sq.v - d.lambda_sq.e) - 1 + value_rel;
+      for (auto _ : st) benchmark::DoNotOptimize(fl::polygonal_support(twin, d, false, qb[i++ % qb.size()]).v);
+    } else {
+      for (const fl::Bounded3& q : qb) {
+        const fl::Bounded h = fl::support_function(twin, q);
+        rel = std::max(rel, h.e / std::fabs(h.v));
+      }
+      for (auto _ : st) benchmark::DoNotOptimize(fl::support_function(twin, qb[i++ % qb.size()]).v);
+    }
+    st.counters["rel_error"] = rel;
+  };
+  if (sides) {
+    benchmark::RegisterBenchmark((name + "exact_polygonal").c_str(), run, 0)->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark((name + "float_polygonal").c_str(), run, 1)->Unit(benchmark::kMicrosecond);
+  } else {
+    benchmark::RegisterBenchmark((name + "float_true").c_str(), run, 2)->Unit(benchmark::kMicrosecond);
+  }
+}
+
+void register_limit_surface() {
+  for (int n : g_smoke ? std::vector<int>{4, 0} : std::vector<int>{4, 8, 16, 32, 64, 256, 1024, 0}) register_ls_query(n);
+  for (int n : g_smoke ? std::vector<int>{4, 8} : std::vector<int>{4, 8, 16, 32, 64}) {
+    register_ls("ls_sides/" + std::to_string(n) + "/exact_polygonal", 3, n, false);
+    if (n <= 32) register_ls("ls_sides/" + std::to_string(n) + "/cgal_epeck_minkowski_hull", 3, n, true);
+  }
+  for (int k : g_smoke ? std::vector<int>{2, 3} : std::vector<int>{2, 4, 8, 16, 32, 64}) {
+    register_ls("ls_points/" + std::to_string(k) + "/exact_polygonal", k, 8, false);
+    if (k <= 4) register_ls("ls_points/" + std::to_string(k) + "/cgal_epeck_minkowski_hull", k, 8, true);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<char*> args;
+  for (int i = 0; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--smoke") == 0) g_smoke = true;
+    else args.push_back(argv[i]);
+  }
+  int n = static_cast<int>(args.size());
+  benchmark::Initialize(&n, args.data());
+  if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 2;
+  register_families();
+  register_generic();
+  register_growth();
+  register_limit_surface();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  if (g_failed) std::fprintf(stderr, "wrenchkit_bench: a certified method was wrong (see above)\n");
+  return g_failed ? 1 : 0;
+}
