@@ -42,44 +42,72 @@ std::optional<Ls_summary> limit_surface_summary(const Scene& scene) {
   return std::nullopt;
 }
 
-}  // namespace
-
 // analyze: everything the scene's contents call for, and nothing else — closure of its contacts
 // (always: no contacts is an answer too), equilibrium when it has a load, a summary of the limit
 // surface when it has a support. What cannot be computed within analyze's budget is listed under
 // "skipped", never silently dropped.
-int run_analyze(const Options& o, const std::string& scene_text, const std::string& source, const char* command) {
-  if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
+struct Analysis {
+  Scene scene;
+  Closure_item closure;
+  std::optional<Equilibrium_result> equilibrium;
+  std::optional<Ls_summary> limit_surface;
+  std::vector<std::pair<std::string, std::string>> skipped;
+};
+
+Analysis analyze(const Options& o, const std::string& scene_text, const std::string& source) {
+  Analysis a;
+  a.closure = compute_closure(o, scene_text, source, &a.scene);
+  if (a.scene.load) a.equilibrium = compute_equilibrium(o, a.scene, scene_text);
+  if (a.scene.support) {
+    a.limit_surface = limit_surface_summary(a.scene);
+    if (!a.limit_surface)
+      a.skipped.push_back({"limit_surface", "too many support points for analyze's summary; use wrenchkit limit-surface"});
+  }
+  return a;
+}
+
+std::string analyze_json(const Options& o, const Analysis& a, const char* command) {
+  std::string s = "{\"command\": \"" + std::string(command) + "\", \"name\": " + json::quote(a.scene.name) +
+                  ", \"closure\": " + closure_json(o, a.closure, "closure");
+  if (a.equilibrium) s += ", \"equilibrium\": " + equilibrium_json(o, a.scene, *a.equilibrium, "equilibrium");
+  if (a.limit_surface) s += ", \"limit_surface\": " + a.limit_surface->json;
+  s += ", \"skipped\": [";
+  for (std::size_t i = 0; i < a.skipped.size(); ++i)
+    s += (i ? ", " : "") + std::string("{\"what\": ") + json::quote(a.skipped[i].first) +
+         ", \"why\": " + json::quote(a.skipped[i].second) + "}";
+  return s + "]}";
+}
+
+void check_analyze_options(const Options& o) {
+  if (o.verdict_only) throw Usage_error("--verdict-only is for batch closure");
   if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
     throw Usage_error("analyze writes its certificates in its JSON output; use closure or equilibrium for files");
-  const Closure_result c = compute_closure(o, scene_text, source);
-  std::optional<Equilibrium_result> e;
-  if (c.scene.load) e = compute_equilibrium(o, c.scene, scene_text);
-  std::vector<std::pair<std::string, std::string>> skipped;
-  std::optional<Ls_summary> ls;
-  if (c.scene.support) {
-    ls = limit_surface_summary(c.scene);
-    if (!ls)
-      skipped.push_back({"limit_surface", "too many support points for analyze's summary; use wrenchkit limit-surface"});
-  }
+  only_options(o, "analyze", {});
+}
+
+}  // namespace
+
+Scene_answer prepare_analyze_json(const Options& o) {
+  check_analyze_options(o);
+  return [o](const std::string& text, const std::string& source) {
+    return analyze_json(o, analyze(o, text, source), "analyze");
+  };
+}
+
+int run_analyze(const Options& o, const std::string& scene_text, const std::string& source, const char* command) {
+  check_analyze_options(o);
+  const Analysis a = analyze(o, scene_text, source);
   if (o.json) {
-    std::cout << "{\"command\": \"" << command << "\", \"name\": " << json::quote(c.scene.name)
-              << ", \"closure\": " << closure_json(o, c, "closure");
-    if (e) std::cout << ", \"equilibrium\": " << equilibrium_json(o, c.scene, *e, "equilibrium");
-    if (ls) std::cout << ", \"limit_surface\": " << ls->json;
-    std::cout << ", \"skipped\": [";
-    for (std::size_t i = 0; i < skipped.size(); ++i)
-      std::cout << (i ? ", " : "") << "{\"what\": " << json::quote(skipped[i].first)
-                << ", \"why\": " << json::quote(skipped[i].second) << "}";
-    std::cout << "]}\n";
+    std::cout << analyze_json(o, a, command) << "\n";
     return kAnswered;
   }
-  std::cout << "scene: " << (c.scene.name.empty() ? source : c.scene.name) << "\n" << closure_human(c);
-  if (e) std::cout << equilibrium_human(*e);
-  if (ls) std::cout << ls->human;
-  for (const auto& [what, why] : skipped) std::cout << "skipped " << what << ": " << why << "\n";
-  std::cout << "decided by: " << decided_by(c.fc, c.fo) << " for closure"
-            << (e ? std::string(", ") + e->a.decided_by() + " for equilibrium" : std::string()) << "\n"
+  std::cout << "scene: " << (a.scene.name.empty() ? source : a.scene.name) << "\n" << closure_human(a.closure);
+  if (a.equilibrium) std::cout << equilibrium_human(*a.equilibrium);
+  if (a.limit_surface) std::cout << a.limit_surface->human;
+  for (const auto& [what, why] : a.skipped) std::cout << "skipped " << what << ": " << why << "\n";
+  std::cout << "decided by: " << decided_by(a.closure.force, a.closure.form) << " for closure"
+            << (a.equilibrium ? std::string(", ") + a.equilibrium->a.decided_by() + " for equilibrium" : std::string())
+            << "\n"
             << "every certificate accepted by the independent checker (exact arithmetic)\n";
   return kAnswered;
 }

@@ -1,12 +1,15 @@
-// wrenchkit batch COMMAND: JSON lines in, one answer per line, in order, on --jobs threads.
-#include <algorithm>
+// wrenchkit batch COMMAND: JSON lines in, one answer per line, in order, on --jobs threads. Each
+// line's answer is the command's own --json answer (its Scene_answer, cli/common.h) with a "line"
+// field first; the threads and the order are exact/batch.h's ordered_map.
 #include <atomic>
+#include <cstring>
 #include <iostream>
+#include <new>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "cli/common.h"
+#include "exact/batch.h"
 #include "exact/input_error.h"
 #include "exact/json.h"
 
@@ -14,85 +17,125 @@ namespace wrenchkit::cli {
 
 namespace {
 
-bool read_line(std::istream& in, std::string& line, std::size_t limit, bool& too_long) {
-  line.clear();
-  too_long = false;
-  std::streambuf* sb = in.rdbuf();
-  bool any = false;
-  for (;;) {
-    const int c = sb->sbumpc();
-    if (c == std::char_traits<char>::eof()) return any;
-    any = true;
-    if (c == '\n') return true;
-    if (line.size() < limit) line.push_back(static_cast<char>(c));
-    else too_long = true;
-  }
-}
+// Standard input read in blocks and split into lines (without the '\n'). A line longer than `limit`
+// bytes is flagged and its text dropped as it streams by, so memory stays bounded.
+class Line_reader {
+ public:
+  Line_reader(std::streambuf* in, std::size_t limit) : in_(in), limit_(limit), buf_(1 << 16) {}
 
-std::string error_line(std::size_t line, const char* kind, int code, const std::string& message) {
-  return "{\"line\": " + std::to_string(line) + ", \"" + kind + "\": " + json::quote(message) +
-         ", \"exit_code\": " + std::to_string(code) + "}";
+  // The next line into `line`; false at the end of the input.
+  bool next(std::string& line, bool& too_long) {
+    line.clear();
+    too_long = false;
+    bool any = false;
+    for (;;) {
+      if (pos_ == end_ && !fill()) return any;
+      any = true;
+      const char* b = buf_.data() + pos_;
+      const std::size_t left = end_ - pos_;
+      const char* nl = static_cast<const char*>(std::memchr(b, '\n', left));
+      const std::size_t n = nl ? static_cast<std::size_t>(nl - b) : left;
+      if (!too_long) {
+        if (line.size() + n <= limit_) {
+          line.append(b, n);
+        } else {
+          too_long = true;
+          line.clear();
+        }
+      }
+      pos_ += n;
+      if (nl) {
+        ++pos_;
+        return true;
+      }
+    }
+  }
+
+ private:
+  bool fill() {
+    if (eof_) return false;
+    const std::streamsize got = in_->sgetn(buf_.data(), static_cast<std::streamsize>(buf_.size()));
+    pos_ = 0;
+    end_ = got > 0 ? static_cast<std::size_t>(got) : 0;
+    eof_ = end_ == 0;
+    return !eof_;
+  }
+
+  std::streambuf* in_;
+  std::size_t limit_;
+  std::vector<char> buf_;
+  std::size_t pos_ = 0, end_ = 0;
+  bool eof_ = false;
+};
+
+struct Line {
+  std::string text;
+  bool too_long = false;
+};
+
+struct Worker {
+  std::string source;
+};
+
+void error_line(std::string& out, std::size_t line, const char* kind, int code, const std::string& message) {
+  out = "{\"line\": " + std::to_string(line) + ", \"" + kind + "\": " + json::quote(message) +
+        ", \"exit_code\": " + std::to_string(code) + "}";
 }
 
 }  // namespace
 
-// wrenchkit batch closure: one scene per input line, one JSON answer per output line, in order.
+// wrenchkit batch COMMAND [OPTIONS] < scenes.jsonl
 int run_batch(const Options& o) {
-  if (o.positional.size() != 1 || o.positional[0] != "closure")
-    throw Usage_error("batch needs a command: wrenchkit batch closure [OPTIONS] < scenes.jsonl");
-  if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
-    throw Usage_error("batch writes certificates in its output lines, not to files");
-  unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t chunk = 256 * std::size_t(jobs);
-  std::vector<std::string> lines, out;
-  std::vector<char> too_long;
+  const std::string usage = "wrenchkit batch " + scene_command_names() + " [OPTIONS] < scenes.jsonl";
+  if (o.positional.empty()) throw Usage_error("batch needs a command: " + usage);
+  if (o.positional.size() > 1) throw Usage_error("batch reads its scenes from standard input: " + usage);
+  const Scene_command* command = find_scene_command(o.positional[0]);
+  if (!command)
+    throw Usage_error("batch: \"" + o.positional[0] + "\" is not a command that answers per scene: " + usage);
+  if (!o.certificate_file.empty() || !o.form_certificate_file.empty() || o.has("--off") || o.has("--obj") ||
+      o.has("--svg") || o.has("--output"))
+    throw Usage_error("batch writes certificates and answers in its output lines, not to files");
+  if (o.verdict_only && std::string(command->name) != "closure")
+    throw Usage_error("--verdict-only is for batch closure");
+  const Scene_answer answer = command->prepare(o);  // the command's options, checked once
+
   std::atomic<bool> self_check_failed{false}, internal_error{false};
-  std::size_t first_line = 1;
-  std::string line;
-  bool eof = false;
-  while (!eof) {
-    lines.clear();
-    too_long.clear();
-    while (lines.size() < chunk) {
-      bool longer = false;
-      if (!read_line(std::cin, line, o.limits.max_file_bytes, longer)) {
-        eof = true;
-        break;
-      }
-      lines.push_back(line);
-      too_long.push_back(longer);
-    }
-    if (lines.empty()) break;
-    out.assign(lines.size(), std::string());
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-      for (std::size_t i; (i = next++) < lines.size();) {
-        const std::size_t n = first_line + i;
+  Line_reader reader(std::cin.rdbuf(), o.limits.max_file_bytes);
+  ordered_map<Line, std::string, Worker>(
+      o.jobs, [&](Line& l) { return reader.next(l.text, l.too_long); },
+      [&](Worker& w, const Line& l, std::string& out, std::size_t index) {
+        const std::size_t n = index + 1;
         try {
-          if (too_long[i])
+          if (l.too_long)
             throw Input_error("line larger than the size limit of " + std::to_string(o.limits.max_file_bytes) +
                               " bytes (--max-file-size)");
-          out[i] = closure_json(o, compute_closure(o, lines[i], "line " + std::to_string(n), true), "closure", n);
+          w.source = "line " + std::to_string(n);
+          const std::string json = answer(l.text, w.source);
+          out = "{\"line\": ";  // the command's answer with "line" first
+          out += std::to_string(n);
+          out += ", ";
+          out.append(json, 1, std::string::npos);
         } catch (const Input_error& e) {
-          out[i] = error_line(n, "error", kBadInput, e.what());
+          error_line(out, n, "error", kBadInput, e.what());
+        } catch (const Usage_error& e) {  // options that cannot apply to this scene
+          error_line(out, n, "error", kBadInput, e.what());
         } catch (const Undecided& e) {
-          out[i] = error_line(n, "undecided", kUndecided, e.what());
+          error_line(out, n, "undecided", kUndecided, e.what());
         } catch (const Self_check_failure& e) {
           self_check_failed = true;
-          out[i] = error_line(n, "internal_error", kSelfCheck, e.what());
+          error_line(out, n, "internal_error", kSelfCheck, e.what());
+        } catch (const std::bad_alloc&) {
+          internal_error = true;
+          error_line(out, n, "internal_error", kInternal, "out of memory");
         } catch (const std::exception& e) {
           internal_error = true;
-          out[i] = error_line(n, "internal_error", kInternal, e.what());
+          error_line(out, n, "internal_error", kInternal, e.what());
         }
-      }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < jobs && t < lines.size(); ++t) pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool) t.join();
-    for (const std::string& s : out) std::cout << s << '\n';
-    first_line += lines.size();
-  }
+      },
+      [&](std::size_t, const std::string& out) {
+        std::cout.write(out.data(), static_cast<std::streamsize>(out.size()));
+        std::cout.put('\n');
+      });
   std::cout.flush();
   return self_check_failed ? kSelfCheck : (internal_error ? kInternal : kAnswered);
 }

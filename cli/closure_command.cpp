@@ -2,9 +2,13 @@
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "cli/common.h"
+#include "exact/input_error.h"
 #include "exact/json.h"
 
 namespace wrenchkit::cli {
@@ -44,74 +48,129 @@ std::string decided_by(const Closure_answer& a, const Closure_answer& b) {
   return x == y ? x : "hybrid";
 }
 
-Closure_result compute_closure(const Options& o, const std::string& scene_text, const std::string& source,
-                               bool lazy) {
-  Closure_result r;
-  r.scene = read_scene(scene_text, o.limits, source, lazy && o.mode != "exact");
-  const Mode mode = mode_of(o.mode);
-  const bool certify = !o.verdict_only;
-  r.fc = decide_closure(r.scene, Property::force_closure, mode, certify);
-  r.fo = decide_closure(r.scene, Property::form_closure, mode, certify);
-  if (!r.fc.decided || !r.fo.decided)
-    throw Undecided(std::string("the float twin could not certify ") +
-                    (!r.fc.decided ? (!r.fo.decided ? "force or form closure" : "force closure") : "form closure") +
-                    " of this scene (a predicate is within its error bound of zero); use --mode hybrid or exact");
-  if (!certify) return r;
-  r.fc_json = certificate_json(r.fc.certificate);
-  r.fo_json = certificate_json(r.fo.certificate);
+namespace {
+
+// The CLI's closure options: its mode, limits and --verdict-only, and the independent checker of
+// proofs/ on every certificate (reading the scene once for both).
+Closure_batch_options closure_options(const Options& o) {
+  Closure_batch_options c;
+  c.mode = mode_of(o.mode);
+  c.certify = !o.verdict_only;
+  c.limits = o.limits;
   // Test hook: the suite corrupts a certificate to prove the self-check path (exit 4) works.
-  if (const char* f = std::getenv("WRENCHKIT_FAULT_INJECTION"); f && std::string(f) == "corrupt-certificate")
-    r.fc_json.insert(1, "\"injected_fault\": true, ");
-  for (const std::string* cert : {&r.fc_json, &r.fo_json}) {
-    const auto c = wrenchkit_checker::check(scene_text, *cert, checker_limits(o.limits));
-    if (c.outcome != wrenchkit_checker::Outcome::accepted)
-      throw Self_check_failure("the independent checker rejected our own certificate: " + c.message +
-                               "\ncertificate: " + *cert);
+  const char* f = std::getenv("WRENCHKIT_FAULT_INJECTION");
+  const bool corrupt = f && std::string(f) == "corrupt-certificate";
+  c.check = [limits = checker_limits(o.limits), corrupt](std::string_view scene,
+                                                          const std::vector<std::string_view>& certs) {
+    std::string injected;
+    std::vector<std::string_view> checked = certs;
+    if (corrupt && !certs.empty()) {
+      injected = std::string(certs[0]);
+      injected.insert(1, "\"injected_fault\": true, ");
+      checked[0] = injected;
+    }
+    const std::vector<wrenchkit_checker::Result> results = wrenchkit_checker::check_all(scene, checked, limits);
+    for (std::size_t k = 0; k < results.size(); ++k)
+      if (results[k].outcome != wrenchkit_checker::Outcome::accepted)
+        return "the independent checker rejected our own certificate: " + results[k].message +
+               "\ncertificate: " + std::string(checked[k]);
+    return std::string();
+  };
+  return c;
+}
+
+// A closure item's failure as the exception the command reports.
+void throw_unless_answered(const Closure_item& r) {
+  switch (r.status) {
+    case Batch_status::answered: return;
+    case Batch_status::bad_input: throw Input_error(r.message);
+    case Batch_status::undecided: throw Undecided(r.message);
+    case Batch_status::check_failed: throw Self_check_failure(r.message);
+    case Batch_status::internal_error: throw std::runtime_error(r.message);
   }
+}
+
+void append_pair(std::string& s, const char* key, std::size_t force, std::size_t form) {
+  s += ", \"";
+  s += key;
+  s += "\": {\"force\": ";
+  s += std::to_string(force);
+  s += ", \"form\": ";
+  s += std::to_string(form);
+  s += "}";
+}
+
+}  // namespace
+
+Closure_item compute_closure(const Options& o, const std::string& scene_text, const std::string& source, Scene* scene) {
+  Scene local;
+  Closure_item r = closure_item(scene_text, source, closure_options(o), scene ? *scene : local);
+  throw_unless_answered(r);
   return r;
 }
 
-// One line of JSON (no newline); `line` > 0 adds the input line number (batch).
-std::string closure_json(const Options& o, const Closure_result& r, const char* command, std::size_t line) {
-  std::ostringstream s;
-  s << "{";
-  if (line) s << "\"line\": " << line << ", ";
-  s << "\"command\": \"" << command << "\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \""
-    << o.mode << "\", \"decided_by\": \"" << decided_by(r.fc, r.fo) << "\""
-    << ", \"force_closure\": " << (r.fc.holds ? "true" : "false")
-    << ", \"form_closure\": " << (r.fo.holds ? "true" : "false")
-    << ", \"rank\": {\"force\": " << r.fc.rank << ", \"form\": " << r.fo.rank << "}"
-    << ", \"generators\": {\"force\": " << r.fc.generators << ", \"form\": " << r.fo.generators
-    << "}, \"predicates\": {\"force\": " << r.fc.predicates << ", \"form\": " << r.fo.predicates
-    << "}, \"exact_predicates\": {\"force\": " << r.fc.exact_predicates << ", \"form\": "
-    << r.fo.exact_predicates << "}, \"certificates_checked\": " << (r.fc_json.empty() ? "false" : "true");
-  if (!r.fc_json.empty()) s << ", \"certificate\": " << r.fc_json << ", \"form_certificate\": " << r.fo_json;
-  s << "}";
-  return s.str();
+// One line of JSON (no newline).
+std::string closure_json(const Options& o, const Closure_item& r, const char* command) {
+  std::string s;
+  s.reserve(512 + r.force_certificate.size() + r.form_certificate.size());
+  s += "{\"command\": \"";
+  s += command;
+  s += "\", \"name\": ";
+  s += json::quote(r.name);
+  s += ", \"mode\": \"";
+  s += o.mode;
+  s += "\", \"decided_by\": \"";
+  s += decided_by(r.force, r.form);
+  s += "\", \"force_closure\": ";
+  s += r.force.holds ? "true" : "false";
+  s += ", \"form_closure\": ";
+  s += r.form.holds ? "true" : "false";
+  append_pair(s, "rank", static_cast<std::size_t>(r.force.rank), static_cast<std::size_t>(r.form.rank));
+  append_pair(s, "generators", r.force.generators, r.form.generators);
+  append_pair(s, "predicates", r.force.predicates, r.form.predicates);
+  append_pair(s, "exact_predicates", r.force.exact_predicates, r.form.exact_predicates);
+  s += ", \"certificates_checked\": ";
+  s += r.force_certificate.empty() ? "false" : "true";
+  if (!r.force_certificate.empty()) {
+    s += ", \"certificate\": ";
+    s += r.force_certificate;
+    s += ", \"form_certificate\": ";
+    s += r.form_certificate;
+  }
+  s += "}";
+  return s;
 }
 
-std::string closure_human(const Closure_result& r) {
-  return "force closure: " + human_verdict(r.fc, false) + "\nform closure:  " + human_verdict(r.fo, true) + "\n";
+std::string closure_human(const Closure_item& r) {
+  return "force closure: " + human_verdict(r.force, false) + "\nform closure:  " + human_verdict(r.form, true) + "\n";
+}
+
+Scene_answer prepare_closure_json(const Options& o) {
+  if (!o.values.empty()) throw Usage_error(o.values.begin()->first + " is not an option of closure");
+  return [o, c = closure_options(o)](const std::string& text, const std::string& source) {
+    thread_local Scene scratch;  // reused from one scene to the next: no allocation once warm
+    const Closure_item r = closure_item(text, source, c, scratch);
+    throw_unless_answered(r);
+    return closure_json(o, r, "closure");
+  };
 }
 
 int run_closure(const Options& o, const std::string& scene_text, const std::string& source,
                 const char* command) {
   if (o.verdict_only) throw Usage_error("--verdict-only is for batch; closure always certifies");
-  const Closure_result r = compute_closure(o, scene_text, source);
-  if (!o.certificate_file.empty()) write_file(o.certificate_file, r.fc_json + "\n");
-  if (!o.form_certificate_file.empty()) write_file(o.form_certificate_file, r.fo_json + "\n");
+  const Closure_item r = compute_closure(o, scene_text, source);
+  if (!o.certificate_file.empty()) write_file(o.certificate_file, r.force_certificate + "\n");
+  if (!o.form_certificate_file.empty()) write_file(o.form_certificate_file, r.form_certificate + "\n");
   if (o.json) {
     std::cout << closure_json(o, r, command) << "\n";
   } else {
-    std::cout << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
+    std::cout << "scene: " << (r.name.empty() ? source : r.name) << "\n"
               << closure_human(r)
-              << "decided by: " << decided_by(r.fc, r.fo) << " (" << r.fc.exact_predicates + r.fo.exact_predicates
-              << " of " << r.fc.predicates + r.fo.predicates << " predicates in exact arithmetic)\n"
+              << "decided by: " << decided_by(r.force, r.form) << " (" << r.force.exact_predicates + r.form.exact_predicates
+              << " of " << r.force.predicates + r.form.predicates << " predicates in exact arithmetic)\n"
               << "both certificates accepted by the independent checker (exact arithmetic)\n";
   }
   return kAnswered;
 }
-
-// Reads one line of at most `limit` bytes (the rest of a longer line is skipped, bounded memory).
 
 }  // namespace wrenchkit::cli

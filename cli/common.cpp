@@ -46,8 +46,10 @@ Options parse_options(int argc, char** argv, int first) {
     else if (a == "--max-exponent") o.limits.max_exponent = static_cast<long>(parse_count(a, value()));
     else if (a == "--max-file-size") o.limits.max_file_bytes = parse_count(a, value());
     else if (a == "--max-contacts") o.limits.max_contacts = parse_count(a, value());
+    else if (a == "--list") o.values[a];
     else if (a == "--resultant" || a == "--center" || a == "--sense" || a == "--direction" ||
-             a == "--twist" || a == "--what" || a == "-o" || a == "--output" || a == "--sides") {
+             a == "--twist" || a == "--what" || a == "-o" || a == "--output" || a == "--sides" ||
+             a == "--tolerance" || a == "--load" || a == "--off" || a == "--obj" || a == "--svg") {
       std::string& slot = o.values[a == "-o" ? "--output" : a];
       if (!slot.empty()) throw Usage_error(a + " given twice");
       slot = value();

@@ -4,11 +4,14 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
+#include <initializer_list>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "exact/batch.h"
 #include "exact/closure.h"
 #include "exact/equilibrium.h"
 #include "exact/limits.h"
@@ -28,8 +31,9 @@ struct Options {
   std::string certificate_file, form_certificate_file;
   Input_limits limits;
   std::vector<std::string> positional;
-  // Command-specific options with a value (--resultant, --center, --sense, --direction,
-  // --twist, --what, --output/-o, --sides for render): set only when given.
+  // Command-specific options (--resultant, --center, --sense, --direction, --twist, --what,
+  // --output/-o, --sides, --tolerance, --load, --off, --obj, --svg; the flag --list with the empty
+  // value): set only when given.
   std::map<std::string, std::string> values;
   bool has(const std::string& option) const { return values.count(option) != 0; }
 };
@@ -59,17 +63,45 @@ std::string human_number(const Rational& q);
 std::string vec_text(const std::array<Rational, 3>& v);
 Mode mode_of(const std::string& m);
 
-// closure_command.cpp
-struct Closure_result {
-  Scene scene;
-  Closure_answer fc, fo;
-  std::string fc_json, fo_json;  // empty when not certified (batch --verdict-only)
+// ---------------------------------------------------------------------------------------------
+// The per-scene commands' JSON answers, shared by the single commands (`wrenchkit COMMAND --json`),
+// `wrenchkit batch COMMAND` and any other front end.
+//
+// A Scene_answer maps one scene text to the command's --json answer: one line, no newline, exactly
+// what `wrenchkit COMMAND --json SCENE` prints. `source` names the text in messages. It throws
+// Input_error for a bad scene (exit 2), Undecided (exit 3), Self_check_failure (exit 4), and
+// Usage_error when the options cannot apply to this scene (limit-surface's --sides on a large
+// support). It may be called from several threads at once.
+using Scene_answer = std::function<std::string(const std::string& scene_text, const std::string& source)>;
+
+struct Scene_command {
+  const char* name;  // closure, equilibrium, labels, dual, reuleaux, analyze, limit-surface, sliding
+  // Reads and validates the command's options from `o`, once (Usage_error for an option the command
+  // does not take or a bad value), and returns its Scene_answer, which keeps what it needs of them.
+  Scene_answer (*prepare)(const Options& o);
 };
-// `lazy`: read the scene lazily (batch: rationals only if an exact predicate or a certificate needs them).
-Closure_result compute_closure(const Options& o, const std::string& scene_text, const std::string& source,
-                               bool lazy = false);
-std::string closure_json(const Options& o, const Closure_result& r, const char* command, std::size_t line = 0);
-std::string closure_human(const Closure_result& r);
+// The per-scene command called `name`, or nullptr.
+const Scene_command* find_scene_command(const std::string& name);
+// The commands' names, "closure|equilibrium|…", for messages.
+std::string scene_command_names();
+
+Scene_answer prepare_closure_json(const Options& o);
+Scene_answer prepare_equilibrium_json(const Options& o);
+Scene_answer prepare_labels_json(const Options& o);
+Scene_answer prepare_dual_json(const Options& o);
+Scene_answer prepare_reuleaux_json(const Options& o);
+Scene_answer prepare_analyze_json(const Options& o);
+Scene_answer prepare_limit_surface_json(const Options& o);
+Scene_answer prepare_sliding_json(const Options& o);
+
+// closure_command.cpp (analyze uses these pieces)
+// Force and form closure of one scene text (exact/batch.h's closure_item with the CLI's options and
+// the independent checker; certificates unless --verdict-only); throws as a Scene_answer does.
+// `scene`, if given, receives the scene.
+Closure_item compute_closure(const Options& o, const std::string& scene_text, const std::string& source,
+                             Scene* scene = nullptr);
+std::string closure_json(const Options& o, const Closure_item& r, const char* command);
+std::string closure_human(const Closure_item& r);
 std::string decided_by(const Closure_answer& a, const Closure_answer& b);
 int run_closure(const Options& o, const std::string& scene_text, const std::string& source, const char* command);
 
@@ -94,9 +126,13 @@ int run_dual(const Options& o, const std::string& scene_text, const std::string&
 int run_reuleaux(const Options& o, const std::string& scene_text, const std::string& source);
 int run_render(const Options& o, const std::string& scene_text, const std::string& source);
 
-// limit_surface_command.cpp, sliding_command.cpp: they read their own options (--sides, --twist, …)
-// and pass the rest to parse_options.
-int run_limit_surface(int argc, char** argv);
-int run_sliding(int argc, char** argv);
+// limit_surface_command.cpp, sliding_command.cpp
+int run_limit_surface(const Options& o, const std::string& scene_text, const std::string& source);
+int run_sliding(const Options& o, const std::string& scene_text, const std::string& source);
+extern const char* kLimitSurfaceHelp;
+extern const char* kSlidingHelp;
+
+// Usage_error unless every command-specific option given is one of `allowed`.
+void only_options(const Options& o, const char* command, std::initializer_list<const char*> allowed);
 
 }  // namespace wrenchkit::cli

@@ -6,6 +6,7 @@
 
 #include "cli/common.h"
 #include "exact/json.h"
+#include "exact/streaming_scene_reader.h"
 
 namespace wrenchkit::cli {
 
@@ -57,6 +58,14 @@ std::string equilibrium_human(const Equilibrium_result& r) {
   }
   s << "\n";
   return s.str();
+}
+
+Scene_answer prepare_equilibrium_json(const Options& o) {
+  only_options(o, "equilibrium", {});
+  return [o](const std::string& text, const std::string& source) {
+    const Scene scene = read_scene_streaming(text, o.limits, source);
+    return equilibrium_json(o, scene, compute_equilibrium(o, scene, text), "equilibrium");
+  };
 }
 
 int run_equilibrium(const Options& o, const std::string& scene_text, const std::string& source) {

@@ -7,6 +7,7 @@
 #include "cli/common.h"
 #include "exact/force_dual.h"
 #include "exact/json.h"
+#include "exact/streaming_scene_reader.h"
 
 namespace wrenchkit::cli {
 
@@ -89,23 +90,20 @@ struct Labelled_scene {
   Moment_labels labels;
 };
 
-Labelled_scene label(const Options& o, const std::string& text, const std::string& source, Reading reading) {
-  if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
+// The options every labels-family command refuses (checked once, before any scene).
+void check_label_options(const Options& o, const char* command, std::initializer_list<const char*> allowed) {
+  if (o.verdict_only) throw Usage_error("--verdict-only is for batch closure");
   if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
     throw Usage_error("--certificate is for closure and equilibrium");
-  Labelled_scene s{read_scene(text, o.limits, source), {}, {}, {}};
+  only_options(o, command, allowed);
+}
+
+Labelled_scene label(const Options& o, const std::string& text, const std::string& source, Reading reading) {
+  Labelled_scene s{read_scene_streaming(text, o.limits, source), {}, {}, {}};
   s.gens = generators(s.scene, reading);
   for (const Generator& g : s.gens) s.wrenches.push_back(g.w);
   s.labels = moment_labels(s.wrenches);
   return s;
-}
-
-void only_options(const Options& o, const char* command, std::initializer_list<const char*> allowed) {
-  for (const auto& [k, v] : o.values) {
-    bool ok = false;
-    for (const char* a : allowed) ok |= k == a;
-    if (!ok) throw Usage_error(k + " is not an option of " + command);
-  }
 }
 
 // The scene's load read on the labels: balanced ⇔ −w ∈ W (theory.md §5.5).
@@ -116,69 +114,163 @@ std::string load_json(const Labelled_scene& s) {
   return ", \"load\": {\"wrench\": " + wrench_json(w) + ", \"balanced\": " + (balanced ? "true" : "false") + "}";
 }
 
-}  // namespace
-
-int run_labels(const Options& o, const std::string& text, const std::string& source) {
-  only_options(o, "labels", {"--resultant"});
-  const Labelled_scene s = label(o, text, source, Reading::friction);
-  std::string query;
-  bool possible = false;
+// labels: the optional --resultant query.
+struct Labels_query {
+  bool resultant = false;
   Vec3 w;
+};
+
+Labels_query labels_query(const Options& o) {
+  check_label_options(o, "labels", {"--resultant"});
+  Labels_query q;
   if (o.has("--resultant")) {
     const std::vector<Rational> v = parse_vector(o, "--resultant", 3);
-    w = {v[0], v[1], v[2]};
-    possible = in_cone(s.labels.cone, w);
-    query = ", \"resultant\": {\"wrench\": " + wrench_json(w) + ", \"possible\": " + (possible ? "true" : "false") + "}";
+    q.resultant = true;
+    q.w = {v[0], v[1], v[2]};
   }
+  return q;
+}
+
+std::string labels_json(const Labelled_scene& s, const Labels_query& q) {
+  std::string query;
+  if (q.resultant)
+    query = ", \"resultant\": {\"wrench\": " + wrench_json(q.w) + ", \"possible\": " +
+            (in_cone(s.labels.cone, q.w) ? "true" : "false") + "}";
+  return "{\"command\": \"labels\", \"name\": " + json::quote(s.scene.name) + ", \"reading\": \"friction\"" +
+         ", \"rank\": " + std::to_string(s.labels.cone.rank) + ", \"force_closure\": " +
+         (s.labels.cone.force_closure() ? "true" : "false") + ", " + labels_json_fields(s.labels) + query +
+         load_json(s) + "}";
+}
+
+std::string dual_json(const Labelled_scene& s) {
+  const Force_dual d = force_dual(s.labels, s.wrenches);
+  std::ostringstream j;
+  const auto pts = [](const std::vector<Vec2>& v) {
+    std::string r = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) r += (i ? ", " : "") + point_json(v[i]);
+    return r + "]";
+  };
+  j << "{\"command\": \"dual\", \"name\": " << json::quote(s.scene.name) << ", \"covers_all\": "
+    << (d.covers_all ? "true" : "false") << ", \"plus_sheet\": " << pts(d.plus_sheet.vertices)
+    << ", \"minus_sheet\": " << pts(d.minus_sheet.vertices) << ", \"infinity\": " << infinity_json(d.infinity)
+    << ", \"plus_region\": " << region_json(d.plus_sheet) << ", \"minus_region\": " << region_json(d.minus_sheet)
+    << ", \"generators\": [";
+  for (std::size_t i = 0; i < s.gens.size(); ++i)
+    j << (i ? ", " : "") << "{\"contact\": " << s.gens[i].contact << ", \"edge\": \"" << edge_name(s.gens[i].edge)
+      << "\", \"dual\": " << dual_point_json(d.generators[i]) << "}";
+  j << "], \"reference\": ";
+  if (d.reference)
+    j << "{\"point\": " << point_json(*d.reference) << ", \"polygon\": " << region_json(d.about_reference) << "}";
+  else
+    j << "null";
+  if (s.scene.load) {
+    const Vec3 w = as_vec(load_wrench(s.scene));
+    j << ", \"load\": {\"antipode\": " << dual_point_json(dual_point({-w[0], -w[1], -w[2]}))
+      << ", \"balanced\": " << (in_cone(s.labels.cone, {-w[0], -w[1], -w[2]}) ? "true" : "false") << "}";
+  }
+  j << "}";
+  return j.str();
+}
+
+// reuleaux: the optional motion (--center [--sense], --direction or --twist).
+struct Reuleaux_query {
+  bool given = false;
+  Vec3 t;
+};
+
+Reuleaux_query reuleaux_query(const Options& o) {
+  check_label_options(o, "reuleaux", {"--center", "--sense", "--direction", "--twist"});
+  const int queries = o.has("--center") + o.has("--direction") + o.has("--twist");
+  if (queries > 1) throw Usage_error("give at most one of --center, --direction, --twist");
+  if (o.has("--sense") && !o.has("--center")) throw Usage_error("--sense goes with --center");
+  Reuleaux_query q;
+  q.given = queries > 0;
+  if (o.has("--center")) {
+    const std::vector<Rational> c = parse_vector(o, "--center", 2);
+    int sense = 1;
+    if (o.has("--sense")) {
+      const std::string& v = o.values.at("--sense");
+      if (v == "ccw" || v == "+") sense = 1;
+      else if (v == "cw" || v == "-") sense = -1;
+      else throw Usage_error("--sense: \"" + v + "\" is not one of ccw, cw");
+    }
+    q.t = rotation_twist({c[0], c[1]}, sense);
+  } else if (o.has("--direction")) {
+    const std::vector<Rational> d = parse_vector(o, "--direction", 2);
+    if (d[0] == 0 && d[1] == 0) throw Usage_error("--direction: the zero vector is no direction");
+    q.t = translation_twist({d[0], d[1]});
+  } else if (o.has("--twist")) {
+    const std::vector<Rational> v = parse_vector(o, "--twist", 3);
+    if (v[0] == 0 && v[1] == 0 && v[2] == 0) throw Usage_error("--twist: the zero twist is no motion");
+    q.t = {v[0], v[1], v[2]};
+  }
+  return q;
+}
+
+std::string reuleaux_json(const Labelled_scene& s, const Reuleaux_query& q, const Mode_answer& m) {
+  std::string j = "{\"command\": \"reuleaux\", \"name\": " + json::quote(s.scene.name) +
+                  ", \"reading\": \"frictionless\", \"rank\": " + std::to_string(s.labels.cone.rank) +
+                  ", \"form_closure\": " + (s.labels.cone.force_closure() ? "true" : "false") + ", " +
+                  labels_json_fields(s.labels);
+  if (q.given) {
+    const std::array<Rational, 3> ta = {q.t[0], q.t[1], q.t[2]};
+    j += ", \"query\": {" + twist_json(ta) + ", \"feasible\": " + (m.feasible ? "true" : "false") +
+         ", \"marginal\": " + (m.marginal ? "true" : "false") + ", \"modes\": [";
+    for (std::size_t i = 0; i < m.modes.size(); ++i)
+      j += (i ? ", " : "") + std::string("{\"contact\": ") + std::to_string(i) + ", \"mode\": \"" +
+           mode_name(m.modes[i]) + "\"}";
+    j += "]}";
+  }
+  return j + "}";
+}
+
+}  // namespace
+
+Scene_answer prepare_labels_json(const Options& o) {
+  return [o, q = labels_query(o)](const std::string& text, const std::string& source) {
+    return labels_json(label(o, text, source, Reading::friction), q);
+  };
+}
+
+Scene_answer prepare_dual_json(const Options& o) {
+  check_label_options(o, "dual", {});
+  return [o](const std::string& text, const std::string& source) {
+    return dual_json(label(o, text, source, Reading::friction));
+  };
+}
+
+Scene_answer prepare_reuleaux_json(const Options& o) {
+  return [o, q = reuleaux_query(o)](const std::string& text, const std::string& source) {
+    const Labelled_scene s = label(o, text, source, Reading::frictionless);
+    return reuleaux_json(s, q, q.given ? contact_modes(s.scene, q.t) : Mode_answer{});
+  };
+}
+
+int run_labels(const Options& o, const std::string& text, const std::string& source) {
+  const Labels_query q = labels_query(o);
+  const Labelled_scene s = label(o, text, source, Reading::friction);
   if (o.json) {
-    std::cout << "{\"command\": \"labels\", \"name\": " << json::quote(s.scene.name) << ", \"reading\": \"friction\""
-              << ", \"rank\": " << s.labels.cone.rank << ", \"force_closure\": "
-              << (s.labels.cone.force_closure() ? "true" : "false") << ", " << labels_json_fields(s.labels) << query
-              << load_json(s) << "}\n";
+    std::cout << labels_json(s, q) << "\n";
     return kAnswered;
   }
   std::cout << "scene: " << (s.scene.name.empty() ? source : s.scene.name) << "\n"
             << "moment labels of the contact wrench cone (with friction; exact):\n"
             << labels_human(s.labels)
             << "force closure: " << (s.labels.cone.force_closure() ? "yes" : "no") << " (nothing labeled, infinity included)\n";
-  if (o.has("--resultant"))
-    std::cout << "resultant " << vec_text({w[0], w[1], w[2]}) << ": " << (possible ? "possible" : "not possible") << "\n";
+  if (q.resultant)
+    std::cout << "resultant " << vec_text({q.w[0], q.w[1], q.w[2]}) << ": "
+              << (in_cone(s.labels.cone, q.w) ? "possible" : "not possible") << "\n";
   return kAnswered;
 }
 
 int run_dual(const Options& o, const std::string& text, const std::string& source) {
-  only_options(o, "dual", {});
+  check_label_options(o, "dual", {});
   const Labelled_scene s = label(o, text, source, Reading::friction);
-  const Force_dual d = force_dual(s.labels, s.wrenches);
   if (o.json) {
-    std::ostringstream j;
-    const auto pts = [](const std::vector<Vec2>& v) {
-      std::string r = "[";
-      for (std::size_t i = 0; i < v.size(); ++i) r += (i ? ", " : "") + point_json(v[i]);
-      return r + "]";
-    };
-    j << "{\"command\": \"dual\", \"name\": " << json::quote(s.scene.name) << ", \"covers_all\": "
-      << (d.covers_all ? "true" : "false") << ", \"plus_sheet\": " << pts(d.plus_sheet.vertices)
-      << ", \"minus_sheet\": " << pts(d.minus_sheet.vertices) << ", \"infinity\": " << infinity_json(d.infinity)
-      << ", \"plus_region\": " << region_json(d.plus_sheet) << ", \"minus_region\": " << region_json(d.minus_sheet)
-      << ", \"generators\": [";
-    for (std::size_t i = 0; i < s.gens.size(); ++i)
-      j << (i ? ", " : "") << "{\"contact\": " << s.gens[i].contact << ", \"edge\": \"" << edge_name(s.gens[i].edge)
-        << "\", \"dual\": " << dual_point_json(d.generators[i]) << "}";
-    j << "], \"reference\": ";
-    if (d.reference)
-      j << "{\"point\": " << point_json(*d.reference) << ", \"polygon\": " << region_json(d.about_reference) << "}";
-    else
-      j << "null";
-    if (s.scene.load) {
-      const Vec3 w = as_vec(load_wrench(s.scene));
-      j << ", \"load\": {\"antipode\": " << dual_point_json(dual_point({-w[0], -w[1], -w[2]}))
-        << ", \"balanced\": " << (in_cone(s.labels.cone, {-w[0], -w[1], -w[2]}) ? "true" : "false") << "}";
-    }
-    j << "}\n";
-    std::cout << j.str();
+    std::cout << dual_json(s) << "\n";
     return kAnswered;
   }
+  const Force_dual d = force_dual(s.labels, s.wrenches);
   std::cout << "scene: " << (s.scene.name.empty() ? source : s.scene.name) << "\n"
             << "force dual of the contact wrench cone (D(w) = (-fy, fx, m); exact):\n"
             << "covers the whole two-sided plane: " << (d.covers_all ? "yes (force closure)" : "no") << "\n"
@@ -192,56 +284,22 @@ int run_dual(const Options& o, const std::string& text, const std::string& sourc
 }
 
 int run_reuleaux(const Options& o, const std::string& text, const std::string& source) {
-  only_options(o, "reuleaux", {"--center", "--sense", "--direction", "--twist"});
-  const int queries = o.has("--center") + o.has("--direction") + o.has("--twist");
-  if (queries > 1) throw Usage_error("give at most one of --center, --direction, --twist");
-  if (o.has("--sense") && !o.has("--center")) throw Usage_error("--sense goes with --center");
+  const Reuleaux_query q = reuleaux_query(o);
   const Labelled_scene s = label(o, text, source, Reading::frictionless);
-  Vec3 t;
-  if (o.has("--center")) {
-    const std::vector<Rational> c = parse_vector(o, "--center", 2);
-    int sense = 1;
-    if (o.has("--sense")) {
-      const std::string& v = o.values.at("--sense");
-      if (v == "ccw" || v == "+") sense = 1;
-      else if (v == "cw" || v == "-") sense = -1;
-      else throw Usage_error("--sense: \"" + v + "\" is not one of ccw, cw");
-    }
-    t = rotation_twist({c[0], c[1]}, sense);
-  } else if (o.has("--direction")) {
-    const std::vector<Rational> d = parse_vector(o, "--direction", 2);
-    if (d[0] == 0 && d[1] == 0) throw Usage_error("--direction: the zero vector is no direction");
-    t = translation_twist({d[0], d[1]});
-  } else if (o.has("--twist")) {
-    const std::vector<Rational> v = parse_vector(o, "--twist", 3);
-    if (v[0] == 0 && v[1] == 0 && v[2] == 0) throw Usage_error("--twist: the zero twist is no motion");
-    t = {v[0], v[1], v[2]};
-  }
   Mode_answer m;
-  if (queries) m = contact_modes(s.scene, t);
-  const bool closed = s.labels.cone.force_closure();
+  if (q.given) m = contact_modes(s.scene, q.t);
   if (o.json) {
-    std::cout << "{\"command\": \"reuleaux\", \"name\": " << json::quote(s.scene.name)
-              << ", \"reading\": \"frictionless\", \"rank\": " << s.labels.cone.rank
-              << ", \"form_closure\": " << (closed ? "true" : "false") << ", " << labels_json_fields(s.labels);
-    if (queries) {
-      const std::array<Rational, 3> ta = {t[0], t[1], t[2]};
-      std::cout << ", \"query\": {" << twist_json(ta) << ", \"feasible\": " << (m.feasible ? "true" : "false")
-                << ", \"marginal\": " << (m.marginal ? "true" : "false") << ", \"modes\": [";
-      for (std::size_t i = 0; i < m.modes.size(); ++i)
-        std::cout << (i ? ", " : "") << "{\"contact\": " << i << ", \"mode\": \"" << mode_name(m.modes[i]) << "\"}";
-      std::cout << "]}";
-    }
-    std::cout << "}\n";
+    std::cout << reuleaux_json(s, q, m) << "\n";
     return kAnswered;
   }
+  const bool closed = s.labels.cone.force_closure();
   std::cout << "scene: " << (s.scene.name.empty() ? source : s.scene.name) << "\n"
             << "Reuleaux's method: the contacts read frictionless (exact)\n"
             << labels_human(s.labels)
             << "first-order form closure: " << (closed ? "yes (no feasible rotation centre or translation)" : "no")
             << "\n";
-  if (queries) {
-    std::cout << "twist " << vec_text({t[0], t[1], t[2]}) << ": "
+  if (q.given) {
+    std::cout << "twist " << vec_text({q.t[0], q.t[1], q.t[2]}) << ": "
               << (m.feasible ? (m.marginal ? "feasible, marginal (keeps some contacts to first order)" : "feasible")
                              : "infeasible (penetrates)")
               << "\n";

@@ -14,6 +14,7 @@
 #include "exact/json.h"
 #include "exact/limit_surface.h"
 #include "exact/sliding.h"
+#include "exact/streaming_scene_reader.h"
 
 namespace wrenchkit::cli {
 
@@ -56,6 +57,7 @@ struct Ls_options {
   bool sides_given = false;
   std::optional<Rational> tolerance;
   std::string tolerance_text;
+  int sets_built = 0;  // direction sets tried to meet the tolerance
   std::optional<Vec3q> twist, load;
   std::string off_file, obj_file, svg_file;
   bool list = false;
@@ -167,161 +169,160 @@ std::string obj_text(const Ls_polytope& in, const Ls_polytope& out) {
 std::string gauge_text(const std::optional<Rational>& g) { return g ? human_number(*g) : std::string("infinite"); }
 std::string gauge_json(const std::optional<Rational>& g) { return g ? jq(*g) : std::string("null"); }
 
-}  // namespace
-
-int run_limit_surface(int argc, char** argv) {
-  Ls_options lo;
-  std::vector<char*> rest = {argv[0], argv[1]};
-  std::vector<std::string> twist_text(3);  // --tolerance, --twist, --load texts
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw Usage_error(a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--sides") {
-      const std::string v = value();
-      if (v.empty() || v.size() > 6 || v.find_first_not_of("0123456789") != std::string::npos)
-        throw Usage_error("--sides: \"" + v + "\" is not a positive integer");
-      lo.sides = std::stoi(v);
-      lo.sides_given = true;
-      if (lo.sides < 4 || lo.sides % 2 != 0 || lo.sides > kMaxSides)
-        throw Usage_error("--sides: " + v + " must be even and between 4 and " + std::to_string(kMaxSides));
-    } else if (a == "--tolerance") {
-      lo.tolerance_text = value();
-      twist_text[0] = lo.tolerance_text;
-    } else if (a == "--twist") {
-      twist_text[1] = value();
-      lo.twist = Vec3q{};
-    } else if (a == "--load") {  // parsed below, once the number limits are known
-      twist_text[2] = value();
-      lo.load = Vec3q{};
-    } else if (a == "--off") lo.off_file = value();
-    else if (a == "--obj") lo.obj_file = value();
-    else if (a == "--svg") lo.svg_file = value();
-    else if (a == "--list") lo.list = true;
-    else rest.push_back(argv[i]);
-  }
-  const Options o = parse_options(static_cast<int>(rest.size()), rest.data(), 2);
-  if (o.help) return std::cout << kLimitSurfaceHelp, kAnswered;
-  if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
+// The options, read and checked once (before any scene): --sides or --tolerance (resolved to N here),
+// --twist, --load, the exports and --list.
+Ls_options limit_surface_options(const Options& o) {
+  only_options(o, "limit-surface", {"--sides", "--tolerance", "--twist", "--load", "--off", "--obj", "--svg", "--list"});
+  if (o.verdict_only) throw Usage_error("--verdict-only is for batch closure");
   if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
     throw Usage_error("limit-surface writes no certificate file (its certificate is lambda_squared)");
-  if (o.positional.size() != 1) throw Usage_error("limit-surface needs exactly one SCENE.json");
-  if (!lo.tolerance_text.empty()) {
+  Ls_options lo;
+  if (o.has("--sides")) {
+    const std::string& v = o.values.at("--sides");
+    if (v.empty() || v.size() > 6 || v.find_first_not_of("0123456789") != std::string::npos)
+      throw Usage_error("--sides: \"" + v + "\" is not a positive integer");
+    lo.sides = std::stoi(v);
+    lo.sides_given = true;
+    if (lo.sides < 4 || lo.sides % 2 != 0 || lo.sides > kMaxSides)
+      throw Usage_error("--sides: " + v + " must be even and between 4 and " + std::to_string(kMaxSides));
+  }
+  if (o.has("--tolerance")) {
+    lo.tolerance_text = o.values.at("--tolerance");
     if (lo.sides_given) throw Usage_error("--sides and --tolerance exclude each other");
     std::string why;
     const auto e = parse_rational(lo.tolerance_text, false, o.limits, why);
     if (!e) throw Usage_error("--tolerance: \"" + lo.tolerance_text + "\" " + why);
     if (*e <= 0) throw Usage_error("--tolerance: \"" + lo.tolerance_text + "\" must be > 0");
     lo.tolerance = *e;
-  }
-  if (lo.twist) {
-    lo.twist = parse_triple("--twist", twist_text[1], o.limits, "vx,vy,w");
-    if ((*lo.twist)[0] == 0 && (*lo.twist)[1] == 0 && (*lo.twist)[2] == 0)
-      throw Usage_error("--twist: \"" + twist_text[1] + "\" is the zero twist (no motion, no load)");
-  }
-  if (lo.load) lo.load = parse_triple("--load", twist_text[2], o.limits, "fx,fy,m");
-
-  const std::string& path = o.positional[0];
-  const std::string source = path == "-" ? "<stdin>" : path;
-  const Scene scene = read_scene(read_input(path, o.limits.max_file_bytes), o.limits, source);
-  if (!scene.support) throw Input_error(source + ": support: the scene has no \"support\" (limit-surface needs one)");
-
-  int sets_built = 0;
-  if (lo.tolerance) {
-    lo.sides = smallest_sides(*lo.tolerance, kMaxSides, &sets_built);
+    lo.sides = smallest_sides(*lo.tolerance, kMaxSides, &lo.sets_built);
     if (lo.sides == 0)
       throw Usage_error("--tolerance: " + lo.tolerance_text + " needs more than " + std::to_string(kMaxSides) +
                         " sides (the largest certified ratio available is reached at --sides " +
                         std::to_string(kMaxSides) + ")");
   }
-  const Polygonal_ls model(merge_support(*scene.support), make_directions(lo.sides));
+  if (o.has("--twist")) {
+    const std::string& t = o.values.at("--twist");
+    lo.twist = parse_triple("--twist", t, o.limits, "vx,vy,w");
+    if ((*lo.twist)[0] == 0 && (*lo.twist)[1] == 0 && (*lo.twist)[2] == 0)
+      throw Usage_error("--twist: \"" + t + "\" is the zero twist (no motion, no load)");
+  }
+  if (o.has("--load")) lo.load = parse_triple("--load", o.values.at("--load"), o.limits, "fx,fy,m");
+  if (o.has("--off")) lo.off_file = o.values.at("--off");
+  if (o.has("--obj")) lo.obj_file = o.values.at("--obj");
+  if (o.has("--svg")) lo.svg_file = o.values.at("--svg");
+  lo.list = o.has("--list");
+  return lo;
+}
+
+// Everything the command computes for one scene.
+struct Ls_result {
+  Scene scene;
+  std::optional<Polygonal_ls> model;
+  Ls_polytope in, out;
+  Sliding_answer sa;
+  std::optional<Rational> g_in, g_out;
+  Motion motion = Motion::undecided;
+  Polygonal_ls::Normal_cone cone_in, cone_out;
+};
+
+Ls_result compute_limit_surface(const Ls_options& lo, const Options& o, const std::string& text,
+                                const std::string& source) {
+  Ls_result r;
+  r.scene = read_scene_streaming(text, o.limits, source);
+  if (!r.scene.support)
+    throw Input_error(source + ": support: the scene has no \"support\" (limit-surface needs one)");
+  const Polygonal_ls& model = r.model.emplace(merge_support(*r.scene.support), make_directions(lo.sides));
   if (model.candidate_count() > kMaxCandidates)
     throw Usage_error("--sides " + std::to_string(lo.sides) + " with " + std::to_string(model.support().points.size()) +
                       " distinct support points needs " + std::to_string(model.candidate_count()) +
                       " candidate normals, more than the limit " + std::to_string(kMaxCandidates) +
                       "; use fewer sides (or a larger --tolerance)");
-  const Ls_polytope in = model.build(Side::inner), out = model.build(Side::outer);
-  const Directions& d = model.directions();
-  const Sliding_answer sa = compute_sliding(model, lo.twist);
-
-  if (!lo.off_file.empty()) write_file(lo.off_file, off_text(in, out));
-  if (!lo.obj_file.empty()) write_file(lo.obj_file, obj_text(in, out));
-  if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(scene, lo.sides));
-
-  std::optional<Rational> g_in, g_out;
-  Motion motion = Motion::undecided;
-  Polygonal_ls::Normal_cone cone_in, cone_out;
+  r.in = model.build(Side::inner);
+  r.out = model.build(Side::outer);
+  r.sa = compute_sliding(model, lo.twist);
   if (lo.load) {
-    g_in = model.gauge(in, Side::inner, *lo.load);
-    g_out = model.gauge(out, Side::outer, *lo.load);
-    motion = classify_load(g_in, g_out);
-    if (motion != Motion::sticks) {
-      cone_in = model.normal_cone(in, Side::inner, *lo.load);
-      cone_out = model.normal_cone(out, Side::outer, *lo.load);
+    r.g_in = model.gauge(r.in, Side::inner, *lo.load);
+    r.g_out = model.gauge(r.out, Side::outer, *lo.load);
+    r.motion = classify_load(r.g_in, r.g_out);
+    if (r.motion != Motion::sticks) {
+      r.cone_in = model.normal_cone(r.in, Side::inner, *lo.load);
+      r.cone_out = model.normal_cone(r.out, Side::outer, *lo.load);
     }
   }
+  return r;
+}
+
+const char* kConvention =
+    "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
+    "the friction wrench on the slider is its negative";
+
+std::string ratio_text(const Directions& d) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", 1 / std::sqrt(d.lambda_sq.get_d()) - 1);
+  return buf;
+}
+
+std::string limit_surface_json(const Ls_options& lo, const Ls_result& r) {
+  const Polygonal_ls& model = *r.model;
+  const Directions& d = model.directions();
   const Ls_support& sup = model.support();
-  const std::string convention =
-      "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
-      "the friction wrench on the slider is its negative";
-  char ratio_buf[32];
-  std::snprintf(ratio_buf, sizeof ratio_buf, "%.6g", 1 / std::sqrt(d.lambda_sq.get_d()) - 1);
-  const std::string ratio = ratio_buf;
-  if (o.json) {
-    std::ostringstream s;
-    s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(scene.name) << ", \"convention\": "
-      << json::quote(convention) << ", \"sides\": " << lo.sides;
-    if (lo.tolerance)
-      s << ", \"tolerance\": " << jq(*lo.tolerance) << ", \"direction_sets_tried\": " << sets_built;
-    s << ", \"lambda_squared\": " << jq(d.lambda_sq) << ", \"relative_error_bound_approx\": " << ratio
-      << ", \"support\": {\"input_points\": " << scene.support->points.size()
-      << ", \"points\": " << sup.points.size() << ", \"collinear\": " << (sup.collinear ? "true" : "false")
-      << ", \"mu_f0\": " << jq(sa.mu_f0) << ", \"center_of_friction\": [" << jq(sa.center_of_friction.x) << ", "
-      << jq(sa.center_of_friction.y) << "]}, \"dimension\": " << model.dimension()
-      << ", \"inner\": " << polytope_json(in, lo.list) << ", \"outer\": " << polytope_json(out, lo.list);
-    if (lo.twist) {
-      s << ", \"twist\": " << jv(*lo.twist) << ", \"load_for_twist\": {\"inner\": " << face_json(sa.inner_face)
-        << ", \"outer\": " << face_json(sa.outer_face) << ", \"power\": {\"inner\": " << jq(sa.h_inner)
-        << ", \"outer\": " << jq(sa.h_outer) << "}, \"true_surface\": {\"kind\": \""
-        << (sa.cls.kind == Twist_kind::facet ? "facet" : (sa.cls.kind == Twist_kind::vertex ? "vertex" : "smooth"))
-        << "\", \"text\": " << json::quote(sa.cls.text) << "}}";
-    }
-    if (lo.load) {
-      auto cone_json = [&](const Polygonal_ls::Normal_cone& c) {
-        std::string r = "{\"generators\": [";
-        for (std::size_t i = 0; i < c.generators.size(); ++i) r += (i ? ", " : "") + jz(c.generators[i]);
-        r += "], \"lineality\": [";
-        for (std::size_t i = 0; i < c.lineality.size(); ++i) r += (i ? ", " : "") + jz(c.lineality[i]);
-        return r + "]}";
-      };
-      s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(motion)
-        << "\", \"gauge\": {\"outer\": " << gauge_json(g_out) << ", \"inner\": " << gauge_json(g_in) << "}";
-      if (motion != Motion::sticks)
-        s << ", \"twist_cone\": {\"outer\": " << cone_json(cone_out) << ", \"inner\": " << cone_json(cone_in) << "}";
-    }
-    s << "}\n";
-    std::cout << s.str();
-    return kAnswered;
-  }
+  const Sliding_answer& sa = r.sa;
   std::ostringstream s;
-  s << "scene: " << (scene.name.empty() ? source : scene.name) << "\n"
-    << "support: " << sup.points.size() << " distinct point(s) with mu*f > 0 (of " << scene.support->points.size()
+  s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(r.scene.name) << ", \"convention\": "
+    << json::quote(kConvention) << ", \"sides\": " << lo.sides;
+  if (lo.tolerance) s << ", \"tolerance\": " << jq(*lo.tolerance) << ", \"direction_sets_tried\": " << lo.sets_built;
+  s << ", \"lambda_squared\": " << jq(d.lambda_sq) << ", \"relative_error_bound_approx\": " << ratio_text(d)
+    << ", \"support\": {\"input_points\": " << r.scene.support->points.size() << ", \"points\": " << sup.points.size()
+    << ", \"collinear\": " << (sup.collinear ? "true" : "false") << ", \"mu_f0\": " << jq(sa.mu_f0)
+    << ", \"center_of_friction\": [" << jq(sa.center_of_friction.x) << ", " << jq(sa.center_of_friction.y)
+    << "]}, \"dimension\": " << model.dimension() << ", \"inner\": " << polytope_json(r.in, lo.list)
+    << ", \"outer\": " << polytope_json(r.out, lo.list);
+  if (lo.twist) {
+    s << ", \"twist\": " << jv(*lo.twist) << ", \"load_for_twist\": {\"inner\": " << face_json(sa.inner_face)
+      << ", \"outer\": " << face_json(sa.outer_face) << ", \"power\": {\"inner\": " << jq(sa.h_inner)
+      << ", \"outer\": " << jq(sa.h_outer) << "}, \"true_surface\": {\"kind\": \""
+      << (sa.cls.kind == Twist_kind::facet ? "facet" : (sa.cls.kind == Twist_kind::vertex ? "vertex" : "smooth"))
+      << "\", \"text\": " << json::quote(sa.cls.text) << "}}";
+  }
+  if (lo.load) {
+    auto cone_json = [&](const Polygonal_ls::Normal_cone& c) {
+      std::string t = "{\"generators\": [";
+      for (std::size_t i = 0; i < c.generators.size(); ++i) t += (i ? ", " : "") + jz(c.generators[i]);
+      t += "], \"lineality\": [";
+      for (std::size_t i = 0; i < c.lineality.size(); ++i) t += (i ? ", " : "") + jz(c.lineality[i]);
+      return t + "]}";
+    };
+    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion)
+      << "\", \"gauge\": {\"outer\": " << gauge_json(r.g_out) << ", \"inner\": " << gauge_json(r.g_in) << "}";
+    if (r.motion != Motion::sticks)
+      s << ", \"twist_cone\": {\"outer\": " << cone_json(r.cone_out) << ", \"inner\": " << cone_json(r.cone_in) << "}";
+  }
+  s << "}";
+  return s.str();
+}
+
+std::string limit_surface_human(const Ls_options& lo, const Ls_result& r, const std::string& source) {
+  const Polygonal_ls& model = *r.model;
+  const Directions& d = model.directions();
+  const Ls_support& sup = model.support();
+  const Sliding_answer& sa = r.sa;
+  std::ostringstream s;
+  s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
+    << "support: " << sup.points.size() << " distinct point(s) with mu*f > 0 (of " << r.scene.support->points.size()
     << " given)" << (sup.collinear ? ", collinear" : "") << ", mu*f0 = " << to_string(sa.mu_f0)
     << ", centre of friction (" << to_string(sa.center_of_friction.x) << ", " << to_string(sa.center_of_friction.y)
     << ")\n"
     << "sides: " << lo.sides;
   if (lo.tolerance) s << " (the smallest meeting --tolerance " << to_string(*lo.tolerance) << ")";
   s << "\ncertificate: lambda^2 = " << to_string(d.lambda_sq) << "  (lambda*LS <= LS_in <= LS <= LS_out <= LS/lambda;"
-    << " relative error 1/lambda - 1 ~ " << ratio << ")\n";
+    << " relative error 1/lambda - 1 ~ " << ratio_text(d) << ")\n";
   if (model.dimension() == 2)
     s << "note: one support point: the limit surface is a flat disc in the plane of its rotation twist (dimension 2);"
          " 'facets' are its two sides\n";
   if (model.dimension() == 0) s << "note: no point has mu*f > 0: the limit surface is the single point 0\n";
-  for (const auto& [name, P] : {std::pair<const char*, const Ls_polytope*>{"inner", &in}, {"outer", &out}})
+  for (const auto& [name, P] : {std::pair<const char*, const Ls_polytope*>{"inner", &r.in}, {"outer", &r.out}})
     s << name << ": " << P->facets.size() << " facets, " << P->vertices.size() << " vertices, " << P->edges << " edges\n";
-  s << "convention: " << convention << "\n";
+  s << "convention: " << kConvention << "\n";
   if (lo.twist) {
     s << "twist " << tv(*lo.twist) << ": " << sa.cls.text << "\n";
     for (const auto& [name, f] : {std::pair<const char*, const Ls_face*>{"inner", &sa.inner_face}, {"outer", &sa.outer_face}}) {
@@ -336,17 +337,34 @@ int run_limit_surface(int argc, char** argv) {
     s << "  power: " << to_string(sa.h_inner) << " <= h <= " << to_string(sa.h_outer) << "\n";
   }
   if (lo.load) {
-    s << "load " << tv(*lo.load) << ": " << motion_name(motion) << "  (gauge between " << gauge_text(g_out) << " and "
-      << gauge_text(g_in) << "; sticks if < 1, slides if >= 1)\n";
-    if (motion == Motion::undecided) s << "  undecided: refine with more --sides or a smaller --tolerance\n";
-    if (motion != Motion::sticks) {
+    s << "load " << tv(*lo.load) << ": " << motion_name(r.motion) << "  (gauge between " << gauge_text(r.g_out)
+      << " and " << gauge_text(r.g_in) << "; sticks if < 1, slides if >= 1)\n";
+    if (r.motion == Motion::undecided) s << "  undecided: refine with more --sides or a smaller --tolerance\n";
+    if (r.motion != Motion::sticks) {
       s << "  twists (outward normals of LS_out at the load's direction):";
-      for (const Vec3z& g : cone_out.generators) s << " " << tz(g);
-      for (const Vec3z& g : cone_out.lineality) s << " +-" << tz(g);
+      for (const Vec3z& g : r.cone_out.generators) s << " " << tz(g);
+      for (const Vec3z& g : r.cone_out.lineality) s << " +-" << tz(g);
       s << "\n";
     }
   }
-  std::cout << s.str();
+  return s.str();
+}
+
+}  // namespace
+
+Scene_answer prepare_limit_surface_json(const Options& o) {
+  return [o, lo = limit_surface_options(o)](const std::string& text, const std::string& source) {
+    return limit_surface_json(lo, compute_limit_surface(lo, o, text, source));
+  };
+}
+
+int run_limit_surface(const Options& o, const std::string& text, const std::string& source) {
+  const Ls_options lo = limit_surface_options(o);
+  const Ls_result r = compute_limit_surface(lo, o, text, source);
+  if (!lo.off_file.empty()) write_file(lo.off_file, off_text(r.in, r.out));
+  if (!lo.obj_file.empty()) write_file(lo.obj_file, obj_text(r.in, r.out));
+  if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.sides));
+  std::cout << (o.json ? limit_surface_json(lo, r) + "\n" : limit_surface_human(lo, r, source));
   return kAnswered;
 }
 

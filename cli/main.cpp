@@ -33,8 +33,8 @@ const char* kUsage =
     "  sliding   centre of friction and the frictional load of the support for a twist (--twist)\n"
     "  analyze   everything the scene calls for: closure, and equilibrium when it has a load\n"
     "  demo      analyze of a bundled textbook scene (Mason's Example 3), no file needed\n"
-    "  batch     wrenchkit batch closure < scenes.jsonl: one scene per line, one answer per line,\n"
-    "            on all cores (--jobs N)\n"
+    "  batch     wrenchkit batch COMMAND < scenes.jsonl: one scene per line, one JSON answer per\n"
+    "            line in order, on all cores (--jobs N), for each command that answers per scene\n"
     "  reference wrenchkit reference --out DIR: the reference corpus for other implementations\n"
     "            (scenes, exact answers, checked certificates, distance to a degenerate boundary)\n"
     "  compare   wrenchkit compare DIR ANSWERS: another implementation's answers (JSON lines or\n"
@@ -157,21 +157,25 @@ const char* kCheckHelp =
     "options: --json, and the --max-* limits of 'wrenchkit closure --help'\n";
 
 const char* kBatchHelp =
-    "usage: wrenchkit batch closure [OPTIONS] < scenes.jsonl\n"
+    "usage: wrenchkit batch COMMAND [OPTIONS] < scenes.jsonl\n"
+    "       COMMAND: closure, equilibrium, labels, dual, reuleaux, limit-surface, sliding, analyze\n"
     "\n"
     "Reads one scene per line (JSON lines) on standard input and writes one JSON answer per line,\n"
-    "in the same order, computed on --jobs threads: the output of 'closure --json' with a \"line\"\n"
-    "field, or {\"line\": N, \"error\": MESSAGE, \"exit_code\": 2} for a bad line (the stream goes\n"
-    "on), {\"line\": N, \"undecided\": …, \"exit_code\": 3} when --mode float cannot decide.\n"
-    "Every certificate is checked by the independent checker, as in 'closure'.\n"
+    "in the same order, computed on --jobs threads (the output is the same for any --jobs): the\n"
+    "output of 'wrenchkit COMMAND --json' with a \"line\" field first, or {\"line\": N, \"error\":\n"
+    "MESSAGE, \"exit_code\": 2} for a bad line (the stream goes on), {\"line\": N, \"undecided\": …,\n"
+    "\"exit_code\": 3} when --mode float cannot decide. The command's own options apply to every\n"
+    "line (batch sliding --twist 0,0,1, batch labels --resultant 0,1,0, batch limit-surface --sides 8).\n"
+    "Every certificate is checked by the independent checker, as in the single commands.\n"
     "\n"
     "options:\n"
     "  --jobs N           threads (default: all cores)\n"
-    "  --verdict-only     skip certificates and their check (throughput runs; the verdicts are\n"
-    "                     the same, but nothing proves them)\n"
-    "  --mode, --max-*    as for closure (--max-file-size limits each line)\n"
-    "Exit code: 0 when every line was answered or reported, 4 if a certificate ever failed its\n"
-    "check (a bug), 70 on an internal error.\n";
+    "  --verdict-only     closure only: skip certificates and their check (throughput runs; the\n"
+    "                     verdicts are the same, but nothing proves them)\n"
+    "  --mode, --max-*    as for the command (--max-file-size limits each line)\n"
+    "  COMMAND's options  except those that write files (--certificate, --off, --obj, --svg)\n"
+    "Exit code: 0 when every line was answered or reported, 2 for a usage error (before any line is\n"
+    "read), 4 if a certificate ever failed its check (a bug), 70 on an internal error.\n";
 
 const char* kDemoHelp =
     "usage: wrenchkit demo [--json]\n"
@@ -195,8 +199,6 @@ int dispatch(int argc, char** argv) {
     std::cout << "wrenchkit 0.1.0\n";
     return kAnswered;
   }
-  if (command == "limit-surface") return run_limit_surface(argc, argv);  // own options, then parse_options
-  if (command == "sliding") return run_sliding(argc, argv);
   if (command == "reference") return run_reference(argc, argv);
   if (command == "compare") return run_compare(argc, argv);
   const Options o = parse_options(argc, argv, 2);
@@ -210,6 +212,12 @@ int dispatch(int argc, char** argv) {
   if (command == "dual") return scene_command(kDualHelp, run_dual);
   if (command == "reuleaux") return scene_command(kReuleauxHelp, run_reuleaux);
   if (command == "render") return scene_command(kRenderHelp, run_render);
+  if (command == "limit-surface") return scene_command(kLimitSurfaceHelp, run_limit_surface);
+  if (command == "sliding") return scene_command(kSlidingHelp, run_sliding);
+  if (command == "batch") {
+    if (o.help) return std::cout << kBatchHelp, kAnswered;
+    return run_batch(o);
+  }
   if (!o.values.empty()) throw Usage_error(o.values.begin()->first + " is not an option of " + command);
   if (command == "closure") {
     if (o.help) return std::cout << kClosureHelp, kAnswered;
@@ -233,10 +241,6 @@ int dispatch(int argc, char** argv) {
   if (command == "check") {
     if (o.help) return std::cout << kCheckHelp, kAnswered;
     return run_check(o);
-  }
-  if (command == "batch") {
-    if (o.help) return std::cout << kBatchHelp, kAnswered;
-    return run_batch(o);
   }
   if (command == "demo") {
     if (o.help) return std::cout << kDemoHelp, kAnswered;

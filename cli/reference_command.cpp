@@ -218,13 +218,14 @@ Built build_line(const Entry& e, const Reference_options& ro) {
     throw Self_check_failure(e.id + ": the one-line scene does not read back to the canonical scene");
   // Closure and equilibrium through the commands' own checked path: every certificate is accepted by
   // the independent checker (on `text`, the bytes written) before we go on.
-  const Closure_result c = compute_closure(o, text, e.id);
+  Scene scene;
+  const Closure_item c = compute_closure(o, text, e.id, &scene);
   std::optional<Equilibrium_result> eq;
-  if (c.scene.load) eq = compute_equilibrium(o, c.scene, text);
+  if (scene.load) eq = compute_equilibrium(o, scene, text);
   bool balanced = eq && eq->a.balanced;
-  check_expected(e, c.fc.holds, c.fo.holds, c.fc.rank, c.fo.rank, eq ? &balanced : nullptr);
-  const Moment_labels labels = moment_labels(c.scene, Reading::friction);
-  const Boundary_distance bd = boundary_distance(c.scene);
+  check_expected(e, c.force.holds, c.form.holds, c.force.rank, c.form.rank, eq ? &balanced : nullptr);
+  const Moment_labels labels = moment_labels(scene, Reading::friction);
+  const Boundary_distance bd = boundary_distance(scene);
 
   std::ostringstream s;
   const auto str_or_null = [](const std::string& x) { return x.empty() ? std::string("null") : json::quote(x); };
@@ -232,22 +233,22 @@ Built build_line(const Entry& e, const Reference_options& ro) {
     << ", \"epsilon\": " << str_or_null(e.epsilon) << ", \"side\": " << str_or_null(e.side)
     << ", \"seed\": " << str_or_null(e.seed) << ", \"source\": " << str_or_null(e.source)
     << ", \"scene_file\": " << json::quote("scenes/" + e.id + ".json") << ", \"scene\": " << text
-    << ", \"force_closure\": " << (c.fc.holds ? "true" : "false")
-    << ", \"form_closure\": " << (c.fo.holds ? "true" : "false") << ", \"rank\": {\"force\": " << c.fc.rank
-    << ", \"form\": " << c.fo.rank << "}";
+    << ", \"force_closure\": " << (c.force.holds ? "true" : "false")
+    << ", \"form_closure\": " << (c.form.holds ? "true" : "false") << ", \"rank\": {\"force\": " << c.force.rank
+    << ", \"form\": " << c.form.rank << "}";
   if (eq) {
     const Wrench& l = eq->a.load;
     s << ", \"equilibrium\": " << (eq->a.balanced ? "true" : "false") << ", \"load\": [" << jq(l.fx) << ", "
       << jq(l.fy) << ", " << jq(l.m) << "]";
   }
   s << ", \"labels\": {" << labels_json_fields(labels) << "}";
-  if (c.scene.support) s << ", \"limit_surface\": " << limit_surface_json(c.scene, ro.sides);
-  s << ", \"certificates\": {\"force_closure\": " << c.fc_json << ", \"form_closure\": " << c.fo_json;
+  if (scene.support) s << ", \"limit_surface\": " << limit_surface_json(scene, ro.sides);
+  s << ", \"certificates\": {\"force_closure\": " << c.force_certificate << ", \"form_closure\": " << c.form_certificate;
   if (eq) s << ", \"equilibrium\": " << eq->cert;
   s << "}, \"boundary\": " << boundary_json(bd, e.epsilon, eq.has_value()) << "}";
   b.line = s.str();
   b.certificates = eq ? 3 : 2;
-  b.csv = e.id + "," + (c.fc.holds ? "true" : "false") + "," + (c.fo.holds ? "true" : "false") + "," +
+  b.csv = e.id + "," + (c.force.holds ? "true" : "false") + "," + (c.form.holds ? "true" : "false") + "," +
           (eq ? (eq->a.balanced ? "true" : "false") : "");
   return b;
 }

@@ -10,6 +10,7 @@
 #include "exact/input_error.h"
 #include "exact/json.h"
 #include "exact/sliding.h"
+#include "exact/streaming_scene_reader.h"
 
 namespace wrenchkit::cli {
 
@@ -46,41 +47,28 @@ std::string face_json(const Ls_face& f) {
   return s + "]}";
 }
 
-}  // namespace
-
-int run_sliding(int argc, char** argv) {
-  std::vector<char*> rest = {argv[0], argv[1]};
-  std::string twist_text, sides_text;
-  bool has_twist = false;
+// The options, read and checked once: --twist (not zero) and --sides (default 64).
+struct Sliding_options {
+  std::optional<Vec3q> twist;
   int sides = 64;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw Usage_error(a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--twist") {
-      twist_text = value();
-      has_twist = true;
-    } else if (a == "--sides") {
-      sides_text = value();
-      if (sides_text.empty() || sides_text.size() > 6 || sides_text.find_first_not_of("0123456789") != std::string::npos)
-        throw Usage_error("--sides: \"" + sides_text + "\" is not a positive integer");
-      sides = std::stoi(sides_text);
-      if (sides < 4 || sides % 2 != 0 || sides > kMaxSides)
-        throw Usage_error("--sides: " + sides_text + " must be even and between 4 and " + std::to_string(kMaxSides));
-    } else {
-      rest.push_back(argv[i]);
-    }
-  }
-  const Options o = parse_options(static_cast<int>(rest.size()), rest.data(), 2);
-  if (o.help) return std::cout << kSlidingHelp, kAnswered;
-  if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
+};
+
+Sliding_options sliding_options(const Options& o) {
+  only_options(o, "sliding", {"--twist", "--sides"});
+  if (o.verdict_only) throw Usage_error("--verdict-only is for batch closure");
   if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
     throw Usage_error("sliding writes no certificate file");
-  if (o.positional.size() != 1) throw Usage_error("sliding needs exactly one SCENE.json");
-  std::optional<Vec3q> twist;
-  if (has_twist) {
+  Sliding_options so;
+  if (o.has("--sides")) {
+    const std::string& v = o.values.at("--sides");
+    if (v.empty() || v.size() > 6 || v.find_first_not_of("0123456789") != std::string::npos)
+      throw Usage_error("--sides: \"" + v + "\" is not a positive integer");
+    so.sides = std::stoi(v);
+    if (so.sides < 4 || so.sides % 2 != 0 || so.sides > kMaxSides)
+      throw Usage_error("--sides: " + v + " must be even and between 4 and " + std::to_string(kMaxSides));
+  }
+  if (o.has("--twist")) {
+    const std::string& twist_text = o.values.at("--twist");
     std::vector<std::string> parts(1);
     for (char c : twist_text) {
       if (c == ',') parts.emplace_back();
@@ -97,51 +85,66 @@ int run_sliding(int argc, char** argv) {
     }
     if (t[0] == 0 && t[1] == 0 && t[2] == 0)
       throw Usage_error("--twist: \"" + twist_text + "\" is the zero twist (no motion, no load)");
-    twist = t;
+    so.twist = t;
   }
-  const std::string& path = o.positional[0];
-  const std::string source = path == "-" ? "<stdin>" : path;
-  const Scene scene = read_scene(read_input(path, o.limits.max_file_bytes), o.limits, source);
-  if (!scene.support) throw Input_error(source + ": support: the scene has no \"support\" (sliding needs one)");
-  const Polygonal_ls model(merge_support(*scene.support), make_directions(sides));
-  const Sliding_answer a = compute_sliding(model, twist);
-  const char* convention =
-      "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
-      "the friction wrench on the slider is its negative";
+  return so;
+}
+
+struct Sliding_result {
+  Scene scene;
+  std::optional<Polygonal_ls> model;
+  Sliding_answer a;
+};
+
+Sliding_result compute(const Sliding_options& so, const Options& o, const std::string& text, const std::string& source) {
+  Sliding_result r;
+  r.scene = read_scene_streaming(text, o.limits, source);
+  if (!r.scene.support) throw Input_error(source + ": support: the scene has no \"support\" (sliding needs one)");
+  r.a = compute_sliding(r.model.emplace(merge_support(*r.scene.support), make_directions(so.sides)), so.twist);
+  return r;
+}
+
+const char* kConvention =
+    "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
+    "the friction wrench on the slider is its negative";
+
+std::string sliding_json(const Sliding_options& so, const Sliding_result& r) {
+  const Sliding_answer& a = r.a;
   const char* kinds[] = {"facet", "vertex", "smooth"};
-  if (o.json) {
-    std::ostringstream s;
-    s << "{\"command\": \"sliding\", \"name\": " << json::quote(scene.name) << ", \"convention\": " << json::quote(convention)
-      << ", \"center_of_friction\": [" << jq(a.center_of_friction.x) << ", " << jq(a.center_of_friction.y)
-      << "], \"friction_centroid\": [" << jq(a.friction_centroid.x) << ", " << jq(a.friction_centroid.y)
-      << "], \"mu_f0\": " << jq(a.mu_f0);
-    if (a.has_twist) {
-      s << ", \"twist\": " << jv(a.twist) << ", \"motion\": \"" << (a.translation ? "translation" : "rotation") << "\"";
-      if (a.translation) {
-        s << ", \"load_direction\": " << jv(a.load_direction) << ", \"speed_squared\": " << jq(a.speed_squared)
-          << ", \"load\": " << (a.load ? jv(*a.load) : std::string("null"));
-      } else {
-        s << ", \"rotation_center\": [" << jq(a.rotation_center.x) << ", " << jq(a.rotation_center.y) << "]";
-      }
-      s << ", \"true_surface\": {\"kind\": \"" << kinds[static_cast<int>(a.cls.kind)] << "\", \"text\": "
-        << json::quote(a.cls.text);
-      if (a.cls.support_point >= 0) {
-        const Ls_point& p = model.support().points[static_cast<std::size_t>(a.cls.support_point)];
-        s << ", \"facet_disc\": {\"at\": [" << jq(p.at.x) << ", " << jq(p.at.y) << "], \"radius\": " << jq(p.rho) << "}";
-      }
-      s << "}, \"sides\": " << sides << ", \"lambda_squared\": " << jq(model.directions().lambda_sq)
-        << ", \"power\": {\"inner\": " << jq(a.h_inner) << ", \"outer\": " << jq(a.h_outer) << ", \"lower\": "
-        << jq(a.h_lo) << ", \"upper\": " << jq(a.h_hi) << "}, \"load_box\": {\"lower\": " << jv(a.load_lo)
-        << ", \"upper\": " << jv(a.load_hi) << ", \"of\": \""
-        << (a.cls.kind == Twist_kind::facet ? "the facet's centre" : "the load") << "\"}, \"inner_load\": "
-        << face_json(a.inner_face) << ", \"outer_load\": " << face_json(a.outer_face);
-    }
-    s << "}\n";
-    std::cout << s.str();
-    return kAnswered;
-  }
   std::ostringstream s;
-  s << "scene: " << (scene.name.empty() ? source : scene.name) << "\n"
+  s << "{\"command\": \"sliding\", \"name\": " << json::quote(r.scene.name) << ", \"convention\": " << json::quote(kConvention)
+    << ", \"center_of_friction\": [" << jq(a.center_of_friction.x) << ", " << jq(a.center_of_friction.y)
+    << "], \"friction_centroid\": [" << jq(a.friction_centroid.x) << ", " << jq(a.friction_centroid.y)
+    << "], \"mu_f0\": " << jq(a.mu_f0);
+  if (a.has_twist) {
+    s << ", \"twist\": " << jv(a.twist) << ", \"motion\": \"" << (a.translation ? "translation" : "rotation") << "\"";
+    if (a.translation) {
+      s << ", \"load_direction\": " << jv(a.load_direction) << ", \"speed_squared\": " << jq(a.speed_squared)
+        << ", \"load\": " << (a.load ? jv(*a.load) : std::string("null"));
+    } else {
+      s << ", \"rotation_center\": [" << jq(a.rotation_center.x) << ", " << jq(a.rotation_center.y) << "]";
+    }
+    s << ", \"true_surface\": {\"kind\": \"" << kinds[static_cast<int>(a.cls.kind)] << "\", \"text\": "
+      << json::quote(a.cls.text);
+    if (a.cls.support_point >= 0) {
+      const Ls_point& p = r.model->support().points[static_cast<std::size_t>(a.cls.support_point)];
+      s << ", \"facet_disc\": {\"at\": [" << jq(p.at.x) << ", " << jq(p.at.y) << "], \"radius\": " << jq(p.rho) << "}";
+    }
+    s << "}, \"sides\": " << so.sides << ", \"lambda_squared\": " << jq(r.model->directions().lambda_sq)
+      << ", \"power\": {\"inner\": " << jq(a.h_inner) << ", \"outer\": " << jq(a.h_outer) << ", \"lower\": "
+      << jq(a.h_lo) << ", \"upper\": " << jq(a.h_hi) << "}, \"load_box\": {\"lower\": " << jv(a.load_lo)
+      << ", \"upper\": " << jv(a.load_hi) << ", \"of\": \""
+      << (a.cls.kind == Twist_kind::facet ? "the facet's centre" : "the load") << "\"}, \"inner_load\": "
+      << face_json(a.inner_face) << ", \"outer_load\": " << face_json(a.outer_face);
+  }
+  s << "}";
+  return s.str();
+}
+
+std::string sliding_human(const Sliding_options& so, const Sliding_result& r, const std::string& source) {
+  const Sliding_answer& a = r.a;
+  std::ostringstream s;
+  s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
     << "centre of friction: (" << human_number(a.center_of_friction.x) << ", " << human_number(a.center_of_friction.y) << ")\n"
     << "mu*f0 = " << human_number(a.mu_f0) << ", friction centroid (" << human_number(a.friction_centroid.x) << ", "
     << human_number(a.friction_centroid.y) << ")\n";
@@ -153,14 +156,28 @@ int run_sliding(int argc, char** argv) {
         s << "load: (mu*f0/|v|) * " << thv(a.load_direction) << " with |v|^2 = " << human_number(a.speed_squared)
           << " (exact)\n";
     } else {
-      s << "power h between " << human_number(a.h_inner) << " and " << human_number(a.h_outer) << " (polygonal, " << sides
-        << " sides)\n";
+      s << "power h between " << human_number(a.h_inner) << " and " << human_number(a.h_outer) << " (polygonal, "
+        << so.sides << " sides)\n";
     }
     s << "load box: " << thv(a.load_lo) << " .. " << thv(a.load_hi)
       << (a.cls.kind == Twist_kind::facet ? " (the facet's centre)\n" : "\n");
   }
-  s << "convention: " << convention << "\n";
-  std::cout << s.str();
+  s << "convention: " << kConvention << "\n";
+  return s.str();
+}
+
+}  // namespace
+
+Scene_answer prepare_sliding_json(const Options& o) {
+  return [o, so = sliding_options(o)](const std::string& text, const std::string& source) {
+    return sliding_json(so, compute(so, o, text, source));
+  };
+}
+
+int run_sliding(const Options& o, const std::string& text, const std::string& source) {
+  const Sliding_options so = sliding_options(o);
+  const Sliding_result r = compute(so, o, text, source);
+  std::cout << (o.json ? sliding_json(so, r) + "\n" : sliding_human(so, r, source));
   return kAnswered;
 }
 

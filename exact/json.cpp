@@ -20,6 +20,13 @@ class Parser {
     return v;
   }
 
+  std::string string_at(std::size_t& pos) {
+    i_ = pos;
+    std::string out = string();
+    pos = i_;
+    return out;
+  }
+
  private:
   std::string_view s_;
   const Input_limits& limits_;
@@ -160,25 +167,7 @@ class Parser {
 
   std::string number() {
     const std::size_t start = i_;
-    auto digit = [&](std::size_t k) { return k < s_.size() && s_[k] >= '0' && s_[k] <= '9'; };
-    if (s_[i_] == '-') ++i_;
-    if (!digit(i_)) fail("malformed number");
-    if (s_[i_] == '0') {
-      ++i_;
-    } else {
-      while (digit(i_)) ++i_;
-    }
-    if (i_ < s_.size() && s_[i_] == '.') {
-      ++i_;
-      if (!digit(i_)) fail("malformed number");
-      while (digit(i_)) ++i_;
-    }
-    if (i_ < s_.size() && (s_[i_] == 'e' || s_[i_] == 'E')) {
-      ++i_;
-      if (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) ++i_;
-      if (!digit(i_)) fail("malformed number");
-      while (digit(i_)) ++i_;
-    }
+    if (!skip_number(s_, i_)) fail("malformed number");
     return std::string(s_.substr(start, i_ - start));
   }
 
@@ -304,6 +293,34 @@ const char* type_name(Type t) {
 
 Value parse(std::string_view text, const Input_limits& limits, std::string_view source) {
   return Parser(text, limits, source).document();
+}
+
+bool skip_number(std::string_view s, std::size_t& i) {
+  auto digit = [&](std::size_t k) { return k < s.size() && s[k] >= '0' && s[k] <= '9'; };
+  if (i < s.size() && s[i] == '-') ++i;
+  if (!digit(i)) return false;
+  if (s[i] == '0') {
+    ++i;
+  } else {
+    while (digit(i)) ++i;
+  }
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    if (!digit(i)) return false;
+    while (digit(i)) ++i;
+  }
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    if (!digit(i)) return false;
+    while (digit(i)) ++i;
+  }
+  return true;
+}
+
+std::string decode_string(std::string_view text, std::size_t& pos, const Input_limits& limits,
+                          std::string_view source) {
+  return Parser(text, limits, source).string_at(pos);
 }
 
 std::string quote(std::string_view s) {

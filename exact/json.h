@@ -36,6 +36,18 @@ const char* type_name(Type t);
 // Parses a whole document. Throws Input_error("SOURCE:LINE:COL: invalid JSON: …").
 Value parse(std::string_view text, const Input_limits& limits, std::string_view source);
 
+// Moves `pos` over the JSON number token (RFC 8259 grammar) that starts at text[pos]; false when it is
+// malformed, with `pos` at the offending character. parse() and the streaming scene reader
+// (exact/streaming_scene_reader.cpp) tokenize numbers with it.
+bool skip_number(std::string_view text, std::size_t& pos);
+
+// Decodes the JSON string literal whose opening quote is text[pos], exactly as parse() decodes
+// strings (escapes, surrogate pairs, UTF-8 validation), and moves `pos` past the closing quote.
+// Throws the Input_error parse() would throw there. For readers that scan JSON themselves
+// (exact/streaming_scene_reader.cpp), so that they and parse() agree on every string.
+std::string decode_string(std::string_view text, std::size_t& pos, const Input_limits& limits,
+                          std::string_view source);
+
 // Writes `s` as a JSON string literal (with quotes), escaping as RFC 8259 requires.
 std::string quote(std::string_view s);
 

@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <cmath>
+#include <optional>
+#include <string>
 
 namespace wrenchkit {
 namespace {
@@ -113,7 +115,6 @@ bool parse_impl(std::string_view s, bool json_number, const Input_limits& limits
     return fail("has more digits than the digit limit");
 
   const long scale = exponent - static_cast<long>(frac_part.size());
-  Rational q;
   bool approx_done = false;
   // Fast path: at most 18 significant digits and |scale| ≤ 18 fit in 64-bit integers (the value is
   // m·10^scale with m < 10^18 and 10^|scale| ≤ 10^18), so no string-to-GMP conversion is needed.
@@ -125,64 +126,64 @@ bool parse_impl(std::string_view s, bool json_number, const Input_limits& limits
     lead += f;
   }
   const std::size_t significant = int_part.size() + frac_part.size() - lead;
-  if (significant <= 18 && scale >= -18 && scale <= 18 && (scale <= 0 || significant + scale <= 18)) {
-    unsigned long m = 0;
+  const bool fast = significant <= 18 && scale >= -18 && scale <= 18 && (scale <= 0 || significant + scale <= 18);
+  unsigned long m = 0, p = 1;
+  if (fast) {
     for (char c : int_part) m = m * 10 + static_cast<unsigned long>(c - '0');
     for (char c : frac_part) m = m * 10 + static_cast<unsigned long>(c - '0');
-    unsigned long p = 1;
     for (long k = 0; k < (scale < 0 ? -scale : scale); ++k) p *= 10;
     if (sign) *sign = m == 0 ? 0 : (negative ? -1 : 1);
-    const bool need_exact = out != nullptr || !approx || !(m < (1ul << 53) && p <= 1000000000000000ul);
-    if (need_exact) {
-      if (scale >= 0) {
-        q = Rational(Integer(m * p));
-      } else {
-        mpq_set_ui(q.get_mpq_t(), m, p);
-        q.canonicalize();
-      }
-    }
     // The certified double straight from the digits: m < 2^53 and p = 10^k ≤ 10^15 < 2^53 are
     // exact doubles, so one correctly rounded operation gives v, and fma gives its exact error
     // (the value lies in [10^-18, 10^18], far from underflow and overflow). [FL-4]
-    if (approx) {
-      if (m < (1ul << 53) && p <= 1000000000000000ul) {
-        const double dm = static_cast<double>(m), dp = static_cast<double>(p);
-        if (scale >= 0) {
-          const double v = dm * dp;
-          *approx = {v, std::fabs(std::fma(dm, dp, -v))};  // exact rounding error of the product
-        } else {
-          const double v = dm / dp;
-          const double rem = std::fma(-v, dp, dm);  // m − v·p, exact for a correctly rounded quotient
-          // |m/p − v| = |rem|/p; the division rounds, so inflate (or 0 when exact).
-          *approx = {v, rem == 0 ? 0.0 : (std::fabs(rem) / dp) * fl::Bounded::kInflate};
-        }
-        if (negative) approx->v = -approx->v;
-        approx_done = true;
+    if (approx && m < (1ul << 53) && p <= 1000000000000000ul) {
+      const double dm = static_cast<double>(m), dp = static_cast<double>(p);
+      if (scale >= 0) {
+        const double v = dm * dp;
+        *approx = {v, std::fabs(std::fma(dm, dp, -v))};  // exact rounding error of the product
+      } else {
+        const double v = dm / dp;
+        const double rem = std::fma(-v, dp, dm);  // m − v·p, exact for a correctly rounded quotient
+        // |m/p − v| = |rem|/p; the division rounds, so inflate (or 0 when exact).
+        *approx = {v, rem == 0 ? 0.0 : (std::fabs(rem) / dp) * fl::Bounded::kInflate};
       }
+      if (negative) approx->v = -approx->v;
+      approx_done = true;
+    }
+    if (approx_done && !out) return true;  // double and sign from the digits: no rational at all
+  }
+  std::optional<Rational> local;  // the exact value goes straight into *out when there is one
+  Rational& q = out ? *out : local.emplace();
+  if (fast) {
+    if (scale >= 0) {
+      mpz_set_ui(mpq_numref(q.get_mpq_t()), m * p);
+      mpz_set_ui(mpq_denref(q.get_mpq_t()), 1);
+    } else {
+      mpq_set_ui(q.get_mpq_t(), m, p);
+      q.canonicalize();
     }
   } else {
     std::string mantissa;
     mantissa.reserve(int_digits + frac_part.size());
     mantissa.append(int_part);
     mantissa.append(frac_part);
-    const Integer m = integer_of(mantissa);
-    if (m == 0) {
+    const Integer mi = integer_of(mantissa);
+    if (mi == 0) {
       q = 0;
     } else if (scale >= 0) {
-      Integer p;
-      mpz_ui_pow_ui(p.get_mpz_t(), 10, static_cast<unsigned long>(scale));
-      q = Rational(m * p);
+      Integer pw;
+      mpz_ui_pow_ui(pw.get_mpz_t(), 10, static_cast<unsigned long>(scale));
+      q = Rational(mi * pw);
     } else {
-      Integer p;
-      mpz_ui_pow_ui(p.get_mpz_t(), 10, static_cast<unsigned long>(-scale));
-      q = Rational(m, p);
+      Integer pw;
+      mpz_ui_pow_ui(pw.get_mpz_t(), 10, static_cast<unsigned long>(-scale));
+      q = Rational(mi, pw);
       q.canonicalize();
     }
   }
-  if (negative) q = -q;
+  if (negative) mpq_neg(q.get_mpq_t(), q.get_mpq_t());
   if (approx && !approx_done) *approx = to_bounded(q);
   if (sign && !approx_done) *sign = sgn(q);
-  if (out) *out = std::move(q);
   return true;
 }
 
@@ -193,6 +194,11 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number, con
   Rational q;
   if (!parse_impl(s, json_number, limits, why, approx, &q, nullptr)) return std::nullopt;
   return q;
+}
+
+bool parse_rational_into(std::string_view s, bool json_number, const Input_limits& limits, std::string& why,
+                         Rational& out, fl::Bounded* approx) {
+  return parse_impl(s, json_number, limits, why, approx, &out, nullptr);
 }
 
 bool scan_number(std::string_view s, bool json_number, const Input_limits& limits, std::string& why,

@@ -26,6 +26,11 @@ std::optional<Rational> parse_rational(std::string_view text, bool json_number,
                                        const Input_limits& limits, std::string& why,
                                        fl::Bounded* approx = nullptr);
 
+// parse_rational into an existing Rational (the streaming scene reader reuses its storage); the
+// same grammar, limits, value, certified double and reasons. `out` is unspecified on failure.
+bool parse_rational_into(std::string_view text, bool json_number, const Input_limits& limits, std::string& why,
+                         Rational& out, fl::Bounded* approx = nullptr);
+
 // Validates `text` exactly as parse_rational does and returns its certified double and its exact
 // sign (−1, 0, 1), building no rational when the digits are short enough to avoid it (≤ 18
 // significant digits, |scale| ≤ 15). For the lazy scene reading of the float path.

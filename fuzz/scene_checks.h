@@ -1,6 +1,9 @@
 // The promises every fuzz target checks on a scene text (shared by fuzz_scene_parser, which feeds
 // raw bytes, and fuzz_structured, which builds near-degenerate scenes from the bytes):
-//   * the eager and lazy readings accept and reject alike, with the same message;
+//   * every reader — read_scene eager and lazy, the streaming reader eager and lazy, into a fresh
+//     Scene and into one reused from the previous input — accepts and rejects alike, with the same
+//     message, and gives the same Scene field by field (readers_disagree; tests/scene_test.cpp runs
+//     it on every bad-input case too);
 //   * parse → write_scene → parse gives the same canonical text;
 //   * closure: hybrid (always decided) and a decided float twin agree with exact;
 //   * labels and the force dual agree with closure, the labels' load reading with equilibrium;
@@ -15,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <optional>
 #include <iostream>
 #include <string>
 #include <string_view>
@@ -27,9 +31,113 @@
 #include "exact/scene.h"
 #include "exact/scene_writer.h"
 #include "exact/sliding.h"
+#include "exact/streaming_scene_reader.h"
 #include "exact/to_float.h"
 #include "exact/twin_agreement.h"
 #include "proofs/checker/checker.h"
+
+namespace scene_checks_detail {
+
+using namespace wrenchkit;
+
+inline bool same_bounded(const fl::Bounded& a, const fl::Bounded& b) {
+  return (a.v == b.v || (a.v != a.v && b.v != b.v)) && (a.e == b.e || (a.e != a.e && b.e != b.e));
+}
+inline bool same_vec(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
+inline bool same_wrench(const Wrench& a, const Wrench& b) { return a.fx == b.fx && a.fy == b.fy && a.m == b.m; }
+inline bool same_twin(const fl::Bounded_contact& a, const fl::Bounded_contact& b) {
+  return a.is_wrench == b.is_wrench && a.frictional == b.frictional && same_bounded(a.ax, b.ax) &&
+         same_bounded(a.ay, b.ay) && same_bounded(a.nx, b.nx) && same_bounded(a.ny, b.ny) &&
+         same_bounded(a.mu, b.mu) && same_bounded(a.fx, b.fx) && same_bounded(a.fy, b.fy) && same_bounded(a.m, b.m);
+}
+template <class T, class Same>
+bool same_optional(const std::optional<T>& a, const std::optional<T>& b, Same same) {
+  return a.has_value() == b.has_value() && (!a || same(*a, *b));
+}
+
+}  // namespace scene_checks_detail
+
+// "" when a and b are the same Scene field by field (exact rationals, certified doubles bit for bit,
+// kept number texts, flags), else the first field that differs.
+inline std::string scene_difference(const wrenchkit::Scene& a, const wrenchkit::Scene& b) {
+  using namespace scene_checks_detail;
+  if (a.name != b.name) return "name";
+  if (a.body.outline.size() != b.body.outline.size()) return "body.outline";
+  for (std::size_t i = 0; i < a.body.outline.size(); ++i)
+    if (!same_vec(a.body.outline[i], b.body.outline[i])) return "body.outline[" + std::to_string(i) + "]";
+  if (!same_optional(a.body.com, b.body.com, same_vec)) return "body.com";
+  if (a.contacts.size() != b.contacts.size()) return "contacts";
+  for (std::size_t i = 0; i < a.contacts.size(); ++i) {
+    const Contact &x = a.contacts[i], &y = b.contacts[i];
+    const std::string at = "contacts[" + std::to_string(i) + "]";
+    if (x.kind != y.kind || x.name != y.name) return at + " kind or name";
+    if (!same_vec(x.at, y.at) || !same_vec(x.normal, y.normal) || x.mu != y.mu || !same_wrench(x.wrench, y.wrench))
+      return at + " rationals";
+    if (x.has_twin != y.has_twin || !same_twin(x.twin, y.twin)) return at + " certified doubles";
+    if (x.exact_pending != y.exact_pending || x.number_text != y.number_text || x.number_is_json != y.number_is_json)
+      return at + " kept number texts";
+  }
+  const auto same_load = [](const Load& x, const Load& y) {
+    return x.kind == y.kind && same_vec(x.force, y.force) && same_vec(x.at, y.at) && same_wrench(x.wrench, y.wrench) &&
+           x.weight == y.weight;
+  };
+  if (!same_optional(a.load, b.load, same_load)) return "load";
+  const auto same_q = [](const Rational& x, const Rational& y) { return x == y; };
+  const auto same_support = [&](const Support& x, const Support& y) {
+    if (!same_optional(x.mu, y.mu, same_q) || x.points.size() != y.points.size()) return false;
+    for (std::size_t i = 0; i < x.points.size(); ++i)
+      if (!same_vec(x.points[i].at, y.points[i].at) || x.points[i].force != y.points[i].force ||
+          !same_optional(x.points[i].mu, y.points[i].mu, same_q))
+        return false;
+    return true;
+  };
+  if (!same_optional(a.support, b.support, same_support)) return "support";
+  return "";
+}
+
+// Reads `text` with every reader: read_scene eager and lazy, and the streaming reader eager and lazy,
+// into a fresh Scene and into `reused_eager` / `reused_lazy` (whatever they held before: a previous
+// scene, so stale state would show). Returns "" when all of them accept with the same Scene (eager
+// with eager, lazy with lazy) or all reject with the same message, and the streaming reader read every
+// valid scene in its one pass (unless max_depth < 5); else what differs. On return the reused scenes
+// hold this text's scene when it was accepted.
+inline std::string readers_disagree(std::string_view text, const wrenchkit::Input_limits& limits,
+                                    wrenchkit::Scene& reused_eager, wrenchkit::Scene& reused_lazy) {
+  using namespace wrenchkit;
+  for (const bool lazy : {false, true}) {
+    Scene reference, fresh;
+    std::string want, got_fresh, got_reused;
+    try {
+      reference = read_scene(text, limits, "fuzz", lazy);
+    } catch (const Input_error& e) {
+      want = e.what();
+    }
+    try {
+      fresh = read_scene_streaming(text, limits, "fuzz", lazy);
+    } catch (const Input_error& e) {
+      got_fresh = e.what();
+    }
+    Scene& reused = lazy ? reused_lazy : reused_eager;
+    bool one_pass = false;
+    try {
+      one_pass = read_scene_into(reused, text, limits, "fuzz", lazy);
+    } catch (const Input_error& e) {
+      got_reused = e.what();
+    }
+    const std::string reading = lazy ? "lazy" : "eager";
+    if (got_fresh != want || got_reused != want)
+      return reading + ": read_scene says \"" + want + "\", the streaming reader \"" + got_fresh +
+             "\" (into a reused scene: \"" + got_reused + "\")";
+    if (!want.empty()) continue;
+    if (!one_pass && limits.max_depth >= 5)
+      return reading + ": the streaming reader deferred a valid scene to read_scene (it must read it in one pass)";
+    if (const std::string d = scene_difference(reference, fresh); !d.empty())
+      return reading + ": the streaming reader's scene differs in " + d;
+    if (const std::string d = scene_difference(reference, reused); !d.empty())
+      return reading + ": the streaming reader's scene, read into a reused one, differs in " + d;
+  }
+  return "";
+}
 
 // Checks everything the engine promises about one input text; aborts (a finding) on a broken promise.
 // Returns whether the text was a valid scene.
@@ -38,6 +146,11 @@ inline bool check_scene_text(std::string_view text) {
   limits.max_digits = 200;  // keep big-number work small per input
   limits.max_exponent = 200;
   limits.max_contacts = 64;
+  static wrenchkit::Scene reused_eager, reused_lazy;  // the previous input's scenes: reuse is checked too
+  if (const std::string d = readers_disagree(text, limits, reused_eager, reused_lazy); !d.empty()) {
+    std::cerr << "the scene readers disagree: " << d << "\n";
+    std::abort();
+  }
   wrenchkit::Scene scene, lazy;
   std::string eager_error, lazy_error;
   try {

@@ -222,7 +222,7 @@ TEST(Cli, BatchAnswersEveryLineInOrderOnManyThreads) {
   EXPECT_EQ(v.code, 0);
   EXPECT_NE(v.out.find("\"certificates_checked\": false"), std::string::npos);
   EXPECT_EQ(run("batch", input).code, 2);
-  EXPECT_EQ(run("batch labels", input).code, 2);
+  EXPECT_EQ(run("batch render", input).code, 2);
   EXPECT_EQ(run("closure --verdict-only '" + golden("no_contacts") + "'").code, 2);
   EXPECT_EQ(run("batch closure --jobs 0", input).code, 2);
   // A line longer than the limit is an error on its line; the stream goes on.

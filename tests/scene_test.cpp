@@ -7,6 +7,9 @@
 #include "exact/input_error.h"
 #include "exact/rational.h"
 #include "exact/scene.h"
+#include "exact/streaming_scene_reader.h"
+#include "fuzz/scene_checks.h"
+#include "tests/test_support.h"
 
 namespace wrenchkit {
 namespace {
@@ -103,7 +106,12 @@ TEST(Numbers, LimitsOnDigitsAndExponents) {
   EXPECT_TRUE(parse_rational(std::string(10001, '7'), true, raised, why).has_value());
 }
 
+// Every reader (read_scene eager and lazy, the streaming reader fresh and into a reused scene) must
+// give the same answer: the same message here.
+Scene reused_eager, reused_lazy;
+
 std::string error_of(const std::string& text, const Input_limits& lim = {}) {
+  EXPECT_EQ(readers_disagree(text, lim, reused_eager, reused_lazy), "") << text.substr(0, 200);
   try {
     read_scene(text, lim, "s.json");
   } catch (const Input_error& e) {
@@ -233,6 +241,146 @@ TEST(SceneModel, LazyReadingMatchesTheEagerOne) {
       }
     }
   }
+}
+
+// The streaming reader (batch) against read_scene: valid scenes in every form the schema allows
+// (keys in any order, escapes, UTF-8 names, numbers as strings, every load and support form, odd
+// whitespace, tight depth and count limits) and the bad-input classes of the command-line tests; each
+// through every reader, fresh and into a scene reused from the previous text.
+TEST(StreamingReader, AgreesWithReadSceneOnValidAndInvalidScenes) {
+  const std::vector<std::string> texts = {
+      R"({"wrenchkit": 1})",
+      "  {\"wrenchkit\":1 ,\"contacts\":[ ]}\r\n\t",
+      R"({"contacts": [{"mu": 0.5, "normal": [1, 0], "at": [0.25, "1/3"]}], "wrenchkit": "1/1", "name": "n"})",
+      R"({"wrenchkit": 1.0e0, "contacts": [{"at": [1, 2], "normal": ["+.5", "-2.5e-3"], "name": "caf\u00e9 \"x\""}]})",
+      "{\"wrenchkit\": 1, \"name\": \"\xc3\xa9\\n\\ud83d\\ude00\", \"contacts\": [{\"wrench\": [0, 0, \"1e-3\"], \"name\": \"\"}]}",
+      R"({"w\u0072enchkit": 1, "contacts": [{"\u0061t": [0, 0], "normal": [0, 1]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"wrench": [1, 0, 0]}, {"at": [0, 0], "normal": [1, 0], "mu": 0}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 123456789012345678901234567890.5], "normal": [1e-300, 0], "mu": 1e300}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0], "mu": "-0.0"}]})",
+      R"({"wrenchkit": 1, "body": {"outline": [[0,0],[1,0],[1,1]], "com": ["1/2", 0.5]}, "load": {"gravity": 2}})",
+      R"({"load": {"gravity": 2}, "body": {"com": [0, 0]}, "wrenchkit": 1})",
+      R"({"wrenchkit": 1, "body": {}, "load": {"wrench": [0, 0, 1]}})",
+      R"({"wrenchkit": 1, "body": {"outline": []}, "load": {"at": [1, 1], "force": [0, -1]}})",
+      R"({"wrenchkit": 1, "support": {"points": [{"at": [0, 0], "force": 1, "mu": 0.5}, {"force": 0, "at": [1, 0], "mu": 1}]}})",
+      R"({"wrenchkit": 1, "support": {"points": [{"at": [0, 0], "force": 1}], "mu": "1/2"}})",
+      // invalid
+      R"({"wrenchkit": 1, "support": {"points": [{"at": [0, 0], "force": 1}, {"at": [0, 0], "force": 1, "mu": 1}]}})",
+      R"({"wrenchkit": 1, "support": {"mu": 1, "points": []}})",
+      R"({"wrenchkit": 1, "support": {"mu": 1}})",
+      R"({"wrenchkit": 1, "load": {"gravity": 2}})",
+      R"({"wrenchkit": 1, "load": {"force": [0, 1]}})",
+      R"({"wrenchkit": 1, "load": {"force": [0, 1], "at": [0, 0], "wrench": [1, 0, 0]}})",
+      R"({"wrenchkit": 1, "load": {"gravity": -1}, "body": {"com": [0, 0]}})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0], "wrench": [1, 0, 0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"wrench": [1, 0, 0], "at": [0, 0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0], "at": [0, 0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]},]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0], "mu": -0.5}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0], "name": 3}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 00], "normal": [1, 0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, -], "normal": [1, 0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 1.], "normal": [1, 0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 1e], "normal": [1, 0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, "1"], "normal": [1, "\u0030"]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, "1\u0000"], "normal": [1, 0]}]})",
+      R"({"wrenchkit": 1, "name": "\ud800"})",
+      "{\"wrenchkit\": 1, \"name\": \"a\xff\"}",
+      "{\"wrenchkit\": 1, \"name\": \"tab\there\"}",
+      R"({"wrenchkit": 1, "name": "x"} {})",
+      R"({"wrenchkit": 2})",
+      R"({"wrenchkit": 1, "wrenchkit": 1})",
+      R"({"wrenchkit": 1, "body": {"com": [0, 0], "com": [0, 0]}})",
+      R"({"wrenchkit": true})",
+      R"({"wrenchkit": 1, "contacts": null})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]}])",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]}]}})",
+      "\xef\xbb\xbf{\"wrenchkit\": 1}",
+      "",
+      "[]",
+      // the bad-input classes of tests/cli_test.cpp
+      "{\"wrenchkit\": 1,",
+      R"({"wrenchkit": 1, "contacts": {}})",
+      R"({"wrenchkit": 1, "extra": 1})",
+      R"({"contacts": []})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0,0], "normal": [0,0]}]})",
+      R"({"wrenchkit": 1, "support": {"mu": 1, "points": [{"at": [0,0], "force": -2}]}})",
+      R"({"wrenchkit": 1, "support": {"mu": 1, "points": [{"at": [0,0], "force": 0}]}})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0,"1/0"], "normal": [0,1]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0,"Infinity"], "normal": [0,1]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0,1e10001], "normal": [0,1]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0,)" + std::string(10001, '1') + R"(], "normal": [0,1]}]})",
+  };
+  Scene eager, lazy;
+  int accepted = 0;
+  for (const std::string& t : texts) {
+    EXPECT_EQ(readers_disagree(t, Input_limits{}, eager, lazy), "") << t;
+    try {
+      read_scene(t, Input_limits{});
+      ++accepted;
+    } catch (const Input_error&) {
+    }
+  }
+  EXPECT_EQ(accepted, 16);  // the valid ones above really are valid
+  // Tight limits: nesting (support.points[i].at is 5 deep), contacts, digits, size.
+  const std::string deep = texts[13];
+  for (std::size_t depth = 0; depth <= 6; ++depth) {
+    Input_limits lim;
+    lim.max_depth = depth;
+    EXPECT_EQ(readers_disagree(deep, lim, eager, lazy), "") << depth;
+    EXPECT_EQ(readers_disagree(texts[9], lim, eager, lazy), "") << depth;
+  }
+  for (std::size_t n = 0; n <= 3; ++n) {
+    Input_limits lim;
+    lim.max_contacts = n;
+    EXPECT_EQ(readers_disagree(texts[6], lim, eager, lazy), "") << n;
+    lim.max_file_bytes = 10 * n;
+    EXPECT_EQ(readers_disagree(texts[0], lim, eager, lazy), "") << n;
+  }
+  Input_limits few_digits;
+  few_digits.max_digits = 3;
+  few_digits.max_exponent = 2;
+  for (const std::string& t : texts) EXPECT_EQ(readers_disagree(t, few_digits, eager, lazy), "") << t;
+}
+
+// Random byte mutations of valid scenes (fixed seed; WRENCHKIT_SEED overrides): whatever the bytes,
+// the streaming reader accepts exactly what read_scene accepts, with the same scene or message.
+TEST(StreamingReader, AgreesWithReadSceneOnMutatedScenes) {
+  const std::uint64_t seed = test::seed(20261207);
+  std::mt19937_64 rng(seed);
+  const std::vector<std::string> bases = {
+      R"({"wrenchkit": 1, "name": "g", "contacts": [{"at": [0.664303, 0.747463], "normal": [-0.455843, -0.589199], "mu": 0.228}, {"wrench": [1, "-2/3", 0]}]})",
+      R"({"wrenchkit": 1, "body": {"outline": [[0,0],[1,0]], "com": ["1/2", 0.5]}, "load": {"gravity": 2}, "contacts": [{"at": [0, 0], "normal": [0, 1], "mu": "1/2"}]})",
+      R"({"wrenchkit": 1, "load": {"force": [0, -1], "at": [1, 2]}, "support": {"mu": 0.5, "points": [{"at": [0, -1], "force": "1/2"}, {"at": [0, 1], "force": 0, "mu": 2}]}})",
+  };
+  const std::string alphabet = "{}[]\",:.-+/e0123456789 \\u\xc3\xa9" "atnormlucewhgiyfpsbd";
+  Scene eager, lazy;
+  int valid = 0;
+  for (int t = 0; t < 6000; ++t) {
+    std::string s = bases[static_cast<std::size_t>(t) % bases.size()];
+    const int edits = 1 + static_cast<int>(rng() % 3);
+    for (int e = 0; e < edits; ++e) {
+      const std::size_t at = rng() % (s.size() + 1);
+      const char c = alphabet[rng() % alphabet.size()];
+      switch (rng() % 3) {
+        case 0: if (at < s.size()) s[at] = c; break;
+        case 1: s.insert(at, 1, c); break;
+        default: if (at < s.size()) s.erase(at, 1); break;
+      }
+    }
+    const std::string d = readers_disagree(s, Input_limits{}, eager, lazy);
+    if (!d.empty()) {
+      ADD_FAILURE() << "seed " << seed << ", case " << t << ": " << d << "\n"
+                    << s << "\ndumped to " << test::dump_failure(s, "streaming_reader_mutation");
+      break;
+    }
+    try {
+      read_scene(s, Input_limits{});
+      ++valid;
+    } catch (const Input_error&) {
+    }
+  }
+  EXPECT_GT(valid, 200);  // mutations that stay valid scenes (other numbers, names, spacing): about 250
 }
 
 TEST(SceneModel, ReadsEveryField) {

@@ -141,11 +141,18 @@ Q certificate_rational(const std::string& s, const std::string& path) {
 
 // One entry of contacts[], validated. Its numbers are kept as text and read again when a generator
 // is needed: "1e10000" is 7 bytes of input but 4 KB as a rational, so keeping the text keeps memory
-// proportional to the input.
+// proportional to the input. When every number of the contact is small (numerator and denominator of
+// at most kKeptLimbs limbs each, a constant size) their values are kept as well, and generators are
+// computed from them without reading the text again.
 struct Contact {
   bool wrench = false;
   std::vector<std::string> text;  // point contact: x, y, nx, ny, mu ("0" if absent); wrench: fx, fy, m
+  std::vector<Q> value;           // the same numbers' values, or empty (some number is not small)
 };
+constexpr std::size_t kKeptLimbs = 4;
+bool small(const Q& q) {
+  return mpz_size(q.get_num_mpz_t()) <= kKeptLimbs && mpz_size(q.get_den_mpz_t()) <= kKeptLimbs;
+}
 
 std::string read_string(Reader& r) {
   if (r.peek() != Kind::string) r.fail("expected a string");
@@ -157,7 +164,12 @@ Q read_number(Reader& r, const Limits& lim, std::string* text = nullptr) {
   const Kind k = r.peek();
   if (k != Kind::number && k != Kind::string) r.fail("expected a number (a JSON number or a number string)");
   std::string s = k == Kind::number ? std::string(r.number()) : r.string();
-  Q q = scene_number(s, lim, r.path());
+  Q q;
+  try {  // the path only for the message (building it for every number costs more than the number)
+    q = scene_number(s, lim, "");
+  } catch (const Failure& f) {
+    throw Failure{r.path() + f.message};
+  }
   if (text) *text = std::move(s);
   return q;
 }
@@ -175,14 +187,22 @@ void read_fixed(Reader& r, std::size_t n, const std::string& what, Item item) {
   if (k != n) r.fail("expected " + what);
 }
 
-// n numbers: their texts are appended to `text`; true if all are zero.
-bool read_numbers(Reader& r, const Limits& lim, std::size_t n, std::vector<std::string>& text) {
+// n numbers: their texts are appended to `text`, their values to `value`; true if all are zero.
+bool read_numbers(Reader& r, const Limits& lim, std::size_t n, std::vector<std::string>& text, std::vector<Q>& value) {
   bool zero = true;
   read_fixed(r, n, "an array of " + std::to_string(n) + " numbers", [&](std::size_t) {
     text.emplace_back();
-    zero = read_number(r, lim, &text.back()) == 0 && zero;
+    value.push_back(read_number(r, lim, &text.back()));
+    zero = value.back() == 0 && zero;
   });
   return zero;
+}
+
+// The values to keep with a contact: all of them if all are small, else none.
+std::vector<Q> kept(std::vector<Q> values) {
+  for (const Q& q : values)
+    if (!small(q)) return {};
+  return values;
 }
 
 // {at, normal, mu?, name?} (normal != 0, mu >= 0) or {wrench, name?} (wrench != 0).
@@ -191,18 +211,21 @@ Contact read_contact(Reader& r, const Limits& lim) {
     r.fail("expected an object {\"at\", \"normal\", \"mu\"?, \"name\"?} or {\"wrench\", \"name\"?}");
   r.begin_object();
   std::vector<std::string> at, normal, wrench;
+  std::vector<Q> at_value, normal_value, wrench_value;
   std::string mu = "0", key;
+  Q mu_value = 0;
   std::set<std::string> keys;
   while (r.next_key(key)) {
     keys.insert(key);
     if (key == "at") {
-      read_numbers(r, lim, 2, at);
+      read_numbers(r, lim, 2, at, at_value);
     } else if (key == "normal") {
-      if (read_numbers(r, lim, 2, normal)) r.fail("zero vector");
+      if (read_numbers(r, lim, 2, normal, normal_value)) r.fail("zero vector");
     } else if (key == "mu") {
-      if (read_number(r, lim, &mu) < 0) r.fail(quote(mu) + " is negative");
+      mu_value = read_number(r, lim, &mu);
+      if (mu_value < 0) r.fail(quote(mu) + " is negative");
     } else if (key == "wrench") {
-      if (read_numbers(r, lim, 3, wrench)) r.fail("zero wrench");
+      if (read_numbers(r, lim, 3, wrench, wrench_value)) r.fail("zero wrench");
     } else if (key == "name") {
       read_string(r);
     } else {
@@ -212,13 +235,13 @@ Contact read_contact(Reader& r, const Limits& lim) {
   const bool point = keys.count("at") || keys.count("normal") || keys.count("mu");
   if (keys.count("wrench")) {
     if (point) r.fail("a contact has either \"at\", \"normal\" and \"mu\" (a point contact) or \"wrench\", not both");
-    return {true, wrench};
+    return {true, wrench, kept(wrench_value)};
   }
   if (!keys.count("at") && !keys.count("normal"))
     r.fail("expected \"at\" and \"normal\" (a point contact) or \"wrench\"");
   if (!keys.count("at")) r.fail("missing required key \"at\"");
   if (!keys.count("normal")) r.fail("missing required key \"normal\"");
-  return {false, {at[0], at[1], normal[0], normal[1], mu}};
+  return {false, {at[0], at[1], normal[0], normal[1], mu}, kept({at_value[0], at_value[1], normal_value[0], normal_value[1], mu_value})};
 }
 
 // n numbers, read exactly into out[0..n).
@@ -370,8 +393,10 @@ Wrench force_at(const Q& px, const Q& py, const Q& fx, const Q& fy) { return {fx
 
 // The generators of one contact under a reading, recomputed exactly from the scene text.
 std::vector<Generator> generators(const Contact& c, Reading reading, const Limits& lim) {
-  std::vector<Q> v;
-  for (const std::string& s : c.text) v.push_back(scene_number(s, lim, "contacts"));  // valid: read before
+  std::vector<Q> read;
+  if (c.value.empty())
+    for (const std::string& s : c.text) read.push_back(scene_number(s, lim, "contacts"));  // valid: read before
+  const std::vector<Q>& v = c.value.empty() ? read : c.value;
   if (c.wrench) return {{"wrench", {v[0], v[1], v[2]}}};
   const Q &px = v[0], &py = v[1], &nx = v[2], &ny = v[3], &mu = v[4];
   if (reading == Reading::frictionless || mu == 0) return {{"normal", force_at(px, py, nx, ny)}};
@@ -555,14 +580,20 @@ std::string name(std::size_t contact, const std::string& edge) {
   return "contacts[" + std::to_string(contact) + "] edge " + edge;
 }
 
+// The generators of the contacts a certificate refers to, each contact's computed once.
+using Generator_cache = std::map<std::size_t, std::vector<Generator>>;
+
 // Rule 1 of §3.1: the reference names an existing contact and an edge that contact has under the
 // reading. Returns that generator, recomputed from the scene.
-Wrench resolve(const Ref& ref, const std::vector<Contact>& contacts, Reading reading, const Limits& lim) {
+Wrench resolve(const Ref& ref, const std::vector<Contact>& contacts, Reading reading, const Limits& lim,
+               Generator_cache& cache) {
   if (ref.contact >= contacts.size())
     throw Failure{ref.path + ".contact: index " + clip(ref.index) + " is out of range (the scene has " +
                   std::to_string(contacts.size()) + " contacts)"};
+  auto at = cache.find(ref.contact);
+  if (at == cache.end()) at = cache.emplace(ref.contact, generators(contacts[ref.contact], reading, lim)).first;
   std::string edges;
-  for (const Generator& g : generators(contacts[ref.contact], reading, lim)) {
+  for (const Generator& g : at->second) {
     if (ref.edge == g.edge) return g.w;
     edges += (edges.empty() ? "" : " or ") + quote(g.edge);
   }
@@ -590,11 +621,12 @@ void check_positive(const Certificate& c, const std::vector<Contact>& contacts, 
   }
   // (1) every reference names a generator of the scene under the reading
   std::vector<Wrench> sum, independent;  // sum: first the terms weight_k g_k, then w_ext if any
+  Generator_cache cache;
   for (const Term& t : c.combination) {
-    const Wrench g = resolve(t.ref, contacts, c.reading, lim);
+    const Wrench g = resolve(t.ref, contacts, c.reading, lim, cache);
     sum.push_back({t.weight * g.fx, t.weight * g.fy, t.weight * g.m});
   }
-  for (const Ref& ref : c.independent) independent.push_back(resolve(ref, contacts, c.reading, lim));
+  for (const Ref& ref : c.independent) independent.push_back(resolve(ref, contacts, c.reading, lim, cache));
   // (3) every weight is strictly positive
   for (const Term& t : c.combination)
     if (sgn(t.weight) <= 0)
@@ -663,21 +695,8 @@ void check_negative(const Certificate& c, const std::vector<Contact>& contacts, 
   }
 }
 
-}  // namespace
-
-Result check(std::string_view scene_json, std::string_view certificate_json, const Limits& limits) {
-  Scene scene;
-  try {
-    Reader r(scene_json, limits.max_depth);
-    scene = read_scene(r, limits);
-    r.finish();
-  } catch (const Failure& f) {
-    return {Outcome::bad_scene, f.message};
-  } catch (const std::bad_alloc&) {
-    return {Outcome::bad_scene, "out of memory while reading the scene"};
-  } catch (...) {  // not expected; check() never throws
-    return {Outcome::bad_scene, "internal error while reading the scene"};
-  }
+// The certificate against an already read scene.
+Result check_certificate(const Scene& scene, std::string_view certificate_json, const Limits& limits) {
   try {
     Reader r(certificate_json, limits.max_depth);
     const Certificate c = read_certificate(r);
@@ -697,6 +716,43 @@ Result check(std::string_view scene_json, std::string_view certificate_json, con
   } catch (...) {
     return {Outcome::rejected, "internal error while checking the certificate"};
   }
+}
+
+// The scene, or the bad_scene result that check() gives for it.
+bool read_whole_scene(std::string_view scene_json, const Limits& limits, Scene& scene, Result& bad) {
+  try {
+    Reader r(scene_json, limits.max_depth);
+    scene = read_scene(r, limits);
+    r.finish();
+    return true;
+  } catch (const Failure& f) {
+    bad = {Outcome::bad_scene, f.message};
+  } catch (const std::bad_alloc&) {
+    bad = {Outcome::bad_scene, "out of memory while reading the scene"};
+  } catch (...) {  // not expected; check() never throws
+    bad = {Outcome::bad_scene, "internal error while reading the scene"};
+  }
+  return false;
+}
+
+}  // namespace
+
+Result check(std::string_view scene_json, std::string_view certificate_json, const Limits& limits) {
+  Scene scene;
+  Result bad;
+  if (!read_whole_scene(scene_json, limits, scene, bad)) return bad;
+  return check_certificate(scene, certificate_json, limits);
+}
+
+std::vector<Result> check_all(std::string_view scene_json, const std::vector<std::string_view>& certificates,
+                              const Limits& limits) {
+  Scene scene;
+  Result bad;
+  if (!read_whole_scene(scene_json, limits, scene, bad)) return std::vector<Result>(certificates.size(), bad);
+  std::vector<Result> out;
+  out.reserve(certificates.size());
+  for (const std::string_view c : certificates) out.push_back(check_certificate(scene, c, limits));
+  return out;
 }
 
 }  // namespace wrenchkit_checker

@@ -25,6 +25,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace wrenchkit_checker {
 
@@ -53,5 +54,10 @@ struct Result {
 };
 
 Result check(std::string_view scene_json, std::string_view certificate_json, const Limits& limits = {});
+
+// check() of several certificates about one scene, reading the scene once: result k is exactly
+// check(scene_json, certificates[k], limits). (Every result is bad_scene when the scene is bad.)
+std::vector<Result> check_all(std::string_view scene_json, const std::vector<std::string_view>& certificates,
+                              const Limits& limits = {});
 
 }  // namespace wrenchkit_checker

@@ -1,0 +1,175 @@
+// Batch throughput (issue 5): scenes per second on one core for `batch closure`'s work, the scene
+// readers alone, where a certified answer's time goes, and the robot-side twin call. Every scene is a
+// random 6-contact frictional grasp written as decimal text, one JSON line, as a grasp planner would
+// send it: contacts on the unit circle ("%.6f"), inward normals perturbed by U(-0.3, 0.3), mu in
+// [0.1, 0.6] ("%.3f"); fixed seed.
+//   cmake -S . -B build-bench -G Ninja -DWRENCHKIT_BUILD_BENCH=ON && cmake --build build-bench --target batch_bench
+//   build-bench/bench/batch_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// items_per_second is scenes per second (one thread). End to end, with JSON parsing and writing and
+// the process's I/O: `wrenchkit batch closure --jobs 1 --verdict-only < scenes.jsonl` (docs/cli.md).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "exact/batch.h"
+#include "exact/closure.h"
+#include "exact/scene.h"
+#include "exact/streaming_scene_reader.h"
+#include "float/closure_twin.h"
+#include "proofs/checker/checker.h"
+
+namespace {
+
+using namespace wrenchkit;
+
+const std::vector<std::string>& scene_lines() {
+  static const std::vector<std::string> lines = [] {
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> angle(0, 6.283185307179586), jitter(-0.3, 0.3), mu(0.1, 0.6);
+    std::vector<std::string> out;
+    for (int s = 0; s < 1000; ++s) {
+      std::string t = "{\"wrenchkit\": 1, \"contacts\": [";
+      for (int i = 0; i < 6; ++i) {
+        const double a = angle(rng), x = std::cos(a), y = std::sin(a);
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "%s{\"at\": [%.6f, %.6f], \"normal\": [%.6f, %.6f], \"mu\": %.3f}", i ? ", " : "",
+                      x, y, -x + jitter(rng), -y + jitter(rng), mu(rng));
+        t += buf;
+      }
+      out.push_back(t + "]}");
+    }
+    return out;
+  }();
+  return lines;
+}
+
+// The independent checker, as the CLI runs it on every certificate it prints.
+std::string checker(std::string_view scene, const std::vector<std::string_view>& certs) {
+  for (const auto& r : wrenchkit_checker::check_all(scene, certs))
+    if (r.outcome != wrenchkit_checker::Outcome::accepted) return r.message;
+  return "";
+}
+
+// ---- batch closure: read + force and form closure (+ certificates, + the checker), one thread ----
+
+void BM_batch_closure(benchmark::State& st, bool certify, bool check) {
+  const auto& lines = scene_lines();
+  Closure_batch_options o;
+  o.certify = certify;
+  if (check) o.check = checker;
+  Scene scratch;
+  std::size_t i = 0;
+  for (auto _ : st) {
+    const Closure_item r = closure_item(lines[i++ % lines.size()], "line", o, scratch);
+    benchmark::DoNotOptimize(r.force.holds);
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations()));
+}
+BENCHMARK_CAPTURE(BM_batch_closure, verdict_only, false, false);
+BENCHMARK_CAPTURE(BM_batch_closure, certificates, true, false);
+BENCHMARK_CAPTURE(BM_batch_closure, certificates_checked, true, true);
+
+// The C++ batch API on 1000 scenes per iteration, one thread (its ordered map included).
+void BM_batch_api_verdict_only(benchmark::State& st) {
+  const auto& lines = scene_lines();
+  Closure_batch_options o;
+  o.certify = false;
+  o.jobs = 1;
+  for (auto _ : st) benchmark::DoNotOptimize(batch_closure(lines, o).size());
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * lines.size()));
+}
+BENCHMARK(BM_batch_api_verdict_only);
+
+// ---- the scene readers alone ----
+
+void BM_read_dom(benchmark::State& st, bool lazy) {
+  const auto& lines = scene_lines();
+  std::size_t i = 0;
+  for (auto _ : st)
+    benchmark::DoNotOptimize(read_scene(lines[i++ % lines.size()], Input_limits{}, "line", lazy).contacts.size());
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations()));
+}
+BENCHMARK_CAPTURE(BM_read_dom, eager, false);
+BENCHMARK_CAPTURE(BM_read_dom, lazy, true);
+
+void BM_read_streaming(benchmark::State& st, bool lazy) {
+  const auto& lines = scene_lines();
+  Scene scratch;
+  std::size_t i = 0;
+  for (auto _ : st) {
+    read_scene_into(scratch, lines[i++ % lines.size()], Input_limits{}, "line", lazy);
+    benchmark::DoNotOptimize(scratch.contacts.size());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations()));
+}
+BENCHMARK_CAPTURE(BM_read_streaming, eager, false);
+BENCHMARK_CAPTURE(BM_read_streaming, lazy, true);
+
+// ---- where a certified answer's time goes (per scene: both properties) ----
+
+// decide_closure ×2 on a scene already read eagerly: verdicts only, and with both certificates built.
+void BM_decide_both(benchmark::State& st, bool certify) {
+  const auto& lines = scene_lines();
+  std::vector<Scene> scenes;
+  for (std::size_t k = 0; k < 256; ++k) scenes.push_back(read_scene(lines[k], Input_limits{}));
+  std::size_t i = 0;
+  for (auto _ : st) {
+    const Scene& s = scenes[i++ % scenes.size()];
+    benchmark::DoNotOptimize(decide_closure(s, Property::force_closure, Mode::hybrid, certify).holds);
+    benchmark::DoNotOptimize(decide_closure(s, Property::form_closure, Mode::hybrid, certify).holds);
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations()));
+}
+BENCHMARK_CAPTURE(BM_decide_both, verdict_only, false);
+BENCHMARK_CAPTURE(BM_decide_both, certificates_built, true);
+
+// The independent checker on both certificates of a scene: one scene read (check_all, what the CLI
+// does) and two (check() per certificate).
+void BM_checker(benchmark::State& st, bool together) {
+  const auto& lines = scene_lines();
+  std::vector<std::string> fc, fo;
+  for (std::size_t k = 0; k < 256; ++k) {
+    const Scene s = read_scene(lines[k], Input_limits{});
+    fc.push_back(certificate_json(decide_closure(s, Property::force_closure, Mode::hybrid).certificate));
+    fo.push_back(certificate_json(decide_closure(s, Property::form_closure, Mode::hybrid).certificate));
+  }
+  std::size_t i = 0;
+  for (auto _ : st) {
+    const std::size_t k = i++ % fc.size();
+    if (together) {
+      benchmark::DoNotOptimize(wrenchkit_checker::check_all(lines[k], {fc[k], fo[k]}).size());
+    } else {
+      benchmark::DoNotOptimize(wrenchkit_checker::check(lines[k], fc[k]).outcome);
+      benchmark::DoNotOptimize(wrenchkit_checker::check(lines[k], fo[k]).outcome);
+    }
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations()));
+}
+BENCHMARK_CAPTURE(BM_checker, both_one_scene_read, true);
+BENCHMARK_CAPTURE(BM_checker, each_reads_the_scene, false);
+
+// ---- the robot-side twin: fl::force_closure on 6 frictional contacts given as plain doubles ----
+
+void BM_twin_force_closure(benchmark::State& st) {
+  const auto& lines = scene_lines();
+  std::vector<std::vector<fl::Point_contact>> sets;
+  for (std::size_t k = 0; k < 256; ++k) {
+    std::vector<fl::Point_contact> c;
+    for (const Contact& x : read_scene(lines[k], Input_limits{}).contacts)
+      c.push_back({x.at.x.get_d(), x.at.y.get_d(), x.normal.x.get_d(), x.normal.y.get_d(), x.mu.get_d()});
+    sets.push_back(c);
+  }
+  std::size_t i = 0;
+  for (auto _ : st) benchmark::DoNotOptimize(fl::force_closure(sets[i++ % sets.size()]));
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations()));
+}
+BENCHMARK(BM_twin_force_closure);
+
+}  // namespace
+
+BENCHMARK_MAIN();

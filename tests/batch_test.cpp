@@ -1,0 +1,201 @@
+// The C++ batch API (exact/batch.h): answers in input order on any number of threads, each scene's
+// error a value (the message read_scene gives), the same verdicts and certificates as decide_closure,
+// bounded memory on a stream, and the ordered parallel map underneath.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "exact/batch.h"
+#include "exact/input_error.h"
+#include "proofs/checker/checker.h"
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+
+std::vector<std::string> golden_and_bad() {
+  std::vector<std::string> texts;
+  for (const std::string& f : test::scene_files("tests/golden")) texts.push_back(test::read_text(f));
+  for (const std::string& f : test::scene_files("tests/golden/equilibrium")) texts.push_back(test::read_text(f));
+  const std::vector<std::string> bad = {
+      "not json", "", R"({"wrenchkit": 1, "contacts": [{"at": [0,0], "normal": [0,0]}]})",
+      R"({"wrenchkit": 1, "contacts": [{"at": [0,"1/0"], "normal": [0,1]}]})", R"({"wrenchkit": 2})"};
+  for (std::size_t i = 0; i < bad.size(); ++i) texts.insert(texts.begin() + static_cast<std::ptrdiff_t>(5 * i + 2), bad[i]);
+  return texts;
+}
+
+// The independent checker, as the CLI passes it.
+std::string checker(std::string_view scene, const std::vector<std::string_view>& certs) {
+  for (const auto& r : wrenchkit_checker::check_all(scene, certs))
+    if (r.outcome != wrenchkit_checker::Outcome::accepted) return r.message;
+  return "";
+}
+
+TEST(BatchClosure, AnswersEveryTextInOrderLikeDecideClosure) {
+  const std::vector<std::string> texts = golden_and_bad();
+  for (const Mode mode : {Mode::hybrid, Mode::exact}) {
+    Closure_batch_options o;
+    o.mode = mode;
+    o.jobs = 3;
+    o.check = checker;
+    const std::vector<Closure_item> items = batch_closure(texts, o);
+    ASSERT_EQ(items.size(), texts.size());
+    int bad = 0;
+    for (std::size_t i = 0; i < texts.size(); ++i) {
+      SCOPED_TRACE(texts[i].substr(0, 80));
+      Scene scene;
+      try {
+        scene = read_scene(texts[i], Input_limits{}, "scene " + std::to_string(i + 1));
+      } catch (const Input_error& e) {
+        ++bad;
+        EXPECT_EQ(items[i].status, Batch_status::bad_input);
+        EXPECT_EQ(items[i].message, e.what());  // read_scene's message, the scene named by its position
+        continue;
+      }
+      ASSERT_EQ(items[i].status, Batch_status::answered) << items[i].message;
+      EXPECT_EQ(items[i].name, scene.name);
+      for (const Property p : {Property::force_closure, Property::form_closure}) {
+        const Closure_answer want = decide_closure(scene, p, mode);
+        const Closure_answer& got = p == Property::force_closure ? items[i].force : items[i].form;
+        EXPECT_EQ(got.holds, want.holds);
+        EXPECT_EQ(got.rank, want.rank);
+        EXPECT_EQ(got.generators, want.generators);
+        EXPECT_EQ(got.predicates, want.predicates);
+        EXPECT_EQ(got.exact_predicates, want.exact_predicates);
+        EXPECT_EQ(p == Property::force_closure ? items[i].force_certificate : items[i].form_certificate,
+                  certificate_json(want.certificate));
+      }
+    }
+    EXPECT_EQ(bad, 5);
+  }
+}
+
+TEST(BatchClosure, TheSameAnswersOnOneThreadOrMany) {
+  std::vector<std::string> texts;
+  for (int k = 0; k < 8; ++k)
+    for (const std::string& t : golden_and_bad()) texts.push_back(t);  // > 256 texts: several windows
+  ASSERT_GT(texts.size(), 512u);
+  Closure_batch_options o;
+  o.certify = false;  // verdicts only: the lazy reading
+  o.jobs = 1;
+  const std::vector<Closure_item> one = batch_closure(texts, o);
+  for (unsigned jobs : {2u, 5u}) {
+    o.jobs = jobs;
+    const std::vector<Closure_item> many = batch_closure(texts, o);
+    ASSERT_EQ(many.size(), one.size());
+    for (std::size_t i = 0; i < one.size(); ++i) {
+      EXPECT_EQ(many[i].status, one[i].status) << i;
+      EXPECT_EQ(many[i].message, one[i].message) << i;
+      EXPECT_EQ(many[i].force.holds, one[i].force.holds) << i;
+      EXPECT_EQ(many[i].form.holds, one[i].form.holds) << i;
+      EXPECT_EQ(many[i].force.predicates, one[i].force.predicates) << i;
+      EXPECT_TRUE(many[i].force_certificate.empty());
+    }
+  }
+  // Verdicts only, the same verdicts as with certificates.
+  o.certify = true;
+  const std::vector<Closure_item> certified = batch_closure(texts, o);
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(certified[i].force.holds, one[i].force.holds);
+    EXPECT_EQ(certified[i].form.holds, one[i].form.holds);
+    EXPECT_EQ(certified[i].force_certificate.empty(), certified[i].status != Batch_status::answered);
+  }
+}
+
+TEST(BatchClosure, ErrorsAreValues) {
+  Closure_batch_options o;
+  o.jobs = 2;
+  // --mode float on exactly concurrent normals written with inexact decimals: undecided.
+  const std::string tenths = R"({"wrenchkit": 1, "contacts": [
+      {"at": [0.1, 0], "normal": [0, 0.1]}, {"at": [0, 0.1], "normal": [0.1, 0]}, {"at": [0.3, 0.3], "normal": [-0.1, -0.1]}]})";
+  o.mode = Mode::float_only;
+  std::vector<Closure_item> items = batch_closure({tenths, "{"}, o);
+  EXPECT_EQ(items[0].status, Batch_status::undecided);
+  EXPECT_NE(items[0].message.find("could not certify"), std::string::npos);
+  EXPECT_EQ(items[1].status, Batch_status::bad_input);
+  EXPECT_EQ(items[1].message, "scene 2:1:2: invalid JSON: expected a string key");
+  // A check that rejects: check_failed, with its reason; one that accepts: answered.
+  o.mode = Mode::hybrid;
+  o.check = [](std::string_view, const std::vector<std::string_view>& certs) {
+    return certs.size() == 2 ? std::string("rejected on purpose") : std::string("wrong count");
+  };
+  items = batch_closure({tenths}, o);
+  EXPECT_EQ(items[0].status, Batch_status::check_failed);
+  EXPECT_EQ(items[0].message, "rejected on purpose");
+  o.check = checker;
+  items = batch_closure({tenths}, o);
+  EXPECT_EQ(items[0].status, Batch_status::answered) << items[0].message;
+  EXPECT_FALSE(items[0].force.holds);
+  EXPECT_GT(items[0].force.exact_predicates, 0u);  // hybrid went exact where the twin could not decide
+}
+
+TEST(BatchClosure, StreamsInOrderWithBoundedMemory) {
+  const std::vector<std::string> texts = golden_and_bad();
+  const std::size_t n = 3000;
+  for (unsigned jobs : {1u, 3u}) {
+    Closure_batch_options o;
+    o.certify = false;
+    o.jobs = jobs;
+    std::size_t pulled = 0, emitted = 0, most_pending = 0;
+    batch_closure(
+        [&](std::string& text) {
+          if (pulled == n) return false;
+          text = texts[pulled++ % texts.size()];
+          most_pending = std::max(most_pending, pulled - emitted);
+          return true;
+        },
+        [&](std::size_t index, const Closure_item& item) {
+          EXPECT_EQ(index, emitted);
+          if (item.message.find("invalid JSON") != std::string::npos) {  // the scene named by its position
+            EXPECT_EQ(item.message.rfind("scene " + std::to_string(index + 1) + ":", 0), 0u) << item.message;
+          }
+          ++emitted;
+        },
+        o);
+    EXPECT_EQ(emitted, n);
+    EXPECT_LE(most_pending, 256u * jobs);  // one window: memory does not grow with the stream
+  }
+}
+
+TEST(OrderedMap, KeepsOrderAndPropagatesTheCallersExceptions) {
+  struct Worker {
+    int seen = 0;
+  };
+  for (unsigned jobs : {1u, 2u, 7u}) {
+    int next = 0;
+    std::vector<long> out;
+    std::atomic<int> per_worker_total{0};
+    ordered_map<int, long, Worker>(
+        jobs, [&](int& x) { return next < 5000 ? (x = next++, true) : false; },
+        [&](Worker& w, int x, long& y, std::size_t index) {
+          ++w.seen;
+          ++per_worker_total;
+          y = static_cast<long>(x) * x + static_cast<long>(index);
+        },
+        [&](std::size_t index, long y) {
+          EXPECT_EQ(static_cast<std::size_t>(out.size()), index);
+          out.push_back(y);
+        },
+        16);
+    ASSERT_EQ(out.size(), 5000u);
+    for (long i = 0; i < 5000; ++i) EXPECT_EQ(out[static_cast<std::size_t>(i)], i * i + i);
+    EXPECT_EQ(per_worker_total.load(), 5000);
+    // An exception from emit (the caller's side) stops the map and reaches the caller.
+    int k = 0;
+    EXPECT_THROW((ordered_map<int, int, Worker>(
+                     jobs, [&](int& x) { return k < 1000 ? (x = k++, true) : false; },
+                     [](Worker&, int x, int& y, std::size_t) { y = x; },
+                     [](std::size_t index, int) {
+                       if (index == 100) throw std::runtime_error("stop");
+                     },
+                     8)),
+                 std::runtime_error);
+  }
+}
+
+}  // namespace
+}  // namespace wrenchkit
