@@ -1,13 +1,20 @@
-// wrenchkit labels | dual | reuleaux: the graphical statics of Mason ch. 5–6, exactly
-// (exact/moment_labels.h, exact/force_dual.h).
+// wrenchkit labels | dual | reuleaux: the graphical statics of Mason ch. 5–6 (exact/moment_labels.h,
+// exact/force_dual.h). --mode hybrid (default) decides the cone's signs with the float twin first and
+// exactly where it is uncertain, and constructs exactly: the answer is the exact one. --mode exact never
+// uses floating point. --mode float is the float twin alone (float/labels_twin.h): coordinates as numbers
+// with certified bounds, exit 3 when it cannot decide.
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 
 #include "cli/common.h"
+#include "cli/float_json.h"
 #include "exact/force_dual.h"
 #include "exact/json.h"
 #include "exact/streaming_scene_reader.h"
+#include "exact/to_float.h"
+#include "float/labels_twin.h"
 
 namespace wrenchkit::cli {
 
@@ -88,6 +95,7 @@ struct Labelled_scene {
   std::vector<Generator> gens;
   std::vector<Wrench> wrenches;
   Moment_labels labels;
+  Mode mode = Mode::hybrid;
 };
 
 // The options every labels-family command refuses (checked once, before any scene).
@@ -99,11 +107,75 @@ void check_label_options(const Options& o, const char* command, std::initializer
 }
 
 Labelled_scene label(const Options& o, const std::string& text, const std::string& source, Reading reading) {
-  Labelled_scene s{read_scene_streaming(text, o.limits, source), {}, {}, {}};
+  Labelled_scene s{read_scene_streaming(text, o.limits, source), {}, {}, {}, mode_of(o.mode)};
   s.gens = generators(s.scene, reading);
   for (const Generator& g : s.gens) s.wrenches.push_back(g.w);
-  s.labels = moment_labels(s.wrenches);
+  if (s.mode == Mode::hybrid) {
+    const std::vector<fl::Bounded3> twin = fl::generators(to_bounded(s.scene), reading);
+    s.labels = moment_labels(s.wrenches, Mode::hybrid, &twin);
+  } else {
+    s.labels = moment_labels(s.wrenches, Mode::exact);
+  }
   return s;
+}
+
+// "mode", "decided_by", "predicates", "exact_predicates" of an exact or hybrid answer.
+std::string mode_fields(const Labelled_scene& s) {
+  const Wrench_cone& c = s.labels.cone;
+  const char* by = s.mode == Mode::exact || c.exact_predicates == c.predicates
+                       ? "exact"
+                       : (c.exact_predicates == 0 ? "float" : "hybrid");
+  return std::string(", \"mode\": \"") + mode_name(s.mode) + "\", \"decided_by\": \"" + by +
+         "\", \"predicates\": " + std::to_string(c.predicates) +
+         ", \"exact_predicates\": " + std::to_string(c.exact_predicates);
+}
+
+// --mode float: the twin alone.
+struct Float_labelled {
+  Scene scene;
+  std::vector<Generator> gens;
+  std::vector<fl::Bounded_contact> contacts;
+  std::vector<fl::Bounded3> g;
+  Dual_cone dc;
+  fl::Labels_twin labels;
+};
+
+Float_labelled label_float(const Options& o, const std::string& text, const std::string& source, Reading reading) {
+  Float_labelled s;
+  s.scene = read_scene_streaming(text, o.limits, source);
+  s.gens = generators(s.scene, reading);
+  s.contacts = to_bounded(s.scene);
+  s.g = fl::generators(s.contacts, reading);
+  s.dc = compute_dual_cone(fl::Float_kernel(s.g));
+  s.labels = fl::moment_labels(s.g, s.dc);
+  if (!s.labels.decided())
+    throw Undecided(std::string("the float twin could not decide the labels: ") + fl::status_name(s.labels.status) +
+                    " (use --mode hybrid for the exact answer)");
+  return s;
+}
+
+fl::Bounded3 twin_of(const Vec3& w) { return {to_bounded(w[0]), to_bounded(w[1]), to_bounded(w[2])}; }
+
+// A certified membership from the twin, or exit 3.
+bool float_in_cone(const fl::Labels_twin& l, const Vec3& w, const char* what) {
+  const fl::Truth t = fl::in_cone(l, twin_of(w));
+  if (t == fl::Truth::uncertain)
+    throw Undecided(std::string("the float twin could not decide ") + what + " (use --mode hybrid for the exact answer)");
+  return t == fl::Truth::yes;
+}
+
+std::string float_labels_fields(const fl::Labels_twin& l) {
+  return "\"plus\": " + float_region_json(l.plus) + ", \"minus\": " + float_region_json(l.minus) +
+         ", \"both\": [], \"infinity\": " + float_infinity_json(l.infinity);
+}
+
+std::string float_labels_human(const fl::Labels_twin& l) {
+  std::ostringstream s;
+  s << "+ (counter-clockwise rotation centres): " << float_region_text(l.plus) << "\n"
+    << "- (clockwise rotation centres):         " << float_region_text(l.minus) << "\n"
+    << "+- (every moment zero):                 none (the cone has rank 3)\n"
+    << "labeled points at infinity (translations): " << float_infinity_text(l.infinity) << "\n";
+  return s.str();
 }
 
 // The scene's load read on the labels: balanced ⇔ −w ∈ W (theory.md §5.5).
@@ -137,7 +209,7 @@ std::string labels_json(const Labelled_scene& s, const Labels_query& q) {
     query = ", \"resultant\": {\"wrench\": " + wrench_json(q.w) + ", \"possible\": " +
             (in_cone(s.labels.cone, q.w) ? "true" : "false") + "}";
   return "{\"command\": \"labels\", \"name\": " + json::quote(s.scene.name) + ", \"reading\": \"friction\"" +
-         ", \"rank\": " + std::to_string(s.labels.cone.rank) + ", \"force_closure\": " +
+         mode_fields(s) + ", \"rank\": " + std::to_string(s.labels.cone.rank) + ", \"force_closure\": " +
          (s.labels.cone.force_closure() ? "true" : "false") + ", " + labels_json_fields(s.labels) + query +
          load_json(s) + "}";
 }
@@ -150,7 +222,7 @@ std::string dual_json(const Labelled_scene& s) {
     for (std::size_t i = 0; i < v.size(); ++i) r += (i ? ", " : "") + point_json(v[i]);
     return r + "]";
   };
-  j << "{\"command\": \"dual\", \"name\": " << json::quote(s.scene.name) << ", \"covers_all\": "
+  j << "{\"command\": \"dual\", \"name\": " << json::quote(s.scene.name) << mode_fields(s) << ", \"covers_all\": "
     << (d.covers_all ? "true" : "false") << ", \"plus_sheet\": " << pts(d.plus_sheet.vertices)
     << ", \"minus_sheet\": " << pts(d.minus_sheet.vertices) << ", \"infinity\": " << infinity_json(d.infinity)
     << ", \"plus_region\": " << region_json(d.plus_sheet) << ", \"minus_region\": " << region_json(d.minus_sheet)
@@ -209,7 +281,7 @@ Reuleaux_query reuleaux_query(const Options& o) {
 
 std::string reuleaux_json(const Labelled_scene& s, const Reuleaux_query& q, const Mode_answer& m) {
   std::string j = "{\"command\": \"reuleaux\", \"name\": " + json::quote(s.scene.name) +
-                  ", \"reading\": \"frictionless\", \"rank\": " + std::to_string(s.labels.cone.rank) +
+                  ", \"reading\": \"frictionless\"" + mode_fields(s) + ", \"rank\": " + std::to_string(s.labels.cone.rank) +
                   ", \"form_closure\": " + (s.labels.cone.force_closure() ? "true" : "false") + ", " +
                   labels_json_fields(s.labels);
   if (q.given) {
@@ -224,10 +296,111 @@ std::string reuleaux_json(const Labelled_scene& s, const Reuleaux_query& q, cons
   return j + "}";
 }
 
+// ---- --mode float ----
+
+std::string float_load_json(const Float_labelled& s) {
+  if (!s.scene.load) return "";
+  const Vec3 w = as_vec(load_wrench(s.scene));
+  const bool balanced = float_in_cone(s.labels, {-w[0], -w[1], -w[2]}, "whether the load is balanced");
+  return ", \"load\": {\"wrench\": " + wrench_json(w) + ", \"balanced\": " + (balanced ? "true" : "false") + "}";
+}
+
+const char* kFloatMode = ", \"mode\": \"float\", \"decided_by\": \"float\"";
+
+std::string float_labels_json(const Float_labelled& s, const Labels_query& q) {
+  std::string query;
+  if (q.resultant)
+    query = ", \"resultant\": {\"wrench\": " + wrench_json(q.w) + ", \"possible\": " +
+            (float_in_cone(s.labels, q.w, "whether the resultant is possible") ? "true" : "false") + "}";
+  return "{\"command\": \"labels\", \"name\": " + json::quote(s.scene.name) + ", \"reading\": \"friction\"" +
+         kFloatMode + ", \"rank\": 3, \"force_closure\": " + (s.labels.nothing_labeled() ? "true" : "false") + ", " +
+         float_labels_fields(s.labels) + query + float_load_json(s) + "}";
+}
+
+fl::Dual_twin float_dual(const Float_labelled& s) {
+  const fl::Dual_twin d = fl::force_dual(s.g, s.dc);
+  if (!d.decided())
+    throw Undecided(std::string("the float twin could not decide the force dual: ") + fl::status_name(d.status) +
+                    " (use --mode hybrid for the exact answer)");
+  return d;
+}
+
+std::string float_dual_json(const Float_labelled& s) {
+  const fl::Dual_twin d = float_dual(s);
+  std::ostringstream j;
+  const auto pts = [](const fl::Region2& r) {
+    std::string x = "[";
+    for (std::size_t i = 0; i < r.vertices.size(); ++i) x += (i ? ", " : "") + float_point_json(r.vertices[i]);
+    return x + "]";
+  };
+  j << "{\"command\": \"dual\", \"name\": " << json::quote(s.scene.name) << kFloatMode
+    << ", \"covers_all\": " << (d.covers_all ? "true" : "false") << ", \"plus_sheet\": " << pts(d.plus_sheet)
+    << ", \"minus_sheet\": " << pts(d.minus_sheet) << ", \"infinity\": " << float_infinity_json(d.infinity)
+    << ", \"plus_region\": " << float_region_json(d.plus_sheet)
+    << ", \"minus_region\": " << float_region_json(d.minus_sheet) << ", \"generators\": [";
+  for (std::size_t i = 0; i < s.gens.size(); ++i) {
+    const fl::Dual_point_twin p = fl::dual_point(s.g[i]);
+    if (p.sheet == '?') throw Undecided("the float twin could not place a generator's dual point (use --mode hybrid)");
+    j << (i ? ", " : "") << "{\"contact\": " << s.gens[i].contact << ", \"edge\": \"" << edge_name(s.gens[i].edge)
+      << "\", \"dual\": " << float_dual_point_json(p) << "}";
+  }
+  j << "], \"reference\": null";  // the reference-point picture is exact only
+  if (s.scene.load) {
+    const Vec3 w = as_vec(load_wrench(s.scene));
+    const fl::Dual_point_twin a = fl::dual_point(twin_of({-w[0], -w[1], -w[2]}));
+    if (a.sheet == '?') throw Undecided("the float twin could not place the load's antipode (use --mode hybrid)");
+    j << ", \"load\": {\"antipode\": " << float_dual_point_json(a) << ", \"balanced\": "
+      << (float_in_cone(s.labels, {-w[0], -w[1], -w[2]}, "whether the load is balanced") ? "true" : "false") << "}";
+  }
+  j << "}";
+  return j.str();
+}
+
+// Reuleaux's modes from certified signs (exact/moment_labels.h's contact_modes, in floating point).
+Mode_answer float_contact_modes(const Float_labelled& s, const Vec3& t) {
+  Mode_answer a;
+  const fl::Bounded3 bt = twin_of(t);
+  for (const fl::Bounded_contact& c : s.contacts) {
+    const fl::Contact_motion m = fl::contact_motion(c, bt);
+    if (m.power == Sign::uncertain || (!c.is_wrench && m.power == Sign::zero && m.speed == Sign::uncertain))
+      throw Undecided("the float twin could not decide a contact's mode (use --mode hybrid for the exact answer)");
+    Contact_mode mode = Contact_mode::none;
+    if (!c.is_wrench)
+      mode = m.power == Sign::positive   ? Contact_mode::breaks
+             : m.power == Sign::negative ? Contact_mode::penetrates
+             : m.speed == Sign::zero     ? Contact_mode::sticks
+                                         : Contact_mode::slides;
+    a.feasible &= m.power != Sign::negative;
+    a.marginal |= m.power == Sign::zero;
+    a.modes.push_back(mode);
+  }
+  a.marginal &= a.feasible;
+  return a;
+}
+
+std::string float_reuleaux_json(const Float_labelled& s, const Reuleaux_query& q, const Mode_answer& m) {
+  std::string j = "{\"command\": \"reuleaux\", \"name\": " + json::quote(s.scene.name) +
+                  ", \"reading\": \"frictionless\"" + kFloatMode + ", \"rank\": 3, \"form_closure\": " +
+                  (s.labels.nothing_labeled() ? "true" : "false") + ", " + float_labels_fields(s.labels);
+  if (q.given) {
+    const std::array<Rational, 3> ta = {q.t[0], q.t[1], q.t[2]};
+    j += ", \"query\": {" + twist_json(ta) + ", \"feasible\": " + (m.feasible ? "true" : "false") +
+         ", \"marginal\": " + (m.marginal ? "true" : "false") + ", \"modes\": [";
+    for (std::size_t i = 0; i < m.modes.size(); ++i)
+      j += (i ? ", " : "") + std::string("{\"contact\": ") + std::to_string(i) + ", \"mode\": \"" +
+           mode_name(m.modes[i]) + "\"}";
+    j += "]}";
+  }
+  return j + "}";
+}
+
+bool float_mode(const Options& o) { return mode_of(o.mode) == Mode::float_only; }
+
 }  // namespace
 
 Scene_answer prepare_labels_json(const Options& o) {
   return [o, q = labels_query(o)](const std::string& text, const std::string& source) {
+    if (float_mode(o)) return float_labels_json(label_float(o, text, source, Reading::friction), q);
     return labels_json(label(o, text, source, Reading::friction), q);
   };
 }
@@ -235,19 +408,58 @@ Scene_answer prepare_labels_json(const Options& o) {
 Scene_answer prepare_dual_json(const Options& o) {
   check_label_options(o, "dual", {});
   return [o](const std::string& text, const std::string& source) {
+    if (float_mode(o)) return float_dual_json(label_float(o, text, source, Reading::friction));
     return dual_json(label(o, text, source, Reading::friction));
   };
 }
 
 Scene_answer prepare_reuleaux_json(const Options& o) {
   return [o, q = reuleaux_query(o)](const std::string& text, const std::string& source) {
+    if (float_mode(o)) {
+      const Float_labelled s = label_float(o, text, source, Reading::frictionless);
+      return float_reuleaux_json(s, q, q.given ? float_contact_modes(s, q.t) : Mode_answer{});
+    }
     const Labelled_scene s = label(o, text, source, Reading::frictionless);
     return reuleaux_json(s, q, q.given ? contact_modes(s.scene, q.t) : Mode_answer{});
   };
 }
 
+namespace {
+
+std::string decided_line(const Labelled_scene& s) {
+  const Wrench_cone& c = s.labels.cone;
+  if (s.mode == Mode::exact) return "decided by: exact arithmetic\n";
+  return "decided by: " + std::string(c.exact_predicates == 0 ? "float" : "hybrid") + " (" +
+         std::to_string(c.exact_predicates) + " of " + std::to_string(c.predicates) +
+         " predicates in exact arithmetic; every coordinate exact)\n";
+}
+
+const char* kFloatNote = "decided by: the float twin alone (every sign certified; each coordinate within the bound shown "
+                         "of the exact one)\n";
+
+int run_labels_float(const Options& o, const Labels_query& q, const std::string& text, const std::string& source) {
+  const Float_labelled s = label_float(o, text, source, Reading::friction);
+  if (o.json) {
+    std::cout << float_labels_json(s, q) << "\n";
+    return kAnswered;
+  }
+  std::string resultant;
+  if (q.resultant)
+    resultant = "resultant " + vec_text({q.w[0], q.w[1], q.w[2]}) + ": " +
+                (float_in_cone(s.labels, q.w, "whether the resultant is possible") ? "possible" : "not possible") + "\n";
+  std::cout << "scene: " << (s.scene.name.empty() ? source : s.scene.name) << "\n"
+            << "moment labels of the contact wrench cone (with friction):\n"
+            << float_labels_human(s.labels) << "force closure: " << (s.labels.nothing_labeled() ? "yes" : "no")
+            << " (nothing labeled, infinity included)\n"
+            << resultant << kFloatNote;
+  return kAnswered;
+}
+
+}  // namespace
+
 int run_labels(const Options& o, const std::string& text, const std::string& source) {
   const Labels_query q = labels_query(o);
+  if (float_mode(o)) return run_labels_float(o, q, text, source);
   const Labelled_scene s = label(o, text, source, Reading::friction);
   if (o.json) {
     std::cout << labels_json(s, q) << "\n";
@@ -260,11 +472,28 @@ int run_labels(const Options& o, const std::string& text, const std::string& sou
   if (q.resultant)
     std::cout << "resultant " << vec_text({q.w[0], q.w[1], q.w[2]}) << ": "
               << (in_cone(s.labels.cone, q.w) ? "possible" : "not possible") << "\n";
+  std::cout << decided_line(s);
   return kAnswered;
 }
 
 int run_dual(const Options& o, const std::string& text, const std::string& source) {
   check_label_options(o, "dual", {});
+  if (float_mode(o)) {
+    const Float_labelled f = label_float(o, text, source, Reading::friction);
+    if (o.json) {
+      std::cout << float_dual_json(f) << "\n";
+      return kAnswered;
+    }
+    const fl::Dual_twin d = float_dual(f);
+    std::cout << "scene: " << (f.scene.name.empty() ? source : f.scene.name) << "\n"
+              << "force dual of the contact wrench cone (D(w) = (-fy, fx, m)):\n"
+              << "covers the whole two-sided plane: " << (d.covers_all ? "yes (force closure)" : "no") << "\n"
+              << "+ sheet (m > 0): " << float_region_text(d.plus_sheet) << "\n"
+              << "- sheet (m < 0): " << float_region_text(d.minus_sheet) << "\n"
+              << "at infinity (m = 0): " << float_infinity_text(d.infinity) << "\n"
+              << kFloatNote;
+    return kAnswered;
+  }
   const Labelled_scene s = label(o, text, source, Reading::friction);
   if (o.json) {
     std::cout << dual_json(s) << "\n";
@@ -280,22 +509,28 @@ int run_dual(const Options& o, const std::string& text, const std::string& sourc
   if (d.reference)
     std::cout << "about the reference point " << pt(*d.reference) << " (inside the + region of the labels) the dual is "
               << region_text(d.about_reference) << "\n";
+  std::cout << decided_line(s);
   return kAnswered;
 }
 
 int run_reuleaux(const Options& o, const std::string& text, const std::string& source) {
   const Reuleaux_query q = reuleaux_query(o);
-  const Labelled_scene s = label(o, text, source, Reading::frictionless);
+  const bool fm = float_mode(o);
+  std::optional<Labelled_scene> exact;
+  std::optional<Float_labelled> twin;
+  if (fm) twin = label_float(o, text, source, Reading::frictionless);
+  else exact = label(o, text, source, Reading::frictionless);
   Mode_answer m;
-  if (q.given) m = contact_modes(s.scene, q.t);
+  if (q.given) m = fm ? float_contact_modes(*twin, q.t) : contact_modes(exact->scene, q.t);
   if (o.json) {
-    std::cout << reuleaux_json(s, q, m) << "\n";
+    std::cout << (fm ? float_reuleaux_json(*twin, q, m) : reuleaux_json(*exact, q, m)) << "\n";
     return kAnswered;
   }
-  const bool closed = s.labels.cone.force_closure();
-  std::cout << "scene: " << (s.scene.name.empty() ? source : s.scene.name) << "\n"
-            << "Reuleaux's method: the contacts read frictionless (exact)\n"
-            << labels_human(s.labels)
+  const Scene& scene = fm ? twin->scene : exact->scene;
+  const bool closed = fm ? twin->labels.nothing_labeled() : exact->labels.cone.force_closure();
+  std::cout << "scene: " << (scene.name.empty() ? source : scene.name) << "\n"
+            << "Reuleaux's method: the contacts read frictionless\n"
+            << (fm ? float_labels_human(twin->labels) : labels_human(exact->labels))
             << "first-order form closure: " << (closed ? "yes (no feasible rotation centre or translation)" : "no")
             << "\n";
   if (q.given) {
@@ -306,6 +541,7 @@ int run_reuleaux(const Options& o, const std::string& text, const std::string& s
     for (std::size_t i = 0; i < m.modes.size(); ++i)
       std::cout << "  contact " << i << ": " << mode_name(m.modes[i]) << "\n";
   }
+  std::cout << (fm ? std::string(kFloatNote) : decided_line(*exact));
   return kAnswered;
 }
 

@@ -299,4 +299,17 @@ char label_of(const std::vector<Bounded3>& g, const Bounded& cx, const Bounded& 
   return pos ? '+' : (neg ? '-' : 'b');
 }
 
+Contact_motion contact_motion(const Bounded_contact& c, const Bounded3& t) {
+  Contact_motion m;
+  if (c.is_wrench) {
+    m.power = (t[0] * c.fx + t[1] * c.fy + t[2] * c.m).sign();
+    m.speed = Sign::zero;
+    return m;
+  }
+  const Bounded vx = t[0] - t[2] * c.ay, vy = t[1] + t[2] * c.ax;  // v(p)
+  m.power = (vx * c.nx + vy * c.ny).sign();
+  m.speed = (vx * vx + vy * vy).sign();
+  return m;
+}
+
 }  // namespace wrenchkit::fl

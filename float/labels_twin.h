@@ -112,4 +112,13 @@ Truth in_cone(const Labels_twin& labels, const Bounded3& w);
 // c is zero), '0' (unlabeled) or '?' (uncertain).
 char label_of(const std::vector<Bounded3>& generators, const Bounded& cx, const Bounded& cy);
 
+// Reuleaux's test of a twist t = (v_x, v_y, ω) at one contact (theory.md §7), certified: the sign of the
+// power ⟨t, W(p, n)⟩ = v(p)·n (⟨t, w⟩ for a wrench generator) and the sign of |v(p)|² (zero: the contact
+// point is the rotation centre, it sticks). Sign::uncertain where the bound cannot decide.
+struct Contact_motion {
+  Sign power = Sign::uncertain;
+  Sign speed = Sign::uncertain;  // positive or zero (or uncertain); wrench generators: zero
+};
+Contact_motion contact_motion(const Bounded_contact& c, const Bounded3& t);
+
 }  // namespace wrenchkit::fl

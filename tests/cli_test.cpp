@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "exact/json.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {
@@ -445,6 +446,98 @@ TEST(Cli, RenderDrawsEveryGoldenScene) {
   EXPECT_EQ(b.code, 2);
   EXPECT_NE(b.err.find("contacts[0].normal"), std::string::npos) << b.err;
   EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace wrenchkit
+
+namespace wrenchkit {
+namespace {
+
+// A JSON number's or string's exact value.
+Rational exact_of(const json::Value& v) {
+  std::string why;
+  const std::optional<Rational> q = parse_rational(v.text, v.type == json::Type::number, Input_limits{}, why);
+  if (!q) throw std::runtime_error("not a number: " + v.text);
+  return *q;
+}
+
+// The JSON answer minus its mode bookkeeping ("mode", "decided_by", "predicates", "exact_predicates").
+std::string without_mode_fields(const std::string& out) {
+  std::string s = out;
+  for (const char* key : {"\"mode\": ", "\"decided_by\": ", "\"predicates\": ", "\"exact_predicates\": "}) {
+    const std::size_t i = s.find(key);
+    if (i == std::string::npos) continue;
+    const std::size_t end = s.find(", ", i);
+    s.erase(i, end + 2 - i);
+  }
+  return s;
+}
+
+// labels / dual / reuleaux: hybrid answers exactly what exact answers; the float twin either exits 3
+// with a reason, or gives the exact shapes with every corner within its stated bound of the exact one.
+TEST(CliModes, LabelsDualReuleauxInEveryMode) {
+  int float_answers = 0, float_abstentions = 0;
+  for (const std::string& file : test::scene_files("tests/golden")) {
+    for (const char* command : {"labels", "dual", "reuleaux"}) {
+      const Cli_result e = run(std::string(command) + " --json --mode exact '" + file + "'");
+      const Cli_result h = run(std::string(command) + " --json '" + file + "'");
+      ASSERT_EQ(e.code, 0) << command << " " << file << ": " << e.err;
+      ASSERT_EQ(h.code, 0) << command << " " << file << ": " << h.err;
+      EXPECT_NE(h.out.find("\"mode\": \"hybrid\""), std::string::npos);
+      EXPECT_EQ(without_mode_fields(h.out), without_mode_fields(e.out)) << command << " " << file;
+      const Cli_result f = run(std::string(command) + " --json --mode float '" + file + "'");
+      if (f.code == 3) {
+        ++float_abstentions;
+        EXPECT_TRUE(f.out.empty());
+        EXPECT_NE(f.err.find("float twin could not"), std::string::npos) << f.err;
+        continue;
+      }
+      ASSERT_EQ(f.code, 0) << command << " " << file << ": " << f.err;
+      ++float_answers;
+      const json::Value fv = json::parse(f.out, Input_limits{}, "float"), ev = json::parse(e.out, Input_limits{}, "exact");
+      const char* regions[2][2] = {{"plus", "minus"}, {"plus_region", "minus_region"}};
+      for (const char* key : regions[std::string(command) == "dual"]) {
+        const json::Value *fr = fv.find(key), *er = ev.find(key);
+        ASSERT_TRUE(fr && er) << key;
+        ASSERT_EQ(fr->find("shape")->text, er->find("shape")->text) << command << " " << key << " " << file;
+        const auto& fvx = fr->find("vertices")->items;
+        const auto& fb = fr->find("vertex_bounds")->items;
+        const auto& evx = er->find("vertices")->items;
+        ASSERT_EQ(fvx.size(), evx.size());
+        if (fr->find("shape")->text == "plane") continue;
+        // Every printed corner within its printed bound of the exact corner (bounded regions may start
+        // at another corner).
+        const std::size_t n = evx.size();
+        bool found = n == 0;
+        for (std::size_t k = 0; k < (fr->find("directions")->items.empty() ? n : 1) && !found; ++k) {
+          bool all = true;
+          for (std::size_t i = 0; i < n && all; ++i)
+            for (int c = 0; c < 2 && all; ++c)
+              all = abs(exact_of(evx[(i + k) % n].items[c]) - exact_of(fvx[i].items[c])) <= exact_of(fb[i].items[c]);
+          found = all;
+        }
+        EXPECT_TRUE(found) << command << " " << key << " " << file << "\n" << f.out << "\n" << e.out;
+      }
+      for (const char* verdict : {"force_closure", "form_closure", "covers_all"})
+        if (ev.find(verdict)) { EXPECT_EQ(fv.find(verdict)->boolean, ev.find(verdict)->boolean) << verdict << " " << file; }
+    }
+  }
+  std::printf("[ stats    ] golden scenes: float answered %d, abstained %d (exit 3)\n", float_answers, float_abstentions);
+  EXPECT_GT(float_answers, 20);
+  EXPECT_GT(float_abstentions, 0);  // rank < 3 and thresholds ± 10^-40 exist among the goldens
+  // Reuleaux's modes in float: the pinwheel's clockwise centre (1, 1) is feasible, its counter-clockwise
+  // centre (2, 2) penetrates; the same as exact.
+  for (const char* q : {"--center 1,1 --sense cw", "--center 2,2"}) {
+    const Cli_result e = run(std::string("reuleaux --json --mode exact ") + q + " '" + golden("square_pinwheel") + "'");
+    const Cli_result f = run(std::string("reuleaux --json --mode float ") + q + " '" + golden("square_pinwheel") + "'");
+    ASSERT_EQ(f.code, 0) << f.err;
+    const json::Value fq = *json::parse(f.out, Input_limits{}, "f").find("query");
+    const json::Value eq = *json::parse(e.out, Input_limits{}, "e").find("query");
+    EXPECT_EQ(fq.find("feasible")->boolean, eq.find("feasible")->boolean) << q;
+    for (std::size_t i = 0; i < eq.find("modes")->items.size(); ++i)
+      EXPECT_EQ(fq.find("modes")->items[i].find("mode")->text, eq.find("modes")->items[i].find("mode")->text);
+  }
 }
 
 }  // namespace

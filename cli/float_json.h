@@ -1,0 +1,25 @@
+// JSON and text of the float twin's constructions (`--mode float`): coordinates as JSON numbers with
+// their certified error bounds beside them (docs/cli.md, "--mode float"). The REGION and infinity
+// formats are those of exact/planar_region.h with numbers instead of exact rationals, plus
+// "vertex_bounds" / "direction_bounds": per coordinate, a bound on the distance from the PRINTED decimal
+// to the exact value — the twin's bound plus the printing error (computed exactly), rounded up — so the
+// promise holds for the numbers a reader sees, not only for the doubles behind them. Human text
+// shows 12 digits with a bound widened the same way and rounded up to 2 significant digits.
+#pragma once
+
+#include <string>
+
+#include "float/labels_twin.h"
+
+namespace wrenchkit::cli {
+
+std::string float_number(double x);                  // shortest round-trip decimal (%.17g), finite
+std::string float_point_json(const fl::Point2& p);    // [x, y]
+std::string float_bounds_json(const fl::Point2& p);   // [ex, ey]
+std::string float_region_json(const fl::Region2& r);  // REGION with numbers and bounds
+std::string float_infinity_json(const fl::Arc2& a);   // [] | [{"direction"}] | [{"from", "to"}] | full circle
+std::string float_region_text(const fl::Region2& r);  // for people: x ± e
+std::string float_infinity_text(const fl::Arc2& a);
+std::string float_dual_point_json(const fl::Dual_point_twin& p);
+
+}  // namespace wrenchkit::cli
