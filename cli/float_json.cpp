@@ -49,18 +49,7 @@ std::string list(const std::vector<fl::Point2>& v, std::string (*f)(const fl::Po
 
 fl::Point2 exact_point(double x, double y) { return {fl::Bounded::exact(x), fl::Bounded::exact(y)}; }
 
-std::string pt_text(const fl::Point2& p) {
-  const auto one = [](const fl::Bounded& b) {
-    char s[80];
-    std::snprintf(s, sizeof s, "%.12g", b.v == 0 ? 0.0 : b.v);
-    const double e = shown_bound(b, s);
-    if (e == 0) return std::string(s);
-    char t[40];
-    std::snprintf(t, sizeof t, " ± %.2g", e * 1.1);  // 2 significant digits, never below the bound
-    return std::string(s) + t;
-  };
-  return "(" + one(p.x) + ", " + one(p.y) + ")";
-}
+std::string pt_text(const fl::Point2& p) { return "(" + float_value_text(p.x) + ", " + float_value_text(p.y) + ")"; }
 
 std::string pts_text(const std::vector<fl::Point2>& v) {
   std::string s;
@@ -69,6 +58,38 @@ std::string pts_text(const std::vector<fl::Point2>& v) {
 }
 
 }  // namespace
+
+std::string float_value_text(const fl::Bounded& b) {
+  if (!std::isfinite(b.v) || !std::isfinite(b.e)) return "unknown";
+  char s[80];
+  std::snprintf(s, sizeof s, "%.12g", b.v == 0 ? 0.0 : b.v);
+  const double e = shown_bound(b, s);
+  if (e == 0) return s;
+  char t[40];
+  std::snprintf(t, sizeof t, " ± %.2g", e * 1.1);  // 2 significant digits, never below the bound
+  return std::string(s) + t;
+}
+
+std::string float_value_json(const fl::Bounded& b) {
+  if (!std::isfinite(b.v) || !std::isfinite(b.e)) return "null";
+  const std::string v = float_number(b.v);
+  return "{\"value\": " + v + ", \"bound\": " + bound_number(shown_bound(b, v)) + "}";
+}
+
+std::string float_load_json(const fl::Load_twin& l) {
+  if (!l.decided) return "null";
+  std::string s = "{\"load\": [" + float_value_json(l.load[0]) + ", " + float_value_json(l.load[1]) + ", " +
+                  float_value_json(l.load[2]) + "], \"facet_points\": [";
+  for (std::size_t i = 0; i < l.facet_points.size(); ++i) s += (i ? ", " : "") + std::to_string(l.facet_points[i]);
+  return s + "]}";
+}
+
+std::string float_load_text(const fl::Load_twin& l) {
+  if (!l.decided) return "undecided";
+  std::string s = "(" + float_value_text(l.load[0]) + ", " + float_value_text(l.load[1]) + ", " + float_value_text(l.load[2]) + ")";
+  if (!l.facet_points.empty()) s += " plus the friction disc(s) of the support point(s) at the rotation centre (a facet)";
+  return s;
+}
 
 std::string float_region_json(const fl::Region2& r) {
   std::vector<fl::Point2> v = r.vertices, d = r.directions;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "float/labels_twin.h"
+#include "float/limit_surface_twin.h"
 
 namespace wrenchkit::cli {
 
@@ -21,5 +22,13 @@ std::string float_infinity_json(const fl::Arc2& a);   // [] | [{"direction"}] | 
 std::string float_region_text(const fl::Region2& r);  // for people: x ± e
 std::string float_infinity_text(const fl::Arc2& a);
 std::string float_dual_point_json(const fl::Dual_point_twin& p);
+// One value: {"value": v, "bound": e} (e covering the printing of v too), or null without a finite bound;
+// and "v ± e" for people.
+std::string float_value_json(const fl::Bounded& b);
+std::string float_value_text(const fl::Bounded& b);
+// The true load of a twist: {"load": [VALUE, VALUE, VALUE], "facet_points": [i, …]} (the load is then the
+// facet's centre) or null when the twin could not decide it; and its text.
+std::string float_load_json(const fl::Load_twin& l);
+std::string float_load_text(const fl::Load_twin& l);
 
 }  // namespace wrenchkit::cli

@@ -9,12 +9,15 @@
 #include <vector>
 
 #include "cli/common.h"
+#include "cli/float_json.h"
 #include "cli/render_limit_surface.h"
 #include "exact/input_error.h"
 #include "exact/json.h"
 #include "exact/limit_surface.h"
 #include "exact/sliding.h"
 #include "exact/streaming_scene_reader.h"
+#include "exact/to_float.h"
+#include "float/limit_surface_twin.h"
 
 namespace wrenchkit::cli {
 
@@ -46,13 +49,19 @@ const char* kLimitSurfaceHelp =
     "  --obj FILE         write both polytopes as a Wavefront OBJ with objects \"inner\" and \"outer\"\n"
     "  --json             machine-readable output (docs/limit-surface.md)\n"
     "  --max-digits N, --max-exponent N, --max-file-size BYTES, --max-contacts N  (as for closure)\n"
-    "  --mode exact|hybrid|float  accepted; the limit surface is always computed exactly\n"
+    "  --mode hybrid      (default) the polytopes exactly; --load's motion by the float twin's certified\n"
+    "                     search on the TRUE limit surface first, the polytopes when it cannot tell;\n"
+    "                     with --twist also the true power and load (certified float bounds)\n"
+    "  --mode exact       exact arithmetic only (the motion from the polytopes: may be undecided)\n"
+    "  --mode float       the float twin alone: no polytopes; lambda^2, the polygonal and true powers and\n"
+    "                     loads with certified bounds, the motion by the search (exit 3 if undecided)\n"
     "\n"
     "Exact rationals are printed in lowest terms; OFF/OBJ coordinates are doubles (for viewing).\n";
 
 namespace {
 
 struct Ls_options {
+  Mode mode = Mode::hybrid;
   int sides = 32;
   bool sides_given = false;
   std::optional<Rational> tolerance;
@@ -211,6 +220,9 @@ Ls_options limit_surface_options(const Options& o) {
   if (o.has("--obj")) lo.obj_file = o.values.at("--obj");
   if (o.has("--svg")) lo.svg_file = o.values.at("--svg");
   lo.list = o.has("--list");
+  lo.mode = mode_of(o.mode);
+  if (lo.mode == Mode::float_only && (lo.list || !lo.off_file.empty() || !lo.obj_file.empty() || !lo.svg_file.empty()))
+    throw Usage_error("--list, --off, --obj and --svg show the exact polytopes: not with --mode float");
   return lo;
 }
 
@@ -221,9 +233,41 @@ struct Ls_result {
   Ls_polytope in, out;
   Sliding_answer sa;
   std::optional<Rational> g_in, g_out;
-  Motion motion = Motion::undecided;
+  Motion_decision motion;
   Polygonal_ls::Normal_cone cone_in, cone_out;
+  // Not in --mode exact: the true surface, certified float bounds (float/limit_surface_twin.h).
+  std::vector<fl::Support_point_twin> twin;
+  std::optional<fl::Bounded> true_power;
+  std::optional<fl::Load_twin> true_load;
 };
+
+fl::Bounded3 twin_of(const Vec3q& q) { return {to_bounded(q[0]), to_bounded(q[1]), to_bounded(q[2])}; }
+
+void true_surface(const Ls_options& lo, Ls_result& r) {
+  if (lo.mode == Mode::exact) return;
+  r.twin = twin_support(r.model->support());
+  if (!lo.twist) return;
+  r.true_power = fl::support_function(r.twin, twin_of(*lo.twist));
+  r.true_load = fl::load_for_twist(r.twin, twin_of(*lo.twist));
+}
+
+std::string bounded_json(const fl::Bounded& b) { return float_value_json(b); }
+std::string bounded_text(const fl::Bounded& b) { return float_value_text(b); }
+
+// The true surface's fields (hybrid and float): ', "true_surface_values": {…}'.
+std::string true_json(const Ls_result& r) {
+  if (!r.true_power) return "";
+  return ", \"true_power\": " + bounded_json(*r.true_power) + ", \"true_load\": " + float_load_json(*r.true_load);
+}
+
+std::string motion_fields(const Ls_result& r) {
+  std::string s = std::string(", \"motion_decided_by\": \"") + r.motion.decided_by + "\"";
+  if (r.motion.cells) s += ", \"search_twists\": " + std::to_string(r.motion.cells);
+  if (std::string(r.motion.decided_by) == "float" && r.motion.motion == Motion::slides)
+    s += ", \"witness_twist\": [" + float_number(r.motion.witness[0]) + ", " + float_number(r.motion.witness[1]) + ", " +
+         float_number(r.motion.witness[2]) + "]";
+  return s;
+}
 
 Ls_result compute_limit_surface(const Ls_options& lo, const Options& o, const std::string& text,
                                 const std::string& source) {
@@ -237,14 +281,24 @@ Ls_result compute_limit_surface(const Ls_options& lo, const Options& o, const st
                       " distinct support points needs " + std::to_string(model.candidate_count()) +
                       " candidate normals, more than the limit " + std::to_string(kMaxCandidates) +
                       "; use fewer sides (or a larger --tolerance)");
+  true_surface(lo, r);
+  if (lo.mode == Mode::float_only) {
+    if (lo.load) {
+      r.motion = decide_motion(model, *lo.load, Mode::float_only);
+      if (r.motion.motion == Motion::undecided)
+        throw Undecided("the float twin's search could not tell whether the load sticks (it is within the search's "
+                        "resolution of the limit surface); use --mode hybrid");
+    }
+    return r;
+  }
   r.in = model.build(Side::inner);
   r.out = model.build(Side::outer);
   r.sa = compute_sliding(model, lo.twist);
   if (lo.load) {
     r.g_in = model.gauge(r.in, Side::inner, *lo.load);
     r.g_out = model.gauge(r.out, Side::outer, *lo.load);
-    r.motion = classify_load(r.g_in, r.g_out);
-    if (r.motion != Motion::sticks) {
+    r.motion = decide_motion(model, *lo.load, lo.mode, &r.in, &r.out);
+    if (r.motion.motion != Motion::sticks) {
       r.cone_in = model.normal_cone(r.in, Side::inner, *lo.load);
       r.cone_out = model.normal_cone(r.out, Side::outer, *lo.load);
     }
@@ -268,8 +322,8 @@ std::string limit_surface_json(const Ls_options& lo, const Ls_result& r) {
   const Ls_support& sup = model.support();
   const Sliding_answer& sa = r.sa;
   std::ostringstream s;
-  s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(r.scene.name) << ", \"convention\": "
-    << json::quote(kConvention) << ", \"sides\": " << lo.sides;
+  s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \""
+    << mode_name(lo.mode) << "\", \"convention\": " << json::quote(kConvention) << ", \"sides\": " << lo.sides;
   if (lo.tolerance) s << ", \"tolerance\": " << jq(*lo.tolerance) << ", \"direction_sets_tried\": " << lo.sets_built;
   s << ", \"lambda_squared\": " << jq(d.lambda_sq) << ", \"relative_error_bound_approx\": " << ratio_text(d)
     << ", \"support\": {\"input_points\": " << r.scene.support->points.size() << ", \"points\": " << sup.points.size()
@@ -282,7 +336,7 @@ std::string limit_surface_json(const Ls_options& lo, const Ls_result& r) {
       << ", \"outer\": " << face_json(sa.outer_face) << ", \"power\": {\"inner\": " << jq(sa.h_inner)
       << ", \"outer\": " << jq(sa.h_outer) << "}, \"true_surface\": {\"kind\": \""
       << (sa.cls.kind == Twist_kind::facet ? "facet" : (sa.cls.kind == Twist_kind::vertex ? "vertex" : "smooth"))
-      << "\", \"text\": " << json::quote(sa.cls.text) << "}}";
+      << "\", \"text\": " << json::quote(sa.cls.text) << "}" << true_json(r) << "}";
   }
   if (lo.load) {
     auto cone_json = [&](const Polygonal_ls::Normal_cone& c) {
@@ -292,9 +346,10 @@ std::string limit_surface_json(const Ls_options& lo, const Ls_result& r) {
       for (std::size_t i = 0; i < c.lineality.size(); ++i) t += (i ? ", " : "") + jz(c.lineality[i]);
       return t + "]}";
     };
-    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion)
-      << "\", \"gauge\": {\"outer\": " << gauge_json(r.g_out) << ", \"inner\": " << gauge_json(r.g_in) << "}";
-    if (r.motion != Motion::sticks)
+    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\""
+      << motion_fields(r) << ", \"gauge\": {\"outer\": " << gauge_json(r.g_out) << ", \"inner\": " << gauge_json(r.g_in)
+      << "}";
+    if (r.motion.motion != Motion::sticks)
       s << ", \"twist_cone\": {\"outer\": " << cone_json(r.cone_out) << ", \"inner\": " << cone_json(r.cone_in) << "}";
   }
   s << "}";
@@ -335,12 +390,17 @@ std::string limit_surface_human(const Ls_options& lo, const Ls_result& r, const 
       }
     }
     s << "  power: " << to_string(sa.h_inner) << " <= h <= " << to_string(sa.h_outer) << "\n";
+    if (r.true_power) s << "  true power (float twin, certified): " << bounded_text(*r.true_power) << "\n";
   }
   if (lo.load) {
-    s << "load " << tv(*lo.load) << ": " << motion_name(r.motion) << "  (gauge between " << gauge_text(r.g_out)
-      << " and " << gauge_text(r.g_in) << "; sticks if < 1, slides if >= 1)\n";
-    if (r.motion == Motion::undecided) s << "  undecided: refine with more --sides or a smaller --tolerance\n";
-    if (r.motion != Motion::sticks) {
+    s << "load " << tv(*lo.load) << ": " << motion_name(r.motion.motion) << "  (gauge between " << gauge_text(r.g_out)
+      << " and " << gauge_text(r.g_in) << "; sticks if < 1, slides if >= 1; decided by "
+      << (std::string(r.motion.decided_by) == "float" ? "the float twin's certified search on the true surface"
+                                                       : std::string(r.motion.decided_by) == "polygons" ? "the polygons"
+                                                                                                         : "nothing")
+      << ")\n";
+    if (r.motion.motion == Motion::undecided) s << "  undecided: refine with more --sides or a smaller --tolerance\n";
+    if (r.motion.motion != Motion::sticks) {
       s << "  twists (outward normals of LS_out at the load's direction):";
       for (const Vec3z& g : r.cone_out.generators) s << " " << tz(g);
       for (const Vec3z& g : r.cone_out.lineality) s << " +-" << tz(g);
@@ -350,11 +410,66 @@ std::string limit_surface_human(const Ls_options& lo, const Ls_result& r, const 
   return s.str();
 }
 
+// --mode float: the twin alone (no exact polytopes). Its direction set has double parameters t_j, so
+// its λ² is certified for that set (close to, not equal to, the exact set's).
+std::string limit_surface_float_json(const Ls_options& lo, const Ls_result& r) {
+  const fl::Directions_twin d = fl::make_directions(lo.sides);
+  const fl::Point2 cof = fl::center_of_friction(r.twin);
+  fl::Bounded mu_f0;
+  for (const fl::Support_point_twin& p : r.twin) mu_f0 = mu_f0 + p.rho;
+  std::ostringstream s;
+  s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"float\""
+    << ", \"convention\": " << json::quote(kConvention) << ", \"sides\": " << lo.sides;
+  if (lo.tolerance) s << ", \"tolerance\": " << jq(*lo.tolerance);
+  s << ", \"lambda_squared\": " << bounded_json(d.lambda_sq) << ", \"support\": {\"input_points\": "
+    << r.scene.support->points.size() << ", \"points\": " << r.twin.size() << ", \"mu_f0\": " << bounded_json(mu_f0)
+    << ", \"center_of_friction\": [" << bounded_json(cof.x) << ", " << bounded_json(cof.y) << "]}";
+  if (lo.twist) {
+    const fl::Bounded3 q = twin_of(*lo.twist);
+    s << ", \"twist\": " << jv(*lo.twist) << ", \"load_for_twist\": {\"power\": {\"inner\": "
+      << bounded_json(fl::polygonal_support(r.twin, d, false, q)) << ", \"outer\": "
+      << bounded_json(fl::polygonal_support(r.twin, d, true, q)) << "}" << true_json(r) << "}";
+  }
+  if (lo.load)
+    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\"" << motion_fields(r);
+  s << "}";
+  return s.str();
+}
+
+std::string limit_surface_float_human(const Ls_options& lo, const Ls_result& r, const std::string& source) {
+  const fl::Directions_twin d = fl::make_directions(lo.sides);
+  const fl::Point2 cof = fl::center_of_friction(r.twin);
+  std::ostringstream s;
+  s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
+    << "support: " << r.twin.size() << " point(s) with mu*f > 0 (of " << r.scene.support->points.size()
+    << " given), centre of friction (" << bounded_text(cof.x) << ", " << bounded_text(cof.y) << ")\n"
+    << "sides: " << lo.sides << ", lambda^2 = " << bounded_text(d.lambda_sq) << " (the float twin's direction set)\n"
+    << "convention: " << kConvention << "\n";
+  if (lo.twist) {
+    const fl::Bounded3 q = twin_of(*lo.twist);
+    s << "twist " << tv(*lo.twist) << ":\n"
+      << "  polygonal power: " << bounded_text(fl::polygonal_support(r.twin, d, false, q)) << " <= h <= "
+      << bounded_text(fl::polygonal_support(r.twin, d, true, q)) << "\n";
+    if (r.true_power) s << "  true power: " << bounded_text(*r.true_power) << "\n";
+    if (r.true_load) s << "  true load: " << float_load_text(*r.true_load) << "\n";
+  }
+  if (lo.load) {
+    s << "load " << tv(*lo.load) << ": " << motion_name(r.motion.motion)
+      << " (the float twin's certified search on the true surface, " << r.motion.cells << " twists)\n";
+    if (r.motion.motion == Motion::slides)
+      s << "  a twist with h(q) <= q.p: (" << float_number(r.motion.witness[0]) << ", " << float_number(r.motion.witness[1])
+        << ", " << float_number(r.motion.witness[2]) << ")\n";
+  }
+  s << "decided by: the float twin alone (every sign certified; values with certified bounds)\n";
+  return s.str();
+}
+
 }  // namespace
 
 Scene_answer prepare_limit_surface_json(const Options& o) {
   return [o, lo = limit_surface_options(o)](const std::string& text, const std::string& source) {
-    return limit_surface_json(lo, compute_limit_surface(lo, o, text, source));
+    const Ls_result r = compute_limit_surface(lo, o, text, source);
+    return lo.mode == Mode::float_only ? limit_surface_float_json(lo, r) : limit_surface_json(lo, r);
   };
 }
 
@@ -364,7 +479,10 @@ int run_limit_surface(const Options& o, const std::string& text, const std::stri
   if (!lo.off_file.empty()) write_file(lo.off_file, off_text(r.in, r.out));
   if (!lo.obj_file.empty()) write_file(lo.obj_file, obj_text(r.in, r.out));
   if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.sides));
-  std::cout << (o.json ? limit_surface_json(lo, r) + "\n" : limit_surface_human(lo, r, source));
+  if (lo.mode == Mode::float_only)
+    std::cout << (o.json ? limit_surface_float_json(lo, r) + "\n" : limit_surface_float_human(lo, r, source));
+  else
+    std::cout << (o.json ? limit_surface_json(lo, r) + "\n" : limit_surface_human(lo, r, source));
   return kAnswered;
 }
 

@@ -7,10 +7,12 @@
 #include <vector>
 
 #include "cli/common.h"
+#include "cli/float_json.h"
 #include "exact/input_error.h"
 #include "exact/json.h"
 #include "exact/sliding.h"
 #include "exact/streaming_scene_reader.h"
+#include "exact/to_float.h"
 
 namespace wrenchkit::cli {
 
@@ -32,6 +34,11 @@ const char* kSlidingHelp =
     "options:\n"
     "  --twist vx,vy,w   the motion (exact numbers: 1, -1/2, 0.25); not the zero twist\n"
     "  --sides N         sides of the polygons for the bounds (even, 4..4096, default 64)\n"
+    "  --mode hybrid     (default) the exact answer above, plus the TRUE power and load from the float\n"
+    "                    twin with certified bounds (\"true_power\", \"true_load\")\n"
+    "  --mode exact      exact arithmetic only\n"
+    "  --mode float      the float twin alone: centre of friction, polygonal and true power, true load,\n"
+    "                    each with a certified bound (no exact polygons)\n"
     "  --json, --max-digits N, --max-exponent N, --max-file-size BYTES  (as for closure)\n";
 
 namespace {
@@ -51,6 +58,7 @@ std::string face_json(const Ls_face& f) {
 struct Sliding_options {
   std::optional<Vec3q> twist;
   int sides = 64;
+  Mode mode = Mode::hybrid;
 };
 
 Sliding_options sliding_options(const Options& o) {
@@ -87,6 +95,7 @@ Sliding_options sliding_options(const Options& o) {
       throw Usage_error("--twist: \"" + twist_text + "\" is the zero twist (no motion, no load)");
     so.twist = t;
   }
+  so.mode = mode_of(o.mode);
   return so;
 }
 
@@ -94,14 +103,63 @@ struct Sliding_result {
   Scene scene;
   std::optional<Polygonal_ls> model;
   Sliding_answer a;
+  std::vector<fl::Support_point_twin> twin;  // not in --mode exact
 };
+
+fl::Bounded3 twin_of(const Vec3q& q) { return {to_bounded(q[0]), to_bounded(q[1]), to_bounded(q[2])}; }
 
 Sliding_result compute(const Sliding_options& so, const Options& o, const std::string& text, const std::string& source) {
   Sliding_result r;
   r.scene = read_scene_streaming(text, o.limits, source);
   if (!r.scene.support) throw Input_error(source + ": support: the scene has no \"support\" (sliding needs one)");
-  r.a = compute_sliding(r.model.emplace(merge_support(*r.scene.support), make_directions(so.sides)), so.twist);
+  if (so.mode != Mode::exact) r.twin = twin_support(merge_support(*r.scene.support));
+  if (so.mode != Mode::float_only)
+    r.a = compute_sliding(r.model.emplace(merge_support(*r.scene.support), make_directions(so.sides)), so.twist);
   return r;
+}
+
+// The float twin's values for the twist (hybrid: added to the exact answer).
+std::string true_fields(const Sliding_options& so, const Sliding_result& r) {
+  if (so.mode == Mode::exact || !so.twist) return "";
+  const fl::Bounded3 q = twin_of(*so.twist);
+  return ", \"true_power\": " + float_value_json(fl::support_function(r.twin, q)) +
+         ", \"true_load\": " + float_load_json(fl::load_for_twist(r.twin, q));
+}
+
+std::string sliding_float_json(const Sliding_options& so, const Sliding_result& r) {
+  const fl::Point2 cof = fl::center_of_friction(r.twin);
+  fl::Bounded mu_f0;
+  for (const fl::Support_point_twin& p : r.twin) mu_f0 = mu_f0 + p.rho;
+  std::ostringstream s;
+  s << "{\"command\": \"sliding\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"float\""
+    << ", \"center_of_friction\": [" << float_value_json(cof.x) << ", " << float_value_json(cof.y)
+    << "], \"mu_f0\": " << float_value_json(mu_f0);
+  if (so.twist) {
+    const fl::Bounded3 q = twin_of(*so.twist);
+    const fl::Directions_twin d = fl::make_directions(so.sides);
+    s << ", \"twist\": " << jv(*so.twist) << ", \"sides\": " << so.sides << ", \"lambda_squared\": "
+      << float_value_json(d.lambda_sq) << ", \"power\": {\"inner\": "
+      << float_value_json(fl::polygonal_support(r.twin, d, false, q)) << ", \"outer\": "
+      << float_value_json(fl::polygonal_support(r.twin, d, true, q)) << "}" << true_fields(so, r);
+  }
+  s << "}";
+  return s.str();
+}
+
+std::string sliding_float_human(const Sliding_options& so, const Sliding_result& r, const std::string& source) {
+  const fl::Point2 cof = fl::center_of_friction(r.twin);
+  std::ostringstream s;
+  s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
+    << "centre of friction: (" << float_value_text(cof.x) << ", " << float_value_text(cof.y) << ")\n";
+  if (so.twist) {
+    const fl::Bounded3 q = twin_of(*so.twist);
+    s << "twist (" << human_number((*so.twist)[0]) << ", " << human_number((*so.twist)[1]) << ", "
+      << human_number((*so.twist)[2]) << "):\n"
+      << "  true power h = " << float_value_text(fl::support_function(r.twin, q)) << "\n"
+      << "  true load: " << float_load_text(fl::load_for_twist(r.twin, q)) << "\n";
+  }
+  s << "decided by: the float twin alone (values with certified bounds)\n";
+  return s.str();
 }
 
 const char* kConvention =
@@ -112,7 +170,8 @@ std::string sliding_json(const Sliding_options& so, const Sliding_result& r) {
   const Sliding_answer& a = r.a;
   const char* kinds[] = {"facet", "vertex", "smooth"};
   std::ostringstream s;
-  s << "{\"command\": \"sliding\", \"name\": " << json::quote(r.scene.name) << ", \"convention\": " << json::quote(kConvention)
+  s << "{\"command\": \"sliding\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"" << mode_name(so.mode)
+    << "\", \"convention\": " << json::quote(kConvention)
     << ", \"center_of_friction\": [" << jq(a.center_of_friction.x) << ", " << jq(a.center_of_friction.y)
     << "], \"friction_centroid\": [" << jq(a.friction_centroid.x) << ", " << jq(a.friction_centroid.y)
     << "], \"mu_f0\": " << jq(a.mu_f0);
@@ -135,7 +194,7 @@ std::string sliding_json(const Sliding_options& so, const Sliding_result& r) {
       << jq(a.h_lo) << ", \"upper\": " << jq(a.h_hi) << "}, \"load_box\": {\"lower\": " << jv(a.load_lo)
       << ", \"upper\": " << jv(a.load_hi) << ", \"of\": \""
       << (a.cls.kind == Twist_kind::facet ? "the facet's centre" : "the load") << "\"}, \"inner_load\": "
-      << face_json(a.inner_face) << ", \"outer_load\": " << face_json(a.outer_face);
+      << face_json(a.inner_face) << ", \"outer_load\": " << face_json(a.outer_face) << true_fields(so, r);
   }
   s << "}";
   return s.str();
@@ -161,6 +220,11 @@ std::string sliding_human(const Sliding_options& so, const Sliding_result& r, co
     }
     s << "load box: " << thv(a.load_lo) << " .. " << thv(a.load_hi)
       << (a.cls.kind == Twist_kind::facet ? " (the facet's centre)\n" : "\n");
+    if (so.mode == Mode::hybrid) {
+      const fl::Bounded3 q = twin_of(*so.twist);
+      s << "true power h = " << float_value_text(fl::support_function(r.twin, q))
+        << ", true load " << float_load_text(fl::load_for_twist(r.twin, q)) << " (float twin, certified bounds)\n";
+    }
   }
   s << "convention: " << kConvention << "\n";
   return s.str();
@@ -170,14 +234,18 @@ std::string sliding_human(const Sliding_options& so, const Sliding_result& r, co
 
 Scene_answer prepare_sliding_json(const Options& o) {
   return [o, so = sliding_options(o)](const std::string& text, const std::string& source) {
-    return sliding_json(so, compute(so, o, text, source));
+    const Sliding_result r = compute(so, o, text, source);
+    return so.mode == Mode::float_only ? sliding_float_json(so, r) : sliding_json(so, r);
   };
 }
 
 int run_sliding(const Options& o, const std::string& text, const std::string& source) {
   const Sliding_options so = sliding_options(o);
   const Sliding_result r = compute(so, o, text, source);
-  std::cout << (o.json ? sliding_json(so, r) + "\n" : sliding_human(so, r, source));
+  if (so.mode == Mode::float_only)
+    std::cout << (o.json ? sliding_float_json(so, r) + "\n" : sliding_float_human(so, r, source));
+  else
+    std::cout << (o.json ? sliding_json(so, r) + "\n" : sliding_human(so, r, source));
   return kAnswered;
 }
 

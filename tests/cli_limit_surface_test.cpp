@@ -63,11 +63,15 @@ TEST(CliLimitSurface, TwistAndLoadQueries) {
   const Cli_result s = run("limit-surface --json --sides 8 --load 0,0,2 " + golden("barbell"));
   EXPECT_TRUE(has(s.out, "\"motion\": \"slides\"")) << s.out;
   EXPECT_TRUE(has(s.out, "\"twist_cone\": {\"outer\": {\"generators\": [["));
-  const Cli_result u = run("limit-surface --json --sides 8 --load 0,0,1 " + golden("barbell"));
+  // (0, 0, 1) is a point of LS (theory.md §14.2): the polygons cannot tell at any N (--mode exact)…
+  const Cli_result u = run("limit-surface --json --mode exact --sides 8 --load 0,0,1 " + golden("barbell"));
   EXPECT_TRUE(has(u.out, "\"motion\": \"undecided\"")) << u.out;
-  const Cli_result h = run("limit-surface --sides 8 --load 0,0,1 --twist 0,0,1 " + golden("barbell"));
+  const Cli_result h = run("limit-surface --mode exact --sides 8 --load 0,0,1 --twist 0,0,1 " + golden("barbell"));
   EXPECT_TRUE(has(h.out, "undecided: refine")) << h.out;
   EXPECT_TRUE(has(h.out, "non-smooth point")) << h.out;
+  // … while the default (hybrid) search finds a twist q with h(q) = q·p exactly: the boundary slides.
+  const Cli_result hy = run("limit-surface --json --sides 8 --load 0,0,1 " + golden("barbell"));
+  EXPECT_TRUE(has(hy.out, "\"motion\": \"slides\", \"motion_decided_by\": \"float\"")) << hy.out;
 }
 
 TEST(CliLimitSurface, ToleranceAndListAndDegenerateScenes) {
@@ -207,6 +211,68 @@ TEST(CliLimitSurface, BadInputExitsTwoWithAClearMessageAndNoOutput) {
   EXPECT_EQ(j.code, 2);
   EXPECT_TRUE(has(j.err, "support.points[0].force")) << j.err;
   EXPECT_TRUE(j.out.empty());
+}
+
+}  // namespace
+}  // namespace wrenchkit
+
+namespace wrenchkit {
+namespace {
+
+// Modes: hybrid's motion equals every decided exact motion and decides where N sides cannot; float
+// answers without polytopes or exits 3 on a load exactly on the limit surface; the true power lies in
+// the exact bracket.
+TEST(CliLimitSurfaceModes, MotionByModeAndTheTrueSurface) {
+  // Barbell: (1, 0, 0) is a (non-smooth) point of LS; ±1 % of it.
+  const Cli_result ex = run("limit-surface --json --mode exact --sides 8 --load 1.01,0,0 " + golden("barbell"));
+  const Cli_result hy = run("limit-surface --json --sides 8 --load 1.01,0,0 " + golden("barbell"));
+  ASSERT_EQ(ex.code, 0) << ex.err;
+  ASSERT_EQ(hy.code, 0) << hy.err;
+  EXPECT_TRUE(has(ex.out, "\"motion\": \"undecided\"")) << ex.out;  // N = 8 cannot tell 1 % outside
+  EXPECT_TRUE(has(hy.out, "\"motion\": \"slides\", \"motion_decided_by\": \"float\"")) << hy.out;
+  EXPECT_TRUE(has(hy.out, "\"witness_twist\"")) << hy.out;
+  const Cli_result in = run("limit-surface --json --sides 8 --load 0.99,0,0 " + golden("barbell"));
+  EXPECT_TRUE(has(in.out, "\"motion\": \"sticks\", \"motion_decided_by\": \"float\"")) << in.out;
+  const Cli_result far = run("limit-surface --json --mode exact --sides 8 --load 0,3,1 " + golden("barbell"));
+  const Cli_result far_h = run("limit-surface --json --sides 8 --load 0,3,1 " + golden("barbell"));
+  EXPECT_TRUE(has(far.out, "\"motion\": \"slides\", \"motion_decided_by\": \"polygons\"")) << far.out;
+  EXPECT_TRUE(has(far_h.out, "\"motion\": \"slides\"")) << far_h.out;
+  // Float: no polytopes; a load on LS cannot be decided (exit 3, nothing on stdout).
+  const Cli_result fl = run("limit-surface --json --mode float --sides 8 --load 0.99,0,0 --twist 1,0,2 " + golden("barbell"));
+  ASSERT_EQ(fl.code, 0) << fl.err;
+  EXPECT_FALSE(has(fl.out, "\"facets\"")) << fl.out;
+  EXPECT_TRUE(has(fl.out, "\"motion\": \"sticks\"")) << fl.out;
+  EXPECT_TRUE(has(fl.out, "\"true_power\": {\"value\": 2, \"bound\": 0}")) << fl.out;  // ½|(3, 0)| + ½|(−1, 0)|
+  // (1, 0, 0) is on LS and the search meets the exact witness q = (1, 0, 0): slides (the boundary is not the
+  // interior). 10^-18 inside the load of the twist (1, 0.3, 0.7) is beyond the doubles' resolution: exit 3.
+  EXPECT_TRUE(has(run("limit-surface --mode float --load 1,0,0 " + golden("barbell")).out, "slides"));
+  const Cli_result on = run(
+      "limit-surface --mode float --load 0.84594517000224216553149590029074925480005609593367,"
+      "0.44044605754779759779121475101766813932871231275802,0.13883838881569464183775831937244773991606452035004 " +
+      golden("barbell"));
+  EXPECT_EQ(on.code, 3) << on.out;
+  EXPECT_TRUE(on.out.empty());
+  EXPECT_TRUE(has(on.err, "could not tell")) << on.err;
+  EXPECT_EQ(run("limit-surface --mode float --list " + golden("barbell")).code, 2);
+  // Exact mode uses no float: no true_power field.
+  const Cli_result tw = run("limit-surface --json --mode exact --twist 1,1,2 " + golden("ten_points"));
+  EXPECT_FALSE(has(tw.out, "true_power")) << tw.out;
+}
+
+TEST(CliSlidingModes, TruePowerInsideTheExactBracket) {
+  for (const char* twist : {"1,1,2", "0.3,-2,0.7", "1,0,0"}) {
+    const Cli_result h = run(std::string("sliding --json --twist ") + twist + " " + golden("ten_points"));
+    ASSERT_EQ(h.code, 0) << h.err;
+    const std::size_t p = h.out.find("\"true_power\": {\"value\": ");
+    ASSERT_NE(p, std::string::npos) << h.out;
+    const double v = std::strtod(h.out.c_str() + p + 24, nullptr);
+    EXPECT_GT(v, 0) << twist;
+    const Cli_result f = run(std::string("sliding --json --mode float --twist ") + twist + " " + golden("ten_points"));
+    ASSERT_EQ(f.code, 0) << f.err;
+    EXPECT_TRUE(has(f.out, "\"mode\": \"float\"")) << f.out;
+    EXPECT_FALSE(has(f.out, "\"load_box\"")) << f.out;  // no exact brackets in float mode
+    EXPECT_TRUE(has(f.out, std::string("\"true_power\": {\"value\": ") + h.out.substr(p + 24, 10))) << f.out;
+  }
 }
 
 }  // namespace
