@@ -7,23 +7,42 @@
 
 #include "cli/common.h"
 #include "exact/json.h"
+#include "exact/equilibrium.h"
 #include "exact/limit_surface.h"
+#include "exact/sliding.h"
 
 namespace wrenchkit::cli {
 
 namespace {
 
-// The support's limit surface at the finest N in {32, 16, 8, 4} whose candidate normals stay within a
-// small budget (analyze summarises; `limit-surface` answers any N and tolerance). Empty if none fits.
+// The support's limit surface: with --tolerance ε at the smallest N whose certified ratio meets ε
+// (1/λ − 1 ≤ ε), else at the finest N in {32, 16, 8, 4} whose candidate normals stay within a small budget
+// (analyze summarises; `limit-surface` answers any N and queries). With a force or wrench load, also
+// whether that load sticks or slides on the support (by the mode: hybrid asks the float twin's search on
+// the true surface first). Empty (with `why`) when the polytopes exceed the budget.
 struct Ls_summary {
   std::string json, human;
 };
-std::optional<Ls_summary> limit_surface_summary(const Scene& scene) {
+std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::optional<Rational>& tolerance,
+                                                const Scene& scene, std::string& why) {
   const Ls_support sup = merge_support(*scene.support);
-  for (int n : {32, 16, 8, 4}) {
+  std::vector<int> sizes = {32, 16, 8, 4};
+  if (tolerance) {
+    const int n = smallest_sides(*tolerance, kMaxSides);
+    if (n == 0) {
+      why = "--tolerance needs more than " + std::to_string(kMaxSides) + " sides";
+      return std::nullopt;
+    }
+    sizes = {n};
+  }
+  for (int n : sizes) {
     const Polygonal_ls model(sup, make_directions(n));
-    if (model.candidate_count() > 20000 && n > 4) continue;
-    if (model.candidate_count() > kMaxCandidates) return std::nullopt;
+    if (!tolerance && model.candidate_count() > 20000 && n > 4) continue;
+    if (model.candidate_count() > kMaxCandidates) {
+      why = "the polytopes at " + std::to_string(n) + " sides would need " + std::to_string(model.candidate_count()) +
+            " candidate normals (limit " + std::to_string(kMaxCandidates) + "); use wrenchkit limit-surface";
+      return std::nullopt;
+    }
     const Ls_polytope in = model.build(Side::inner), out = model.build(Side::outer);
     const Vec2 cof{sup.weighted_force_sum.x / sup.total_force, sup.weighted_force_sum.y / sup.total_force};
     const std::string lam = to_string(model.directions().lambda_sq);
@@ -32,13 +51,27 @@ std::optional<Ls_summary> limit_surface_summary(const Scene& scene) {
              ", \"center_of_friction\": [" + json::quote(to_string(cof.x)) + ", " + json::quote(to_string(cof.y)) +
              "], \"inner\": {\"facets\": " + std::to_string(in.facets.size()) + ", \"vertices\": " +
              std::to_string(in.vertices.size()) + "}, \"outer\": {\"facets\": " + std::to_string(out.facets.size()) +
-             ", \"vertices\": " + std::to_string(out.vertices.size()) + "}}";
-    r.human = "limit surface (" + std::to_string(n) + " sides): lambda^2 = " + lam + ", inner " +
-              std::to_string(in.facets.size()) + " facets, outer " + std::to_string(out.facets.size()) +
-              " facets; centre of friction (" + to_string(cof.x) + ", " + to_string(cof.y) +
-              ") — 'wrenchkit limit-surface' for any N, tolerances and queries\n";
+             ", \"vertices\": " + std::to_string(out.vertices.size()) + "}";
+    r.human = "limit surface (" + std::to_string(n) + " sides" + (tolerance ? ", the fewest meeting --tolerance" : "") +
+              "): lambda^2 = " + lam + ", inner " + std::to_string(in.facets.size()) + " facets, outer " +
+              std::to_string(out.facets.size()) + " facets; centre of friction (" + to_string(cof.x) + ", " +
+              to_string(cof.y) + ") — 'wrenchkit limit-surface' for any N, tolerances and queries\n";
+    if (scene.load && scene.load->kind != Load::Kind::gravity) {
+      const Vec3q p = as_vec(load_wrench(scene));
+      const Motion_decision m = decide_motion(model, p, mode_of(o.mode), &in, &out);
+      r.json += ", \"load_motion\": {\"load\": [" + json::quote(to_string(p[0])) + ", " + json::quote(to_string(p[1])) +
+                ", " + json::quote(to_string(p[2])) + "], \"motion\": \"" + motion_name(m.motion) +
+                "\", \"decided_by\": \"" + m.decided_by + "\"}";
+      r.human += "the load on the support: " + std::string(motion_name(m.motion)) +
+                 (std::string(m.decided_by) == "float" ? " (the float twin's certified search on the true limit surface)"
+                  : std::string(m.decided_by) == "polygons" ? " (the exact polygons)"
+                                                            : " (within the polygons' resolution: refine --tolerance)") +
+                 "\n";
+    }
+    r.json += "}";
     return r;
   }
+  why = "too many support points for analyze's summary; use wrenchkit limit-surface";
   return std::nullopt;
 }
 
@@ -54,14 +87,20 @@ struct Analysis {
   std::vector<std::pair<std::string, std::string>> skipped;
 };
 
-Analysis analyze(const Options& o, const std::string& scene_text, const std::string& source) {
+Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, const std::string& scene_text,
+                 const std::string& source) {
   Analysis a;
   a.closure = compute_closure(o, scene_text, source, &a.scene);
   if (a.scene.load) a.equilibrium = compute_equilibrium(o, a.scene, scene_text);
   if (a.scene.support) {
-    a.limit_surface = limit_surface_summary(a.scene);
-    if (!a.limit_surface)
-      a.skipped.push_back({"limit_surface", "too many support points for analyze's summary; use wrenchkit limit-surface"});
+    std::string why;
+    a.limit_surface = limit_surface_summary(o, tolerance, a.scene, why);
+    if (!a.limit_surface) a.skipped.push_back({"limit_surface", why});
+    else if (a.scene.load && a.scene.load->kind == Load::Kind::gravity)
+      a.skipped.push_back({"load_motion", "gravity acts across a horizontal support, not in its plane: give the load "
+                                          "on the support as a force or a wrench"});
+  } else if (tolerance) {
+    a.skipped.push_back({"limit_surface", "--tolerance was given but the scene has no support"});
   }
   return a;
 }
@@ -78,25 +117,32 @@ std::string analyze_json(const Options& o, const Analysis& a, const char* comman
   return s + "]}";
 }
 
-void check_analyze_options(const Options& o) {
+// The options, once: --tolerance ε > 0 (the limit surface's certified relative error).
+std::optional<Rational> analyze_options(const Options& o) {
   if (o.verdict_only) throw Usage_error("--verdict-only is for batch closure");
   if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
     throw Usage_error("analyze writes its certificates in its JSON output; use closure or equilibrium for files");
-  only_options(o, "analyze", {});
+  only_options(o, "analyze", {"--tolerance"});
+  if (!o.has("--tolerance")) return std::nullopt;
+  const std::string& t = o.values.at("--tolerance");
+  std::string why;
+  const auto e = parse_rational(t, false, o.limits, why);
+  if (!e) throw Usage_error("--tolerance: \"" + t + "\" " + why);
+  if (*e <= 0) throw Usage_error("--tolerance: \"" + t + "\" must be > 0");
+  return e;
 }
 
 }  // namespace
 
 Scene_answer prepare_analyze_json(const Options& o) {
-  check_analyze_options(o);
-  return [o](const std::string& text, const std::string& source) {
-    return analyze_json(o, analyze(o, text, source), "analyze");
+  return [o, tolerance = analyze_options(o)](const std::string& text, const std::string& source) {
+    return analyze_json(o, analyze(o, tolerance, text, source), "analyze");
   };
 }
 
 int run_analyze(const Options& o, const std::string& scene_text, const std::string& source, const char* command) {
-  check_analyze_options(o);
-  const Analysis a = analyze(o, scene_text, source);
+  const std::optional<Rational> tolerance = analyze_options(o);
+  const Analysis a = analyze(o, tolerance, scene_text, source);
   if (o.json) {
     std::cout << analyze_json(o, a, command) << "\n";
     return kAnswered;

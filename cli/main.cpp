@@ -142,10 +142,12 @@ const char* kAnalyzeHelp =
     "\n"
     "Everything the scene's contents call for, and nothing else: force and form closure of its\n"
     "contacts, and equilibrium when it has a load, each with a checked certificate; a summary of the\n"
-    "limit surface (N = 32 sides or fewer for large supports) when it has a support. What cannot be\n"
-    "computed within analyze's budget is listed as skipped.\n"
+    "limit surface when it has a support (N = 32 sides or fewer for large supports, or the fewest\n"
+    "sides meeting --tolerance), and with a force or wrench load also whether that load sticks or\n"
+    "slides on the support. What cannot be computed within analyze's budget is listed as skipped.\n"
     "\n"
-    "options: --json, --mode, --max-* (as for closure)\n";
+    "options: --json, --mode (as for closure; hybrid asks the float twin first everywhere),\n"
+    "         --tolerance EPS (the limit surface's certified relative error 1/lambda - 1 <= EPS), --max-*\n";
 
 const char* kCheckHelp =
     "usage: wrenchkit check [OPTIONS] SCENE.json CERT.json\n"
@@ -218,6 +220,12 @@ int dispatch(int argc, char** argv) {
     if (o.help) return std::cout << kBatchHelp, kAnswered;
     return run_batch(o);
   }
+  if (command == "analyze") {
+    if (o.help) return std::cout << kAnalyzeHelp, kAnswered;
+    if (o.positional.size() != 1) throw Usage_error("analyze needs exactly one SCENE.json");
+    const std::string& path = o.positional[0];
+    return run_analyze(o, read_input(path, o.limits.max_file_bytes), path == "-" ? "<stdin>" : path, "analyze");
+  }
   if (!o.values.empty()) throw Usage_error(o.values.begin()->first + " is not an option of " + command);
   if (command == "closure") {
     if (o.help) return std::cout << kClosureHelp, kAnswered;
@@ -225,12 +233,6 @@ int dispatch(int argc, char** argv) {
     const std::string& path = o.positional[0];
     const std::string text = read_input(path, o.limits.max_file_bytes);
     return run_closure(o, text, path == "-" ? "<stdin>" : path, "closure");
-  }
-  if (command == "analyze") {
-    if (o.help) return std::cout << kAnalyzeHelp, kAnswered;
-    if (o.positional.size() != 1) throw Usage_error("analyze needs exactly one SCENE.json");
-    const std::string& path = o.positional[0];
-    return run_analyze(o, read_input(path, o.limits.max_file_bytes), path == "-" ? "<stdin>" : path, "analyze");
   }
   if (command == "equilibrium") {
     if (o.help) return std::cout << kEquilibriumHelp, kAnswered;

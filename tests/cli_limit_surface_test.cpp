@@ -277,3 +277,36 @@ TEST(CliSlidingModes, TruePowerInsideTheExactBracket) {
 
 }  // namespace
 }  // namespace wrenchkit
+
+namespace wrenchkit {
+namespace {
+
+// analyze: --tolerance picks the fewest sides meeting it; a force load on a support gets its motion;
+// a gravity load's motion on a horizontal support is listed as skipped, not computed.
+TEST(CliAnalyzeSupport, ToleranceAndTheLoadsMotion) {
+  const auto write = [](const std::string& name, const std::string& text) {
+    const fs::path p = scratch() / name;
+    std::ofstream(p) << text;
+    return "'" + p.string() + "'";
+  };
+  const std::string pushed = write("pushed.json", R"({"wrenchkit": 1, "load": {"force": ["0.9", 0], "at": [0, "-1/2"]},
+    "support": {"mu": "1/2", "points": [{"at": [0, -1], "force": 1}, {"at": [0, 1], "force": 1}]}})");
+  const Cli_result a = run("analyze --json --tolerance 0.01 " + pushed);
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_TRUE(has(a.out, "\"sides\": 24")) << a.out;  // the smallest N with 1/λ − 1 ≤ 1/100 (LS-1)
+  EXPECT_TRUE(has(a.out, "\"load_motion\": {\"load\": [\"9/10\", \"0\", \"9/20\"], \"motion\": \"slides\"")) << a.out;
+  const Cli_result light = run("analyze --json " + write("light.json", R"({"wrenchkit": 1, "load": {"force": ["0.1", 0], "at": [0, 0]},
+    "support": {"mu": "1/2", "points": [{"at": [0, -1], "force": 1}, {"at": [0, 1], "force": 1}]}})"));
+  EXPECT_TRUE(has(light.out, "\"motion\": \"sticks\"")) << light.out;
+  const Cli_result heavy = run("analyze --json " + write("gravity.json", R"({"wrenchkit": 1, "body": {"com": [0, 0]},
+    "load": {"gravity": 1}, "support": {"mu": "1/2", "points": [{"at": [0, -1], "force": 1}]}})"));
+  EXPECT_TRUE(has(heavy.out, "{\"what\": \"load_motion\"")) << heavy.out;
+  EXPECT_FALSE(has(heavy.out, "\"load_motion\": {")) << heavy.out;
+  EXPECT_EQ(run("analyze --tolerance 0 " + pushed).code, 2);
+  EXPECT_EQ(run("analyze --tolerance abc " + pushed).code, 2);
+  const Cli_result none = run("analyze --json --tolerance 0.1 '" + test::source_dir() + "/tests/golden/single_force.scene.json'");
+  EXPECT_TRUE(has(none.out, "the scene has no support")) << none.out;
+}
+
+}  // namespace
+}  // namespace wrenchkit
