@@ -279,21 +279,24 @@ Reuleaux_query reuleaux_query(const Options& o) {
   return q;
 }
 
+// ', "query": {…}' of reuleaux with a motion (both modes).
+std::string query_json(const Reuleaux_query& q, const Mode_answer& m) {
+  if (!q.given) return "";
+  const std::array<Rational, 3> ta = {q.t[0], q.t[1], q.t[2]};
+  std::string j = ", \"query\": {" + twist_json(ta) + ", \"feasible\": " + (m.feasible ? "true" : "false") +
+                  ", \"marginal\": " + (m.marginal ? "true" : "false") + ", \"modes\": [";
+  for (std::size_t i = 0; i < m.modes.size(); ++i)
+    j += (i ? ", " : "") + std::string("{\"contact\": ") + std::to_string(i) + ", \"mode\": \"" + mode_name(m.modes[i]) +
+         "\"}";
+  return j + "]}";
+}
+
 std::string reuleaux_json(const Labelled_scene& s, const Reuleaux_query& q, const Mode_answer& m) {
   std::string j = "{\"command\": \"reuleaux\", \"name\": " + json::quote(s.scene.name) +
                   ", \"reading\": \"frictionless\"" + mode_fields(s) + ", \"rank\": " + std::to_string(s.labels.cone.rank) +
                   ", \"form_closure\": " + (s.labels.cone.force_closure() ? "true" : "false") + ", " +
                   labels_json_fields(s.labels);
-  if (q.given) {
-    const std::array<Rational, 3> ta = {q.t[0], q.t[1], q.t[2]};
-    j += ", \"query\": {" + twist_json(ta) + ", \"feasible\": " + (m.feasible ? "true" : "false") +
-         ", \"marginal\": " + (m.marginal ? "true" : "false") + ", \"modes\": [";
-    for (std::size_t i = 0; i < m.modes.size(); ++i)
-      j += (i ? ", " : "") + std::string("{\"contact\": ") + std::to_string(i) + ", \"mode\": \"" +
-           mode_name(m.modes[i]) + "\"}";
-    j += "]}";
-  }
-  return j + "}";
+  return j + query_json(q, m) + "}";
 }
 
 // ---- --mode float ----
@@ -382,16 +385,7 @@ std::string float_reuleaux_json(const Float_labelled& s, const Reuleaux_query& q
   std::string j = "{\"command\": \"reuleaux\", \"name\": " + json::quote(s.scene.name) +
                   ", \"reading\": \"frictionless\"" + kFloatMode + ", \"rank\": 3, \"form_closure\": " +
                   (s.labels.nothing_labeled() ? "true" : "false") + ", " + float_labels_fields(s.labels);
-  if (q.given) {
-    const std::array<Rational, 3> ta = {q.t[0], q.t[1], q.t[2]};
-    j += ", \"query\": {" + twist_json(ta) + ", \"feasible\": " + (m.feasible ? "true" : "false") +
-         ", \"marginal\": " + (m.marginal ? "true" : "false") + ", \"modes\": [";
-    for (std::size_t i = 0; i < m.modes.size(); ++i)
-      j += (i ? ", " : "") + std::string("{\"contact\": ") + std::to_string(i) + ", \"mode\": \"" +
-           mode_name(m.modes[i]) + "\"}";
-    j += "]}";
-  }
-  return j + "}";
+  return j + query_json(q, m) + "}";
 }
 
 bool float_mode(const Options& o) { return mode_of(o.mode) == Mode::float_only; }
