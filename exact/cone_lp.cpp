@@ -281,9 +281,9 @@ Integer_cone_membership phase1(const std::vector<std::array<typename P::E, 3>>& 
 }  // namespace
 
 Integer_cone_membership cone_membership(const Exact_kernel& k, const std::vector<std::size_t>& columns,
-                                        const std::vector<std::size_t>& negated) {
+                                        const std::vector<std::size_t>& negated, bool fixed_width) {
   std::vector<std::array<std::int64_t, 3>> g(columns.size());
-  bool fixed = true;
+  bool fixed = fixed_width;
   for (std::size_t j = 0; j < columns.size() && fixed; ++j) fixed = k.small_row(columns[j], g[j].data());
   i128 x[3] = {0, 0, 0};
   for (std::size_t t = 0; t < negated.size() && fixed; ++t) {

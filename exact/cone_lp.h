@@ -43,7 +43,8 @@ struct Integer_cone_membership {
   bool fixed_width = false;  // decided in fixed width (for tests)
 };
 
+// `fixed_width` false: GMP integers whatever the sizes (tests compare both).
 Integer_cone_membership cone_membership(const Exact_kernel& kernel, const std::vector<std::size_t>& columns,
-                                        const std::vector<std::size_t>& negated);
+                                        const std::vector<std::size_t>& negated, bool fixed_width = true);
 
 }  // namespace wrenchkit
