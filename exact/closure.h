@@ -7,8 +7,8 @@
 // Decision: core/dual_cone.h [FC-1] with the exact kernel. Every answer carries a certificate
 // (proofs/certificate-format.md):
 //   holds  — strictly positive rational weights on generators summing to the zero wrench, three of
-//            which have a nonzero determinant [FC-2]; found by the exact LP [FC-4] on the few
-//            generators that closed the dual cone;
+//            which have a nonzero determinant [FC-2]; found by the exact LP [FC-4], run in integers
+//            on the kernel's rows [FC-5], on the few generators that closed the dual cone;
 //   !holds — a nonzero twist with power ≥ 0 against every generator [FC-3]: an extreme ray of W*,
 //            or the normal of span W when rank W < 3.
 // Exact, never perturbed; every degenerate case of theory.md §5.6 is an ordinary input.
