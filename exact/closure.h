@@ -7,8 +7,8 @@
 // Decision: core/dual_cone.h [FC-1] with the exact kernel. Every answer carries a certificate
 // (proofs/certificate-format.md):
 //   holds  — strictly positive rational weights on generators summing to the zero wrench, three of
-//            which have a nonzero determinant [FC-2]; found by the exact LP [FC-4] on the few
-//            generators that closed the dual cone;
+//            which have a nonzero determinant [FC-2]; found by the exact LP [FC-4], run in integers
+//            on the kernel's rows [FC-5], on the few generators that closed the dual cone;
 //   !holds — a nonzero twist with power ≥ 0 against every generator [FC-3]: an extreme ray of W*,
 //            or the normal of span W when rank W < 3.
 // Exact, never perturbed; every degenerate case of theory.md §5.6 is an ordinary input.
@@ -65,6 +65,13 @@ struct Closure_answer {
 // only need the verdict); every command of the CLI certifies.
 Closure_answer decide_closure(const Scene& scene, Property property, Mode mode = Mode::exact,
                               bool certify = true);
+
+// [FC-5] Certificate parts from the integer rows of an exact kernel built With_provenance (also
+// used by equilibrium): the primitive twist positively parallel to row_a × row_b, and the positive
+// certificate [FC-2] from generators H with pos(H) = R³ (weights on the unscaled generators,
+// coprime integers). Throws std::logic_error if pos(H) ≠ R³ (a bug of the caller).
+std::array<Rational, 3> twist_of_ray(const Exact_kernel& k, std::size_t a, std::size_t b);
+void positive_certificate(const Exact_kernel& k, std::vector<std::size_t> H, Closure_certificate& cert);
 
 // The certificate as JSON (format version 1), with the twist's reading as a labeled point or a
 // direction at infinity.

@@ -25,20 +25,34 @@ Wrench load_wrench(const Scene& scene) {
 
 namespace {
 
-// [EQ-1] The exact LP decides and certifies: balancing weights, or a Farkas twist.
-void decide_by_lp(const std::vector<Generator>& gens, Equilibrium_answer& a, bool certify) {
-  std::vector<Wrench> ws;
-  ws.reserve(gens.size());
-  for (const Generator& g : gens) ws.push_back(g.w);
-  const Cone_membership m = cone_membership(ws, Wrench{-a.load.fx, -a.load.fy, -a.load.m});
+// The kernel of the friction generators and the load (last row), with provenance [FC-5].
+Exact_kernel load_kernel(const Scene& scene, const Wrench& load) {
+  return Exact_kernel(scene, Reading::friction, {load}, Exact_kernel::With_provenance{});
+}
+
+// [EQ-1] [FC-5] The integer LP decides and certifies: balancing weights, or a Farkas twist. `k` holds
+// the n generators' rows r_h = s_h·g_h and the load's r_L = s_L·w_ext (row n). A solution
+// Σ μ_h r_h = −r_L gives Σ (μ_h s_h / s_L) g_h + w_ext = 0: the weights on the unscaled generators.
+void decide_by_lp(const Exact_kernel& k, Equilibrium_answer& a, bool certify) {
+  const std::size_t n = k.size() - 1;
+  std::vector<std::size_t> columns(n);
+  for (std::size_t i = 0; i < n; ++i) columns[i] = i;
+  const Integer_cone_membership m = cone_membership(k, columns, {n});
   a.balanced = m.member;
   a.certificate.holds = m.member;
   if (!certify) return;
   if (m.member) {
-    for (std::size_t i = 0; i < gens.size(); ++i)
-      if (m.weights[i] != 0) a.certificate.combination.push_back({{gens[i].contact, gens[i].edge}, m.weights[i]});
+    Integer ln, ld, sn, sd;
+    k.scale(n, ln, ld);  // s_L = ln / ld
+    for (std::size_t i = 0; i < n; ++i) {
+      if (m.numerators[i] == 0) continue;
+      k.scale(i, sn, sd);
+      Rational w(Integer(m.numerators[i] * sn * ld), Integer(m.denominator * sd * ln));
+      w.canonicalize();
+      a.certificate.combination.push_back({{k.contact(i), k.edge(i)}, std::move(w)});
+    }
   } else {
-    a.certificate.twist = primitive_vec(m.twist);
+    a.certificate.twist = {Rational(m.twist[0]), Rational(m.twist[1]), Rational(m.twist[2])};
   }
 }
 
@@ -67,14 +81,14 @@ Equilibrium_answer decide_equilibrium(const Scene& scene, Mode mode, bool certif
   a.mode = mode;
   a.load = load_wrench(scene);
   if (mode != Mode::exact && a.load.fx == 0 && a.load.fy == 0 && a.load.m == 0) {
-    a.generators = generators(scene, Reading::friction).size();
+    a.generators = generator_count(scene, Reading::friction);
     a.balanced = a.certificate.holds = true;  // the zero load needs no force
     return a;
   }
   if (mode == Mode::exact) {
-    const std::vector<Generator> gens = generators(scene, Reading::friction);
-    a.generators = gens.size();
-    decide_by_lp(gens, a, certify);
+    const Exact_kernel k = load_kernel(scene, a.load);
+    a.generators = k.size() - 1;
+    decide_by_lp(k, a, certify);
     return a;
   }
   // [EQ-2] The dual cone over the filtered kernel, with the load as an extra row (index n).
@@ -97,7 +111,7 @@ Equilibrium_answer decide_equilibrium(const Scene& scene, Mode mode, bool certif
     if (mode == Mode::float_only) return undecided();
     a.predicates = kernel.n + 1;
     a.exact_predicates = kernel.exact_n + 1;
-    decide_by_lp(lazy.get(), a, certify);
+    decide_by_lp(load_kernel(scene, a.load), a, certify);
     return a;
   }
   std::array<std::size_t, 2> witness{};  // an extreme ray of W* with ⟨ray, w⟩ > 0, if any
@@ -108,15 +122,15 @@ Equilibrium_answer decide_equilibrium(const Scene& scene, Mode mode, bool certif
   a.exact_predicates = kernel.exact_n;
   a.certificate.holds = a.balanced;
   if (!certify) return a;
-  const std::vector<Generator>& gens = lazy.get();
-  if (gens.size() != n) throw std::logic_error("decide_equilibrium: twin and engine disagree on generators");
+  const Exact_kernel k = load_kernel(scene, a.load);
+  if (k.size() != n + 1) throw std::logic_error("decide_equilibrium: twin and engine disagree on generators");
   if (a.balanced) {
     Equilibrium_answer lp = a;
-    decide_by_lp(gens, lp, true);
+    decide_by_lp(k, lp, true);
     if (!lp.balanced) throw std::logic_error("decide_equilibrium: dual cone and LP disagree");
     a.certificate = lp.certificate;
   } else {
-    a.certificate.twist = primitive_vec(cross(as_vec(gens[witness[0]].w), as_vec(gens[witness[1]].w)));
+    a.certificate.twist = twist_of_ray(k, witness[0], witness[1]);
   }
   return a;
 }

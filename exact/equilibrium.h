@@ -2,7 +2,7 @@
 //
 // The load is an external wrench w_ext (theory.md §9: a force at a point, a wrench, or gravity at
 // the centre of mass); it is balanced iff −w_ext ∈ W = pos{contact wrench generators} (friction
-// reading). Decided by the exact cone LP [FC-4], which returns the certificate either way
+// reading). Decided by the exact cone LP [FC-4] (in integers [FC-5]), which returns the certificate either way
 // (proofs/certificate-format.md §3.3):
 //   balanced     — strictly positive weights on at most three generators with Σ λ_k g_k + w_ext = 0
 //                  (the contact forces that hold the body, as multiples of the cone edges);

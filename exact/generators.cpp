@@ -130,46 +130,85 @@ Integer to_integer(i128 v) {
 }
 
 // The integer vector e (|entries| < 2^127) as a kernel row: s and its tier
-// (0: < 2^40, 1: ≤ 2^62 − 1), or tier 2 with v. The zero vector stays zero (tier 0).
-void int128_row(i128 e[3], std::int64_t s[3], std::uint8_t& tier, std::array<Integer, 3>& v) {
+// (0: < 2^40, 1: ≤ 2^62 − 1), or tier 2 with v. The zero vector stays zero (tier 0). Returns the
+// positive integer e was divided by (1 unless that brought it to 62 bits).
+u128 int128_row(i128 e[3], std::int64_t s[3], std::uint8_t& tier, std::array<Integer, 3>& v) {
   tier = 0;
+  u128 divisor = 1;
   if (!wide::fits62(e[0]) || !wide::fits62(e[1]) || !wide::fits62(e[2])) {
     // Divided by the gcd of its entries when that brings it to 62 bits (then fixed-width signs).
     const u128 g = gcd128(gcd128(uabs(e[0]), uabs(e[1])), uabs(e[2]));
     for (int c = 0; c < 3; ++c) e[c] /= static_cast<i128>(g);
+    divisor = g;
     if (!wide::fits62(e[0]) || !wide::fits62(e[1]) || !wide::fits62(e[2])) {
       tier = 2;
       for (int c = 0; c < 3; ++c) v[c] = to_integer(e[c]);
-      return;
+      return divisor;
     }
   }
   for (int c = 0; c < 3; ++c) {
     s[c] = static_cast<std::int64_t>(e[c]);
     if (s[c] >= kSmall40 || s[c] <= -kSmall40) tier = 1;
   }
+  return divisor;
 }
 
 }  // namespace
 
-void Exact_kernel::push_int128(wide::i128 x, wide::i128 y, wide::i128 z) {
+wide::u128 Exact_kernel::push_int128(wide::i128 x, wide::i128 y, wide::i128 z) {
   i128 e[3] = {x, y, z};
   Row r;
   std::array<Integer, 3> v;
-  int128_row(e, r.s, r.tier, v);
+  const u128 divisor = int128_row(e, r.s, r.tier, v);
   if (r.tier == 2) {
     r.big = static_cast<std::uint32_t>(big_.size());
     big_.push_back(std::move(v));
   }
   rows_.push_back(r);
+  return divisor;
 }
 
-void Exact_kernel::push_rational(const Rational in[3]) {
+void Exact_kernel::note(std::size_t contact, Edge edge, std::int64_t f0, std::int64_t f1, std::int64_t f2,
+                        wide::u128 divisor) {
+  Provenance p;
+  p.contact = contact;
+  p.edge = edge;
+  p.f[0] = f0, p.f[1] = f1, p.f[2] = f2;
+  p.divisor = divisor;
+  prov_.push_back(p);
+}
+
+void Exact_kernel::note_big(std::size_t contact, Edge edge, Integer scale) {
+  Provenance p;
+  p.contact = contact;
+  p.edge = edge;
+  p.big = static_cast<std::int32_t>(big_scale_.size());
+  big_scale_.push_back(std::move(scale));
+  prov_.push_back(p);
+}
+
+void Exact_kernel::scale(std::size_t i, Integer& num, Integer& den) const {
+  const Provenance& p = prov_.at(i);
+  if (p.big >= 0) {
+    num = big_scale_[static_cast<std::size_t>(p.big)];
+    den = 1;
+    return;
+  }
+  num = static_cast<long>(p.f[0]);
+  for (int k = 1; k < 3; ++k)
+    if (p.f[k] != 1) num *= static_cast<long>(p.f[k]);
+  den = to_integer(static_cast<i128>(p.divisor));  // ≤ 2^125: the gcd of entries below 2^125
+}
+
+void Exact_kernel::push_rational(const Rational in[3], std::size_t contact) {
   // Fast path: numerators and denominators of 62 bits, common denominator of 62 bits.
   std::int64_t num[3], den[3], l = 1;
   bool fast = true;
   for (int c = 0; c < 3 && fast; ++c) fast = small_q(in[c], num[c], den[c]) && small_lcm(l, den[c], l);
-  if (fast) {
-    push_int128(i128(num[0]) * (l / den[0]), i128(num[1]) * (l / den[1]), i128(num[2]) * (l / den[2]));  // < 2^124
+  if (fast) {  // row = l · in / divisor
+    const u128 divisor =
+        push_int128(i128(num[0]) * (l / den[0]), i128(num[1]) * (l / den[1]), i128(num[2]) * (l / den[2]));  // < 2^124
+    if (record_) note(contact, Edge::wrench, l, 1, 1, divisor);
     return;
   }
   // Otherwise GMP integers: scale by the product of the denominators (positive; no gcd).
@@ -177,6 +216,7 @@ void Exact_kernel::push_rational(const Rational in[3]) {
   const Integer& d1 = in[1].get_den();
   const Integer& d2 = in[2].get_den();
   push_big({in[0].get_num() * d1 * d2, in[1].get_num() * d0 * d2, in[2].get_num() * d0 * d1});
+  if (record_) note_big(contact, Edge::wrench, d0 * d1 * d2);
 }
 
 void Exact_kernel::push_big(std::array<Integer, 3> v) {
@@ -198,19 +238,30 @@ Exact_kernel::Exact_kernel(const std::vector<Wrench>& wrenches) {
   rows_.reserve(wrenches.size());
   for (const Wrench& w : wrenches) {
     const Rational in[3] = {w.fx, w.fy, w.m};
-    push_rational(in);
+    push_rational(in, kNoContact);
   }
 }
 
 Exact_kernel::Exact_kernel(const Scene& scene, Reading reading, const std::vector<Wrench>& extra) {
-  rows_.reserve(2 * scene.contacts.size());
-  for (const Contact& original : scene.contacts) {
+  build(scene, reading, extra);
+}
+
+Exact_kernel::Exact_kernel(const Scene& scene, Reading reading, const std::vector<Wrench>& extra, With_provenance)
+    : record_(true) {
+  build(scene, reading, extra);
+}
+
+void Exact_kernel::build(const Scene& scene, Reading reading, const std::vector<Wrench>& extra) {
+  rows_.reserve(2 * scene.contacts.size() + extra.size());
+  if (record_) prov_.reserve(2 * scene.contacts.size() + extra.size());
+  for (std::size_t ci = 0; ci < scene.contacts.size(); ++ci) {
+    const Contact& original = scene.contacts[ci];
     std::optional<Contact> built;  // rationals of a lazily read contact
     if (original.exact_pending) built = exact_contact(original);
     const Contact& c = built ? *built : original;
     if (c.kind == Contact::Kind::wrench) {
       const Rational in[3] = {c.wrench.fx, c.wrench.fy, c.wrench.m};
-      push_rational(in);
+      push_rational(in, ci);
       continue;
     }
     const bool frictional = c.mu != 0;
@@ -219,41 +270,57 @@ Exact_kernel::Exact_kernel(const Scene& scene, Reading reading, const std::vecto
     std::int64_t Px, Py, dp, Nx, Ny, dn, M = 0, dm = 1;
     if (small_vec2(c.at.x, c.at.y, Px, Py, dp) && small_vec2(c.normal.x, c.normal.y, Nx, Ny, dn) &&
         (!frictional || small_q(c.mu, M, dm))) {
-      auto emit = [&](i128 Fx, i128 Fy) {  // |F| < 2^125
+      // Row = dp·dn·W (normal) or dp·dn·dm·W (left, right), divided by the divisor push_int128 applied.
+      auto emit = [&](Edge edge, i128 Fx, i128 Fy) {  // |F| < 2^125
         if (!wide::fits62(Fx) || !wide::fits62(Fy)) return false;  // then through the rationals
         const std::int64_t fx = static_cast<std::int64_t>(Fx), fy = static_cast<std::int64_t>(Fy);
-        push_int128(i128(dp) * fx, i128(dp) * fy, wide::minor2(Px, Py, fx, fy));  // each < 2^125
+        const u128 divisor = push_int128(i128(dp) * fx, i128(dp) * fy, wide::minor2(Px, Py, fx, fy));  // each < 2^125
+        if (record_) note(ci, edge, dp, dn, edge == Edge::normal ? 1 : dm, divisor);
         return true;
       };
-      const std::size_t before = rows_.size(), big_before = big_.size();
+      const std::size_t before = rows_.size(), big_before = big_.size(), prov_before = prov_.size();
       bool ok;
       if (reading == Reading::frictionless || !frictional)
-        ok = emit(Nx, Ny);
+        ok = emit(Edge::normal, Nx, Ny);
       else  // left: n + μ·rot90 n, right: n − μ·rot90 n, rot90 n = (−ny, nx)
-        ok = emit(i128(dm) * Nx - i128(M) * Ny, i128(dm) * Ny + i128(M) * Nx) &&
-             emit(i128(dm) * Nx + i128(M) * Ny, i128(dm) * Ny - i128(M) * Nx);
+        ok = emit(Edge::left, i128(dm) * Nx - i128(M) * Ny, i128(dm) * Ny + i128(M) * Nx) &&
+             emit(Edge::right, i128(dm) * Nx + i128(M) * Ny, i128(dm) * Ny - i128(M) * Nx);
       if (ok) continue;
       rows_.resize(before);
       big_.resize(big_before);
+      prov_.resize(prov_before);
     }
     // The same formulas in GMP integers, with products of denominators as common denominators.
     const Integer &axn = c.at.x.get_num(), &axd = c.at.x.get_den(), &ayn = c.at.y.get_num(), &ayd = c.at.y.get_den();
     const Integer &nxn = c.normal.x.get_num(), &nxd = c.normal.x.get_den();
     const Integer &nyn = c.normal.y.get_num(), &nyd = c.normal.y.get_den();
     const Integer dpz = axd * ayd, pxz = axn * ayd, pyz = ayn * axd, nx = nxn * nyd, ny = nyn * nxd;
-    auto emit_big = [&](const Integer& fx, const Integer& fy) { push_big({dpz * fx, dpz * fy, pxz * fy - pyz * fx}); };
+    // Row = dpz·nxd·nyd·W (normal), times md for left and right.
+    auto emit_big = [&](Edge edge, const Integer& fx, const Integer& fy, const Integer* md) {
+      push_big({dpz * fx, dpz * fy, pxz * fy - pyz * fx});
+      if (record_) note_big(ci, edge, md ? Integer(dpz * nxd * nyd * *md) : Integer(dpz * nxd * nyd));
+    };
     if (reading == Reading::frictionless || !frictional) {
-      emit_big(nx, ny);
+      emit_big(Edge::normal, nx, ny, nullptr);
     } else {
       const Integer &mn = c.mu.get_num(), &md = c.mu.get_den();
-      emit_big(md * nx - mn * ny, md * ny + mn * nx);
-      emit_big(md * nx + mn * ny, md * ny - mn * nx);
+      emit_big(Edge::left, md * nx - mn * ny, md * ny + mn * nx, &md);
+      emit_big(Edge::right, md * nx + mn * ny, md * ny - mn * nx, &md);
     }
   }
   for (const Wrench& w : extra) {
     const Rational in[3] = {w.fx, w.fy, w.m};
-    push_rational(in);
+    push_rational(in, kNoContact);
   }
+}
+
+std::size_t generator_count(const Scene& scene, Reading reading) {
+  std::size_t n = 0;
+  for (const Contact& c : scene.contacts) {
+    const bool frictional = c.exact_pending ? c.twin.frictional : c.mu != 0;
+    n += c.kind == Contact::Kind::point && reading == Reading::friction && frictional ? 2 : 1;
+  }
+  return n;
 }
 
 std::array<Integer, 3> Exact_kernel::row(std::size_t i) const {

@@ -42,12 +42,31 @@ class Exact_kernel {
   // allocation), through the rationals otherwise. The same primitive rows either way.
   // `extra`: rows appended after the generators (equilibrium's load).
   Exact_kernel(const Scene& scene, Reading reading, const std::vector<Wrench>& extra = {});
+  // [FC-5] The same rows, each with its provenance: the contact and edge it comes from (extra rows:
+  // contact kNoContact, edge `wrench`) and the positive factor `scale` with row = scale · W, W the
+  // UNSCALED generator of proofs/certificate-format.md §1 (or the extra wrench as given). Integer
+  // arithmetic; for the certificates, which must weigh the unscaled generators the checker recomputes.
+  struct With_provenance {};
+  Exact_kernel(const Scene& scene, Reading reading, const std::vector<Wrench>& extra, With_provenance);
+  static constexpr std::size_t kNoContact = static_cast<std::size_t>(-1);
   std::size_t size() const { return rows_.size(); }
   Sign cross_sign(std::size_t i, std::size_t j) const;          // zero iff parallel
   Sign det_sign(std::size_t i, std::size_t j, std::size_t k) const;
 
   // Row i: a positive integer multiple of wrench i (for tests).
   std::array<Integer, 3> row(std::size_t i) const;
+  // Row i in fixed width when its entries are at most 2^62 − 1 in magnitude (tiers 0 and 1).
+  bool small_row(std::size_t i, std::int64_t out[3]) const {
+    const Row& r = rows_[i];
+    if (r.tier == 2) return false;
+    out[0] = r.s[0], out[1] = r.s[1], out[2] = r.s[2];
+    return true;
+  }
+  // Provenance (only when built With_provenance): row i = (num/den) · W_i, num, den > 0.
+  bool has_provenance() const { return record_; }
+  std::size_t contact(std::size_t i) const { return prov_[i].contact; }
+  Edge edge(std::size_t i) const { return prov_[i].edge; }
+  void scale(std::size_t i, Integer& num, Integer& den) const;
 
  private:
   struct Row {
@@ -55,13 +74,30 @@ class Exact_kernel {
     std::uint8_t tier = 0;          // 0: |entries| < 2^40; 1: ≤ 2^62 − 1; 2: larger (big_ only)
     std::uint32_t big = 0;          // tier 2: index into big_
   };
-  void push_rational(const Rational in[3]);
+  // Where row i comes from: scale = f0·f1·f2 / divisor, or big_scale_[big] when big ≥ 0.
+  struct Provenance {
+    std::size_t contact = kNoContact;
+    Edge edge = Edge::wrench;
+    std::int64_t f[3] = {1, 1, 1};
+    wide::u128 divisor = 1;
+    std::int32_t big = -1;
+  };
+  void build(const Scene& scene, Reading reading, const std::vector<Wrench>& extra);
+  void push_rational(const Rational in[3], std::size_t contact);
   void push_big(std::array<Integer, 3> v);
   void load(std::size_t i, mpz_ptr out) const;
-  void push_int128(wide::i128 x, wide::i128 y, wide::i128 z);
+  wide::u128 push_int128(wide::i128 x, wide::i128 y, wide::i128 z);  // returns the divisor applied
+  void note(std::size_t contact, Edge edge, std::int64_t f0, std::int64_t f1, std::int64_t f2, wide::u128 divisor);
+  void note_big(std::size_t contact, Edge edge, Integer scale);
   std::vector<Row> rows_;
   std::vector<std::array<Integer, 3>> big_;
+  bool record_ = false;  // With_provenance
+  std::vector<Provenance> prov_;
+  std::vector<Integer> big_scale_;
 };
+
+// The number of generators of generators(scene, reading), without building them.
+std::size_t generator_count(const Scene& scene, Reading reading);
 
 // The primitive integer vector positively parallel to a nonzero rational 3-vector.
 void primitive(const Rational in[3], Integer out[3]);

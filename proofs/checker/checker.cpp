@@ -100,11 +100,32 @@ Q scene_number(std::string_view s, const Limits& lim, const std::string& path) {
     if (lim.max_exponent < 0 || e > static_cast<unsigned long long>(lim.max_exponent))
       throw Failure{at + "exponent " + (exp_negative ? "-" : "") + clip(exp.empty() ? "0" : std::string(exp)) +
                     " out of range (limit " + std::to_string(lim.max_exponent) + ")"};
-    const mpz_class mantissa(std::string(whole) + std::string(frac), 10);
-    if (mantissa == 0) return Q(0);
     // value = mantissa * 10^scale, |scale| <= max_exponent + max_digits
     const long long scale =
         (exp_negative ? -static_cast<long long>(e) : static_cast<long long>(e)) - static_cast<long long>(frac.size());
+    if (whole.size() + frac.size() <= 19 && scale >= -19 && scale <= 19) {
+      // Short decimals (what scenes mostly hold): mantissa and power of ten in 64 bits (10^19 < 2^64),
+      // lowest terms by a 64-bit gcd; the same value as below.
+      static_assert(sizeof(unsigned long) >= 8, "64-bit unsigned long (LP64)");
+      unsigned long m = 0, p10 = 1;
+      for (const char d : whole) m = m * 10 + static_cast<unsigned>(d - '0');
+      for (const char d : frac) m = m * 10 + static_cast<unsigned>(d - '0');
+      if (m == 0) return Q(0);
+      for (long long k = 0; k < (scale < 0 ? -scale : scale); ++k) p10 *= 10;
+      Q r;
+      if (scale >= 0) {
+        mpz_set_ui(mpq_numref(r.get_mpq_t()), m);
+        mpz_mul_ui(mpq_numref(r.get_mpq_t()), mpq_numref(r.get_mpq_t()), p10);
+      } else {
+        unsigned long a = m, b = p10;
+        while (b != 0) a %= b, std::swap(a, b);  // a = gcd(m, p10)
+        mpz_set_ui(mpq_numref(r.get_mpq_t()), m / a);
+        mpz_set_ui(mpq_denref(r.get_mpq_t()), p10 / a);
+      }
+      return negative ? Q(-r) : r;
+    }
+    const mpz_class mantissa(std::string(whole) + std::string(frac), 10);
+    if (mantissa == 0) return Q(0);
     mpz_class ten;
     mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(scale < 0 ? -scale : scale));
     q = scale < 0 ? Q(mantissa, ten) : Q(mpz_class(mantissa * ten));
@@ -187,10 +208,20 @@ void read_fixed(Reader& r, std::size_t n, const std::string& what, Item item) {
   if (k != n) r.fail("expected " + what);
 }
 
+// "an array of n numbers" (built once for the usual sizes: every contact asks).
+const std::string& numbers_text(std::size_t n) {
+  static const std::string two = "an array of 2 numbers", three = "an array of 3 numbers";
+  thread_local std::string other;
+  if (n == 2) return two;
+  if (n == 3) return three;
+  other = "an array of " + std::to_string(n) + " numbers";
+  return other;
+}
+
 // n numbers: their texts are appended to `text`, their values to `value`; true if all are zero.
 bool read_numbers(Reader& r, const Limits& lim, std::size_t n, std::vector<std::string>& text, std::vector<Q>& value) {
   bool zero = true;
-  read_fixed(r, n, "an array of " + std::to_string(n) + " numbers", [&](std::size_t) {
+  read_fixed(r, n, numbers_text(n), [&](std::size_t) {
     text.emplace_back();
     value.push_back(read_number(r, lim, &text.back()));
     zero = value.back() == 0 && zero;
@@ -214,17 +245,21 @@ Contact read_contact(Reader& r, const Limits& lim) {
   std::vector<Q> at_value, normal_value, wrench_value;
   std::string mu = "0", key;
   Q mu_value = 0;
-  std::set<std::string> keys;
+  enum : unsigned { kAt = 1, kNormal = 2, kMu = 4, kWrench = 8 };
+  unsigned keys = 0;  // the keys present (a bit set: cheaper than a set of strings, read per contact)
   while (r.next_key(key)) {
-    keys.insert(key);
     if (key == "at") {
+      keys |= kAt;
       read_numbers(r, lim, 2, at, at_value);
     } else if (key == "normal") {
+      keys |= kNormal;
       if (read_numbers(r, lim, 2, normal, normal_value)) r.fail("zero vector");
     } else if (key == "mu") {
+      keys |= kMu;
       mu_value = read_number(r, lim, &mu);
       if (mu_value < 0) r.fail(quote(mu) + " is negative");
     } else if (key == "wrench") {
+      keys |= kWrench;
       if (read_numbers(r, lim, 3, wrench, wrench_value)) r.fail("zero wrench");
     } else if (key == "name") {
       read_string(r);
@@ -232,21 +267,25 @@ Contact read_contact(Reader& r, const Limits& lim) {
       r.fail("unknown key " + quote(key), true);
     }
   }
-  const bool point = keys.count("at") || keys.count("normal") || keys.count("mu");
-  if (keys.count("wrench")) {
+  const bool point = keys & (kAt | kNormal | kMu);
+  if (keys & kWrench) {
     if (point) r.fail("a contact has either \"at\", \"normal\" and \"mu\" (a point contact) or \"wrench\", not both");
-    return {true, wrench, kept(wrench_value)};
+    return {true, std::move(wrench), kept(std::move(wrench_value))};
   }
-  if (!keys.count("at") && !keys.count("normal"))
+  if (!(keys & (kAt | kNormal)))
     r.fail("expected \"at\" and \"normal\" (a point contact) or \"wrench\"");
-  if (!keys.count("at")) r.fail("missing required key \"at\"");
-  if (!keys.count("normal")) r.fail("missing required key \"normal\"");
-  return {false, {at[0], at[1], normal[0], normal[1], mu}, kept({at_value[0], at_value[1], normal_value[0], normal_value[1], mu_value})};
+  if (!(keys & kAt)) r.fail("missing required key \"at\"");
+  if (!(keys & kNormal)) r.fail("missing required key \"normal\"");
+  std::vector<Q> values;
+  values.reserve(5);
+  for (Q* q : {&at_value[0], &at_value[1], &normal_value[0], &normal_value[1], &mu_value}) values.push_back(std::move(*q));
+  return {false, {std::move(at[0]), std::move(at[1]), std::move(normal[0]), std::move(normal[1]), std::move(mu)},
+          kept(std::move(values))};
 }
 
 // n numbers, read exactly into out[0..n).
 void read_vector(Reader& r, const Limits& lim, std::size_t n, Q* out) {
-  read_fixed(r, n, "an array of " + std::to_string(n) + " numbers",
+  read_fixed(r, n, numbers_text(n),
              [&](std::size_t k) { out[k] = read_number(r, lim); });
 }
 
@@ -383,13 +422,39 @@ Scene read_scene(Reader& r, const Limits& lim) {
 
 enum class Reading { friction, frictionless };  // of force_closure, of form_closure
 
-struct Generator {
-  const char* edge;
-  Wrench w;
+using Z = mpz_class;
+
+// A wrench in integers: (v[0], v[1], v[2]) / d with d > 0. A positive denominator changes neither the
+// sign of a power nor whether a determinant is zero, and a sum of such fractions is zero exactly when
+// the numerator over their product (or their common denominator) is: so the conditions of §3 are
+// checked on integers, with no gcd (mpq arithmetic reduces every intermediate result).
+struct Int_wrench {
+  Z v[3];
+  Z d = 1;
 };
 
-// W(p, f) = (fx, fy, px*fy - py*fx): the wrench of force f acting at point p.
-Wrench force_at(const Q& px, const Q& py, const Q& fx, const Q& fy) { return {fx, fy, px * fy - py * fx}; }
+// The rationals (a, b, c) as an Int_wrench over the product of their denominators.
+Int_wrench integer_form(const Q& a, const Q& b, const Q& c) {
+  const Z &da = a.get_den(), &db = b.get_den(), &dc = c.get_den();
+  return {{Z(a.get_num() * db * dc), Z(b.get_num() * da * dc), Z(c.get_num() * da * db)}, Z(da * db * dc)};
+}
+
+Q value(const Z& num, const Z& den) {  // num / den as a rational in lowest terms (for messages)
+  Q q(num, den);
+  q.canonicalize();
+  return q;
+}
+
+struct Generator {
+  const char* edge;
+  Int_wrench w;
+};
+
+// W(p, f) = (fx, fy, px*fy - py*fx): the wrench of force f acting at point p. With p = P / dp and
+// f = F / df (integers, dp, df > 0): W(p, f) = (dp*Fx, dp*Fy, Px*Fy - Py*Fx) / (dp*df).
+Int_wrench force_at(const Z (&P)[2], const Z& dp, const Z& Fx, const Z& Fy, const Z& df) {
+  return {{Z(dp * Fx), Z(dp * Fy), Z(P[0] * Fy - P[1] * Fx)}, Z(dp * df)};
+}
 
 // The generators of one contact under a reading, recomputed exactly from the scene text.
 std::vector<Generator> generators(const Contact& c, Reading reading, const Limits& lim) {
@@ -397,19 +462,36 @@ std::vector<Generator> generators(const Contact& c, Reading reading, const Limit
   if (c.value.empty())
     for (const std::string& s : c.text) read.push_back(scene_number(s, lim, "contacts"));  // valid: read before
   const std::vector<Q>& v = c.value.empty() ? read : c.value;
-  if (c.wrench) return {{"wrench", {v[0], v[1], v[2]}}};
+  if (c.wrench) return {{"wrench", integer_form(v[0], v[1], v[2])}};
   const Q &px = v[0], &py = v[1], &nx = v[2], &ny = v[3], &mu = v[4];
-  if (reading == Reading::frictionless || mu == 0) return {{"normal", force_at(px, py, nx, ny)}};
-  // n + mu*rot90(n) = (nx - mu*ny, ny + mu*nx),  n - mu*rot90(n) = (nx + mu*ny, ny - mu*nx)
-  return {{"left", force_at(px, py, nx - mu * ny, ny + mu * nx)},
-          {"right", force_at(px, py, nx + mu * ny, ny - mu * nx)}};
+  // p = P / dp, n = N / dn over the products of the coordinates' denominators.
+  const Z P[2] = {Z(px.get_num() * py.get_den()), Z(py.get_num() * px.get_den())}, dp = px.get_den() * py.get_den();
+  const Z N[2] = {Z(nx.get_num() * ny.get_den()), Z(ny.get_num() * nx.get_den())}, dn = nx.get_den() * ny.get_den();
+  if (reading == Reading::frictionless || mu == 0) return {{"normal", force_at(P, dp, N[0], N[1], dn)}};
+  // n + mu*rot90(n) = (nx - mu*ny, ny + mu*nx),  n - mu*rot90(n) = (nx + mu*ny, ny - mu*nx); with mu = a/b
+  // these are (b*N -+ a*rot90(N)) / (dn*b).
+  const Z &a = mu.get_num(), &b = mu.get_den();
+  const Z bN[2] = {Z(b * N[0]), Z(b * N[1])}, aN[2] = {Z(a * N[0]), Z(a * N[1])}, df = dn * b;
+  return {{"left", force_at(P, dp, Z(bN[0] - aN[1]), Z(bN[1] + aN[0]), df)},
+          {"right", force_at(P, dp, Z(bN[0] + aN[1]), Z(bN[1] - aN[0]), df)}};
 }
 
-// Power <t, w> = vx*fx + vy*fy + w*m (theory.md §1.4).
-Q power(const Q (&t)[3], const Wrench& g) { return t[0] * g.fx + t[1] * g.fy + t[2] * g.m; }
+// Power <T, w> = vx*fx + vy*fy + w*m (theory.md §1.4) of an integer twist against the numerator of w:
+// the power against w times w.d > 0.
+Z power(const Z (&t)[3], const Int_wrench& g) { return t[0] * g.v[0] + t[1] * g.v[1] + t[2] * g.v[2]; }
 
-Q det3(const Wrench& a, const Wrench& b, const Wrench& c) {
-  return a.fx * (b.fy * c.m - b.m * c.fy) - a.fy * (b.fx * c.m - b.m * c.fx) + a.m * (b.fx * c.fy - b.fy * c.fx);
+// det[a; b; c] of the numerators: the determinant of the wrenches times a.d * b.d * c.d > 0.
+Z det3(const Int_wrench& a, const Int_wrench& b, const Int_wrench& c) {
+  const Z(&x)[3] = a.v, (&y)[3] = b.v, (&z)[3] = c.v;
+  return x[0] * Z(y[1] * z[2] - y[2] * z[1]) - x[1] * Z(y[0] * z[2] - y[2] * z[0]) +
+         x[2] * Z(y[0] * z[1] - y[1] * z[0]);
+}
+
+// x + y: over the common denominator when the denominators are equal, else over their product.
+Int_wrench sum(const Int_wrench& x, const Int_wrench& y) {
+  if (x.d == y.d) return {{Z(x.v[0] + y.v[0]), Z(x.v[1] + y.v[1]), Z(x.v[2] + y.v[2])}, x.d};
+  return {{Z(x.v[0] * y.d + y.v[0] * x.d), Z(x.v[1] * y.d + y.v[1] * x.d), Z(x.v[2] * y.d + y.v[2] * x.d)},
+          Z(x.d * y.d)};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -451,11 +533,12 @@ Term read_term(Reader& r, bool weighted) {
     r.fail(weighted ? "expected an object {\"contact\", \"edge\", \"weight\"}"
                     : "expected an object {\"contact\", \"edge\"}");
   r.begin_object();
-  std::set<std::string> keys;
+  enum : unsigned { kContact = 1, kEdge = 2, kWeight = 4 };
+  unsigned keys = 0;  // the keys present
   std::string key;
   while (r.next_key(key)) {
-    keys.insert(key);
     if (key == "contact") {
+      keys |= kContact;
       if (r.peek() != Kind::number) r.fail("expected a contact index (a JSON integer)");
       t.ref.index = std::string(r.number());
       if (t.ref.index.find_first_not_of("0123456789") != std::string::npos)
@@ -466,16 +549,18 @@ Term read_term(Reader& r, bool weighted) {
         t.ref.contact = v < SIZE_MAX ? static_cast<std::size_t>(v) : SIZE_MAX;
       }
     } else if (key == "edge") {
+      keys |= kEdge;
       t.ref.edge = read_string(r);
     } else if (key == "weight" && weighted) {
+      keys |= kWeight;
       t.weight = read_rational(r, &t.weight_text);
     } else {
       r.fail("unknown key " + quote(key), true);
     }
   }
-  if (!keys.count("contact")) r.fail("missing required key \"contact\"");
-  if (!keys.count("edge")) r.fail("missing required key \"edge\"");
-  if (weighted && !keys.count("weight")) r.fail("missing required key \"weight\"");
+  if (!(keys & kContact)) r.fail("missing required key \"contact\"");
+  if (!(keys & kEdge)) r.fail("missing required key \"edge\"");
+  if (weighted && !(keys & kWeight)) r.fail("missing required key \"weight\"");
   return t;
 }
 
@@ -585,8 +670,8 @@ using Generator_cache = std::map<std::size_t, std::vector<Generator>>;
 
 // Rule 1 of §3.1: the reference names an existing contact and an edge that contact has under the
 // reading. Returns that generator, recomputed from the scene.
-Wrench resolve(const Ref& ref, const std::vector<Contact>& contacts, Reading reading, const Limits& lim,
-               Generator_cache& cache) {
+const Int_wrench& resolve(const Ref& ref, const std::vector<Contact>& contacts, Reading reading, const Limits& lim,
+                          Generator_cache& cache) {
   if (ref.contact >= contacts.size())
     throw Failure{ref.path + ".contact: index " + clip(ref.index) + " is out of range (the scene has " +
                   std::to_string(contacts.size()) + " contacts)"};
@@ -594,7 +679,7 @@ Wrench resolve(const Ref& ref, const std::vector<Contact>& contacts, Reading rea
   if (at == cache.end()) at = cache.emplace(ref.contact, generators(contacts[ref.contact], reading, lim)).first;
   std::string edges;
   for (const Generator& g : at->second) {
-    if (ref.edge == g.edge) return g.w;
+    if (ref.edge == g.edge) return g.w;  // stays valid: the cache's vectors are not modified again
     edges += (edges.empty() ? "" : " or ") + quote(g.edge);
   }
   throw Failure{ref.path + ".edge: contacts[" + std::to_string(ref.contact) + "] has no edge " + quote(ref.edge) +
@@ -620,32 +705,35 @@ void check_positive(const Certificate& c, const std::vector<Contact>& contacts, 
                     ")"};
   }
   // (1) every reference names a generator of the scene under the reading
-  std::vector<Wrench> sum, independent;  // sum: first the terms weight_k g_k, then w_ext if any
+  std::vector<Int_wrench> terms, independent;  // terms: first weight_k g_k, then w_ext if any
   Generator_cache cache;
   for (const Term& t : c.combination) {
-    const Wrench g = resolve(t.ref, contacts, c.reading, lim, cache);
-    sum.push_back({t.weight * g.fx, t.weight * g.fy, t.weight * g.m});
+    const Int_wrench& g = resolve(t.ref, contacts, c.reading, lim, cache);
+    // weight = a/b, b > 0 (a canonical mpq): weight * g = (a * g.v) / (b * g.d)
+    const Z& a = t.weight.get_num();
+    terms.push_back({{Z(a * g.v[0]), Z(a * g.v[1]), Z(a * g.v[2])}, Z(t.weight.get_den() * g.d)});
   }
   for (const Ref& ref : c.independent) independent.push_back(resolve(ref, contacts, c.reading, lim, cache));
   // (3) every weight is strictly positive
   for (const Term& t : c.combination)
     if (sgn(t.weight) <= 0)
       throw Failure{t.ref.path + ".weight: " + quote(t.weight_text) + " is not strictly positive"};
-  // (4) sum_k weight_k g_k (+ w_ext) = (0, 0, 0) exactly. Added as a balanced tree: with k weights of
-  // n digits whose denominators share no factor, that is about log k rounds of work on k n digits,
-  // where a running sum would take k rounds.
-  if (load) sum.push_back(*load);
-  while (sum.size() > 1) {
-    std::vector<Wrench> half;
-    for (std::size_t k = 0; k + 1 < sum.size(); k += 2)
-      half.push_back({sum[k].fx + sum[k + 1].fx, sum[k].fy + sum[k + 1].fy, sum[k].m + sum[k + 1].m});
-    if (sum.size() % 2 == 1) half.push_back(std::move(sum.back()));
-    sum.swap(half);
+  // (4) sum_k weight_k g_k (+ w_ext) = (0, 0, 0) exactly: the numerator of the sum over the product of
+  // the (positive) denominators is zero. Added as a balanced tree: with k weights of n digits whose
+  // denominators differ, that is about log k rounds of work on k n digits, where a running sum would
+  // take k rounds.
+  if (load) terms.push_back(integer_form(load->fx, load->fy, load->m));
+  while (terms.size() > 1) {
+    std::vector<Int_wrench> half;
+    for (std::size_t k = 0; k + 1 < terms.size(); k += 2) half.push_back(sum(terms[k], terms[k + 1]));
+    if (terms.size() % 2 == 1) half.push_back(std::move(terms.back()));
+    terms.swap(half);
   }
-  const Wrench& total = sum.front();  // not empty: combination is not, or there is a load
-  if (total.fx != 0 || total.fy != 0 || total.m != 0)
+  const Int_wrench& total = terms.front();  // not empty: combination is not, or there is a load
+  if (total.v[0] != 0 || total.v[1] != 0 || total.v[2] != 0)
     throw Failure{std::string("combination: the weighted sum of the generators ") + (load ? "plus the load " : "") +
-                  "is (" + show(total.fx) + ", " + show(total.fy) + ", " + show(total.m) + "), not (0, 0, 0)"};
+                  "is (" + show(value(total.v[0], total.d)) + ", " + show(value(total.v[1], total.d)) + ", " +
+                  show(value(total.v[2], total.d)) + "), not (0, 0, 0)"};
   if (load) return;
   // (5) the three independent generators are in combination, and their determinant is not zero
   for (const Ref& ref : c.independent)
@@ -667,15 +755,22 @@ void check_negative(const Certificate& c, const std::vector<Contact>& contacts, 
   // (2) <t, g> >= 0 for every generator g of the scene under the reading. The power is linear in t,
   // so its sign is that of <T, g> for T = L t, L > 0 the lcm of t's denominators: an integer twist,
   // which spares the big gcds of adding fractions when t has long denominators.
+  // With g = v / d (d > 0), the sign is that of <T, v>, all in integers: <t, g> = <T, v> / (L d).
   mpz_class L = 1;
   for (const Q& x : t) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), x.get_den_mpz_t());
-  const Q T[3] = {Q(t[0] * L), Q(t[1] * L), Q(t[2] * L)};
+  const Z T[3] = {Z(t[0].get_num() * (L / t[0].get_den())), Z(t[1].get_num() * (L / t[1].get_den())),
+                  Z(t[2].get_num() * (L / t[2].get_den()))};
   for (std::size_t i = 0; i < contacts.size(); ++i)
-    for (const Generator& g : generators(contacts[i], c.reading, lim))
-      if (sgn(power(T, g.w)) < 0) throw Failure{"twist: power " + show(power(t, g.w)) + " against " + name(i, g.edge)};
+    for (const Generator& g : generators(contacts[i], c.reading, lim)) {
+      const Z p = power(T, g.w);
+      if (sgn(p) < 0) throw Failure{"twist: power " + show(value(p, Z(L * g.w.d))) + " against " + name(i, g.edge)};
+    }
   // (2') equilibrium: <t, w_ext> > 0
-  if (load && sgn(power(T, *load)) <= 0)
-    throw Failure{"twist: power against the load is " + show(power(t, *load)) + ", not > 0"};
+  if (load) {
+    const Int_wrench w = integer_form(load->fx, load->fy, load->m);
+    const Z p = power(T, w);
+    if (sgn(p) <= 0) throw Failure{"twist: power against the load is " + show(value(p, Z(L * w.d))) + ", not > 0"};
+  }
   // (3) the reading, if present, is P(t) = (-vy, vx, w) on the two-sided plane
   if (!c.keys.count("reading")) return;
   const Q &vx = t[0], &vy = t[1], &w = t[2];
