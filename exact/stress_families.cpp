@@ -389,13 +389,15 @@ Family_scene exact_family(const Family& f, double eps, Rng& r) {
       const Integer p = t.get_num(), q = t.get_den();
       return Exact_contact{(1 - t * t) / d, 2 * t / d, Rational(p * p - q * q), Rational(-2 * p * q), m};
     };
-    // The other contacts at t = a/10^6 strictly between t1 = −j/1000 and t2.
+    // The other contacts at distinct t = a/10^6 strictly between t1 = −j/1000 and t2: one at a random
+    // place in each of n − 2 equal slots (no two coincide: coincident contacts would be an exact
+    // degeneracy of their own, which the twin rightly declines).
     const Rational t2_scaled = t2 * 1000000;
     const Integer floor_t2 = t2_scaled.get_num() / t2_scaled.get_den();  // t2 > 0: truncation is the floor
-    const long lo = -1000L * j + 1, hi = mpz_get_si(floor_t2.get_mpz_t()) - 1;
+    const long lo = -1000L * j + 1, hi = mpz_get_si(floor_t2.get_mpz_t()) - 1, slot = (hi - lo + 1) / (n - 2);
     cs.reserve(static_cast<std::size_t>(n));
     for (int i = 0; i < n - 2; ++i) {
-      const long a = lo + static_cast<long>(r.bits() % static_cast<std::uint64_t>(hi - lo + 1));
+      const long a = lo + i * slot + static_cast<long>(r.bits() % static_cast<std::uint64_t>(slot));
       cs.push_back(at(Rational(a, 1000000), mu_small));
     }
     const std::size_t i1 = static_cast<std::size_t>(r.integer(0, n - 2));
