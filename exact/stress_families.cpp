@@ -270,7 +270,9 @@ std::string exact_text(const Rational& q) {
     return sign + digits[0] + (n > 1 ? "." + digits.substr(1) : std::string()) + "e" + std::to_string(exponent);
   if (shift >= 0) return sign + digits + std::string(static_cast<std::size_t>(shift), '0');
   const int point = n + shift;  // digits before the decimal point
-  if (point > 0) return sign + digits.substr(0, static_cast<std::size_t>(point)) + "." + digits.substr(static_cast<std::size_t>(point));
+  if (point > 0)
+    return sign + digits.substr(0, static_cast<std::size_t>(point)) + "." +
+           digits.substr(static_cast<std::size_t>(point));
   return sign + "0." + std::string(static_cast<std::size_t>(-point), '0') + digits;
 }
 
@@ -289,7 +291,8 @@ std::string exact_scene_text(const std::vector<Exact_contact>& cs, std::vector<C
                       mu = exact_text(c.mu);
     s += (i ? ", " : "") + std::string("{\"at\": [") + ax + ", " + ay + "], \"normal\": [" + nx + ", " + ny +
          "], \"mu\": " + mu + "}";
-    if (naive) naive->push_back({naive_double(ax), naive_double(ay), naive_double(nx), naive_double(ny), naive_double(mu), ""});
+    if (naive)
+      naive->push_back({naive_double(ax), naive_double(ay), naive_double(nx), naive_double(ny), naive_double(mu), ""});
   }
   return s + "]}";
 }
@@ -352,7 +355,8 @@ Family_scene exact_family(const Family& f, double eps, Rng& r) {
   if (name == "long_rational") {
     // A and B anywhere with 30-digit fractions; slope δ/w: force closure ⇔ μ > |δ|/w.
     const Rational xa = long_fraction(r, -5, 5, 30), ya = long_fraction(r, -5, 5, 30);
-    const Rational w = long_fraction(r, Rational(1, 2), 2, 30), delta = long_fraction(r, Rational(1, 20), Rational(3, 2), 30);
+    const Rational w = long_fraction(r, Rational(1, 2), 2, 30),
+                   delta = long_fraction(r, Rational(1, 20), Rational(3, 2), 30);
     const Rational dy = r.coin() ? delta : Rational(-delta), mu = nudged(delta / w, k, out.above);
     cs = {{xa, ya, 1, 0, mu}, {xa + w, ya + dy, -1, 0, mu}};
     if (r.coin()) transform(cs, {0, 1}, 0, 0, 1);  // a quarter turn: normals along ±y

@@ -6,7 +6,7 @@
 // random scenes (generic decimal text; degenerate-rich integer grids), each written as scene JSON text
 // as a user would write it.
 //
-// One API for every user (fuzz/stress_closure, `wrenchkit reference`, bench/): family name, ε, seed →
+// One API for every user (fuzz/stress_report, `wrenchkit reference`, bench/): family name, ε, seed →
 // scene text + the distance parameter, plus the doubles the text was printed from (for "naive"
 // variants that parse the same text with strtod). Deterministic on every platform: mt19937_64 (fully
 // specified by the C++ standard), uniform doubles built from its bits, and only +, −, ×, ÷ on doubles
@@ -21,8 +21,9 @@
 //   every scene;
 // * exact (`known` below: ladder_equilibrium and every family added with it in issue 6): the scene is
 //   built in exact rational arithmetic (GMP integers; exact, hence the same on every platform) from
-//   ε' = 10^-k, the power of ten nearest ε from below, and written exactly (decimals when the
-//   denominator is 2^a·5^b, else "p/q" strings), so the answer is known by construction for every ε:
+//   ε' = 10^-k, a power of ten within a factor 5 of ε (ε itself when ε = 10^-k), and written exactly
+//   (decimals when the denominator is 2^a·5^b, else "p/q" strings), so the answer is known by
+//   construction for every ε:
 //   closure holds (the load is balanced, the load slides) iff `above`. The doubles handed to naive
 //   variants are what naive code reads from that text (strtod, and p/q as strtod(p)/strtod(q)).
 // The header needs the standard library only.

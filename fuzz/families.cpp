@@ -114,7 +114,9 @@ Case make_case(const Family& f, double eps, std::uint64_t seed) {
   return make_case(f, eps, rng);
 }
 
-std::vector<fl::Bounded3> naive_generators(const Case& c) { return naive_generators(c.contacts, reading_of(c.question)); }
+std::vector<fl::Bounded3> naive_generators(const Case& c) {
+  return naive_generators(c.contacts, c.question == Question::form_closure ? Reading::frictionless : Reading::friction);
+}
 
 bool naive_verdict(const Case& c) {
   if (c.question != Question::equilibrium) {
@@ -146,7 +148,8 @@ Verdict decide_motion(const Case& c, const Scene& scene, Mode mode, int sides) {
 namespace {
 
 // f(q)/|q|∞ = (h(q) − q·p)/|q|∞ in plain doubles, h(q) = Σ ρ_i |v_i(q)|, v_i = (v_x − ω y_i, v_y + ω x_i).
-double naive_gap(const std::vector<stress::Support_spec>& s, const std::array<double, 3>& p, const std::array<double, 3>& q) {
+double naive_gap(const std::vector<stress::Support_spec>& s, const std::array<double, 3>& p,
+                 const std::array<double, 3>& q) {
   double h = 0;
   for (const stress::Support_spec& x : s) {
     const double vx = q[0] - q[2] * x.y, vy = q[1] + q[2] * x.x;

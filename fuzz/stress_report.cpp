@@ -46,7 +46,9 @@ constexpr int kSides = 16;  // polygonal bounds of the exact stick/slide route (
 
 // What a row measures: the family's verdict (closure / equilibrium), its moment labels, or stick/slide.
 enum class Check { verdict, labels, motion };
-const char* check_name(Check c) { return c == Check::verdict ? "verdict" : c == Check::labels ? "labels" : "stick/slide"; }
+const char* check_name(Check c) {
+  return c == Check::verdict ? "verdict" : c == Check::labels ? "labels" : "stick/slide";
+}
 
 struct Row {
   std::string family;
@@ -58,7 +60,8 @@ struct Row {
   void add(const Row& o) {
     cases += o.cases, naive_wrong += o.naive_wrong, twin_undecided += o.twin_undecided, twin_wrong += o.twin_wrong;
     hybrid_undecided += o.hybrid_undecided, hybrid_wrong += o.hybrid_wrong, exact_undecided += o.exact_undecided;
-    exact_wrong += o.exact_wrong, t_naive += o.t_naive, t_twin += o.t_twin, t_hybrid += o.t_hybrid, t_exact += o.t_exact;
+    exact_wrong += o.exact_wrong, t_naive += o.t_naive, t_twin += o.t_twin, t_hybrid += o.t_hybrid,
+        t_exact += o.t_exact;
   }
   long certified_wrong() const { return twin_wrong + hybrid_wrong + exact_wrong; }
 };
@@ -103,8 +106,8 @@ bool certificate_proves(const Scene& scene, const std::string& text, Question q,
     if (a.balanced != holds) return false;
     cert = certificate_json(a.certificate);
   } else {
-    const Closure_answer a =
-        decide_closure(scene, q == Question::force_closure ? Property::force_closure : Property::form_closure, Mode::exact);
+    const Closure_answer a = decide_closure(
+        scene, q == Question::force_closure ? Property::force_closure : Property::form_closure, Mode::exact);
     if (a.holds != holds) return false;
     cert = certificate_json(a.certificate);
   }
@@ -143,7 +146,8 @@ void run_contact_case(const families::Case& k, std::uint64_t seed, long index, R
   const Moment_labels lh = timed(labels.t_hybrid, [&] { return moment_labels(scene, reading, Mode::hybrid); });
   const fl::Labels_twin lt =
       timed(labels.t_twin, [&] { return fl::moment_labels(fl::generators(to_bounded(scene), reading)); });
-  const fl::Labels_twin ln = timed(labels.t_naive, [&] { return fl::moment_labels_naive(families::naive_generators(k)); });
+  const fl::Labels_twin ln =
+      timed(labels.t_naive, [&] { return fl::moment_labels_naive(families::naive_generators(k)); });
   ++labels.cases;
   labels.naive_wrong += !ln.decided() || families::labels_signature(ln) != families::labels_signature(le);
   labels.twin_undecided += !lt.decided();
@@ -160,7 +164,8 @@ void run_contact_case(const families::Case& k, std::uint64_t seed, long index, R
   } else {
     exact_ok = le.nothing_labeled() == truth;
   }
-  if (!exact_ok || fault("exact")) ++labels.exact_wrong, report_wrong("labels exact", k, seed, index, "labels contradict the truth");
+  if (!exact_ok || fault("exact"))
+    ++labels.exact_wrong, report_wrong("labels exact", k, seed, index, "labels contradict the truth");
 }
 
 // One stick/slide case.
@@ -168,8 +173,10 @@ void run_motion_case(const families::Case& k, std::uint64_t seed, long index, Ro
   const Scene scene = read_scene(k.text, Input_limits{});
   const bool truth = k.expected;
   families::Verdict exact = timed(row.t_exact, [&] { return families::decide_motion(k, scene, Mode::exact, kSides); });
-  families::Verdict twin = timed(row.t_twin, [&] { return families::decide_motion(k, scene, Mode::float_only, kSides); });
-  families::Verdict hybrid = timed(row.t_hybrid, [&] { return families::decide_motion(k, scene, Mode::hybrid, kSides); });
+  families::Verdict twin =
+      timed(row.t_twin, [&] { return families::decide_motion(k, scene, Mode::float_only, kSides); });
+  families::Verdict hybrid =
+      timed(row.t_hybrid, [&] { return families::decide_motion(k, scene, Mode::hybrid, kSides); });
   const bool naive = timed(row.t_naive, [&] { return families::naive_slides(k); });
   if (twin.decided && fault("twin")) twin.holds = !twin.holds;
   if (hybrid.decided && fault("hybrid")) hybrid.holds = !hybrid.holds;
@@ -180,7 +187,8 @@ void run_motion_case(const families::Case& k, std::uint64_t seed, long index, Ro
   row.hybrid_undecided += !hybrid.decided;
   row.exact_undecided += !exact.decided;
   if (twin.decided && twin.holds != truth) ++row.twin_wrong, report_wrong("stick/slide twin", k, seed, index, "");
-  if (hybrid.decided && hybrid.holds != truth) ++row.hybrid_wrong, report_wrong("stick/slide hybrid", k, seed, index, "");
+  if (hybrid.decided && hybrid.holds != truth)
+    ++row.hybrid_wrong, report_wrong("stick/slide hybrid", k, seed, index, "");
   if (exact.decided && exact.holds != truth) ++row.exact_wrong, report_wrong("stick/slide exact", k, seed, index, "");
 }
 
@@ -245,7 +253,8 @@ void write_svg(const std::vector<Row>& rows, const std::vector<std::pair<std::st
     for (int pc : {0, 50, 100}) {
       const double y = y0 + h - h * pc / 100.0;
       s << "<text x='" << x0 - 4 << "' y='" << y + 3 << "' text-anchor='end'>" << pc << "%</text>\n";
-      if (pc == 50) s << "<line x1='" << x0 << "' x2='" << x0 + w << "' y1='" << y << "' y2='" << y << "' stroke='#ddd'/>\n";
+      if (pc == 50)
+        s << "<line x1='" << x0 << "' x2='" << x0 + w << "' y1='" << y << "' y2='" << y << "' stroke='#ddd'/>\n";
     }
     const auto X = [&](std::size_t i) { return x0 + w * (double(i) + 0.5) / double(kEpsilons.size()); };
     for (std::size_t i = 0; i < kEpsilons.size(); ++i) {
@@ -268,12 +277,14 @@ void write_svg(const std::vector<Row>& rows, const std::vector<std::pair<std::st
   }
   int x = 10;
   const int y = nrows * ph + 20;
-  s << "<text x='" << x << "' y='" << y << "'>rate of cases against ε (distance to the degenerate configuration; ε axis by "
+  s << "<text x='" << x << "' y='" << y
+    << "'>rate of cases against ε (distance to the degenerate configuration; ε axis by "
     << "category, not to scale):</text>\n";
   for (const Series& se : series) {
     s << "<line x1='" << x << "' x2='" << x + 24 << "' y1='" << y + 18 << "' y2='" << y + 18 << "' stroke='" << se.color
-      << "' stroke-width='" << se.width << "'" << (*se.dash ? std::string(" stroke-dasharray='") + se.dash + "'" : std::string())
-      << "/><text x='" << x + 28 << "' y='" << y + 21 << "'>" << se.label << "</text>\n";
+      << "' stroke-width='" << se.width << "'"
+      << (*se.dash ? std::string(" stroke-dasharray='") + se.dash + "'" : std::string()) << "/><text x='" << x + 28
+      << "' y='" << y + 21 << "'>" << se.label << "</text>\n";
     x += 40 + 6 * int(std::string(se.label).size());
   }
   s << "</svg>\n";
@@ -301,15 +312,17 @@ std::string campaign_section(const std::string& md) {
 }
 
 std::string table_header() {
-  return "| ε | cases | naive wrong | twin undecided | twin wrong | hybrid undecided | hybrid wrong | exact undecided | "
-         "exact wrong | naive µs | twin µs | hybrid µs | exact µs |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  return "| ε | cases | naive wrong | twin undecided | twin wrong | hybrid undecided | hybrid wrong | exact undecided "
+         "| "
+         "exact wrong | naive µs | twin µs | hybrid µs | exact µs "
+         "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 }
 std::string table_row(const Row& r, const std::string& first) {
   return "| " + first + " | " + std::to_string(r.cases) + " | " + pct(r.naive_wrong, r.cases) + " | " +
-         pct(r.twin_undecided, r.cases) + " | " + std::to_string(r.twin_wrong) + " | " + pct(r.hybrid_undecided, r.cases) +
-         " | " + std::to_string(r.hybrid_wrong) + " | " + pct(r.exact_undecided, r.cases) + " | " +
-         std::to_string(r.exact_wrong) + " | " + us(r.t_naive, r.cases) + " | " + us(r.t_twin, r.cases) + " | " +
-         us(r.t_hybrid, r.cases) + " | " + us(r.t_exact, r.cases) + " |\n";
+         pct(r.twin_undecided, r.cases) + " | " + std::to_string(r.twin_wrong) + " | " +
+         pct(r.hybrid_undecided, r.cases) + " | " + std::to_string(r.hybrid_wrong) + " | " +
+         pct(r.exact_undecided, r.cases) + " | " + std::to_string(r.exact_wrong) + " | " + us(r.t_naive, r.cases) +
+         " | " + us(r.t_twin, r.cases) + " | " + us(r.t_hybrid, r.cases) + " | " + us(r.t_exact, r.cases) + " |\n";
 }
 
 const char* cross_check(const Family& f, Check c) {
@@ -347,7 +360,8 @@ std::vector<Check> checks_of(const Family& f) {
 
 std::string totals_table(const std::vector<Row>& rows, const std::vector<Family>& fams) {
   std::string s =
-      "| family | question | cases | naive wrong | twin undecided | twin wrong | hybrid undecided | hybrid wrong | exact "
+      "| family | question | cases | naive wrong | twin undecided | twin wrong | hybrid undecided | hybrid wrong | "
+      "exact "
       "undecided | exact wrong |\n|---|---|---|---|---|---|---|---|---|---|\n";
   Row all;
   for (const Family& f : fams)
@@ -355,9 +369,10 @@ std::string totals_table(const std::vector<Row>& rows, const std::vector<Family>
       const Row t = summarize(rows, f.name, c).total;
       all.add(t);
       s += "| " + std::string(f.name) + " | " + check_name(c) + " | " + std::to_string(t.cases) + " | " +
-           std::to_string(t.naive_wrong) + " | " + std::to_string(t.twin_undecided) + " | " + std::to_string(t.twin_wrong) +
-           " | " + std::to_string(t.hybrid_undecided) + " | " + std::to_string(t.hybrid_wrong) + " | " +
-           std::to_string(t.exact_undecided) + " | " + std::to_string(t.exact_wrong) + " |\n";
+           std::to_string(t.naive_wrong) + " | " + std::to_string(t.twin_undecided) + " | " +
+           std::to_string(t.twin_wrong) + " | " + std::to_string(t.hybrid_undecided) + " | " +
+           std::to_string(t.hybrid_wrong) + " | " + std::to_string(t.exact_undecided) + " | " +
+           std::to_string(t.exact_wrong) + " |\n";
     }
   s += "| **all** | | **" + std::to_string(all.cases) + "** | " + std::to_string(all.naive_wrong) + " | " +
        std::to_string(all.twin_undecided) + " | **" + std::to_string(all.twin_wrong) + "** | " +
@@ -419,18 +434,23 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
   md << "\n![error rates against ε, family by family](stability.svg)\n\n"
      << "## Why the exact answers are known\n\n"
      << "* Two fingers with normals ±x at A and B: force closure ⇔ the segment AB lies strictly inside both friction\n"
-     << "  cones ⇔ |slope of AB| < μ (Nguyen). The exact families write μ = μ*·(10^k ± 1)/10^k exactly (10^-k the power\n"
-     << "  of ten nearest ε from below), so closure ⇔ *above*, for every ε. Rotations by rationals on the unit circle,\n"
+     << "  cones ⇔ |slope of AB| < μ (Nguyen). The exact families write μ = μ*·(10^k ± 1)/10^k exactly (10^-k the "
+        "power\n"
+     << "  of ten nearest ε from below), so closure ⇔ *above*, for every ε. Rotations by rationals on the unit "
+        "circle,\n"
      << "  translations and positive scalings map the wrench cone linearly onto itself (exactly), so the\n"
      << "  untransformed scene has the same answer: a second exact route.\n"
-     << "* many_contacts: contacts at u(t) = ((1 − t²), 2t)/(1 + t²) on an arc t1 < t < t2 with inward normals, the ends\n"
+     << "* many_contacts: contacts at u(t) = ((1 − t²), 2t)/(1 + t²) on an arc t1 < t < t2 with inward normals, the "
+        "ends\n"
      << "  with μ, the others with μ_small < μ. Every contact's force directions lie in the arc of directions between\n"
      << "  the ends' outer friction edges, of width π − δ + 2·atan μ with δ = π − (θ2 − θ1). If μ > tan(δ/2) the two\n"
-     << "  ends alone close (the chord makes the angle δ/2 with both inward normals); if μ < tan(δ/2) all forces lie in\n"
+     << "  ends alone close (the chord makes the angle δ/2 with both inward normals); if μ < tan(δ/2) all forces lie "
+        "in\n"
      << "  an open half-plane and nothing closes. tan(δ/2) = cot(atan t2 − atan t1) = (1 + t1·t2)/(t2 − t1) = μ*.\n"
      << "* collinear_support: for the rotation q about c (not a support point) the limit surface is smooth at q and\n"
      << "  p(q) = ∇h(q) = Σ ρ_i (v̂_i, r_i × v̂_i) lies on it (q·p(q) = h(q)); the points are at rational distances\n"
-     << "  from c, so p(q) is rational. LS is convex with 0 in its interior (two distinct points), so p(q)·(1 − 10^-k)\n"
+     << "  from c, so p(q) is rational. LS is convex with 0 in its interior (two distinct points), so p(q)·(1 − "
+        "10^-k)\n"
      << "  sticks and p(q)·(1 + 10^-k) slides (q·p > h(q)).\n"
      << "* Labels: nothing is labeled ⇔ force closure (theory.md §5.5), and a load is balanced ⇔ −w ∈ W, read on the\n"
      << "  exact labels' cone; both are compared with the (cross-checked) truth of the verdict.\n\n"

@@ -124,7 +124,8 @@ TEST(StressFamilies, NominalFamiliesFollowTheirSideWhereEpsilonSurvivesRounding)
     std::set<bool> verdicts;
     for (std::uint64_t seed = 1; seed <= 30; ++seed) {
       const auto s = stress::make_scene(f.name, 1e-6, seed);
-      const Property p = f.question == stress::Question::form_closure ? Property::form_closure : Property::force_closure;
+      const Property p =
+          f.question == stress::Question::form_closure ? Property::form_closure : Property::force_closure;
       const bool holds = closure(s.text, p);
       verdicts.insert(holds);
       if (is(f, {"nearly_parallel"})) {
@@ -148,7 +149,8 @@ TEST(StressFamilies, ExactTwoFingerFamiliesWriteMuAtExactlyTenToMinusKFromTheThr
         ASSERT_EQ(sc.contacts.size(), 2u);
         const Contact &a = sc.contacts[0], &b = sc.contacts[1];
         const Rational dx = b.at.x - a.at.x, dy = b.at.y - a.at.y;
-        const Rational cross = abs(Rational(dx * a.normal.y - dy * a.normal.x)), dot = dx * a.normal.x + dy * a.normal.y;
+        const Rational cross = abs(Rational(dx * a.normal.y - dy * a.normal.x)),
+                       dot = dx * a.normal.x + dy * a.normal.y;
         ASSERT_GT(dot, 0) << s.text;
         const Rational mu_star = cross / dot;
         Integer p;
