@@ -21,9 +21,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
-#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -92,10 +92,16 @@ long cases_for(const Family& f, long cases) {
   return cases;
 }
 
+// A wrong certified answer: say so with the seed, and dump the scene to failures/ (and, when short, to stderr).
 void report_wrong(const char* what, const families::Case& k, std::uint64_t seed, long index, const std::string& why) {
-  std::fprintf(stderr, "WRONG certified answer (%s): family %s eps %g seed %llu case %ld%s%s\n%s\n", what,
+  std::error_code ec;
+  std::filesystem::create_directories("failures", ec);
+  const std::string file = "failures/stress_" + k.family + "_" + std::to_string(k.eps) + "_" + std::to_string(index) +
+                           ".scene.json";
+  std::ofstream(file, std::ios::binary) << k.text << "\n";
+  std::fprintf(stderr, "WRONG certified answer (%s): family %s eps %g seed %llu case %ld%s%s; scene in %s\n%s\n", what,
                k.family.c_str(), k.eps, static_cast<unsigned long long>(seed), index, why.empty() ? "" : ": ",
-               why.c_str(), k.text.size() < 20000 ? k.text.c_str() : "(scene text longer than 20000 bytes)");
+               why.c_str(), file.c_str(), k.text.size() < 20000 ? k.text.c_str() : "");
 }
 
 // The exact verdict's certificate, accepted by the independent checker, proves it (a second exact route).
