@@ -91,7 +91,7 @@ case "${1:-}" in
   stability)
     install_packages
     build
-    "${BUILD_DIR:-build}/fuzz/stress_closure" --cases 400 --report docs > /dev/null
+    "${BUILD_DIR:-build}/fuzz/stress_report" --cases 1000 --report docs > /dev/null
     echo "build.sh: wrote docs/stability.md and docs/stability.svg"
     ;;
   gallery)

@@ -6,7 +6,9 @@
 
 #include "core/dual_cone.h"
 #include "exact/equilibrium.h"
+#include "exact/sliding.h"
 #include "float/float_kernel.h"
+#include "float/limit_surface_twin.h"
 
 namespace wrenchkit::families {
 
@@ -16,9 +18,12 @@ const char* question_name(Question q) {
     case Question::form_closure: return "form_closure";
     case Question::equilibrium: return "equilibrium";
     case Question::all: return "all";
+    case Question::stick_slide: return "stick_slide";
   }
   return "?";
 }
+
+Reading reading_of(Question q) { return q == Question::form_closure ? Reading::frictionless : Reading::friction; }
 
 namespace {
 
@@ -42,15 +47,27 @@ std::vector<fl::Bounded3> naive_generators(const std::vector<Spec>& cs, Reading 
 const std::vector<Family>& all() {
   static const std::vector<Family> f = [] {
     std::vector<Family> out;
+    for (const char* name : {"friction_threshold", "cone_edge", "nearly_concurrent", "nearly_parallel", "huge_offset",
+                             "ladder_equilibrium"})
+      out.push_back(*stress::find_family(name));
+    return out;
+  }();
+  return f;
+}
+
+const std::vector<Family>& report() {
+  static const std::vector<Family> f = [] {
+    std::vector<Family> out;
     for (const Family& x : stress::families())
       if (x.uses_epsilon) out.push_back(x);
+    for (const Family& x : stress::report_only_families()) out.push_back(x);
     return out;
   }();
   return f;
 }
 
 const Family* find(std::string_view name) {
-  for (const Family& f : all())
+  for (const Family& f : report())
     if (name == f.name) return &f;
   return nullptr;
 }
@@ -74,7 +91,21 @@ Case make_case(const Family& f, double eps, stress::Rng& rng) {
   c.contacts = std::move(fs.contacts);
   c.load = fs.gravity;
   c.text = std::move(fs.text);
-  c.expected = decide(read_scene(c.text, Input_limits{}), f.question, Mode::exact).holds;
+  c.known = fs.known;
+  c.above = fs.above;
+  c.untransformed = std::move(fs.untransformed);
+  c.support = std::move(fs.support);
+  if (f.question == Question::stick_slide) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      std::string why;
+      const std::string& t = fs.load_text[i];
+      const bool quoted = t.size() >= 2 && t.front() == '"';
+      c.motion_load[i] = *parse_rational(quoted ? std::string_view(t).substr(1, t.size() - 2) : std::string_view(t),
+                                         !quoted, Input_limits{}, why);
+    }
+    c.motion_load_naive = fs.load;
+  }
+  c.expected = c.known ? c.above : decide(read_scene(c.text, Input_limits{}), f.question, Mode::exact).holds;
   return c;
 }
 
@@ -89,8 +120,7 @@ std::vector<fl::Bounded3> naive_generators(const Case& c) {
 
 bool naive_verdict(const Case& c) {
   if (c.question != Question::equilibrium) {
-    const Reading reading = c.question == Question::force_closure ? Reading::friction : Reading::frictionless;
-    const fl::Naive_kernel k(naive_generators(c.contacts, reading));
+    const fl::Naive_kernel k(naive_generators(c.contacts, reading_of(c.question)));
     return compute_dual_cone(k).force_closure();
   }
   std::vector<fl::Bounded3> rows = naive_generators(c.contacts, Reading::friction);
@@ -101,6 +131,91 @@ bool naive_verdict(const Case& c) {
   const Dual_cone dc = compute_dual_cone(First_rows<fl::Naive_kernel>{k, n});
   if (dc.rank < 3) return false;  // naive code would not special-case it either; counts as a guess
   return load_balanced(k, dc, n) == Sign::positive;
+}
+
+Verdict decide_motion(const Case& c, const Scene& scene, Mode mode, int sides) {
+  if (mode == Mode::float_only) {
+    const fl::Motion_answer a = fl::classify_load(
+        twin_support(merge_support(*scene.support)),
+        {to_bounded(c.motion_load[0]), to_bounded(c.motion_load[1]), to_bounded(c.motion_load[2])});
+    return {a.motion != fl::Motion_twin::undecided, a.motion == fl::Motion_twin::slides};
+  }
+  const Polygonal_ls model(merge_support(*scene.support), make_directions(sides));
+  const Motion_decision d = wrenchkit::decide_motion(model, c.motion_load, mode);
+  return {d.motion != Motion::undecided, d.motion == Motion::slides};
+}
+
+namespace {
+
+// f(q)/|q|∞ = (h(q) − q·p)/|q|∞ in plain doubles, h(q) = Σ ρ_i |v_i(q)|, v_i = (v_x − ω y_i, v_y + ω x_i).
+double naive_gap(const std::vector<stress::Support_spec>& s, const std::array<double, 3>& p,
+                 const std::array<double, 3>& q) {
+  double h = 0;
+  for (const stress::Support_spec& x : s) {
+    const double vx = q[0] - q[2] * x.y, vy = q[1] + q[2] * x.x;
+    h += x.mu * x.force * std::sqrt(vx * vx + vy * vy);
+  }
+  const double norm = std::fmax(std::fabs(q[0]), std::fmax(std::fabs(q[1]), std::fabs(q[2])));
+  return (h - (q[0] * p[0] + q[1] * p[1] + q[2] * p[2])) / norm;
+}
+
+}  // namespace
+
+bool naive_slides(const Case& c) {
+  const std::array<double, 3>& p = c.motion_load_naive;
+  std::array<double, 3> best{0, 0, 1};
+  double f_best = naive_gap(c.support, p, best);
+  const int n = 8;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = -1; side <= 1; side += 2)
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          std::array<double, 3> q;
+          q[static_cast<std::size_t>(axis)] = side;
+          q[static_cast<std::size_t>((axis + 1) % 3)] = -1 + (2 * i + 1) / double(n);
+          q[static_cast<std::size_t>((axis + 2) % 3)] = -1 + (2 * j + 1) / double(n);
+          const double f = naive_gap(c.support, p, q);
+          if (f < f_best) f_best = f, best = q;
+        }
+  // Compass search: try ±step along each coordinate, keep any improvement (back on the cube's surface),
+  // halve the step otherwise.
+  int moves = 0;
+  for (double step = 1.0 / n; step > 0x1p-60 && f_best > 0 && moves < 100000; ++moves) {
+    bool improved = false;
+    for (std::size_t k = 0; k < 3 && !improved; ++k)
+      for (double sgn : {1.0, -1.0}) {
+        std::array<double, 3> q = best;
+        q[k] += sgn * step;
+        const double f = naive_gap(c.support, p, q);
+        if (f < f_best) {
+          const double norm = std::fmax(std::fabs(q[0]), std::fmax(std::fabs(q[1]), std::fabs(q[2])));
+          for (double& x : q) x /= norm;
+          f_best = f, best = q, improved = true;
+          break;
+        }
+      }
+    if (!improved) step /= 2;
+  }
+  return f_best <= 0;
+}
+
+std::string labels_signature(const Moment_labels& l) {
+  auto region = [](const Region& r) {
+    return std::string(shape_name(r.shape)) + "/" + std::to_string(r.vertices.size()) + "/" +
+           std::to_string(r.directions.size());
+  };
+  return region(l.plus) + " " + region(l.minus) + " both" + std::to_string(int(l.both.kind)) + " " +
+         shape_name(l.infinity.shape) + "/" + std::to_string(l.infinity.extreme.size());
+}
+
+std::string labels_signature(const fl::Labels_twin& l) {
+  auto region = [](const fl::Region2& r) {
+    return std::string(fl::shape_name(r.shape)) + "/" + std::to_string(r.vertices.size()) + "/" +
+           std::to_string(r.directions.size());
+  };
+  const Cone2::Shape inf[] = {Cone2::Shape::zero, Cone2::Shape::ray, Cone2::Shape::wedge, Cone2::Shape::plane};
+  return region(l.plus) + " " + region(l.minus) + " both0 " + shape_name(inf[int(l.infinity.shape)]) + "/" +
+         std::to_string(l.infinity.extreme.size());
 }
 
 std::string random_grasp_text(int contacts, stress::Rng& rng) {

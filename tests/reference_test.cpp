@@ -39,6 +39,18 @@ TEST(StressFamilies, SameSeedSameBytesAndPinnedText) {
             "[0.21175149048427691, 0.97732354227128249], \"mu\": 0.36430443649765815}, {\"at\": "
             "[1.8884984244502627, -2.4769318687360808], \"normal\": [-0.21175149048427691, -0.97732354227128249], "
             "\"mu\": 0.36430443649765815}]}");
+  // The exact families appended to the corpus in issue 6 (GMP integers only: exact, so the same everywhere).
+  EXPECT_EQ(stress::make_scene("long_rational", 1e-10, 42).text,
+            "{\"wrenchkit\": 1, \"contacts\": [{\"at\": [\"683774450943818934271954891710/465431517333929022340208053667\", "
+            "\"1345537714096194554039044117390/642205966322489390039894669079\"], \"normal\": [1, 0], \"mu\": "
+            "\"11272979047081908381315339619060217783591587811548060196316734258444487/"
+            "12571795519728468074970135291423762500419164364255678118192000000000000\"}, {\"at\": "
+            "[\"198753392938101378633975079921988979929756021025096691848394/"
+            "76612350348983619176153852936039378020772016094926104659827\", "
+            "\"13531669277987668146647132134317089036921473026963465719304367/"
+            "4359298518379708873586840361935168326109687584227227033528400\"], \"normal\": [-1, 0], \"mu\": "
+            "\"11272979047081908381315339619060217783591587811548060196316734258444487/"
+            "12571795519728468074970135291423762500419164364255678118192000000000000\"}]}");
   EXPECT_EQ(stress::make_scene("ladder_equilibrium", 1e-6, 1).text.find("\"mu\": \"999999/7000000\"") !=
                 std::string::npos ||
             stress::make_scene("ladder_equilibrium", 1e-6, 1).text.find("\"mu\": \"1000001/7000000\"") !=
@@ -190,7 +202,7 @@ TEST_F(Corpus, HoldsEveryKindOfScene) {
     with_support += v.find("limit_surface") != nullptr;
   }
   for (const char* f : {"golden", "friction_threshold", "cone_edge", "nearly_concurrent", "nearly_parallel", "huge_offset",
-                        "ladder_equilibrium", "random_generic", "random_grid"})
+                        "ladder_equilibrium", "random_generic", "random_grid", "long_rational", "rational_rotation"})
     EXPECT_GT(families[f], 0) << f;
   EXPECT_GT(with_load, 50);
   EXPECT_GT(with_support, 20);
