@@ -67,32 +67,13 @@ Reading reading_of(fam::Question q) {
   return q == fam::Question::form_closure ? Reading::frictionless : Reading::friction;
 }
 
-// The combinatorics of a labeling: shapes and vertex/direction counts of R+, R−, the ± set and R∞.
-std::string signature(const Moment_labels& l) {
-  auto region = [](const Region& r) {
-    return std::string(shape_name(r.shape)) + "/" + std::to_string(r.vertices.size()) + "/" +
-           std::to_string(r.directions.size());
-  };
-  return region(l.plus) + " " + region(l.minus) + " both" + std::to_string(int(l.both.kind)) + " " +
-         shape_name(l.infinity.shape) + "/" + std::to_string(l.infinity.extreme.size());
-}
-std::string signature(const fl::Labels_twin& l) {
-  auto region = [](const fl::Region2& r) {
-    return std::string(fl::shape_name(r.shape)) + "/" + std::to_string(r.vertices.size()) + "/" +
-           std::to_string(r.directions.size());
-  };
-  const Cone2::Shape inf[] = {Cone2::Shape::zero, Cone2::Shape::ray, Cone2::Shape::wedge, Cone2::Shape::plane};
-  return region(l.plus) + " " + region(l.minus) + " both0 " + shape_name(inf[int(l.infinity.shape)]) + "/" +
-         std::to_string(l.infinity.extreme.size());
-}
-
 Prepared prepare(const std::string& text, fam::Question q) {
   Prepared p;
   p.text = text;
   p.scene = read_scene(text, Input_limits{});
   p.question = q;
   p.expected = fam::decide(p.scene, q, Mode::exact).holds;
-  if (q != fam::Question::equilibrium) p.labels = signature(moment_labels(p.scene, reading_of(q), Mode::exact));
+  if (q != fam::Question::equilibrium) p.labels = fam::labels_signature(moment_labels(p.scene, reading_of(q), Mode::exact));
   if (q != fam::Question::equilibrium) {
     const Reading r = q == fam::Question::force_closure ? Reading::friction : Reading::frictionless;
     for (const fl::Bounded3& g : fl::generators(to_bounded(p.scene), r)) p.wd.push_back({g[0].v, g[1].v, g[2].v});
@@ -126,7 +107,7 @@ std::vector<Named_method> label_methods() {
       {"labels_naive",
        [](const Prepared& p) {
          const fl::Labels_twin l = fl::moment_labels_naive(fam::naive_generators(p.family_case));
-         return int(l.decided() && signature(l) == p.labels);
+         return int(l.decided() && fam::labels_signature(l) == p.labels);
        },
        false, false, true},
       {"labels_twin",
@@ -141,12 +122,12 @@ std::vector<Named_method> label_methods() {
        }},
       {"labels_hybrid",
        [](const Prepared& p) {
-         return int(signature(moment_labels(p.scene, reading_of(p.question), Mode::hybrid)) == p.labels);
+         return int(fam::labels_signature(moment_labels(p.scene, reading_of(p.question), Mode::hybrid)) == p.labels);
        },
        true, false, true},
       {"labels_exact",
        [](const Prepared& p) {
-         return int(signature(moment_labels(p.scene, reading_of(p.question), Mode::exact)) == p.labels);
+         return int(fam::labels_signature(moment_labels(p.scene, reading_of(p.question), Mode::exact)) == p.labels);
        },
        true, false, true},
   };

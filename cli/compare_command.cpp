@@ -85,27 +85,6 @@ Rational exact_number(const json::Value& v, const std::string& where) {
   return *q;
 }
 
-std::string text_of(const json::Value& v) {
-  switch (v.type) {
-    case json::Type::null: return "null";
-    case json::Type::boolean: return v.boolean ? "true" : "false";
-    case json::Type::number: return v.text;
-    case json::Type::string: return json::quote(v.text);
-    case json::Type::array: {
-      std::string s = "[";
-      for (std::size_t i = 0; i < v.items.size(); ++i) s += (i ? ", " : "") + text_of(v.items[i]);
-      return s + "]";
-    }
-    case json::Type::object: {
-      std::string s = "{";
-      for (std::size_t i = 0; i < v.members.size(); ++i)
-        s += (i ? ", " : "") + json::quote(v.members[i].first) + ": " + text_of(v.members[i].second);
-      return s + "}";
-    }
-  }
-  return "?";
-}
-
 struct Tolerance {
   Rational rtol, atol;
   bool close(const Rational& a, const Rational& r) const { return abs(a - r) <= atol + rtol * abs(r); }
@@ -204,11 +183,11 @@ std::vector<Answer> read_jsonl_answers(const std::string& path, const std::strin
     a.where = where;
     for (auto& [k, x] : v.members) {
       if (k == "id") {
-        if (x.type != json::Type::string) throw Input_error(where + ": id: " + text_of(x) + " is not a string");
+        if (x.type != json::Type::string) throw Input_error(where + ": id: " + json::text_of(x) + " is not a string");
         a.id = x.text;
       } else if (k == "error") {
         if (x.type != json::Type::string && x.type != json::Type::null)
-          throw Input_error(where + ": error: " + text_of(x) + " is not a string");
+          throw Input_error(where + ": error: " + json::text_of(x) + " is not a string");
         a.error = x.type == json::Type::string;
       } else if (!k.empty() && k[0] == '_') {
         continue;
@@ -286,23 +265,23 @@ struct Comparison {
 // Compares a region-like answer {"empty", "shape", "vertices"} with the reference REGION.
 std::optional<std::string> region_mismatch(const json::Value& ans, const json::Value& ref, const std::string& where,
                                            const Tolerance& tol) {
-  if (ans.type != json::Type::object) throw Input_error(where + ": " + text_of(ans) + " is not an object");
+  if (ans.type != json::Type::object) throw Input_error(where + ": " + json::text_of(ans) + " is not an object");
   for (const auto& [k, v] : ans.members) {
     if (k == "empty") {
-      if (v.type != json::Type::boolean) throw Input_error(where + ".empty: " + text_of(v) + " is not true or false");
+      if (v.type != json::Type::boolean) throw Input_error(where + ".empty: " + json::text_of(v) + " is not true or false");
       const json::Value* r = ref.find("empty");
       if (r && r->boolean != v.boolean) return std::string("empty ") + (r->boolean ? "true" : "false");
     } else if (k == "shape") {
-      if (v.type != json::Type::string) throw Input_error(where + ".shape: " + text_of(v) + " is not a string");
+      if (v.type != json::Type::string) throw Input_error(where + ".shape: " + json::text_of(v) + " is not a string");
       const json::Value* r = ref.find("shape");
       if (r && r->text != v.text) return "shape " + json::quote(r->text);
     } else if (k == "vertices") {
-      if (v.type != json::Type::array) throw Input_error(where + ".vertices: " + text_of(v) + " is not an array");
+      if (v.type != json::Type::array) throw Input_error(where + ".vertices: " + json::text_of(v) + " is not an array");
       std::vector<std::array<Rational, 2>> a, r;
       for (std::size_t i = 0; i < v.items.size(); ++i) {
         const json::Value& p = v.items[i];
         const std::string w = where + ".vertices[" + std::to_string(i) + "]";
-        if (p.type != json::Type::array || p.items.size() != 2) throw Input_error(w + ": " + text_of(p) + " is not [x, y]");
+        if (p.type != json::Type::array || p.items.size() != 2) throw Input_error(w + ": " + json::text_of(p) + " is not [x, y]");
         a.push_back({exact_number(p.items[0], w + "[0]"), exact_number(p.items[1], w + "[1]")});
       }
       if (const json::Value* rv = ref.find("vertices"))
@@ -316,7 +295,7 @@ std::optional<std::string> region_mismatch(const json::Value& ans, const json::V
         return true;
       };
       if (a.size() != r.size() || !covered(a, r) || !covered(r, a))
-        return "vertices " + (ref.find("vertices") ? text_of(*ref.find("vertices")) : std::string("[]"));
+        return "vertices " + (ref.find("vertices") ? json::text_of(*ref.find("vertices")) : std::string("[]"));
     } else {
       throw Input_error(where + ": " + json::quote(k) + ": unknown field (known: empty, shape, vertices)");
     }
@@ -352,7 +331,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
         continue;
       }
       if (field == "force_closure" || field == "form_closure" || field == "equilibrium") {
-        if (v.type != json::Type::boolean) throw Input_error(where + ": " + text_of(v) + " is not true, false or null");
+        if (v.type != json::Type::boolean) throw Input_error(where + ": " + json::text_of(v) + " is not true, false or null");
         const auto r = ref.verdicts.find(field);
         if (r == ref.verdicts.end()) throw Input_error(where + ": scene \"" + a.id + "\" has no load (no equilibrium answer)");
         ++t.compared;
@@ -361,14 +340,14 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
       } else if (field == "center_of_friction" || field == "power") {
         if (!ref.limit_surface)
           throw Input_error(where + ": scene \"" + a.id + "\" has no support (no " + field + " answer)");
-        if (v.type != json::Type::array) throw Input_error(where + ": " + text_of(v) + " is not an array");
+        if (v.type != json::Type::array) throw Input_error(where + ": " + json::text_of(v) + " is not an array");
         ++t.compared;
         bool ok = true;
         std::string reference;
         if (field == "center_of_friction") {
-          if (v.items.size() != 2) throw Input_error(where + ": " + text_of(v) + " is not [x, y]");
+          if (v.items.size() != 2) throw Input_error(where + ": " + json::text_of(v) + " is not [x, y]");
           const json::Value& r = *ref.limit_surface->find("center_of_friction");
-          reference = text_of(r);
+          reference = json::text_of(r);
           for (std::size_t i = 0; i < 2; ++i)
             ok &= tol.close(exact_number(v.items[i], where + "[" + std::to_string(i) + "]"),
                             exact_number(r.items[i], "reference"));
@@ -380,7 +359,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
           reference = "[";
           for (std::size_t i = 0; i < v.items.size(); ++i) {
             const json::Value& br = *twists.items[i].find("power_bracket");
-            reference += (i ? ", " : "") + text_of(br);
+            reference += (i ? ", " : "") + json::text_of(br);
             if (v.items[i].type == json::Type::null) continue;
             const Rational h = exact_number(v.items[i], where + "[" + std::to_string(i) + "]");
             const Rational lo = exact_number(br.items[0], "reference"), hi = exact_number(br.items[1], "reference");
@@ -390,9 +369,9 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
           reference += "]";
         }
         if (ok) ++t.agree;
-        else disagree(field, reference, text_of(v));
+        else disagree(field, reference, json::text_of(v));
       } else if (field == "labels") {
-        if (v.type != json::Type::object) throw Input_error(where + ": " + text_of(v) + " is not an object");
+        if (v.type != json::Type::object) throw Input_error(where + ": " + json::text_of(v) + " is not an object");
         ++t.compared;
         std::string why;
         for (const auto& [k, region] : v.members) {
@@ -403,7 +382,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
             why += (why.empty() ? "" : "; ") + k + ": reference " + *m;
         }
         if (why.empty()) ++t.agree;
-        else disagree(field, why, text_of(v));
+        else disagree(field, why, json::text_of(v));
       }
     }
   }

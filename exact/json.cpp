@@ -349,4 +349,25 @@ std::string quote(std::string_view s) {
   return out;
 }
 
+std::string text_of(const Value& v) {
+  switch (v.type) {
+    case Type::null: return "null";
+    case Type::boolean: return v.boolean ? "true" : "false";
+    case Type::number: return v.text;
+    case Type::string: return quote(v.text);
+    case Type::array: {
+      std::string s = "[";
+      for (std::size_t i = 0; i < v.items.size(); ++i) s += (i ? ", " : "") + text_of(v.items[i]);
+      return s + "]";
+    }
+    case Type::object: {
+      std::string s = "{";
+      for (std::size_t i = 0; i < v.members.size(); ++i)
+        s += (i ? ", " : "") + quote(v.members[i].first) + ": " + text_of(v.members[i].second);
+      return s + "}";
+    }
+  }
+  return "null";
+}
+
 }  // namespace wrenchkit::json

@@ -51,4 +51,8 @@ std::string decode_string(std::string_view text, std::size_t& pos, const Input_l
 // Writes `s` as a JSON string literal (with quotes), escaping as RFC 8259 requires.
 std::string quote(std::string_view s);
 
+// The JSON text of a parsed value, numbers with their original text (so exact values survive a
+// round trip): how the CLI and the tests hand a certificate read from a file to the checker.
+std::string text_of(const Value& v);
+
 }  // namespace wrenchkit::json

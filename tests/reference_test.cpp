@@ -143,28 +143,6 @@ std::map<std::string, std::string> files_of(const fs::path& dir) {
   return m;
 }
 
-// JSON text of a DOM value (numbers keep their text): the certificates as the checker reads them.
-std::string text_of(const json::Value& v) {
-  switch (v.type) {
-    case json::Type::null: return "null";
-    case json::Type::boolean: return v.boolean ? "true" : "false";
-    case json::Type::number: return v.text;
-    case json::Type::string: return json::quote(v.text);
-    case json::Type::array: {
-      std::string s = "[";
-      for (std::size_t i = 0; i < v.items.size(); ++i) s += (i ? ", " : "") + text_of(v.items[i]);
-      return s + "]";
-    }
-    case json::Type::object: {
-      std::string s = "{";
-      for (std::size_t i = 0; i < v.members.size(); ++i)
-        s += (i ? ", " : "") + json::quote(v.members[i].first) + ": " + text_of(v.members[i].second);
-      return s + "}";
-    }
-  }
-  return "";
-}
-
 class Corpus : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -211,9 +189,9 @@ TEST_F(Corpus, HoldsEveryKindOfScene) {
 TEST_F(Corpus, EveryCertificateIsAcceptedByTheIndependentChecker) {
   std::size_t checked = 0;
   for (const json::Value& v : lines_) {
-    const std::string scene = text_of(*v.find("scene"));
+    const std::string scene = json::text_of(*v.find("scene"));
     for (const auto& [what, cert] : v.find("certificates")->members) {
-      EXPECT_TRUE(test::checker_accepts(scene, text_of(cert))) << v.find("id")->text << " " << what;
+      EXPECT_TRUE(test::checker_accepts(scene, json::text_of(cert))) << v.find("id")->text << " " << what;
       ++checked;
     }
   }
@@ -225,7 +203,7 @@ TEST_F(Corpus, SceneFilesAreCanonicalAndMatchTheLines) {
     const std::string file = test::read_text(dir_ + "/" + v.find("scene_file")->text);
     const Scene from_file = read_scene(file, Input_limits{});
     EXPECT_EQ(write_scene(from_file), file) << v.find("id")->text;
-    EXPECT_EQ(write_scene(read_scene(text_of(*v.find("scene")), Input_limits{})), file) << v.find("id")->text;
+    EXPECT_EQ(write_scene(read_scene(json::text_of(*v.find("scene")), Input_limits{})), file) << v.find("id")->text;
   }
 }
 
@@ -234,7 +212,7 @@ TEST_F(Corpus, AnswersAgreeWithBruteForce) {
   // for the load), not the engine's dual cone.
   for (const json::Value& v : lines_) {
     const std::string id = v.find("id")->text;
-    const Scene s = read_scene(text_of(*v.find("scene")), Input_limits{});
+    const Scene s = read_scene(json::text_of(*v.find("scene")), Input_limits{});
     std::vector<Wrench> fr, fl;
     for (const Generator& g : generators(s, Reading::friction)) fr.push_back(g.w);
     for (const Generator& g : generators(s, Reading::frictionless)) fl.push_back(g.w);
@@ -280,17 +258,17 @@ TEST_F(Corpus, CompareAgreesWithItsOwnVerdicts) {
   // within tolerance), and labels.
   std::string jsonl;
   for (const json::Value& v : lines_) {
-    jsonl += "{\"id\": " + json::quote(v.find("id")->text) + ", \"force_closure\": " + text_of(*v.find("force_closure"));
+    jsonl += "{\"id\": " + json::quote(v.find("id")->text) + ", \"force_closure\": " + json::text_of(*v.find("force_closure"));
     if (const json::Value* ls = v.find("limit_surface")) {
-      jsonl += ", \"center_of_friction\": " + text_of(*ls->find("center_of_friction")) + ", \"power\": [";
+      jsonl += ", \"center_of_friction\": " + json::text_of(*ls->find("center_of_friction")) + ", \"power\": [";
       const auto& tw = ls->find("twists")->items;
       for (std::size_t i = 0; i < tw.size(); ++i)
         jsonl += (i ? ", " : "") + stress::number_text(Rational(tw[i].find("power_bracket")->items[0].text).get_d());
       jsonl += "]";
     }
     const json::Value& plus = *v.find("labels")->find("plus");
-    jsonl += ", \"labels\": {\"plus\": {\"empty\": " + text_of(*plus.find("empty")) + ", \"vertices\": " +
-             text_of(*plus.find("vertices")) + "}}}\n";
+    jsonl += ", \"labels\": {\"plus\": {\"empty\": " + json::text_of(*plus.find("empty")) + ", \"vertices\": " +
+             json::text_of(*plus.find("vertices")) + "}}}\n";
   }
   r = run("compare --json '" + dir_ + "' -", jsonl);
   EXPECT_EQ(r.code, 0) << r.out << r.err;
