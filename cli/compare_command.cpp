@@ -1,6 +1,7 @@
 // wrenchkit compare: another implementation's answers against the reference corpus
 // (docs/reference-format.md §5): agreement per field, and every disagreement with its scene and how
 // close that scene is to a degenerate boundary (tolerance issue or real bug?).
+#include <cctype>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -205,6 +206,44 @@ std::vector<Answer> read_jsonl_answers(const std::string& path, const std::strin
   return out;
 }
 
+// The cells of one CSV line (RFC 4180 within a line): a cell is plain text or "quoted", with "" for a
+// quote inside quotes; blanks around a cell are ignored (pandas and csv.writer output both read).
+std::vector<std::string> csv_cells(const std::string& l, const std::string& where) {
+  std::vector<std::string> cells(1);
+  std::size_t i = 0;
+  const auto blank = [&](std::size_t k) { return k < l.size() && (l[k] == ' ' || l[k] == '\t'); };
+  for (;;) {
+    while (blank(i)) ++i;
+    if (i < l.size() && l[i] == '"') {
+      for (++i;; ++i) {
+        if (i >= l.size()) throw Input_error(where + ": a quoted cell is not closed (a \" is missing)");
+        if (l[i] == '"') {
+          if (i + 1 < l.size() && l[i + 1] == '"') cells.back() += '"', ++i;
+          else break;
+        } else {
+          cells.back() += l[i];
+        }
+      }
+      ++i;
+      while (blank(i)) ++i;
+      if (i < l.size() && l[i] != ',')
+        throw Input_error(where + ": text after a quoted cell: \"" + l.substr(i, 20) + "\"");
+    } else {
+      std::size_t end = l.find(',', i);
+      if (end == std::string::npos) end = l.size();
+      std::size_t last = end;
+      while (last > i && (l[last - 1] == ' ' || l[last - 1] == '\t')) --last;
+      cells.back() = l.substr(i, last - i);
+      if (cells.back().find('"') != std::string::npos)
+        throw Input_error(where + ": a quote inside an unquoted cell: \"" + cells.back() + "\"");
+      i = end;
+    }
+    if (i >= l.size()) return cells;
+    ++i;  // the comma
+    cells.emplace_back();
+  }
+}
+
 std::vector<Answer> read_csv_answers(const std::string& path, const std::string& text) {
   std::vector<Answer> out;
   std::vector<std::string> header;
@@ -217,12 +256,8 @@ std::vector<Answer> read_csv_answers(const std::string& path, const std::string&
     start = end + 1;
     if (!l.empty() && l.back() == '\r') l.pop_back();
     if (l.find_first_not_of(" \t") == std::string::npos) continue;
-    std::vector<std::string> cells(1);
-    for (char ch : l) {
-      if (ch == ',') cells.emplace_back();
-      else if (ch != ' ' && ch != '\t') cells.back() += ch;
-    }
     const std::string where = path + ":" + std::to_string(line);
+    const std::vector<std::string> cells = csv_cells(l, where);
     if (header.empty()) {
       header = cells;
       if (header[0] != "id") throw Input_error(where + ": the header's first column must be id, not \"" + header[0] + "\"");
@@ -245,9 +280,11 @@ std::vector<Answer> read_csv_answers(const std::string& path, const std::string&
     for (std::size_t i = 1; i < cells.size(); ++i) {
       json::Value v;
       const std::string& c = cells[i];
-      if (c == "true" || c == "1") v.type = json::Type::boolean, v.boolean = true;
-      else if (c == "false" || c == "0") v.type = json::Type::boolean, v.boolean = false;
-      else if (!c.empty()) throw Input_error(where + ": " + header[i] + ": \"" + c + "\" is not true, false, 1, 0 or empty");
+      std::string lower = c;
+      for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      if (lower == "true" || c == "1") v.type = json::Type::boolean, v.boolean = true;
+      else if (lower == "false" || c == "0") v.type = json::Type::boolean, v.boolean = false;
+      else if (!c.empty()) throw Input_error(where + ": " + header[i] + ": \"" + c + "\" is not true, false (any case), 1, 0 or empty");
       a.fields.emplace_back(header[i], v);
     }
     out.push_back(std::move(a));
