@@ -115,9 +115,6 @@ bool parse_impl(std::string_view s, bool json_number, const Input_limits& limits
     return fail("has more digits than the digit limit");
 
   const long scale = exponent - static_cast<long>(frac_part.size());
-  bool approx_done = false;
-  // Fast path: at most 18 significant digits and |scale| ≤ 18 fit in 64-bit integers (the value is
-  // m·10^scale with m < 10^18 and 10^|scale| ≤ 10^18), so no string-to-GMP conversion is needed.
   std::size_t lead = 0;  // leading zeros of the mantissa digits
   while (lead < int_part.size() && int_part[lead] == '0') ++lead;
   if (lead == int_part.size()) {
@@ -126,6 +123,18 @@ bool parse_impl(std::string_view s, bool json_number, const Input_limits& limits
     lead += f;
   }
   const std::size_t significant = int_part.size() + frac_part.size() - lead;
+  // The value written out counts too: m·10^scale as an integer (significant + scale digits) or as
+  // m/10^k before reduction (significant + k + 1), so that a scene's canonical text (exact/scene_writer:
+  // "p/q" in lowest terms, no exponent) reads back under the same limits. Found by fuzz_scene_parser:
+  // "1e200" was accepted at --max-digits 200 and its 201-digit canonical text was not. (The checker agrees.)
+  if (significant > 0) {
+    const std::size_t k = static_cast<std::size_t>(scale < 0 ? -scale : scale);
+    if (significant + k + (scale < 0 ? 1 : 0) > limits.max_digits)
+      return fail("has more digits than the digit limit when written out exactly");
+  }
+  bool approx_done = false;
+  // Fast path: at most 18 significant digits and |scale| ≤ 18 fit in 64-bit integers (the value is
+  // m·10^scale with m < 10^18 and 10^|scale| ≤ 10^18), so no string-to-GMP conversion is needed.
   const bool fast = significant <= 18 && scale >= -18 && scale <= 18 && (scale <= 0 || significant + scale <= 18);
   unsigned long m = 0, p = 1;
   if (fast) {

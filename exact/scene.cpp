@@ -96,6 +96,9 @@ class Reader {
     if (!q) {
       if (why == "has more digits than the digit limit")
         why = "has more than " + std::to_string(limits_.max_digits) + " digits (--max-digits)";
+      else if (why == "has more digits than the digit limit when written out exactly")
+        why = "has more than " + std::to_string(limits_.max_digits) +
+              " digits written out as an exact integer or fraction (--max-digits)";
       else if (why == "has an exponent beyond the exponent limit")
         why = "has an exponent beyond ±" + std::to_string(limits_.max_exponent) + " (--max-exponent)";
       fail(path, display(v) + " " + why);

@@ -91,14 +91,25 @@ TEST(Numbers, LimitsOnDigitsAndExponents) {
   std::string why;
   EXPECT_TRUE(parse_rational(std::string(10000, '7'), true, lim, why).has_value());
   EXPECT_FALSE(parse_rational(std::string(10001, '7'), true, lim, why).has_value());
-  EXPECT_TRUE(parse_rational("1e10000", true, lim, why).has_value());
-  EXPECT_TRUE(parse_rational("1e-10000", true, lim, why).has_value());
+  // The value written out counts too (exact/scene_writer's "p/q" must read back under the same
+  // limits): 10^9999 has 10000 digits, 1/10^9998 has 1 + 9999; one more is too many.
+  EXPECT_TRUE(parse_rational("1e9999", true, lim, why).has_value());
+  EXPECT_TRUE(parse_rational("1e-9998", true, lim, why).has_value());
+  EXPECT_TRUE(parse_rational("0.00e10000", true, lim, why).has_value());  // zero is short
+  EXPECT_FALSE(parse_rational("1e10000", true, lim, why).has_value());
+  EXPECT_EQ(why, "has more digits than the digit limit when written out exactly");
+  EXPECT_FALSE(parse_rational("1e-9999", true, lim, why).has_value());
+  EXPECT_FALSE(parse_rational("10e9999", true, lim, why).has_value());
   EXPECT_FALSE(parse_rational("1e10001", true, lim, why).has_value());
+  EXPECT_EQ(why, "has an exponent beyond the exponent limit");
   EXPECT_FALSE(parse_rational("1e99999999999999999999999999", true, lim, why).has_value());
   EXPECT_TRUE(parse_rational("1e000000000000000000000000005", true, lim, why).has_value());
   // Every digit of the text counts, exponent and denominator included (the checker agrees).
-  EXPECT_TRUE(parse_rational(std::string(9998, '9') + "e10", true, lim, why).has_value());
-  EXPECT_FALSE(parse_rational(std::string(9999, '9') + "e10", true, lim, why).has_value());
+  EXPECT_TRUE(parse_rational(std::string(9997, '9') + "e1", true, lim, why).has_value());
+  EXPECT_FALSE(parse_rational(std::string(9998, '9') + "e10", true, lim, why).has_value());
+  // A decimal's fraction digits count twice written out: 0.99…9 with 4999 nines is 99…9/10^4999.
+  EXPECT_TRUE(parse_rational("0." + std::string(4999, '9'), true, lim, why).has_value());
+  EXPECT_FALSE(parse_rational("0." + std::string(5000, '9'), true, lim, why).has_value());
   EXPECT_TRUE(parse_rational(std::string(5000, '9') + "/" + std::string(5000, '7'), false, lim, why).has_value());
   EXPECT_FALSE(parse_rational(std::string(5000, '9') + "/" + std::string(5001, '7'), false, lim, why).has_value());
   Input_limits raised;
@@ -169,6 +180,9 @@ TEST(SceneErrors, LimitsAreEnforcedAndNamed) {
   EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contacts": [{"at": [0, )" + big + R"(], "normal": [1,0]}]})"),
             "contacts[0].at[1]: 9999999999999999999999999999999999999999… (10001 characters) has more than "
             "10000 digits (--max-digits)");
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contacts": [{"at": [0, "1e10000"], "normal": [1,0]}]})"),
+            "contacts[0].at[1]: \"1e10000\" has more than 10000 digits written out as an exact integer or fraction "
+            "(--max-digits)");
   EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contacts": [{"at": [0, "1e10001"], "normal": [1,0]}]})"),
             "contacts[0].at[1]: \"1e10001\" has an exponent beyond ±10000 (--max-exponent)");
   Input_limits small;

@@ -103,6 +103,19 @@ Q scene_number(std::string_view s, const Limits& lim, const std::string& path) {
     // value = mantissa * 10^scale, |scale| <= max_exponent + max_digits
     const long long scale =
         (exp_negative ? -static_cast<long long>(e) : static_cast<long long>(e)) - static_cast<long long>(frac.size());
+    // The value written out counts too (scene-format.md): mantissa·10^scale as an integer, or
+    // mantissa/10^k before reduction, has significant + |scale| (+1 for the denominator's 1) digits.
+    std::size_t lead = 0;  // leading zeros of the mantissa's digits (whole, then frac)
+    while (lead < whole.size() + frac.size() && (lead < whole.size() ? whole[lead] : frac[lead - whole.size()]) == '0')
+      ++lead;
+    const std::size_t significant = whole.size() + frac.size() - lead;
+    if (significant > 0) {
+      const std::size_t value_digits =
+          significant + static_cast<std::size_t>(scale < 0 ? -scale : scale) + (scale < 0 ? 1 : 0);
+      if (value_digits > lim.max_digits)
+        throw Failure{at + "number with " + std::to_string(value_digits) + " digits written out (limit " +
+                      std::to_string(lim.max_digits) + ")"};
+    }
     if (whole.size() + frac.size() <= 19 && scale >= -19 && scale <= 19) {
       // Short decimals (what scenes mostly hold): mantissa and power of ten in 64 bits (10^19 < 2^64),
       // lowest terms by a 64-bit gcd; the same value as below.

@@ -32,7 +32,7 @@ namespace wrenchkit_checker {
 // Limits on the scene (docs/scene-format.md "Limits"); max_depth also applies to the certificate.
 // Certificate rationals are at most 100000 characters (certificate-format.md §2), a fixed limit.
 struct Limits {
-  std::size_t max_digits = 10000;  // digits in one scene number (exponent digits included)
+  std::size_t max_digits = 10000;  // digits of a scene number's text (exponent included) and of its value written out
   long max_exponent = 10000;       // |exponent| of a scene number
   std::size_t max_depth = 64;      // JSON containers nested in one another
   std::size_t max_contacts = 100000;
