@@ -16,10 +16,10 @@
 #include <string_view>
 #include <vector>
 
-#include "exact/batch.h"
-#include "exact/closure.h"
-#include "exact/scene.h"
-#include "exact/streaming_scene_reader.h"
+#include "exact/pipeline/batch.h"
+#include "exact/statics/closure.h"
+#include "exact/io/scene.h"
+#include "exact/io/streaming_scene_reader.h"
 #include "float/closure_twin.h"
 #include "proofs/checker/checker.h"
 

@@ -255,7 +255,7 @@ def main():
               "measured here.\n")
     md.append("Note on hybrid against exact: `--mode exact` now computes its integer generators straight from the "
               "contacts' numerators and denominators and its determinants in fixed-width integers "
-              "(`exact/wide_int.h`), so on scenes written with a few decimals it costs about what the certified "
+              "(`exact/numbers/wide_int.h`), so on scenes written with a few decimals it costs about what the certified "
               "float filter costs, and no filter can be 30× faster than it. Where exact arithmetic is really "
               "expensive — 17-digit decimals, the families below — hybrid is ahead by the ratio shown in the "
               "family tables (it reaches the exact path only where the twin abstains).\n")

@@ -12,7 +12,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "exact/rational.h"
+#include "exact/numbers/rational.h"
 
 namespace wrenchkit::peers {
 

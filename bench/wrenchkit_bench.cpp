@@ -32,11 +32,11 @@
 #include <vector>
 
 #include "bench/peers.h"
-#include "exact/closure.h"
-#include "exact/limit_surface.h"
-#include "exact/moment_labels.h"
-#include "exact/twin_agreement.h"
-#include "exact/to_float.h"
+#include "exact/statics/closure.h"
+#include "exact/sliding/limit_surface.h"
+#include "exact/statics/moment_labels.h"
+#include "testing/twin_agreement.h"
+#include "exact/io/to_float.h"
 #include "float/closure_twin.h"
 #include "float/labels_twin.h"
 #include "float/limit_surface_twin.h"

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "cli/common.h"
-#include "exact/json.h"
-#include "exact/equilibrium.h"
-#include "exact/limit_surface.h"
-#include "exact/sliding.h"
+#include "exact/io/json.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/sliding/limit_surface.h"
+#include "exact/sliding/sliding.h"
 
 namespace wrenchkit::cli {
 

@@ -1,6 +1,6 @@
 // wrenchkit batch COMMAND: JSON lines in, one answer per line, in order, on --jobs threads. Each
 // line's answer is the command's own --json answer (its Scene_answer, cli/common.h) with a "line"
-// field first; the threads and the order are exact/batch.h's ordered_map.
+// field first; the threads and the order are exact/pipeline/batch.h's ordered_map.
 #include <atomic>
 #include <cstring>
 #include <iostream>
@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "cli/common.h"
-#include "exact/batch.h"
-#include "exact/input_error.h"
-#include "exact/json.h"
+#include "exact/pipeline/batch.h"
+#include "exact/io/input_error.h"
+#include "exact/io/json.h"
 
 namespace wrenchkit::cli {
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "cli/common.h"
-#include "exact/input_error.h"
-#include "exact/json.h"
+#include "exact/io/input_error.h"
+#include "exact/io/json.h"
 
 namespace wrenchkit::cli {
 

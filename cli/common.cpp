@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli/common.h"
-#include "exact/input_error.h"
+#include "exact/io/input_error.h"
 
 namespace wrenchkit::cli {
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "exact/batch.h"
-#include "exact/closure.h"
-#include "exact/equilibrium.h"
-#include "exact/limits.h"
+#include "exact/pipeline/batch.h"
+#include "exact/statics/closure.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/numbers/limits.h"
 #include "proofs/checker/checker.h"
 
 namespace wrenchkit::cli {
@@ -95,7 +95,7 @@ Scene_answer prepare_limit_surface_json(const Options& o);
 Scene_answer prepare_sliding_json(const Options& o);
 
 // closure_command.cpp (analyze uses these pieces)
-// Force and form closure of one scene text (exact/batch.h's closure_item with the CLI's options and
+// Force and form closure of one scene text (exact/pipeline/batch.h's closure_item with the CLI's options and
 // the independent checker; certificates unless --verdict-only); throws as a Scene_answer does.
 // `scene`, if given, receives the scene.
 Closure_item compute_closure(const Options& o, const std::string& scene_text, const std::string& source,

@@ -15,8 +15,8 @@
 
 #include "cli/common.h"
 #include "cli/reference.h"
-#include "exact/input_error.h"
-#include "exact/json.h"
+#include "exact/io/input_error.h"
+#include "exact/io/json.h"
 
 namespace wrenchkit::cli {
 

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "cli/common.h"
-#include "exact/json.h"
-#include "exact/streaming_scene_reader.h"
+#include "exact/io/json.h"
+#include "exact/io/streaming_scene_reader.h"
 
 namespace wrenchkit::cli {
 

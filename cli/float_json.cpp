@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "exact/rational.h"
+#include "exact/numbers/rational.h"
 
 namespace wrenchkit::cli {
 

@@ -1,6 +1,6 @@
 // JSON and text of the float twin's constructions (`--mode float`): coordinates as JSON numbers with
 // their certified error bounds beside them (docs/cli.md, "--mode float"). The REGION and infinity
-// formats are those of exact/planar_region.h with numbers instead of exact rationals, plus
+// formats are those of exact/statics/planar_region.h with numbers instead of exact rationals, plus
 // "vertex_bounds" / "direction_bounds": per coordinate, a bound on the distance from the PRINTED decimal
 // to the exact value — the twin's bound plus the printing error (computed exactly), rounded up — so the
 // promise holds for the numbers a reader sees, not only for the doubles behind them. Human text

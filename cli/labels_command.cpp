@@ -1,5 +1,5 @@
-// wrenchkit labels | dual | reuleaux: the graphical statics of Mason ch. 5–6 (exact/moment_labels.h,
-// exact/force_dual.h). --mode hybrid (default) decides the cone's signs with the float twin first and
+// wrenchkit labels | dual | reuleaux: the graphical statics of Mason ch. 5–6 (exact/statics/moment_labels.h,
+// exact/statics/force_dual.h). --mode hybrid (default) decides the cone's signs with the float twin first and
 // exactly where it is uncertain, and constructs exactly: the answer is the exact one. --mode exact never
 // uses floating point. --mode float is the float twin alone (float/labels_twin.h): coordinates as numbers
 // with certified bounds, exit 3 when it cannot decide.
@@ -10,10 +10,10 @@
 
 #include "cli/common.h"
 #include "cli/float_json.h"
-#include "exact/force_dual.h"
-#include "exact/json.h"
-#include "exact/streaming_scene_reader.h"
-#include "exact/to_float.h"
+#include "exact/statics/force_dual.h"
+#include "exact/io/json.h"
+#include "exact/io/streaming_scene_reader.h"
+#include "exact/io/to_float.h"
 #include "float/labels_twin.h"
 
 namespace wrenchkit::cli {
@@ -359,7 +359,7 @@ std::string float_dual_json(const Float_labelled& s) {
   return j.str();
 }
 
-// Reuleaux's modes from certified signs (exact/moment_labels.h's contact_modes, in floating point).
+// Reuleaux's modes from certified signs (exact/statics/moment_labels.h's contact_modes, in floating point).
 Mode_answer float_contact_modes(const Float_labelled& s, const Vec3& t) {
   Mode_answer a;
   const fl::Bounded3 bt = twin_of(t);

@@ -11,12 +11,12 @@
 #include "cli/common.h"
 #include "cli/float_json.h"
 #include "cli/render_limit_surface.h"
-#include "exact/input_error.h"
-#include "exact/json.h"
-#include "exact/limit_surface.h"
-#include "exact/sliding.h"
-#include "exact/streaming_scene_reader.h"
-#include "exact/to_float.h"
+#include "exact/io/input_error.h"
+#include "exact/io/json.h"
+#include "exact/sliding/limit_surface.h"
+#include "exact/sliding/sliding.h"
+#include "exact/io/streaming_scene_reader.h"
+#include "exact/io/to_float.h"
 #include "float/limit_surface_twin.h"
 
 namespace wrenchkit::cli {

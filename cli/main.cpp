@@ -6,7 +6,7 @@
 #include "cli/common.h"
 #include "cli/demo_scene.h"
 #include "cli/reference.h"
-#include "exact/input_error.h"
+#include "exact/io/input_error.h"
 
 namespace wrenchkit::cli {
 namespace {

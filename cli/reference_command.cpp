@@ -12,14 +12,14 @@
 
 #include "cli/common.h"
 #include "cli/reference.h"
-#include "exact/boundary_distance.h"
-#include "exact/input_error.h"
-#include "exact/json.h"
-#include "exact/limit_surface.h"
-#include "exact/moment_labels.h"
-#include "exact/scene_writer.h"
-#include "exact/sliding.h"
-#include "exact/stress_families.h"
+#include "exact/statics/boundary_distance.h"
+#include "exact/io/input_error.h"
+#include "exact/io/json.h"
+#include "exact/sliding/limit_surface.h"
+#include "exact/statics/moment_labels.h"
+#include "exact/io/scene_writer.h"
+#include "exact/sliding/sliding.h"
+#include "testing/stress_families.h"
 
 namespace wrenchkit::cli {
 
@@ -76,7 +76,7 @@ std::string jd(double d) {  // a double for reading, as a JSON number
 }
 std::string jd(const std::optional<double>& d) { return d ? jd(*d) : "null"; }
 
-// The canonical text (exact/scene_writer.h) on one line: newlines (never inside strings, which
+// The canonical text (exact/io/scene_writer.h) on one line: newlines (never inside strings, which
 // json::quote escapes) and their indentation removed.
 std::string one_line(const std::string& canonical) {
   std::string s;

@@ -9,7 +9,7 @@
 #include "cli/common.h"
 #include "cli/render_limit_surface.h"
 #include "cli/svg_canvas.h"
-#include "exact/force_dual.h"
+#include "exact/statics/force_dual.h"
 
 namespace wrenchkit::cli {
 

@@ -8,8 +8,8 @@
 #include <sstream>
 #include <vector>
 
-#include "exact/input_error.h"
-#include "exact/limit_surface.h"
+#include "exact/io/input_error.h"
+#include "exact/sliding/limit_surface.h"
 
 namespace wrenchkit::cli {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "exact/scene.h"
+#include "exact/io/scene.h"
 
 namespace wrenchkit::cli {
 

@@ -8,11 +8,11 @@
 
 #include "cli/common.h"
 #include "cli/float_json.h"
-#include "exact/input_error.h"
-#include "exact/json.h"
-#include "exact/sliding.h"
-#include "exact/streaming_scene_reader.h"
-#include "exact/to_float.h"
+#include "exact/io/input_error.h"
+#include "exact/io/json.h"
+#include "exact/sliding/sliding.h"
+#include "exact/io/streaming_scene_reader.h"
+#include "exact/io/to_float.h"
 
 namespace wrenchkit::cli {
 

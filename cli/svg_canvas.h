@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "exact/planar_region.h"
+#include "exact/statics/planar_region.h"
 
 namespace wrenchkit::cli {
 

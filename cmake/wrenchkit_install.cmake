@@ -6,7 +6,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 # Headers under <prefix>/include/wrenchkit/{core,exact,float,proofs/checker}; that directory is on the
-# targets' include path, so the repository's includes ("exact/closure.h") work unchanged, and
+# targets' include path, so the repository's includes ("exact/statics/closure.h") work unchanged, and
 # <prefix>/include is too, for "wrenchkit/exact/closure.h".
 set(WRENCHKIT_INSTALL_INCLUDEDIR "${CMAKE_INSTALL_INCLUDEDIR}/wrenchkit")
 set(WRENCHKIT_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/wrenchkit")

@@ -1,6 +1,6 @@
 // [FC-0] The generators of a contact's wrench cone, over any number type (theory.md §4, §8.2).
 //
-// Written once and instantiated with exact rationals (exact/generators.cpp) and with the float
+// Written once and instantiated with exact rationals (exact/statics/generators.cpp) and with the float
 // twin's error-bounded doubles (float/), so both enumerate the same generators in the same order
 // and a generator index means the same (contact, edge) in both.
 #pragma once

@@ -8,7 +8,7 @@
 // carries a bound on its distance to the exact coordinate of the scene as written.
 //
 // Exactness: certified-or-undecided. A decided answer has exactly the exact engine's shapes, corner
-// counts and corner order (exact/moment_labels.h, exact/force_dual.h), and every corner lies within
+// counts and corner order (exact/statics/moment_labels.h, exact/statics/force_dual.h), and every corner lies within
 // its stated bound of the exact corner. Undecided when a sign is within its error bound of zero, and
 // for the cones this twin does not represent: rank W < 3 (the ± lineality; only exactly degenerate
 // data can be certified to have it) and, for the force dual, a W that is not pointed (W* an arc or a
@@ -35,9 +35,9 @@ struct Point2 {
   Bounded x, y;
 };
 
-// conv(vertices) + pos(directions), the float counterpart of exact/planar_region.h's Region for the
+// conv(vertices) + pos(directions), the float counterpart of exact/statics/planar_region.h's Region for the
 // shapes a pointed cone can slice to (plus `plane`, the dual of a force-closed cone). Vertices in
-// counter-clockwise order; directions (not normalised) as exact/planar_region.h orders them: the
+// counter-clockwise order; directions (not normalised) as exact/statics/planar_region.h orders them: the
 // boundary leaves the last vertex along directions[0] and returns along directions.back().
 struct Region2 {
   enum class Shape { empty, point, segment, ray, wedge, polygon, unbounded_polygon, plane };
@@ -45,7 +45,7 @@ struct Region2 {
   std::vector<Point2> vertices;
   std::vector<Point2> directions;
 };
-const char* shape_name(Region2::Shape s);  // the names of exact/planar_region.h
+const char* shape_name(Region2::Shape s);  // the names of exact/statics/planar_region.h
 
 // A closed cone of directions (an arc of the circle at infinity): nothing, one direction, the arc
 // from extreme[0] counter-clockwise to extreme[1] (< 180°), or the whole circle.

@@ -5,8 +5,8 @@
 #include <cstdlib>
 
 #include "core/dual_cone.h"
-#include "exact/equilibrium.h"
-#include "exact/sliding.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/sliding/sliding.h"
 #include "float/float_kernel.h"
 #include "float/limit_surface_twin.h"
 

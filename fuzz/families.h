@@ -1,5 +1,5 @@
 // The near-degenerate scene families as measurements use them (the stress report fuzz/stress_report.cpp,
-// docs/stability.md; the benchmarks bench/, docs/benchmarks.md): exact/stress_families.h [ST-1] builds
+// docs/stability.md; the benchmarks bench/, docs/benchmarks.md): testing/stress_families.h [ST-1] builds
 // the scenes (one generator for the reference corpus, the stress report and the benchmarks); this layer
 // adds what measurements need on top — the truth of a case, the NAIVE reading of the same doubles (raw
 // double signs; a guess, for measurements only) for closure, equilibrium, moment labels and stick/slide,
@@ -16,10 +16,10 @@
 #include <string_view>
 #include <vector>
 
-#include "exact/closure.h"
-#include "exact/limit_surface.h"
-#include "exact/moment_labels.h"
-#include "exact/stress_families.h"
+#include "exact/statics/closure.h"
+#include "exact/sliding/limit_surface.h"
+#include "exact/statics/moment_labels.h"
+#include "testing/stress_families.h"
 #include "float/float_kernel.h"
 #include "float/labels_twin.h"
 
@@ -81,7 +81,7 @@ std::vector<fl::Bounded3> naive_generators(const Case& c);
 
 // Stick/slide of a stick_slide case (holds = slides) [LS-3] [FL-7]: exact — the polygonal bounds with
 // `sides` directions (undecided when the load is within their gap of the limit surface); hybrid —
-// exact/sliding.h decide_motion (the certified search, the polygons only when it is undecided); float —
+// exact/sliding/sliding.h decide_motion (the certified search, the polygons only when it is undecided); float —
 // fl::classify_load alone.
 Verdict decide_motion(const Case& c, const Scene& scene, Mode mode, int sides);
 // The naive stick/slide: minimise f(q) = h(q) − q·p over twists in plain doubles without error bounds

@@ -8,10 +8,10 @@
 #include <string>
 #include <string_view>
 
-#include "exact/closure.h"
-#include "exact/equilibrium.h"
-#include "exact/input_error.h"
-#include "exact/scene.h"
+#include "exact/statics/closure.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/io/input_error.h"
+#include "exact/io/scene.h"
 #include "proofs/checker/checker.h"
 
 namespace {

@@ -10,7 +10,7 @@
 //   * every certificate (closure exact/hybrid, equilibrium in every mode) is accepted by the
 //     independent checker, and float/hybrid equilibrium agrees with exact;
 //   * hybrid labels are the exact labels; the labels and force-dual twins agree with them within their
-//     stated bounds (exact/twin_agreement.h);
+//     stated bounds (testing/twin_agreement.h);
 //   * with a small support: the float twin's true h lies in the exact polygonal bracket, and hybrid and
 //     float stick/slide never contradict the exact polygons.
 #pragma once
@@ -24,16 +24,16 @@
 #include <string_view>
 #include <vector>
 
-#include "exact/closure.h"
-#include "exact/equilibrium.h"
-#include "exact/force_dual.h"
-#include "exact/input_error.h"
-#include "exact/scene.h"
-#include "exact/scene_writer.h"
-#include "exact/sliding.h"
-#include "exact/streaming_scene_reader.h"
-#include "exact/to_float.h"
-#include "exact/twin_agreement.h"
+#include "exact/statics/closure.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/statics/force_dual.h"
+#include "exact/io/input_error.h"
+#include "exact/io/scene.h"
+#include "exact/io/scene_writer.h"
+#include "exact/sliding/sliding.h"
+#include "exact/io/streaming_scene_reader.h"
+#include "exact/io/to_float.h"
+#include "testing/twin_agreement.h"
 #include "proofs/checker/checker.h"
 
 namespace scene_checks_detail {

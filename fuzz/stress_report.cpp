@@ -1,5 +1,5 @@
 // [ST-2] The numerical-stability stress report (docs/stability.md, issue 6): families of scenes at a controlled
-// distance ε from a degenerate configuration (exact/stress_families.h [ST-1], fuzz/families.h), written as
+// distance ε from a degenerate configuration (testing/stress_families.h [ST-1], fuzz/families.h), written as
 // text as users write it. For each family and ε, and for each question the family's scenes ask —
 // closure or equilibrium (the verdict), moment labels, stick/slide — it counts how often naive floating
 // point (the text read by strtod, raw double signs) is wrong, how often the certified twin abstains, and
@@ -28,9 +28,9 @@
 #include <string>
 #include <vector>
 
-#include "exact/equilibrium.h"
-#include "exact/to_float.h"
-#include "exact/twin_agreement.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/io/to_float.h"
+#include "testing/twin_agreement.h"
 #include "fuzz/families.h"
 #include "proofs/checker/checker.h"
 
@@ -394,7 +394,7 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << "Regenerate with `./build.sh stability` (runs `stress_report --cases " << cases << " --seed " << seed
      << " --report docs`; this run took " << std::lround(seconds) << " s on the shared 2-core machine).\n"
      << "Every family builds scenes at distance ε from a degenerate configuration and writes them as text, as a\n"
-     << "user would (exact/stress_families.h [ST-1], fuzz/families.h). Cases per ε: " << cases << " per family, "
+     << "user would (testing/stress_families.h [ST-1], fuzz/families.h). Cases per ε: " << cases << " per family, "
      << cases_for(*families::find("many_contacts"), cases) << " for many_contacts (each has 1000–10000 contacts) and "
      << cases_for(*families::find("collinear_support"), cases)
      << " for collinear_support (each runs a search and builds polytopes).\n\n"
@@ -416,7 +416,7 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << "  (`known`: the answer is the side of the threshold for every ε), else the exact engine's verdict; and the\n"
      << "  truth is cross-checked (column *cross-check*). Labels: *naive wrong* = not the exact labels' shapes and\n"
      << "  corner counts; *twin wrong* = a decided twin whose shapes, counts, order or any corner is outside its\n"
-     << "  stated bound of the exact one (exact/twin_agreement.h); *hybrid wrong* = not byte-equal to exact.\n"
+     << "  stated bound of the exact one (testing/twin_agreement.h); *hybrid wrong* = not byte-equal to exact.\n"
      << "* Times are per query (verdict without certificate; labels; stick/slide), on a noisy shared machine.\n\n"
      << "## Family by family\n\n"
      << "Where naive double goes wrong (the largest ε at which it was ever wrong, and its worst rate), where the\n"

@@ -10,15 +10,15 @@
 #include <string>
 #include <vector>
 
-#include "exact/closure.h"
-#include "exact/equilibrium.h"
-#include "exact/force_dual.h"
-#include "exact/input_error.h"
-#include "exact/json.h"
-#include "exact/limit_surface.h"
-#include "exact/moment_labels.h"
-#include "exact/scene_writer.h"
-#include "exact/sliding.h"
+#include "exact/statics/closure.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/statics/force_dual.h"
+#include "exact/io/input_error.h"
+#include "exact/io/json.h"
+#include "exact/sliding/limit_surface.h"
+#include "exact/statics/moment_labels.h"
+#include "exact/io/scene_writer.h"
+#include "exact/sliding/sliding.h"
 #include "proofs/checker/checker.h"
 
 namespace py = pybind11;
@@ -46,7 +46,7 @@ py::tuple triple(const Vec3& v) { return triple(v[0], v[1], v[2]); }
 // A scene as read by the engine, with the canonical text the checker is given.
 struct Py_scene {
   Scene scene;
-  std::string text;    // canonical (exact/scene_writer.h)
+  std::string text;    // canonical (exact/io/scene_writer.h)
   std::string source;  // names the input in messages
 };
 

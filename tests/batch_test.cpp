@@ -1,4 +1,4 @@
-// The C++ batch API (exact/batch.h): answers in input order on any number of threads, each scene's
+// The C++ batch API (exact/pipeline/batch.h): answers in input order on any number of threads, each scene's
 // error a value (the message read_scene gives), the same verdicts and certificates as decide_closure,
 // bounded memory on a stream, and the ordered parallel map underneath.
 #include <gtest/gtest.h>
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "exact/batch.h"
-#include "exact/input_error.h"
+#include "exact/pipeline/batch.h"
+#include "exact/io/input_error.h"
 #include "proofs/checker/checker.h"
 #include "tests/test_support.h"
 

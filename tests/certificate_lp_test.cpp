@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "exact/closure.h"
-#include "exact/cone_lp.h"
-#include "exact/equilibrium.h"
-#include "exact/scene.h"
+#include "exact/statics/closure.h"
+#include "exact/statics/cone_lp.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/io/scene.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {

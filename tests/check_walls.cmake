@@ -2,6 +2,7 @@
 #   core/   standard library and core/ only
 #   float/  no GMP, no CGAL, nothing from exact/ or proofs/
 #   proofs/ no CGAL, nothing from exact/, core/, float/, cli/
+#   exact/ by parts (below); testing/ no front end
 #   exact/, cli/: no peer library (qhull, cddlib, GLPK) and nothing from bench/
 set(failures "")
 function(check_dir dir forbidden_regex what)
@@ -18,6 +19,14 @@ endfunction()
 check_dir(core "<gmp|<CGAL/|<boost/|\"(exact|float|proofs|cli)/" "core/ is standard library only")
 check_dir(float "<gmp|<CGAL/|\"(exact|proofs|cli)/" "float/ has no GMP, no CGAL, no exact engine")
 check_dir(proofs "<CGAL/|\"(exact|core|float|cli)/" "proofs/ shares no code with the engine")
+# exact/'s parts (docs/design.md, "Layout"): numbers <- io <- statics, sliding <- pipeline; nothing of the engine
+# reaches the front ends (cli/, python/) or the test scenery (testing/).
+check_dir(exact "\"(cli|python|testing|bench|fuzz|tests)/" "the engine does not depend on front ends or test scenery")
+check_dir(exact/numbers "\"exact/(io|statics|sliding|pipeline)/" "numbers/ is the bottom of exact/")
+check_dir(exact/io "\"exact/(statics|sliding|pipeline)/" "io/ sits on numbers/ only")
+check_dir(exact/statics "\"exact/(sliding|pipeline)/" "statics/ does not know sliding or the pipeline")
+check_dir(exact/sliding "\"exact/(statics|pipeline)/" "sliding/ does not know statics or the pipeline")
+check_dir(testing "\"(cli|python)/" "test scenery does not depend on front ends")
 # The benchmarks' peers (qhull, cddlib, GLPK, bench/) are never part of the engine or the command.
 foreach(dir exact cli)
   check_dir(${dir} "<libqhull|<cdd/|<glpk|\"bench/" "peers stay in bench/")

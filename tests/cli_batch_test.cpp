@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "exact/json.h"
+#include "exact/io/json.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {

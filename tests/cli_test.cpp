@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "exact/json.h"
+#include "exact/io/json.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {

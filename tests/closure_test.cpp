@@ -7,9 +7,9 @@
 #include <random>
 
 #include "core/dual_cone.h"
-#include "exact/closure.h"
-#include "exact/cone_lp.h"
-#include "exact/scene.h"
+#include "exact/statics/closure.h"
+#include "exact/statics/cone_lp.h"
+#include "exact/io/scene.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {

@@ -5,8 +5,8 @@
 
 #include <random>
 
-#include "exact/equilibrium.h"
-#include "exact/input_error.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/io/input_error.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {

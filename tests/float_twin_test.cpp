@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <random>
 
-#include "exact/closure.h"
-#include "exact/to_float.h"
+#include "exact/statics/closure.h"
+#include "exact/io/to_float.h"
 #include "float/bounded.h"
 #include "float/closure_twin.h"
 #include "tests/test_support.h"

@@ -6,7 +6,7 @@
 #include <regex>
 
 #include "cli/demo_scene.h"
-#include "exact/closure.h"
+#include "exact/statics/closure.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {

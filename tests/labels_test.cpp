@@ -10,9 +10,9 @@
 #include <random>
 #include <set>
 
-#include "exact/closure.h"
-#include "exact/equilibrium.h"
-#include "exact/force_dual.h"
+#include "exact/statics/closure.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/statics/force_dual.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {

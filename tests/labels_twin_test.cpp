@@ -9,10 +9,10 @@
 #include <random>
 #include <sstream>
 
-#include "exact/closure.h"
-#include "exact/force_dual.h"
-#include "exact/to_float.h"
-#include "exact/twin_agreement.h"
+#include "exact/statics/closure.h"
+#include "exact/statics/force_dual.h"
+#include "exact/io/to_float.h"
+#include "testing/twin_agreement.h"
 #include "float/labels_twin.h"
 #include "tests/test_support.h"
 

@@ -7,8 +7,8 @@
 #include <set>
 #include <sstream>
 
-#include "exact/limit_surface.h"
-#include "exact/sliding.h"
+#include "exact/sliding/limit_surface.h"
+#include "exact/sliding/sliding.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {

@@ -9,9 +9,9 @@
 #include <cstdio>
 #include <random>
 
-#include "exact/limit_surface.h"
-#include "exact/sliding.h"
-#include "exact/to_float.h"
+#include "exact/sliding/limit_surface.h"
+#include "exact/sliding/sliding.h"
+#include "exact/io/to_float.h"
 #include "float/limit_surface_twin.h"
 #include "float/pressure.h"
 #include "tests/test_support.h"

@@ -6,7 +6,7 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
-#include "exact/closure.h"
+#include "exact/statics/closure.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {

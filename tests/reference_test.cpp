@@ -10,12 +10,12 @@
 #include <set>
 #include <sstream>
 
-#include "exact/boundary_distance.h"
-#include "exact/equilibrium.h"
-#include "exact/generators.h"
-#include "exact/json.h"
-#include "exact/scene_writer.h"
-#include "exact/stress_families.h"
+#include "exact/statics/boundary_distance.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/statics/generators.h"
+#include "exact/io/json.h"
+#include "exact/io/scene_writer.h"
+#include "testing/stress_families.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {

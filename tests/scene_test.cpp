@@ -4,10 +4,10 @@
 
 #include <random>
 
-#include "exact/input_error.h"
-#include "exact/rational.h"
-#include "exact/scene.h"
-#include "exact/streaming_scene_reader.h"
+#include "exact/io/input_error.h"
+#include "exact/numbers/rational.h"
+#include "exact/io/scene.h"
+#include "exact/io/streaming_scene_reader.h"
 #include "fuzz/scene_checks.h"
 #include "tests/test_support.h"
 

@@ -1,4 +1,4 @@
-// [ST-1] The scene families of the stress report (exact/stress_families.h, fuzz/families.h): every family
+// [ST-1] The scene families of the stress report (testing/stress_families.h, fuzz/families.h): every family
 // is deterministic, lands on its stated side of the threshold, honours ε exactly where the scene is exact
 // by construction, and its exact symmetries (rotation, translation, scaling) keep the answer. The stress
 // tool's own failure path (a wrong certified answer ⇒ exit 1) is proven by the CTest stress_report_fault.
@@ -7,10 +7,10 @@
 #include <cmath>
 #include <set>
 
-#include "exact/closure.h"
-#include "exact/equilibrium.h"
-#include "exact/generators.h"
-#include "exact/stress_families.h"
+#include "exact/statics/closure.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/statics/generators.h"
+#include "testing/stress_families.h"
 #include "fuzz/families.h"
 #include "tests/test_support.h"
 

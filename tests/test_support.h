@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "exact/scene.h"
+#include "exact/io/scene.h"
 
 namespace wrenchkit::test {
 

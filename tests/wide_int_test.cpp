@@ -1,4 +1,4 @@
-// The exact kernel's fixed-width integer arithmetic (exact/wide_int.h) and its integer rows
+// The exact kernel's fixed-width integer arithmetic (exact/numbers/wide_int.h) and its integer rows
 // (Exact_kernel from a scene), against GMP: random entries of every bit length and sign, the extreme
 // magnitudes ±(2^62 − 1), exactly dependent rows, and random scenes whose numbers range from short
 // decimals to 30-digit fractions. Seeds fixed, overridable by WRENCHKIT_SEED.
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "exact/generators.h"
-#include "exact/wide_int.h"
+#include "exact/statics/generators.h"
+#include "exact/numbers/wide_int.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {

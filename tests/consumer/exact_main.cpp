@@ -3,11 +3,11 @@
 #include <cstdio>
 #include <string>
 
-#include "exact/closure.h"
-#include "exact/equilibrium.h"
-#include "exact/scene.h"
+#include "exact/statics/closure.h"
+#include "exact/statics/equilibrium.h"
+#include "exact/io/scene.h"
 #include "proofs/checker/checker.h"
-#include "wrenchkit/exact/limits.h"  // the same headers under wrenchkit/ work too
+#include "wrenchkit/exact/numbers/limits.h"  // the same headers under wrenchkit/ work too
 
 int main() {
   // Two fingers at (0, 1/2) and (1, 1/2) with mu = 1/10: force closure, not form closure.

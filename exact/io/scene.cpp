@@ -1,0 +1,336 @@
+#include "exact/io/scene.h"
+
+#include <initializer_list>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include "exact/io/input_error.h"
+#include "exact/io/json.h"
+
+namespace wrenchkit {
+namespace {
+
+using json::Type;
+using json::Value;
+
+class Reader {
+ public:
+  Reader(const Input_limits& limits, bool lazy) : limits_(limits), lazy_(lazy) {}
+
+  Scene scene(const Value& root) {
+    expect(root, Type::object, "scene", "an object");
+    keys(root, "", {"wrenchkit", "name", "body", "contacts", "load", "support"});
+    const Value* version = root.find("wrenchkit");
+    if (!version) fail("scene", "missing key \"wrenchkit\" (the format version, 1)");
+    if (number(*version, "wrenchkit") != 1)
+      fail("wrenchkit", display(*version) + " is not a supported format version (only 1)");
+    Scene s;
+    if (const Value* v = root.find("name")) {
+      expect(*v, Type::string, "name", "a string");
+      s.name = v->text;
+    }
+    if (const Value* v = root.find("body")) s.body = body(*v);
+    if (const Value* v = root.find("contacts")) {
+      expect(*v, Type::array, "contacts", "an array");
+      if (v->items.size() > limits_.max_contacts)
+        fail("contacts", "has " + std::to_string(v->items.size()) + " entries, more than the limit " +
+                             std::to_string(limits_.max_contacts) + " (--max-contacts)");
+      s.contacts.reserve(v->items.size());  // no reallocation: Contact's rationals would be copied
+      for (std::size_t i = 0; i < v->items.size(); ++i)
+        s.contacts.push_back(contact(v->items[i], "contacts[" + std::to_string(i) + "]"));
+    }
+    if (const Value* v = root.find("load")) s.load = load(*v, s.body);
+    if (const Value* v = root.find("support")) s.support = support(*v);
+    return s;
+  }
+
+ private:
+  const Input_limits& limits_;
+  bool lazy_;
+
+  [[noreturn]] static void fail(const std::string& path, const std::string& what) {
+    throw Input_error(path + ": " + what);
+  }
+
+  static std::string join(const std::string& path, const char* key) {
+    return path.empty() ? std::string(key) : path + "." + key;
+  }
+
+  // The offending text as the user wrote it, shortened.
+  static std::string display(const Value& v) {
+    std::string t;
+    switch (v.type) {
+      case Type::string: t = json::quote(v.text); break;
+      case Type::number: t = v.text; break;
+      default: return json::type_name(v.type);
+    }
+    if (t.size() > 48) t = t.substr(0, 40) + "… (" + std::to_string(t.size()) + " characters)";
+    return t;
+  }
+
+  static void expect(const Value& v, Type t, const std::string& path, const char* what) {
+    if (v.type != t) fail(path, std::string("expected ") + what + ", got " + json::type_name(v.type));
+  }
+
+  static void keys(const Value& obj, const std::string& path,
+                   std::initializer_list<const char*> allowed) {
+    for (const auto& m : obj.members) {
+      bool ok = false;
+      for (const char* a : allowed) ok |= m.first == a;
+      if (!ok) fail(path.empty() ? "scene" : path, "unknown key " + json::quote(m.first));
+    }
+  }
+
+  static const Value& required(const Value& obj, const std::string& path, const char* key) {
+    const Value* v = obj.find(key);
+    if (!v) fail(path, std::string("missing key \"") + key + "\"");
+    return *v;
+  }
+
+  Rational number(const Value& v, const std::string& path, fl::Bounded* approx = nullptr) const {
+    if (v.type != Type::number && v.type != Type::string)
+      fail(path, std::string("expected a number, got ") + json::type_name(v.type));
+    std::string why;
+    auto q = parse_rational(v.text, v.type == Type::number, limits_, why, approx);
+    if (!q) {
+      if (why == "has more digits than the digit limit")
+        why = "has more than " + std::to_string(limits_.max_digits) + " digits (--max-digits)";
+      else if (why == "has more digits than the digit limit when written out exactly")
+        why = "has more than " + std::to_string(limits_.max_digits) +
+              " digits written out as an exact integer or fraction (--max-digits)";
+      else if (why == "has an exponent beyond the exponent limit")
+        why = "has an exponent beyond ±" + std::to_string(limits_.max_exponent) + " (--max-exponent)";
+      fail(path, display(v) + " " + why);
+    }
+    return std::move(*q);
+  }
+
+  // Lazy reading of one contact number: validated and turned into a certified double and an exact
+  // sign from its digits; its text is kept for exact_contact().
+  int lazy_number(const Value& v, const std::string& path, Contact& c, int slot, fl::Bounded& approx) const {
+    if (v.type != Type::number && v.type != Type::string)
+      fail(path, std::string("expected a number, got ") + json::type_name(v.type));
+    std::string why;
+    int sign = 0;
+    if (!scan_number(v.text, v.type == Type::number, limits_, why, approx, sign)) {
+      number(v, path);  // the same message as the exact reading
+    }
+    c.number_text[slot] = v.text;
+    c.number_is_json[slot] = v.type == Type::number;
+    return sign;
+  }
+
+  const Value& pair_item(const Value& v, const std::string& path, std::size_t n, std::size_t i) const {
+    if (v.type != Type::array || v.items.size() != n)
+      fail(path, std::string("expected an array of ") + (n == 2 ? "2 numbers" : "3 numbers [fx, fy, m]") + ", got " +
+                     (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
+                                            : std::string(json::type_name(v.type))));
+    return v.items[i];
+  }
+
+  Rational nonnegative(const Value& v, const std::string& path, fl::Bounded* approx = nullptr) const {
+    Rational q = number(v, path, approx);
+    if (q < 0) fail(path, display(v) + " is negative (must be >= 0)");
+    return q;
+  }
+
+  Vec2 vec2(const Value& v, const std::string& path, fl::Bounded* approx2 = nullptr) const {
+    if (v.type != Type::array || v.items.size() != 2)
+      fail(path, std::string("expected an array of 2 numbers, got ") +
+                     (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
+                                            : std::string(json::type_name(v.type))));
+    return {number(v.items[0], path + "[0]", approx2), number(v.items[1], path + "[1]", approx2 ? approx2 + 1 : nullptr)};
+  }
+
+  Wrench wrench3(const Value& v, const std::string& path, fl::Bounded* approx3 = nullptr) const {
+    if (v.type != Type::array || v.items.size() != 3)
+      fail(path, std::string("expected an array of 3 numbers [fx, fy, m], got ") +
+                     (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
+                                            : std::string(json::type_name(v.type))));
+    return {number(v.items[0], path + "[0]", approx3), number(v.items[1], path + "[1]", approx3 ? approx3 + 1 : nullptr),
+            number(v.items[2], path + "[2]", approx3 ? approx3 + 2 : nullptr)};
+  }
+
+  Body body(const Value& v) const {
+    expect(v, Type::object, "body", "an object");
+    keys(v, "body", {"outline", "com"});
+    Body b;
+    if (const Value* o = v.find("outline")) {
+      expect(*o, Type::array, "body.outline", "an array of points");
+      for (std::size_t i = 0; i < o->items.size(); ++i)
+        b.outline.push_back(vec2(o->items[i], "body.outline[" + std::to_string(i) + "]"));
+    }
+    if (const Value* c = v.find("com")) b.com = vec2(*c, "body.com");
+    return b;
+  }
+
+  Contact contact(const Value& v, const std::string& path) const {
+    expect(v, Type::object, path, "an object");
+    Contact c;
+    if (const Value* n = v.find("name")) {
+      expect(*n, Type::string, path + ".name", "a string");
+      c.name = n->text;
+    }
+    if (lazy_) return lazy_contact(v, path, std::move(c));
+    if (v.find("wrench")) {
+      keys(v, path, {"wrench", "name"});
+      c.kind = Contact::Kind::wrench;
+      fl::Bounded w[3];
+      c.wrench = wrench3(*v.find("wrench"), path + ".wrench", w);
+      if (c.wrench.fx == 0 && c.wrench.fy == 0 && c.wrench.m == 0)
+        fail(path + ".wrench", "zero wrench");
+      c.twin.is_wrench = true;
+      c.twin.fx = w[0];
+      c.twin.fy = w[1];
+      c.twin.m = w[2];
+      c.has_twin = true;
+      return c;
+    }
+    keys(v, path, {"at", "normal", "mu", "name"});
+    c.kind = Contact::Kind::point;
+    fl::Bounded at[2], n[2];
+    c.at = vec2(required(v, path, "at"), path + ".at", at);
+    c.normal = vec2(required(v, path, "normal"), path + ".normal", n);
+    if (c.normal.x == 0 && c.normal.y == 0) fail(path + ".normal", "zero vector");
+    if (const Value* mu = v.find("mu")) c.mu = nonnegative(*mu, path + ".mu", &c.twin.mu);
+    c.twin.ax = at[0];
+    c.twin.ay = at[1];
+    c.twin.nx = n[0];
+    c.twin.ny = n[1];
+    c.twin.frictional = c.mu != 0;  // decided exactly
+    c.has_twin = true;
+    return c;
+  }
+
+  // The lazy twin of contact(): the same checks in the same order, on exact signs.
+  Contact lazy_contact(const Value& v, const std::string& path, Contact c) const {
+    c.exact_pending = true;
+    c.has_twin = true;
+    if (v.find("wrench")) {
+      keys(v, path, {"wrench", "name"});
+      c.kind = Contact::Kind::wrench;
+      c.twin.is_wrench = true;
+      const Value& w = *v.find("wrench");
+      const std::string wp = path + ".wrench";
+      fl::Bounded* out[3] = {&c.twin.fx, &c.twin.fy, &c.twin.m};
+      int nonzero = 0;
+      for (int i = 0; i < 3; ++i)
+        nonzero |= lazy_number(pair_item(w, wp, 3, i), wp + "[" + std::to_string(i) + "]", c, i, *out[i]);
+      if (!nonzero) fail(wp, "zero wrench");
+      return c;
+    }
+    keys(v, path, {"at", "normal", "mu", "name"});
+    c.kind = Contact::Kind::point;
+    const Value& at = required(v, path, "at");
+    const std::string ap = path + ".at";
+    lazy_number(pair_item(at, ap, 2, 0), ap + "[0]", c, 0, c.twin.ax);
+    lazy_number(pair_item(at, ap, 2, 1), ap + "[1]", c, 1, c.twin.ay);
+    const Value& n = required(v, path, "normal");
+    const std::string np = path + ".normal";
+    const int sx = lazy_number(pair_item(n, np, 2, 0), np + "[0]", c, 2, c.twin.nx);
+    const int sy = lazy_number(pair_item(n, np, 2, 1), np + "[1]", c, 3, c.twin.ny);
+    if (sx == 0 && sy == 0) fail(np, "zero vector");
+    int smu = 0;
+    c.number_text[4] = "0";
+    c.number_is_json[4] = true;
+    c.twin.mu = fl::Bounded::exact(0);
+    if (const Value* mu = v.find("mu")) {
+      smu = lazy_number(*mu, path + ".mu", c, 4, c.twin.mu);
+      if (smu < 0) fail(path + ".mu", display(*mu) + " is negative (must be >= 0)");
+    }
+    c.twin.frictional = smu != 0;
+    return c;
+  }
+
+  Load load(const Value& v, const Body& body) const {
+    expect(v, Type::object, "load", "an object");
+    Load l;
+    if (v.find("gravity")) {
+      keys(v, "load", {"gravity"});
+      const Value& g = *v.find("gravity");
+      l.kind = Load::Kind::gravity;
+      l.weight = number(g, "load.gravity");
+      if (l.weight <= 0) fail("load.gravity", display(g) + " is not positive (a weight must be > 0)");
+      if (!body.com) fail("load.gravity", "needs body.com (the point where the weight acts)");
+    } else if (v.find("wrench")) {
+      keys(v, "load", {"wrench"});
+      l.kind = Load::Kind::wrench;
+      l.wrench = wrench3(*v.find("wrench"), "load.wrench");
+    } else if (v.find("force") || v.find("at")) {
+      keys(v, "load", {"force", "at"});
+      l.kind = Load::Kind::force;
+      l.force = vec2(required(v, "load", "force"), "load.force");
+      l.at = vec2(required(v, "load", "at"), "load.at");
+    } else {
+      keys(v, "load", {});
+      fail("load", "expected one of {\"force\", \"at\"}, {\"wrench\"} or {\"gravity\"}");
+    }
+    return l;
+  }
+
+  Support support(const Value& v) const {
+    expect(v, Type::object, "support", "an object");
+    keys(v, "support", {"mu", "points"});
+    Support s;
+    if (const Value* mu = v.find("mu")) s.mu = nonnegative(*mu, "support.mu");
+    const Value& pts = required(v, "support", "points");
+    expect(pts, Type::array, "support.points", "an array");
+    if (pts.items.empty()) fail("support.points", "empty (a support needs at least one point)");
+    if (pts.items.size() > limits_.max_contacts)
+      fail("support.points", "has more entries than the limit " +
+                                 std::to_string(limits_.max_contacts) + " (--max-contacts)");
+    bool any_force = false;
+    s.points.reserve(pts.items.size());
+    for (std::size_t i = 0; i < pts.items.size(); ++i) {
+      const std::string path = "support.points[" + std::to_string(i) + "]";
+      const Value& p = pts.items[i];
+      expect(p, Type::object, path, "an object");
+      keys(p, path, {"at", "force", "mu"});
+      Support_point sp;
+      sp.at = vec2(required(p, path, "at"), path + ".at");
+      sp.force = nonnegative(required(p, path, "force"), path + ".force");
+      if (const Value* mu = p.find("mu")) sp.mu = nonnegative(*mu, path + ".mu");
+      if (!sp.mu && !s.mu) fail(path, "missing key \"mu\" (and support.mu gives no default)");
+      any_force |= sp.force > 0;
+      s.points.push_back(std::move(sp));
+    }
+    if (!any_force) fail("support.points", "all forces are zero");
+    return s;
+  }
+};
+
+}  // namespace
+
+Contact exact_contact(const Contact& c) {
+  if (!c.exact_pending) return c;
+  Contact e = c;
+  Input_limits unlimited;  // the texts were validated against the caller's limits already
+  unlimited.max_digits = static_cast<std::size_t>(-1);
+  unlimited.max_exponent = std::numeric_limits<long>::max();
+  auto q = [&](int slot) {
+    std::string why;
+    auto r = parse_rational(c.number_text[slot], c.number_is_json[slot], unlimited, why);
+    if (!r) throw std::logic_error("exact_contact: a validated number no longer parses");
+    return *r;
+  };
+  if (c.kind == Contact::Kind::wrench) {
+    e.wrench = {q(0), q(1), q(2)};
+  } else {
+    e.at = {q(0), q(1)};
+    e.normal = {q(2), q(3)};
+    e.mu = q(4);
+  }
+  e.exact_pending = false;
+  return e;
+}
+
+Scene read_scene(std::string_view json_text, const Input_limits& limits, std::string_view source, bool lazy) {
+  if (json_text.size() > limits.max_file_bytes)
+    throw Input_error(std::string(source) + ": larger than the size limit of " +
+                      std::to_string(limits.max_file_bytes) + " bytes (--max-file-size)");
+  const json::Value root = json::parse(json_text, limits, source);
+  return Reader(limits, lazy).scene(root);
+}
+
+}  // namespace wrenchkit

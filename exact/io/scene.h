@@ -1,0 +1,87 @@
+// The scene model (interface.md §1, docs/scene-format.md): every number an exact rational.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "exact/numbers/limits.h"
+#include "exact/numbers/rational.h"
+#include "float/closure_twin.h"
+
+namespace wrenchkit {
+
+struct Vec2 {
+  Rational x, y;
+};
+
+// A planar wrench (fx, fy, m), m about the origin (theory.md §1.2).
+struct Wrench {
+  Rational fx, fy, m;
+};
+
+struct Contact {
+  enum class Kind { point, wrench };
+  Kind kind = Kind::point;
+  Vec2 at;          // point contact: the contact point
+  Vec2 normal;      // point contact: inward normal, nonzero, any length
+  Rational mu;      // point contact: Coulomb coefficient ≥ 0 (0 = frictionless)
+  Wrench wrench;    // wrench generator: nonzero
+  std::string name;
+  // The same contact as certified doubles for the float twin [FL-4], computed by read_scene from
+  // the digits; `has_twin` false (a scene built in code) means: derive it from the rationals.
+  fl::Bounded_contact twin;
+  bool has_twin = false;
+  // Lazy reading (read_scene(…, lazy = true)): the rationals above are NOT filled; the numbers'
+  // texts are kept (point: at x, at y, normal x, normal y, mu; wrench: fx, fy, m) and
+  // exact_contact() builds them when exact arithmetic is needed. Validation was exact all the same.
+  bool exact_pending = false;
+  std::array<std::string, 5> number_text;
+  std::array<bool, 5> number_is_json{};
+};
+
+// The contact with its rationals filled (a copy when it was read lazily).
+Contact exact_contact(const Contact& c);
+
+struct Load {
+  enum class Kind { force, wrench, gravity };
+  Kind kind = Kind::force;
+  Vec2 force, at;   // force at a point
+  Wrench wrench;    // a wrench
+  Rational weight;  // gravity: weight > 0 at body.com, acting in −y
+};
+
+struct Support_point {
+  Vec2 at;
+  Rational force;               // normal force ≥ 0
+  std::optional<Rational> mu;   // own coefficient, else support.mu
+};
+
+struct Support {
+  std::optional<Rational> mu;
+  std::vector<Support_point> points;
+};
+
+struct Body {
+  std::vector<Vec2> outline;
+  std::optional<Vec2> com;
+};
+
+struct Scene {
+  std::string name;
+  Body body;
+  std::vector<Contact> contacts;
+  std::optional<Load> load;
+  std::optional<Support> support;
+};
+
+// Reads and validates a scene. Throws Input_error naming the JSON path and the offending text
+// (or "SOURCE:LINE:COL: invalid JSON: …"). `source` names the input in messages.
+// `lazy`: contacts keep their numbers as text and certified doubles (for the float twin) and build
+// rationals only on demand (exact_contact); same validation, same errors.
+Scene read_scene(std::string_view json_text, const Input_limits& limits,
+                 std::string_view source = "scene", bool lazy = false);
+
+}  // namespace wrenchkit

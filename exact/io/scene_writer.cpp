@@ -1,0 +1,71 @@
+#include "exact/io/scene_writer.h"
+
+#include <optional>
+
+#include "exact/io/json.h"
+
+namespace wrenchkit {
+
+namespace {
+
+std::string q(const Rational& r) { return json::quote(to_string(r)); }
+std::string pt(const Vec2& p) { return "[" + q(p.x) + ", " + q(p.y) + "]"; }
+
+}  // namespace
+
+std::string write_scene(const Scene& s) {
+  std::string o = "{\"wrenchkit\": 1";
+  if (!s.name.empty()) o += ", \"name\": " + json::quote(s.name);
+  if (!s.body.outline.empty() || s.body.com) {
+    o += ", \"body\": {";
+    std::string sep;
+    if (!s.body.outline.empty()) {
+      o += "\"outline\": [";
+      for (std::size_t i = 0; i < s.body.outline.size(); ++i) o += (i ? ", " : "") + pt(s.body.outline[i]);
+      o += "]";
+      sep = ", ";
+    }
+    if (s.body.com) o += sep + "\"com\": " + pt(*s.body.com);
+    o += "}";
+  }
+  o += ",\n \"contacts\": [";
+  for (std::size_t i = 0; i < s.contacts.size(); ++i) {
+    std::optional<Contact> built;
+    if (s.contacts[i].exact_pending) built = exact_contact(s.contacts[i]);
+    const Contact& c = built ? *built : s.contacts[i];
+    o += i ? ",\n  " : "\n  ";
+    if (c.kind == Contact::Kind::wrench)
+      o += "{\"wrench\": [" + q(c.wrench.fx) + ", " + q(c.wrench.fy) + ", " + q(c.wrench.m) + "]";
+    else
+      o += "{\"at\": " + pt(c.at) + ", \"normal\": " + pt(c.normal) + ", \"mu\": " + q(c.mu);
+    if (!c.name.empty()) o += ", \"name\": " + json::quote(c.name);
+    o += "}";
+  }
+  o += "]";
+  if (s.load) {
+    const Load& l = *s.load;
+    o += ",\n \"load\": ";
+    switch (l.kind) {
+      case Load::Kind::force: o += "{\"force\": " + pt(l.force) + ", \"at\": " + pt(l.at) + "}"; break;
+      case Load::Kind::wrench:
+        o += "{\"wrench\": [" + q(l.wrench.fx) + ", " + q(l.wrench.fy) + ", " + q(l.wrench.m) + "]}";
+        break;
+      case Load::Kind::gravity: o += "{\"gravity\": " + q(l.weight) + "}"; break;
+    }
+  }
+  if (s.support) {
+    o += ",\n \"support\": {";
+    if (s.support->mu) o += "\"mu\": " + q(*s.support->mu) + ", ";
+    o += "\"points\": [";
+    for (std::size_t i = 0; i < s.support->points.size(); ++i) {
+      const Support_point& p = s.support->points[i];
+      o += (i ? ", " : "") + std::string("{\"at\": ") + pt(p.at) + ", \"force\": " + q(p.force);
+      if (p.mu) o += ", \"mu\": " + q(*p.mu);
+      o += "}";
+    }
+    o += "]}";
+  }
+  return o + "}\n";
+}
+
+}  // namespace wrenchkit

@@ -1,0 +1,15 @@
+// [FL-4] Handing an exact scene to the float twin: every rational becomes a double with a
+// certified bound on its conversion error (0 when the rational is exactly a double, as 1/2 is and
+// 0.1 is not). So a certified float answer is the exact answer for the scene as written.
+#pragma once
+
+#include <vector>
+
+#include "exact/io/scene.h"
+#include "float/closure_twin.h"
+
+namespace wrenchkit {
+
+std::vector<fl::Bounded_contact> to_bounded(const Scene& scene);
+
+}  // namespace wrenchkit

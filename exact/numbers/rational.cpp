@@ -1,0 +1,221 @@
+#include "exact/numbers/rational.h"
+
+#include <cctype>
+#include <cmath>
+#include <optional>
+#include <string>
+
+namespace wrenchkit {
+namespace {
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// Consumes [0-9]* from s at i; returns the count.
+std::size_t digits(std::string_view s, std::size_t& i) {
+  const std::size_t start = i;
+  while (i < s.size() && is_digit(s[i])) ++i;
+  return i - start;
+}
+
+Integer integer_of(std::string_view ds) {
+  // ds is a non-empty digit string (already length-limited by the caller).
+  return Integer(std::string(ds), 10);
+}
+
+}  // namespace
+
+fl::Bounded to_bounded(const Rational& q) {
+  const double v = q.get_d();  // truncation toward zero: |q − v| < ulp(v)
+  if (!std::isfinite(v)) return {v, fl::Bounded::kInf};
+  if (Rational(v) == q) return {v, 0.0};
+  if (std::fabs(v) < fl::Bounded::kUnderflow) return {v, fl::Bounded::kInf};
+  return {v, std::fabs(v) * 0x1p-51};
+}
+
+namespace {
+
+// The grammar, the limits, the certified double and the exact sign of a number; the exact value
+// into `out` unless `out` is null and the digits make it unnecessary (then `*exact_skipped`).
+bool parse_impl(std::string_view s, bool json_number, const Input_limits& limits, std::string& why,
+                fl::Bounded* approx, Rational* out, int* sign) {
+  auto fail = [&why](const char* reason) {
+    why = reason;
+    return false;
+  };
+  std::size_t i = 0;
+  bool negative = false;
+  if (i < s.size() && (s[i] == '-' || (!json_number && s[i] == '+'))) {
+    negative = s[i] == '-';
+    ++i;
+  }
+  const std::size_t int_start = i;
+  const std::size_t int_digits = digits(s, i);
+  const std::string_view int_part = s.substr(int_start, int_digits);
+
+  // Fraction p/q (strings only).
+  if (!json_number && i < s.size() && s[i] == '/') {
+    if (int_digits == 0) return fail("is not a number");
+    ++i;
+    const std::size_t den_start = i;
+    const std::size_t den_digits = digits(s, i);
+    if (den_digits == 0 || i != s.size()) return fail("is not a number");
+    if (int_digits + den_digits > limits.max_digits)
+      return fail("has more digits than the digit limit");
+    Integer den = integer_of(s.substr(den_start, den_digits));
+    if (den == 0) return fail("has a zero denominator");
+    Rational q(integer_of(int_part), den);
+    q.canonicalize();
+    if (negative) q = -q;
+    if (approx) *approx = to_bounded(q);
+    if (sign) *sign = sgn(q);
+    if (out) *out = std::move(q);
+    return true;
+  }
+
+  std::string_view frac_part;
+  bool had_point = false;
+  if (i < s.size() && s[i] == '.') {
+    had_point = true;
+    ++i;
+    const std::size_t f_start = i;
+    const std::size_t f_digits = digits(s, i);
+    frac_part = s.substr(f_start, f_digits);
+  }
+  if (int_digits == 0 && frac_part.empty()) return fail("is not a number");
+  if (json_number) {
+    // JSON: int part required, no leading zeros, a point needs digits after it.
+    if (int_digits == 0 || (int_digits > 1 && int_part[0] == '0') ||
+        (had_point && frac_part.empty()))
+      return fail("is not a number");
+  }
+  long exponent = 0;
+  std::size_t exponent_digits = 0;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    bool exp_negative = false;
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) {
+      exp_negative = s[i] == '-';
+      ++i;
+    }
+    const std::size_t e_start = i;
+    const std::size_t e_digits = digits(s, i);
+    if (e_digits == 0) return fail("is not a number");
+    exponent_digits = e_digits;
+    std::size_t k = e_start;
+    while (k < i && s[k] == '0') ++k;  // leading zeros
+    if (i - k > 18) return fail("has an exponent beyond the exponent limit");
+    for (; k < i; ++k) exponent = exponent * 10 + (s[k] - '0');
+    if (exponent > limits.max_exponent)
+      return fail("has an exponent beyond the exponent limit");
+    if (exp_negative) exponent = -exponent;
+  }
+  if (i != s.size()) return fail("is not a number");
+  // The digit limit counts every digit of the text, exponent included (as the checker does).
+  if (int_digits + frac_part.size() + exponent_digits > limits.max_digits)
+    return fail("has more digits than the digit limit");
+
+  const long scale = exponent - static_cast<long>(frac_part.size());
+  std::size_t lead = 0;  // leading zeros of the mantissa digits
+  while (lead < int_part.size() && int_part[lead] == '0') ++lead;
+  if (lead == int_part.size()) {
+    std::size_t f = 0;
+    while (f < frac_part.size() && frac_part[f] == '0') ++f;
+    lead += f;
+  }
+  const std::size_t significant = int_part.size() + frac_part.size() - lead;
+  // The value written out counts too: m·10^scale as an integer (significant + scale digits) or as
+  // m/10^k before reduction (significant + k + 1), so that a scene's canonical text (exact/scene_writer:
+  // "p/q" in lowest terms, no exponent) reads back under the same limits. Found by fuzz_scene_parser:
+  // "1e200" was accepted at --max-digits 200 and its 201-digit canonical text was not. (The checker agrees.)
+  if (significant > 0) {
+    const std::size_t k = static_cast<std::size_t>(scale < 0 ? -scale : scale);
+    if (significant + k + (scale < 0 ? 1 : 0) > limits.max_digits)
+      return fail("has more digits than the digit limit when written out exactly");
+  }
+  bool approx_done = false;
+  // Fast path: at most 18 significant digits and |scale| ≤ 18 fit in 64-bit integers (the value is
+  // m·10^scale with m < 10^18 and 10^|scale| ≤ 10^18), so no string-to-GMP conversion is needed.
+  const bool fast = significant <= 18 && scale >= -18 && scale <= 18 && (scale <= 0 || significant + scale <= 18);
+  unsigned long m = 0, p = 1;
+  if (fast) {
+    for (char c : int_part) m = m * 10 + static_cast<unsigned long>(c - '0');
+    for (char c : frac_part) m = m * 10 + static_cast<unsigned long>(c - '0');
+    for (long k = 0; k < (scale < 0 ? -scale : scale); ++k) p *= 10;
+    if (sign) *sign = m == 0 ? 0 : (negative ? -1 : 1);
+    // The certified double straight from the digits: m < 2^53 and p = 10^k ≤ 10^15 < 2^53 are
+    // exact doubles, so one correctly rounded operation gives v, and fma gives its exact error
+    // (the value lies in [10^-18, 10^18], far from underflow and overflow). [FL-4]
+    if (approx && m < (1ul << 53) && p <= 1000000000000000ul) {
+      const double dm = static_cast<double>(m), dp = static_cast<double>(p);
+      if (scale >= 0) {
+        const double v = dm * dp;
+        *approx = {v, std::fabs(std::fma(dm, dp, -v))};  // exact rounding error of the product
+      } else {
+        const double v = dm / dp;
+        const double rem = std::fma(-v, dp, dm);  // m − v·p, exact for a correctly rounded quotient
+        // |m/p − v| = |rem|/p; the division rounds, so inflate (or 0 when exact).
+        *approx = {v, rem == 0 ? 0.0 : (std::fabs(rem) / dp) * fl::Bounded::kInflate};
+      }
+      if (negative) approx->v = -approx->v;
+      approx_done = true;
+    }
+    if (approx_done && !out) return true;  // double and sign from the digits: no rational at all
+  }
+  std::optional<Rational> local;  // the exact value goes straight into *out when there is one
+  Rational& q = out ? *out : local.emplace();
+  if (fast) {
+    if (scale >= 0) {
+      mpz_set_ui(mpq_numref(q.get_mpq_t()), m * p);
+      mpz_set_ui(mpq_denref(q.get_mpq_t()), 1);
+    } else {
+      mpq_set_ui(q.get_mpq_t(), m, p);
+      q.canonicalize();
+    }
+  } else {
+    std::string mantissa;
+    mantissa.reserve(int_digits + frac_part.size());
+    mantissa.append(int_part);
+    mantissa.append(frac_part);
+    const Integer mi = integer_of(mantissa);
+    if (mi == 0) {
+      q = 0;
+    } else if (scale >= 0) {
+      Integer pw;
+      mpz_ui_pow_ui(pw.get_mpz_t(), 10, static_cast<unsigned long>(scale));
+      q = Rational(mi * pw);
+    } else {
+      Integer pw;
+      mpz_ui_pow_ui(pw.get_mpz_t(), 10, static_cast<unsigned long>(-scale));
+      q = Rational(mi, pw);
+      q.canonicalize();
+    }
+  }
+  if (negative) mpq_neg(q.get_mpq_t(), q.get_mpq_t());
+  if (approx && !approx_done) *approx = to_bounded(q);
+  if (sign && !approx_done) *sign = sgn(q);
+  return true;
+}
+
+}  // namespace
+
+std::optional<Rational> parse_rational(std::string_view s, bool json_number, const Input_limits& limits,
+                                       std::string& why, fl::Bounded* approx) {
+  Rational q;
+  if (!parse_impl(s, json_number, limits, why, approx, &q, nullptr)) return std::nullopt;
+  return q;
+}
+
+bool parse_rational_into(std::string_view s, bool json_number, const Input_limits& limits, std::string& why,
+                         Rational& out, fl::Bounded* approx) {
+  return parse_impl(s, json_number, limits, why, approx, &out, nullptr);
+}
+
+bool scan_number(std::string_view s, bool json_number, const Input_limits& limits, std::string& why,
+                 fl::Bounded& approx, int& sign) {
+  return parse_impl(s, json_number, limits, why, &approx, nullptr, &sign);
+}
+
+
+std::string to_string(const Rational& q) { return q.get_str(10); }
+
+}  // namespace wrenchkit

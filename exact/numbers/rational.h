@@ -1,0 +1,47 @@
+// Exact rationals (GMP's mpq_class, the exact number type CGAL's Epeck uses with CGAL_USE_GMPXX)
+// and their exact reading from decimal or fraction text (docs/scene-format.md, "Numbers").
+#pragma once
+
+#include <gmpxx.h>
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "exact/numbers/limits.h"
+#include "float/bounded.h"
+
+namespace wrenchkit {
+
+using Rational = mpq_class;
+using Integer = mpz_class;
+
+// Reads `text` exactly. `json_number` selects JSON's number grammar (text of a JSON number token);
+// otherwise the string grammar (decimal with optional exponent, or p/q). On failure returns
+// nullopt and sets `why` to a short reason ("is not a number", "has more than 10000 digits", …).
+// With `approx`, also sets it to a double with a certified bound on its distance to the exact value
+// [FL-4], computed from the digits when they are short (no rational arithmetic), else from the
+// rational.
+std::optional<Rational> parse_rational(std::string_view text, bool json_number,
+                                       const Input_limits& limits, std::string& why,
+                                       fl::Bounded* approx = nullptr);
+
+// parse_rational into an existing Rational (the streaming scene reader reuses its storage); the
+// same grammar, limits, value, certified double and reasons. `out` is unspecified on failure.
+bool parse_rational_into(std::string_view text, bool json_number, const Input_limits& limits, std::string& why,
+                         Rational& out, fl::Bounded* approx = nullptr);
+
+// Validates `text` exactly as parse_rational does and returns its certified double and its exact
+// sign (−1, 0, 1), building no rational when the digits are short enough to avoid it (≤ 18
+// significant digits, |scale| ≤ 15). For the lazy scene reading of the float path.
+bool scan_number(std::string_view text, bool json_number, const Input_limits& limits, std::string& why,
+                 fl::Bounded& approx, int& sign);
+
+// |q − v| ≤ e: v is q rounded toward zero; e = 0 if exact, 2^-51·|v| otherwise (one ulp of a
+// normal double is at most 2^-52·|v|), +∞ if q is outside the normal range of doubles. [FL-4]
+fl::Bounded to_bounded(const Rational& q);
+
+// Lowest terms, "p" or "p/q" (q > 0): the JSON output form of interface.md §3.
+std::string to_string(const Rational& q);
+
+}  // namespace wrenchkit

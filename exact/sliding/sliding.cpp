@@ -1,0 +1,154 @@
+// Planar sliding quantities [LS-4]; derivation in proofs/notes/LS-3-queries.md.
+#include "exact/sliding/sliding.h"
+
+#include <stdexcept>
+
+namespace wrenchkit {
+
+std::pair<Rational, Rational> sqrt_bracket(const Rational& s, int bits) {
+  if (s < 0) throw std::invalid_argument("sqrt_bracket: negative argument");
+  if (s == 0) return {Rational(0), Rational(0)};
+  const Integer& p = s.get_num();
+  const Integer& q = s.get_den();
+  // √(p/q) = √(p q)/q; scale by 2^B so the floor of the integer root is accurate to 2^-B/q.
+  const unsigned long B = static_cast<unsigned long>(bits) + mpz_sizeinbase(q.get_mpz_t(), 2);
+  Integer x = p * q, r;
+  mpz_mul_2exp(x.get_mpz_t(), x.get_mpz_t(), 2 * B);
+  mpz_sqrt(r.get_mpz_t(), x.get_mpz_t());
+  Integer den = q;
+  mpz_mul_2exp(den.get_mpz_t(), den.get_mpz_t(), B);
+  Rational lo(r, den), hi(r + (r * r == x ? 0 : 1), den);
+  lo.canonicalize();
+  hi.canonicalize();
+  return {lo, hi};
+}
+
+Twist_class classify_twist(const Ls_support& s, const Vec3q& q) {
+  Twist_class c;
+  if (s.points.empty()) {
+    c.text = "the limit surface is the single point 0 (no point has mu*force > 0)";
+    return c;
+  }
+  if (q[2] != 0) {
+    const Rational cx = -q[1] / q[2], cy = q[0] / q[2];
+    for (std::size_t i = 0; i < s.points.size(); ++i)
+      if (s.points[i].at.x == cx && s.points[i].at.y == cy) {
+        c.kind = Twist_kind::facet;
+        c.support_point = static_cast<int>(i);
+        c.text = std::string("rotation (") + (q[2] > 0 ? "counter-clockwise" : "clockwise") +
+                 ") about the support point (" + to_string(cx) + ", " + to_string(cy) +
+                 "): the load is a FACET of LS, that point's friction disc translated (theory.md §11.4)";
+        return c;
+      }
+    if (s.collinear) {
+      const Vec2& a = s.points[0].at;
+      const Vec2& b = s.points[1].at;
+      if ((b.x - a.x) * (cy - a.y) - (b.y - a.y) * (cx - a.x) == 0) {
+        c.kind = Twist_kind::vertex;
+        c.text = "the rotation centre lies on the line of the collinear support, between or beyond its points: "
+                 "a non-smooth point of LS (every centre on that arc of the line gives the same load)";
+        return c;
+      }
+    }
+    c.text = "rotation about (" + to_string(cx) + ", " + to_string(cy) + "), not a support point: one load";
+    return c;
+  }
+  if (s.collinear) {
+    const Vec2& a = s.points[0].at;
+    const Vec2& b = s.points[1].at;
+    if (q[0] * (b.x - a.x) + q[1] * (b.y - a.y) == 0) {
+      c.kind = Twist_kind::vertex;
+      c.text = "a translation perpendicular to the line of the collinear support (rotation centre at infinity "
+               "on that line): a non-smooth point of LS";
+      return c;
+    }
+  }
+  c.text = "a translation: the load is the force mu*f0 along v through the friction centroid";
+  return c;
+}
+
+Sliding_answer compute_sliding(const Polygonal_ls& model, const std::optional<Vec3q>& q) {
+  const Ls_support& s = model.support();
+  Sliding_answer a;
+  a.center_of_friction = {s.weighted_force_sum.x / s.total_force, s.weighted_force_sum.y / s.total_force};
+  Vec2 rho_r;
+  for (const Ls_point& p : s.points) {
+    a.mu_f0 += p.rho;
+    rho_r.x += p.rho * p.at.x;
+    rho_r.y += p.rho * p.at.y;
+  }
+  a.friction_centroid = a.mu_f0 > 0 ? Vec2{rho_r.x / a.mu_f0, rho_r.y / a.mu_f0} : a.center_of_friction;
+  if (!q) return a;
+  const Vec3q& t = *q;
+  if (t[0] == 0 && t[1] == 0 && t[2] == 0) throw std::invalid_argument("compute_sliding: zero twist");
+  a.has_twist = true;
+  a.twist = t;
+  a.translation = t[2] == 0;
+  a.cls = classify_twist(s, t);
+  if (a.translation) {
+    const Vec2& c = a.friction_centroid;
+    a.load_direction = {t[0], t[1], c.x * t[1] - c.y * t[0]};
+    a.speed_squared = t[0] * t[0] + t[1] * t[1];
+    const auto [lo, hi] = sqrt_bracket(a.speed_squared);
+    if (lo == hi) a.load = Vec3q{a.mu_f0 / lo * t[0], a.mu_f0 / lo * t[1], a.mu_f0 / lo * a.load_direction[2]};
+  } else {
+    a.rotation_center = {-t[1] / t[2], t[0] / t[2]};
+  }
+  a.h_inner = model.support_value(Side::inner, t);
+  a.h_outer = model.support_value(Side::outer, t);
+  a.inner_face = model.face(Side::inner, t);
+  a.outer_face = model.face(Side::outer, t);
+  for (int c = 0; c < 3; ++c) a.load_lo[c] = a.load_hi[c] = 0;
+  for (const Ls_point& p : s.points) {
+    const Rational vx = t[0] - t[2] * p.at.y, vy = t[1] + t[2] * p.at.x;
+    const Rational s2 = vx * vx + vy * vy;
+    if (s2 == 0) continue;  // the facet's own point: its disc, reported separately
+    const auto [lo, hi] = sqrt_bracket(s2);
+    a.h_lo += p.rho * lo;
+    a.h_hi += p.rho * hi;
+    const Vec3q comp = {p.rho * vx, p.rho * vy, p.rho * (p.at.x * vy - p.at.y * vx)};
+    for (int c = 0; c < 3; ++c) {
+      if (comp[c] >= 0) {
+        a.load_lo[c] += comp[c] / hi;
+        a.load_hi[c] += comp[c] / lo;
+      } else {
+        a.load_lo[c] += comp[c] / lo;
+        a.load_hi[c] += comp[c] / hi;
+      }
+    }
+  }
+  return a;
+}
+
+std::vector<fl::Support_point_twin> twin_support(const Ls_support& s) {
+  std::vector<fl::Support_point_twin> out;
+  out.reserve(s.points.size());
+  for (const Ls_point& p : s.points)
+    out.push_back({to_bounded(p.at.x), to_bounded(p.at.y), to_bounded(p.force), to_bounded(p.rho)});
+  return out;
+}
+
+Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mode, const Ls_polytope* inner,
+                              const Ls_polytope* outer) {
+  Motion_decision d;
+  if (mode != Mode::exact) {
+    const fl::Motion_answer f =
+        fl::classify_load(twin_support(model.support()), {to_bounded(p[0]), to_bounded(p[1]), to_bounded(p[2])});
+    d.cells = f.cells;
+    if (f.motion != fl::Motion_twin::undecided) {
+      d.motion = f.motion == fl::Motion_twin::sticks ? Motion::sticks : Motion::slides;
+      d.decided_by = "float";
+      d.witness = f.witness;
+      return d;
+    }
+    if (mode == Mode::float_only) return d;
+  }
+  std::optional<Ls_polytope> built_in, built_out;
+  if (!inner) inner = &built_in.emplace(model.build(Side::inner));
+  if (!outer) outer = &built_out.emplace(model.build(Side::outer));
+  d.motion = classify_load(model.gauge(*inner, Side::inner, p), model.gauge(*outer, Side::outer, p));
+  if (d.motion != Motion::undecided) d.decided_by = "polygons";
+  return d;
+}
+
+}  // namespace wrenchkit

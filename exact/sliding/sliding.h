@@ -1,0 +1,80 @@
+// Planar sliding quantities of a support (theory.md §10, §11.5) [LS-4].
+//
+// Sign convention (theory.md §1.5): a "load" is the wrench the slider applies to the support,
+// parallel to the sliding velocity; the friction wrench acting on the slider is its negative.
+//
+// * Centre of friction r₀ = Σ f_i r_i / Σ f_i (pressure centroid; exact).
+// * Translation (ω = 0, v ≠ 0): load = (Σρ_i / |v|)·(v_x, v_y, c × v), c = Σ ρ_i r_i / Σ ρ_i (= r₀ when
+//   μ is uniform): exact as a rational vector times 1/|v|, and exact outright when |v| is rational.
+// * Rotation (ω ≠ 0) about c: the load is a point of LS, or a FACET (a translated copy of the disc
+//   A_{r_i}(D_{ρ_i})) when c is a support point i. Exact bounds: the power h(q) ∈ [h_in(q), h_out(q)]
+//   from the polygonal surfaces (§12.3), their exact faces ∂h_in/out(q), and an exact rational box
+//   containing the true load (or the facet's centre), from rational brackets of each |v_i| (§11.5).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "exact/sliding/limit_surface.h"
+#include "core/mode.h"
+#include "float/limit_surface_twin.h"
+
+namespace wrenchkit {
+
+// Bracket of √s for a rational s ≥ 0: lo ≤ √s ≤ hi, hi − lo ≤ 2^-bits·max(1, √s) (exact rationals).
+std::pair<Rational, Rational> sqrt_bracket(const Rational& s, int bits = 80);
+
+// What a twist is on the TRUE limit surface (theory.md §11.4): the load is a facet (rotation about a
+// support point), a non-smooth point (collinear support, rotation centre on its line, or a
+// translation perpendicular to it), or a smooth point.
+enum class Twist_kind { facet, vertex, smooth };
+struct Twist_class {
+  Twist_kind kind = Twist_kind::smooth;
+  int support_point = -1;  // facet: index in the merged support
+  std::string text;        // one line for people
+};
+Twist_class classify_twist(const Ls_support& s, const Vec3q& q);
+
+struct Sliding_answer {
+  Vec2 center_of_friction;
+  Vec2 friction_centroid;  // where the translation load acts
+  Rational mu_f0;          // Σ ρ_i
+  bool has_twist = false;
+  Vec3q twist;
+  bool translation = false;
+  Vec2 rotation_center;    // rotation only
+  Twist_class cls;
+  // translation
+  Vec3q load_direction;     // load = (mu_f0/|v|)·load_direction
+  Rational speed_squared;   // |v|²
+  std::optional<Vec3q> load;  // exact when |v| is rational
+  // rotation (and translation, for uniformity)
+  Rational h_inner, h_outer;  // polygonal bounds of the power h(q)
+  Rational h_lo, h_hi;        // rational bracket of the true h(q)
+  Vec3q load_lo, load_hi;     // box containing the true load (facet: its centre)
+  Ls_face inner_face, outer_face;
+};
+
+// Precondition: q ≠ 0 when given (throws std::invalid_argument).
+Sliding_answer compute_sliding(const Polygonal_ls& model, const std::optional<Vec3q>& q);
+
+// The merged support as the float twin's points (each value with its conversion bound) [FL-4].
+std::vector<fl::Support_point_twin> twin_support(const Ls_support& s);
+
+// Does the load p stick or slide on the TRUE limit surface (interior / not)?
+//   exact  — the polygons [LS-3]: g_in(p) < 1 sticks, g_out(p) ≥ 1 slides, else undecided (refine N);
+//   hybrid — the float twin's certified search on the true LS first [FL-7], the polygons only when it is
+//            undecided (a load within the search's resolution of LS);
+//   float  — the search alone.
+// Both are certified, so hybrid never contradicts exact; it decides more often (no N to refine). The
+// polytopes are needed only when the search is undecided: pass them, or nullptr to have them built here.
+struct Motion_decision {
+  Motion motion = Motion::undecided;
+  const char* decided_by = "none";  // "float" (the search), "polygons", or "none"
+  std::size_t cells = 0;            // twists the search evaluated
+  std::array<double, 3> witness{};  // slides by the search: a twist with h(q) ≤ q·p
+};
+Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& load, Mode mode,
+                              const Ls_polytope* inner = nullptr, const Ls_polytope* outer = nullptr);
+
+}  // namespace wrenchkit

@@ -1,0 +1,218 @@
+#include "exact/statics/closure.h"
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+
+#include "exact/statics/cone_lp.h"
+#include "exact/io/json.h"
+#include "exact/statics/hybrid_kernel.h"
+#include "exact/io/to_float.h"
+
+namespace wrenchkit {
+
+const char* property_name(Property p) {
+  return p == Property::force_closure ? "force_closure" : "form_closure";
+}
+
+Reading reading_of(Property p) {
+  return p == Property::force_closure ? Reading::friction : Reading::frictionless;
+}
+
+namespace {
+
+using Int3 = std::array<Integer, 3>;
+
+Int3 cross3(const Int3& a, const Int3& b) {
+  return {Integer(a[1] * b[2] - a[2] * b[1]), Integer(a[2] * b[0] - a[0] * b[2]), Integer(a[0] * b[1] - a[1] * b[0])};
+}
+
+// The primitive integer vector positively parallel to v ≠ 0, as certificate rationals.
+std::array<Rational, 3> primitive_twist(Int3 v) {
+  Integer g = 0;
+  for (const Integer& x : v) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), x.get_mpz_t());
+  if (g == 0) throw std::logic_error("primitive_twist: zero vector");
+  for (Integer& x : v) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
+  return {Rational(v[0]), Rational(v[1]), Rational(v[2])};
+}
+
+}  // namespace
+
+std::array<Rational, 3> twist_of_ray(const Exact_kernel& k, std::size_t a, std::size_t b) {
+  return primitive_twist(cross3(k.row(a), k.row(b)));
+}
+
+namespace {
+
+// [FC-3] A nonzero twist with power ≥ 0 against every generator, from the kernel's integer rows
+// (positive multiples of the generators: the same twist as from the generators themselves).
+std::array<Rational, 3> negative_twist(const Dual_cone& dc, const Exact_kernel& k) {
+  switch (dc.shape) {
+    case Dual_shape::lineality: {
+      if (dc.rank == 0) return {Rational(0), Rational(0), Rational(1)};
+      if (dc.rank == 2) return twist_of_ray(k, dc.basis[0], dc.basis[1]);
+      const Int3 g = k.row(dc.basis[0]);  // rank 1: any t ⊥ g
+      for (int axis = 2; axis >= 0; --axis) {
+        Int3 e{Integer(0), Integer(0), Integer(0)};
+        e[static_cast<std::size_t>(axis)] = 1;
+        const Int3 t = cross3(g, e);
+        if (t[0] != 0 || t[1] != 0 || t[2] != 0) return primitive_twist(t);
+      }
+      break;
+    }
+    case Dual_shape::polygon:
+    case Dual_shape::arc:
+    case Dual_shape::ray:
+      return twist_of_ray(k, dc.edges[0], dc.edges[1]);
+    case Dual_shape::zero:
+      break;
+  }
+  throw std::logic_error("negative_twist: no twist for this dual cone");
+}
+
+}  // namespace
+
+// [FC-2] [FC-5] Strictly positive weights on a rank-3 subset summing to zero, from the generators H
+// whose cone is already R³: with an independent triple b of H, solve −(r_b1 + r_b2 + r_b3) =
+// Σ μ_h r_h, μ ≥ 0, over the kernel's integer rows r_h = s_h·g_h (integer phase 1 [FC-5]); then
+// λ = μ + 1_b is > 0 on b ∪ supp μ and Σ λ_h r_h = 0, so the weights λ_h·s_h on the UNSCALED generators
+// g_h sum them to zero; scaled to coprime integers.
+void positive_certificate(const Exact_kernel& k, std::vector<std::size_t> H, Closure_certificate& cert) {
+  std::sort(H.begin(), H.end());
+  H.erase(std::unique(H.begin(), H.end()), H.end());
+  // An independent triple of H: the first generator, the first not parallel to it, the first off
+  // their plane.
+  std::size_t b[3] = {H.at(0), 0, 0};
+  std::size_t found = 1;
+  for (std::size_t h : H) {
+    if (found == 1 && k.cross_sign(b[0], h) != Sign::zero) b[found++] = h;
+    else if (found == 2 && h != b[1] && k.det_sign(b[0], b[1], h) != Sign::zero) b[found++] = h;
+    if (found == 3) break;
+  }
+  if (found != 3) throw std::logic_error("positive_certificate: the closing generators do not span R³");
+  const Integer_cone_membership lp = cone_membership(k, H, {b[0], b[1], b[2]});
+  if (!lp.member) throw std::logic_error("positive_certificate: exact LP found no combination");
+  // Λ_h = denominator·[h ∈ b] + numerator_h (= denominator·λ_h), then w_h = Λ_h·s_h with s_h = sn/sd.
+  std::vector<std::pair<std::size_t, Integer>> w;  // (generator, numerator of w_h), over the lcm below
+  std::vector<Integer> den;
+  Integer l = 1, sn, sd;
+  for (std::size_t i = 0; i < H.size(); ++i) {
+    Integer lam = lp.numerators[i];
+    if (H[i] == b[0] || H[i] == b[1] || H[i] == b[2]) lam += lp.denominator;
+    if (lam == 0) continue;
+    k.scale(H[i], sn, sd);
+    w.push_back({H[i], Integer(lam * sn)});
+    den.push_back(sd);
+    mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), sd.get_mpz_t());
+  }
+  Integer g = 0;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    if (den[i] != l) {
+      mpz_divexact(sd.get_mpz_t(), l.get_mpz_t(), den[i].get_mpz_t());
+      w[i].second *= sd;
+    }
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), w[i].second.get_mpz_t());
+  }
+  for (auto& [h, x] : w) {
+    mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
+    cert.combination.push_back({{k.contact(h), k.edge(h)}, Rational(x)});
+  }
+  for (int i = 0; i < 3; ++i) cert.independent[i] = {k.contact(b[i]), k.edge(b[i])};
+}
+
+Closure_answer decide_closure(const Scene& scene, Property property, Mode mode, bool certify) {
+  const Lazy_generators lazy(scene, reading_of(property));
+  Closure_answer a;
+  a.mode = mode;
+  Dual_cone dc;
+  std::optional<Exact_kernel> exact;  // integer rows straight from the contacts (exact mode, certificates)
+  if (mode == Mode::exact) {
+    if (certify) exact.emplace(scene, reading_of(property), std::vector<Wrench>{}, Exact_kernel::With_provenance{});
+    else exact.emplace(scene, reading_of(property));
+    const Counting_exact_kernel kernel{*exact};
+    dc = compute_dual_cone(kernel);
+    a.predicates = a.exact_predicates = kernel.n;
+    a.generators = exact->size();
+  } else {
+    const fl::Float_kernel twin(fl::generators(to_bounded(scene), reading_of(property)));
+    const Hybrid_kernel kernel(twin, lazy, mode == Mode::hybrid);
+    dc = compute_dual_cone(kernel);
+    a.predicates = kernel.n;
+    a.exact_predicates = kernel.exact_n;
+    a.generators = twin.size();
+    if (!dc.decided) {
+      a.decided = false;
+      return a;
+    }
+  }
+
+  a.rank = dc.rank;
+  a.shape = dc.shape;
+  a.holds = dc.force_closure();
+  a.certificate.property = property;
+  a.certificate.holds = a.holds;
+  if (!certify) return a;
+  // The certificate from the integer rows of the generators it names, each with its scale [FC-5].
+  if (!exact) exact.emplace(scene, reading_of(property), std::vector<Wrench>{}, Exact_kernel::With_provenance{});
+  const Exact_kernel& k = *exact;
+  if (k.size() != a.generators) throw std::logic_error("decide_closure: twin and engine disagree on generators");
+  if (a.holds) {
+    std::vector<std::size_t> H = dc.defining;
+    H.push_back(dc.closing);
+    positive_certificate(k, std::move(H), a.certificate);
+  } else {
+    a.certificate.twist = negative_twist(dc, k);
+  }
+  return a;
+}
+
+Twist_reading read_twist(const std::array<Rational, 3>& t) {
+  Twist_reading r;
+  const Rational& w = t[2];
+  if (w != 0) {
+    r.label = w > 0 ? '+' : '-';
+    r.point = {-t[1] / w, t[0] / w};
+  } else if (t[0] != 0 || t[1] != 0) {
+    const Rational in[3] = {-t[1], t[0], 0};
+    Integer out[3];
+    primitive(in, out);
+    r.point = {Rational(out[0]), Rational(out[1])};
+  }
+  return r;
+}
+
+std::string combination_json(const std::vector<std::pair<Generator_ref, Rational>>& terms) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    const auto& [ref, w] = terms[i];
+    s += (i ? ", " : "") + std::string("{\"contact\": ") + std::to_string(ref.contact) + ", \"edge\": \"" +
+         edge_name(ref.edge) + "\", \"weight\": " + json::quote(to_string(w)) + "}";
+  }
+  return s + "]";
+}
+
+std::string twist_json(const std::array<Rational, 3>& t) {
+  auto q = [](const Rational& x) { return json::quote(to_string(x)); };
+  std::string s = "\"twist\": [" + q(t[0]) + ", " + q(t[1]) + ", " + q(t[2]) + "]";
+  const Twist_reading r = read_twist(t);
+  if (r.label == 'i')
+    s += ", \"reading\": {\"label\": \"infinity\", \"direction\": [";
+  else
+    s += std::string(", \"reading\": {\"label\": \"") + r.label + "\", \"point\": [";
+  return s + q(r.point[0]) + ", " + q(r.point[1]) + "]}";
+}
+
+std::string certificate_json(const Closure_certificate& c) {
+  std::string s = "{\"wrenchkit_certificate\": 1, \"property\": \"";
+  s += property_name(c.property);
+  s += "\", \"holds\": ";
+  if (!c.holds) return s + "false, " + twist_json(c.twist) + "}";
+  s += "true, \"combination\": " + combination_json(c.combination) + ", \"independent\": [";
+  for (int i = 0; i < 3; ++i)
+    s += (i ? ", " : "") + std::string("{\"contact\": ") + std::to_string(c.independent[i].contact) +
+         ", \"edge\": \"" + edge_name(c.independent[i].edge) + "\"}";
+  return s + "]}";
+}
+
+}  // namespace wrenchkit

@@ -1,0 +1,125 @@
+#include "exact/statics/moment_labels.h"
+
+#include <optional>
+
+#include "exact/io/to_float.h"
+
+namespace wrenchkit {
+
+namespace {
+
+std::vector<Vec3> centres(const std::vector<Vec3>& twists) {
+  std::vector<Vec3> p;
+  p.reserve(twists.size());
+  for (const Vec3& t : twists) p.push_back(J(t));
+  return p;
+}
+
+// R₊ ∩ R₋: the lineality space of W* (in rotation-centre coordinates) on the front sheet.
+Both_set both_of(const Wrench_cone& c) {
+  Both_set b;
+  if (c.rank == 0) {
+    b.kind = Both_set::Kind::plane;
+  } else if (c.rank == 2) {
+    const Vec3 l = J(c.lineality[0]);
+    if (l[2] != 0) {
+      b.kind = Both_set::Kind::point;
+      b.point = {l[0] / l[2], l[1] / l[2]};
+    }
+  } else if (c.rank == 1) {
+    // The plane {P : a·P = 0}, a = J(g) (g the one generator direction): the line of force of g.
+    const Vec3 a = J(cross(c.lineality[0], c.lineality[1]));
+    if (a[0] != 0 || a[1] != 0) {
+      b.kind = Both_set::Kind::line;
+      b.direction = primitive2(a[1], -a[0]);
+      // a_x x + a_y y + a_z = 0: a point of it.
+      if (a[0] != 0)
+        b.point = {-a[2] / a[0], 0};
+      else
+        b.point = {0, -a[2] / a[1]};
+    }
+  }
+  return b;
+}
+
+}  // namespace
+
+Moment_labels moment_labels(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin) {
+  Moment_labels l;
+  l.cone = wrench_cone(generators, mode, twin);
+  const std::vector<Vec3> p = centres(l.cone.dual);
+  l.plus = slice_front(p, l.cone.dual_pointed);
+  l.minus = slice_front(negated(p), l.cone.dual_pointed);
+  l.infinity = slice_infinity(p, l.cone.dual_pointed);
+  l.both = both_of(l.cone);
+  return l;
+}
+
+Moment_labels moment_labels(const Scene& scene, Reading reading, Mode mode) {
+  std::vector<Wrench> w;
+  for (const Generator& g : generators(scene, reading)) w.push_back(g.w);
+  if (mode != Mode::hybrid) return moment_labels(w, mode);
+  const std::vector<fl::Bounded3> twin = fl::generators(to_bounded(scene), reading);
+  return moment_labels(w, mode, &twin);
+}
+
+std::string both_json(const Both_set& b) {
+  switch (b.kind) {
+    case Both_set::Kind::none: return "[]";
+    case Both_set::Kind::point: return "[{\"point\": " + point_json(b.point) + "}]";
+    case Both_set::Kind::line:
+      return "[{\"line\": {\"through\": " + point_json(b.point) + ", \"direction\": " + point_json(b.direction) + "}}]";
+    case Both_set::Kind::plane: return "[{\"plane\": true}]";
+  }
+  return "[]";
+}
+
+std::string labels_json_fields(const Moment_labels& l) {
+  return "\"plus\": " + region_json(l.plus) + ", \"minus\": " + region_json(l.minus) +
+         ", \"both\": " + both_json(l.both) + ", \"infinity\": " + infinity_json(l.infinity);
+}
+
+const char* mode_name(Contact_mode m) {
+  switch (m) {
+    case Contact_mode::breaks: return "break";
+    case Contact_mode::slides: return "slide";
+    case Contact_mode::sticks: return "stick";
+    case Contact_mode::penetrates: return "penetrate";
+    case Contact_mode::none: return "none";
+  }
+  return "?";
+}
+
+Mode_answer contact_modes(const Scene& scene, const Vec3& t) {
+  Mode_answer a;
+  for (const Contact& stored : scene.contacts) {
+    std::optional<Contact> built;
+    if (stored.exact_pending) built = exact_contact(stored);
+    const Contact& c = built ? *built : stored;
+    Contact_mode m = Contact_mode::none;
+    Rational s;
+    if (c.kind == Contact::Kind::wrench) {
+      s = t[0] * c.wrench.fx + t[1] * c.wrench.fy + t[2] * c.wrench.m;
+    } else {
+      // v(p) = (v_x − ω p_y, v_y + ω p_x).
+      const Rational vx = t[0] - t[2] * c.at.y, vy = t[1] + t[2] * c.at.x;
+      s = vx * c.normal.x + vy * c.normal.y;
+      m = s > 0 ? Contact_mode::breaks
+                : s < 0 ? Contact_mode::penetrates : (vx == 0 && vy == 0 ? Contact_mode::sticks : Contact_mode::slides);
+    }
+    a.feasible &= s >= 0;
+    a.marginal |= s == 0;
+    a.modes.push_back(m);
+  }
+  a.marginal &= a.feasible;
+  return a;
+}
+
+Vec3 rotation_twist(const Vec2& c, int sense) {
+  const Rational w(sense);
+  return {w * c.y, -w * c.x, w};
+}
+
+Vec3 translation_twist(const Vec2& d) { return {d.y, -d.x, 0}; }
+
+}  // namespace wrenchkit

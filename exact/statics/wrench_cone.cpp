@@ -1,0 +1,192 @@
+#include "exact/statics/wrench_cone.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "exact/statics/hybrid_kernel.h"
+#include "exact/statics/planar_region.h"
+
+namespace wrenchkit {
+
+namespace {
+
+Rational dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 neg3(const Vec3& a) { return {-a[0], -a[1], -a[2]}; }
+bool zero3(const Vec3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
+Rational det3(const Vec3& a, const Vec3& b, const Vec3& c) { return dot3(a, cross(b, c)); }
+
+// Extreme rays of a rank-3 dual cone, in the cycle's order (the vertices g_{e_j} × g_{e_{j+1}}).
+std::vector<Vec3> extreme_rays(const Dual_cone& dc, const std::vector<Vec3>& g) {
+  std::vector<Vec3> r;
+  const std::vector<std::size_t>& e = dc.edges;
+  switch (dc.shape) {
+    case Dual_shape::polygon:
+      for (std::size_t j = 0; j < e.size(); ++j) r.push_back(primitive_vec(cross(g[e[j]], g[e[(j + 1) % e.size()]])));
+      break;
+    case Dual_shape::arc:
+      // (p, e, q, e') up to a cyclic rotation (a cut of an arc keeps the cycle, not its start): each
+      // of the two rays g_p × g_e, g_e × g_q appears at two consecutive pairs. Found by fuzz_structured.
+      for (std::size_t j = 0; j < 4; ++j) {
+        const Vec3 v = primitive_vec(cross(g[e[j]], g[e[(j + 1) % 4]]));
+        if (std::find(r.begin(), r.end(), v) == r.end()) r.push_back(v);
+      }
+      if (r.size() != 2) throw std::logic_error("wrench_cone: an arc without two distinct rays");
+      break;
+    case Dual_shape::ray:
+      r.push_back(primitive_vec(cross(g[e[0]], g[e[1]])));
+      break;
+    case Dual_shape::zero:
+    case Dual_shape::lineality:
+      break;
+  }
+  return r;
+}
+
+// Two integer vectors spanning the plane orthogonal to a ≠ 0.
+std::pair<Vec3, Vec3> orthogonal_basis(const Vec3& a) {
+  const Vec3 unit[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (const Vec3& e : unit) {
+    const Vec3 u = cross(a, e);
+    if (!zero3(u)) return {primitive_vec(u), primitive_vec(cross(a, u))};
+  }
+  throw std::logic_error("orthogonal_basis: zero vector");
+}
+
+void push_pm(std::vector<Vec3>& out, const Vec3& v) {
+  out.push_back(v);
+  out.push_back(neg3(v));
+}
+
+fl::Bounded3 bounded_of(const Wrench& w) { return {to_bounded(w.fx), to_bounded(w.fy), to_bounded(w.m)}; }
+
+// [FC-1] on the wrenches: exact, or hybrid (the twin's certified sign, exact where uncertain).
+Dual_cone dual_cone_of(const std::vector<Wrench>& ws, const std::vector<fl::Bounded3>& twin, Mode mode,
+                       Wrench_cone& counts) {
+  if (mode == Mode::exact) {
+    const Exact_kernel exact(ws);
+    const Counting_exact_kernel k{exact};
+    Dual_cone dc = compute_dual_cone(k);
+    counts.predicates += k.n;
+    counts.exact_predicates += k.n;
+    return dc;
+  }
+  const fl::Float_kernel f(twin);
+  const Lazy_generators lazy(ws);
+  const Hybrid_kernel k(f, lazy, true);
+  Dual_cone dc = compute_dual_cone(k);
+  counts.predicates += k.n;
+  counts.exact_predicates += k.exact_n;
+  return dc;
+}
+
+}  // namespace
+
+Vec3 J(const Vec3& u) { return {-u[1], u[0], u[2]}; }
+
+Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin) {
+  if (mode == Mode::float_only) throw std::invalid_argument("wrench_cone: the float twin is fl::moment_labels");
+  if (twin && twin->size() != generators.size()) throw std::invalid_argument("wrench_cone: twin of another size");
+  std::vector<Wrench> ws;
+  std::vector<Vec3> g;
+  std::vector<fl::Bounded3> tw;
+  for (std::size_t i = 0; i < generators.size(); ++i) {
+    const Wrench& w = generators[i];
+    if (w.fx == 0 && w.fy == 0 && w.m == 0) continue;
+    ws.push_back(w);
+    g.push_back(primitive_vec(as_vec(w)));
+    if (mode == Mode::hybrid) tw.push_back(twin ? (*twin)[i] : bounded_of(w));
+  }
+  Wrench_cone c;
+  const Dual_cone dc = dual_cone_of(ws, tw, mode, c);
+  c.rank = dc.rank;
+  c.shape = dc.shape;
+  const Vec3 e[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  if (dc.rank == 3) {
+    c.dual = extreme_rays(dc, g);
+    c.dual_pointed = true;
+    switch (dc.shape) {
+      case Dual_shape::polygon:  // W pointed: its extreme rays are W*'s facet normals, in order
+        for (std::size_t j : dc.edges) c.primal.push_back(g[j]);
+        break;
+      case Dual_shape::arc:
+        for (std::size_t j : dc.edges) c.primal.push_back(g[j]);
+        c.primal_pointed = false;
+        break;
+      case Dual_shape::ray: {  // W = {w : ⟨r, w⟩ ≥ 0}
+        const Vec3 r = c.dual[0];
+        const auto [u, v] = orthogonal_basis(r);
+        c.primal = {r};
+        push_pm(c.primal, u);
+        push_pm(c.primal, v);
+        c.primal_pointed = false;
+        break;
+      }
+      case Dual_shape::zero:
+      case Dual_shape::lineality:
+        for (const Vec3& x : e) push_pm(c.primal, x);
+        c.primal_pointed = false;
+        break;
+    }
+    return c;
+  }
+  if (dc.rank == 2) {
+    const Vec3 b0 = g[dc.basis[0]], b1 = g[dc.basis[1]];
+    const Vec3 n = primitive_vec(cross(b0, b1));
+    c.lineality = {n};
+    std::vector<Wrench> with_n = ws;
+    with_n.push_back(Wrench{n[0], n[1], n[2]});
+    std::vector<Vec3> gn = g;
+    gn.push_back(n);
+    if (mode == Mode::hybrid) tw.push_back(bounded_of(with_n.back()));
+    const Dual_cone half = dual_cone_of(with_n, tw, mode, c);
+    if (half.rank != 3) throw std::logic_error("wrench_cone: rank did not rise to 3");
+    c.dual = extreme_rays(half, gn);
+    c.dual.push_back(neg3(n));
+    c.dual_pointed = false;
+    // W in the plane span{b0, b1}: coordinates (det(g, b1, n), det(b0, g, n)) ∝ (α, β), g = α b0 + β b1.
+    std::vector<Vec2> xy;
+    for (const Vec3& x : g) xy.push_back({det3(x, b1, n), det3(b0, x, n)});
+    const Cone2 k = cone_hull(xy);
+    const auto back = [&](const Vec2& d) {
+      return primitive_vec({d.x * b0[0] + d.y * b1[0], d.x * b0[1] + d.y * b1[1], d.x * b0[2] + d.y * b1[2]});
+    };
+    if (k.shape == Cone2::Shape::plane) {
+      push_pm(c.primal, b0);
+      push_pm(c.primal, b1);
+    } else {
+      for (const Vec2& d : k.extreme) c.primal.push_back(back(d));
+    }
+    c.primal_pointed = k.shape == Cone2::Shape::wedge || k.shape == Cone2::Shape::ray;
+    return c;
+  }
+  if (dc.rank == 1) {
+    const Vec3 a = g[dc.basis[0]];
+    bool same_sense = true;
+    for (const Vec3& x : g) same_sense &= dot3(a, x) > 0;
+    const auto [u, v] = orthogonal_basis(a);
+    c.lineality = {u, v};
+    if (same_sense) c.dual.push_back(a);
+    push_pm(c.dual, u);
+    push_pm(c.dual, v);
+    c.dual_pointed = false;
+    c.primal = {a};
+    if (!same_sense) c.primal.push_back(neg3(a));
+    c.primal_pointed = same_sense;
+    return c;
+  }
+  // rank 0: W = {0}, W* = R³.
+  for (const Vec3& x : e) {
+    push_pm(c.dual, x);
+    c.lineality.push_back(x);
+  }
+  c.dual_pointed = false;
+  return c;
+}
+
+bool in_cone(const Wrench_cone& c, const Vec3& w) {
+  for (const Vec3& t : c.dual)
+    if (dot3(t, w) < 0) return false;
+  return true;
+}
+
+}  // namespace wrenchkit

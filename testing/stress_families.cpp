@@ -1,0 +1,554 @@
+// [ST-1] Scene families (testing/stress_families.h): near-degenerate families and random scenes.
+#include "testing/stress_families.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+#include "exact/numbers/rational.h"
+
+namespace wrenchkit::stress {
+
+double Rng::unit() { return static_cast<double>(g_() >> 11) * (1.0 / 9007199254740992.0); }  // 2^-53
+
+double Rng::uniform(double a, double b) { return a + (b - a) * unit(); }
+
+int Rng::integer(int lo, int hi) {
+  const std::uint64_t span = static_cast<std::uint64_t>(static_cast<std::int64_t>(hi) - lo) + 1;
+  const std::uint64_t limit = UINT64_MAX - UINT64_MAX % span;  // reject the biased tail
+  std::uint64_t x;
+  do x = g_();
+  while (x >= limit);
+  return static_cast<int>(lo + static_cast<std::int64_t>(x % span));
+}
+
+std::string number_text(double x) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+double naive_double(std::string_view text) {
+  if (text.size() >= 2 && text.front() == '"' && text.back() == '"') text = text.substr(1, text.size() - 2);
+  const std::size_t slash = text.find('/');
+  if (slash == std::string_view::npos) return std::strtod(std::string(text).c_str(), nullptr);
+  return std::strtod(std::string(text.substr(0, slash)).c_str(), nullptr) /
+         std::strtod(std::string(text.substr(slash + 1)).c_str(), nullptr);
+}
+
+namespace {
+
+// The contacts (and optional gravity) as scene text: decimal text of the doubles, as users write it.
+std::string scene_text(const std::vector<Contact_spec>& cs, const Gravity_spec& g) {
+  std::string s = "{\"wrenchkit\": 1, ";
+  if (g.present)
+    s += "\"body\": {\"com\": [" + number_text(g.cx) + ", " + number_text(g.cy) + "]}, \"load\": {\"gravity\": " +
+         number_text(g.w) + "}, ";
+  s += "\"contacts\": [";
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    const Contact_spec& c = cs[i];
+    s += (i ? ", " : "") + std::string("{\"at\": [") + number_text(c.ax) + ", " + number_text(c.ay) +
+         "], \"normal\": [" + number_text(c.nx) + ", " + number_text(c.ny) + "], \"mu\": " +
+         (c.mu_text.empty() ? number_text(c.mu) : "\"" + c.mu_text + "\"") + "}";
+  }
+  return s + "]}";
+}
+
+// Rotate by a random angle (rational parametrisation, then a random half-turn), scale, translate.
+// Rounded in double on purpose: the decimal text of the result is the scene.
+std::vector<Contact_spec> place(std::vector<Contact_spec> cs, Rng& r, double tx, double ty, double scale,
+                                bool rotate = true) {
+  double c = 1, s = 0;
+  if (rotate) {
+    const double t = r.uniform(-1, 1), d = 1 + t * t;
+    c = (1 - t * t) / d;
+    s = 2 * t / d;
+    if (r.coin()) c = -c, s = -s;
+  }
+  for (Contact_spec& k : cs) {
+    const double x = k.ax * scale, y = k.ay * scale;
+    k.ax = c * x - s * y + tx;
+    k.ay = s * x + c * y + ty;
+    const double nx = c * k.nx - s * k.ny, ny = s * k.nx + c * k.ny;
+    k.nx = nx;
+    k.ny = ny;
+  }
+  return cs;
+}
+
+// The largest k ≥ 1 with 10^-k ≥ ε/2 (the power of ten nearest ε from below, for ε = 10^-k exactly).
+int decimal_exponent(double eps) {
+  int k = 0;
+  for (double x = eps; x < 0.5 && k < 400; x *= 10) ++k;
+  return k < 1 ? 1 : k;
+}
+
+std::string ladder_mu_text(int k, bool above) {
+  // μ = (10^k ± 1) / (7·10^k): (1/7)(1 ± 10^-k), an exact fraction.
+  const std::string p = above ? "1" + std::string(static_cast<std::size_t>(k - 1), '0') + "1"
+                              : std::string(static_cast<std::size_t>(k), '9');
+  return p + "/7" + std::string(static_cast<std::size_t>(k), '0');
+}
+
+// Random scenes: text built directly (numbers as a user types them).
+std::string decimal(int thousandths) {
+  const bool neg = thousandths < 0;
+  const int a = neg ? -thousandths : thousandths;
+  char b[32];
+  std::snprintf(b, sizeof b, "%s%d.%03d", neg ? "-" : "", a / 1000, a % 1000);
+  return b;
+}
+
+std::string random_support(Rng& r, bool grid) {
+  const int k = r.integer(1, 4);
+  static const char* mus[] = {"1/2", "1", "1/3", "0.3"};
+  static const char* forces[] = {"1", "1/2", "2", "3/2"};
+  std::string s = ", \"support\": {\"mu\": \"" + std::string(mus[r.integer(0, 3)]) + "\", \"points\": [";
+  for (int i = 0; i < k; ++i) {
+    const std::string x = grid ? std::to_string(r.integer(-2, 2)) : decimal(r.integer(-999, 999));
+    const std::string y = grid ? std::to_string(r.integer(-2, 2)) : decimal(r.integer(-999, 999));
+    s += (i ? ", " : "") + std::string("{\"at\": [") + x + ", " + y + "], \"force\": \"" + forces[r.integer(0, 3)] + "\"}";
+  }
+  return s + "]}";
+}
+
+std::string random_generic(Rng& r) {
+  const int k = r.integer(3, 8);
+  std::string s = "{\"wrenchkit\": 1, \"contacts\": [";
+  for (int i = 0; i < k; ++i) {
+    int nx = r.integer(-999, 999), ny = r.integer(-999, 999);
+    if (nx == 0 && ny == 0) nx = 1;
+    s += (i ? ", " : "") + std::string("{\"at\": [") + decimal(r.integer(-999, 999)) + ", " +
+         decimal(r.integer(-999, 999)) + "], \"normal\": [" + std::to_string(nx) + ", " + std::to_string(ny) +
+         "], \"mu\": " + decimal(r.integer(0, 800)) + "}";
+  }
+  s += "]";
+  if (r.integer(0, 2) == 0)
+    s += ", \"load\": {\"force\": [" + decimal(r.integer(-999, 999)) + ", " + decimal(r.integer(-999, 999)) +
+         "], \"at\": [" + decimal(r.integer(-999, 999)) + ", " + decimal(r.integer(-999, 999)) + "]}";
+  if (r.integer(0, 3) == 0) s += random_support(r, false);
+  return s + "}";
+}
+
+std::string random_grid(Rng& r) {
+  static const char* mus[] = {"0", "0", "1/4", "1/2", "1", "2", "1/3"};
+  static const int normals[][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 1}, {-1, 1},
+                                   {1, -1}, {-1, -1}, {2, 1}, {1, 2}, {-2, 3}, {3, -1}};
+  const int k = r.integer(0, 6);
+  std::string s = "{\"wrenchkit\": 1, \"contacts\": [";
+  for (int i = 0; i < k; ++i) {
+    s += i ? ", " : "";
+    if (r.integer(0, 11) == 0) {
+      int w[3];
+      do
+        for (int& x : w) x = r.integer(-2, 2);
+      while (w[0] == 0 && w[1] == 0 && w[2] == 0);
+      s += "{\"wrench\": [" + std::to_string(w[0]) + ", " + std::to_string(w[1]) + ", " + std::to_string(w[2]) + "]}";
+    } else {
+      const auto& n = normals[r.integer(0, 11)];
+      const int len = r.integer(1, 2);
+      s += "{\"at\": [" + std::to_string(r.integer(-3, 3)) + ", " + std::to_string(r.integer(-3, 3)) +
+           "], \"normal\": [" + std::to_string(n[0] * len) + ", " + std::to_string(n[1] * len) + "], \"mu\": \"" +
+           mus[r.integer(0, 6)] + "\"}";
+    }
+  }
+  s += "]";
+  switch (r.integer(0, 3)) {
+    case 0:
+      s += ", \"load\": {\"force\": [" + std::to_string(r.integer(-2, 2)) + ", " + std::to_string(r.integer(-2, 2)) +
+           "], \"at\": [" + std::to_string(r.integer(-3, 3)) + ", " + std::to_string(r.integer(-3, 3)) + "]}";
+      break;
+    case 1:
+      s += ", \"load\": {\"wrench\": [" + std::to_string(r.integer(-2, 2)) + ", " + std::to_string(r.integer(-2, 2)) +
+           ", " + std::to_string(r.integer(-2, 2)) + "]}";
+      break;
+    default: break;
+  }
+  if (r.integer(0, 3) == 0) s += random_support(r, true);
+  return s + "}";
+}
+
+Family_scene near_degenerate(const Family& f, double eps, Rng& r) {
+  Family_scene out;
+  out.family = f.name;
+  out.epsilon = eps;
+  const std::string name = f.name;
+  std::vector<Contact_spec>& cs = out.contacts;
+  if (name == "friction_threshold" || name == "huge_offset") {
+    // Two fingers, d = (1, y2 − 1/2): closure iff μ > μ* = y2 − 1/2.
+    const double y2 = r.uniform(0.6, 0.95), mu_star = y2 - 0.5;
+    out.above = r.coin();
+    const double mu = mu_star * (1 + (out.above ? eps : -eps));
+    const bool huge = name == "huge_offset";
+    const double tx = huge ? 1e6 * r.uniform(1, 2) : r.uniform(-5, 5);
+    const double ty = huge ? -1e6 * r.uniform(1, 2) : r.uniform(-5, 5);
+    cs = place({{0, 0.5, 1, 0, mu, ""}, {1, y2, -1, 0, mu, ""}}, r, tx, ty, huge ? 1e3 : 1);
+  } else if (name == "cone_edge") {
+    const double mu = r.uniform(0.2, 0.8);
+    out.above = r.coin();
+    const double y2 = 0.5 + mu * (1 + (out.above ? eps : -eps));
+    const double tx = r.uniform(-5, 5), ty = r.uniform(-5, 5);
+    cs = place({{0, 0.5, 1, 0, mu, ""}, {1, y2, -1, 0, mu, ""}}, r, tx, ty, 1);
+  } else if (name == "nearly_concurrent") {
+    out.above = r.coin();
+    const double off = out.above ? eps : -eps;
+    const double x4 = r.uniform(1.5, 2.5), tx = r.uniform(-5, 5), ty = r.uniform(-5, 5), sc = r.uniform(0.5, 2);
+    cs = place({{1, 0, 0, 1, 0, ""}, {0, 1, 1, 0, 0, ""}, {3, 3 + off, -1, -1, 0, ""}, {x4, 4, 0, -1, 0, ""}}, r, tx, ty,
+               sc);
+  } else if (name == "nearly_parallel") {
+    out.above = r.coin();
+    const double t = out.above ? eps : -eps;
+    const double tx = static_cast<double>(r.integer(-5, 5)), ty = static_cast<double>(r.integer(-5, 5));
+    cs = place({{-1, 1, 1, t, 0, ""}, {-1, -1, 1, 0, 0, ""}, {1, 1, -1, 0, 0, ""}, {1, -1, -1, 0, 0, ""}}, r, tx, ty, 1,
+               false);
+  } else if (name == "ladder_equilibrium") {
+    // Floor contact at (0,0) n = (0,1), wall contact at (−4,3) n = (1,0), COM (−1/2, 7/2), μ written as
+    // an exact fraction; the doubles are what float code gets by dividing the two integers.
+    const int k = decimal_exponent(eps);
+    out.above = r.coin();
+    const std::string mu = ladder_mu_text(k, out.above);
+    const std::size_t slash = mu.find('/');
+    const double mu_d = std::strtod(mu.substr(0, slash).c_str(), nullptr) / std::strtod(mu.substr(slash + 1).c_str(), nullptr);
+    cs = {{0, 0, 0, 1, mu_d, mu}, {-4, 3, 1, 0, mu_d, mu}};
+    out.gravity = {true, -0.5, 3.5, 1};
+  }
+  out.text = scene_text(cs, out.gravity);
+  out.known = f.known;  // the ladder: exact fractions, balanced iff above for every ε
+  return out;
+}
+
+// ---- The exact families (issue 6): built in exact rational arithmetic, answer known by construction ----
+
+Integer power_of_ten(int k) {
+  Integer r;
+  mpz_ui_pow_ui(r.get_mpz_t(), 10, static_cast<unsigned long>(k));
+  return r;
+}
+
+Rational ten_to(int k) { return k >= 0 ? Rational(power_of_ten(k)) : Rational(Integer(1), power_of_ten(-k)); }
+
+// A random integer of exactly `digits` decimal digits.
+Integer random_digits(Rng& r, int digits) {
+  std::string s(static_cast<std::size_t>(digits), '0');
+  for (int i = 0; i < digits; ++i) s[static_cast<std::size_t>(i)] = static_cast<char>('0' + r.integer(i ? 0 : 1, 9));
+  return Integer(s);
+}
+
+// lo + (hi − lo)·N/(N + D) with random `digits`-digit N and D: a long fraction strictly inside (lo, hi).
+Rational long_fraction(Rng& r, const Rational& lo, const Rational& hi, int digits) {
+  const Integer n = random_digits(r, digits), d = random_digits(r, digits);
+  Rational f(n, n + d);
+  f.canonicalize();
+  return lo + (hi - lo) * f;
+}
+
+// An integer in [lo, hi] over 10^decimals.
+Rational short_decimal(Rng& r, int lo, int hi, int decimals) {
+  Rational q(Integer(r.integer(lo, hi)), power_of_ten(decimals));
+  q.canonicalize();
+  return q;
+}
+
+// Exact text of a rational: an integer, a decimal (with an exponent when it is very large or small)
+// when the denominator is 2^a·5^b, else a "p/q" string. Read back exactly by the engine.
+std::string exact_text(const Rational& q) {
+  Integer den = q.get_den();
+  int twos = 0, fives = 0;
+  while (mpz_divisible_ui_p(den.get_mpz_t(), 2)) den /= 2, ++twos;
+  while (mpz_divisible_ui_p(den.get_mpz_t(), 5)) den /= 5, ++fives;
+  if (den != 1) return "\"" + q.get_num().get_str() + "/" + q.get_den().get_str() + "\"";
+  const int e = std::max(twos, fives);
+  const Integer m = q.get_num() * (power_of_ten(e) / q.get_den());  // q = m·10^-e exactly
+  std::string digits = Integer(abs(m)).get_str();
+  int shift = -e;  // q = ±digits·10^shift
+  while (digits.size() > 1 && digits.back() == '0') digits.pop_back(), ++shift;
+  const std::string sign = m < 0 ? "-" : "";
+  const int n = static_cast<int>(digits.size()), exponent = n - 1 + shift;
+  if (exponent < -6 || exponent > 20)
+    return sign + digits[0] + (n > 1 ? "." + digits.substr(1) : std::string()) + "e" + std::to_string(exponent);
+  if (shift >= 0) return sign + digits + std::string(static_cast<std::size_t>(shift), '0');
+  const int point = n + shift;  // digits before the decimal point
+  if (point > 0)
+    return sign + digits.substr(0, static_cast<std::size_t>(point)) + "." +
+           digits.substr(static_cast<std::size_t>(point));
+  return sign + "0." + std::string(static_cast<std::size_t>(-point), '0') + digits;
+}
+
+struct Exact_contact {
+  Rational ax, ay, nx, ny, mu;
+};
+
+// The scene text of exact contacts (and an optional tail of members), and the doubles naive code
+// reads from it.
+std::string exact_scene_text(const std::vector<Exact_contact>& cs, std::vector<Contact_spec>* naive = nullptr) {
+  std::string s = "{\"wrenchkit\": 1, \"contacts\": [";
+  if (naive) naive->clear();
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    const Exact_contact& c = cs[i];
+    const std::string ax = exact_text(c.ax), ay = exact_text(c.ay), nx = exact_text(c.nx), ny = exact_text(c.ny),
+                      mu = exact_text(c.mu);
+    s += (i ? ", " : "") + std::string("{\"at\": [") + ax + ", " + ay + "], \"normal\": [" + nx + ", " + ny +
+         "], \"mu\": " + mu + "}";
+    if (naive)
+      naive->push_back({naive_double(ax), naive_double(ay), naive_double(nx), naive_double(ny), naive_double(mu), ""});
+  }
+  return s + "]}";
+}
+
+// A rotation by exact rationals, c² + s² = 1.
+struct Rotation {
+  Rational c = 1, s = 0;
+};
+Rotation rotation_of(const Rational& t) {  // ((1 − t²), 2t)/(1 + t²)
+  const Rational d = 1 + t * t;
+  return {(1 - t * t) / d, 2 * t / d};
+}
+Rotation compose(const Rotation& a, const Rotation& b) { return {a.c * b.c - a.s * b.s, a.s * b.c + a.c * b.s}; }
+
+// p ↦ scale·(R p + (tx, ty)), n ↦ R n: closure and equilibrium are invariant under each (exactly).
+void transform(std::vector<Exact_contact>& cs, const Rotation& R, const Rational& tx, const Rational& ty,
+               const Rational& scale) {
+  for (Exact_contact& k : cs) {
+    const Rational x = R.c * k.ax - R.s * k.ay + tx, y = R.s * k.ax + R.c * k.ay + ty;
+    const Rational nx = R.c * k.nx - R.s * k.ny, ny = R.s * k.nx + R.c * k.ny;
+    k.ax = scale * x;
+    k.ay = scale * y;
+    k.nx = nx;
+    k.ny = ny;
+  }
+}
+
+// μ·(10^k ± 1)/10^k: μ moved by the relative distance 10^-k, exactly.
+Rational nudged(const Rational& mu, int k, bool above) {
+  const Integer p = power_of_ten(k);
+  return mu * Rational(p + (above ? 1 : -1), p);
+}
+
+// Two fingers A = (0, 1/2) with n = (1, 0) and B = (1, 1/2 + d) with n = (−1, 0), d = j/1000: the
+// segment AB makes the angle atan d with both normals, so force closure ⇔ μ > μ* = d (Nguyen).
+std::vector<Exact_contact> exact_pair(Rng& r, int k, bool above) {
+  const Rational d = short_decimal(r, 100, 450, 3), half(1, 2), mu = nudged(d, k, above);
+  return {{0, half, 1, 0, mu}, {1, half + d, -1, 0, mu}};
+}
+
+// The exact rotation by the angle of (3, 4)/5 taken j times (denominator 5^j: every coordinate stays a
+// finite decimal), then a quarter turn q times.
+Rotation decimal_rotation(Rng& r) {
+  Rotation R;
+  const int j = r.integer(0, 6), q = r.integer(0, 3);
+  for (int i = 0; i < j; ++i) R = compose(R, {Rational(3, 5), Rational(4, 5)});
+  for (int i = 0; i < q; ++i) R = compose(R, {0, 1});
+  return R;
+}
+
+Family_scene exact_family(const Family& f, double eps, Rng& r) {
+  Family_scene out;
+  out.family = f.name;
+  out.epsilon = eps;
+  out.known = true;
+  const std::string name = f.name;
+  const int k = decimal_exponent(eps);
+  out.above = r.coin();
+  std::vector<Exact_contact> cs;
+  if (name == "long_rational") {
+    // A and B anywhere with 30-digit fractions; slope δ/w: force closure ⇔ μ > |δ|/w.
+    const Rational xa = long_fraction(r, -5, 5, 30), ya = long_fraction(r, -5, 5, 30);
+    const Rational w = long_fraction(r, Rational(1, 2), 2, 30),
+                   delta = long_fraction(r, Rational(1, 20), Rational(3, 2), 30);
+    const Rational dy = r.coin() ? delta : Rational(-delta), mu = nudged(delta / w, k, out.above);
+    cs = {{xa, ya, 1, 0, mu}, {xa + w, ya + dy, -1, 0, mu}};
+    if (r.coin()) transform(cs, {0, 1}, 0, 0, 1);  // a quarter turn: normals along ±y
+  } else if (name == "rational_rotation") {
+    cs = exact_pair(r, k, out.above);
+    out.untransformed = exact_scene_text(cs);
+    // t = a/b with 20-digit a and b: cos and sin with 40-digit numerators and denominators.
+    const Integer a = random_digits(r, 20), b = random_digits(r, 20);
+    Rational t(r.coin() ? a : Integer(-a), b);
+    t.canonicalize();
+    transform(cs, rotation_of(t), short_decimal(r, -5000, 5000, 3), short_decimal(r, -5000, 5000, 3), 1);
+  } else if (name == "huge_scale" || name == "tiny_scale" || name == "beyond_double") {
+    // Rotated exactly, moved by 10^3 times its size, scaled by 10^s: every number an exact decimal.
+    cs = exact_pair(r, k, out.above);
+    out.untransformed = exact_scene_text(cs);
+    int s;
+    if (name == "huge_scale") s = r.integer(250, 300);
+    else if (name == "tiny_scale") s = -r.integer(250, 300);
+    else s = r.coin() ? r.integer(310, 330) : -r.integer(330, 360);  // coordinates beyond 1.8e308 or below 5e-324
+    const Rational tx = short_decimal(r, 500000, 1500000, 3) * (r.coin() ? 1 : -1);
+    const Rational ty = short_decimal(r, 500000, 1500000, 3) * (r.coin() ? 1 : -1);
+    transform(cs, decimal_rotation(r), tx, ty, ten_to(s));
+  } else if (name == "many_contacts") {
+    // n contacts on an arc of the unit circle at u(t) = ((1 − t²), 2t)/(1 + t²), inward normals. The two
+    // end contacts (t1 < t2) carry μ, the others a smaller μ: the force directions of every contact lie
+    // between the ends' outer friction edges, so force closure ⇔ the ends close ⇔ μ > tan(δ/2) =
+    // (1 + t1·t2)/(t2 − t1) = μ*, δ = π − (θ2 − θ1) (proofs in docs/stability.md).
+    const int n = r.integer(1000, 10000), j = r.integer(800, 1200);
+    const Rational t1(-j, 1000), mu_star = short_decimal(r, 30, 100, 3);
+    const Rational t2 = (1 + mu_star * t1) / (mu_star - t1), mu = nudged(mu_star, k, out.above);
+    const Rational mu_small = short_decimal(r, 1, 20, 3);
+    auto at = [](const Rational& t, const Rational& m) {
+      const Rational d = 1 + t * t;
+      const Integer p = t.get_num(), q = t.get_den();
+      return Exact_contact{(1 - t * t) / d, 2 * t / d, Rational(p * p - q * q), Rational(-2 * p * q), m};
+    };
+    // The other contacts at distinct t = a/10^6 strictly between t1 = −j/1000 and t2: one at a random
+    // place in each of n − 2 equal slots (no two coincide: coincident contacts would be an exact
+    // degeneracy of their own, which the twin rightly declines).
+    const Rational t2_scaled = t2 * 1000000;
+    const Integer floor_t2 = t2_scaled.get_num() / t2_scaled.get_den();  // t2 > 0: truncation is the floor
+    const long lo = -1000L * j + 1, hi = mpz_get_si(floor_t2.get_mpz_t()) - 1, slot = (hi - lo + 1) / (n - 2);
+    cs.reserve(static_cast<std::size_t>(n));
+    for (int i = 0; i < n - 2; ++i) {
+      const long a = lo + i * slot + static_cast<long>(r.bits() % static_cast<std::uint64_t>(slot));
+      cs.push_back(at(Rational(a, 1000000), mu_small));
+    }
+    const std::size_t i1 = static_cast<std::size_t>(r.integer(0, n - 2));
+    cs.insert(cs.begin() + static_cast<std::ptrdiff_t>(i1), at(t1, mu));
+    const std::size_t i2 = static_cast<std::size_t>(r.integer(0, n - 1));
+    cs.insert(cs.begin() + static_cast<std::ptrdiff_t>(i2), at(t2, mu));
+  } else if (name == "collinear_support") {
+    return out;  // filled by collinear_support()
+  }
+  out.text = exact_scene_text(cs, &out.contacts);
+  return out;
+}
+
+// Support points r_i = c + d_i·R·u(t_i) with |t_i| ≈ 10^-k/2: at the exact distances |d_i| from c, and
+// ≈ |d_i|·10^-k off the line through c along R·(1, 0). For the rotation about c, q = (c_y, −c_x, 1),
+// v_i = perp(r_i − c) has the rational length |d_i|, so the load p(q) = Σ ρ_i (v̂_i, r_i × v̂_i) on the
+// limit surface is rational; the question's load is p(q)·(1 ± 10^-k): outside LS (slides) above,
+// inside (sticks) below, since LS is convex with 0 inside.
+Family_scene collinear_support(const Family& f, double eps, Rng& r) {
+  Family_scene out;
+  out.family = f.name;
+  out.epsilon = eps;
+  out.known = true;
+  const int k = decimal_exponent(eps);
+  out.above = r.coin();
+  const Rational cx = short_decimal(r, -2000, 2000, 3), cy = short_decimal(r, -2000, 2000, 3);
+  const Rotation R = rotation_of(short_decimal(r, -1000, 1000, 3));
+  const int points = r.integer(3, 6);
+  const Rational rho_per_force(1, 2);
+  Rational px = 0, py = 0, pm = 0;
+  std::string s = "{\"wrenchkit\": 1, \"contacts\": [], \"support\": {\"mu\": \"1/2\", \"points\": [";
+  for (int i = 0; i < points; ++i) {
+    const Rational d = short_decimal(r, 200, 2000, 3) * (r.coin() ? 1 : -1);
+    const Rational t = short_decimal(r, 500, 1000, 3) * (r.coin() ? 1 : -1) / (2 * ten_to(k));
+    const Rotation u = compose(R, rotation_of(t));
+    const Rational x = cx + d * u.c, y = cy + d * u.s;
+    const int force = r.integer(1, 5);
+    const Rational rho = rho_per_force * force;
+    // v̂ = sign(d)·perp(u) = sign(d)·(−u_s, u_c).
+    const Rational vx = d > 0 ? Rational(-u.s) : u.s, vy = d > 0 ? u.c : Rational(-u.c);
+    px += rho * vx;
+    py += rho * vy;
+    pm += rho * (x * vy - y * vx);
+    const std::string xt = exact_text(x), yt = exact_text(y);
+    s += (i ? ", " : "") + std::string("{\"at\": [") + xt + ", " + yt + "], \"force\": " + std::to_string(force) + "}";
+    out.support.push_back({naive_double(xt), naive_double(yt), static_cast<double>(force), 0.5});
+  }
+  out.text = s + "]}}";
+  const Rational p[3] = {nudged(px, k, out.above), nudged(py, k, out.above), nudged(pm, k, out.above)};
+  for (int i = 0; i < 3; ++i) {
+    out.load_text[static_cast<std::size_t>(i)] = exact_text(p[i]);
+    out.load[static_cast<std::size_t>(i)] = naive_double(out.load_text[static_cast<std::size_t>(i)]);
+  }
+  return out;
+}
+
+}  // namespace
+
+const std::vector<Family>& families() {
+  static const std::vector<Family> f = {
+      {"friction_threshold", "two fingers, μ = μ*·(1 ± ε): closure iff μ > μ*", Question::force_closure, true},
+      {"cone_edge", "two fingers, the segment between them ε (in slope) from the friction-cone edge",
+       Question::force_closure, true},
+      {"nearly_concurrent", "Example 3 frictionless: third normal ε off the common point (rank 2 vs 3)",
+       Question::form_closure, true},
+      {"nearly_parallel",
+       "vertical-walls squeeze (integer offsets) with one wall tilted by ε: never closed, so the verdict does not "
+       "flip; it shows exactly parallel exact walls certified next to an inexact one",
+       Question::force_closure, true},
+      {"huge_offset", "friction threshold ±ε, the grasp translated by 10^6 and scaled by 10^3", Question::force_closure,
+       true},
+      {"ladder_equilibrium",
+       "leaning square under gravity (equilibrium), μ = (1/7)·(1 ± ε) written as an exact fraction: balanced iff μ ≥ 1/7",
+       Question::equilibrium, true, true},
+      {"random_generic", "3–8 contacts with 3-decimal coordinates, integer normals and μ, sometimes a load or a support",
+       Question::all, false},
+      {"random_grid",
+       "0–6 contacts on a small integer grid (axis and diagonal normals, μ ∈ {0, 1/4, 1/3, 1/2, 1, 2}, some wrench "
+       "generators), sometimes a load or a support: exact degeneracies are frequent",
+       Question::all, false},
+      // Issue 6: exact by construction (the answer is `above` for every ε).
+      {"long_rational",
+       "two fingers anywhere, coordinates 30-digit fractions, μ = μ*·(1 ± ε) exactly (μ* = |δ|/w, a 60-digit "
+       "fraction): closure iff μ > μ*",
+       Question::force_closure, true, true},
+      {"rational_rotation",
+       "exact two-finger threshold μ = d·(1 ± ε) turned by the exact rotation ((1−t²), 2t)/(1+t²), t = a/b with "
+       "20-digit a, b (40-digit coordinates)",
+       Question::force_closure, true, true},
+  };
+  return f;
+}
+
+const std::vector<Family>& report_only_families() {
+  static const std::vector<Family> f = {
+      {"huge_scale",
+       "exact two-finger threshold μ = d·(1 ± ε), moved by 10^3 times its size and scaled by 10^s, s ∈ [250, 300] "
+       "(every number an exact decimal)",
+       Question::force_closure, true, true},
+      {"tiny_scale",
+       "the same scaled by 10^-s, s ∈ [250, 300]: the twin abstains where a value drops below 2^-960 ≈ 1e-289",
+       Question::force_closure, true, true},
+      {"beyond_double",
+       "the same scaled by 10^s, s ∈ [310, 330] or [−360, −330]: coordinates beyond the double range (strtod "
+       "gives ±inf or 0); the twin must abstain",
+       Question::force_closure, true, true},
+      {"many_contacts",
+       "1000–10000 contacts on an arc of the unit circle (inward normals, exact fractions); the two end contacts "
+       "carry μ = μ*·(1 ± ε) and decide: closure iff μ > μ* = (1 + t1·t2)/(t2 − t1)",
+       Question::force_closure, true, true},
+      {"collinear_support",
+       "3–6 support points ε off a line (at rational distances from c), load p(q)·(1 ± ε) for the rotation q about c "
+       "(p(q) on the limit surface, exact): slides iff above",
+       Question::stick_slide, true, true},
+  };
+  return f;
+}
+
+const Family* find_family(std::string_view name) {
+  for (const auto* list : {&families(), &report_only_families()})
+    for (const Family& f : *list)
+      if (name == f.name) return &f;
+  return nullptr;
+}
+
+Family_scene make_scene(const Family& family, double epsilon, Rng& rng) {
+  if (!family.uses_epsilon) {
+    Family_scene out;
+    out.family = family.name;
+    out.text = std::string(family.name) == "random_generic" ? random_generic(rng) : random_grid(rng);
+    return out;
+  }
+  if (!(epsilon > 0 && epsilon < 1))
+    throw std::invalid_argument(std::string(family.name) + ": epsilon must be in (0, 1), got " + number_text(epsilon));
+  const std::string name = family.name;
+  if (name == "collinear_support") return collinear_support(family, epsilon, rng);
+  if (name == "long_rational" || name == "rational_rotation" || name == "huge_scale" || name == "tiny_scale" ||
+      name == "beyond_double" || name == "many_contacts")
+    return exact_family(family, epsilon, rng);
+  return near_degenerate(family, epsilon, rng);
+}
+
+Family_scene make_scene(std::string_view family, double epsilon, std::uint64_t seed) {
+  const Family* f = find_family(family);
+  if (!f) throw std::invalid_argument("unknown scene family \"" + std::string(family) + "\"");
+  Rng rng(seed);
+  return make_scene(*f, epsilon, rng);
+}
+
+}  // namespace wrenchkit::stress
