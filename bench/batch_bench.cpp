@@ -48,24 +48,17 @@ const std::vector<std::string>& scene_lines() {
   return lines;
 }
 
-// The independent checker, as the CLI runs it on every certificate it prints.
-std::string checker(std::string_view scene, const std::vector<std::string_view>& certs) {
-  for (const auto& r : wrenchkit_checker::check_all(scene, certs))
-    if (r.outcome != wrenchkit_checker::Outcome::accepted) return r.message;
-  return "";
-}
-
 // ---- batch closure: read + force and form closure (+ certificates, + the checker), one thread ----
 
 void BM_batch_closure(benchmark::State& st, bool certify, bool check) {
   const auto& lines = scene_lines();
-  Closure_batch_options o;
+  Request o;
   o.certify = certify;
-  if (check) o.check = checker;
+  o.check = check ? Check::independent : Check::none;
   Scene scratch;
   std::size_t i = 0;
   for (auto _ : st) {
-    const Closure_item r = closure_item(lines[i++ % lines.size()], "line", o, scratch);
+    const Closure_item r = answer_closure(lines[i++ % lines.size()], "line", o, scratch);
     benchmark::DoNotOptimize(r.force.holds);
   }
   st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations()));
@@ -77,8 +70,8 @@ BENCHMARK_CAPTURE(BM_batch_closure, certificates_checked, true, true);
 // The C++ batch API on 1000 scenes per iteration, one thread (its ordered map included).
 void BM_batch_api_verdict_only(benchmark::State& st) {
   const auto& lines = scene_lines();
-  Closure_batch_options o;
-  o.certify = false;
+  Batch_options o;
+  o.request.certify = false;
   o.jobs = 1;
   for (auto _ : st) benchmark::DoNotOptimize(batch_closure(lines, o).size());
   st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * lines.size()));

@@ -82,7 +82,7 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
 struct Analysis {
   Scene scene;
   Closure_item closure;
-  std::optional<Equilibrium_result> equilibrium;
+  std::optional<Equilibrium_item> equilibrium;
   std::optional<Ls_summary> limit_surface;
   std::vector<std::pair<std::string, std::string>> skipped;
 };
@@ -90,8 +90,9 @@ struct Analysis {
 Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, const std::string& scene_text,
                  const std::string& source) {
   Analysis a;
-  a.closure = compute_closure(o, scene_text, source, &a.scene);
-  if (a.scene.load) a.equilibrium = compute_equilibrium(o, a.scene, scene_text);
+  const Request request = request_of(o);
+  a.closure = answered(answer_closure(scene_text, source, request, a.scene));
+  if (a.scene.load) a.equilibrium = answered(answer_equilibrium(a.scene, scene_text, request));
   if (a.scene.support) {
     std::string why;
     a.limit_surface = limit_surface_summary(o, tolerance, a.scene, why);
@@ -108,7 +109,7 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
 std::string analyze_json(const Options& o, const Analysis& a, const char* command) {
   std::string s = "{\"command\": \"" + std::string(command) + "\", \"name\": " + json::quote(a.scene.name) +
                   ", \"closure\": " + closure_json(o, a.closure, "closure");
-  if (a.equilibrium) s += ", \"equilibrium\": " + equilibrium_json(o, a.scene, *a.equilibrium, "equilibrium");
+  if (a.equilibrium) s += ", \"equilibrium\": " + equilibrium_json(o, *a.equilibrium, "equilibrium");
   if (a.limit_surface) s += ", \"limit_surface\": " + a.limit_surface->json;
   s += ", \"skipped\": [";
   for (std::size_t i = 0; i < a.skipped.size(); ++i)
@@ -151,8 +152,8 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
   if (a.equilibrium) std::cout << equilibrium_human(*a.equilibrium);
   if (a.limit_surface) std::cout << a.limit_surface->human;
   for (const auto& [what, why] : a.skipped) std::cout << "skipped " << what << ": " << why << "\n";
-  std::cout << "decided by: " << decided_by(a.closure.force, a.closure.form) << " for closure"
-            << (a.equilibrium ? std::string(", ") + a.equilibrium->a.decided_by() + " for equilibrium" : std::string())
+  std::cout << "decided by: " << a.closure.decided_by() << " for closure"
+            << (a.equilibrium ? std::string(", ") + a.equilibrium->answer.decided_by() + " for equilibrium" : std::string())
             << "\n"
             << "every certificate accepted by the independent checker (exact arithmetic)\n";
   return kAnswered;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli/common.h"
-#include "exact/pipeline/batch.h"
+#include "exact/pipeline/ordered_map.h"
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
 
@@ -77,9 +77,12 @@ struct Worker {
   std::string source;
 };
 
-void error_line(std::string& out, std::size_t line, const char* kind, int code, const std::string& message) {
-  out = "{\"line\": " + std::to_string(line) + ", \"" + kind + "\": " + json::quote(message) +
-        ", \"exit_code\": " + std::to_string(code) + "}";
+// A line that was not answered: {"line": N, KIND: MESSAGE, "exit_code": C}, KIND "error" (bad input, or
+// options that cannot apply to this scene), "undecided" or "internal_error".
+void error_line(std::string& out, std::size_t line, const Ended& e) {
+  const char* kind = e.status == Status::bad_input ? "error" : e.status == Status::undecided ? "undecided" : "internal_error";
+  out = "{\"line\": " + std::to_string(line) + ", \"" + kind + "\": " + json::quote(e.message) +
+        ", \"exit_code\": " + std::to_string(exit_code(e.status)) + "}";
 }
 
 }  // namespace
@@ -115,21 +118,11 @@ int run_batch(const Options& o) {
           out += std::to_string(n);
           out += ", ";
           out.append(json, 1, std::string::npos);
-        } catch (const Input_error& e) {
-          error_line(out, n, "error", kBadInput, e.what());
-        } catch (const Usage_error& e) {  // options that cannot apply to this scene
-          error_line(out, n, "error", kBadInput, e.what());
-        } catch (const Undecided& e) {
-          error_line(out, n, "undecided", kUndecided, e.what());
-        } catch (const Self_check_failure& e) {
-          self_check_failed = true;
-          error_line(out, n, "internal_error", kSelfCheck, e.what());
-        } catch (const std::bad_alloc&) {
-          internal_error = true;
-          error_line(out, n, "internal_error", kInternal, "out of memory");
-        } catch (const std::exception& e) {
-          internal_error = true;
-          error_line(out, n, "internal_error", kInternal, e.what());
+        } catch (...) {
+          const Ended e = failure_of(std::current_exception());
+          if (e.status == Status::check_failed) self_check_failed = true;
+          if (e.status == Status::internal_error) internal_error = true;
+          error_line(out, n, e);
         }
       },
       [&](std::size_t, const std::string& out) {

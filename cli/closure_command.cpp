@@ -41,55 +41,6 @@ std::string human_verdict(const Closure_answer& a, bool form) {
   return s.str();
 }
 
-}  // namespace
-
-std::string decided_by(const Closure_answer& a, const Closure_answer& b) {
-  const std::string x = a.decided_by(), y = b.decided_by();
-  return x == y ? x : "hybrid";
-}
-
-namespace {
-
-// The CLI's closure options: its mode, limits and --verdict-only, and the independent checker of
-// proofs/ on every certificate (reading the scene once for both).
-Closure_batch_options closure_options(const Options& o) {
-  Closure_batch_options c;
-  c.mode = mode_of(o.mode);
-  c.certify = !o.verdict_only;
-  c.limits = o.limits;
-  // Test hook: the suite corrupts a certificate to prove the self-check path (exit 4) works.
-  const char* f = std::getenv("WRENCHKIT_FAULT_INJECTION");
-  const bool corrupt = f && std::string(f) == "corrupt-certificate";
-  c.check = [limits = checker_limits(o.limits), corrupt](std::string_view scene,
-                                                          const std::vector<std::string_view>& certs) {
-    std::string injected;
-    std::vector<std::string_view> checked = certs;
-    if (corrupt && !certs.empty()) {
-      injected = std::string(certs[0]);
-      injected.insert(1, "\"injected_fault\": true, ");
-      checked[0] = injected;
-    }
-    const std::vector<wrenchkit_checker::Result> results = wrenchkit_checker::check_all(scene, checked, limits);
-    for (std::size_t k = 0; k < results.size(); ++k)
-      if (results[k].outcome != wrenchkit_checker::Outcome::accepted)
-        return "the independent checker rejected our own certificate: " + results[k].message +
-               "\ncertificate: " + std::string(checked[k]);
-    return std::string();
-  };
-  return c;
-}
-
-// A closure item's failure as the exception the command reports.
-void throw_unless_answered(const Closure_item& r) {
-  switch (r.status) {
-    case Batch_status::answered: return;
-    case Batch_status::bad_input: throw Input_error(r.message);
-    case Batch_status::undecided: throw Undecided(r.message);
-    case Batch_status::check_failed: throw Self_check_failure(r.message);
-    case Batch_status::internal_error: throw std::runtime_error(r.message);
-  }
-}
-
 void append_pair(std::string& s, const char* key, std::size_t force, std::size_t form) {
   s += ", \"";
   s += key;
@@ -102,13 +53,6 @@ void append_pair(std::string& s, const char* key, std::size_t force, std::size_t
 
 }  // namespace
 
-Closure_item compute_closure(const Options& o, const std::string& scene_text, const std::string& source, Scene* scene) {
-  Scene local;
-  Closure_item r = closure_item(scene_text, source, closure_options(o), scene ? *scene : local);
-  throw_unless_answered(r);
-  return r;
-}
-
 // One line of JSON (no newline).
 std::string closure_json(const Options& o, const Closure_item& r, const char* command) {
   std::string s;
@@ -120,7 +64,7 @@ std::string closure_json(const Options& o, const Closure_item& r, const char* co
   s += ", \"mode\": \"";
   s += o.mode;
   s += "\", \"decided_by\": \"";
-  s += decided_by(r.force, r.form);
+  s += r.decided_by();
   s += "\", \"force_closure\": ";
   s += r.force.holds ? "true" : "false";
   s += ", \"form_closure\": ";
@@ -147,18 +91,17 @@ std::string closure_human(const Closure_item& r) {
 
 Scene_answer prepare_closure_json(const Options& o) {
   if (!o.values.empty()) throw Usage_error(o.values.begin()->first + " is not an option of closure");
-  return [o, c = closure_options(o)](const std::string& text, const std::string& source) {
+  return [o, request = request_of(o)](const std::string& text, const std::string& source) {
     thread_local Scene scratch;  // reused from one scene to the next: no allocation once warm
-    const Closure_item r = closure_item(text, source, c, scratch);
-    throw_unless_answered(r);
-    return closure_json(o, r, "closure");
+    return closure_json(o, answered(answer_closure(text, source, request, scratch)), "closure");
   };
 }
 
 int run_closure(const Options& o, const std::string& scene_text, const std::string& source,
                 const char* command) {
   if (o.verdict_only) throw Usage_error("--verdict-only is for batch; closure always certifies");
-  const Closure_item r = compute_closure(o, scene_text, source);
+  Scene scene;
+  const Closure_item r = answered(answer_closure(scene_text, source, request_of(o), scene));
   if (!o.certificate_file.empty()) write_file(o.certificate_file, r.force_certificate + "\n");
   if (!o.form_certificate_file.empty()) write_file(o.form_certificate_file, r.form_certificate + "\n");
   if (o.json) {
@@ -166,7 +109,7 @@ int run_closure(const Options& o, const std::string& scene_text, const std::stri
   } else {
     std::cout << "scene: " << (r.name.empty() ? source : r.name) << "\n"
               << closure_human(r)
-              << "decided by: " << decided_by(r.force, r.form) << " (" << r.force.exact_predicates + r.form.exact_predicates
+              << "decided by: " << r.decided_by() << " (" << r.force.exact_predicates + r.form.exact_predicates
               << " of " << r.force.predicates + r.form.predicates << " predicates in exact arithmetic)\n"
               << "both certificates accepted by the independent checker (exact arithmetic)\n";
   }

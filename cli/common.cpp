@@ -142,6 +142,53 @@ std::string vec_text(const std::array<Rational, 3>& v) {
   return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")";
 }
 
+Request request_of(const Options& o) {
+  Request r;
+  r.mode = mode_of(o.mode);
+  r.certify = !o.verdict_only;
+  r.limits = o.limits;
+  return r;
+}
+
+Ended failure_of(std::exception_ptr e) {
+  try {
+    std::rethrow_exception(e);
+  } catch (const Failure& f) {
+    return {f.status, f.what()};
+  } catch (const Usage_error& f) {
+    return {Status::bad_input, f.what(), true};
+  } catch (const Input_error& f) {
+    return {Status::bad_input, f.what()};
+  } catch (const Undecided& f) {
+    return {Status::undecided, f.what()};
+  } catch (const Self_check_failure& f) {
+    return {Status::check_failed, f.what()};
+  } catch (const std::bad_alloc&) {
+    return {Status::internal_error, "out of memory"};
+  } catch (const std::exception& f) {
+    return {Status::internal_error, f.what()};
+  }
+}
+
+std::string cli_message(Status s, const std::string& message) {
+  return s == Status::undecided ? message + "; use --mode hybrid or exact" : message;
+}
+
+int report(const Ended& e) {
+  const char* prefix = "wrenchkit: internal error (please report): ";
+  switch (e.status) {
+    case Status::answered: return kAnswered;
+    case Status::bad_input: prefix = e.usage ? "wrenchkit: usage error: " : "wrenchkit: error: "; break;
+    case Status::undecided: prefix = "wrenchkit: undecided: "; break;
+    case Status::check_failed: break;
+    case Status::internal_error:
+      if (e.message == "out of memory") prefix = "wrenchkit: internal error: ";
+      break;
+  }
+  std::cerr << prefix << e.message << "\n";
+  return exit_code(e.status);
+}
+
 Mode mode_of(const std::string& m) {
   return m == "exact" ? Mode::exact : (m == "float" ? Mode::float_only : Mode::hybrid);
 }

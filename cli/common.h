@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <exception>
 #include <cstddef>
 #include <functional>
 #include <initializer_list>
@@ -11,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "exact/pipeline/batch.h"
+#include "exact/pipeline/pipeline.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/numbers/limits.h"
@@ -38,16 +39,41 @@ struct Options {
   bool has(const std::string& option) const { return values.count(option) != 0; }
 };
 
-// Exit 2 (usage), 3 (--mode float undecided), 4 (our own certificate rejected: a bug).
+// Exit 2 (usage), 3 (--mode float undecided: the engine's Undecided_error), 4 (our own certificate or
+// golden file contradicted: a bug).
 struct Usage_error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
-struct Undecided : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using Undecided = Undecided_error;
 struct Self_check_failure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// A pipeline answer that did not end in `answered` (exact/pipeline/pipeline.h), unwinding a command to
+// main or to batch's line.
+struct Failure : std::runtime_error {
+  Failure(Status s, const std::string& message) : std::runtime_error(message), status(s) {}
+  Status status;
+};
+// The one place where the command line meets how an answer ended. cli_message: the engine's message as the
+// CLI writes it (an undecided answer gets the advice to change mode); answered: a pipeline item itself when
+// it was answered, else its Failure; failure_of: the status and message of the exception in flight
+// (Usage_error → bad_input with its own prefix, see `usage`); report: the stderr line of a single command and
+// its exit code (docs/cli.md).
+std::string cli_message(Status s, const std::string& message);
+template <class Item>
+Item answered(Item item) {
+  if (item.status != Status::answered) throw Failure(item.status, cli_message(item.status, item.message));
+  return item;
+}
+struct Ended {
+  Status status;
+  std::string message;
+  bool usage = false;
+};
+Ended failure_of(std::exception_ptr e);
+int report(const Ended& e);
+// The pipeline request of the command line's options: --mode, --verdict-only, the --max-* limits.
+Request request_of(const Options& o);
 
 Options parse_options(int argc, char** argv, int first);
 // The exact numbers of a "a,b,…" option value (decimal or p/q each, as in scenes); exactly n of them.
@@ -94,25 +120,13 @@ Scene_answer prepare_analyze_json(const Options& o);
 Scene_answer prepare_limit_surface_json(const Options& o);
 Scene_answer prepare_sliding_json(const Options& o);
 
-// closure_command.cpp (analyze uses these pieces)
-// Force and form closure of one scene text (exact/pipeline/batch.h's closure_item with the CLI's options and
-// the independent checker; certificates unless --verdict-only); throws as a Scene_answer does.
-// `scene`, if given, receives the scene.
-Closure_item compute_closure(const Options& o, const std::string& scene_text, const std::string& source,
-                             Scene* scene = nullptr);
+// closure_command.cpp, equilibrium_command.cpp (analyze and reference use these pieces): the pipeline's
+// items (exact/pipeline/pipeline.h) written as JSON and as text.
 std::string closure_json(const Options& o, const Closure_item& r, const char* command);
 std::string closure_human(const Closure_item& r);
-std::string decided_by(const Closure_answer& a, const Closure_answer& b);
 int run_closure(const Options& o, const std::string& scene_text, const std::string& source, const char* command);
-
-// equilibrium_command.cpp
-struct Equilibrium_result {
-  Equilibrium_answer a;
-  std::string cert;
-};
-Equilibrium_result compute_equilibrium(const Options& o, const Scene& scene, const std::string& scene_text);
-std::string equilibrium_json(const Options& o, const Scene& scene, const Equilibrium_result& r, const char* command);
-std::string equilibrium_human(const Equilibrium_result& r);
+std::string equilibrium_json(const Options& o, const Equilibrium_item& r, const char* command);
+std::string equilibrium_human(const Equilibrium_item& r);
 int run_equilibrium(const Options& o, const std::string& scene_text, const std::string& source);
 
 // analyze_command.cpp, batch_command.cpp, check_command.cpp

@@ -10,30 +10,17 @@
 
 namespace wrenchkit::cli {
 
-Equilibrium_result compute_equilibrium(const Options& o, const Scene& scene, const std::string& scene_text) {
-  Equilibrium_result r{decide_equilibrium(scene, mode_of(o.mode)), ""};
-  if (!r.a.decided)
-    throw Undecided("the float twin could not certify equilibrium of this scene (a predicate is within its "
-                    "error bound of zero, or the contact wrenches have rank < 3); use --mode hybrid or exact");
-  r.cert = certificate_json(r.a.certificate);
-  const auto c = wrenchkit_checker::check(scene_text, r.cert, checker_limits(o.limits));
-  if (c.outcome != wrenchkit_checker::Outcome::accepted)
-    throw Self_check_failure("the independent checker rejected our own certificate: " + c.message +
-                             "\ncertificate: " + r.cert);
-  return r;
-}
-
-std::string equilibrium_json(const Options& o, const Scene& scene, const Equilibrium_result& r, const char* command) {
-  const Wrench& l = r.a.load;
-  return "{\"command\": \"" + std::string(command) + "\", \"name\": " + json::quote(scene.name) +
-         ", \"mode\": \"" + o.mode + "\", \"decided_by\": \"" + r.a.decided_by() + "\", \"balanced\": " +
-         (r.a.balanced ? "true" : "false") + ", \"load\": [" + json::quote(to_string(l.fx)) + ", " +
+std::string equilibrium_json(const Options& o, const Equilibrium_item& r, const char* command) {
+  const Wrench& l = r.answer.load;
+  return "{\"command\": \"" + std::string(command) + "\", \"name\": " + json::quote(r.name) +
+         ", \"mode\": \"" + o.mode + "\", \"decided_by\": \"" + r.answer.decided_by() + "\", \"balanced\": " +
+         (r.answer.balanced ? "true" : "false") + ", \"load\": [" + json::quote(to_string(l.fx)) + ", " +
          json::quote(to_string(l.fy)) + ", " + json::quote(to_string(l.m)) + "], \"generators\": " +
-         std::to_string(r.a.generators) + ", \"certificate_checked\": true, \"certificate\": " + r.cert + "}";
+         std::to_string(r.answer.generators) + ", \"certificate_checked\": true, \"certificate\": " + r.certificate + "}";
 }
 
-std::string equilibrium_human(const Equilibrium_result& r) {
-  const Equilibrium_answer& a = r.a;
+std::string equilibrium_human(const Equilibrium_item& r) {
+  const Equilibrium_answer& a = r.answer;
   const std::array<Rational, 3> load = {a.load.fx, a.load.fy, a.load.m};
   std::ostringstream s;
   s << "load: the wrench " << vec_text(load) << " (force, moment about the origin)\n"
@@ -62,22 +49,22 @@ std::string equilibrium_human(const Equilibrium_result& r) {
 
 Scene_answer prepare_equilibrium_json(const Options& o) {
   only_options(o, "equilibrium", {});
-  return [o](const std::string& text, const std::string& source) {
-    const Scene scene = read_scene_streaming(text, o.limits, source);
-    return equilibrium_json(o, scene, compute_equilibrium(o, scene, text), "equilibrium");
+  return [o, request = request_of(o)](const std::string& text, const std::string& source) {
+    thread_local Scene scratch;
+    return equilibrium_json(o, answered(answer_equilibrium(text, source, request, scratch)), "equilibrium");
   };
 }
 
 int run_equilibrium(const Options& o, const std::string& scene_text, const std::string& source) {
   if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
   if (!o.form_certificate_file.empty()) throw Usage_error("--form-certificate is for closure");
-  const Scene scene = read_scene(scene_text, o.limits, source);
-  const Equilibrium_result r = compute_equilibrium(o, scene, scene_text);
-  if (!o.certificate_file.empty()) write_file(o.certificate_file, r.cert + "\n");
+  Scene scene;
+  const Equilibrium_item r = answered(answer_equilibrium(scene_text, source, request_of(o), scene));
+  if (!o.certificate_file.empty()) write_file(o.certificate_file, r.certificate + "\n");
   if (o.json) {
-    std::cout << equilibrium_json(o, scene, r, "equilibrium") << "\n";
+    std::cout << equilibrium_json(o, r, "equilibrium") << "\n";
   } else {
-    std::cout << "scene: " << (scene.name.empty() ? source : scene.name) << "\n"
+    std::cout << "scene: " << (r.name.empty() ? source : r.name) << "\n"
               << equilibrium_human(r) << "certificate accepted by the independent checker (exact arithmetic)\n";
   }
   return kAnswered;

@@ -262,23 +262,7 @@ int main(int argc, char** argv) {
   std::ios::sync_with_stdio(false);  // buffered iostreams (batch reads and writes millions of lines)
   try {
     return dispatch(argc, argv);
-  } catch (const Usage_error& e) {
-    std::cerr << "wrenchkit: usage error: " << e.what() << "\n";
-    return kBadInput;
-  } catch (const wrenchkit::Input_error& e) {
-    std::cerr << "wrenchkit: error: " << e.what() << "\n";
-    return kBadInput;
-  } catch (const Undecided& e) {
-    std::cerr << "wrenchkit: undecided: " << e.what() << "\n";
-    return kUndecided;
-  } catch (const Self_check_failure& e) {
-    std::cerr << "wrenchkit: internal error (please report): " << e.what() << "\n";
-    return kSelfCheck;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "wrenchkit: internal error: out of memory\n";
-    return kInternal;
-  } catch (const std::exception& e) {
-    std::cerr << "wrenchkit: internal error (please report): " << e.what() << "\n";
-    return kInternal;
+  } catch (...) {
+    return report(failure_of(std::current_exception()));
   }
 }

@@ -219,10 +219,11 @@ Built build_line(const Entry& e, const Reference_options& ro) {
   // Closure and equilibrium through the commands' own checked path: every certificate is accepted by
   // the independent checker (on `text`, the bytes written) before we go on.
   Scene scene;
-  const Closure_item c = compute_closure(o, text, e.id, &scene);
-  std::optional<Equilibrium_result> eq;
-  if (scene.load) eq = compute_equilibrium(o, scene, text);
-  bool balanced = eq && eq->a.balanced;
+  const Request request = request_of(o);
+  const Closure_item c = answered(answer_closure(text, e.id, request, scene));
+  std::optional<Equilibrium_item> eq;
+  if (scene.load) eq = answered(answer_equilibrium(scene, text, request));
+  bool balanced = eq && eq->answer.balanced;
   check_expected(e, c.force.holds, c.form.holds, c.force.rank, c.form.rank, eq ? &balanced : nullptr);
   const Moment_labels labels = moment_labels(scene, Reading::friction);
   const Boundary_distance bd = boundary_distance(scene);
@@ -237,19 +238,19 @@ Built build_line(const Entry& e, const Reference_options& ro) {
     << ", \"form_closure\": " << (c.form.holds ? "true" : "false") << ", \"rank\": {\"force\": " << c.force.rank
     << ", \"form\": " << c.form.rank << "}";
   if (eq) {
-    const Wrench& l = eq->a.load;
-    s << ", \"equilibrium\": " << (eq->a.balanced ? "true" : "false") << ", \"load\": [" << jq(l.fx) << ", "
+    const Wrench& l = eq->answer.load;
+    s << ", \"equilibrium\": " << (eq->answer.balanced ? "true" : "false") << ", \"load\": [" << jq(l.fx) << ", "
       << jq(l.fy) << ", " << jq(l.m) << "]";
   }
   s << ", \"labels\": {" << labels_json_fields(labels) << "}";
   if (scene.support) s << ", \"limit_surface\": " << limit_surface_json(scene, ro.sides);
   s << ", \"certificates\": {\"force_closure\": " << c.force_certificate << ", \"form_closure\": " << c.form_certificate;
-  if (eq) s << ", \"equilibrium\": " << eq->cert;
+  if (eq) s << ", \"equilibrium\": " << eq->certificate;
   s << "}, \"boundary\": " << boundary_json(bd, e.epsilon, eq.has_value()) << "}";
   b.line = s.str();
   b.certificates = eq ? 3 : 2;
   b.csv = e.id + "," + (c.force.holds ? "true" : "false") + "," + (c.form.holds ? "true" : "false") + "," +
-          (eq ? (eq->a.balanced ? "true" : "false") : "");
+          (eq ? (eq->answer.balanced ? "true" : "false") : "");
   return b;
 }
 

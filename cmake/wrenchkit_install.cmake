@@ -14,11 +14,12 @@ set(WRENCHKIT_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/wrenchkit")
 set_target_properties(wrenchkit_core PROPERTIES EXPORT_NAME core)
 set_target_properties(wrenchkit_float PROPERTIES EXPORT_NAME float)
 set_target_properties(wrenchkit_exact PROPERTIES EXPORT_NAME exact)
+set_target_properties(wrenchkit_pipeline PROPERTIES EXPORT_NAME pipeline)
 set_target_properties(wrenchkit_checker PROPERTIES EXPORT_NAME checker)
 set_target_properties(wrenchkit_gmp PROPERTIES EXPORT_NAME gmp)
 # Static libraries that a shared library (a consumer's plugin, the Python module) may link.
 # -fno-semantic-interposition keeps GCC inlining within a library as without -fPIC.
-foreach(t wrenchkit_float wrenchkit_exact wrenchkit_checker)
+foreach(t wrenchkit_float wrenchkit_exact wrenchkit_pipeline wrenchkit_checker)
   set_property(TARGET ${t} PROPERTY POSITION_INDEPENDENT_CODE ON)
   target_compile_options(${t} PRIVATE -fno-semantic-interposition)
 endforeach()
@@ -26,7 +27,7 @@ target_include_directories(wrenchkit_core INTERFACE
   "$<INSTALL_INTERFACE:${WRENCHKIT_INSTALL_INCLUDEDIR}>" "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
 target_include_directories(wrenchkit_checker INTERFACE "$<INSTALL_INTERFACE:${WRENCHKIT_INSTALL_INCLUDEDIR}>")
 
-install(TARGETS wrenchkit_core wrenchkit_float wrenchkit_exact wrenchkit_gmp wrenchkit_checker
+install(TARGETS wrenchkit_core wrenchkit_float wrenchkit_exact wrenchkit_pipeline wrenchkit_gmp wrenchkit_checker
   EXPORT wrenchkitTargets
   ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}" COMPONENT development)
 install(TARGETS wrenchkit wrenchkit-check RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT runtime)

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "core/mode.h"
+#include "exact/pipeline/pipeline.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/statics/force_dual.h"
@@ -69,11 +71,25 @@ Py_scene read_text(const std::string& text, const std::string& source, const py:
   return s;
 }
 
-Mode mode_of(const std::string& m) {
-  if (m == "exact") return Mode::exact;
-  if (m == "hybrid") return Mode::hybrid;
-  if (m == "float") return Mode::float_only;
-  throw Input_error("mode: \"" + m + "\" is not one of exact, hybrid, float");
+// The request of a question asked in `mode` (parsed once, here: an unknown mode is a ValueError).
+Request request_of(const std::string& mode) {
+  Request r;
+  const std::optional<Mode> m = parse_mode(mode);
+  if (!m) throw Input_error("mode: \"" + mode + "\" " + kModeChoices);
+  r.mode = *m;
+  return r;
+}
+
+// A pipeline answer that did not end in `answered` as the Python exception of its status: the one place
+// the bindings turn statuses into exceptions.
+void raise_unless_answered(Status s, const std::string& message) {
+  switch (s) {
+    case Status::answered: return;
+    case Status::bad_input: throw Input_error(message);
+    case Status::undecided: throw Undecided_exception{message + "; use mode hybrid or exact"};
+    case Status::check_failed: throw std::runtime_error(message + " (a bug, please report)");
+    case Status::internal_error: throw std::runtime_error(message);
+  }
 }
 
 Rational number(const std::string& text, const std::string& what) {
@@ -85,13 +101,6 @@ Rational number(const std::string& text, const std::string& what) {
 Vec3q vec3(const std::vector<std::string>& t, const std::string& what) {
   if (t.size() != 3) throw Input_error(what + ": needs 3 numbers, got " + std::to_string(t.size()));
   return {number(t[0], what + "[0]"), number(t[1], what + "[1]"), number(t[2], what + "[2]")};
-}
-
-void self_check(const Py_scene& s, const std::string& cert) {
-  const auto r = wrenchkit_checker::check(s.text, cert);
-  if (r.outcome != wrenchkit_checker::Outcome::accepted)
-    throw std::runtime_error("the independent checker rejected our own certificate (a bug, please report): " +
-                             r.message + "\ncertificate: " + cert);
 }
 
 py::dict reading_dict(const std::array<Rational, 3>& twist) {
@@ -142,43 +151,31 @@ py::dict closure_certificate(const Closure_certificate& c) {
 }
 
 py::dict closure(const Py_scene& s, const std::string& mode) {
-  const Mode m = mode_of(mode);
-  const Closure_answer fc = decide_closure(s.scene, Property::force_closure, m);
-  const Closure_answer fo = decide_closure(s.scene, Property::form_closure, m);
-  if (!fc.decided || !fo.decided)
-    throw Undecided_exception{"the float twin could not certify " +
-                          std::string(!fc.decided ? (!fo.decided ? "force or form closure" : "force closure") : "form closure") +
-                          " of this scene (a predicate is within its error bound of zero); use mode hybrid or exact"};
-  const std::string fc_json = certificate_json(fc.certificate), fo_json = certificate_json(fo.certificate);
-  self_check(s, fc_json);
-  self_check(s, fo_json);
+  const Closure_item r = answer_closure(s.scene, s.text, request_of(mode));
+  raise_unless_answered(r.status, r.message);
   py::dict d;
-  d["force_closure"] = fc.holds;
-  d["form_closure"] = fo.holds;
+  d["force_closure"] = r.force.holds;
+  d["form_closure"] = r.form.holds;
   py::dict rank, gens;
-  rank["force"] = fc.rank;
-  rank["form"] = fo.rank;
-  gens["force"] = fc.generators;
-  gens["form"] = fo.generators;
+  rank["force"] = r.force.rank;
+  rank["form"] = r.form.rank;
+  gens["force"] = r.force.generators;
+  gens["form"] = r.form.generators;
   d["rank"] = rank;
   d["generators"] = gens;
   d["mode"] = mode;
-  const std::string x = fc.decided_by(), y = fo.decided_by();
-  d["decided_by"] = x == y ? x : "hybrid";
-  d["certificate"] = closure_certificate(fc.certificate);
-  d["form_certificate"] = closure_certificate(fo.certificate);
-  d["certificate_json"] = fc_json;
-  d["form_certificate_json"] = fo_json;
+  d["decided_by"] = r.decided_by();
+  d["certificate"] = closure_certificate(r.force.certificate);
+  d["form_certificate"] = closure_certificate(r.form.certificate);
+  d["certificate_json"] = r.force_certificate;
+  d["form_certificate_json"] = r.form_certificate;
   return d;
 }
 
 py::dict equilibrium(const Py_scene& s, const std::string& mode) {
-  const Equilibrium_answer a = decide_equilibrium(s.scene, mode_of(mode));
-  if (!a.decided)
-    throw Undecided_exception{"the float twin could not certify equilibrium of this scene (a predicate is "
-                          "within its error bound of zero, or the contact wrenches have rank < 3); use mode hybrid or exact"};
-  const std::string cert = certificate_json(a.certificate);
-  self_check(s, cert);
+  const Equilibrium_item r = answer_equilibrium(s.scene, s.text, request_of(mode));
+  raise_unless_answered(r.status, r.message);
+  const Equilibrium_answer& a = r.answer;
   py::dict c;
   c["wrenchkit_certificate"] = 1;
   c["property"] = "equilibrium";
@@ -195,7 +192,7 @@ py::dict equilibrium(const Py_scene& s, const std::string& mode) {
   d["mode"] = mode;
   d["decided_by"] = a.decided_by();
   d["certificate"] = c;
-  d["certificate_json"] = cert;
+  d["certificate_json"] = r.certificate;
   return d;
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <atomic>
 #include <stdexcept>
 #include <string>
@@ -11,7 +12,6 @@
 
 #include "exact/pipeline/batch.h"
 #include "exact/io/input_error.h"
-#include "proofs/checker/checker.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {
@@ -28,20 +28,12 @@ std::vector<std::string> golden_and_bad() {
   return texts;
 }
 
-// The independent checker, as the CLI passes it.
-std::string checker(std::string_view scene, const std::vector<std::string_view>& certs) {
-  for (const auto& r : wrenchkit_checker::check_all(scene, certs))
-    if (r.outcome != wrenchkit_checker::Outcome::accepted) return r.message;
-  return "";
-}
-
 TEST(BatchClosure, AnswersEveryTextInOrderLikeDecideClosure) {
   const std::vector<std::string> texts = golden_and_bad();
   for (const Mode mode : {Mode::hybrid, Mode::exact}) {
-    Closure_batch_options o;
-    o.mode = mode;
+    Batch_options o;
+    o.request.mode = mode;  // certificates checked by the independent checker: the default
     o.jobs = 3;
-    o.check = checker;
     const std::vector<Closure_item> items = batch_closure(texts, o);
     ASSERT_EQ(items.size(), texts.size());
     int bad = 0;
@@ -52,11 +44,11 @@ TEST(BatchClosure, AnswersEveryTextInOrderLikeDecideClosure) {
         scene = read_scene(texts[i], Input_limits{}, "scene " + std::to_string(i + 1));
       } catch (const Input_error& e) {
         ++bad;
-        EXPECT_EQ(items[i].status, Batch_status::bad_input);
+        EXPECT_EQ(items[i].status, Status::bad_input);
         EXPECT_EQ(items[i].message, e.what());  // read_scene's message, the scene named by its position
         continue;
       }
-      ASSERT_EQ(items[i].status, Batch_status::answered) << items[i].message;
+      ASSERT_EQ(items[i].status, Status::answered) << items[i].message;
       EXPECT_EQ(items[i].name, scene.name);
       for (const Property p : {Property::force_closure, Property::form_closure}) {
         const Closure_answer want = decide_closure(scene, p, mode);
@@ -79,8 +71,8 @@ TEST(BatchClosure, TheSameAnswersOnOneThreadOrMany) {
   for (int k = 0; k < 8; ++k)
     for (const std::string& t : golden_and_bad()) texts.push_back(t);  // > 256 texts: several windows
   ASSERT_GT(texts.size(), 512u);
-  Closure_batch_options o;
-  o.certify = false;  // verdicts only: the lazy reading
+  Batch_options o;
+  o.request.certify = false;  // verdicts only: the lazy reading
   o.jobs = 1;
   const std::vector<Closure_item> one = batch_closure(texts, o);
   for (unsigned jobs : {2u, 5u}) {
@@ -97,38 +89,45 @@ TEST(BatchClosure, TheSameAnswersOnOneThreadOrMany) {
     }
   }
   // Verdicts only, the same verdicts as with certificates.
-  o.certify = true;
+  o.request.certify = true;
   const std::vector<Closure_item> certified = batch_closure(texts, o);
   for (std::size_t i = 0; i < one.size(); ++i) {
     EXPECT_EQ(certified[i].force.holds, one[i].force.holds);
     EXPECT_EQ(certified[i].form.holds, one[i].form.holds);
-    EXPECT_EQ(certified[i].force_certificate.empty(), certified[i].status != Batch_status::answered);
+    EXPECT_EQ(certified[i].force_certificate.empty(), certified[i].status != Status::answered);
   }
 }
 
 TEST(BatchClosure, ErrorsAreValues) {
-  Closure_batch_options o;
+  Batch_options o;
   o.jobs = 2;
   // --mode float on exactly concurrent normals written with inexact decimals: undecided.
   const std::string tenths = R"({"wrenchkit": 1, "contacts": [
       {"at": [0.1, 0], "normal": [0, 0.1]}, {"at": [0, 0.1], "normal": [0.1, 0]}, {"at": [0.3, 0.3], "normal": [-0.1, -0.1]}]})";
-  o.mode = Mode::float_only;
+  o.request.mode = Mode::float_only;
   std::vector<Closure_item> items = batch_closure({tenths, "{"}, o);
-  EXPECT_EQ(items[0].status, Batch_status::undecided);
+  EXPECT_EQ(items[0].status, Status::undecided);
   EXPECT_NE(items[0].message.find("could not certify"), std::string::npos);
-  EXPECT_EQ(items[1].status, Batch_status::bad_input);
+  EXPECT_EQ(items[1].status, Status::bad_input);
   EXPECT_EQ(items[1].message, "scene 2:1:2: invalid JSON: expected a string key");
-  // A check that rejects: check_failed, with its reason; one that accepts: answered.
-  o.mode = Mode::hybrid;
-  o.check = [](std::string_view, const std::vector<std::string_view>& certs) {
-    return certs.size() == 2 ? std::string("rejected on purpose") : std::string("wrong count");
-  };
+  EXPECT_EQ(items[0].message.find("use --mode"), std::string::npos);  // no front end's advice in the engine
+  // A certificate the independent checker rejects (corrupted on purpose): check_failed, with its reason;
+  // the same scene unharmed: answered.
+  o.request.mode = Mode::hybrid;
+  setenv("WRENCHKIT_FAULT_INJECTION", "corrupt-certificate", 1);
   items = batch_closure({tenths}, o);
-  EXPECT_EQ(items[0].status, Batch_status::check_failed);
-  EXPECT_EQ(items[0].message, "rejected on purpose");
-  o.check = checker;
+  unsetenv("WRENCHKIT_FAULT_INJECTION");
+  EXPECT_EQ(items[0].status, Status::check_failed);
+  EXPECT_EQ(items[0].message.rfind("the independent checker rejected our own certificate: ", 0), 0u) << items[0].message;
+  EXPECT_NE(items[0].message.find("injected_fault"), std::string::npos);
+  o.request.check = Check::none;  // nobody checks: the corruption would pass (measurements only)
+  setenv("WRENCHKIT_FAULT_INJECTION", "corrupt-certificate", 1);
   items = batch_closure({tenths}, o);
-  EXPECT_EQ(items[0].status, Batch_status::answered) << items[0].message;
+  unsetenv("WRENCHKIT_FAULT_INJECTION");
+  EXPECT_EQ(items[0].status, Status::answered);
+  o.request.check = Check::independent;
+  items = batch_closure({tenths}, o);
+  EXPECT_EQ(items[0].status, Status::answered) << items[0].message;
   EXPECT_FALSE(items[0].force.holds);
   EXPECT_GT(items[0].force.exact_predicates, 0u);  // hybrid went exact where the twin could not decide
 }
@@ -137,8 +136,8 @@ TEST(BatchClosure, StreamsInOrderWithBoundedMemory) {
   const std::vector<std::string> texts = golden_and_bad();
   const std::size_t n = 3000;
   for (unsigned jobs : {1u, 3u}) {
-    Closure_batch_options o;
-    o.certify = false;
+    Batch_options o;
+    o.request.certify = false;
     o.jobs = jobs;
     std::size_t pulled = 0, emitted = 0, most_pending = 0;
     batch_closure(

@@ -22,6 +22,9 @@ check_dir(proofs "<CGAL/|\"(exact|core|float|cli)/" "proofs/ shares no code with
 # exact/'s parts (docs/design.md, "Layout"): numbers <- io <- statics, sliding <- pipeline; nothing of the engine
 # reaches the front ends (cli/, python/) or the test scenery (testing/).
 check_dir(exact "\"(cli|python|testing|bench|fuzz|tests)/" "the engine does not depend on front ends or test scenery")
+foreach(part numbers io statics sliding)
+  check_dir(exact/${part} "\"proofs/" "only exact/pipeline/ calls the independent checker")
+endforeach()
 check_dir(exact/numbers "\"exact/(io|statics|sliding|pipeline)/" "numbers/ is the bottom of exact/")
 check_dir(exact/io "\"exact/(statics|sliding|pipeline)/" "io/ sits on numbers/ only")
 check_dir(exact/statics "\"exact/(sliding|pipeline)/" "statics/ does not know sliding or the pipeline")

@@ -1,0 +1,126 @@
+#include "exact/pipeline/pipeline.h"
+
+#include <cstdlib>
+#include <string>
+
+#include "exact/io/streaming_scene_reader.h"
+#include "proofs/checker/checker.h"
+
+namespace wrenchkit {
+
+int exit_code(Status s) {
+  switch (s) {
+    case Status::answered: return 0;
+    case Status::bad_input: return 2;
+    case Status::undecided: return 3;
+    case Status::check_failed: return 4;
+    case Status::internal_error: return 70;
+  }
+  return 70;
+}
+
+std::string check_certificates(std::string_view scene_text, const std::vector<std::string_view>& certificates,
+                               const Request& request) {
+  if (request.check == Check::none) return std::string();
+  const char* fault = std::getenv("WRENCHKIT_FAULT_INJECTION");
+  const bool corrupt = fault && std::string(fault) == "corrupt-certificate";
+  std::string injected;
+  std::vector<std::string_view> checked = certificates;
+  if (corrupt && !certificates.empty()) {
+    injected = std::string(certificates[0]);
+    injected.insert(1, "\"injected_fault\": true, ");
+    checked[0] = injected;
+  }
+  wrenchkit_checker::Limits limits;
+  limits.max_digits = request.limits.max_digits;
+  limits.max_exponent = request.limits.max_exponent;
+  limits.max_depth = request.limits.max_depth;
+  limits.max_contacts = request.limits.max_contacts;
+  const std::vector<wrenchkit_checker::Result> results = wrenchkit_checker::check_all(scene_text, checked, limits);
+  for (std::size_t k = 0; k < results.size(); ++k)
+    if (results[k].outcome != wrenchkit_checker::Outcome::accepted)
+      return "the independent checker rejected our own certificate: " + results[k].message +
+             "\ncertificate: " + std::string(checked[k]);
+  return std::string();
+}
+
+namespace {
+
+void decide_closure_item(const Scene& scene, std::string_view text, const Request& r, Closure_item& item) {
+  item.name = scene.name;
+  item.force = decide_closure(scene, Property::force_closure, r.mode, r.certify);
+  item.form = decide_closure(scene, Property::form_closure, r.mode, r.certify);
+  if (!item.force.decided || !item.form.decided) {
+    item.status = Status::undecided;
+    item.message = std::string("the float twin could not certify ") +
+                   (!item.force.decided ? (!item.form.decided ? "force or form closure" : "force closure")
+                                        : "form closure") +
+                   " of this scene (a predicate is within its error bound of zero)";
+    return;
+  }
+  if (!r.certify) return;
+  item.force_certificate = certificate_json(item.force.certificate);
+  item.form_certificate = certificate_json(item.form.certificate);
+  std::string why = check_certificates(text, {item.force_certificate, item.form_certificate}, r);
+  if (!why.empty()) {
+    item.status = Status::check_failed;
+    item.message = std::move(why);
+  }
+}
+
+void decide_equilibrium_item(const Scene& scene, std::string_view text, const Request& r, Equilibrium_item& item) {
+  item.name = scene.name;
+  item.answer = decide_equilibrium(scene, r.mode, r.certify);
+  if (!item.answer.decided) {
+    item.status = Status::undecided;
+    item.message = "the float twin could not certify equilibrium of this scene (a predicate is within its error "
+                   "bound of zero, or the contact wrenches have rank < 3)";
+    return;
+  }
+  if (!r.certify) return;
+  item.certificate = certificate_json(item.answer.certificate);
+  std::string why = check_certificates(text, {item.certificate}, r);
+  if (!why.empty()) {
+    item.status = Status::check_failed;
+    item.message = std::move(why);
+  }
+}
+
+// Closure reads lazily (certified doubles from the digits, rationals only where an exact predicate needs
+// them) unless the mode is exact or certificates are built: those need every contact's rationals.
+bool lazy_for(const Request& r) { return r.mode != Mode::exact && !r.certify; }
+
+}  // namespace
+
+Closure_item answer_closure(std::string_view text, std::string_view source, const Request& r, Scene& scratch) {
+  Closure_item item;
+  guarded(item, [&] {
+    read_scene_into(scratch, text, r.limits, source, lazy_for(r));
+    decide_closure_item(scratch, text, r, item);
+  });
+  return item;
+}
+
+Closure_item answer_closure(const Scene& scene, std::string_view text, const Request& r) {
+  Closure_item item;
+  guarded(item, [&] { decide_closure_item(scene, text, r, item); });
+  return item;
+}
+
+Equilibrium_item answer_equilibrium(std::string_view text, std::string_view source, const Request& r,
+                                    Scene& scratch) {
+  Equilibrium_item item;
+  guarded(item, [&] {
+    read_scene_into(scratch, text, r.limits, source, false);  // the load needs its rationals
+    decide_equilibrium_item(scratch, text, r, item);
+  });
+  return item;
+}
+
+Equilibrium_item answer_equilibrium(const Scene& scene, std::string_view text, const Request& r) {
+  Equilibrium_item item;
+  guarded(item, [&] { decide_equilibrium_item(scene, text, r, item); });
+  return item;
+}
+
+}  // namespace wrenchkit
