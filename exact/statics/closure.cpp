@@ -125,26 +125,23 @@ Closure_answer decide_closure(const Scene& scene, Property property, Mode mode, 
   const Lazy_generators lazy(scene, reading_of(property));
   Closure_answer a;
   a.mode = mode;
-  Dual_cone dc;
   std::optional<Exact_kernel> exact;  // integer rows straight from the contacts (exact mode, certificates)
-  if (mode == Mode::exact) {
+  const auto make_exact = [&]() -> const Exact_kernel& {
     if (certify) exact.emplace(scene, reading_of(property), std::vector<Wrench>{}, Exact_kernel::With_provenance{});
     else exact.emplace(scene, reading_of(property));
-    const Counting_exact_kernel kernel{*exact};
-    dc = compute_dual_cone(kernel);
-    a.predicates = a.exact_predicates = kernel.n;
-    a.generators = exact->size();
-  } else {
-    const fl::Float_kernel twin(fl::generators(to_bounded(scene), reading_of(property)));
-    const Hybrid_kernel kernel(twin, lazy, mode == Mode::hybrid);
-    dc = compute_dual_cone(kernel);
-    a.predicates = kernel.n;
-    a.exact_predicates = kernel.exact_n;
-    a.generators = twin.size();
-    if (!dc.decided) {
-      a.decided = false;
-      return a;
-    }
+    return *exact;
+  };
+  const auto make_twin = [&] { return fl::Float_kernel(fl::generators(to_bounded(scene), reading_of(property))); };
+  Predicate_tally tally;
+  const Dual_cone dc = in_mode(mode, make_exact, make_twin, lazy, tally, [&](const auto& kernel) {
+    a.generators = kernel.size();
+    return compute_dual_cone(kernel);
+  });
+  a.predicates = tally.predicates;
+  a.exact_predicates = tally.exact;
+  if (!dc.decided) {  // only in Mode::float_only
+    a.decided = false;
+    return a;
   }
 
   a.rank = dc.rank;

@@ -54,11 +54,8 @@ struct Closure_answer {
   Closure_certificate certificate;   // built exactly from the decision's indices, in every mode
   std::size_t predicates = 0;        // signs the algorithm asked for
   std::size_t exact_predicates = 0;  // of which decided in exact arithmetic
-  // "exact", "float" (no exact predicate) or "hybrid" (some of each).
-  const char* decided_by() const {
-    if (mode == Mode::exact) return "exact";
-    return exact_predicates == 0 ? "float" : (exact_predicates == predicates ? "exact" : "hybrid");
-  }
+  // "exact", "float" (no exact predicate) or "hybrid" (some of each): core/mode.h's rule.
+  const char* decided_by() const { return wrenchkit::decided_by(mode, predicates, exact_predicates); }
 };
 
 // `certify` false skips building the certificate (for throughput measurements and callers that

@@ -1,6 +1,8 @@
 #include "exact/statics/equilibrium.h"
 
+#include <array>
 #include <stdexcept>
+#include <type_traits>
 
 #include "core/dual_cone.h"
 #include "exact/statics/cone_lp.h"
@@ -91,35 +93,47 @@ Equilibrium_answer decide_equilibrium(const Scene& scene, Mode mode, bool certif
     decide_by_lp(k, a, certify);
     return a;
   }
-  // [EQ-2] The dual cone over the filtered kernel, with the load as an extra row (index n).
-  std::vector<fl::Bounded3> rows = fl::generators(to_bounded(scene), Reading::friction);
-  const std::size_t n = rows.size();
+  // [EQ-2] The dual cone over the filtered kernel, with the load as an extra row (index n). (Exact mode
+  // decided above, by the LP.)
+  const std::size_t n = generator_count(scene, Reading::friction);
   a.generators = n;
-  rows.push_back(load_bounded(scene));
-  const fl::Float_kernel twin(std::move(rows));
   const Lazy_generators lazy(scene, Reading::friction, {a.load});
-  const Hybrid_kernel kernel(twin, lazy, mode == Mode::hybrid);
-  const Dual_cone dc = compute_dual_cone(First_rows<Hybrid_kernel>{kernel, n});
-  auto undecided = [&] {
+  const auto make_twin = [&] {
+    std::vector<fl::Bounded3> rows = fl::generators(to_bounded(scene), Reading::friction);
+    rows.push_back(load_bounded(scene));
+    return fl::Float_kernel(std::move(rows));
+  };
+  const auto no_exact = []() -> const Exact_kernel& { throw std::logic_error("equilibrium: exact mode is the LP's"); };
+  struct Run {
+    Dual_cone dc;
+    Sign balanced = Sign::uncertain;
+    std::array<std::size_t, 2> witness{};  // an extreme ray of W* with ⟨ray, w⟩ > 0, if any
+  };
+  Predicate_tally tally;
+  const Run run = in_mode(mode, no_exact, make_twin, lazy, tally, [&](const auto& kernel) {
+    Run r;
+    r.dc = compute_dual_cone(First_rows<std::decay_t<decltype(kernel)>>{kernel, n});
+    if (r.dc.decided && r.dc.rank == 3) r.balanced = load_balanced(kernel, r.dc, n, &r.witness);
+    return r;
+  });
+  a.predicates = tally.predicates;
+  a.exact_predicates = tally.exact;
+  const auto undecided = [&] {
     a.decided = false;
-    a.predicates = kernel.n;
-    a.exact_predicates = kernel.exact_n;
     return a;
   };
-  if (!dc.decided) return undecided();
-  if (dc.rank < 3) {  // W* has a lineality space: decide by the exact LP (hybrid) or abstain (float)
+  if (!run.dc.decided) return undecided();
+  if (run.dc.rank < 3) {  // W* has a lineality space: decide by the exact LP (hybrid) or abstain (float)
     if (mode == Mode::float_only) return undecided();
-    a.predicates = kernel.n + 1;
-    a.exact_predicates = kernel.exact_n + 1;
+    ++a.predicates;
+    ++a.exact_predicates;
     decide_by_lp(load_kernel(scene, a.load), a, certify);
     return a;
   }
-  std::array<std::size_t, 2> witness{};  // an extreme ray of W* with ⟨ray, w⟩ > 0, if any
-  const Sign balanced = load_balanced(kernel, dc, n, &witness);
+  const Sign balanced = run.balanced;
+  const std::array<std::size_t, 2>& witness = run.witness;
   if (balanced == Sign::uncertain) return undecided();
   a.balanced = balanced == Sign::positive;
-  a.predicates = kernel.n;
-  a.exact_predicates = kernel.exact_n;
   a.certificate.holds = a.balanced;
   if (!certify) return a;
   const Exact_kernel k = load_kernel(scene, a.load);

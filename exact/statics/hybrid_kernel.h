@@ -1,6 +1,6 @@
-// Kernels of the hybrid mode [FL-2]: per-predicate filtering (the float twin's certified sign,
-// else the exact sign), exact generators built only when needed, and predicate counters.
-// Internal to exact/ (closure.cpp, equilibrium.cpp).
+// Kernels of the modes [FL-2]: per-predicate filtering (the float twin's certified sign, else the exact
+// sign), exact generators built only when needed, predicate counters, and in_mode — the one dispatch on
+// the mode for every sign-deciding algorithm of statics/ (closure, equilibrium, the wrench cone).
 #pragma once
 
 #include <cstddef>
@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/mode.h"
 #include "exact/statics/generators.h"
 #include "float/float_kernel.h"
 
@@ -89,5 +90,32 @@ class Hybrid_kernel {
   mutable std::unique_ptr<Exact_kernel> e_;
 };
 
+
+// Signs asked and those of them decided in exact arithmetic (decided_by in core/mode.h reads them).
+struct Predicate_tally {
+  std::size_t predicates = 0, exact = 0;
+};
+
+// [FL-2] The one dispatch on the mode: `run(kernel)` on the exact kernel `exact()` (Mode::exact: every sign
+// exact, no floating point at all) or on the kernel of the twin's rows `twin()` with per-predicate exact
+// fallback from `lazy` (Mode::hybrid) or without it (Mode::float_only: a sign may be uncertain, and `run`
+// must say so). `exact` returns a const Exact_kernel& and `twin` an fl::Float_kernel; each is asked only in
+// its modes. Adds to `tally`; returns what `run` returns (the same type for both kernels).
+template <class Exact, class Twin, class Run>
+auto in_mode(Mode mode, Exact&& exact, Twin&& twin, const Lazy_generators& lazy, Predicate_tally& tally, Run&& run) {
+  if (mode == Mode::exact) {
+    const Counting_exact_kernel k{exact()};
+    auto r = run(k);
+    tally.predicates += k.n;
+    tally.exact += k.n;
+    return r;
+  }
+  const fl::Float_kernel rows = twin();
+  const Hybrid_kernel k(rows, lazy, mode == Mode::hybrid);
+  auto r = run(k);
+  tally.predicates += k.n;
+  tally.exact += k.exact_n;
+  return r;
+}
 
 }  // namespace wrenchkit

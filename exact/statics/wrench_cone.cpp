@@ -1,6 +1,7 @@
 #include "exact/statics/wrench_cone.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 #include "exact/statics/hybrid_kernel.h"
@@ -62,20 +63,14 @@ fl::Bounded3 bounded_of(const Wrench& w) { return {to_bounded(w.fx), to_bounded(
 // [FC-1] on the wrenches: exact, or hybrid (the twin's certified sign, exact where uncertain).
 Dual_cone dual_cone_of(const std::vector<Wrench>& ws, const std::vector<fl::Bounded3>& twin, Mode mode,
                        Wrench_cone& counts) {
-  if (mode == Mode::exact) {
-    const Exact_kernel exact(ws);
-    const Counting_exact_kernel k{exact};
-    Dual_cone dc = compute_dual_cone(k);
-    counts.predicates += k.n;
-    counts.exact_predicates += k.n;
-    return dc;
-  }
-  const fl::Float_kernel f(twin);
+  std::optional<Exact_kernel> exact;
   const Lazy_generators lazy(ws);
-  const Hybrid_kernel k(f, lazy, true);
-  Dual_cone dc = compute_dual_cone(k);
-  counts.predicates += k.n;
-  counts.exact_predicates += k.exact_n;
+  Predicate_tally tally;
+  Dual_cone dc = in_mode(
+      mode, [&]() -> const Exact_kernel& { return exact.emplace(ws); }, [&] { return fl::Float_kernel(twin); }, lazy,
+      tally, [](const auto& k) { return compute_dual_cone(k); });
+  counts.predicates += tally.predicates;
+  counts.exact_predicates += tally.exact;
   return dc;
 }
 
