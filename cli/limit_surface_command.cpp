@@ -13,6 +13,7 @@
 #include "cli/render_limit_surface.h"
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
+#include "exact/pipeline/support_answer.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
 #include "exact/io/streaming_scene_reader.h"
@@ -226,41 +227,16 @@ Ls_options limit_surface_options(const Options& o) {
   return lo;
 }
 
-// Everything the command computes for one scene.
-struct Ls_result {
-  Scene scene;
-  std::optional<Polygonal_ls> model;
-  Ls_polytope in, out;
-  Sliding_answer sa;
-  std::optional<Rational> g_in, g_out;
-  Motion_decision motion;
-  Polygonal_ls::Normal_cone cone_in, cone_out;
-  // Not in --mode exact: the true surface, certified float bounds (float/limit_surface_twin.h).
-  std::vector<fl::Support_point_twin> twin;
-  std::optional<fl::Bounded> true_power;
-  std::optional<fl::Load_twin> true_load;
-};
-
-fl::Bounded3 twin_of(const Vec3q& q) { return {to_bounded(q[0]), to_bounded(q[1]), to_bounded(q[2])}; }
-
-void true_surface(const Ls_options& lo, Ls_result& r) {
-  if (lo.mode == Mode::exact) return;
-  r.twin = twin_support(r.model->support());
-  if (!lo.twist) return;
-  r.true_power = fl::support_function(r.twin, twin_of(*lo.twist));
-  r.true_load = fl::load_for_twist(r.twin, twin_of(*lo.twist));
-}
-
 std::string bounded_json(const fl::Bounded& b) { return float_value_json(b); }
 std::string bounded_text(const fl::Bounded& b) { return float_value_text(b); }
 
-// The true surface's fields (hybrid and float): ', "true_surface_values": {…}'.
-std::string true_json(const Ls_result& r) {
+// The true surface's fields (hybrid and float): ', "true_power": …, "true_load": …'.
+std::string true_json(const Support_item& r) {
   if (!r.true_power) return "";
   return ", \"true_power\": " + bounded_json(*r.true_power) + ", \"true_load\": " + float_load_json(*r.true_load);
 }
 
-std::string motion_fields(const Ls_result& r) {
+std::string motion_fields(const Support_item& r) {
   std::string s = std::string(", \"motion_decided_by\": \"") + r.motion.decided_by + "\"";
   if (r.motion.cells) s += ", \"search_twists\": " + std::to_string(r.motion.cells);
   if (std::string(r.motion.decided_by) == "float" && r.motion.motion == Motion::slides)
@@ -269,41 +245,14 @@ std::string motion_fields(const Ls_result& r) {
   return s;
 }
 
-Ls_result compute_limit_surface(const Ls_options& lo, const Options& o, const std::string& text,
-                                const std::string& source) {
-  Ls_result r;
-  r.scene = read_scene_streaming(text, o.limits, source);
-  if (!r.scene.support)
-    throw Input_error(source + ": support: the scene has no \"support\" (limit-surface needs one)");
-  const Polygonal_ls& model = r.model.emplace(merge_support(*r.scene.support), make_directions(lo.sides));
-  if (model.candidate_count() > kMaxCandidates)
-    throw Usage_error("--sides " + std::to_string(lo.sides) + " with " + std::to_string(model.support().points.size()) +
-                      " distinct support points needs " + std::to_string(model.candidate_count()) +
-                      " candidate normals, more than the limit " + std::to_string(kMaxCandidates) +
-                      "; use fewer sides (or a larger --tolerance)");
-  true_surface(lo, r);
-  if (lo.mode == Mode::float_only) {
-    if (lo.load) {
-      r.motion = decide_motion(model, *lo.load, Mode::float_only);
-      if (r.motion.motion == Motion::undecided)
-        throw Undecided("the float twin's search could not tell whether the load sticks (it is within the search's "
-                        "resolution of the limit surface); use --mode hybrid");
-    }
-    return r;
-  }
-  r.in = model.build(Side::inner);
-  r.out = model.build(Side::outer);
-  r.sa = compute_sliding(model, lo.twist);
-  if (lo.load) {
-    r.g_in = model.gauge(r.in, Side::inner, *lo.load);
-    r.g_out = model.gauge(r.out, Side::outer, *lo.load);
-    r.motion = decide_motion(model, *lo.load, lo.mode, &r.in, &r.out);
-    if (r.motion.motion != Motion::sticks) {
-      r.cone_in = model.normal_cone(r.in, Side::inner, *lo.load);
-      r.cone_out = model.normal_cone(r.out, Side::outer, *lo.load);
-    }
-  }
-  return r;
+// The scene's answer through the pipeline; a failure unwinds as the CLI's Failure.
+Support_item compute_limit_surface(const Ls_options& lo, const Options& o, const std::string& text,
+                                   const std::string& source) {
+  Support_query q;
+  q.sides = lo.sides;
+  q.twist = lo.twist;
+  q.load = lo.load;
+  return answered(answer_support(text, source, request_of(o), q));
 }
 
 const char* kConvention =
@@ -316,11 +265,11 @@ std::string ratio_text(const Directions& d) {
   return buf;
 }
 
-std::string limit_surface_json(const Ls_options& lo, const Ls_result& r) {
+std::string limit_surface_json(const Ls_options& lo, const Support_item& r) {
   const Polygonal_ls& model = *r.model;
   const Directions& d = model.directions();
   const Ls_support& sup = model.support();
-  const Sliding_answer& sa = r.sa;
+  const Sliding_answer& sa = r.sliding;
   std::ostringstream s;
   s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \""
     << mode_name(lo.mode) << "\", \"convention\": " << json::quote(kConvention) << ", \"sides\": " << lo.sides;
@@ -347,7 +296,7 @@ std::string limit_surface_json(const Ls_options& lo, const Ls_result& r) {
       return t + "]}";
     };
     s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\""
-      << motion_fields(r) << ", \"gauge\": {\"outer\": " << gauge_json(r.g_out) << ", \"inner\": " << gauge_json(r.g_in)
+      << motion_fields(r) << ", \"gauge\": {\"outer\": " << gauge_json(r.gauge_out) << ", \"inner\": " << gauge_json(r.gauge_in)
       << "}";
     if (r.motion.motion != Motion::sticks)
       s << ", \"twist_cone\": {\"outer\": " << cone_json(r.cone_out) << ", \"inner\": " << cone_json(r.cone_in) << "}";
@@ -356,11 +305,11 @@ std::string limit_surface_json(const Ls_options& lo, const Ls_result& r) {
   return s.str();
 }
 
-std::string limit_surface_human(const Ls_options& lo, const Ls_result& r, const std::string& source) {
+std::string limit_surface_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
   const Polygonal_ls& model = *r.model;
   const Directions& d = model.directions();
   const Ls_support& sup = model.support();
-  const Sliding_answer& sa = r.sa;
+  const Sliding_answer& sa = r.sliding;
   std::ostringstream s;
   s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
     << "support: " << sup.points.size() << " distinct point(s) with mu*f > 0 (of " << r.scene.support->points.size()
@@ -393,8 +342,8 @@ std::string limit_surface_human(const Ls_options& lo, const Ls_result& r, const 
     if (r.true_power) s << "  true power (float twin, certified): " << bounded_text(*r.true_power) << "\n";
   }
   if (lo.load) {
-    s << "load " << tv(*lo.load) << ": " << motion_name(r.motion.motion) << "  (gauge between " << gauge_text(r.g_out)
-      << " and " << gauge_text(r.g_in) << "; sticks if < 1, slides if >= 1; decided by "
+    s << "load " << tv(*lo.load) << ": " << motion_name(r.motion.motion) << "  (gauge between " << gauge_text(r.gauge_out)
+      << " and " << gauge_text(r.gauge_in) << "; sticks if < 1, slides if >= 1; decided by "
       << (std::string(r.motion.decided_by) == "float" ? "the float twin's certified search on the true surface"
                                                        : std::string(r.motion.decided_by) == "polygons" ? "the polygons"
                                                                                                          : "nothing")
@@ -412,11 +361,10 @@ std::string limit_surface_human(const Ls_options& lo, const Ls_result& r, const 
 
 // --mode float: the twin alone (no exact polytopes). Its direction set has double parameters t_j, so
 // its λ² is certified for that set (close to, not equal to, the exact set's).
-std::string limit_surface_float_json(const Ls_options& lo, const Ls_result& r) {
-  const fl::Directions_twin d = fl::make_directions(lo.sides);
-  const fl::Point2 cof = fl::center_of_friction(r.twin);
-  fl::Bounded mu_f0;
-  for (const fl::Support_point_twin& p : r.twin) mu_f0 = mu_f0 + p.rho;
+std::string limit_surface_float_json(const Ls_options& lo, const Support_item& r) {
+  const fl::Directions_twin& d = *r.twin_directions;
+  const fl::Point2& cof = r.twin_center_of_friction;
+  const fl::Bounded& mu_f0 = r.twin_mu_f0;
   std::ostringstream s;
   s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"float\""
     << ", \"convention\": " << json::quote(kConvention) << ", \"sides\": " << lo.sides;
@@ -424,21 +372,19 @@ std::string limit_surface_float_json(const Ls_options& lo, const Ls_result& r) {
   s << ", \"lambda_squared\": " << bounded_json(d.lambda_sq) << ", \"support\": {\"input_points\": "
     << r.scene.support->points.size() << ", \"points\": " << r.twin.size() << ", \"mu_f0\": " << bounded_json(mu_f0)
     << ", \"center_of_friction\": [" << bounded_json(cof.x) << ", " << bounded_json(cof.y) << "]}";
-  if (lo.twist) {
-    const fl::Bounded3 q = twin_of(*lo.twist);
+  if (lo.twist)
     s << ", \"twist\": " << jv(*lo.twist) << ", \"load_for_twist\": {\"power\": {\"inner\": "
-      << bounded_json(fl::polygonal_support(r.twin, d, false, q)) << ", \"outer\": "
-      << bounded_json(fl::polygonal_support(r.twin, d, true, q)) << "}" << true_json(r) << "}";
-  }
+      << bounded_json(*r.twin_power_inner) << ", \"outer\": " << bounded_json(*r.twin_power_outer) << "}"
+      << true_json(r) << "}";
   if (lo.load)
     s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\"" << motion_fields(r);
   s << "}";
   return s.str();
 }
 
-std::string limit_surface_float_human(const Ls_options& lo, const Ls_result& r, const std::string& source) {
-  const fl::Directions_twin d = fl::make_directions(lo.sides);
-  const fl::Point2 cof = fl::center_of_friction(r.twin);
+std::string limit_surface_float_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
+  const fl::Directions_twin& d = *r.twin_directions;
+  const fl::Point2& cof = r.twin_center_of_friction;
   std::ostringstream s;
   s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
     << "support: " << r.twin.size() << " point(s) with mu*f > 0 (of " << r.scene.support->points.size()
@@ -446,10 +392,9 @@ std::string limit_surface_float_human(const Ls_options& lo, const Ls_result& r, 
     << "sides: " << lo.sides << ", lambda^2 = " << bounded_text(d.lambda_sq) << " (the float twin's direction set)\n"
     << "convention: " << kConvention << "\n";
   if (lo.twist) {
-    const fl::Bounded3 q = twin_of(*lo.twist);
     s << "twist " << tv(*lo.twist) << ":\n"
-      << "  polygonal power: " << bounded_text(fl::polygonal_support(r.twin, d, false, q)) << " <= h <= "
-      << bounded_text(fl::polygonal_support(r.twin, d, true, q)) << "\n";
+      << "  polygonal power: " << bounded_text(*r.twin_power_inner) << " <= h <= " << bounded_text(*r.twin_power_outer)
+      << "\n";
     if (r.true_power) s << "  true power: " << bounded_text(*r.true_power) << "\n";
     if (r.true_load) s << "  true load: " << float_load_text(*r.true_load) << "\n";
   }
@@ -468,14 +413,14 @@ std::string limit_surface_float_human(const Ls_options& lo, const Ls_result& r, 
 
 Scene_answer prepare_limit_surface_json(const Options& o) {
   return [o, lo = limit_surface_options(o)](const std::string& text, const std::string& source) {
-    const Ls_result r = compute_limit_surface(lo, o, text, source);
+    const Support_item r = compute_limit_surface(lo, o, text, source);
     return lo.mode == Mode::float_only ? limit_surface_float_json(lo, r) : limit_surface_json(lo, r);
   };
 }
 
 int run_limit_surface(const Options& o, const std::string& text, const std::string& source) {
   const Ls_options lo = limit_surface_options(o);
-  const Ls_result r = compute_limit_surface(lo, o, text, source);
+  const Support_item r = compute_limit_surface(lo, o, text, source);
   if (!lo.off_file.empty()) write_file(lo.off_file, off_text(r.in, r.out));
   if (!lo.obj_file.empty()) write_file(lo.obj_file, obj_text(r.in, r.out));
   if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.sides));

@@ -10,6 +10,7 @@
 #include "cli/float_json.h"
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
+#include "exact/pipeline/support_answer.h"
 #include "exact/sliding/sliding.h"
 #include "exact/io/streaming_scene_reader.h"
 #include "exact/io/to_float.h"
@@ -99,65 +100,47 @@ Sliding_options sliding_options(const Options& o) {
   return so;
 }
 
-struct Sliding_result {
-  Scene scene;
-  std::optional<Polygonal_ls> model;
-  Sliding_answer a;
-  std::vector<fl::Support_point_twin> twin;  // not in --mode exact
-};
-
-fl::Bounded3 twin_of(const Vec3q& q) { return {to_bounded(q[0]), to_bounded(q[1]), to_bounded(q[2])}; }
-
-Sliding_result compute(const Sliding_options& so, const Options& o, const std::string& text, const std::string& source) {
-  Sliding_result r;
-  r.scene = read_scene_streaming(text, o.limits, source);
-  if (!r.scene.support) throw Input_error(source + ": support: the scene has no \"support\" (sliding needs one)");
-  if (so.mode != Mode::exact) r.twin = twin_support(merge_support(*r.scene.support));
-  if (so.mode != Mode::float_only)
-    r.a = compute_sliding(r.model.emplace(merge_support(*r.scene.support), make_directions(so.sides)), so.twist);
-  return r;
+// The scene's answer through the pipeline; a failure unwinds as the CLI's Failure.
+Support_item compute(const Sliding_options& so, const Options& o, const std::string& text, const std::string& source) {
+  Support_query q;
+  q.question = Support_question::sliding;
+  q.sides = so.sides;
+  q.twist = so.twist;
+  return answered(answer_support(text, source, request_of(o), q));
 }
 
 // The float twin's values for the twist (hybrid: added to the exact answer).
-std::string true_fields(const Sliding_options& so, const Sliding_result& r) {
-  if (so.mode == Mode::exact || !so.twist) return "";
-  const fl::Bounded3 q = twin_of(*so.twist);
-  return ", \"true_power\": " + float_value_json(fl::support_function(r.twin, q)) +
-         ", \"true_load\": " + float_load_json(fl::load_for_twist(r.twin, q));
+std::string true_fields(const Support_item& r) {
+  if (!r.true_power) return "";
+  return ", \"true_power\": " + float_value_json(*r.true_power) + ", \"true_load\": " + float_load_json(*r.true_load);
 }
 
-std::string sliding_float_json(const Sliding_options& so, const Sliding_result& r) {
-  const fl::Point2 cof = fl::center_of_friction(r.twin);
-  fl::Bounded mu_f0;
-  for (const fl::Support_point_twin& p : r.twin) mu_f0 = mu_f0 + p.rho;
+std::string sliding_float_json(const Sliding_options& so, const Support_item& r) {
+  const fl::Point2& cof = r.twin_center_of_friction;
+  const fl::Bounded& mu_f0 = r.twin_mu_f0;
   std::ostringstream s;
   s << "{\"command\": \"sliding\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"float\""
     << ", \"center_of_friction\": [" << float_value_json(cof.x) << ", " << float_value_json(cof.y)
     << "], \"mu_f0\": " << float_value_json(mu_f0);
-  if (so.twist) {
-    const fl::Bounded3 q = twin_of(*so.twist);
-    const fl::Directions_twin d = fl::make_directions(so.sides);
+  if (so.twist)
     s << ", \"twist\": " << jv(*so.twist) << ", \"sides\": " << so.sides << ", \"lambda_squared\": "
-      << float_value_json(d.lambda_sq) << ", \"power\": {\"inner\": "
-      << float_value_json(fl::polygonal_support(r.twin, d, false, q)) << ", \"outer\": "
-      << float_value_json(fl::polygonal_support(r.twin, d, true, q)) << "}" << true_fields(so, r);
-  }
+      << float_value_json(r.twin_directions->lambda_sq) << ", \"power\": {\"inner\": "
+      << float_value_json(*r.twin_power_inner) << ", \"outer\": " << float_value_json(*r.twin_power_outer) << "}"
+      << true_fields(r);
   s << "}";
   return s.str();
 }
 
-std::string sliding_float_human(const Sliding_options& so, const Sliding_result& r, const std::string& source) {
-  const fl::Point2 cof = fl::center_of_friction(r.twin);
+std::string sliding_float_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
+  const fl::Point2& cof = r.twin_center_of_friction;
   std::ostringstream s;
   s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
     << "centre of friction: (" << float_value_text(cof.x) << ", " << float_value_text(cof.y) << ")\n";
-  if (so.twist) {
-    const fl::Bounded3 q = twin_of(*so.twist);
+  if (so.twist)
     s << "twist (" << human_number((*so.twist)[0]) << ", " << human_number((*so.twist)[1]) << ", "
       << human_number((*so.twist)[2]) << "):\n"
-      << "  true power h = " << float_value_text(fl::support_function(r.twin, q)) << "\n"
-      << "  true load: " << float_load_text(fl::load_for_twist(r.twin, q)) << "\n";
-  }
+      << "  true power h = " << float_value_text(*r.true_power) << "\n"
+      << "  true load: " << float_load_text(*r.true_load) << "\n";
   s << "decided by: the float twin alone (values with certified bounds)\n";
   return s.str();
 }
@@ -166,8 +149,8 @@ const char* kConvention =
     "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
     "the friction wrench on the slider is its negative";
 
-std::string sliding_json(const Sliding_options& so, const Sliding_result& r) {
-  const Sliding_answer& a = r.a;
+std::string sliding_json(const Sliding_options& so, const Support_item& r) {
+  const Sliding_answer& a = r.sliding;
   const char* kinds[] = {"facet", "vertex", "smooth"};
   std::ostringstream s;
   s << "{\"command\": \"sliding\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"" << mode_name(so.mode)
@@ -194,14 +177,14 @@ std::string sliding_json(const Sliding_options& so, const Sliding_result& r) {
       << jq(a.h_lo) << ", \"upper\": " << jq(a.h_hi) << "}, \"load_box\": {\"lower\": " << jv(a.load_lo)
       << ", \"upper\": " << jv(a.load_hi) << ", \"of\": \""
       << (a.cls.kind == Twist_kind::facet ? "the facet's centre" : "the load") << "\"}, \"inner_load\": "
-      << face_json(a.inner_face) << ", \"outer_load\": " << face_json(a.outer_face) << true_fields(so, r);
+      << face_json(a.inner_face) << ", \"outer_load\": " << face_json(a.outer_face) << true_fields(r);
   }
   s << "}";
   return s.str();
 }
 
-std::string sliding_human(const Sliding_options& so, const Sliding_result& r, const std::string& source) {
-  const Sliding_answer& a = r.a;
+std::string sliding_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
+  const Sliding_answer& a = r.sliding;
   std::ostringstream s;
   s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
     << "centre of friction: (" << human_number(a.center_of_friction.x) << ", " << human_number(a.center_of_friction.y) << ")\n"
@@ -220,11 +203,9 @@ std::string sliding_human(const Sliding_options& so, const Sliding_result& r, co
     }
     s << "load box: " << thv(a.load_lo) << " .. " << thv(a.load_hi)
       << (a.cls.kind == Twist_kind::facet ? " (the facet's centre)\n" : "\n");
-    if (so.mode == Mode::hybrid) {
-      const fl::Bounded3 q = twin_of(*so.twist);
-      s << "true power h = " << float_value_text(fl::support_function(r.twin, q))
-        << ", true load " << float_load_text(fl::load_for_twist(r.twin, q)) << " (float twin, certified bounds)\n";
-    }
+    if (r.true_power)
+      s << "true power h = " << float_value_text(*r.true_power) << ", true load " << float_load_text(*r.true_load)
+        << " (float twin, certified bounds)\n";
   }
   s << "convention: " << kConvention << "\n";
   return s.str();
@@ -234,14 +215,14 @@ std::string sliding_human(const Sliding_options& so, const Sliding_result& r, co
 
 Scene_answer prepare_sliding_json(const Options& o) {
   return [o, so = sliding_options(o)](const std::string& text, const std::string& source) {
-    const Sliding_result r = compute(so, o, text, source);
+    const Support_item r = compute(so, o, text, source);
     return so.mode == Mode::float_only ? sliding_float_json(so, r) : sliding_json(so, r);
   };
 }
 
 int run_sliding(const Options& o, const std::string& text, const std::string& source) {
   const Sliding_options so = sliding_options(o);
-  const Sliding_result r = compute(so, o, text, source);
+  const Support_item r = compute(so, o, text, source);
   if (so.mode == Mode::float_only)
     std::cout << (o.json ? sliding_float_json(so, r) + "\n" : sliding_float_human(so, r, source));
   else

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "core/mode.h"
+#include "exact/pipeline/labels_answer.h"
 #include "exact/pipeline/pipeline.h"
+#include "exact/pipeline/support_answer.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/statics/force_dual.h"
@@ -272,22 +274,37 @@ Reading reading_of_text(const std::string& r) {
   throw Input_error("reading: \"" + r + "\" is not one of friction, frictionless");
 }
 
-py::dict labels(const Py_scene& s, const std::string& reading) {
+// The bindings offer exact and hybrid (the same exact answer) for the constructions; the float twin's
+// bounded values are the CLI's and the C++ API's (float/).
+Request exact_request(const std::string& mode, const char* what) {
+  const Request r = request_of(mode);
+  if (r.mode == Mode::float_only)
+    throw Input_error(std::string("mode: \"float\" is not offered by wrenchkit.") + what +
+                      " (the float twin's bounded values are in `wrenchkit " + what + " --mode float --json`); use "
+                      "\"hybrid\" or \"exact\"");
+  return r;
+}
+
+py::dict labels(const Py_scene& s, const std::string& reading, const std::string& mode) {
   const Reading rd = reading_of_text(reading);
-  const Moment_labels l = moment_labels(s.scene, rd);
+  Labels_query q;
+  q.question = rd == Reading::friction ? Labels_question::labels : Labels_question::reuleaux;
+  const Labels_item r = answer_labels(s.scene, exact_request(mode, "labels"), q);
+  raise_unless_answered(r.status, r.message);
+  const Moment_labels& l = r.labels;
   py::dict d;
   d["reading"] = reading;
+  d["mode"] = mode;
   d["rank"] = l.cone.rank;
-  d[rd == Reading::friction ? "force_closure" : "form_closure"] = l.cone.force_closure();
+  d[rd == Reading::friction ? "force_closure" : "form_closure"] = r.closed();
   d["plus"] = region(l.plus);
   d["minus"] = region(l.minus);
   d["both"] = both(l.both);
   d["infinity"] = infinity(l.infinity);
-  if (s.scene.load && rd == Reading::friction) {
-    const Vec3 w = as_vec(load_wrench(s.scene));
+  if (r.load) {
     py::dict ld;
-    ld["wrench"] = triple(w);
-    ld["balanced"] = in_cone(l.cone, {-w[0], -w[1], -w[2]});
+    ld["wrench"] = triple(*r.load);
+    ld["balanced"] = *r.load_balanced;
     d["load"] = ld;
   }
   return d;
@@ -307,12 +324,13 @@ py::object dual_point_obj(const Dual_point& p) {
   return d;
 }
 
-py::dict dual(const Py_scene& s) {
-  std::vector<Generator> gens = generators(s.scene, Reading::friction);
-  std::vector<Wrench> w;
-  for (const Generator& g : gens) w.push_back(g.w);
-  const Moment_labels l = moment_labels(w);
-  const Force_dual f = force_dual(l, w);
+py::dict dual(const Py_scene& s, const std::string& mode) {
+  Labels_query q;
+  q.question = Labels_question::dual;
+  const Labels_item r = answer_labels(s.scene, exact_request(mode, "dual"), q);
+  raise_unless_answered(r.status, r.message);
+  const Force_dual& f = *r.dual;
+  const std::vector<Generator>& gens = r.generators;
   py::dict d;
   d["covers_all"] = f.covers_all;
   d["plus_region"] = region(f.plus_sheet);
@@ -356,12 +374,6 @@ py::dict polytope(const Ls_polytope& P) {
   return d;
 }
 
-const Support& support_of(const Py_scene& s, const char* what) {
-  if (!s.scene.support)
-    throw Input_error(s.source + ": support: the scene has no \"support\" (" + what + " needs one)");
-  return *s.scene.support;
-}
-
 int checked_sides(int sides) {
   if (sides < 4 || sides % 2 != 0 || sides > kMaxSides)
     throw Input_error("sides: " + std::to_string(sides) + " must be even and between 4 and " + std::to_string(kMaxSides));
@@ -376,8 +388,7 @@ Vec3q nonzero_twist(const std::vector<std::string>& t) {
 
 py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::string>& tolerance,
                        const std::optional<std::vector<std::string>>& twist,
-                       const std::optional<std::vector<std::string>>& load) {
-  const Support& sup = support_of(s, "limit_surface");
+                       const std::optional<std::vector<std::string>>& load, const std::string& mode) {
   if (tolerance) {
     const Rational e = number(*tolerance, "tolerance");
     if (e <= 0) throw Input_error("tolerance: \"" + *tolerance + "\" must be > 0");
@@ -385,58 +396,52 @@ py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::st
     if (sides == 0)
       throw Input_error("tolerance: " + *tolerance + " needs more than " + std::to_string(kMaxSides) + " sides");
   }
-  checked_sides(sides);
-  std::optional<Vec3q> q, p;
-  if (twist) q = nonzero_twist(*twist);
-  if (load) p = vec3(*load, "load");
-  const Polygonal_ls model(merge_support(sup), make_directions(sides));
-  if (model.candidate_count() > kMaxCandidates)
-    throw Input_error("sides: " + std::to_string(sides) + " with " + std::to_string(model.support().points.size()) +
-                      " distinct support points needs " + std::to_string(model.candidate_count()) +
-                      " candidate normals, more than the limit " + std::to_string(kMaxCandidates) + "; use fewer sides");
-  const Ls_polytope in = model.build(Side::inner), out = model.build(Side::outer);
-  const Sliding_answer sa = compute_sliding(model, q);
-  std::optional<Rational> g_in, g_out;
-  Motion motion = Motion::undecided;
-  if (p) {
-    g_in = model.gauge(in, Side::inner, *p);
-    g_out = model.gauge(out, Side::outer, *p);
-    motion = classify_load(g_in, g_out);
-  }
+  Support_query q;
+  q.sides = checked_sides(sides);
+  if (twist) q.twist = nonzero_twist(*twist);
+  if (load) q.load = vec3(*load, "load");
+  const Support_item r = answer_support(s.scene, s.source, exact_request(mode, "limit_surface"), q);
+  raise_unless_answered(r.status, r.message);
+  const Sliding_answer& sa = r.sliding;
   py::dict d;
+  d["mode"] = mode;
   d["sides"] = sides;
-  d["lambda_squared"] = fraction(model.directions().lambda_sq);
-  d["dimension"] = model.dimension();
+  d["lambda_squared"] = fraction(r.model->directions().lambda_sq);
+  d["dimension"] = r.model->dimension();
   d["center_of_friction"] = point(sa.center_of_friction);
   d["mu_f0"] = fraction(sa.mu_f0);
-  d["inner"] = polytope(in);
-  d["outer"] = polytope(out);
-  if (q) {
-    d["twist"] = triple(*q);
+  d["inner"] = polytope(r.in);
+  d["outer"] = polytope(r.out);
+  if (q.twist) {
+    d["twist"] = triple(*q.twist);
     d["h_inner"] = fraction(sa.h_inner);
     d["h_outer"] = fraction(sa.h_outer);
     d["inner_load"] = face(sa.inner_face);
     d["outer_load"] = face(sa.outer_face);
   }
-  if (p) {
-    d["load"] = triple(*p);
-    d["motion"] = motion_name(motion);
+  if (q.load) {
+    d["load"] = triple(*q.load);
+    d["motion"] = motion_name(r.motion.motion);
+    d["motion_decided_by"] = r.motion.decided_by;
     py::dict g;
-    g["inner"] = g_in ? fraction(*g_in) : py::none();
-    g["outer"] = g_out ? fraction(*g_out) : py::none();
+    g["inner"] = r.gauge_in ? fraction(*r.gauge_in) : py::none();
+    g["outer"] = r.gauge_out ? fraction(*r.gauge_out) : py::none();
     d["gauge"] = g;
   }
   return d;
 }
 
-py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>>& twist, int sides) {
-  const Support& sup = support_of(s, "sliding");
-  checked_sides(sides);
-  std::optional<Vec3q> q;
-  if (twist) q = nonzero_twist(*twist);
-  const Polygonal_ls model(merge_support(sup), make_directions(sides));
-  const Sliding_answer a = compute_sliding(model, q);
+py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>>& twist, int sides,
+                 const std::string& mode) {
+  Support_query q;
+  q.question = Support_question::sliding;
+  q.sides = checked_sides(sides);
+  if (twist) q.twist = nonzero_twist(*twist);
+  const Support_item r = answer_support(s.scene, s.source, exact_request(mode, "sliding"), q);
+  raise_unless_answered(r.status, r.message);
+  const Sliding_answer& a = r.sliding;
   py::dict d;
+  d["mode"] = mode;
   d["center_of_friction"] = point(a.center_of_friction);
   d["friction_centroid"] = point(a.friction_centroid);
   d["mu_f0"] = fraction(a.mu_f0);
@@ -454,7 +459,7 @@ py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>
     d["true_surface"] = kinds[static_cast<int>(a.cls.kind)];
     d["true_surface_text"] = a.cls.text;
     d["sides"] = sides;
-    d["lambda_squared"] = fraction(model.directions().lambda_sq);
+    d["lambda_squared"] = fraction(r.model->directions().lambda_sq);
     d["h_inner"] = fraction(a.h_inner);
     d["h_outer"] = fraction(a.h_outer);
     d["power_bracket"] = py::make_tuple(fraction(a.h_lo), fraction(a.h_hi));

@@ -236,3 +236,44 @@ def test_other_input_errors():
         wrenchkit.Scene('{"wrenchkit": 1,')
     with pytest.raises(wrenchkit.InputError, match="max_contacts|contacts"):
         wrenchkit.Scene(two_fingers(1, 1), limits={"max_contacts": 1})
+
+
+# ---- one pipeline: every question takes the mode, parsed once, and answers as the CLI does --------------
+
+def test_an_unknown_mode_is_a_value_error_everywhere():
+    calls = [
+        lambda m: wrenchkit.closure(two_fingers(1, 1), mode=m),
+        lambda m: wrenchkit.equilibrium(ladder("1/7"), mode=m),
+        lambda m: wrenchkit.labels(two_fingers(1, 1), mode=m),
+        lambda m: wrenchkit.labels(two_fingers(1, 1), reading="frictionless", mode=m),
+        lambda m: wrenchkit.dual(two_fingers(1, 1), mode=m),
+        lambda m: wrenchkit.limit_surface(BARBELL, 8, mode=m),
+        lambda m: wrenchkit.sliding(BARBELL, twist=(0, 0, 1), mode=m),
+    ]
+    for call in calls:
+        with pytest.raises(ValueError, match='mode: "exacto" is not one of exact, hybrid, float'):
+            call("exacto")
+        assert call("exact") == call("exact")  # the same answer twice: deterministic
+
+
+def test_constructions_are_the_same_in_hybrid_and_exact():
+    for s in (two_fingers(1, 1), two_fingers("1/2", "1/10"), ladder("1/7")):
+        assert wrenchkit.labels(s, mode="hybrid")["plus"] == wrenchkit.labels(s, mode="exact")["plus"]
+        assert wrenchkit.dual(s, mode="hybrid")["covers_all"] == wrenchkit.dual(s, mode="exact")["covers_all"]
+    with pytest.raises(wrenchkit.InputError, match='"float" is not offered by wrenchkit.labels'):
+        wrenchkit.labels(two_fingers(1, 1), mode="float")
+
+
+def test_limit_surface_motion_by_mode_as_the_command_line():
+    # A load just inside the barbell's true limit surface (moment 1 about the centre): the 8-gon polygons
+    # cannot tell (exact: undecided), the twin's certified search on the true surface can (hybrid: sticks).
+    near = (0, 0, "0.999")
+    exact = wrenchkit.limit_surface(BARBELL, 8, load=near, mode="exact")
+    hybrid = wrenchkit.limit_surface(BARBELL, 8, load=near, mode="hybrid")
+    assert exact["motion"] == "undecided" and exact["motion_decided_by"] == "none"
+    assert hybrid["motion"] == "sticks" and hybrid["motion_decided_by"] == "float"
+    if CLI:
+        p = json.dumps(json.loads(wrenchkit._to_json(dict({"wrenchkit": 1}, **BARBELL))))
+        out = subprocess.run([CLI, "limit-surface", "--json", "--sides", "8", "--load", "0,0,0.999", "-"],
+                             input=p, capture_output=True, text=True, check=True)
+        assert json.loads(out.stdout)["motion"] == hybrid["motion"]

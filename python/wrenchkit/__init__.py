@@ -197,35 +197,38 @@ def equilibrium(scene, mode="hybrid"):
     return _core.equilibrium(_scene(scene), mode)
 
 
-def labels(scene, reading="friction"):
+def labels(scene, reading="friction", mode="hybrid"):
     """Moment labels (theory.md section 5): {"plus", "minus": REGION, "both", "infinity", "rank", ...}.
 
     A REGION is {"empty", "shape", "vertices": [(x, y) Fractions, counter-clockwise], "directions"}.
-    reading="frictionless" gives Reuleaux's feasible rotation centres.
+    reading="frictionless" gives Reuleaux's feasible rotation centres. mode: "hybrid" (default: the twin's
+    certified signs, exact constructions) or "exact" (the same answer without floating point).
     """
-    return _core.labels(_scene(scene), reading)
+    return _core.labels(_scene(scene), reading, mode)
 
 
-def dual(scene):
+def dual(scene, mode="hybrid"):
     """The force dual (theory.md section 6): {"covers_all", "plus_region", "minus_region", ...}."""
-    return _core.dual(_scene(scene))
+    return _core.dual(_scene(scene), mode)
 
 
-def limit_surface(scene, sides=32, *, tolerance=None, twist=None, load=None):
+def limit_surface(scene, sides=32, *, tolerance=None, twist=None, load=None, mode="hybrid"):
     """Certified polygonal limit surfaces of the scene's support (docs/limit-surface.md).
 
     {"sides", "lambda_squared", "inner"/"outer": {"facets", "vertices", "edges"}, ...}; with
     twist=(vx, vy, w) also "h_inner" <= h <= "h_outer" and the loads; with load=(fx, fy, m) also
-    "motion": "sticks" | "slides" | "undecided". tolerance (a number) picks the smallest sides whose
-    certified relative error is at most tolerance.
+    "motion": "sticks" | "slides" | "undecided" and "motion_decided_by". tolerance (a number) picks the
+    smallest sides whose certified relative error is at most tolerance. mode: "hybrid" (default: the motion
+    by the float twin's certified search on the true surface first, the polygons when it cannot tell) or
+    "exact" (the polygons only).
     """
     tol = None if tolerance is None else _number_text(tolerance, "tolerance")
-    return _core.limit_surface(_scene(scene), int(sides), tol, _vec(twist, "twist"), _vec(load, "load"))
+    return _core.limit_surface(_scene(scene), int(sides), tol, _vec(twist, "twist"), _vec(load, "load"), mode)
 
 
-def sliding(scene, twist=None, sides=64):
+def sliding(scene, twist=None, sides=64, mode="hybrid"):
     """Centre of friction and the frictional load for a twist (theory.md section 10), exact bounds."""
-    return _core.sliding(_scene(scene), _vec(twist, "twist"), int(sides))
+    return _core.sliding(_scene(scene), _vec(twist, "twist"), int(sides), mode)
 
 
 def _certificate_text(c):

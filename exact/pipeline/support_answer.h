@@ -1,0 +1,67 @@
+// A support's sliding questions through the pipeline (exact/pipeline/pipeline.h): the polygonal limit
+// surfaces [LS-1]–[LS-3] (`limit-surface`), the frictional load of a twist [LS-4] (`sliding`), and whether a
+// load sticks or slides, in the request's mode:
+//
+//   exact   the exact polytopes and sliding bounds, no floating point; the motion from the polygons
+//           (undecided within their resolution);
+//   hybrid  the same exact answers, plus the TRUE surface's power and load from the float twin with
+//           certified bounds [FL-7], and the motion by the twin's certified search on the true surface
+//           first, the polygons only when it cannot tell;
+//   float   the twin alone: no exact polygons; centre of friction, polygonal and true powers and loads with
+//           certified bounds; Status::undecided when the search cannot tell.
+// Everything is computed here; a front end only serialises the item.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "exact/pipeline/pipeline.h"
+#include "exact/sliding/limit_surface.h"
+#include "exact/sliding/sliding.h"
+#include "float/limit_surface_twin.h"
+
+namespace wrenchkit {
+
+enum class Support_question { limit_surface, sliding };
+
+struct Support_query {
+  Support_question question = Support_question::limit_surface;
+  int sides = 32;                // polygon sides N (even, 4..kMaxSides)
+  std::optional<Vec3q> twist;    // the load for this twist (not zero)
+  std::optional<Vec3q> load;     // limit-surface: does it stick or slide?
+};
+
+struct Support_item {
+  Status status = Status::answered;
+  std::string message;
+  Scene scene;
+  Mode mode = Mode::hybrid;
+  // exact and hybrid (and limit-surface's model in float, for the search)
+  std::optional<Polygonal_ls> model;
+  Ls_polytope in, out;          // limit-surface, exact and hybrid
+  Sliding_answer sliding;       // exact and hybrid
+  std::optional<Rational> gauge_in, gauge_out;  // with a load
+  Motion_decision motion;                       // with a load
+  Polygonal_ls::Normal_cone cone_in, cone_out;  // with a load that does not certainly stick
+  // hybrid and float: the true surface by the twin
+  std::vector<fl::Support_point_twin> twin;
+  std::optional<fl::Bounded> true_power;    // with a twist
+  std::optional<fl::Load_twin> true_load;   // with a twist
+  // float: the twin's own polygonal values
+  std::optional<fl::Directions_twin> twin_directions;
+  fl::Point2 twin_center_of_friction;
+  fl::Bounded twin_mu_f0;
+  std::optional<fl::Bounded> twin_power_inner, twin_power_outer;  // with a twist
+};
+
+// Reads `text` (eagerly) and answers; never throws. A scene without a support is bad input; so is a
+// limit surface whose candidate normals exceed kMaxCandidates (the polytopes are not built then).
+Support_item answer_support(std::string_view text, std::string_view source, const Request& request,
+                            const Support_query& query);
+// The same for a scene already read.
+Support_item answer_support(const Scene& scene, std::string_view source, const Request& request,
+                            const Support_query& query);
+
+}  // namespace wrenchkit
