@@ -1,7 +1,8 @@
 // The promises every fuzz target checks on a scene text (shared by fuzz_scene_parser, which feeds
 // raw bytes, and fuzz_structured, which builds near-degenerate scenes from the bytes):
-//   * every reader — read_scene eager and lazy, the streaming reader eager and lazy, into a fresh
-//     Scene and into one reused from the previous input — accepts and rejects alike, with the same
+//   * every reader — the reference reader read_scene_tree eager and lazy, read_scene (the one-pass
+//     reader) eager and lazy, into a fresh Scene and into one reused from the previous input — accepts
+//     and rejects alike, with the same
 //     message, and gives the same Scene field by field (readers_disagree; tests/scene_test.cpp runs
 //     it on every bad-input case too);
 //   * parse → write_scene → parse gives the same canonical text;
@@ -95,7 +96,7 @@ inline std::string scene_difference(const wrenchkit::Scene& a, const wrenchkit::
   return "";
 }
 
-// Reads `text` with every reader: read_scene eager and lazy, and the streaming reader eager and lazy,
+// Reads `text` with every reader: the reference reader read_scene_tree eager and lazy, and read_scene (one pass) eager and lazy,
 // into a fresh Scene and into `reused_eager` / `reused_lazy` (whatever they held before: a previous
 // scene, so stale state would show). Returns "" when all of them accept with the same Scene (eager
 // with eager, lazy with lazy) or all reject with the same message, and the streaming reader read every
@@ -108,12 +109,12 @@ inline std::string readers_disagree(std::string_view text, const wrenchkit::Inpu
     Scene reference, fresh;
     std::string want, got_fresh, got_reused;
     try {
-      reference = read_scene(text, limits, "fuzz", lazy);
+      reference = read_scene_tree(text, limits, "fuzz", lazy);
     } catch (const Input_error& e) {
       want = e.what();
     }
     try {
-      fresh = read_scene_streaming(text, limits, "fuzz", lazy);
+      fresh = read_scene(text, limits, "fuzz", lazy);
     } catch (const Input_error& e) {
       got_fresh = e.what();
     }
@@ -126,11 +127,11 @@ inline std::string readers_disagree(std::string_view text, const wrenchkit::Inpu
     }
     const std::string reading = lazy ? "lazy" : "eager";
     if (got_fresh != want || got_reused != want)
-      return reading + ": read_scene says \"" + want + "\", the streaming reader \"" + got_fresh +
+      return reading + ": read_scene_tree says \"" + want + "\", the streaming reader \"" + got_fresh +
              "\" (into a reused scene: \"" + got_reused + "\")";
     if (!want.empty()) continue;
     if (!one_pass && limits.max_depth >= 5)
-      return reading + ": the streaming reader deferred a valid scene to read_scene (it must read it in one pass)";
+      return reading + ": the streaming reader deferred a valid scene to read_scene_tree (it must read it in one pass)";
     if (const std::string d = scene_difference(reference, fresh); !d.empty())
       return reading + ": the streaming reader's scene differs in " + d;
     if (const std::string d = scene_difference(reference, reused); !d.empty())

@@ -183,7 +183,7 @@ TEST(CliBatch, UsageErrorsStopBeforeAnyLine) {
   EXPECT_EQ(big.code, 0) << big.err;
   const std::vector<std::string> lines = lines_of(big.out);
   ASSERT_EQ(lines.size(), 2u);
-  EXPECT_EQ(lines[0].rfind("{\"line\": 1, \"error\": \"--sides 4096 with 10 distinct support points needs", 0), 0u)
+  EXPECT_EQ(lines[0].rfind("{\"line\": 1, \"error\": \"sides 4096 with 10 distinct support points needs", 0), 0u)
       << lines[0];
   EXPECT_EQ(lines[1].rfind("{\"line\": 2, \"command\": \"limit-surface\"", 0), 0u) << lines[1].substr(0, 80);
 }

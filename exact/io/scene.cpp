@@ -325,7 +325,7 @@ Contact exact_contact(const Contact& c) {
   return e;
 }
 
-Scene read_scene(std::string_view json_text, const Input_limits& limits, std::string_view source, bool lazy) {
+Scene read_scene_tree(std::string_view json_text, const Input_limits& limits, std::string_view source, bool lazy) {
   if (json_text.size() > limits.max_file_bytes)
     throw Input_error(std::string(source) + ": larger than the size limit of " +
                       std::to_string(limits.max_file_bytes) + " bytes (--max-file-size)");

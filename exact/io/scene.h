@@ -77,11 +77,20 @@ struct Scene {
   std::optional<Support> support;
 };
 
-// Reads and validates a scene. Throws Input_error naming the JSON path and the offending text
-// (or "SOURCE:LINE:COL: invalid JSON: …"). `source` names the input in messages.
+// Reads and validates a scene: the one scene reader of the engine. Throws Input_error naming the JSON path
+// and the offending text (or "SOURCE:LINE:COL: invalid JSON: …"). `source` names the input in messages.
 // `lazy`: contacts keep their numbers as text and certified doubles (for the float twin) and build
 // rationals only on demand (exact_contact); same validation, same errors.
-Scene read_scene(std::string_view json_text, const Input_limits& limits,
-                 std::string_view source = "scene", bool lazy = false);
+// It reads in one pass without a JSON tree (exact/io/streaming_scene_reader.h, which also reads into a
+// reused Scene); on any text the one pass does not accept it defers to read_scene_tree, whose message it
+// throws.
+Scene read_scene(std::string_view json_text, const Input_limits& limits, std::string_view source = "scene",
+                 bool lazy = false);
+
+// The reference reader behind read_scene's messages: the strict JSON tree of exact/io/json.h, then the
+// schema. It accepts exactly what read_scene accepts, with the same Scene (the tests and the fuzz targets
+// check it); call read_scene.
+Scene read_scene_tree(std::string_view json_text, const Input_limits& limits, std::string_view source = "scene",
+                      bool lazy = false);
 
 }  // namespace wrenchkit

@@ -427,13 +427,13 @@ bool read_scene_into(Scene& scene, std::string_view text, const Input_limits& li
     Stream(text, limits, source, lazy).scene(scene);
     return true;
   } catch (const Defer&) {
-  } catch (const Input_error&) {  // a malformed string: read_scene reports it in its place
+  } catch (const Input_error&) {  // a malformed string: read_scene_tree reports it in its place
   }
-  scene = read_scene(text, limits, source, lazy);
+  scene = read_scene_tree(text, limits, source, lazy);
   return false;
 }
 
-Scene read_scene_streaming(std::string_view text, const Input_limits& limits, std::string_view source, bool lazy) {
+Scene read_scene(std::string_view text, const Input_limits& limits, std::string_view source, bool lazy) {
   Scene s;
   read_scene_into(s, text, limits, source, lazy);
   return s;

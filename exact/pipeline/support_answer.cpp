@@ -32,10 +32,10 @@ void twin_polygons(const Support_query& q, Support_item& r) {
 void answer_limit_surface(const Support_query& q, Support_item& r) {
   const Polygonal_ls& model = r.model.emplace(merge_support(*r.scene.support), make_directions(q.sides));
   if (model.candidate_count() > kMaxCandidates)
-    throw Input_error("--sides " + std::to_string(q.sides) + " with " + std::to_string(model.support().points.size()) +
+    throw Input_error("sides " + std::to_string(q.sides) + " with " + std::to_string(model.support().points.size()) +
                       " distinct support points needs " + std::to_string(model.candidate_count()) +
                       " candidate normals, more than the limit " + std::to_string(kMaxCandidates) +
-                      "; use fewer sides (or a larger --tolerance)");
+                      "; use fewer sides (or a larger tolerance)");
   if (r.mode != Mode::exact) true_surface(q, r);
   if (r.mode == Mode::float_only) {
     twin_polygons(q, r);
