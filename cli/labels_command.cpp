@@ -338,18 +338,19 @@ int run_dual(const Options& o, const std::string& text, const std::string& sourc
   }
   std::cout << "scene: " << (s.scene.name.empty() ? source : s.scene.name) << "\n"
             << "force dual of the contact wrench cone (D(w) = (-fy, fx, m)" << (fm ? "" : "; exact") << "):\n";
+  const auto sheets = [](bool covers_all, const std::string& plus, const std::string& minus, const std::string& inf) {
+    std::cout << "covers the whole two-sided plane: " << (covers_all ? "yes (force closure)" : "no") << "\n"
+              << "+ sheet (m > 0): " << plus << "\n"
+              << "- sheet (m < 0): " << minus << "\n"
+              << "at infinity (m = 0): " << inf << "\n";
+  };
   if (fm) {
     const fl::Dual_twin& d = *s.twin_dual;
-    std::cout << "covers the whole two-sided plane: " << (d.covers_all ? "yes (force closure)" : "no") << "\n"
-              << "+ sheet (m > 0): " << float_region_text(d.plus_sheet) << "\n"
-              << "- sheet (m < 0): " << float_region_text(d.minus_sheet) << "\n"
-              << "at infinity (m = 0): " << float_infinity_text(d.infinity) << "\n";
+    sheets(d.covers_all, float_region_text(d.plus_sheet), float_region_text(d.minus_sheet),
+           float_infinity_text(d.infinity));
   } else {
     const Force_dual& d = *s.dual;
-    std::cout << "covers the whole two-sided plane: " << (d.covers_all ? "yes (force closure)" : "no") << "\n"
-              << "+ sheet (m > 0): " << region_text(d.plus_sheet) << "\n"
-              << "- sheet (m < 0): " << region_text(d.minus_sheet) << "\n"
-              << "at infinity (m = 0): " << infinity_text(d.infinity) << "\n";
+    sheets(d.covers_all, region_text(d.plus_sheet), region_text(d.minus_sheet), infinity_text(d.infinity));
     if (d.reference)
       std::cout << "about the reference point " << pt(*d.reference)
                 << " (inside the + region of the labels) the dual is " << region_text(d.about_reference) << "\n";

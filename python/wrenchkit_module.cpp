@@ -212,6 +212,13 @@ py::dict region(const Region& r) {
 
 py::list infinity(const Cone2& c) {
   py::list l;
+  const auto arc = [&](py::tuple from, py::tuple to, bool full) {
+    py::dict x;
+    x["from"] = from;
+    x["to"] = to;
+    if (full) x["full"] = true;
+    l.append(x);
+  };
   using S = Cone2::Shape;
   switch (c.shape) {
     case S::zero: break;
@@ -223,28 +230,9 @@ py::list infinity(const Cone2& c) {
         l.append(x);
       }
       break;
-    case S::wedge: {
-      py::dict x;
-      x["from"] = point(c.extreme[0]);
-      x["to"] = point(c.extreme[1]);
-      l.append(x);
-      break;
-    }
-    case S::half_plane: {
-      py::dict x;
-      x["from"] = point(c.extreme[0]);
-      x["to"] = point(c.extreme[2]);
-      l.append(x);
-      break;
-    }
-    case S::plane: {
-      py::dict x;
-      x["from"] = py::make_tuple(fraction(1), fraction(0));
-      x["to"] = py::make_tuple(fraction(1), fraction(0));
-      x["full"] = true;
-      l.append(x);
-      break;
-    }
+    case S::wedge: arc(point(c.extreme[0]), point(c.extreme[1]), false); break;
+    case S::half_plane: arc(point(c.extreme[0]), point(c.extreme[2]), false); break;
+    case S::plane: arc(py::make_tuple(fraction(1), fraction(0)), py::make_tuple(fraction(1), fraction(0)), true); break;
   }
   return l;
 }

@@ -90,37 +90,43 @@ void decide_equilibrium_item(const Scene& scene, std::string_view text, const Re
 // them) unless the mode is exact or certificates are built: those need every contact's rationals.
 bool lazy_for(const Request& r) { return r.mode != Mode::exact && !r.certify; }
 
-}  // namespace
-
-Closure_item answer_closure(std::string_view text, std::string_view source, const Request& r, Scene& scratch) {
-  Closure_item item;
+// The text forms read the scene into `scratch` first (lazily only where the question allows it).
+template <class Item, class Decide>
+Item read_and_answer(std::string_view text, std::string_view source, const Request& r, Scene& scratch, bool lazy,
+                     Decide decide) {
+  Item item;
   guarded(item, [&] {
-    read_scene_into(scratch, text, r.limits, source, lazy_for(r));
-    decide_closure_item(scratch, text, r, item);
+    read_scene_into(scratch, text, r.limits, source, lazy);
+    decide(scratch, text, r, item);
   });
   return item;
 }
 
-Closure_item answer_closure(const Scene& scene, std::string_view text, const Request& r) {
-  Closure_item item;
-  guarded(item, [&] { decide_closure_item(scene, text, r, item); });
+template <class Item, class Decide>
+Item answer_read_scene(const Scene& scene, std::string_view text, const Request& r, Decide decide) {
+  Item item;
+  guarded(item, [&] { decide(scene, text, r, item); });
   return item;
+}
+
+}  // namespace
+
+Closure_item answer_closure(std::string_view text, std::string_view source, const Request& r, Scene& scratch) {
+  return read_and_answer<Closure_item>(text, source, r, scratch, lazy_for(r), decide_closure_item);
+}
+
+Closure_item answer_closure(const Scene& scene, std::string_view text, const Request& r) {
+  return answer_read_scene<Closure_item>(scene, text, r, decide_closure_item);
 }
 
 Equilibrium_item answer_equilibrium(std::string_view text, std::string_view source, const Request& r,
                                     Scene& scratch) {
-  Equilibrium_item item;
-  guarded(item, [&] {
-    read_scene_into(scratch, text, r.limits, source, false);  // the load needs its rationals
-    decide_equilibrium_item(scratch, text, r, item);
-  });
-  return item;
+  // Eagerly: the load needs its rationals.
+  return read_and_answer<Equilibrium_item>(text, source, r, scratch, false, decide_equilibrium_item);
 }
 
 Equilibrium_item answer_equilibrium(const Scene& scene, std::string_view text, const Request& r) {
-  Equilibrium_item item;
-  guarded(item, [&] { decide_equilibrium_item(scene, text, r, item); });
-  return item;
+  return answer_read_scene<Equilibrium_item>(scene, text, r, decide_equilibrium_item);
 }
 
 }  // namespace wrenchkit
