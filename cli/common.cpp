@@ -142,6 +142,29 @@ std::string vec_text(const std::array<Rational, 3>& v) {
   return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")";
 }
 
+std::string region_sentence(const std::string& shape, const std::vector<std::string>& v,
+                            const std::vector<std::string>& d) {
+  const auto list = [](const std::vector<std::string>& x) {
+    std::string s;
+    for (std::size_t i = 0; i < x.size(); ++i) s += (i ? ", " : "") + x[i];
+    return s;
+  };
+  if (shape == "empty") return "empty";
+  if (shape == "point") return "the single point " + v[0];
+  if (shape == "segment") return "the segment " + list(v);
+  if (shape == "polygon") return "the polygon " + list(v) + " (counter-clockwise)";
+  if (shape == "ray") return "the ray from " + v[0] + " toward " + d[0];
+  if (shape == "wedge") return "the wedge at " + v[0] + " between directions " + d[0] + " and " + d[1];
+  if (shape == "unbounded polygon")
+    return "the unbounded polygon with corners " + list(v) + ", running off toward " + list(d);
+  if (shape == "line") return "the line through " + v[0] + " along " + d[0];
+  if (shape == "strip") return "the strip between the lines through " + v[0] + " and " + v[1] + " along " + d[0];
+  if (shape == "half-plane")
+    return "the half-plane bounded by the line through " + v[0] + " along " + d[0] + ", on the side of " + d[1];
+  if (shape == "plane") return "the whole plane";
+  return "?";
+}
+
 Request request_of(const Options& o) {
   Request r;
   r.mode = mode_of(o.mode);

@@ -87,6 +87,11 @@ wrenchkit_checker::Limits checker_limits(const Input_limits& l);
 // exact value is in --json).
 std::string human_number(const Rational& q);
 std::string vec_text(const std::array<Rational, 3>& v);
+// The words for a region of the plane (docs/cli.md, REGION) from its shape name (shape_name of
+// exact/statics/planar_region.h, which the twin's regions share) and the texts of its corners and
+// directions: one sentence for the exact regions and the twin's.
+std::string region_sentence(const std::string& shape, const std::vector<std::string>& corners,
+                            const std::vector<std::string>& directions);
 Mode mode_of(const std::string& m);
 
 // ---------------------------------------------------------------------------------------------

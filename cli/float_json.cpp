@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "cli/common.h"
 #include "exact/numbers/rational.h"
 
 namespace wrenchkit::cli {
@@ -50,12 +51,6 @@ std::string list(const std::vector<fl::Point2>& v, std::string (*f)(const fl::Po
 fl::Point2 exact_point(double x, double y) { return {fl::Bounded::exact(x), fl::Bounded::exact(y)}; }
 
 std::string pt_text(const fl::Point2& p) { return "(" + float_value_text(p.x) + ", " + float_value_text(p.y) + ")"; }
-
-std::string pts_text(const std::vector<fl::Point2>& v) {
-  std::string s;
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + pt_text(v[i]);
-  return s;
-}
 
 }  // namespace
 
@@ -115,22 +110,12 @@ std::string float_infinity_json(const fl::Arc2& a) {
 }
 
 std::string float_region_text(const fl::Region2& r) {
-  using S = fl::Region2::Shape;
-  switch (r.shape) {
-    case S::empty: return "empty";
-    case S::point: return "the single point " + pt_text(r.vertices[0]);
-    case S::segment: return "the segment " + pts_text(r.vertices);
-    case S::polygon: return "the polygon " + pts_text(r.vertices) + " (counter-clockwise)";
-    case S::ray: return "the ray from " + pt_text(r.vertices[0]) + " toward " + pt_text(r.directions[0]);
-    case S::wedge:
-      return "the wedge at " + pt_text(r.vertices[0]) + " between directions " + pt_text(r.directions[0]) + " and " +
-             pt_text(r.directions[1]);
-    case S::unbounded_polygon:
-      return "the unbounded polygon with corners " + pts_text(r.vertices) + ", running off toward " +
-             pts_text(r.directions);
-    case S::plane: return "the whole plane";
-  }
-  return "?";
+  const auto texts = [](const std::vector<fl::Point2>& x) {
+    std::vector<std::string> s;
+    for (const fl::Point2& p : x) s.push_back(pt_text(p));
+    return s;
+  };
+  return region_sentence(fl::shape_name(r.shape), texts(r.vertices), texts(r.directions));
 }
 
 std::string float_infinity_text(const fl::Arc2& a) {

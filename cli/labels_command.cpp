@@ -20,36 +20,13 @@ namespace {
 
 std::string pt(const Vec2& p) { return "(" + to_string(p.x) + ", " + to_string(p.y) + ")"; }
 
-std::string points_text(const std::vector<Vec2>& v) {
-  std::string s;
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + pt(v[i]);
-  return s;
-}
-
 std::string region_text(const Region& r) {
-  using S = Region::Shape;
-  switch (r.shape) {
-    case S::empty: return "empty";
-    case S::point: return "the single point " + pt(r.vertices[0]);
-    case S::segment: return "the segment " + points_text(r.vertices);
-    case S::polygon: return "the polygon " + points_text(r.vertices) + " (counter-clockwise)";
-    case S::ray: return "the ray from " + pt(r.vertices[0]) + " toward " + pt(r.directions[0]);
-    case S::wedge:
-      return "the wedge at " + pt(r.vertices[0]) + " between directions " + pt(r.directions[0]) + " and " +
-             pt(r.directions[1]);
-    case S::unbounded_polygon:
-      return "the unbounded polygon with corners " + points_text(r.vertices) + ", running off toward " +
-             points_text(r.directions);
-    case S::line: return "the line through " + pt(r.vertices[0]) + " along " + pt(r.directions[0]);
-    case S::strip:
-      return "the strip between the lines through " + pt(r.vertices[0]) + " and " + pt(r.vertices[1]) + " along " +
-             pt(r.directions[0]);
-    case S::half_plane:
-      return "the half-plane bounded by the line through " + pt(r.vertices[0]) + " along " + pt(r.directions[0]) +
-             ", on the side of " + pt(r.directions[1]);
-    case S::plane: return "the whole plane";
-  }
-  return "?";
+  const auto texts = [](const std::vector<Vec2>& x) {
+    std::vector<std::string> s;
+    for (const Vec2& p : x) s.push_back(pt(p));
+    return s;
+  };
+  return region_sentence(shape_name(r.shape), texts(r.vertices), texts(r.directions));
 }
 
 std::string infinity_text(const Cone2& c) {
