@@ -1,5 +1,5 @@
 // cddlib with GMP rationals (bench/peers.h). Compiled with -DGMPRATIONAL, linked with -lcddgmp
-// only (linking -lcdd too crashes: both export the same symbols; toolchain.md).
+// only (linking -lcdd too crashes: both export the same symbols).
 #include <stdexcept>
 
 #include "bench/peers.h"

@@ -31,6 +31,9 @@ install(TARGETS wrenchkit_core wrenchkit_float wrenchkit_exact wrenchkit_pipelin
   EXPORT wrenchkitTargets
   ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}" COMPONENT development)
 install(TARGETS wrenchkit wrenchkit-check RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT runtime)
+# The reference that the CLI's help texts and JSON "convention" strings cite as "theory.md §x".
+install(FILES "${PROJECT_SOURCE_DIR}/docs/theory.md" "${PROJECT_SOURCE_DIR}/docs/theory-sliding.md"
+  DESTINATION "${CMAKE_INSTALL_DOCDIR}" COMPONENT runtime)
 foreach(dir core exact float)
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/${dir}/" DESTINATION "${WRENCHKIT_INSTALL_INCLUDEDIR}/${dir}"
     COMPONENT development FILES_MATCHING PATTERN "*.h")

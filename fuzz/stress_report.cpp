@@ -404,7 +404,7 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << "  minimises f(q) = h(q) − q·p over twists in plain doubles (an 8×8 grid on each face of the twist cube,\n"
      << "  then a compass search down to steps of 2^-60) and says \"slides\" iff some f(q) ≤ 0 — the float version of\n"
      << "  the support-function test, without error bounds (peers approximate the limit surface instead: an\n"
-     << "  ellipsoid or a sampled hull, peers.md §2.11, which is wrong at much larger ε).\n"
+     << "  ellipsoid or polynomial fit, or a sampled hull, which is wrong at much larger ε).\n"
      << "* **twin**: the certified float twin alone (`--mode float`); it abstains when a sign is within its error\n"
      << "  bound (closure, labels [FL-6]) or when its search runs out of cells (stick/slide [FL-7]).\n"
      << "* **hybrid**: the default mode: the twin, exact arithmetic where it abstains. For stick/slide, the search\n"

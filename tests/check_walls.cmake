@@ -4,6 +4,7 @@
 #   proofs/ no CGAL, nothing from exact/, core/, float/, cli/
 #   exact/ by parts (below); testing/ no front end
 #   exact/, cli/: no peer library (qhull, cddlib, GLPK) and nothing from bench/
+#   and no project file pointing at ../shared (the self-contained documentation, below)
 set(failures "")
 function(check_dir dir forbidden_regex what)
   file(GLOB_RECURSE files "${ROOT}/${dir}/*.h" "${ROOT}/${dir}/*.hpp" "${ROOT}/${dir}/*.cpp")
@@ -34,6 +35,46 @@ check_dir(testing "\"(cli|python)/" "test scenery does not depend on front ends"
 foreach(dir exact cli)
   check_dir(${dir} "<libqhull|<cdd/|<glpk|\"bench/" "peers stay in bench/")
 endforeach()
+
+# Self-contained documentation (docs/theory.md): no project file points at the team's workspace outside
+# the repository ("../shared", "shared/docs"), which users do not have. Checks the tracked files (every
+# file when ROOT is not a git checkout) under the listed paths, comments and printed strings alike.
+set(doc_paths README.md docs cli exact float core proofs python bench fuzz tests)
+set(doc_files "")
+find_program(GIT_EXECUTABLE git)
+if(GIT_EXECUTABLE AND EXISTS "${ROOT}/.git")
+  execute_process(COMMAND "${GIT_EXECUTABLE}" -C "${ROOT}" -c core.quotePath=false ls-files -- ${doc_paths}
+                  OUTPUT_VARIABLE listed RESULT_VARIABLE git_rc OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(git_rc EQUAL 0)
+    string(REPLACE "\n" ";" doc_files "${listed}")
+    list(TRANSFORM doc_files PREPEND "${ROOT}/")
+  endif()
+endif()
+if(NOT doc_files)
+  foreach(p IN LISTS doc_paths)
+    if(IS_DIRECTORY "${ROOT}/${p}")
+      file(GLOB_RECURSE found "${ROOT}/${p}/*")
+      list(APPEND doc_files ${found})
+    elseif(EXISTS "${ROOT}/${p}")
+      list(APPEND doc_files "${ROOT}/${p}")
+    endif()
+  endforeach()
+endif()
+list(FILTER doc_files EXCLUDE REGEX "/tests/check_walls\\.cmake$")
+list(LENGTH doc_files doc_count)
+if(doc_count LESS 100)
+  set(failures "${failures}\n  only ${doc_count} files found under ${doc_paths}: the documentation check did not run")
+endif()
+foreach(f IN LISTS doc_files)
+  if(NOT EXISTS "${f}" OR IS_DIRECTORY "${f}")
+    continue()
+  endif()
+  file(STRINGS "${f}" hits REGEX "\\.\\./shared|shared/docs")
+  foreach(line IN LISTS hits)
+    set(failures "${failures}\n  ${f}: ${line}  (points outside the repository; cite docs/ instead)")
+  endforeach()
+endforeach()
+
 if(failures)
   message(FATAL_ERROR "dependency walls broken:${failures}")
 endif()

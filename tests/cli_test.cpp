@@ -1,4 +1,4 @@
-// End-to-end tests of the `wrenchkit` command: exit codes (interface.md §2), messages on stderr,
+// End-to-end tests of the `wrenchkit` command: exit codes (docs/cli.md), messages on stderr,
 // nothing on stdout for bad input, certificates written and re-checked, every bad-input class.
 #include <gtest/gtest.h>
 

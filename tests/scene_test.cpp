@@ -1,4 +1,4 @@
-// Scene parser: exact numbers, strict JSON, and every bad-input class of interface.md §1 with the
+// Scene parser: exact numbers, strict JSON, and every bad-input class of docs/scene-format.md with the
 // message text pinned (the message names the JSON path and the offending text).
 #include <gtest/gtest.h>
 

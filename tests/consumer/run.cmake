@@ -3,7 +3,8 @@
 # 1. cmake --install BUILD --prefix WORK/prefix
 # 2. configure, build and run tests/consumer against the prefix (wrenchkit::exact, ::checker, ::float)
 # 3. again with only COMPONENTS float while GMP cannot be found (the float twin needs no GMP)
-# 4. the installed CLI answers, and the installed Python package imports (when built)
+# 4. the installed CLI answers, theory.md (which its help cites) is installed, and the installed Python
+#    package imports (when built)
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
@@ -41,6 +42,11 @@ if(rc EQUAL 0 OR NOT err MATCHES "need GMP")
 endif()
 
 run("${prefix}/bin/wrenchkit" --version)
+# The document the CLI's help cites ("theory.md §1.5") is installed beside it.
+file(GLOB_RECURSE theory "${prefix}/share/doc/*/theory.md")
+if(NOT theory)
+  message(FATAL_ERROR "docs/theory.md is not installed under ${prefix}/share/doc")
+endif()
 run("${prefix}/bin/wrenchkit" demo)
 if(PYTHON)
   file(GLOB_RECURSE init "${prefix}/*.py")
