@@ -20,7 +20,7 @@
 
 namespace wrenchkit::cli {
 
-// interface.md §2.
+// docs/cli.md, "Exit codes".
 enum Exit { kAnswered = 0, kRejected = 1, kBadInput = 2, kUndecided = 3, kSelfCheck = 4, kInternal = 70 };
 
 struct Options {

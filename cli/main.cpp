@@ -1,4 +1,4 @@
-// wrenchkit — the command line (interface.md §2, docs/cli.md): usage texts and dispatch. Each
+// wrenchkit — the command line (docs/cli.md): usage texts and dispatch. Each
 // command lives in cli/<command>_command.cpp; shared pieces in cli/common.h.
 #include <iostream>
 #include <string>

@@ -37,9 +37,10 @@ foreach(dir exact cli)
 endforeach()
 
 # Self-contained documentation (docs/theory.md): no project file points at the team's workspace outside
-# the repository ("../shared", "shared/docs"), which users do not have. Checks the tracked files (every
+# the repository ("../shared", "shared/docs", or the team's spec pages by name: interface.md, peers.md,
+# toolchain.md, house-style.md), which users do not have. Checks the tracked files (every
 # file when ROOT is not a git checkout) under the listed paths, comments and printed strings alike.
-set(doc_paths README.md docs cli exact float core proofs python bench fuzz tests)
+set(doc_paths README.md docs cli exact float core proofs python bench fuzz tests testing)
 set(doc_files "")
 find_program(GIT_EXECUTABLE git)
 if(GIT_EXECUTABLE AND EXISTS "${ROOT}/.git")
@@ -69,7 +70,7 @@ foreach(f IN LISTS doc_files)
   if(NOT EXISTS "${f}" OR IS_DIRECTORY "${f}")
     continue()
   endif()
-  file(STRINGS "${f}" hits REGEX "\\.\\./shared|shared/docs")
+  file(STRINGS "${f}" hits REGEX "\\.\\./shared|shared/docs|interface\\.md|peers\\.md|toolchain\\.md|house-style\\.md")
   foreach(line IN LISTS hits)
     set(failures "${failures}\n  ${f}: ${line}  (points outside the repository; cite docs/ instead)")
   endforeach()

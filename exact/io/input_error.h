@@ -1,5 +1,5 @@
 // Bad user input: the message names the JSON path (or file position) and the offending text.
-// The CLI prints it on stderr and exits with code 2 (interface.md §2).
+// The CLI prints it on stderr and exits with code 2 (docs/cli.md, "Exit codes").
 #pragma once
 
 #include <stdexcept>

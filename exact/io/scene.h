@@ -1,4 +1,4 @@
-// The scene model (interface.md §1, docs/scene-format.md): every number an exact rational.
+// The scene model (docs/scene-format.md): every number an exact rational.
 #pragma once
 
 #include <array>

@@ -1,5 +1,5 @@
 // Input limits: no scene can make wrenchkit allocate without bound or run without end.
-// Defaults are those of interface.md §1; every one can be raised on the command line.
+// Defaults are those of docs/scene-format.md, "Limits"; every one can be raised on the command line.
 #pragma once
 
 #include <cstddef>

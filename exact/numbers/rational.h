@@ -41,7 +41,7 @@ bool scan_number(std::string_view text, bool json_number, const Input_limits& li
 // normal double is at most 2^-52·|v|), +∞ if q is outside the normal range of doubles. [FL-4]
 fl::Bounded to_bounded(const Rational& q);
 
-// Lowest terms, "p" or "p/q" (q > 0): the JSON output form of interface.md §3.
+// Lowest terms, "p" or "p/q" (q > 0): the JSON output form of docs/cli.md.
 std::string to_string(const Rational& q);
 
 }  // namespace wrenchkit

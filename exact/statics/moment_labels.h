@@ -42,7 +42,7 @@ Moment_labels moment_labels(const std::vector<Wrench>& generators, Mode mode = M
                             const std::vector<fl::Bounded3>* twin = nullptr);
 Moment_labels moment_labels(const Scene& scene, Reading reading, Mode mode = Mode::exact);
 
-// JSON per interface.md §3: {"plus": REGION, "minus": REGION, "both": [...], "infinity": [...]}
+// JSON per docs/cli.md (labels): {"plus": REGION, "minus": REGION, "both": [...], "infinity": [...]}
 // (without the outer braces' neighbours: the caller adds fields).
 std::string labels_json_fields(const Moment_labels& l);
 std::string both_json(const Both_set& b);

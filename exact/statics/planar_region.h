@@ -74,7 +74,7 @@ std::vector<Vec3> negated(std::vector<Vec3> gens);
 // The primitive integer vector positively parallel to a nonzero rational 2-vector.
 Vec2 primitive2(const Rational& x, const Rational& y);
 
-// JSON (interface.md §3): a REGION {"empty", "shape", "vertices", "directions"}; the labeled points
+// JSON (docs/cli.md, REGION): a REGION {"empty", "shape", "vertices", "directions"}; the labeled points
 // at infinity as [{"from", "to"}] arcs (counter-clockwise; a full circle has "full": true and
 // from = to) or [{"direction"}] single directions; a point [x, y].
 std::string region_json(const Region& r);
