@@ -11,7 +11,7 @@
 namespace wrenchkit::cli {
 
 Equilibrium_result compute_equilibrium(const Options& o, const Scene& scene, const std::string& scene_text) {
-  Equilibrium_result r{decide_equilibrium(scene, mode_of(o.mode)), ""};
+  Equilibrium_result r{decide_equilibrium(scene, o.mode), ""};
   if (!r.a.decided)
     throw Undecided("the float twin could not certify equilibrium of this scene (a predicate is within its "
                     "error bound of zero, or the contact wrenches have rank < 3); use --mode hybrid or exact");
@@ -26,7 +26,7 @@ Equilibrium_result compute_equilibrium(const Options& o, const Scene& scene, con
 std::string equilibrium_json(const Options& o, const Scene& scene, const Equilibrium_result& r, const char* command) {
   const Wrench& l = r.a.load;
   return "{\"command\": \"" + std::string(command) + "\", \"name\": " + json::quote(scene.name) +
-         ", \"mode\": \"" + o.mode + "\", \"decided_by\": \"" + r.a.decided_by() + "\", \"balanced\": " +
+         ", \"mode\": \"" + mode_name(o.mode) + "\", \"decided_by\": \"" + r.a.decided_by() + "\", \"balanced\": " +
          (r.a.balanced ? "true" : "false") + ", \"load\": [" + json::quote(to_string(l.fx)) + ", " +
          json::quote(to_string(l.fy)) + ", " + json::quote(to_string(l.m)) + "], \"generators\": " +
          std::to_string(r.a.generators) + ", \"certificate_checked\": true, \"certificate\": " + r.cert + "}";
@@ -61,7 +61,6 @@ std::string equilibrium_human(const Equilibrium_result& r) {
 }
 
 Scene_answer prepare_equilibrium_json(const Options& o) {
-  only_options(o, "equilibrium", {});
   return [o](const std::string& text, const std::string& source) {
     const Scene scene = read_scene_streaming(text, o.limits, source);
     return equilibrium_json(o, scene, compute_equilibrium(o, scene, text), "equilibrium");
@@ -69,8 +68,6 @@ Scene_answer prepare_equilibrium_json(const Options& o) {
 }
 
 int run_equilibrium(const Options& o, const std::string& scene_text, const std::string& source) {
-  if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
-  if (!o.form_certificate_file.empty()) throw Usage_error("--form-certificate is for closure");
   const Scene scene = read_scene(scene_text, o.limits, source);
   const Equilibrium_result r = compute_equilibrium(o, scene, scene_text);
   if (!o.certificate_file.empty()) write_file(o.certificate_file, r.cert + "\n");

@@ -98,16 +98,8 @@ struct Labelled_scene {
   Mode mode = Mode::hybrid;
 };
 
-// The options every labels-family command refuses (checked once, before any scene).
-void check_label_options(const Options& o, const char* command, std::initializer_list<const char*> allowed) {
-  if (o.verdict_only) throw Usage_error("--verdict-only is for batch closure");
-  if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
-    throw Usage_error("--certificate is for closure and equilibrium");
-  only_options(o, command, allowed);
-}
-
 Labelled_scene label(const Options& o, const std::string& text, const std::string& source, Reading reading) {
-  Labelled_scene s{read_scene_streaming(text, o.limits, source), {}, {}, {}, mode_of(o.mode)};
+  Labelled_scene s{read_scene_streaming(text, o.limits, source), {}, {}, {}, o.mode};
   s.gens = generators(s.scene, reading);
   for (const Generator& g : s.gens) s.wrenches.push_back(g.w);
   if (s.mode == Mode::hybrid) {
@@ -193,12 +185,10 @@ struct Labels_query {
 };
 
 Labels_query labels_query(const Options& o) {
-  check_label_options(o, "labels", {"--resultant"});
   Labels_query q;
-  if (o.has("--resultant")) {
-    const std::vector<Rational> v = parse_vector(o, "--resultant", 3);
+  if (o.resultant) {
     q.resultant = true;
-    q.w = {v[0], v[1], v[2]};
+    q.w = *o.resultant;
   }
   return q;
 }
@@ -251,31 +241,14 @@ struct Reuleaux_query {
 };
 
 Reuleaux_query reuleaux_query(const Options& o) {
-  check_label_options(o, "reuleaux", {"--center", "--sense", "--direction", "--twist"});
-  const int queries = o.has("--center") + o.has("--direction") + o.has("--twist");
+  const int queries = o.center.has_value() + o.direction.has_value() + o.twist.has_value();
   if (queries > 1) throw Usage_error("give at most one of --center, --direction, --twist");
-  if (o.has("--sense") && !o.has("--center")) throw Usage_error("--sense goes with --center");
+  if (o.sense && !o.center) throw Usage_error("--sense goes with --center");
   Reuleaux_query q;
   q.given = queries > 0;
-  if (o.has("--center")) {
-    const std::vector<Rational> c = parse_vector(o, "--center", 2);
-    int sense = 1;
-    if (o.has("--sense")) {
-      const std::string& v = o.values.at("--sense");
-      if (v == "ccw" || v == "+") sense = 1;
-      else if (v == "cw" || v == "-") sense = -1;
-      else throw Usage_error("--sense: \"" + v + "\" is not one of ccw, cw");
-    }
-    q.t = rotation_twist({c[0], c[1]}, sense);
-  } else if (o.has("--direction")) {
-    const std::vector<Rational> d = parse_vector(o, "--direction", 2);
-    if (d[0] == 0 && d[1] == 0) throw Usage_error("--direction: the zero vector is no direction");
-    q.t = translation_twist({d[0], d[1]});
-  } else if (o.has("--twist")) {
-    const std::vector<Rational> v = parse_vector(o, "--twist", 3);
-    if (v[0] == 0 && v[1] == 0 && v[2] == 0) throw Usage_error("--twist: the zero twist is no motion");
-    q.t = {v[0], v[1], v[2]};
-  }
+  if (o.center) q.t = rotation_twist({(*o.center)[0], (*o.center)[1]}, o.sense.value_or(1));
+  else if (o.direction) q.t = translation_twist({(*o.direction)[0], (*o.direction)[1]});
+  else if (o.twist) q.t = *o.twist;
   return q;
 }
 
@@ -388,7 +361,7 @@ std::string float_reuleaux_json(const Float_labelled& s, const Reuleaux_query& q
   return j + query_json(q, m) + "}";
 }
 
-bool float_mode(const Options& o) { return mode_of(o.mode) == Mode::float_only; }
+bool float_mode(const Options& o) { return o.mode == Mode::float_only; }
 
 }  // namespace
 
@@ -400,7 +373,6 @@ Scene_answer prepare_labels_json(const Options& o) {
 }
 
 Scene_answer prepare_dual_json(const Options& o) {
-  check_label_options(o, "dual", {});
   return [o](const std::string& text, const std::string& source) {
     if (float_mode(o)) return float_dual_json(label_float(o, text, source, Reading::friction));
     return dual_json(label(o, text, source, Reading::friction));
@@ -471,7 +443,6 @@ int run_labels(const Options& o, const std::string& text, const std::string& sou
 }
 
 int run_dual(const Options& o, const std::string& text, const std::string& source) {
-  check_label_options(o, "dual", {});
   if (float_mode(o)) {
     const Float_labelled f = label_float(o, text, source, Reading::friction);
     if (o.json) {
