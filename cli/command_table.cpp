@@ -126,6 +126,13 @@ Option with_help(Option o, const char* help) {
   return o;
 }
 
+// The same group with the help line of one of its options (`name`) for one command.
+std::vector<Option> with_help(std::vector<Option> group, const std::string& name, const char* help) {
+  for (Option& o : group)
+    if (o.name == name) o.help = help;
+  return group;
+}
+
 const std::vector<Option> kLimits = {
     {"max-digits", "N", "digits allowed in one number (default 10000)",
      [](Options& o, S n, S v) { o.limits.max_digits = count_value(n, v); }, Role::limit},
@@ -516,7 +523,7 @@ std::vector<Command> make_table() {
                [](Options& o, S n, S v) { o.atol = non_negative(o, n, v); }},
               {"near", "D", "a distance <= D counts as near a boundary (default 1e-9)",
                [](Options& o, S n, S v) { o.near = non_negative(o, n, v); }}},
-             kLimits}),
+             with_help(kLimits, "max-file-size", "largest answers file (default 67108864)")}),
        {"CORPUS", "ANSWERS"},
        nullptr,
        run_compare});
@@ -678,7 +685,7 @@ std::string command_help(const Command& c) {
     std::string names;
     for (const Command& x : commands())
       if (x.prepare) names += (names.empty() ? "" : ", ") + std::string(x.name);
-    s += "\nCOMMAND: " + names + "; 'wrenchkit batch COMMAND --help' lists its options.\n";
+    s += "\n" + wrap("COMMAND: " + names + "; 'wrenchkit batch COMMAND --help' lists its options.", 0, 0, 100) + "\n";
   }
   return s + "\n" + options_text(c.options);
 }
@@ -707,8 +714,9 @@ int run_batch_command(const Command& batch, const std::vector<std::string>& args
   const Options o = parse(g, std::vector<std::string>(args.begin() + 2, args.end()));
   if (o.help) {
     std::cout << "usage: wrenchkit batch " << c->name << " [OPTIONS] < scenes.jsonl\n\n"
-              << "The answers of 'wrenchkit " << c->name << " --json', one line per scene of standard input\n"
-              << "('wrenchkit batch --help').\n\n"
+              << "For each scene of standard input, one line: the answer of 'wrenchkit " << c->name << " --json'\n"
+              << "('wrenchkit batch --help'). What " << c->name << " answers:\n\n"
+              << c->description << "\n"
               << options_text(g.options);
     return kAnswered;
   }

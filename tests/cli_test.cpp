@@ -201,7 +201,13 @@ TEST(Cli, EveryCommandOfTheTableHasHelpAndRefusesAnUnknownMode) {
     EXPECT_NE(h.out.find("\noptions:\n  -h [ --help ]"), std::string::npos) << c << ": " << h.out;
     if (c != "batch") lines.push_back(c);
   }
-  for (const std::string& c : per_scene) lines.push_back("batch " + c);
+  for (const std::string& c : per_scene) {
+    const Cli_result h = run("batch " + c + " --help");
+    EXPECT_EQ(h.code, 0) << c;
+    EXPECT_EQ(h.out.rfind("usage: wrenchkit batch " + c + " ", 0), 0u) << c << ": " << h.out;
+    EXPECT_NE(h.out.find("\n  --jobs N "), std::string::npos) << c << ": " << h.out;
+    lines.push_back("batch " + c);
+  }
   for (const std::string& c : lines) {
     // The scene argument is a real scene, so that the mode is the only thing wrong.
     const bool takes_mode = run(c + " --help").out.find("\n  --mode ") != std::string::npos;
