@@ -58,7 +58,7 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
               to_string(cof.y) + ") — 'wrenchkit limit-surface' for any N, tolerances and queries\n";
     if (scene.load && scene.load->kind != Load::Kind::gravity) {
       const Vec3q p = as_vec(load_wrench(scene));
-      const Motion_decision m = decide_motion(model, p, mode_of(o.mode), &in, &out);
+      const Motion_decision m = decide_motion(model, p, o.mode, &in, &out);
       r.json += ", \"load_motion\": {\"load\": [" + json::quote(to_string(p[0])) + ", " + json::quote(to_string(p[1])) +
                 ", " + json::quote(to_string(p[2])) + "], \"motion\": \"" + motion_name(m.motion) +
                 "\", \"decided_by\": \"" + m.decided_by + "\"}";
@@ -118,32 +118,16 @@ std::string analyze_json(const Options& o, const Analysis& a, const char* comman
   return s + "]}";
 }
 
-// The options, once: --tolerance ε > 0 (the limit surface's certified relative error).
-std::optional<Rational> analyze_options(const Options& o) {
-  if (o.verdict_only) throw Usage_error("--verdict-only is for batch closure");
-  if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
-    throw Usage_error("analyze writes its certificates in its JSON output; use closure or equilibrium for files");
-  only_options(o, "analyze", {"--tolerance"});
-  if (!o.has("--tolerance")) return std::nullopt;
-  const std::string& t = o.values.at("--tolerance");
-  std::string why;
-  const auto e = parse_rational(t, false, o.limits, why);
-  if (!e) throw Usage_error("--tolerance: \"" + t + "\" " + why);
-  if (*e <= 0) throw Usage_error("--tolerance: \"" + t + "\" must be > 0");
-  return e;
-}
-
 }  // namespace
 
 Scene_answer prepare_analyze_json(const Options& o) {
-  return [o, tolerance = analyze_options(o)](const std::string& text, const std::string& source) {
+  return [o, tolerance = o.tolerance](const std::string& text, const std::string& source) {
     return analyze_json(o, analyze(o, tolerance, text, source), "analyze");
   };
 }
 
 int run_analyze(const Options& o, const std::string& scene_text, const std::string& source, const char* command) {
-  const std::optional<Rational> tolerance = analyze_options(o);
-  const Analysis a = analyze(o, tolerance, scene_text, source);
+  const Analysis a = analyze(o, o.tolerance, scene_text, source);
   if (o.json) {
     std::cout << analyze_json(o, a, command) << "\n";
     return kAnswered;

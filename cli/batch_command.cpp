@@ -87,21 +87,9 @@ void error_line(std::string& out, std::size_t line, const Ended& e) {
 
 }  // namespace
 
-// wrenchkit batch COMMAND [OPTIONS] < scenes.jsonl
-int run_batch(const Options& o) {
-  const std::string usage = "wrenchkit batch " + scene_command_names() + " [OPTIONS] < scenes.jsonl";
-  if (o.positional.empty()) throw Usage_error("batch needs a command: " + usage);
-  if (o.positional.size() > 1) throw Usage_error("batch reads its scenes from standard input: " + usage);
-  const Scene_command* command = find_scene_command(o.positional[0]);
-  if (!command)
-    throw Usage_error("batch: \"" + o.positional[0] + "\" is not a command that answers per scene: " + usage);
-  if (!o.certificate_file.empty() || !o.form_certificate_file.empty() || o.has("--off") || o.has("--obj") ||
-      o.has("--svg") || o.has("--output"))
-    throw Usage_error("batch writes certificates and answers in its output lines, not to files");
-  if (o.verdict_only && std::string(command->name) != "closure")
-    throw Usage_error("--verdict-only is for batch closure");
-  const Scene_answer answer = command->prepare(o);  // the command's options, checked once
-
+// wrenchkit batch COMMAND [OPTIONS] < scenes.jsonl (the command and its options already read and
+// prepared: cli/command_table.cpp).
+int run_batch(const Options& o, const Scene_answer& answer) {
   std::atomic<bool> self_check_failed{false}, internal_error{false};
   Line_reader reader(std::cin.rdbuf(), o.limits.max_file_bytes);
   ordered_map<Line, std::string, Worker>(

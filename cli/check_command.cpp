@@ -9,7 +9,6 @@
 namespace wrenchkit::cli {
 
 int run_check(const Options& o) {
-  if (o.positional.size() != 2) throw Usage_error("check needs SCENE.json and CERT.json");
   if (o.positional[0] == "-" && o.positional[1] == "-")
     throw Usage_error("check: SCENE.json and CERT.json cannot both be standard input");
   const std::string scene = read_input(o.positional[0], o.limits.max_file_bytes);

@@ -62,7 +62,7 @@ std::string closure_json(const Options& o, const Closure_item& r, const char* co
   s += "\", \"name\": ";
   s += json::quote(r.name);
   s += ", \"mode\": \"";
-  s += o.mode;
+  s += mode_name(o.mode);
   s += "\", \"decided_by\": \"";
   s += r.decided_by();
   s += "\", \"force_closure\": ";
@@ -90,7 +90,6 @@ std::string closure_human(const Closure_item& r) {
 }
 
 Scene_answer prepare_closure_json(const Options& o) {
-  if (!o.values.empty()) throw Usage_error(o.values.begin()->first + " is not an option of closure");
   return [o, request = request_of(o)](const std::string& text, const std::string& source) {
     thread_local Scene scratch;  // reused from one scene to the next: no allocation once warm
     return closure_json(o, answered(answer_closure(text, source, request, scratch)), "closure");
@@ -99,7 +98,6 @@ Scene_answer prepare_closure_json(const Options& o) {
 
 int run_closure(const Options& o, const std::string& scene_text, const std::string& source,
                 const char* command) {
-  if (o.verdict_only) throw Usage_error("--verdict-only is for batch; closure always certifies");
   Scene scene;
   const Closure_item r = answered(answer_closure(scene_text, source, request_of(o), scene));
   if (!o.certificate_file.empty()) write_file(o.certificate_file, r.force_certificate + "\n");

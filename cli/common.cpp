@@ -1,9 +1,8 @@
-// Options, file I/O and small formatting helpers of the wrenchkit command.
+// File I/O and small formatting helpers of the wrenchkit command.
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <optional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -12,75 +11,6 @@
 #include "exact/io/input_error.h"
 
 namespace wrenchkit::cli {
-
-namespace {
-
-std::size_t parse_count(const std::string& opt, const std::string& v) {
-  if (v.empty() || v.size() > 18 || v.find_first_not_of("0123456789") != std::string::npos)
-    throw Usage_error(opt + ": \"" + v + "\" is not a non-negative integer");
-  return std::stoull(v);
-}
-
-}  // namespace
-
-Options parse_options(int argc, char** argv, int first) {
-  Options o;
-  for (int i = first; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw Usage_error(a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--json") o.json = true;
-    else if (a == "--help" || a == "-h") o.help = true;
-    else if (a == "--mode") o.mode = value();
-    else if (a == "--verdict-only") o.verdict_only = true;
-    else if (a == "--jobs") {
-      const std::size_t j = parse_count(a, value());
-      if (j < 1 || j > 1024) throw Usage_error("--jobs: must be between 1 and 1024");
-      o.jobs = static_cast<unsigned>(j);
-    }
-    else if (a == "--certificate") o.certificate_file = value();
-    else if (a == "--form-certificate") o.form_certificate_file = value();
-    else if (a == "--max-digits") o.limits.max_digits = parse_count(a, value());
-    else if (a == "--max-exponent") o.limits.max_exponent = static_cast<long>(parse_count(a, value()));
-    else if (a == "--max-file-size") o.limits.max_file_bytes = parse_count(a, value());
-    else if (a == "--max-contacts") o.limits.max_contacts = parse_count(a, value());
-    else if (a == "--list") o.values[a];
-    else if (a == "--resultant" || a == "--center" || a == "--sense" || a == "--direction" ||
-             a == "--twist" || a == "--what" || a == "-o" || a == "--output" || a == "--sides" ||
-             a == "--tolerance" || a == "--load" || a == "--off" || a == "--obj" || a == "--svg") {
-      std::string& slot = o.values[a == "-o" ? "--output" : a];
-      if (!slot.empty()) throw Usage_error(a + " given twice");
-      slot = value();
-      if (slot.empty()) throw Usage_error(a + ": empty value");
-    }
-    else if (a.size() > 1 && a[0] == '-' && a != "-") throw Usage_error("unknown option " + a);
-    else o.positional.push_back(a);
-  }
-  if (o.mode != "exact" && o.mode != "hybrid" && o.mode != "float")
-    throw Usage_error("--mode: \"" + o.mode + "\" is not one of exact, hybrid, float");
-  return o;
-}
-
-std::vector<Rational> parse_vector(const Options& o, const std::string& option, std::size_t n) {
-  const std::string& text = o.values.at(option);
-  std::vector<Rational> out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = text.find(',', start);
-    const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    std::string why;
-    const std::optional<Rational> q = parse_rational(part, false, o.limits, why);
-    if (!q) throw Usage_error(option + ": \"" + part + "\" " + why);
-    out.push_back(*q);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  if (out.size() != n)
-    throw Usage_error(option + ": \"" + text + "\" needs " + std::to_string(n) + " comma-separated numbers");
-  return out;
-}
 
 std::string read_input(const std::string& path, std::size_t limit) {
   std::istream* in = &std::cin;
@@ -167,7 +97,7 @@ std::string region_sentence(const std::string& shape, const std::vector<std::str
 
 Request request_of(const Options& o) {
   Request r;
-  r.mode = mode_of(o.mode);
+  r.mode = o.mode;
   r.certify = !o.verdict_only;
   r.limits = o.limits;
   return r;
@@ -210,10 +140,6 @@ int report(const Ended& e) {
   }
   std::cerr << prefix << e.message << "\n";
   return exit_code(e.status);
-}
-
-Mode mode_of(const std::string& m) {
-  return m == "exact" ? Mode::exact : (m == "float" ? Mode::float_only : Mode::hybrid);
 }
 
 }  // namespace wrenchkit::cli

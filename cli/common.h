@@ -1,17 +1,19 @@
-// Shared pieces of the wrenchkit command: exit codes, options, file I/O, error kinds, and the
-// commands' entry points (each command lives in its own file, named after it).
+// Shared pieces of the wrenchkit command: exit codes, the typed options, file I/O, error kinds, and the
+// commands' entry points (each command lives in its own file, named after it; the table of commands,
+// their options and help texts is cli/command_table.cpp).
 #pragma once
 
 #include <array>
 #include <exception>
 #include <cstddef>
 #include <functional>
-#include <initializer_list>
-#include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "cli/reference.h"
+#include "core/mode.h"
 #include "exact/pipeline/pipeline.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
@@ -23,20 +25,42 @@ namespace wrenchkit::cli {
 // docs/cli.md, "Exit codes".
 enum Exit { kAnswered = 0, kRejected = 1, kBadInput = 2, kUndecided = 3, kSelfCheck = 4, kInternal = 70 };
 
+// What `render --what` draws.
+enum class Picture { labels, dual, reuleaux, limit_surface };
+
+// The options of one command line, each validated where it is parsed (cli/command_table.cpp: the
+// exact numbers through parse_rational within the scene limits) into its typed field. A command
+// reads only the fields of the options its table entry lists; the others keep these defaults
+// (command-specific ones: empty, std::nullopt).
 struct Options {
   bool json = false;
   bool help = false;
-  bool verdict_only = false;  // batch: skip certificates (throughput); never the default
+  bool verdict_only = false;  // batch closure: skip certificates (throughput); never the default
   unsigned jobs = 0;          // batch: threads, 0 = all cores
-  std::string mode = "hybrid";
+  Mode mode = Mode::hybrid;
   std::string certificate_file, form_certificate_file;
   Input_limits limits;
   std::vector<std::string> positional;
-  // Command-specific options (--resultant, --center, --sense, --direction, --twist, --what,
-  // --output/-o, --sides, --tolerance, --load, --off, --obj, --svg; the flag --list with the empty
-  // value): set only when given.
-  std::map<std::string, std::string> values;
-  bool has(const std::string& option) const { return values.count(option) != 0; }
+  // labels --resultant fx,fy,m; reuleaux --center x,y [--sense], --direction dx,dy (not zero) or
+  // --twist; limit-surface, sliding --twist vx,vy,w (not zero); limit-surface --load fx,fy,m.
+  std::optional<std::array<Rational, 3>> resultant, twist, load;
+  std::optional<std::array<Rational, 2>> center, direction;
+  std::optional<int> sense;  // +1 counter-clockwise, -1 clockwise
+  // limit-surface, sliding, render: --sides N (even, 4..kMaxSides); limit-surface, analyze:
+  // --tolerance EPS (> 0; its text too, for messages).
+  std::optional<int> sides;
+  std::optional<Rational> tolerance;
+  std::string tolerance_text;
+  // render --what, -o/--output FILE; limit-surface --list, --off, --obj, --svg FILE.
+  std::optional<Picture> what;
+  std::string output, off_file, obj_file, svg_file;
+  bool list = false;
+  // compare: --format jsonl|csv ("" = by the file name), --rtol, --atol, --near (exact, >= 0).
+  std::string format;
+  Rational rtol{"1/1000000000"}, atol{"1/1000000000000"}, near{"1/1000000000"};
+  // reference: --out DIR, --seed, --cases, --random, --sides (4..64).
+  std::string out_dir;
+  Reference_options reference;
 };
 
 // Exit 2 (usage), 3 (--mode float undecided: the engine's Undecided_error), 4 (our own certificate or
@@ -75,9 +99,6 @@ int report(const Ended& e);
 // The pipeline request of the command line's options: --mode, --verdict-only, the --max-* limits.
 Request request_of(const Options& o);
 
-Options parse_options(int argc, char** argv, int first);
-// The exact numbers of a "a,b,…" option value (decimal or p/q each, as in scenes); exactly n of them.
-std::vector<Rational> parse_vector(const Options& o, const std::string& option, std::size_t n);
 // Reads a whole file (or standard input for "-"), refusing more than `limit` bytes.
 std::string read_input(const std::string& path, std::size_t limit);
 // Writes FILE atomically: a temporary beside it, then a rename, so nothing is half-written.
@@ -92,7 +113,6 @@ std::string vec_text(const std::array<Rational, 3>& v);
 // directions: one sentence for the exact regions and the twin's.
 std::string region_sentence(const std::string& shape, const std::vector<std::string>& corners,
                             const std::vector<std::string>& directions);
-Mode mode_of(const std::string& m);
 
 // ---------------------------------------------------------------------------------------------
 // The per-scene commands' JSON answers, shared by the single commands (`wrenchkit COMMAND --json`),
@@ -105,17 +125,8 @@ Mode mode_of(const std::string& m);
 // support). It may be called from several threads at once.
 using Scene_answer = std::function<std::string(const std::string& scene_text, const std::string& source)>;
 
-struct Scene_command {
-  const char* name;  // closure, equilibrium, labels, dual, reuleaux, analyze, limit-surface, sliding
-  // Reads and validates the command's options from `o`, once (Usage_error for an option the command
-  // does not take or a bad value), and returns its Scene_answer, which keeps what it needs of them.
-  Scene_answer (*prepare)(const Options& o);
-};
-// The per-scene command called `name`, or nullptr.
-const Scene_command* find_scene_command(const std::string& name);
-// The commands' names, "closure|equilibrium|…", for messages.
-std::string scene_command_names();
-
+// Each command's prepare_*_json reads what it needs of the (already validated) options once, checks
+// how they combine (Usage_error), and returns its Scene_answer, which keeps them.
 Scene_answer prepare_closure_json(const Options& o);
 Scene_answer prepare_equilibrium_json(const Options& o);
 Scene_answer prepare_labels_json(const Options& o);
@@ -136,7 +147,8 @@ int run_equilibrium(const Options& o, const std::string& scene_text, const std::
 
 // analyze_command.cpp, batch_command.cpp, check_command.cpp
 int run_analyze(const Options& o, const std::string& scene_text, const std::string& source, const char* command);
-int run_batch(const Options& o);
+// batch: `answer` (the command's, prepared from `o`) on every line of standard input.
+int run_batch(const Options& o, const Scene_answer& answer);
 int run_check(const Options& o);
 
 // labels_command.cpp: labels, dual, reuleaux;  render_command.cpp: render
@@ -148,10 +160,9 @@ int run_render(const Options& o, const std::string& scene_text, const std::strin
 // limit_surface_command.cpp, sliding_command.cpp
 int run_limit_surface(const Options& o, const std::string& scene_text, const std::string& source);
 int run_sliding(const Options& o, const std::string& scene_text, const std::string& source);
-extern const char* kLimitSurfaceHelp;
-extern const char* kSlidingHelp;
 
-// Usage_error unless every command-specific option given is one of `allowed`.
-void only_options(const Options& o, const char* command, std::initializer_list<const char*> allowed);
+// reference_command.cpp, compare_command.cpp
+int run_reference(const Options& o);
+int run_compare(const Options& o);
 
 }  // namespace wrenchkit::cli

@@ -20,36 +20,6 @@
 
 namespace wrenchkit::cli {
 
-const char* kCompareHelp =
-    "usage: wrenchkit compare [OPTIONS] CORPUS ANSWERS\n"
-    "\n"
-    "Compares another implementation's answers with the reference corpus written by 'wrenchkit\n"
-    "reference' (CORPUS: its directory, or its reference.jsonl). ANSWERS (- for standard input) is\n"
-    "JSON lines, one object per answered scene:\n"
-    "  {\"id\": \"golden.ladder_mu_1_7\", \"force_closure\": false, \"form_closure\": false}\n"
-    "with any of the fields force_closure, form_closure, equilibrium (true/false/null),\n"
-    "center_of_friction ([x, y]), power ([h, ...]: the frictional power for each of the scene's\n"
-    "limit_surface.twists), labels ({\"plus\": R, \"minus\": R}, R with any of empty, shape,\n"
-    "vertices), error (a string: the implementation gave no answer). Fields starting with _ are\n"
-    "ignored; null means no answer. Or CSV (a name ending in .csv, or --format csv) with a header\n"
-    "line: id and any of force_closure, form_closure, equilibrium; cells true, false, 1, 0 or empty.\n"
-    "Numbers are read exactly from their text and compared within --rtol/--atol; power must lie in\n"
-    "the exact bracket of the true power (widened by the tolerance).\n"
-    "\n"
-    "Reports agreement per field and each disagreement with its scene id, family, eps, its distance\n"
-    "to a degenerate boundary and the scene's file: disagreements far from any boundary are listed\n"
-    "first (likely bugs), then those within --near of one or on an exact degeneracy (likely\n"
-    "tolerance issues). Scenes without an answer are counted, not failed.\n"
-    "\n"
-    "options:\n"
-    "  --json             machine-readable report (docs/reference-format.md)\n"
-    "  --format jsonl|csv the answers' format (default: by the file name; jsonl for -)\n"
-    "  --rtol R, --atol A numeric tolerance (defaults 1e-9, 1e-12): |a - r| <= atol + rtol*|r|\n"
-    "  --near D           a distance <= D counts as near a boundary (default 1e-9)\n"
-    "  --max-file-size BYTES  largest answers file (default 67108864)\n"
-    "Exit codes: 0 every given answer agrees, 1 disagreements found, 2 bad input (a malformed line,\n"
-    "an unknown id or field: the message names the line and the field).\n";
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -436,37 +406,11 @@ std::string distance_text(const Ref& r) {
 
 }  // namespace
 
-int run_compare(int argc, char** argv) {
-  std::vector<char*> rest = {argv[0], argv[1]};
-  std::string format, rtol_text = "1e-9", atol_text = "1e-12", near_text = "1e-9";
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw Usage_error(a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--format") {
-      format = value();
-      if (format != "jsonl" && format != "csv") throw Usage_error("--format: \"" + format + "\" is not one of jsonl, csv");
-    } else if (a == "--rtol") rtol_text = value();
-    else if (a == "--atol") atol_text = value();
-    else if (a == "--near") near_text = value();
-    else rest.push_back(argv[i]);
-  }
-  const Options o = parse_options(static_cast<int>(rest.size()), rest.data(), 2);
-  if (o.help) return std::cout << kCompareHelp, kAnswered;
-  if (o.positional.size() != 2) throw Usage_error("compare needs CORPUS and ANSWERS (see wrenchkit compare --help)");
-  if (!o.values.empty()) throw Usage_error(o.values.begin()->first + " is not an option of compare");
-  auto nonneg = [&](const std::string& opt, const std::string& t) {
-    std::string why;
-    const auto q = parse_rational(t, false, o.limits, why);
-    if (!q) throw Usage_error(opt + ": \"" + t + "\" " + why);
-    if (*q < 0) throw Usage_error(opt + ": \"" + t + "\" must be >= 0");
-    return *q;
-  };
-  const Tolerance tol{nonneg("--rtol", rtol_text), nonneg("--atol", atol_text)};
-  const double near = nonneg("--near", near_text).get_d();
+int run_compare(const Options& o) {
+  const Tolerance tol{o.rtol, o.atol};
+  const double near = o.near.get_d();
   const std::string& answers_path = o.positional[1];
+  std::string format = o.format;
   if (format.empty())
     format = answers_path.size() >= 4 && answers_path.compare(answers_path.size() - 4, 4, ".csv") == 0 ? "csv" : "jsonl";
 

@@ -13,7 +13,7 @@ namespace wrenchkit::cli {
 std::string equilibrium_json(const Options& o, const Equilibrium_item& r, const char* command) {
   const Wrench& l = r.answer.load;
   return "{\"command\": \"" + std::string(command) + "\", \"name\": " + json::quote(r.name) +
-         ", \"mode\": \"" + o.mode + "\", \"decided_by\": \"" + r.answer.decided_by() + "\", \"balanced\": " +
+         ", \"mode\": \"" + mode_name(o.mode) + "\", \"decided_by\": \"" + r.answer.decided_by() + "\", \"balanced\": " +
          (r.answer.balanced ? "true" : "false") + ", \"load\": [" + json::quote(to_string(l.fx)) + ", " +
          json::quote(to_string(l.fy)) + ", " + json::quote(to_string(l.m)) + "], \"generators\": " +
          std::to_string(r.answer.generators) + ", \"certificate_checked\": true, \"certificate\": " + r.certificate + "}";
@@ -48,7 +48,6 @@ std::string equilibrium_human(const Equilibrium_item& r) {
 }
 
 Scene_answer prepare_equilibrium_json(const Options& o) {
-  only_options(o, "equilibrium", {});
   return [o, request = request_of(o)](const std::string& text, const std::string& source) {
     thread_local Scene scratch;
     return equilibrium_json(o, answered(answer_equilibrium(text, source, request, scratch)), "equilibrium");
@@ -56,8 +55,6 @@ Scene_answer prepare_equilibrium_json(const Options& o) {
 }
 
 int run_equilibrium(const Options& o, const std::string& scene_text, const std::string& source) {
-  if (o.verdict_only) throw Usage_error("--verdict-only is for batch");
-  if (!o.form_certificate_file.empty()) throw Usage_error("--form-certificate is for closure");
   Scene scene;
   const Equilibrium_item r = answered(answer_equilibrium(scene_text, source, request_of(o), scene));
   if (!o.certificate_file.empty()) write_file(o.certificate_file, r.certificate + "\n");

@@ -65,14 +65,6 @@ std::string wrench_json(const Vec3& w) {
   return "[" + json::quote(to_string(w[0])) + ", " + json::quote(to_string(w[1])) + ", " + json::quote(to_string(w[2])) + "]";
 }
 
-// The options every labels-family command refuses (checked once, before any scene).
-void check_label_options(const Options& o, const char* command, std::initializer_list<const char*> allowed) {
-  if (o.verdict_only) throw Usage_error("--verdict-only is for batch closure");
-  if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
-    throw Usage_error("--certificate is for closure and equilibrium");
-  only_options(o, command, allowed);
-}
-
 // "mode", "decided_by", "predicates", "exact_predicates" of an exact or hybrid answer.
 std::string mode_fields(const Labels_item& s) {
   const Wrench_cone& c = s.labels.cone;
@@ -103,49 +95,27 @@ std::string load_json(const Labels_item& s) {
          "}";
 }
 
-// labels: the optional --resultant query (read once, before any scene).
+// labels: the optional --resultant query (its numbers read where the options are parsed).
 Labels_query labels_query(const Options& o) {
-  check_label_options(o, "labels", {"--resultant"});
   Labels_query q;
-  if (o.has("--resultant")) {
-    const std::vector<Rational> v = parse_vector(o, "--resultant", 3);
-    q.resultant = Vec3{v[0], v[1], v[2]};
-  }
+  if (o.resultant) q.resultant = *o.resultant;
   return q;
 }
 
 // reuleaux: the optional motion (--center [--sense], --direction or --twist).
 Labels_query reuleaux_query(const Options& o) {
-  check_label_options(o, "reuleaux", {"--center", "--sense", "--direction", "--twist"});
-  const int queries = o.has("--center") + o.has("--direction") + o.has("--twist");
+  const int queries = o.center.has_value() + o.direction.has_value() + o.twist.has_value();
   if (queries > 1) throw Usage_error("give at most one of --center, --direction, --twist");
-  if (o.has("--sense") && !o.has("--center")) throw Usage_error("--sense goes with --center");
+  if (o.sense && !o.center) throw Usage_error("--sense goes with --center");
   Labels_query q;
   q.question = Labels_question::reuleaux;
-  if (o.has("--center")) {
-    const std::vector<Rational> c = parse_vector(o, "--center", 2);
-    int sense = 1;
-    if (o.has("--sense")) {
-      const std::string& v = o.values.at("--sense");
-      if (v == "ccw" || v == "+") sense = 1;
-      else if (v == "cw" || v == "-") sense = -1;
-      else throw Usage_error("--sense: \"" + v + "\" is not one of ccw, cw");
-    }
-    q.motion = rotation_twist({c[0], c[1]}, sense);
-  } else if (o.has("--direction")) {
-    const std::vector<Rational> d = parse_vector(o, "--direction", 2);
-    if (d[0] == 0 && d[1] == 0) throw Usage_error("--direction: the zero vector is no direction");
-    q.motion = translation_twist({d[0], d[1]});
-  } else if (o.has("--twist")) {
-    const std::vector<Rational> v = parse_vector(o, "--twist", 3);
-    if (v[0] == 0 && v[1] == 0 && v[2] == 0) throw Usage_error("--twist: the zero twist is no motion");
-    q.motion = Vec3{v[0], v[1], v[2]};
-  }
+  if (o.center) q.motion = rotation_twist({(*o.center)[0], (*o.center)[1]}, o.sense.value_or(1));
+  else if (o.direction) q.motion = translation_twist({(*o.direction)[0], (*o.direction)[1]});
+  else if (o.twist) q.motion = *o.twist;
   return q;
 }
 
-Labels_query dual_query(const Options& o) {
-  check_label_options(o, "dual", {});
+Labels_query dual_query(const Options&) {
   Labels_query q;
   q.question = Labels_question::dual;
   return q;

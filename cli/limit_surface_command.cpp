@@ -22,51 +22,12 @@
 
 namespace wrenchkit::cli {
 
-const char* kLimitSurfaceHelp =
-    "usage: wrenchkit limit-surface [OPTIONS] SCENE.json\n"
-    "\n"
-    "Builds, exactly, the polygonal inner and outer limit surfaces of the scene's \"support\"\n"
-    "(theory.md §12): every friction disc is replaced by the inscribed and the circumscribed N-gon of\n"
-    "rational unit directions, and the Minkowski sums LS_in and LS_out are computed as exact polytopes\n"
-    "(facets and vertices; coplanar facets merged). The certificate lambda^2 = (1 + min u_j.u_(j+1))/2\n"
-    "guarantees  lambda*LS <= LS_in <= LS <= LS_out <= LS/lambda, i.e. for every twist q the true\n"
-    "frictional power h(q) satisfies lambda*h <= h_in <= h <= h_out <= h/lambda.\n"
-    "\n"
-    "Sign convention (theory.md §1.5): every wrench here is the LOAD the slider applies to the support\n"
-    "(parallel to the sliding velocity); the friction wrench on the slider is its negative. Wrenches are\n"
-    "fx,fy,m with m about the origin; twists vx,vy,w with w counter-clockwise.\n"
-    "\n"
-    "options:\n"
-    "  --sides N          polygon sides, even, 4..4096 (default 32)\n"
-    "  --tolerance EPS    instead of --sides: the smallest N whose certified relative error\n"
-    "                     1/lambda - 1 is <= EPS (EPS > 0, exact: 0.01, 1/100, 1e-3)\n"
-    "  --twist vx,vy,w    also the load for this twist on LS_in and LS_out (a point, a segment or a\n"
-    "                     facet), the bounds h_in <= h <= h_out, and what the twist is on the true LS\n"
-    "  --load fx,fy,m     also \"motion\": sticks (certainly inside LS), slides (certainly not inside),\n"
-    "                     or undecided (refine N); the gauge bounds, and the cones of twists of LS_out\n"
-    "                     and LS_in at the load's direction\n"
-    "  --list             list every facet (normal, offset, vertex indices) and vertex, exactly\n"
-    "  --off FILE         write both polytopes as one coloured OFF mesh (inner blue, outer red)\n"
-    "  --obj FILE         write both polytopes as a Wavefront OBJ with objects \"inner\" and \"outer\"\n"
-    "  --json             machine-readable output (docs/limit-surface.md)\n"
-    "  --max-digits N, --max-exponent N, --max-file-size BYTES, --max-contacts N  (as for closure)\n"
-    "  --mode hybrid      (default) the polytopes exactly; --load's motion by the float twin's certified\n"
-    "                     search on the TRUE limit surface first, the polytopes when it cannot tell;\n"
-    "                     with --twist also the true power and load (certified float bounds)\n"
-    "  --mode exact       exact arithmetic only (the motion from the polytopes: may be undecided)\n"
-    "  --mode float       the float twin alone: no polytopes; lambda^2, the polygonal and true powers and\n"
-    "                     loads with certified bounds, the motion by the search (exit 3 if undecided)\n"
-    "\n"
-    "Exact rationals are printed in lowest terms; OFF/OBJ coordinates are doubles (for viewing).\n";
-
 namespace {
 
 struct Ls_options {
   Mode mode = Mode::hybrid;
   int sides = 32;
-  bool sides_given = false;
   std::optional<Rational> tolerance;
-  std::string tolerance_text;
   int sets_built = 0;  // direction sets tried to meet the tolerance
   std::optional<Vec3q> twist, load;
   std::string off_file, obj_file, svg_file;
@@ -108,30 +69,6 @@ std::string polytope_json(const Ls_polytope& P, bool list) {
     s += "]";
   }
   return s + "}";
-}
-
-Vec3q parse_triple(const std::string& opt, const std::string& text, const Input_limits& limits, const char* names) {
-  std::vector<std::string> parts;
-  std::string cur;
-  for (char c : text) {
-    if (c == ',') {
-      parts.push_back(cur);
-      cur.clear();
-    } else {
-      cur += c;
-    }
-  }
-  parts.push_back(cur);
-  if (parts.size() != 3)
-    throw Usage_error(opt + ": \"" + text + "\" is not three numbers " + names + " separated by commas");
-  Vec3q v;
-  for (int i = 0; i < 3; ++i) {
-    std::string why;
-    const auto q = parse_rational(parts[static_cast<std::size_t>(i)], false, limits, why);
-    if (!q) throw Usage_error(opt + ": \"" + parts[static_cast<std::size_t>(i)] + "\" " + why);
-    v[static_cast<std::size_t>(i)] = *q;
-  }
-  return v;
 }
 
 std::string off_text(const Ls_polytope& in, const Ls_polytope& out) {
@@ -179,49 +116,27 @@ std::string obj_text(const Ls_polytope& in, const Ls_polytope& out) {
 std::string gauge_text(const std::optional<Rational>& g) { return g ? human_number(*g) : std::string("infinite"); }
 std::string gauge_json(const std::optional<Rational>& g) { return g ? jq(*g) : std::string("null"); }
 
-// The options, read and checked once (before any scene): --sides or --tolerance (resolved to N here),
-// --twist, --load, the exports and --list.
+// The options, combined once (before any scene): --sides or --tolerance (resolved to N here), --twist,
+// --load, the exports and --list (each already validated where it was parsed).
 Ls_options limit_surface_options(const Options& o) {
-  only_options(o, "limit-surface", {"--sides", "--tolerance", "--twist", "--load", "--off", "--obj", "--svg", "--list"});
-  if (o.verdict_only) throw Usage_error("--verdict-only is for batch closure");
-  if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
-    throw Usage_error("limit-surface writes no certificate file (its certificate is lambda_squared)");
   Ls_options lo;
-  if (o.has("--sides")) {
-    const std::string& v = o.values.at("--sides");
-    if (v.empty() || v.size() > 6 || v.find_first_not_of("0123456789") != std::string::npos)
-      throw Usage_error("--sides: \"" + v + "\" is not a positive integer");
-    lo.sides = std::stoi(v);
-    lo.sides_given = true;
-    if (lo.sides < 4 || lo.sides % 2 != 0 || lo.sides > kMaxSides)
-      throw Usage_error("--sides: " + v + " must be even and between 4 and " + std::to_string(kMaxSides));
-  }
-  if (o.has("--tolerance")) {
-    lo.tolerance_text = o.values.at("--tolerance");
-    if (lo.sides_given) throw Usage_error("--sides and --tolerance exclude each other");
-    std::string why;
-    const auto e = parse_rational(lo.tolerance_text, false, o.limits, why);
-    if (!e) throw Usage_error("--tolerance: \"" + lo.tolerance_text + "\" " + why);
-    if (*e <= 0) throw Usage_error("--tolerance: \"" + lo.tolerance_text + "\" must be > 0");
-    lo.tolerance = *e;
+  if (o.sides) lo.sides = *o.sides;
+  if (o.tolerance) {
+    if (o.sides) throw Usage_error("--sides and --tolerance exclude each other");
+    lo.tolerance = o.tolerance;
     lo.sides = smallest_sides(*lo.tolerance, kMaxSides, &lo.sets_built);
     if (lo.sides == 0)
-      throw Usage_error("--tolerance: " + lo.tolerance_text + " needs more than " + std::to_string(kMaxSides) +
+      throw Usage_error("--tolerance: " + o.tolerance_text + " needs more than " + std::to_string(kMaxSides) +
                         " sides (the largest certified ratio available is reached at --sides " +
                         std::to_string(kMaxSides) + ")");
   }
-  if (o.has("--twist")) {
-    const std::string& t = o.values.at("--twist");
-    lo.twist = parse_triple("--twist", t, o.limits, "vx,vy,w");
-    if ((*lo.twist)[0] == 0 && (*lo.twist)[1] == 0 && (*lo.twist)[2] == 0)
-      throw Usage_error("--twist: \"" + t + "\" is the zero twist (no motion, no load)");
-  }
-  if (o.has("--load")) lo.load = parse_triple("--load", o.values.at("--load"), o.limits, "fx,fy,m");
-  if (o.has("--off")) lo.off_file = o.values.at("--off");
-  if (o.has("--obj")) lo.obj_file = o.values.at("--obj");
-  if (o.has("--svg")) lo.svg_file = o.values.at("--svg");
-  lo.list = o.has("--list");
-  lo.mode = mode_of(o.mode);
+  lo.twist = o.twist;
+  lo.load = o.load;
+  lo.off_file = o.off_file;
+  lo.obj_file = o.obj_file;
+  lo.svg_file = o.svg_file;
+  lo.list = o.list;
+  lo.mode = o.mode;
   if (lo.mode == Mode::float_only && (lo.list || !lo.off_file.empty() || !lo.obj_file.empty() || !lo.svg_file.empty()))
     throw Usage_error("--list, --off, --obj and --svg show the exact polytopes: not with --mode float");
   return lo;

@@ -24,7 +24,4 @@ struct Reference_corpus {
 // rejected or an answer contradicts a golden file.
 Reference_corpus build_reference(const Reference_options& options);
 
-int run_reference(int argc, char** argv);
-int run_compare(int argc, char** argv);
-
 }  // namespace wrenchkit::cli

@@ -23,30 +23,6 @@
 
 namespace wrenchkit::cli {
 
-const char* kReferenceHelp =
-    "usage: wrenchkit reference --out DIR [OPTIONS]\n"
-    "\n"
-    "Writes the reference corpus for testing other grasp and sliding implementations against exact\n"
-    "answers (docs/reference-format.md): the golden textbook scenes of tests/golden, the near-degenerate\n"
-    "families of docs/stability.md at several distances eps, and random scenes (generic decimal text;\n"
-    "degenerate-rich integer grids). Each scene comes with its exact answers (force and form closure,\n"
-    "equilibrium when it has a load, moment labels, limit-surface bounds when it has a support), its\n"
-    "certificates (each accepted by the independent checker before it is written), and how close it is\n"
-    "to a degenerate boundary. Deterministic: the same options give the same bytes on every run.\n"
-    "\n"
-    "DIR gets reference.jsonl (one scene per line), scenes/ID.json (each scene's canonical text),\n"
-    "expected.csv (the simple verdicts) and manifest.json. DIR must not exist, be empty, or hold an\n"
-    "earlier corpus (which is replaced); nothing is written unless the whole corpus was built.\n"
-    "Compare an implementation's answers with: wrenchkit compare DIR answers.jsonl\n"
-    "\n"
-    "options:\n"
-    "  --out DIR       where to write the corpus (required)\n"
-    "  --seed S        seed of the families and random scenes (default 20261122)\n"
-    "  --cases N       scenes per near-degenerate family and eps (default 2; 20 for a big corpus)\n"
-    "  --random N      scenes per random family (default 100; 2000 for a big corpus)\n"
-    "  --sides N       polygon sides of the limit-surface bounds (even, 4..64, default 16)\n"
-    "  --json          print the summary as JSON\n";
-
 namespace {
 
 struct Golden {
@@ -209,7 +185,7 @@ struct Built {
 
 Built build_line(const Entry& e, const Reference_options& ro) {
   Options o;
-  o.mode = "exact";
+  o.mode = Mode::exact;
   const Scene parsed = read_scene(e.text, o.limits, e.id);
   Built b;
   b.canonical = write_scene(parsed);
@@ -292,39 +268,9 @@ Reference_corpus build_reference(const Reference_options& ro) {
   return corpus;
 }
 
-int run_reference(int argc, char** argv) {
-  Reference_options ro;
-  std::string out_dir;
-  std::vector<char*> rest = {argv[0], argv[1]};
-  auto count = [](const std::string& opt, const std::string& v, long lo, long hi) {
-    if (v.empty() || v.size() > 9 || v.find_first_not_of("0123456789") != std::string::npos || std::stol(v) < lo ||
-        std::stol(v) > hi)
-      throw Usage_error(opt + ": \"" + v + "\" is not an integer between " + std::to_string(lo) + " and " +
-                        std::to_string(hi));
-    return static_cast<int>(std::stol(v));
-  };
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw Usage_error(a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--out") out_dir = value();
-    else if (a == "--seed") {
-      const std::string v = value();
-      if (v.empty() || v.size() > 19 || v.find_first_not_of("0123456789") != std::string::npos)
-        throw Usage_error("--seed: \"" + v + "\" is not a non-negative integer");
-      ro.seed = std::stoull(v);
-    } else if (a == "--cases") ro.cases = count(a, value(), 0, 1000);
-    else if (a == "--random") ro.random = count(a, value(), 0, 100000);
-    else if (a == "--sides") {
-      ro.sides = count(a, value(), 4, 64);
-      if (ro.sides % 2) throw Usage_error("--sides: must be even");
-    } else rest.push_back(argv[i]);
-  }
-  const Options o = parse_options(static_cast<int>(rest.size()), rest.data(), 2);
-  if (o.help) return std::cout << kReferenceHelp, kAnswered;
-  if (!o.positional.empty()) throw Usage_error("reference takes no scene file (it writes a corpus to --out DIR)");
+int run_reference(const Options& o) {
+  const Reference_options& ro = o.reference;
+  const std::string& out_dir = o.out_dir;
   if (out_dir.empty()) throw Usage_error("reference needs --out DIR");
   const fs::path dir(out_dir);
   check_out_dir(dir);

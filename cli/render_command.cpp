@@ -160,36 +160,23 @@ std::string title_of(const Scene& s, const std::string& source) { return s.name.
 }  // namespace
 
 int run_render(const Options& o, const std::string& text, const std::string& source) {
-  for (const auto& [k, v] : o.values)
-    if (k != "--what" && k != "--output" && k != "--sides") throw Usage_error(k + " is not an option of render");
-  if (!o.has("--what")) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface");
-  const std::string what = o.values.at("--what");
-  if (what != "labels" && what != "dual" && what != "reuleaux" && what != "limit-surface")
-    throw Usage_error("--what: \"" + what + "\" is not one of labels, dual, reuleaux, limit-surface");
-  if (o.json) throw Usage_error("render writes SVG; --json is not an option of render");
-  if (o.has("--sides") && what != "limit-surface") throw Usage_error("--sides goes with --what limit-surface");
+  if (!o.what) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface");
+  const Picture what = *o.what;
+  if (o.sides && what != Picture::limit_surface) throw Usage_error("--sides goes with --what limit-surface");
   const Scene s = read_scene(text, o.limits, source);
-  if (what == "limit-surface") {
-    int sides = 32;
-    if (o.has("--sides")) {
-      const std::string& v = o.values.at("--sides");
-      if (v.empty() || v.size() > 5 || v.find_first_not_of("0123456789") != std::string::npos)
-        throw Usage_error("--sides: \"" + v + "\" is not a positive integer");
-      sides = std::stoi(v);
-      if (sides < 4 || sides > 4096 || sides % 2) throw Usage_error("--sides: " + v + " must be even and between 4 and 4096");
-    }
-    const std::string svg = render_limit_surface_svg(s, sides);
-    if (o.has("--output")) write_file(o.values.at("--output"), svg);
+  if (what == Picture::limit_surface) {
+    const std::string svg = render_limit_surface_svg(s, o.sides.value_or(32));
+    if (!o.output.empty()) write_file(o.output, svg);
     else std::cout << svg;
     return kAnswered;
   }
-  const bool frictionless = what == "reuleaux";
+  const bool frictionless = what == Picture::reuleaux;
   const std::vector<Generator> gens = generators(s, frictionless ? Reading::frictionless : Reading::friction);
   std::vector<Wrench> ws;
   for (const Generator& g : gens) ws.push_back(g.w);
   const Moment_labels l = moment_labels(ws);
   std::string svg;
-  if (what == "labels" || what == "reuleaux") {
+  if (what == Picture::labels || what == Picture::reuleaux) {
     Bounds b;
     add_scene_bounds(b, s);
     b.add(l.plus);
@@ -261,7 +248,7 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
     }
     svg = c.finish();
   }
-  if (o.has("--output")) write_file(o.values.at("--output"), svg);
+  if (!o.output.empty()) write_file(o.output, svg);
   else std::cout << svg;
   return kAnswered;
 }

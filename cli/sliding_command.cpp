@@ -17,31 +17,6 @@
 
 namespace wrenchkit::cli {
 
-const char* kSlidingHelp =
-    "usage: wrenchkit sliding [OPTIONS] SCENE.json\n"
-    "\n"
-    "Planar sliding of the body on the scene's \"support\" (theory.md §10): the centre of friction\n"
-    "(pressure centroid, exact) and, with --twist, the frictional load for that motion.\n"
-    "  translation (w = 0): the load is the force mu*f0 along v through the friction centroid,\n"
-    "    exactly: load = (mu*f0/|v|) * (vx, vy, c x v); printed as an exact vector when |v| is rational;\n"
-    "  rotation about a point c: the power h = sum mu_i f_i |v_i| lies between the exact polygonal\n"
-    "    bounds h_in <= h <= h_out (theory.md §12.3), the loads of LS_in and LS_out are given exactly,\n"
-    "    and an exact rational box contains the true load. When c is a support point the load is a\n"
-    "    FACET: that point's friction disc, translated; the box then contains the facet's centre.\n"
-    "\n"
-    "Sign convention (theory.md §1.5): the LOAD is the wrench the slider applies to the support,\n"
-    "parallel to the sliding velocity; the friction wrench on the slider is its negative.\n"
-    "\n"
-    "options:\n"
-    "  --twist vx,vy,w   the motion (exact numbers: 1, -1/2, 0.25); not the zero twist\n"
-    "  --sides N         sides of the polygons for the bounds (even, 4..4096, default 64)\n"
-    "  --mode hybrid     (default) the exact answer above, plus the TRUE power and load from the float\n"
-    "                    twin with certified bounds (\"true_power\", \"true_load\")\n"
-    "  --mode exact      exact arithmetic only\n"
-    "  --mode float      the float twin alone: centre of friction, polygonal and true power, true load,\n"
-    "                    each with a certified bound (no exact polygons)\n"
-    "  --json, --max-digits N, --max-exponent N, --max-file-size BYTES  (as for closure)\n";
-
 namespace {
 
 std::string jq(const Rational& q) { return json::quote(to_string(q)); }
@@ -55,7 +30,7 @@ std::string face_json(const Ls_face& f) {
   return s + "]}";
 }
 
-// The options, read and checked once: --twist (not zero) and --sides (default 64).
+// The options (validated where they were parsed): --twist (not zero) and --sides (default 64).
 struct Sliding_options {
   std::optional<Vec3q> twist;
   int sides = 64;
@@ -63,40 +38,10 @@ struct Sliding_options {
 };
 
 Sliding_options sliding_options(const Options& o) {
-  only_options(o, "sliding", {"--twist", "--sides"});
-  if (o.verdict_only) throw Usage_error("--verdict-only is for batch closure");
-  if (!o.certificate_file.empty() || !o.form_certificate_file.empty())
-    throw Usage_error("sliding writes no certificate file");
   Sliding_options so;
-  if (o.has("--sides")) {
-    const std::string& v = o.values.at("--sides");
-    if (v.empty() || v.size() > 6 || v.find_first_not_of("0123456789") != std::string::npos)
-      throw Usage_error("--sides: \"" + v + "\" is not a positive integer");
-    so.sides = std::stoi(v);
-    if (so.sides < 4 || so.sides % 2 != 0 || so.sides > kMaxSides)
-      throw Usage_error("--sides: " + v + " must be even and between 4 and " + std::to_string(kMaxSides));
-  }
-  if (o.has("--twist")) {
-    const std::string& twist_text = o.values.at("--twist");
-    std::vector<std::string> parts(1);
-    for (char c : twist_text) {
-      if (c == ',') parts.emplace_back();
-      else parts.back() += c;
-    }
-    if (parts.size() != 3)
-      throw Usage_error("--twist: \"" + twist_text + "\" is not three numbers vx,vy,w separated by commas");
-    Vec3q t;
-    for (std::size_t i = 0; i < 3; ++i) {
-      std::string why;
-      const auto q = parse_rational(parts[i], false, o.limits, why);
-      if (!q) throw Usage_error("--twist: \"" + parts[i] + "\" " + why);
-      t[i] = *q;
-    }
-    if (t[0] == 0 && t[1] == 0 && t[2] == 0)
-      throw Usage_error("--twist: \"" + twist_text + "\" is the zero twist (no motion, no load)");
-    so.twist = t;
-  }
-  so.mode = mode_of(o.mode);
+  so.sides = o.sides.value_or(64);
+  so.twist = o.twist;
+  so.mode = o.mode;
   return so;
 }
 

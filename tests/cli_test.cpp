@@ -160,6 +160,111 @@ TEST(Cli, UsageErrors) {
   }
 }
 
+// The commands of `wrenchkit --help` (generated from the command table): the first word of each
+// line of its "commands:" section.
+std::vector<std::string> commands_of_help() {
+  const Cli_result h = run("--help");
+  std::istringstream in(h.out);
+  std::vector<std::string> names;
+  bool in_list = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line == "commands:") in_list = true;
+    else if (line.empty()) in_list = false;
+    else if (in_list && line.size() > 2 && line[2] != ' ') names.push_back(line.substr(2, line.find(' ', 2) - 2));
+  }
+  return names;
+}
+
+// batch's commands, from "COMMAND: a, b, …;" in `wrenchkit batch --help`.
+std::vector<std::string> batch_commands_of_help() {
+  const std::string out = run("batch --help").out;
+  const std::size_t at = out.find("COMMAND: ");
+  std::vector<std::string> names;
+  if (at == std::string::npos) return names;
+  std::istringstream in(out.substr(at + 9, out.find(';', at) - at - 9));
+  for (std::string name; std::getline(in, name, ',');) names.push_back(name.substr(name.find_first_not_of(' ')));
+  return names;
+}
+
+TEST(Cli, EveryCommandOfTheTableHasHelpAndRefusesAnUnknownMode) {
+  const std::vector<std::string> commands = commands_of_help();
+  ASSERT_GE(commands.size(), 14u);
+  for (const char* c : {"closure", "check", "render", "batch", "reference", "compare", "demo", "limit-surface"})
+    EXPECT_NE(std::find(commands.begin(), commands.end(), c), commands.end()) << c;
+  const std::vector<std::string> per_scene = batch_commands_of_help();
+  EXPECT_EQ(per_scene.size(), 8u);
+  std::vector<std::string> lines;  // every command line, batch with each of its commands
+  for (const std::string& c : commands) {
+    const Cli_result h = run(c + " --help");
+    EXPECT_EQ(h.code, 0) << c;
+    EXPECT_EQ(h.out.rfind("usage: wrenchkit " + c + " ", 0), 0u) << c << ": " << h.out;
+    EXPECT_NE(h.out.find("\noptions:\n  -h [ --help ]"), std::string::npos) << c << ": " << h.out;
+    if (c != "batch") lines.push_back(c);
+  }
+  for (const std::string& c : per_scene) {
+    const Cli_result h = run("batch " + c + " --help");
+    EXPECT_EQ(h.code, 0) << c;
+    EXPECT_EQ(h.out.rfind("usage: wrenchkit batch " + c + " ", 0), 0u) << c << ": " << h.out;
+    EXPECT_NE(h.out.find("\n  --jobs N "), std::string::npos) << c << ": " << h.out;
+    lines.push_back("batch " + c);
+  }
+  for (const std::string& c : lines) {
+    // The scene argument is a real scene, so that the mode is the only thing wrong.
+    const bool takes_mode = run(c + " --help").out.find("\n  --mode ") != std::string::npos;
+    const Cli_result r = run(c + " --mode exacto '" + golden("ladder_mu_0") + "'", "");
+    EXPECT_EQ(r.code, 2) << c;
+    EXPECT_EQ(r.out, "") << c;
+    const std::string refused = takes_mode ? "wrenchkit: usage error: --mode: \"exacto\" is not one of exact, hybrid, float\n"
+                                           : "wrenchkit: usage error: --mode is not an option of " + c + "\n";
+    EXPECT_EQ(r.err, refused) << c;
+    if (takes_mode) {  // and a good mode is read by the same parser
+      const Cli_result ok = run(c + " --mode exact --help");
+      EXPECT_EQ(ok.code, 0) << c << ": " << ok.err;
+    }
+  }
+}
+
+TEST(Cli, OptionsAreValidatedWhereTheyAreParsed) {
+  const std::string s = "'" + golden("ladder_mu_0") + "'";
+  const struct {
+    std::string args, message;
+  } cases[] = {
+      {"closure --center 1,1 " + s, "--center is not an option of closure"},
+      {"closure -o x.svg " + s, "-o is not an option of closure"},
+      {"closure --no-such-option " + s, "unknown option --no-such-option"},
+      {"closure --mode exact --mode float " + s, "--mode given twice"},
+      {"closure --json=yes " + s, "--json takes no value"},
+      {"closure --mode", "--mode needs a value"},
+      {"closure --max-contacts -3 " + s, "--max-contacts: \"-3\" is not a non-negative integer"},
+      {"labels --resultant 1,2 " + s, "--resultant: \"1,2\" is not three numbers fx,fy,m separated by commas"},
+      // Exact numbers are read within the limits, whichever comes first on the command line.
+      {"labels --resultant 1e30,0,0 --max-exponent 5 " + s, "--resultant: \"1e30\""},
+      {"reuleaux --center 1 " + s, "--center: \"1\" is not two numbers x,y separated by commas"},
+      {"reuleaux --direction 0,0 " + s, "--direction: the zero vector is no direction"},
+      {"reuleaux --sense up --center 0,0 " + s, "--sense: \"up\" is not one of ccw, cw"},
+      {"reuleaux --sense cw " + s, "--sense goes with --center"},
+      {"reuleaux --center 0,0 --twist 0,0,1 " + s, "give at most one of --center, --direction, --twist"},
+      {"render --what pictures " + s, "--what: \"pictures\" is not one of labels, dual, reuleaux, limit-surface"},
+      {"render --what labels --sides 8 " + s, "--sides goes with --what limit-surface"},
+      {"analyze --tolerance 0 " + s, "--tolerance: \"0\" must be > 0"},
+      {"batch closure --jobs 2000", "--jobs: must be between 1 and 1024"},
+      {"compare --format xml a b", "--format: \"xml\" is not one of jsonl, csv"},
+      {"reference --out x --sides 66", "--sides: 66 must be even and between 4 and 64"},
+      {"demo " + s, "demo takes no scene file"},
+  };
+  for (const auto& c : cases) {
+    const Cli_result r = run(c.args);
+    EXPECT_EQ(r.code, 2) << c.args;
+    EXPECT_EQ(r.out, "") << c.args;
+    EXPECT_EQ(r.err.rfind("wrenchkit: usage error: ", 0), 0u) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+  }
+  // A value may start with '-' (negative numbers), and --opt=value is the same as --opt value.
+  const Cli_result a = run("labels --json --resultant -1,0,1/2 " + s), b = run("labels --json --resultant=-1,0,1/2 " + s);
+  EXPECT_EQ(a.code, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);
+}
+
 TEST(Cli, ModesAgreeAndFloatSaysWhenItCannotDecide) {
   for (const char* mode : {"exact", "hybrid", "float"}) {
     const Cli_result r = run(std::string("closure --json --mode ") + mode + " '" + golden("triangle_example3_mu_1_10") + "'");
