@@ -94,6 +94,59 @@ const char* kConvention =
     "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
     "the friction wrench on the slider is its negative";
 
+// An unknown distribution (docs/theory-sliding.md §1–§2): the admissible set and the power over it.
+std::string distribution_json(const std::vector<Rational>& f) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < f.size(); ++i) s += (i ? ", " : "") + jq(f[i]);
+  return s + "]";
+}
+
+std::string sliding_unknown_json(const Sliding_options& so, const Support_item& r) {
+  const Admissible& a = *r.admissible;
+  std::ostringstream s;
+  s << "{\"command\": \"sliding\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"" << mode_name(r.mode)
+    << "\", \"convention\": " << json::quote(kConvention) << ", \"distribution\": \"unknown\", \"unknown_points\": [";
+  for (std::size_t k = 0; k < a.unknown.size(); ++k) s << (k ? ", " : "") << a.unknown[k];
+  s << "], \"weight\": " << jq(*r.scene.support->weight) << ", \"pressure_center\": [" << jq(r.pressure_center.x)
+    << ", " << jq(r.pressure_center.y) << "], \"extreme_distributions\": ";
+  if (a.unknown.size() > kMaxEnumeratedUnknowns) {
+    s << "null";
+  } else {
+    s << "[";
+    for (std::size_t v = 0; v < r.vertices.size(); ++v) s << (v ? ", " : "") << distribution_json(r.vertices[v]);
+    s << "]";
+  }
+  if (so.twist)
+    s << ", \"twist\": " << jv(*so.twist) << ", \"power\": {\"lower\": " << jq(r.power->lower) << ", \"upper\": "
+      << jq(r.power->upper) << ", \"min_distribution\": " << distribution_json(r.power->min_distribution)
+      << ", \"max_distribution\": " << distribution_json(r.power->max_distribution) << "}";
+  s << "}";
+  return s.str();
+}
+
+std::string sliding_unknown_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
+  const Admissible& a = *r.admissible;
+  const auto dist = [](const std::vector<Rational>& f) {
+    std::string s = "(";
+    for (std::size_t i = 0; i < f.size(); ++i) s += (i ? ", " : "") + human_number(f[i]);
+    return s + ")";
+  };
+  std::ostringstream s;
+  s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
+    << "support: " << r.scene.support->points.size() << " points, the forces of " << a.unknown.size()
+    << " not given; weight " << human_number(*r.scene.support->weight) << ", centre of pressure ("
+    << human_number(r.pressure_center.x) << ", " << human_number(r.pressure_center.y) << ")\n";
+  if (a.unknown.size() <= kMaxEnumeratedUnknowns)
+    s << "extreme admissible distributions: " << r.vertices.size() << "\n";
+  if (so.twist)
+    s << "twist " << thv(*so.twist) << ": the frictional power over every admissible distribution lies in ["
+      << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n"
+      << "  least at f = " << dist(r.power->min_distribution) << ", most at f = " << dist(r.power->max_distribution)
+      << "\n";
+  s << "convention: " << kConvention << "\n";
+  return s.str();
+}
+
 std::string sliding_json(const Sliding_options& so, const Support_item& r) {
   const Sliding_answer& a = r.sliding;
   const char* kinds[] = {"facet", "vertex", "smooth"};
@@ -161,6 +214,7 @@ std::string sliding_human(const Sliding_options& so, const Support_item& r, cons
 Scene_answer prepare_sliding_json(const Options& o) {
   return [o, so = sliding_options(o)](const std::string& text, const std::string& source) {
     const Support_item r = compute(so, o, text, source);
+    if (r.admissible) return sliding_unknown_json(so, r);
     return so.mode == Mode::float_only ? sliding_float_json(so, r) : sliding_json(so, r);
   };
 }
@@ -168,7 +222,9 @@ Scene_answer prepare_sliding_json(const Options& o) {
 int run_sliding(const Options& o, const std::string& text, const std::string& source) {
   const Sliding_options so = sliding_options(o);
   const Support_item r = compute(so, o, text, source);
-  if (so.mode == Mode::float_only)
+  if (r.admissible)
+    std::cout << (o.json ? sliding_unknown_json(so, r) + "\n" : sliding_unknown_human(so, r, source));
+  else if (so.mode == Mode::float_only)
     std::cout << (o.json ? sliding_float_json(so, r) + "\n" : sliding_float_human(so, r, source));
   else
     std::cout << (o.json ? sliding_json(so, r) + "\n" : sliding_human(so, r, source));

@@ -85,9 +85,11 @@ inline std::string scene_difference(const wrenchkit::Scene& a, const wrenchkit::
   if (!same_optional(a.load, b.load, same_load)) return "load";
   const auto same_q = [](const Rational& x, const Rational& y) { return x == y; };
   const auto same_support = [&](const Support& x, const Support& y) {
-    if (!same_optional(x.mu, y.mu, same_q) || x.points.size() != y.points.size()) return false;
+    if (!same_optional(x.mu, y.mu, same_q) || !same_optional(x.weight, y.weight, same_q) ||
+        !same_optional(x.pressure_center, y.pressure_center, same_vec) || x.points.size() != y.points.size())
+      return false;
     for (std::size_t i = 0; i < x.points.size(); ++i)
-      if (!same_vec(x.points[i].at, y.points[i].at) || x.points[i].force != y.points[i].force ||
+      if (!same_vec(x.points[i].at, y.points[i].at) || !same_optional(x.points[i].force, y.points[i].force, same_q) ||
           !same_optional(x.points[i].mu, y.points[i].mu, same_q))
         return false;
     return true;

@@ -33,7 +33,7 @@ std::string describe(const Support& s) {
   o << "{\"wrenchkit\": 1, \"support\": {\"mu\": \"" << to_string(*s.mu) << "\", \"points\": [";
   for (std::size_t i = 0; i < s.points.size(); ++i)
     o << (i ? ", " : "") << "{\"at\": [\"" << to_string(s.points[i].at.x) << "\", \"" << to_string(s.points[i].at.y)
-      << "\"], \"force\": \"" << to_string(s.points[i].force) << "\"}";
+      << "\"], \"force\": \"" << to_string(*s.points[i].force) << "\"}";
   o << "]}}";
   return o.str();
 }

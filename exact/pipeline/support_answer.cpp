@@ -1,6 +1,7 @@
 #include "exact/pipeline/support_answer.h"
 
 #include "exact/io/streaming_scene_reader.h"
+#include "exact/io/support_check.h"
 #include "exact/io/to_float.h"
 
 namespace wrenchkit {
@@ -69,12 +70,29 @@ void answer_sliding(const Support_query& q, Support_item& r) {
   r.sliding = compute_sliding(r.model.emplace(merge_support(*r.scene.support), make_directions(q.sides)), q.twist);
 }
 
+// Some force not given: the admissible set, its vertices, and the power range of the twist over it.
+void answer_unknown(std::string_view source, const Support_query& q, Support_item& r) {
+  const Support& s = *r.scene.support;
+  r.admissible = admissible_set(r.scene);
+  r.pressure_center = *pressure_center_of(r.scene);
+  if (q.question == Support_question::limit_surface)
+    throw Input_error(std::string(source) + ": support: the forces of " + std::to_string(r.admissible->unknown.size()) +
+                      " point(s) are not given: stick or slide over every admissible distribution is not answered yet "
+                      "(sliding --twist gives the power over all of them)");
+  if (r.mode == Mode::float_only)
+    throw Undecided_error("the float twin has no LP over the admissible distributions (the forces of " +
+                          std::to_string(r.admissible->unknown.size()) + " support point(s) are not given)");
+  if (r.admissible->unknown.size() <= kMaxEnumeratedUnknowns) r.vertices = vertices(s, *r.admissible);
+  if (q.twist) r.power = power_range(s, *r.admissible, *q.twist);
+}
+
 void answer(std::string_view source, const Request& request, const Support_query& q, Support_item& r) {
   r.mode = request.mode;
   const bool ls = q.question == Support_question::limit_surface;
   if (!r.scene.support)
     throw Input_error(std::string(source) + ": support: the scene has no \"support\" (" +
                       (ls ? "limit-surface" : "sliding") + " needs one)");
+  if (!r.scene.support->known()) return answer_unknown(source, q, r);
   if (ls) answer_limit_surface(q, r);
   else answer_sliding(q, r);
 }

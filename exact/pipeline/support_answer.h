@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "exact/pipeline/pipeline.h"
+#include "exact/sliding/distribution.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
 #include "float/limit_surface_twin.h"
@@ -54,10 +55,19 @@ struct Support_item {
   fl::Point2 twin_center_of_friction;
   fl::Bounded twin_mu_f0;
   std::optional<fl::Bounded> twin_power_inner, twin_power_outer;  // with a twist
+  // An unknown distribution (a point's force not given; docs/theory-sliding.md §1–§2): the admissible set,
+  // its extreme distributions and, with a twist, the range of the power over it (exact, every mode but
+  // float, which has no twin of the LP over F and answers undecided).
+  std::optional<Admissible> admissible;
+  std::vector<std::vector<Rational>> vertices;
+  std::optional<Power_range> power;
+  Vec2 pressure_center;
 };
 
 // Reads `text` (eagerly) and answers; never throws. A scene without a support is bad input; so is a
 // limit surface whose candidate normals exceed kMaxCandidates (the polytopes are not built then).
+// An unknown distribution: `sliding` answers the power range over F and the extreme distributions;
+// `limit-surface` (stick/slide over F, with certificates) is not answered yet and says so (bad input).
 Support_item answer_support(std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query);
 // The same for a scene already read.

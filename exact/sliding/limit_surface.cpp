@@ -126,24 +126,29 @@ Motion classify_load(const std::optional<Rational>& gi, const std::optional<Rati
 // ---------------------------------------------------------------------------------------------
 // Support
 
-Ls_support merge_support(const Support& s) {
+Ls_support merge_support(const Support& s, const std::vector<Rational>* distribution) {
+  if (distribution && distribution->size() != s.points.size())
+    throw std::invalid_argument("merge_support: a distribution of another size");
   Ls_support r;
   std::map<std::pair<Rational, Rational>, std::size_t> where;
-  for (const Support_point& p : s.points) {
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Support_point& p = s.points[i];
+    if (!distribution && !p.force) throw std::invalid_argument("merge_support: a force is unknown; give a distribution");
+    const Rational& force = distribution ? (*distribution)[i] : *p.force;
     const Rational mu = p.mu ? *p.mu : (s.mu ? *s.mu : Rational(0));
-    r.total_force += p.force;
-    r.weighted_force_sum.x += p.force * p.at.x;
-    r.weighted_force_sum.y += p.force * p.at.y;
-    const Rational rho = mu * p.force;
+    r.total_force += force;
+    r.weighted_force_sum.x += force * p.at.x;
+    r.weighted_force_sum.y += force * p.at.y;
+    const Rational rho = mu * force;
     if (rho == 0) continue;
     const auto key = std::make_pair(p.at.x, p.at.y);
     const auto it = where.find(key);
     if (it != where.end()) {
       r.points[it->second].rho += rho;
-      r.points[it->second].force += p.force;
+      r.points[it->second].force += force;
     } else {
       where.emplace(key, r.points.size());
-      r.points.push_back({p.at, rho, p.force});
+      r.points.push_back({p.at, rho, force});
     }
   }
   if (r.points.size() >= 2) {

@@ -52,7 +52,9 @@ struct Ls_support {
   Vec2 weighted_force_sum; // Σ f_{n,i} r_i (all input points)
   bool collinear = false;  // ≥ 2 points, all on one line
 };
-Ls_support merge_support(const Support& s);
+// `distribution`: the normal forces to use, one per support point (a distribution of docs/theory-sliding.md
+// §1); without it every force must be given (std::invalid_argument otherwise).
+Ls_support merge_support(const Support& s, const std::vector<Rational>* distribution = nullptr);
 
 // [LS-1]
 struct Directions {
