@@ -410,8 +410,8 @@ std::string limit_surface_human(const Ls_options& lo, const Ls_result& r, const 
   return s.str();
 }
 
-// --mode float: the twin alone (no exact polytopes). Its direction set has double parameters t_j, so
-// its λ² is certified for that set (close to, not equal to, the exact set's).
+// --mode float: the twin alone (no exact polytopes). Its direction set is the exact engine's (the same
+// integer parameters, core/limit_surface_directions.h), so its λ² and polygonal powers bracket the exact ones.
 std::string limit_surface_float_json(const Ls_options& lo, const Ls_result& r) {
   const fl::Directions_twin d = fl::make_directions(lo.sides);
   const fl::Point2 cof = fl::center_of_friction(r.twin);

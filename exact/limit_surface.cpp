@@ -162,50 +162,39 @@ Ls_support merge_support(const Support& s) {
 // [LS-1] Directions
 
 Directions make_directions(int n) {
-  if (n < 4 || n % 2 != 0 || n > kMaxSides)
-    throw std::invalid_argument("make_directions: n must be even, 4 <= n <= " + std::to_string(kMaxSides));
-  const int half = n / 2;
-  const double pi = 3.14159265358979323846;
-  for (long den = 32L * n;; den *= 2) {
-    Directions d;
-    d.n = n;
-    d.t.assign(half, Rational(0));
-    std::vector<Vec2> up(half);
-    for (int j = 0; j < half; ++j) {
-      const int mirror = half - 1 - j;
-      if (mirror < j) break;
-      if (mirror == j) {  // φ = π/2 exactly: t = 1
-        d.t[j] = 1;
-        up[j] = {Rational(0), Rational(1)};
-        break;
-      }
-      const double phi = 2 * pi * (j + 0.5) / n;  // in (0, π/2): t in (0, 1)
-      const double tj = std::round(std::tan(phi / 2) * static_cast<double>(den));
-      Rational t(static_cast<long>(std::max(1.0, tj)), den);
-      t.canonicalize();
-      d.t[j] = t;
-      up[j] = unit_of(t);
-      up[mirror] = {-up[j].x, up[j].y};  // reflection in the y-axis: u(1/t)
-      d.t[mirror] = 1 / t;
-    }
-    d.u.resize(n);
-    for (int j = 0; j < half; ++j) {
-      d.u[j] = up[j];
-      d.u[j + half] = {-up[j].x, -up[j].y};
-    }
-    bool ok = true;
-    Rational cmin = 2;
-    for (int j = 0; j < n && ok; ++j) {
-      const Vec2& a = d.u[j];
-      const Vec2& b = d.u[(j + 1) % n];
-      ok = a.x * b.y - a.y * b.x > 0;
-      const Rational c = a.x * b.x + a.y * b.y;
-      if (c < cmin) cmin = c;
-    }
-    if (!ok) continue;  // rounding merged two directions: a finer denominator
-    d.lambda_sq = (1 + cmin) / 2;
-    return d;
+  const Direction_parameters p = direction_parameters(n);  // the rule shared with the twin
+  const int half = n / 2, q = static_cast<int>(p.a.size());
+  Directions d;
+  d.n = n;
+  d.t.assign(half, Rational(0));
+  std::vector<Vec2> up(half);
+  for (int j = 0; j < q; ++j) {
+    Rational t(static_cast<long>(p.a[j]), static_cast<long>(p.den));
+    t.canonicalize();
+    d.t[j] = t;
+    up[j] = unit_of(t);
+    up[half - 1 - j] = {-up[j].x, up[j].y};  // reflection in the y-axis: u(1/t)
+    d.t[half - 1 - j] = 1 / t;
   }
+  if (p.middle) {  // φ = π/2 exactly: t = 1
+    d.t[q] = 1;
+    up[q] = {Rational(0), Rational(1)};
+  }
+  d.u.resize(n);
+  for (int j = 0; j < half; ++j) {
+    d.u[j] = up[j];
+    d.u[j + half] = {-up[j].x, -up[j].y};
+  }
+  Rational cmin = 2;
+  for (int j = 0; j < n; ++j) {
+    const Vec2& a = d.u[j];
+    const Vec2& b = d.u[(j + 1) % n];
+    if (a.x * b.y - a.y * b.x <= 0) throw std::logic_error("make_directions: directions not counter-clockwise");
+    const Rational c = a.x * b.x + a.y * b.y;
+    if (c < cmin) cmin = c;
+  }
+  d.lambda_sq = (1 + cmin) / 2;
+  return d;
 }
 
 int smallest_sides(const Rational& eps, int max_sides, int* built) {
