@@ -151,8 +151,6 @@ class Polygonal_ls {
   Side_tab in_, out_;
 };
 
-// Primitive integer multiple (positive factor) of a rational vector; zero stays zero.
-Vec3z primitive(const Vec3q& v);
 Vec3q to_rational(const Vec3z& v);
 
 // [LS-3] The motion for a quasistatic load p: sticks iff p is in the interior of LS (relative

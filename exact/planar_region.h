@@ -71,7 +71,7 @@ Region slice_front(const std::vector<Vec3>& gens, bool cyclic_pointed);
 Cone2 slice_infinity(const std::vector<Vec3>& gens, bool cyclic_pointed);
 std::vector<Vec3> negated(std::vector<Vec3> gens);
 
-// The primitive integer vector positively parallel to a nonzero rational 2-vector.
+// primitive(x, y) of exact/rational.h ((x, y) ≠ 0, else std::logic_error), as a rational Vec2.
 Vec2 primitive2(const Rational& x, const Rational& y);
 
 // JSON (interface.md §3): a REGION {"empty", "shape", "vertices", "directions"}; the labeled points
