@@ -14,6 +14,8 @@
 //
 // Everything is exact rational arithmetic; no square root, no division by a quantity that may be
 // zero, no perturbation: degenerate regions (a point, a segment, a line, …) are ordinary answers.
+// The float twin slices only pointed cones by a walk of their cycle (float/labels_twin.h); why there are
+// two slicings and which test ties them: proofs/notes/LB-5-slicing-twins.md.
 #pragma once
 
 #include <string>

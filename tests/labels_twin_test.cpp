@@ -5,6 +5,8 @@
 // cone membership likewise. Golden scenes, degenerate-rich grid scenes, generic decimal scenes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <sstream>
@@ -95,6 +97,67 @@ TEST(LabelsTwin, GoldenScenes) {
   // The goldens are thresholds ± 10^-40, 40-digit rotations, 10^±18 scales and exact degeneracies:
   // the twin must still decide most rank-3 ones (the rest go to exact arithmetic in hybrid).
   EXPECT_GT(t.decided * 2, t.rank3);
+}
+
+// The comparison above can fail [LB-5]: on every decided golden label set, a twin answer with one corner
+// moved outside its bound, the corners reversed, a direction negated, the shape renamed, a corner dropped,
+// the arc at infinity reversed or a false "rank < 3" is reported as a disagreement.
+TEST(LabelsTwin, EveryWrongSliceIsCaught) {
+  int sets = 0, mutants = 0;
+  const auto caught = [&](fl::Labels_twin f, const Moment_labels& e, const std::string& what, auto change) {
+    change(f);
+    ++mutants;
+    EXPECT_NE(labels_disagreement(f, e), "") << what;
+  };
+  const auto moved = [](fl::Bounded& b) { b.v += 2 * b.e + 1e-6 * (1 + std::fabs(b.v)); };
+  for (const std::string& file : test::scene_files("tests/golden")) {
+    const Scene s = read_scene(test::read_text(file), Input_limits{});
+    for (Reading r : {Reading::friction, Reading::frictionless}) {
+      const Moment_labels e = moment_labels(s, r);
+      const fl::Labels_twin f = fl::moment_labels(twin_generators(s, r));
+      if (!f.decided()) continue;
+      ASSERT_EQ(labels_disagreement(f, e), "") << file;
+      ++sets;
+      caught(f, e, file + ": rank < 3", [](fl::Labels_twin& m) { m.status = fl::Twin_status::rank_deficient; });
+      for (fl::Region2 fl::Labels_twin::*reg : {&fl::Labels_twin::plus, &fl::Labels_twin::minus}) {
+        const fl::Region2& g = f.*reg;
+        const std::string tag = file + (reg == &fl::Labels_twin::plus ? ": R+ " : ": R- ");
+        if (g.shape == fl::Region2::Shape::empty || g.shape == fl::Region2::Shape::plane) continue;
+        caught(f, e, tag + "shape", [&](fl::Labels_twin& m) {
+          (m.*reg).shape = g.shape == fl::Region2::Shape::polygon ? fl::Region2::Shape::segment : fl::Region2::Shape::polygon;
+        });
+        for (std::size_t i = 0; i < g.vertices.size(); ++i) {
+          caught(f, e, tag + "corner x " + std::to_string(i), [&](fl::Labels_twin& m) { moved((m.*reg).vertices[i].x); });
+          caught(f, e, tag + "corner y " + std::to_string(i), [&](fl::Labels_twin& m) { moved((m.*reg).vertices[i].y); });
+        }
+        caught(f, e, tag + "a corner dropped", [&](fl::Labels_twin& m) { (m.*reg).vertices.pop_back(); });
+        if (g.vertices.size() >= 3)
+          caught(f, e, tag + "corners reversed", [&](fl::Labels_twin& m) {
+            std::reverse((m.*reg).vertices.begin(), (m.*reg).vertices.end());
+          });
+        for (std::size_t i = 0; i < g.directions.size(); ++i)
+          caught(f, e, tag + "direction negated", [&](fl::Labels_twin& m) {
+            fl::Point2& d = (m.*reg).directions[i];
+            d = {-d.x, -d.y};
+          });
+      }
+      if (f.infinity.shape == fl::Arc2::Shape::wedge)
+        caught(f, e, file + ": arc reversed", [](fl::Labels_twin& m) { std::swap(m.infinity.extreme[0], m.infinity.extreme[1]); });
+      // The force dual's sheets go through the same slicing: a moved corner there is caught too.
+      std::vector<Wrench> w;
+      for (const Generator& x : generators(s, r)) w.push_back(x.w);
+      const std::vector<fl::Bounded3> g = twin_generators(s, r);
+      fl::Dual_twin d = fl::force_dual(g, compute_dual_cone(fl::Float_kernel(g)));
+      if (d.decided() && !d.plus_sheet.vertices.empty()) {
+        moved(d.plus_sheet.vertices[0].x);
+        ++mutants;
+        EXPECT_NE(dual_disagreement(d, force_dual(e, w)), "") << file << ": dual corner";
+      }
+    }
+  }
+  std::printf("[ stats    ] %d decided golden label sets, %d wrong variants, every one caught\n", sets, mutants);
+  EXPECT_GT(sets, 20);
+  EXPECT_GT(mutants, 150);
 }
 
 TEST(LabelsTwin, DegenerateRichGridScenes) {
