@@ -161,28 +161,20 @@ TEST(LabelsTwin, EveryWrongSliceIsCaught) {
 }
 
 TEST(LabelsTwin, DegenerateRichGridScenes) {
-  const std::uint64_t seed = test::seed(20261122);
-  std::mt19937_64 rng(seed);
   Tally t;
-  for (int i = 0; i < 1500; ++i) {
-    compare_labels(test::scene_json(test::random_contacts(rng, 7)), t,
-                   "labels_twin_grid_" + std::to_string(seed) + "_" + std::to_string(i));
-    if (HasFatalFailure()) return;
-  }
+  test::for_random_scenes(20261122, 1500, "labels_twin_grid", [](std::mt19937_64& rng, int) { return test::random_contacts(rng, 7); },
+                          [&](const std::string& text, const std::string& tag) { compare_labels(text, t, tag); });
+  if (HasFatalFailure()) return;
   std::printf("[ stats    ] grid: the twin decided %d of %d label sets alone (%d duals)\n", t.decided, t.cases,
               t.dual_decided);
   EXPECT_GT(t.decided, t.cases / 3);
 }
 
 TEST(LabelsTwin, DecidesTypicalScenesByItself) {
-  const std::uint64_t seed = test::seed(6);
-  std::mt19937_64 rng(seed);
   Tally t;
-  for (int i = 0; i < 600; ++i) {
-    compare_labels(test::scene_json(test::decimal_contacts(rng, 1 + i % 8)), t,
-                   "labels_twin_decimal_" + std::to_string(seed) + "_" + std::to_string(i));
-    if (HasFatalFailure()) return;
-  }
+  test::for_random_scenes(6, 600, "labels_twin_decimal", [](std::mt19937_64& rng, int i) { return test::decimal_contacts(rng, 1 + i % 8); },
+                          [&](const std::string& text, const std::string& tag) { compare_labels(text, t, tag); });
+  if (HasFatalFailure()) return;
   std::printf("[ stats    ] decimal: the twin decided %d of %d label sets alone (%d duals)\n", t.decided, t.cases,
               t.dual_decided);
   // One frictionless contact has rank 1 and two have rank ≤ 2: those are the twin's "rank < 3".
@@ -218,22 +210,17 @@ TEST(LabelsHybrid, SameAnswerAsExactWithFewExactPredicates) {
 // (raw signs) guesses and is sometimes wrong about whether anything is labeled.
 TEST(LabelsTwin, NearThresholdNeverWrongAndNaiveIs) {
   int naive_wrong = 0, twin_undecided = 0;
-  for (int k = 1; k <= 40; ++k) {
-    for (int side : {-1, 1}) {
-      const std::string y2 = side < 0 ? "0." + std::string(k - 1, '9') + "9" : "1." + std::string(k - 1, '0') + "1";
-      const std::string text = test::scene_json({{"0", "0.5", "1", "0", "0.5"}, {"1", y2, "-1", "0", "0.5"}});
-      const Scene s = read_scene(text, Input_limits{});
-      const bool closed = side < 0;
-      ASSERT_EQ(moment_labels(s, Reading::friction).nothing_labeled(), closed) << y2;
-      const std::vector<fl::Bounded3> g = twin_generators(s, Reading::friction);
-      const fl::Labels_twin twin = fl::moment_labels(g);
-      if (twin.decided()) { EXPECT_EQ(twin.nothing_labeled(), closed) << y2; }
-      else ++twin_undecided;
-      // Naive: the text parsed to the nearest double, raw signs.
-      std::vector<fl::Point_contact> pc = {{0, 0.5, 1, 0, 0.5}, {1, std::strtod(y2.c_str(), nullptr), -1, 0, 0.5}};
-      const fl::Labels_twin naive = fl::moment_labels_naive(fl::generators(fl::bounded_contacts(pc), Reading::friction));
-      naive_wrong += !naive.decided() || naive.nothing_labeled() != closed;
-    }
+  for (const test::Near_edge_grasp& e : test::near_edge_grasps()) {
+    const Scene s = read_scene(e.text, Input_limits{});
+    ASSERT_EQ(moment_labels(s, Reading::friction).nothing_labeled(), e.closed) << e.y2;
+    const fl::Labels_twin twin = fl::moment_labels(twin_generators(s, Reading::friction));
+    if (twin.decided()) { EXPECT_EQ(twin.nothing_labeled(), e.closed) << e.y2; }
+    else ++twin_undecided;
+    // Naive: the text parsed to the nearest double, raw signs.
+    std::vector<fl::Point_contact> pc;
+    for (const auto& c : e.contacts) pc.push_back({c[0], c[1], c[2], c[3], c[4]});
+    const fl::Labels_twin naive = fl::moment_labels_naive(fl::generators(fl::bounded_contacts(pc), Reading::friction));
+    naive_wrong += !naive.decided() || naive.nothing_labeled() != e.closed;
   }
   std::printf("[ stats    ] 80 near-edge grasps: labels twin undecided %d (never wrong), naive wrong %d\n", twin_undecided,
               naive_wrong);
