@@ -86,6 +86,15 @@ void compare_labels(const std::string& text, Tally& t, const std::string& tag) {
   }
 }
 
+// compare_labels on n random scenes (test::for_random_scenes).
+template <class Make>
+Tally compare_random(std::uint64_t seed, int n, const std::string& prefix, Make make) {
+  Tally t;
+  test::for_random_scenes(seed, n, prefix, make,
+                          [&](const std::string& text, const std::string& tag) { compare_labels(text, t, tag); });
+  return t;
+}
+
 TEST(LabelsTwin, GoldenScenes) {
   Tally t;
   for (const std::string& f : test::scene_files("tests/golden")) {
@@ -161,9 +170,9 @@ TEST(LabelsTwin, EveryWrongSliceIsCaught) {
 }
 
 TEST(LabelsTwin, DegenerateRichGridScenes) {
-  Tally t;
-  test::for_random_scenes(20261122, 1500, "labels_twin_grid", [](std::mt19937_64& rng, int) { return test::random_contacts(rng, 7); },
-                          [&](const std::string& text, const std::string& tag) { compare_labels(text, t, tag); });
+  const Tally t = compare_random(20261122, 1500, "labels_twin_grid", [](std::mt19937_64& rng, int) {
+    return test::random_contacts(rng, 7);
+  });
   if (HasFatalFailure()) return;
   std::printf("[ stats    ] grid: the twin decided %d of %d label sets alone (%d duals)\n", t.decided, t.cases,
               t.dual_decided);
@@ -171,9 +180,9 @@ TEST(LabelsTwin, DegenerateRichGridScenes) {
 }
 
 TEST(LabelsTwin, DecidesTypicalScenesByItself) {
-  Tally t;
-  test::for_random_scenes(6, 600, "labels_twin_decimal", [](std::mt19937_64& rng, int i) { return test::decimal_contacts(rng, 1 + i % 8); },
-                          [&](const std::string& text, const std::string& tag) { compare_labels(text, t, tag); });
+  const Tally t = compare_random(6, 600, "labels_twin_decimal", [](std::mt19937_64& rng, int i) {
+    return test::decimal_contacts(rng, 1 + i % 8);
+  });
   if (HasFatalFailure()) return;
   std::printf("[ stats    ] decimal: the twin decided %d of %d label sets alone (%d duals)\n", t.decided, t.cases,
               t.dual_decided);
