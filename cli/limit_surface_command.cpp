@@ -274,8 +274,8 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
   return s.str();
 }
 
-// --mode float: the twin alone (no exact polytopes). Its direction set has double parameters t_j, so
-// its λ² is certified for that set (close to, not equal to, the exact set's).
+// --mode float: the twin alone (no exact polytopes). Its direction set is the exact engine's (the same
+// integer parameters, core/limit_surface_directions.h), so its λ² and polygonal powers bracket the exact ones.
 std::string limit_surface_float_json(const Ls_options& lo, const Support_item& r) {
   const fl::Directions_twin& d = *r.twin_directions;
   const fl::Point2& cof = r.twin_center_of_friction;
