@@ -99,6 +99,12 @@ int report(const Ended& e);
 // The pipeline request of the command line's options: --mode, --verdict-only, the --max-* limits.
 Request request_of(const Options& o);
 
+// Writes a single command's answer: its JSON line with --json, else its text for people (each made only
+// when needed); returns kAnswered.
+int write_answer(const Options& o, const std::function<std::string()>& json, const std::function<std::string()>& text);
+// "scene: NAME" (or the source when the scene has no name), the first line of every text answer.
+std::string scene_line(const std::string& name, const std::string& source);
+
 // Reads a whole file (or standard input for "-"), refusing more than `limit` bytes.
 std::string read_input(const std::string& path, std::size_t limit);
 // Writes FILE atomically: a temporary beside it, then a rename, so nothing is half-written.

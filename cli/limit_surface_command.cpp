@@ -324,12 +324,20 @@ std::string limit_surface_float_human(const Ls_options& lo, const Support_item& 
   return s.str();
 }
 
+// The answer as JSON and as text, by what the pipeline answered (the twin alone, or the exact answer).
+std::string answer_json(const Ls_options& lo, const Support_item& r) {
+  return lo.mode == Mode::float_only ? limit_surface_float_json(lo, r) : limit_surface_json(lo, r);
+}
+
+std::string answer_text(const Ls_options& lo, const Support_item& r, const std::string& source) {
+  return lo.mode == Mode::float_only ? limit_surface_float_human(lo, r, source) : limit_surface_human(lo, r, source);
+}
+
 }  // namespace
 
 Scene_answer prepare_limit_surface_json(const Options& o) {
   return [o, lo = limit_surface_options(o)](const std::string& text, const std::string& source) {
-    const Support_item r = compute_limit_surface(lo, o, text, source);
-    return lo.mode == Mode::float_only ? limit_surface_float_json(lo, r) : limit_surface_json(lo, r);
+    return answer_json(lo, compute_limit_surface(lo, o, text, source));
   };
 }
 
@@ -339,11 +347,7 @@ int run_limit_surface(const Options& o, const std::string& text, const std::stri
   if (!lo.off_file.empty()) write_file(lo.off_file, off_text(r.in, r.out));
   if (!lo.obj_file.empty()) write_file(lo.obj_file, obj_text(r.in, r.out));
   if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.sides));
-  if (lo.mode == Mode::float_only)
-    std::cout << (o.json ? limit_surface_float_json(lo, r) + "\n" : limit_surface_float_human(lo, r, source));
-  else
-    std::cout << (o.json ? limit_surface_json(lo, r) + "\n" : limit_surface_human(lo, r, source));
-  return kAnswered;
+  return write_answer(o, [&] { return answer_json(lo, r); }, [&] { return answer_text(lo, r, source); });
 }
 
 }  // namespace wrenchkit::cli

@@ -209,26 +209,30 @@ std::string sliding_human(const Sliding_options& so, const Support_item& r, cons
   return s.str();
 }
 
+// The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone,
+// or the exact answer).
+std::string answer_json(const Sliding_options& so, const Support_item& r) {
+  if (r.admissible) return sliding_unknown_json(so, r);
+  return so.mode == Mode::float_only ? sliding_float_json(so, r) : sliding_json(so, r);
+}
+
+std::string answer_text(const Sliding_options& so, const Support_item& r, const std::string& source) {
+  if (r.admissible) return sliding_unknown_human(so, r, source);
+  return so.mode == Mode::float_only ? sliding_float_human(so, r, source) : sliding_human(so, r, source);
+}
+
 }  // namespace
 
 Scene_answer prepare_sliding_json(const Options& o) {
   return [o, so = sliding_options(o)](const std::string& text, const std::string& source) {
-    const Support_item r = compute(so, o, text, source);
-    if (r.admissible) return sliding_unknown_json(so, r);
-    return so.mode == Mode::float_only ? sliding_float_json(so, r) : sliding_json(so, r);
+    return answer_json(so, compute(so, o, text, source));
   };
 }
 
 int run_sliding(const Options& o, const std::string& text, const std::string& source) {
   const Sliding_options so = sliding_options(o);
   const Support_item r = compute(so, o, text, source);
-  if (r.admissible)
-    std::cout << (o.json ? sliding_unknown_json(so, r) + "\n" : sliding_unknown_human(so, r, source));
-  else if (so.mode == Mode::float_only)
-    std::cout << (o.json ? sliding_float_json(so, r) + "\n" : sliding_float_human(so, r, source));
-  else
-    std::cout << (o.json ? sliding_json(so, r) + "\n" : sliding_human(so, r, source));
-  return kAnswered;
+  return write_answer(o, [&] { return answer_json(so, r); }, [&] { return answer_text(so, r, source); });
 }
 
 }  // namespace wrenchkit::cli

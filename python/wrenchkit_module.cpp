@@ -374,6 +374,14 @@ Vec3q nonzero_twist(const std::vector<std::string>& t) {
   return q;
 }
 
+// The polygonal surfaces' power bounds and loads of a twist (limit_surface and sliding alike).
+void polygonal_twist_fields(py::dict& d, const Sliding_answer& a) {
+  d["h_inner"] = fraction(a.h_inner);
+  d["h_outer"] = fraction(a.h_outer);
+  d["inner_load"] = face(a.inner_face);
+  d["outer_load"] = face(a.outer_face);
+}
+
 py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::string>& tolerance,
                        const std::optional<std::vector<std::string>>& twist,
                        const std::optional<std::vector<std::string>>& load, const std::string& mode) {
@@ -402,10 +410,7 @@ py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::st
   d["outer"] = polytope(r.out);
   if (q.twist) {
     d["twist"] = triple(*q.twist);
-    d["h_inner"] = fraction(sa.h_inner);
-    d["h_outer"] = fraction(sa.h_outer);
-    d["inner_load"] = face(sa.inner_face);
-    d["outer_load"] = face(sa.outer_face);
+    polygonal_twist_fields(d, sa);
   }
   if (q.load) {
     d["load"] = triple(*q.load);
@@ -448,12 +453,9 @@ py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>
     d["true_surface_text"] = a.cls.text;
     d["sides"] = sides;
     d["lambda_squared"] = fraction(r.model->directions().lambda_sq);
-    d["h_inner"] = fraction(a.h_inner);
-    d["h_outer"] = fraction(a.h_outer);
     d["power_bracket"] = py::make_tuple(fraction(a.h_lo), fraction(a.h_hi));
     d["load_box"] = py::make_tuple(triple(a.load_lo), triple(a.load_hi));
-    d["inner_load"] = face(a.inner_face);
-    d["outer_load"] = face(a.outer_face);
+    polygonal_twist_fields(d, a);
   }
   return d;
 }
