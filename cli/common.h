@@ -131,6 +131,23 @@ std::string region_sentence(const std::string& shape, const std::vector<std::str
 // support). It may be called from several threads at once.
 using Scene_answer = std::function<std::string(const std::string& scene_text, const std::string& source)>;
 
+// A per-scene command from its parts: `read` takes its options once (before any scene), `answer` answers one
+// scene through the pipeline, `json` and `to_text` write the answer. per_scene gives its batch form (the
+// command's --json answer per scene text); run_per_scene answers one scene and writes it.
+template <class Read, class Answer, class Json>
+Scene_answer per_scene(const Options& o, Read read, Answer answer, Json json) {
+  return [o, opts = read(o), answer, json](const std::string& text, const std::string& source) {
+    return json(opts, answer(opts, o, text, source));
+  };
+}
+template <class Read, class Answer, class Json, class Text>
+int run_per_scene(const Options& o, const std::string& text, const std::string& source, Read read, Answer answer,
+                  Json json, Text to_text) {
+  const auto opts = read(o);
+  const auto item = answer(opts, o, text, source);
+  return write_answer(o, [&] { return json(opts, item); }, [&] { return to_text(opts, item, source); });
+}
+
 // Each command's prepare_*_json reads what it needs of the (already validated) options once, checks
 // how they combine (Usage_error), and returns its Scene_answer, which keeps them.
 Scene_answer prepare_closure_json(const Options& o);

@@ -336,9 +336,7 @@ std::string answer_text(const Ls_options& lo, const Support_item& r, const std::
 }  // namespace
 
 Scene_answer prepare_limit_surface_json(const Options& o) {
-  return [o, lo = limit_surface_options(o)](const std::string& text, const std::string& source) {
-    return answer_json(lo, compute_limit_surface(lo, o, text, source));
-  };
+  return per_scene(o, limit_surface_options, compute_limit_surface, answer_json);
 }
 
 int run_limit_surface(const Options& o, const std::string& text, const std::string& source) {

@@ -223,16 +223,10 @@ std::string answer_text(const Sliding_options& so, const Support_item& r, const 
 
 }  // namespace
 
-Scene_answer prepare_sliding_json(const Options& o) {
-  return [o, so = sliding_options(o)](const std::string& text, const std::string& source) {
-    return answer_json(so, compute(so, o, text, source));
-  };
-}
+Scene_answer prepare_sliding_json(const Options& o) { return per_scene(o, sliding_options, compute, answer_json); }
 
 int run_sliding(const Options& o, const std::string& text, const std::string& source) {
-  const Sliding_options so = sliding_options(o);
-  const Support_item r = compute(so, o, text, source);
-  return write_answer(o, [&] { return answer_json(so, r); }, [&] { return answer_text(so, r, source); });
+  return run_per_scene(o, text, source, sliding_options, compute, answer_json, answer_text);
 }
 
 }  // namespace wrenchkit::cli
