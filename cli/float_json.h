@@ -9,8 +9,8 @@
 
 #include <string>
 
-#include "float/labels_twin.h"
-#include "float/limit_surface_twin.h"
+#include "exact/pipeline/labels_answer.h"   // the twin's values the pipeline answers with
+#include "exact/pipeline/support_answer.h"
 
 namespace wrenchkit::cli {
 

@@ -18,7 +18,6 @@
 #include "exact/sliding/sliding.h"
 #include "exact/io/streaming_scene_reader.h"
 #include "exact/io/to_float.h"
-#include "float/limit_surface_twin.h"
 
 namespace wrenchkit::cli {
 
