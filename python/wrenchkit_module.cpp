@@ -432,9 +432,30 @@ py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>
   if (twist) q.twist = nonzero_twist(*twist);
   const Support_item r = answer_support(s.scene, s.source, exact_request(mode, "sliding"), q);
   raise_unless_answered(r.status, r.message);
-  const Sliding_answer& a = r.sliding;
   py::dict d;
   d["mode"] = mode;
+  if (r.admissible) {  // an unknown distribution: the power over every admissible one
+    const auto dist = [](const std::vector<Rational>& f) {
+      py::list l;
+      for (const Rational& x : f) l.append(fraction(x));
+      return py::tuple(l);
+    };
+    d["distribution"] = "unknown";
+    d["unknown_points"] = r.admissible->unknown;
+    d["weight"] = fraction(*s.scene.support->weight);
+    d["pressure_center"] = point(r.pressure_center);
+    py::list v;
+    for (const auto& f : r.vertices) v.append(dist(f));
+    d["extreme_distributions"] = v;
+    if (r.power) {
+      d["twist"] = triple(*q.twist);
+      d["power"] = py::make_tuple(fraction(r.power->lower), fraction(r.power->upper));
+      d["min_distribution"] = dist(r.power->min_distribution);
+      d["max_distribution"] = dist(r.power->max_distribution);
+    }
+    return d;
+  }
+  const Sliding_answer& a = r.sliding;
   d["center_of_friction"] = point(a.center_of_friction);
   d["friction_centroid"] = point(a.friction_centroid);
   d["mu_f0"] = fraction(a.mu_f0);

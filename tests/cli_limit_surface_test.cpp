@@ -309,4 +309,36 @@ TEST(CliAnalyzeSupport, ToleranceAndTheLoadsMotion) {
 }
 
 }  // namespace
+// Unknown forces (docs/theory-sliding.md §1–§2): sliding answers the power over every admissible distribution
+// (the four-legged table: rotation about a leg ranges over [√2, 2]); float mode has no LP over F (exit 3);
+// limit-surface does not answer it yet and says why (exit 2); an empty F is bad input with the reason.
+TEST(CliSliding, UnknownDistributionsOfTheTable) {
+  const std::string table = R"({"wrenchkit": 1, "name": "table", "support": {"mu": 1, "weight": 1,
+      "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}})";
+  const Cli_result r = run("sliding --json --twist 1,-1,1 -", table);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\"distribution\": \"unknown\", \"unknown_points\": [0, 1, 2, 3], \"weight\": \"1\"")) << r.out;
+  EXPECT_TRUE(has(r.out, "\"extreme_distributions\": [[\"1/2\", \"0\", \"1/2\", \"0\"], [\"0\", \"1/2\", \"0\", \"1/2\"]]"))
+      << r.out;
+  EXPECT_TRUE(has(r.out, "\"min_distribution\": [\"1/2\", \"0\", \"1/2\", \"0\"], \"max_distribution\": [\"0\", "
+                         "\"1/2\", \"0\", \"1/2\"]"))
+      << r.out;
+  const Cli_result b = run("batch sliding --twist 1,-1,1", table.substr(0, 0) + R"({"wrenchkit": 1, "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, -1]}]}})" "\n");
+  ASSERT_EQ(b.code, 0) << b.err;
+  EXPECT_TRUE(has(b.out, "{\"line\": 1, \"command\": \"sliding\"")) << b.out;
+  const Cli_result f = run("sliding --mode float --twist 0,0,1 -", table);
+  EXPECT_EQ(f.code, 3);
+  EXPECT_TRUE(has(f.err, "no LP over the admissible distributions")) << f.err;
+  EXPECT_TRUE(f.out.empty());
+  const Cli_result l = run("limit-surface --load 0.5,0.5,0.9 -", table);
+  EXPECT_EQ(l.code, 2);
+  EXPECT_TRUE(has(l.err, "not answered yet")) << l.err;
+  EXPECT_TRUE(l.out.empty());
+  std::string tipped = table;
+  tipped.replace(tipped.find("[0, 0]"), 6, "[2, 0]");
+  const Cli_result e = run("sliding --twist 0,0,1 -", tipped);
+  EXPECT_EQ(e.code, 2);
+  EXPECT_TRUE(has(e.err, "outside the convex hull of the points whose force is not given")) << e.err;
+}
+
 }  // namespace wrenchkit
