@@ -15,6 +15,7 @@
 #include "cli/reference.h"
 #include "core/mode.h"
 #include "exact/pipeline/pipeline.h"
+#include "exact/pipeline/support_answer.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/numbers/limits.h"
@@ -102,6 +103,11 @@ Request request_of(const Options& o);
 // Writes a single command's answer: its JSON line with --json, else its text for people (each made only
 // when needed); returns kAnswered.
 int write_answer(const Options& o, const std::function<std::string()>& json, const std::function<std::string()>& text);
+// sliding_command.cpp: a support with unknown forces as JSON fields (', "distribution": "unknown", …' and
+// ', "power": {…}'), for sliding and limit-surface alike.
+std::string distribution_json(const std::vector<Rational>& f);
+std::string unknown_distribution_fields(const Support_item& r);
+std::string power_over_fields(const Support_item& r);
 // "scene: NAME" (or the source when the scene has no name), the first line of every text answer.
 std::string scene_line(const std::string& name, const std::string& source);
 

@@ -323,12 +323,85 @@ std::string limit_surface_float_human(const Ls_options& lo, const Support_item& 
   return s.str();
 }
 
-// The answer as JSON and as text, by what the pipeline answered (the twin alone, or the exact answer).
+// An unknown distribution (docs/theory-sliding.md §2): the admissible set, the power over it for --twist,
+// and for --load whether it sticks for every distribution, slides for every one, or depends, with witnesses.
+std::string limit_surface_unknown_json(const Ls_options& lo, const Support_item& r) {
+  std::ostringstream s;
+  s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \""
+    << mode_name(r.mode) << "\", \"convention\": " << json::quote(kConvention) << ", \"sides\": " << lo.sides
+    << unknown_distribution_fields(r);
+  if (lo.twist) s << ", \"twist\": " << jv(*lo.twist) << power_over_fields(r);
+  if (lo.load) {
+    const Motion_over_f& m = *r.motion_over;
+    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_over_name(m.motion)
+      << "\", \"motion_decided_by\": \"" << m.decided_by << "\", \"per_extreme_distribution\": [";
+    for (std::size_t i = 0; i < m.per_vertex.size(); ++i) s << (i ? ", " : "") << "\"" << motion_name(m.per_vertex[i]) << "\"";
+    s << "]";
+    if (m.motion == Motion_over::depends) {
+      s << ", \"witnesses\": {\"sticks\": ";
+      if (m.sticking) {
+        s << "{\"distribution\": " << distribution_json(m.sticking->distribution) << ", \"support_forces\": [";
+        for (std::size_t i = 0; i < m.sticking->forces.size(); ++i)
+          s << (i ? ", " : "") << "[" << jq(m.sticking->forces[i].x) << ", " << jq(m.sticking->forces[i].y) << "]";
+        s << "]}";
+      } else {
+        s << "{\"distribution\": " << distribution_json(r.vertices[*m.sticking_vertex]) << "}";
+      }
+      s << ", \"slides\": {\"distribution\": " << distribution_json(r.vertices[*m.sliding_vertex]) << "}}";
+    }
+    if (m.separating_twist) s << ", \"separating_twist\": " << jv(*m.separating_twist);
+  }
+  s << "}";
+  return s.str();
+}
+
+std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
+  const Admissible& a = *r.admissible;
+  const auto dist = [](const std::vector<Rational>& f) {
+    std::string s = "(";
+    for (std::size_t i = 0; i < f.size(); ++i) s += (i ? ", " : "") + human_number(f[i]);
+    return s + ")";
+  };
+  std::ostringstream s;
+  s << scene_line(r.scene.name, source) << "support: " << r.scene.support->points.size() << " points, the forces of "
+    << a.unknown.size() << " not given; weight " << human_number(*r.scene.support->weight) << ", centre of pressure ("
+    << human_number(r.pressure_center.x) << ", " << human_number(r.pressure_center.y) << "); "
+    << r.vertices.size() << " extreme admissible distributions\n";
+  if (lo.twist)
+    s << "twist " << tv(*lo.twist) << ": the frictional power over every admissible distribution lies in ["
+      << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n";
+  if (lo.load) {
+    const Motion_over_f& m = *r.motion_over;
+    s << "load " << tv(*lo.load) << ": ";
+    switch (m.motion) {
+      case Motion_over::sticks: s << "sticks for every admissible distribution (every extreme one sticks)\n"; break;
+      case Motion_over::slides:
+        s << "slides for every admissible distribution (the twist " << tv(*m.separating_twist)
+          << " drives it past every one's limit surface)\n";
+        break;
+      case Motion_over::depends:
+        s << "depends on the distribution: it sticks with f = "
+          << dist(m.sticking ? m.sticking->distribution : r.vertices[*m.sticking_vertex]) << " and slides with f = "
+          << dist(r.vertices[*m.sliding_vertex]) << "\n";
+        break;
+      case Motion_over::undecided:
+        s << "undecided (within the resolution of the limit surfaces; refine --sides)\n";
+        break;
+    }
+  }
+  s << "convention: " << kConvention << "\n";
+  return s.str();
+}
+
+// The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone, or
+// the exact answer).
 std::string answer_json(const Ls_options& lo, const Support_item& r) {
+  if (r.admissible) return limit_surface_unknown_json(lo, r);
   return lo.mode == Mode::float_only ? limit_surface_float_json(lo, r) : limit_surface_json(lo, r);
 }
 
 std::string answer_text(const Ls_options& lo, const Support_item& r, const std::string& source) {
+  if (r.admissible) return limit_surface_unknown_human(lo, r, source);
   return lo.mode == Mode::float_only ? limit_surface_float_human(lo, r, source) : limit_surface_human(lo, r, source);
 }
 
@@ -341,6 +414,9 @@ Scene_answer prepare_limit_surface_json(const Options& o) {
 int run_limit_surface(const Options& o, const std::string& text, const std::string& source) {
   const Ls_options lo = limit_surface_options(o);
   const Support_item r = compute_limit_surface(lo, o, text, source);
+  if (r.admissible && (lo.list || !lo.off_file.empty() || !lo.obj_file.empty() || !lo.svg_file.empty()))
+    throw Input_error(source + ": support: the forces of some points are not given, so there is no one limit surface "
+                      "to list or draw (--list, --off, --obj, --svg need every force)");
   if (!lo.off_file.empty()) write_file(lo.off_file, off_text(r.in, r.out));
   if (!lo.obj_file.empty()) write_file(lo.obj_file, obj_text(r.in, r.out));
   if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.sides));

@@ -17,6 +17,33 @@
 
 namespace wrenchkit::cli {
 
+// An unknown distribution (docs/theory-sliding.md §1–§2), for sliding and limit-surface alike.
+std::string distribution_json(const std::vector<Rational>& f) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < f.size(); ++i) s += (i ? ", " : "") + json::quote(to_string(f[i]));
+  return s + "]";
+}
+
+std::string unknown_distribution_fields(const Support_item& r) {
+  const Admissible& a = *r.admissible;
+  std::string s = ", \"distribution\": \"unknown\", \"unknown_points\": [";
+  for (std::size_t k = 0; k < a.unknown.size(); ++k) s += (k ? ", " : "") + std::to_string(a.unknown[k]);
+  s += "], \"weight\": " + json::quote(to_string(*r.scene.support->weight)) + ", \"pressure_center\": [" +
+       json::quote(to_string(r.pressure_center.x)) + ", " + json::quote(to_string(r.pressure_center.y)) +
+       "], \"extreme_distributions\": ";
+  if (a.unknown.size() > kMaxEnumeratedUnknowns) return s + "null";
+  s += "[";
+  for (std::size_t v = 0; v < r.vertices.size(); ++v) s += (v ? ", " : "") + distribution_json(r.vertices[v]);
+  return s + "]";
+}
+
+std::string power_over_fields(const Support_item& r) {
+  return ", \"power\": {\"lower\": " + json::quote(to_string(r.power->lower)) + ", \"upper\": " +
+         json::quote(to_string(r.power->upper)) + ", \"min_distribution\": " +
+         distribution_json(r.power->min_distribution) + ", \"max_distribution\": " +
+         distribution_json(r.power->max_distribution) + "}";
+}
+
 namespace {
 
 std::string jq(const Rational& q) { return json::quote(to_string(q)); }
@@ -94,34 +121,10 @@ const char* kConvention =
     "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
     "the friction wrench on the slider is its negative";
 
-// An unknown distribution (docs/theory-sliding.md §1–§2): the admissible set and the power over it.
-std::string distribution_json(const std::vector<Rational>& f) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < f.size(); ++i) s += (i ? ", " : "") + jq(f[i]);
-  return s + "]";
-}
-
 std::string sliding_unknown_json(const Sliding_options& so, const Support_item& r) {
-  const Admissible& a = *r.admissible;
-  std::ostringstream s;
-  s << "{\"command\": \"sliding\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"" << mode_name(r.mode)
-    << "\", \"convention\": " << json::quote(kConvention) << ", \"distribution\": \"unknown\", \"unknown_points\": [";
-  for (std::size_t k = 0; k < a.unknown.size(); ++k) s << (k ? ", " : "") << a.unknown[k];
-  s << "], \"weight\": " << jq(*r.scene.support->weight) << ", \"pressure_center\": [" << jq(r.pressure_center.x)
-    << ", " << jq(r.pressure_center.y) << "], \"extreme_distributions\": ";
-  if (a.unknown.size() > kMaxEnumeratedUnknowns) {
-    s << "null";
-  } else {
-    s << "[";
-    for (std::size_t v = 0; v < r.vertices.size(); ++v) s << (v ? ", " : "") << distribution_json(r.vertices[v]);
-    s << "]";
-  }
-  if (so.twist)
-    s << ", \"twist\": " << jv(*so.twist) << ", \"power\": {\"lower\": " << jq(r.power->lower) << ", \"upper\": "
-      << jq(r.power->upper) << ", \"min_distribution\": " << distribution_json(r.power->min_distribution)
-      << ", \"max_distribution\": " << distribution_json(r.power->max_distribution) << "}";
-  s << "}";
-  return s.str();
+  return "{\"command\": \"sliding\", \"name\": " + json::quote(r.scene.name) + ", \"mode\": \"" +
+         mode_name(r.mode) + "\", \"convention\": " + json::quote(kConvention) + unknown_distribution_fields(r) +
+         (so.twist ? ", \"twist\": " + jv(*so.twist) + power_over_fields(r) : std::string()) + "}";
 }
 
 std::string sliding_unknown_human(const Sliding_options& so, const Support_item& r, const std::string& source) {

@@ -311,7 +311,7 @@ TEST(CliAnalyzeSupport, ToleranceAndTheLoadsMotion) {
 }  // namespace
 // Unknown forces (docs/theory-sliding.md §1–§2): sliding answers the power over every admissible distribution
 // (the four-legged table: rotation about a leg ranges over [√2, 2]); float mode has no LP over F (exit 3);
-// limit-surface does not answer it yet and says why (exit 2); an empty F is bad input with the reason.
+// limit-surface --load sticks / slides / depends; an empty F is bad input with the reason.
 TEST(CliSliding, UnknownDistributionsOfTheTable) {
   const std::string table = R"({"wrenchkit": 1, "name": "table", "support": {"mu": 1, "weight": 1,
       "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}})";
@@ -330,9 +330,20 @@ TEST(CliSliding, UnknownDistributionsOfTheTable) {
   EXPECT_EQ(f.code, 3);
   EXPECT_TRUE(has(f.err, "no LP over the admissible distributions")) << f.err;
   EXPECT_TRUE(f.out.empty());
-  const Cli_result l = run("limit-surface --load 0.5,0.5,0.9 -", table);
+  // limit-surface --load: sticks / slides / depends over every admissible distribution (the table's three cases).
+  const Cli_result d = run("limit-surface --json --load 0.5,0.5,0.9 -", table);
+  ASSERT_EQ(d.code, 0) << d.err;
+  EXPECT_TRUE(has(d.out, "\"motion\": \"depends\", \"motion_decided_by\": \"vertices\", \"per_extreme_distribution\": "
+                         "[\"sticks\", \"slides\"], \"witnesses\": {\"sticks\": {\"distribution\": [\"1/2\", \"0\", "
+                         "\"1/2\", \"0\"]}, \"slides\": {\"distribution\": [\"0\", \"1/2\", \"0\", \"1/2\"]}}"))
+      << d.out;
+  EXPECT_TRUE(has(run("limit-surface --json --load 0.5,0,0 -", table).out, "\"motion\": \"sticks\""));
+  const Cli_result sl = run("limit-surface --json --load 0,0,1.5 -", table);
+  EXPECT_TRUE(has(sl.out, "\"motion\": \"slides\", \"motion_decided_by\": \"twist\"")) << sl.out;
+  EXPECT_TRUE(has(sl.out, "\"separating_twist\": [")) << sl.out;
+  const Cli_result l = run("limit-surface --list --load 0.5,0.5,0.9 -", table);
   EXPECT_EQ(l.code, 2);
-  EXPECT_TRUE(has(l.err, "not answered yet")) << l.err;
+  EXPECT_TRUE(has(l.err, "no one limit surface to list or draw")) << l.err;
   EXPECT_TRUE(l.out.empty());
   std::string tipped = table;
   tipped.replace(tipped.find("[0, 0]"), 6, "[2, 0]");

@@ -11,13 +11,18 @@
 #include "exact/io/scene_writer.h"
 #include "exact/numbers/exact_lp.h"
 #include "exact/sliding/distribution.h"
+#include "exact/sliding/unknown_motion.h"
 #include "fuzz/scene_checks.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {
 namespace {
 
-Rational rq(long p, long q = 1) { return Rational(p, q); }
+Rational rq(long p, long q = 1) {
+  Rational r(p, q);
+  r.canonicalize();
+  return r;
+}
 
 TEST(ExactLp, OptimalWithItsDualInfeasibleUnboundedAndRedundantRows) {
   // max x0 + 2 x1 s.t. x0 + x1 + x2 = 4, x0 - x1 = 1 (and the sum of the two rows again: redundant).
@@ -223,6 +228,125 @@ TEST(Distribution, EmptyAdmissibleSetsAreBadInputWithTheReason) {
   EXPECT_NE(write_scene(s).find("\"weight\": \"1\", \"pressure_center\": [\"0\", \"0\"], \"points\": [{\"at\": [\"1\", \"1\"]}"),
             std::string::npos)
       << write_scene(s);
+}
+
+// A stick witness proves what it says, exactly: f ∈ F, |g_i|² ≤ (μ_i f_i)², Σ (g_i, r_i × g_i) = p.
+void expect_witness_holds(const Support& s, const Admissible& a, const Stick_witness& w, const Vec3q& p) {
+  EXPECT_TRUE(a.contains(s, w.distribution));
+  Vec3q sum{};
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Rational mu = s.points[i].mu ? *s.points[i].mu : *s.mu;
+    const Vec2& g = w.forces[i];
+    EXPECT_LE(g.x * g.x + g.y * g.y, mu * mu * w.distribution[i] * w.distribution[i]);
+    sum[0] += g.x;
+    sum[1] += g.y;
+    sum[2] += s.points[i].at.x * g.y - s.points[i].at.y * g.x;
+  }
+  EXPECT_EQ(sum, p);
+}
+
+Vec3q load(const std::string& fx, const std::string& fy, const std::string& m) {
+  return {Rational(fx), Rational(fy), Rational(m)};
+}
+
+// The table (docs/theory-sliding.md §6): |f| < 1 sticks for every distribution, |f| > 1 slides for every one;
+// a pure moment m < √2 sticks, m > √2 slides; (1/2, 1/2, 0.9) depends — on the two diagonals.
+TEST(UnknownMotion, TheTableSticksSlidesAndDepends) {
+  const Scene s = read_scene(kTable, Input_limits{});
+  const Admissible a = admissible_set(s);
+  for (const Mode mode : {Mode::hybrid, Mode::exact}) {
+    SCOPED_TRACE(mode_name(mode));
+    EXPECT_EQ(decide_motion_over(*s.support, a, load("1/2", "0", "0"), mode, 32).motion, Motion_over::sticks);
+    EXPECT_EQ(decide_motion_over(*s.support, a, load("0", "0", "13/10"), mode, 32).motion, Motion_over::sticks);
+    const Motion_over_f d = decide_motion_over(*s.support, a, load("1/2", "1/2", "9/10"), mode, 32);
+    EXPECT_EQ(d.motion, Motion_over::depends);
+    EXPECT_EQ(d.per_vertex.size(), 2u);
+  }
+  const Motion_over_f sl = decide_motion_over(*s.support, a, load("3/2", "0", "0"), Mode::hybrid, 32);
+  ASSERT_EQ(sl.motion, Motion_over::slides);
+  EXPECT_TRUE(slides_for_every(*s.support, a, load("3/2", "0", "0"), *sl.separating_twist));
+  const Motion_over_f m = decide_motion_over(*s.support, a, load("0", "0", "3/2"), Mode::hybrid, 32);
+  ASSERT_EQ(m.motion, Motion_over::slides);
+  EXPECT_TRUE(slides_for_every(*s.support, a, load("0", "0", "3/2"), *m.separating_twist));
+  // The LP finds a distribution that sticks for a load inside U, and its witness holds exactly.
+  const auto w = stick_witness(*s.support, a, load("1/2", "1/2", "9/10"), 32);
+  ASSERT_TRUE(w);
+  expect_witness_holds(*s.support, a, *w, load("1/2", "1/2", "9/10"));
+  EXPECT_FALSE(stick_witness(*s.support, a, load("3/2", "0", "0"), 64));
+}
+
+// The dinner plate (§6): 8 rim points at radius 1 and the centre, c = the centre, μ = W = 1: a pure moment
+// 0 < m < 1 depends (the rim resists it, the centre alone does not), m > 1 slides for every distribution.
+TEST(UnknownMotion, TheDinnerPlateDepends) {
+  const Scene s = read_scene(R"({"wrenchkit": 1, "body": {"com": [0, 0]}, "support": {"mu": 1, "weight": 1,
+      "points": [{"at": [1, 0]}, {"at": ["3/5", "4/5"]}, {"at": [0, 1]}, {"at": ["-3/5", "4/5"]}, {"at": [-1, 0]},
+                 {"at": ["-3/5", "-4/5"]}, {"at": [0, -1]}, {"at": ["3/5", "-4/5"]}, {"at": [0, 0]}]}})",
+                             Input_limits{});
+  const Admissible a = admissible_set(s);
+  EXPECT_EQ(vertices(*s.support, a).size(), 13u);  // the centre, 4 diameters, 8 triangles about it
+  for (const char* m : {"1/100", "1/2", "99/100"})
+    EXPECT_EQ(decide_motion_over(*s.support, a, load("0", "0", m), Mode::hybrid, 32).motion, Motion_over::depends) << m;
+  for (const char* m : {"101/100", "2"})
+    EXPECT_EQ(decide_motion_over(*s.support, a, load("0", "0", m), Mode::hybrid, 32).motion, Motion_over::slides) << m;
+  const auto w = stick_witness(*s.support, a, load("0", "0", "1/2"), 32);
+  ASSERT_TRUE(w);
+  expect_witness_holds(*s.support, a, *w, load("0", "0", "1/2"));
+}
+
+// Random supports with unknown forces and random loads: every answer is consistent with its witnesses —
+// sticks: every vertex has a stick witness at N = 32 or 128; slides: the twist separates p from all of U
+// exactly; depends: one vertex (or the LP's distribution) sticks and one slides.
+TEST(UnknownMotion, RandomAnswersAgreeWithTheirWitnesses) {
+  std::mt19937_64 rng(test::seed(424242));
+  std::uniform_int_distribution<int> coord(-4, 4), small(-12, 12);
+  int decided = 0, counts[4] = {0, 0, 0, 0};
+  for (int trial = 0; trial < 120; ++trial) {
+    std::string pts;
+    const int k = 4 + trial % 3;
+    for (int i = 0; i < k; ++i)
+      pts += std::string(i ? ", " : "") + "{\"at\": [" + std::to_string(coord(rng)) + ", " + std::to_string(coord(rng)) +
+             "]" + (i == 0 ? ", \"force\": \"1/4\"" : "") + "}";
+    const std::string text = R"({"wrenchkit": 1, "support": {"mu": "1/2", "weight": 2, "pressure_center": [0, 0], "points": [)" +
+                             pts + "]}}";
+    Scene s;
+    try {
+      s = read_scene(text, Input_limits{});
+    } catch (const Input_error&) {
+      continue;
+    }
+    const Admissible a = admissible_set(s);
+    const auto eighth = [&] {
+      Rational q(small(rng), 8);
+      q.canonicalize();
+      return q;
+    };
+    const Vec3q p = {eighth(), eighth(), eighth()};
+    const Motion_over_f m = decide_motion_over(*s.support, a, p, Mode::hybrid, 32);
+    ++counts[static_cast<int>(m.motion)];
+    if (m.motion == Motion_over::undecided) continue;
+    ++decided;
+    const auto v = vertices(*s.support, a);
+    if (m.motion == Motion_over::sticks) {
+      for (const auto& f : v) {
+        std::optional<Stick_witness> w;
+        for (int n : {32, 128})
+          if ((w = stick_witness(*s.support, a, p, n, &f))) break;
+        ASSERT_TRUE(w) << text;
+        expect_witness_holds(*s.support, a, *w, p);
+      }
+    } else if (m.motion == Motion_over::slides) {
+      EXPECT_TRUE(slides_for_every(*s.support, a, p, *m.separating_twist)) << text;
+    } else {
+      ASSERT_TRUE(m.sliding_vertex) << text;
+      EXPECT_EQ(m.per_vertex[*m.sliding_vertex], Motion::slides);
+      if (m.sticking) expect_witness_holds(*s.support, a, *m.sticking, p);
+      else EXPECT_EQ(m.per_vertex[*m.sticking_vertex], Motion::sticks);
+    }
+  }
+  EXPECT_GT(decided, 40);
+  EXPECT_GT(counts[0], 0);  // some stick, some slide, some depend
+  EXPECT_GT(counts[1], 0);
+  EXPECT_GT(counts[2], 0);
 }
 
 }  // namespace

@@ -75,15 +75,18 @@ void answer_unknown(std::string_view source, const Support_query& q, Support_ite
   const Support& s = *r.scene.support;
   r.admissible = admissible_set(r.scene);
   r.pressure_center = *pressure_center_of(r.scene);
-  if (q.question == Support_question::limit_surface)
-    throw Input_error(std::string(source) + ": support: the forces of " + std::to_string(r.admissible->unknown.size()) +
-                      " point(s) are not given: stick or slide over every admissible distribution is not answered yet "
-                      "(sliding --twist gives the power over all of them)");
   if (r.mode == Mode::float_only)
     throw Undecided_error("the float twin has no LP over the admissible distributions (the forces of " +
                           std::to_string(r.admissible->unknown.size()) + " support point(s) are not given)");
   if (r.admissible->unknown.size() <= kMaxEnumeratedUnknowns) r.vertices = vertices(s, *r.admissible);
   if (q.twist) r.power = power_range(s, *r.admissible, *q.twist);
+  if (q.question == Support_question::limit_surface && q.load) {
+    if (r.admissible->unknown.size() > kMaxEnumeratedUnknowns)
+      throw Input_error(std::string(source) + ": support: " + std::to_string(r.admissible->unknown.size()) +
+                        " forces are not given: stick or slide over every admissible distribution enumerates the "
+                        "extreme ones, at most " + std::to_string(kMaxEnumeratedUnknowns) + " unknown forces");
+    r.motion_over = decide_motion_over(s, *r.admissible, *q.load, r.mode, q.sides);
+  }
 }
 
 void answer(std::string_view source, const Request& request, const Support_query& q, Support_item& r) {

@@ -21,6 +21,7 @@
 #include "exact/sliding/distribution.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
+#include "exact/sliding/unknown_motion.h"
 #include "float/limit_surface_twin.h"
 
 namespace wrenchkit {
@@ -62,12 +63,15 @@ struct Support_item {
   std::vector<std::vector<Rational>> vertices;
   std::optional<Power_range> power;
   Vec2 pressure_center;
+  std::optional<Motion_over_f> motion_over;  // limit-surface with a load
 };
 
 // Reads `text` (eagerly) and answers; never throws. A scene without a support is bad input; so is a
 // limit surface whose candidate normals exceed kMaxCandidates (the polytopes are not built then).
-// An unknown distribution: `sliding` answers the power range over F and the extreme distributions;
-// `limit-surface` (stick/slide over F, with certificates) is not answered yet and says so (bad input).
+// An unknown distribution: `sliding` (and `limit-surface --twist`) answers the power range over F and the
+// extreme distributions; `limit-surface --load` whether the load sticks for every admissible distribution,
+// slides for every one, or depends (exact/sliding/unknown_motion.h), with its witnesses. The polytopes
+// depend on the distribution and are not built.
 Support_item answer_support(std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query);
 // The same for a scene already read.
