@@ -374,6 +374,46 @@ Vec3q nonzero_twist(const std::vector<std::string>& t) {
   return q;
 }
 
+py::tuple distribution(const std::vector<Rational>& f) {
+  py::list l;
+  for (const Rational& x : f) l.append(fraction(x));
+  return py::tuple(l);
+}
+
+// A support with unknown forces (limit_surface and sliding alike): the admissible set, the power of a twist
+// over it, and whether a load sticks for every distribution, slides for every one, or depends.
+py::dict unknown_distribution(const Support_item& r, const std::string& mode, const Support_query& q) {
+  py::dict d;
+  d["mode"] = mode;
+  d["distribution"] = "unknown";
+  d["unknown_points"] = r.admissible->unknown;
+  d["weight"] = fraction(*r.scene.support->weight);
+  d["pressure_center"] = point(r.pressure_center);
+  py::list v;
+  for (const auto& f : r.vertices) v.append(distribution(f));
+  d["extreme_distributions"] = v;
+  if (r.power) {
+    d["twist"] = triple(*q.twist);
+    d["power"] = py::make_tuple(fraction(r.power->lower), fraction(r.power->upper));
+    d["min_distribution"] = distribution(r.power->min_distribution);
+    d["max_distribution"] = distribution(r.power->max_distribution);
+  }
+  if (r.motion_over) {
+    const Motion_over_f& m = *r.motion_over;
+    d["load"] = triple(*q.load);
+    d["motion"] = motion_over_name(m.motion);
+    d["motion_decided_by"] = m.decided_by;
+    if (m.motion == Motion_over::depends) {
+      py::dict w;
+      w["sticks"] = distribution(m.sticking ? m.sticking->distribution : r.vertices[*m.sticking_vertex]);
+      w["slides"] = distribution(r.vertices[*m.sliding_vertex]);
+      d["witnesses"] = w;
+    }
+    if (m.separating_twist) d["separating_twist"] = triple(*m.separating_twist);
+  }
+  return d;
+}
+
 // The polygonal surfaces' power bounds and loads of a twist (limit_surface and sliding alike).
 void polygonal_twist_fields(py::dict& d, const Sliding_answer& a) {
   d["h_inner"] = fraction(a.h_inner);
@@ -398,6 +438,7 @@ py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::st
   if (load) q.load = vec3(*load, "load");
   const Support_item r = answer_support(s.scene, s.source, exact_request(mode, "limit_surface"), q);
   raise_unless_answered(r.status, r.message);
+  if (r.admissible) return unknown_distribution(r, mode, q);
   const Sliding_answer& sa = r.sliding;
   py::dict d;
   d["mode"] = mode;
@@ -432,29 +473,9 @@ py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>
   if (twist) q.twist = nonzero_twist(*twist);
   const Support_item r = answer_support(s.scene, s.source, exact_request(mode, "sliding"), q);
   raise_unless_answered(r.status, r.message);
+  if (r.admissible) return unknown_distribution(r, mode, q);
   py::dict d;
   d["mode"] = mode;
-  if (r.admissible) {  // an unknown distribution: the power over every admissible one
-    const auto dist = [](const std::vector<Rational>& f) {
-      py::list l;
-      for (const Rational& x : f) l.append(fraction(x));
-      return py::tuple(l);
-    };
-    d["distribution"] = "unknown";
-    d["unknown_points"] = r.admissible->unknown;
-    d["weight"] = fraction(*s.scene.support->weight);
-    d["pressure_center"] = point(r.pressure_center);
-    py::list v;
-    for (const auto& f : r.vertices) v.append(dist(f));
-    d["extreme_distributions"] = v;
-    if (r.power) {
-      d["twist"] = triple(*q.twist);
-      d["power"] = py::make_tuple(fraction(r.power->lower), fraction(r.power->upper));
-      d["min_distribution"] = dist(r.power->min_distribution);
-      d["max_distribution"] = dist(r.power->max_distribution);
-    }
-    return d;
-  }
   const Sliding_answer& a = r.sliding;
   d["center_of_friction"] = point(a.center_of_friction);
   d["friction_centroid"] = point(a.friction_centroid);

@@ -294,3 +294,13 @@ def test_sliding_over_every_admissible_distribution_of_the_table():
     assert len(r["extreme_distributions"]) == 2
     with pytest.raises(wrenchkit.InputError, match="outside the convex hull"):
         wrenchkit.Scene({"support": dict(TABLE["support"], pressure_center=[2, 0])})
+
+
+def test_limit_surface_over_every_admissible_distribution_of_the_table():
+    assert wrenchkit.limit_surface(TABLE, load=("1/2", 0, 0))["motion"] == "sticks"
+    s = wrenchkit.limit_surface(TABLE, load=(0, 0, "3/2"))
+    assert s["motion"] == "slides" and len(s["separating_twist"]) == 3
+    d = wrenchkit.limit_surface(TABLE, load=("1/2", "1/2", "9/10"))
+    assert d["motion"] == "depends"
+    assert d["witnesses"]["sticks"] == (Fraction(1, 2), 0, Fraction(1, 2), 0)
+    assert d["witnesses"]["slides"] == (0, Fraction(1, 2), 0, Fraction(1, 2))
