@@ -93,7 +93,11 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
   const Request request = request_of(o);
   a.closure = answered(answer_closure(scene_text, source, request, a.scene));
   if (a.scene.load) a.equilibrium = answered(answer_equilibrium(a.scene, scene_text, request));
-  if (a.scene.support) {
+  if (a.scene.support && !a.scene.support->known()) {
+    a.skipped.push_back({"limit_surface", "the forces of some support points are not given: use 'wrenchkit "
+                                          "limit-surface --load' or 'sliding --twist' (they answer over every "
+                                          "admissible distribution)"});
+  } else if (a.scene.support) {
     std::string why;
     a.limit_surface = limit_surface_summary(o, tolerance, a.scene, why);
     if (!a.limit_surface) a.skipped.push_back({"limit_surface", why});

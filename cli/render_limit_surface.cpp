@@ -48,6 +48,8 @@ std::vector<P2> projection(const Ls_polytope& P, int c0, int c1) {
 
 std::string render_limit_surface_svg(const Scene& scene, int sides) {
   if (!scene.support) throw Input_error("support: the scene has no \"support\" (nothing to draw)");
+  if (!scene.support->known())
+    throw Input_error("support: the forces of some points are not given, so there is no one limit surface to draw");
   const Polygonal_ls model(merge_support(*scene.support), make_directions(sides));
   if (model.candidate_count() > kMaxCandidates)
     throw Input_error("support: too many points for a picture with " + std::to_string(sides) + " sides");
