@@ -7,6 +7,7 @@
 
 #include "cli/common.h"
 #include "exact/io/json.h"
+#include "exact/io/support_check.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
@@ -85,6 +86,7 @@ struct Analysis {
   std::optional<Equilibrium_item> equilibrium;
   std::optional<Ls_summary> limit_surface;
   std::vector<std::pair<std::string, std::string>> skipped;
+  std::optional<std::pair<Vec2, Vec2>> gravity_off;  // body.com, the support's centre of pressure
 };
 
 Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, const std::string& scene_text,
@@ -107,6 +109,7 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
   } else if (tolerance) {
     a.skipped.push_back({"limit_surface", "--tolerance was given but the scene has no support"});
   }
+  a.gravity_off = gravity_off_pressure_center(a.scene);
   return a;
 }
 
@@ -119,7 +122,15 @@ std::string analyze_json(const Options& o, const Analysis& a, const char* comman
   for (std::size_t i = 0; i < a.skipped.size(); ++i)
     s += (i ? ", " : "") + std::string("{\"what\": ") + json::quote(a.skipped[i].first) +
          ", \"why\": " + json::quote(a.skipped[i].second) + "}";
-  return s + "]}";
+  s += "]";
+  if (a.gravity_off) {
+    const auto pt = [](const Vec2& p) {
+      return "[" + json::quote(to_string(p.x)) + ", " + json::quote(to_string(p.y)) + "]";
+    };
+    s += ", \"warnings\": [{\"what\": \"gravity_off_pressure_center\", \"com\": " + pt(a.gravity_off->first) +
+         ", \"pressure_center\": " + pt(a.gravity_off->second) + "}]";
+  }
+  return s + "}";
 }
 
 }  // namespace
@@ -140,6 +151,11 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
   if (a.equilibrium) std::cout << equilibrium_human(*a.equilibrium);
   if (a.limit_surface) std::cout << a.limit_surface->human;
   for (const auto& [what, why] : a.skipped) std::cout << "skipped " << what << ": " << why << "\n";
+  if (a.gravity_off)
+    std::cout << "warning: the weight acts at body.com (" << to_string(a.gravity_off->first.x) << ", "
+              << to_string(a.gravity_off->first.y) << ") but the support's centre of pressure is ("
+              << to_string(a.gravity_off->second.x) << ", " << to_string(a.gravity_off->second.y)
+              << "): a body at rest on the support would need them to coincide\n";
   std::cout << "decided by: " << a.closure.decided_by() << " for closure"
             << (a.equilibrium ? std::string(", ") + a.equilibrium->answer.decided_by() + " for equilibrium" : std::string())
             << "\n"

@@ -352,4 +352,23 @@ TEST(CliSliding, UnknownDistributionsOfTheTable) {
   EXPECT_TRUE(has(e.err, "outside the convex hull of the points whose force is not given")) << e.err;
 }
 
+// Gravity with a support: a centre of mass away from the support's centre of pressure is reported (text and
+// JSON), not refused; at the centre, nothing is said.
+TEST(CliAnalyze, GravityAwayFromTheCentreOfPressureIsReported) {
+  const std::string off = R"({"wrenchkit": 1, "body": {"com": [1, 0]}, "load": {"gravity": 1},
+      "support": {"mu": 1, "points": [{"at": [0, 1], "force": "1/2"}, {"at": [0, -1], "force": "1/2"}]}})";
+  const Cli_result t = run("analyze -", off);
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_TRUE(has(t.out, "warning: the weight acts at body.com (1, 0) but the support's centre of pressure is (0, 0)"))
+      << t.out;
+  const Cli_result j = run("analyze --json -", off);
+  EXPECT_TRUE(has(j.out, "\"warnings\": [{\"what\": \"gravity_off_pressure_center\", \"com\": [\"1\", \"0\"], "
+                         "\"pressure_center\": [\"0\", \"0\"]}]"))
+      << j.out;
+  std::string on = off;
+  on.replace(on.find("[1, 0]"), 6, "[0, 0]");
+  const Cli_result k = run("analyze --json -", on);
+  EXPECT_FALSE(has(k.out, "warnings")) << k.out;
+}
+
 }  // namespace wrenchkit

@@ -44,6 +44,28 @@ std::optional<Vec2> pressure_center_of(const Scene& scene) {
   return std::nullopt;
 }
 
+std::optional<std::pair<Vec2, Vec2>> gravity_off_pressure_center(const Scene& scene) {
+  if (!scene.support || !scene.load || scene.load->kind != Load::Kind::gravity || !scene.body.com) return std::nullopt;
+  const Support& s = *scene.support;
+  Vec2 c;
+  if (s.pressure_center) {
+    c = *s.pressure_center;
+  } else if (s.known()) {
+    Rational w;
+    for (const Support_point& p : s.points) {
+      w += *p.force;
+      c.x += *p.force * p.at.x;
+      c.y += *p.force * p.at.y;
+    }
+    c = {c.x / w, c.y / w};
+  } else {
+    return std::nullopt;  // c is body.com itself
+  }
+  const Vec2& com = *scene.body.com;
+  if (com.x == c.x && com.y == c.y) return std::nullopt;
+  return std::make_pair(com, c);
+}
+
 std::string support_inadmissible(const Scene& scene) {
   if (!scene.support) return "";
   const Support& s = *scene.support;

@@ -10,7 +10,9 @@
 // 2×2 determinants of rationals only). O(k).
 #pragma once
 
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "exact/io/scene.h"
 
@@ -23,5 +25,10 @@ std::string support_inadmissible(const Scene& scene);
 // The centre of pressure c a support with an unknown force is held to (pressure_center, else body.com);
 // nothing when every force is given and no pressure_center is written.
 std::optional<Vec2> pressure_center_of(const Scene& scene);
+
+// A gravity load is carried by the support at its centre of pressure: when body.com is not that point
+// (the given forces' centre, or pressure_center), the scene is inconsistent as a body at rest — reported,
+// not refused. Returns {com, centre of pressure} then; nothing otherwise (no gravity, no support, or equal).
+std::optional<std::pair<Vec2, Vec2>> gravity_off_pressure_center(const Scene& scene);
 
 }  // namespace wrenchkit
