@@ -150,6 +150,20 @@ std::string true_json(const Support_item& r) {
   return ", \"true_power\": " + bounded_json(*r.true_power) + ", \"true_load\": " + float_load_json(*r.true_load);
 }
 
+// ', "certificate_checked": true, "certificate": {…}' when the motion has a certificate (the independent checker
+// accepted it); ', "uncertified": "…"' when a verdict found no rational witness and is reported undecided.
+std::string certificate_fields(const Support_item& r) {
+  if (!r.certificate.empty()) return ", \"certificate_checked\": true, \"certificate\": " + r.certificate;
+  if (!r.uncertified.empty()) return ", \"uncertified\": " + json::quote(r.uncertified);
+  return "";
+}
+
+std::string certificate_line(const Support_item& r) {
+  if (!r.certificate.empty()) return "  certificate accepted by the independent checker (exact arithmetic)\n";
+  if (!r.uncertified.empty()) return "  " + r.uncertified + "\n";
+  return "";
+}
+
 std::string motion_fields(const Support_item& r) {
   std::string s = std::string(", \"motion_decided_by\": \"") + r.motion.decided_by + "\"";
   if (r.motion.cells) s += ", \"search_twists\": " + std::to_string(r.motion.cells);
@@ -211,7 +225,7 @@ std::string limit_surface_json(const Ls_options& lo, const Support_item& r) {
     };
     s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\""
       << motion_fields(r) << ", \"gauge\": {\"outer\": " << gauge_json(r.gauge_out) << ", \"inner\": " << gauge_json(r.gauge_in)
-      << "}";
+      << "}" << certificate_fields(r);
     if (r.motion.motion != Motion::sticks)
       s << ", \"twist_cone\": {\"outer\": " << cone_json(r.cone_out) << ", \"inner\": " << cone_json(r.cone_in) << "}";
   }
@@ -263,6 +277,7 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
                                                                                                          : "nothing")
       << ")\n";
     if (r.motion.motion == Motion::undecided) s << "  undecided: refine with more --sides or a smaller --tolerance\n";
+    s << certificate_line(r);
     if (r.motion.motion != Motion::sticks) {
       s << "  twists (outward normals of LS_out at the load's direction):";
       for (const Vec3z& g : r.cone_out.generators) s << " " << tz(g);
@@ -291,7 +306,8 @@ std::string limit_surface_float_json(const Ls_options& lo, const Support_item& r
       << bounded_json(*r.twin_power_inner) << ", \"outer\": " << bounded_json(*r.twin_power_outer) << "}"
       << true_json(r) << "}";
   if (lo.load)
-    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\"" << motion_fields(r);
+    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\"" << motion_fields(r)
+      << certificate_fields(r);
   s << "}";
   return s.str();
 }
@@ -318,6 +334,7 @@ std::string limit_surface_float_human(const Ls_options& lo, const Support_item& 
     if (r.motion.motion == Motion::slides)
       s << "  a twist with h(q) <= q.p: (" << float_number(r.motion.witness[0]) << ", " << float_number(r.motion.witness[1])
         << ", " << float_number(r.motion.witness[2]) << ")\n";
+    s << certificate_line(r);
   }
   s << "decided by: the float twin alone (every sign certified; values with certified bounds)\n";
   return s.str();
@@ -350,6 +367,7 @@ std::string limit_surface_unknown_json(const Ls_options& lo, const Support_item&
       s << ", \"slides\": {\"distribution\": " << distribution_json(r.vertices[*m.sliding_vertex]) << "}}";
     }
     if (m.separating_twist) s << ", \"separating_twist\": " << jv(*m.separating_twist);
+    s << certificate_fields(r);
   }
   s << "}";
   return s.str();
@@ -388,6 +406,7 @@ std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item
         s << "undecided (within the resolution of the limit surfaces; refine --sides)\n";
         break;
     }
+    s << certificate_line(r);
   }
   s << "convention: " << kConvention << "\n";
   return s.str();
@@ -417,6 +436,12 @@ int run_limit_surface(const Options& o, const std::string& text, const std::stri
   if (r.admissible && (lo.list || !lo.off_file.empty() || !lo.obj_file.empty() || !lo.svg_file.empty()))
     throw Input_error(source + ": support: the forces of some points are not given, so there is no one limit surface "
                       "to list or draw (--list, --off, --obj, --svg need every force)");
+  if (!o.certificate_file.empty()) {
+    if (r.certificate.empty())
+      throw Failure(Status::undecided, cli_message(Status::undecided, "the load's motion is undecided: no certificate to "
+                                                                      "write"));
+    write_file(o.certificate_file, r.certificate + "\n");
+  }
   if (!lo.off_file.empty()) write_file(lo.off_file, off_text(r.in, r.out));
   if (!lo.obj_file.empty()) write_file(lo.obj_file, obj_text(r.in, r.out));
   if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.sides));

@@ -436,7 +436,7 @@ py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::st
   q.sides = checked_sides(sides);
   if (twist) q.twist = nonzero_twist(*twist);
   if (load) q.load = vec3(*load, "load");
-  const Support_item r = answer_support(s.scene, s.source, exact_request(mode, "limit_surface"), q);
+  const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "limit_surface"), q);
   raise_unless_answered(r.status, r.message);
   if (r.admissible) return unknown_distribution(r, mode, q);
   const Sliding_answer& sa = r.sliding;
@@ -471,7 +471,7 @@ py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>
   q.question = Support_question::sliding;
   q.sides = checked_sides(sides);
   if (twist) q.twist = nonzero_twist(*twist);
-  const Support_item r = answer_support(s.scene, s.source, exact_request(mode, "sliding"), q);
+  const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "sliding"), q);
   raise_unless_answered(r.status, r.message);
   if (r.admissible) return unknown_distribution(r, mode, q);
   py::dict d;

@@ -20,6 +20,7 @@
 #include "exact/pipeline/pipeline.h"
 #include "exact/sliding/distribution.h"
 #include "exact/sliding/limit_surface.h"
+#include "exact/sliding/motion_certificate.h"
 #include "exact/sliding/sliding.h"
 #include "exact/sliding/unknown_motion.h"
 #include "float/limit_surface_twin.h"
@@ -64,6 +65,11 @@ struct Support_item {
   std::optional<Power_range> power;
   Vec2 pressure_center;
   std::optional<Motion_over_f> motion_over;  // limit-surface with a load
+  // limit-surface with a load: the certificate of its motion (proofs/certificate-format.md §6), checked by the
+  // independent checker; empty when undecided. A verdict for which no rational witness was found (a load
+  // within the inscribed 1024-gons' resolution of the limit surface) is undecided, with `uncertified` saying so.
+  std::string certificate;
+  std::string uncertified;
 };
 
 // Reads `text` (eagerly) and answers; never throws. A scene without a support is bad input; so is a
@@ -75,7 +81,8 @@ struct Support_item {
 Support_item answer_support(std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query);
 // The same for a scene already read.
-Support_item answer_support(const Scene& scene, std::string_view source, const Request& request,
+// `text`: a text of the scene for the checker (its own text, or write_scene(scene)).
+Support_item answer_support(const Scene& scene, std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query);
 
 }  // namespace wrenchkit

@@ -108,6 +108,7 @@ Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Ve
     const Polygonal_ls model(merge_support(s, &v[i]), make_directions(sides));
     const Motion_decision m = decide_motion(model, p, mode);
     r.per_vertex.push_back(m.motion);
+    r.decisions.push_back(m);
     if (m.motion == Motion::sticks && !r.sticking_vertex) r.sticking_vertex = i;
     if (m.motion == Motion::slides && !r.sliding_vertex) r.sliding_vertex = i;
     if (m.motion == Motion::slides && std::string(m.decided_by) == "float")

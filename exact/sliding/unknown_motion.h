@@ -49,6 +49,7 @@ const char* motion_over_name(Motion_over m);
 struct Motion_over_f {
   Motion_over motion = Motion_over::undecided;
   std::vector<Motion> per_vertex;                 // each vertex's own answer (decide_motion)
+  std::vector<Motion_decision> decisions;         // … and how it was decided (the search's witness twist)
   std::optional<std::size_t> sticking_vertex, sliding_vertex;  // depends: witnesses among the vertices
   std::optional<Stick_witness> sticking;          // depends found by the LP (step 2)
   std::optional<Vec3q> separating_twist;          // slides (step 3)
