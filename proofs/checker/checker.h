@@ -35,7 +35,11 @@ struct Limits {
   std::size_t max_digits = 10000;  // digits of a scene number's text (exponent included) and of its value written out
   long max_exponent = 10000;       // |exponent| of a scene number
   std::size_t max_depth = 64;      // JSON containers nested in one another
-  std::size_t max_contacts = 100000;
+  std::size_t max_contacts = 100000;  // also the limit on support.points
+  // Sliding certificates that claim "sticks" for every admissible distribution (certificate-format.md
+  // §6): the checker enumerates the vertices of F itself, over n + C(n,2) + C(n,3) candidate bases for
+  // n points without a given force, and rejects a larger certificate as too large to check.
+  unsigned long long max_vertex_bases = 2000000;
 };
 
 enum class Outcome {
