@@ -1,6 +1,6 @@
 // proofs/checker/checker.cpp - certificate format v1: reading the scene, recomputing its generators
 // and its load, and the conditions of proofs/certificate-format.md §3.1 (holds = true), §3.2
-// (holds = false) and §3.3 (equilibrium).
+// (holds = false), §3.3 (equilibrium) and §6 (motion: sliding on the support, [SL-1]).
 #include "proofs/checker/checker.h"
 
 #include <gmpxx.h>
@@ -1236,7 +1236,8 @@ class Motion_check {
     for (std::size_t i = 0; i < s_.points.size(); ++i)
       if (!s_.points[i].known) unknown.push_back(i);
     const unsigned long long n = unknown.size();
-    const unsigned long long bases = n + n * (n - 1) / 2 + n * (n - 1) * (n - 2) / 6;
+    const unsigned long long bases =  // no overflow: n is at most max_contacts, capped here at 10^6
+        n > 1000000 ? ULLONG_MAX : n + n * (n - 1) / 2 + n * (n - 1) * (n - 2) / 6;
     if (bases > lim_.max_vertex_bases)
       throw Failure{"vertices: too large to check: " + std::to_string(n) + " points without a given force give " +
                     std::to_string(bases) + " candidate bases (limit " + std::to_string(lim_.max_vertex_bases) + ")"};

@@ -10,7 +10,13 @@
 //     a wrench, or gravity at body.com), with the friction generators: holds = true when strictly
 //     positive weights of distinct generators (possibly none) sum to -w_ext; holds = false when a
 //     twist has non-negative power against every generator and positive power against w_ext. A
-//     scene without a load has no equilibrium claim: such a certificate is rejected.
+//     scene without a load has no equilibrium claim: such a certificate is rejected;
+//   * property "motion" (certificate-format.md §6, proofs/notes/SL-1), about a load p applied to the
+//     scene's support: "sticks" (rational support forces inside their friction discs that carry p),
+//     "slides" (a twist and rational speed bounds whose power bound p beats), for the scene's known
+//     distribution or for every admissible distribution F (a stick witness for every vertex of F,
+//     which the checker enumerates itself; an LP dual bound for slides), or "depends" (one admissible
+//     distribution sticks, another slides). An empty F is a bad scene, with the reason.
 // Every generator, and the load, is recomputed from the scene text; the certificate supplies only
 // indices and rationals. All arithmetic is exact (GMP rationals); there is no floating point.
 //
