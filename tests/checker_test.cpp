@@ -20,6 +20,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -1322,10 +1323,21 @@ TEST(CheckerExamples, SlidingExamples) {
                         "barbell_known.slides.valid.json", "table_four_legs.missing_vertex.invalid.json",
                         "table_four_legs.dual_violated.invalid.json", "barbell_known.depends_on_known.invalid.json"})
     EXPECT_TRUE(fs::exists(examples / f)) << f;
-  // The load (1/2, 1/2, 0.9) depends: neither "sticks" nor "slides" for every distribution can be
-  // certified with the depends certificate's witnesses (each diagonal's witness alone is not enough).
+  // The load (1/2, 1/2, 0.9) of theory-sliding.md §6 depends: one diagonal sticks, the other slides.
   const std::string depends = slurp(examples / "table_four_legs.depends.valid.json");
   EXPECT_EQ(check(table_scene, depends).outcome, Outcome::accepted);
+  // check_all reads the scene once and answers each certificate as check() does
+  const std::vector<std::string> certs = {depends, slurp(examples / "table_four_legs.missing_vertex.invalid.json"),
+                                          slurp(examples / "table_four_legs.slides_for_every.valid.json"), "{}"};
+  const std::vector<std::string_view> views(certs.begin(), certs.end());
+  const std::vector<Result> all = wrenchkit_checker::check_all(table_scene, views);
+  ASSERT_EQ(all.size(), certs.size());
+  for (std::size_t k = 0; k < certs.size(); ++k) {
+    EXPECT_EQ(all[k].outcome, check(table_scene, certs[k]).outcome) << k;
+    EXPECT_EQ(all[k].message, check(table_scene, certs[k]).message) << k;
+  }
+  EXPECT_EQ(all[0].outcome, Outcome::accepted);
+  EXPECT_EQ(all[1].outcome, Outcome::rejected);
 }
 
 // ---------------------------------------------------------------------------------------------
