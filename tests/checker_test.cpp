@@ -943,6 +943,21 @@ TEST(CheckerMotion, KeysAndScenes) {
             "sticking.distribution[0]: 1/2 is not the given force 1/4 of support.points[0]");
 }
 
+TEST(CheckerMotion, NumbersTooLargeToKeep) {
+  // Coordinates and mu of 101 digits are kept as text and read again when needed (as for contacts):
+  // the table scaled by 10^100, mu = 10^-100 from support.mu, the same certificate with moments scaled.
+  const std::string big = with_support(R"({"mu": "1e-100", "weight": 1, "pressure_center": [0, 0], "points": [
+      {"at": ["1e100", "1e100"]}, {"at": ["-1e100", "1e100"]}, {"at": ["-1e100", "-1e100"]}, {"at": ["1e100", "-1e100"]}]})");
+  const std::string g = "1/4" + std::string(100, '0');  // 1/(4 * 10^100)
+  const std::string cert = motion_head + R"("load": ["1/2)" + std::string(100, '0') + R"(", "0", "0"], "motion": "sticks", "vertices": [
+      {"distribution": ["1/2", "0", "1/2", "0"], "support_forces": [[")" + g + R"(", "0"], ["0", "0"], [")" + g + R"(", "0"], ["0", "0"]]},
+      {"distribution": ["0", "1/2", "0", "1/2"], "support_forces": [["0", "0"], [")" + g + R"(", "0"], ["0", "0"], [")" + g + R"(", "0"]]}]})";
+  EXPECT_EQ(check(big, cert).outcome, Outcome::accepted) << check(big, cert).message;
+  std::string over = cert;
+  over.replace(over.find(g), g.size(), "1/1" + std::string(100, '0'));  // 10^-100 > mu f = 10^-100 / 2
+  EXPECT_EQ(check(big, over).message.rfind("vertices[0].support_forces[0]: |g|^2 = ", 0), 0u) << check(big, over).message;
+}
+
 TEST(CheckerMotion, TooLargeToCheck) {
   Limits small;
   small.max_vertex_bases = 13;  // the table has 4 + 6 + 4 = 14 candidate bases

@@ -413,7 +413,7 @@ Support read_support(Reader& r, const Limits& lim) {
   struct Raw {
     std::vector<std::string> text;
     std::vector<Q> value;
-    bool has_mu = false;
+    bool has_mu = false, positive = false;  // positive: a given force > 0
     std::string path;
   };
   std::vector<Raw> raw;  // points, before support.mu (which may follow) is known
@@ -461,7 +461,8 @@ Support read_support(Reader& r, const Limits& lim) {
         }
         if (!has_at) r.fail("missing required key \"at\"");
         p.text = {std::move(at[0]), std::move(at[1]), std::move(mu), has_force ? std::move(force) : std::string()};
-        p.value = {at_value[0], at_value[1], mu_value, force_value};
+        p.value = kept({at_value[0], at_value[1], mu_value, force_value});  // mu 0 until support.mu is known
+        p.positive = has_force && force_value > 0;
         raw.push_back(std::move(p));
       }
     } else {
@@ -474,13 +475,17 @@ Support read_support(Reader& r, const Limits& lim) {
   bool any_force = false;
   for (Raw& p : raw) {
     if (!p.has_mu && !has_mu) throw Failure{p.path + ": missing key \"mu\" (and support.mu gives no default)"};
-    if (!p.has_mu) p.text[2] = mu_text, p.value[2] = support_mu;
+    if (!p.has_mu) {
+      p.text[2] = mu_text;
+      if (!p.value.empty()) p.value[2] = support_mu;
+      if (!small(support_mu)) p.value.clear();
+    }
     Support_point sp;
     sp.known = !p.text[3].empty();
-    any_force = any_force || (sp.known && p.value[3] > 0);
+    any_force = any_force || p.positive;
     s.unknown += sp.known ? 0 : 1;
     sp.text = std::move(p.text);
-    sp.value = kept(std::move(p.value));
+    sp.value = std::move(p.value);
     s.points.push_back(std::move(sp));
   }
   if (s.unknown == 0 && !any_force) throw Failure{"support.points: all forces are zero"};
