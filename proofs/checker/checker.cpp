@@ -1172,25 +1172,38 @@ class Motion_check {
                     std::to_string(s_.points.size()) + " points"};
   }
 
-  // Sticks under f (theory-sliding §3): |g_i|^2 <= (mu_i f_i)^2 and sum (g_i, r_i x g_i) = p.
+  // Sticks under f: p in the INTERIOR of LS(f) (a load on the limit surface slides, docs/theory.md §11):
+  // |g_i|^2 < (mu_i f_i)^2 where mu_i f_i > 0, g_i = 0 where it is 0, sum (g_i, r_i x g_i) = p, and LS(f)
+  // is three-dimensional (two distinct points with mu_i f_i > 0), so the sum of the discs' relative
+  // interiors is its interior (SL-1).
   void stick(const std::vector<Q>& f, const std::vector<Pair>& g, const std::string& path) const {
     size(g.size(), path);
     Q sum[3] = {0, 0, 0};
+    bool two = false, one = false;
+    Q ax, ay;
     for (std::size_t i = 0; i < g.size(); ++i) {
       const Point_values v = values(s_.points[i], lim_);
       const Q lhs = g[i][0] * g[i][0] + g[i][1] * g[i][1], bound = v.mu * f[i];
-      if (lhs > bound * bound)
-        throw Failure{path + "[" + std::to_string(i) + "]: |g|^2 = " + show(lhs) + " is more than (mu f)^2 = " +
-                      show(Q(bound * bound))};
+      if (sgn(bound) == 0 ? sgn(lhs) != 0 : !(lhs < bound * bound))
+        throw Failure{path + "[" + std::to_string(i) + "]: |g|^2 = " + show(lhs) + " is not less than (mu f)^2 = " +
+                      show(Q(bound * bound)) + (sgn(bound) == 0 ? " (no friction there: g must be 0)" : "")};
+      if (sgn(bound) > 0) {
+        if (one && (v.x != ax || v.y != ay)) two = true;
+        if (!one) one = true, ax = v.x, ay = v.y;
+      }
       sum[0] += g[i][0], sum[1] += g[i][1], sum[2] += v.x * g[i][1] - v.y * g[i][0];
     }
+    if (!two)
+      throw Failure{path + ": friction acts at fewer than two distinct points, so the limit surface is flat and no "
+                           "load is inside it"};
     if (sum[0] != c_.load[0] || sum[1] != c_.load[1] || sum[2] != c_.load[2])
       throw Failure{path + ": the support forces give the load (" + show(sum[0]) + ", " + show(sum[1]) + ", " +
                     show(sum[2]) + "), not (" + show(c_.load[0]) + ", " + show(c_.load[1]) + ", " +
                     show(c_.load[2]) + ")"};
   }
 
-  // Slides (theory-sliding §3): u_i >= 0, u_i^2 >= |v_i(q)|^2 and q.p > a bound on the frictional
+  // Slides: p not in the interior of LS(f) (on or past the limit surface): q != 0, u_i >= 0,
+  // u_i^2 >= |v_i(q)|^2 and q.p >= a bound on the frictional
   // power h_f(q) = sum mu_i f_i |v_i(q)|: sum mu_i f_i u_i for the distribution f, or, with a dual
   // (every f in F), sum_known mu_i f_i u_i + y0 W' + yx M'x + yy M'y where mu_i u_i <= y0 + y.r_i for
   // every unknown i.
@@ -1198,6 +1211,7 @@ class Motion_check {
              const Q* dual) const {
     const std::string path = prefix + "speed_bounds";
     size(u.size(), path);
+    if (sgn(q[0]) == 0 && sgn(q[1]) == 0 && sgn(q[2]) == 0) throw Failure{prefix + "twist: the zero twist"};
     Q bound = 0;
     for (std::size_t i = 0; i < u.size(); ++i) {
       const Point_values v = values(s_.points[i], lim_);
@@ -1216,8 +1230,8 @@ class Motion_check {
     }
     if (dual) bound += dual[0] * s_.rest_weight + dual[1] * s_.rest_moment[0] + dual[2] * s_.rest_moment[1];
     const Q power = q[0] * c_.load[0] + q[1] * c_.load[1] + q[2] * c_.load[2];
-    if (!(power > bound))
-      throw Failure{prefix + "twist: power q.p = " + show(power) + " is not more than " +
+    if (power < bound)
+      throw Failure{prefix + "twist: power q.p = " + show(power) + " is less than " +
                     (dual ? "the dual bound " : "sum mu_i f_i u_i = ") + show(bound)};
   }
 
