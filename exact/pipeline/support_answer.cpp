@@ -107,6 +107,17 @@ std::vector<Vec3q> slide_candidates(const Support& s, const std::vector<Rational
   }
   if (cone)
     for (const Vec3z& g : cone->generators) c.push_back({Rational(g[0]), Rational(g[1]), Rational(g[2])});
+  // A load far outside: q = p itself; a flat limit surface (friction at one point r, or none): the rotations
+  // about r, which cost no friction.
+  if (p[0] != 0 || p[1] != 0 || p[2] != 0) c.push_back(p);
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Support_point& pt = s.points[i];
+    if ((pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0))) * f[i] == 0) continue;
+    c.push_back({pt.at.y, -pt.at.x, Rational(1)});  // v(r) = (vx − w y, vy + w x) = 0
+    c.push_back({-pt.at.y, pt.at.x, Rational(-1)});
+    break;
+  }
+  c.push_back({Rational(1), Rational(0), Rational(0)});
   return c;
 }
 
@@ -123,7 +134,14 @@ void certify_known(const Support_query& q, Support_item& r) {
   const Admissible a = admissible_set(r.scene);
   const Vec3q& p = *q.load;
   if (r.motion.motion == Motion::sticks) {
-    if (auto w = stick_witness_refined(s, a, p, std::max(q.sides, 8), a.given)) r.certificate = sticks_certificate(p, *w);
+    if (auto w = stick_witness_refined(s, a, p, std::max(q.sides, 8), a.given)) {
+      r.certificate = sticks_certificate(p, *w);
+    } else if (auto sw = first_slide_witness(s, a.given, p, slide_candidates(s, a.given, p, r.motion, q.sides, nullptr))) {
+      // No interior at all (a flat limit surface: friction at fewer than two points): the load is on it and slides.
+      r.certificate = slides_certificate(p, *sw);
+      r.motion.motion = Motion::slides;
+      r.motion.decided_by = "certificate";
+    }
   } else if (r.motion.motion == Motion::slides) {
     const bool cone = !r.cone_out.generators.empty() || !r.cone_out.lineality.empty();
     const auto c = slide_candidates(s, a.given, p, r.motion, q.sides, cone ? &r.cone_out : nullptr);
@@ -161,7 +179,7 @@ void certify_over(const Support_query& q, Support_item& r) {
       coef[i] = (pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0))) * u[i];
     }
     const F_optimum o = maximise_over(s, a, coef);
-    if (t[0] * p[0] + t[1] * p[1] + t[2] * p[2] > o.value) r.certificate = slides_for_every_certificate(p, t, u, o.dual);
+    if (t[0] * p[0] + t[1] * p[1] + t[2] * p[2] >= o.value) r.certificate = slides_for_every_certificate(p, t, u, o.dual);
   } else if (m.motion == Motion_over::depends) {
     std::optional<Stick_witness> sticking = m.sticking;
     if (!sticking) sticking = stick_witness_refined(s, a, p, sides, r.vertices[*m.sticking_vertex]);

@@ -24,7 +24,7 @@ std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<R
     const Rational mu = pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0));
     bound += mu * f[i] * w.speed_bounds[i];
   }
-  if (q[0] * p[0] + q[1] * p[1] + q[2] * p[2] > bound) return w;
+  if (q[0] * p[0] + q[1] * p[1] + q[2] * p[2] >= bound) return w;
   return std::nullopt;
 }
 

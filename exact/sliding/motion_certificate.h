@@ -22,7 +22,8 @@ struct Slide_witness {
 // Rational upper bounds of the speeds |v_i(q)| of every support point (80-bit square-root brackets).
 std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q);
 
-// The slide witness of q for the distribution f when q·p > Σ μ_i f_i u_i; nothing otherwise.
+// The slide witness of q (≠ 0) for the distribution f when q·p ≥ Σ μ_i f_i u_i (p on or past the limit surface:
+// it slides); nothing otherwise.
 std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
                                            const Vec3q& q);
 

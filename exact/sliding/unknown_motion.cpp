@@ -28,8 +28,18 @@ std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a
   const std::size_t k = s.points.size(), n = d.u.size();
   const bool free_f = !fixed && !a.known();
   const std::vector<Rational> f0 = fixed ? *fixed : a.given;
-  // Columns: λ_ij (k·n), slack s_i (k), then the unknown forces (free_f only).
-  const std::size_t lambda = k * n, slack = lambda, force = lambda + k;
+  if (!free_f) {  // friction at two distinct points, or LS(f) is flat and has no interior
+    const Vec2* first = nullptr;
+    bool two = false;
+    for (std::size_t i = 0; i < k && !two; ++i) {
+      if (mu_of(s, s.points[i]) * f0[i] == 0) continue;
+      if (first && (first->x != s.points[i].at.x || first->y != s.points[i].at.y)) two = true;
+      if (!first) first = &s.points[i].at;
+    }
+    if (!two) return std::nullopt;
+  }
+  // Columns: λ_ij (k·n), slack s_i (k), the margin t (f fixed), then the unknown forces (free_f only).
+  const std::size_t lambda = k * n, slack = lambda, margin = lambda + k, force = margin + 1;
   const std::size_t cols = force + (free_f ? a.unknown.size() : 0);
   std::vector<std::vector<Rational>> A;
   std::vector<Rational> b;
@@ -45,13 +55,14 @@ std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a
     A.push_back(std::move(r));
     b.push_back(p[static_cast<std::size_t>(row)]);
   }
-  // Σ_j λ_ij + s_i = μ_i f_i (f_i a column when free).
+  // Σ_j λ_ij + s_i (+ t where μ_i f_i > 0, f fixed) = μ_i f_i (f_i a column when free).
   for (std::size_t i = 0; i < k; ++i) {
     std::vector<Rational> r(cols);
     for (std::size_t j = 0; j < n; ++j) r[i * n + j] = 1;
     r[slack + i] = 1;
     const Rational mu = mu_of(s, s.points[i]);
     Rational rhs = mu * f0[i];
+    if (!free_f && rhs > 0) r[margin] = 1;
     if (free_f)
       for (std::size_t u = 0; u < a.unknown.size(); ++u)
         if (a.unknown[u] == i) {
@@ -75,8 +86,11 @@ std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a
     b.push_back(a.rest_moment.x);
     b.push_back(a.rest_moment.y);
   }
-  const Lp_result lp = maximise(A, b, std::vector<Rational>(cols));
+  std::vector<Rational> objective(cols);
+  if (!free_f) objective[margin] = 1;  // the largest common margin
+  const Lp_result lp = maximise(A, b, objective);
   if (lp.status != Lp_result::Status::optimal) return std::nullopt;
+  if (!free_f && lp.x[margin] <= 0) return std::nullopt;  // on the inscribed polygons' boundary: not inside
   Stick_witness w;
   w.distribution = f0;
   if (free_f)
@@ -95,7 +109,7 @@ std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a
 bool slides_for_every(const Support& s, const Admissible& a, const Vec3q& p, const Vec3q& q) {
   if (q[0] == 0 && q[1] == 0 && q[2] == 0) return false;
   const Power_range r = power_range(s, a, q);
-  return q[0] * p[0] + q[1] * p[1] + q[2] * p[2] > r.upper;
+  return q[0] * p[0] + q[1] * p[1] + q[2] * p[2] >= r.upper;
 }
 
 Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Vec3q& p, Mode mode, int sides) {
@@ -133,10 +147,12 @@ Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Ve
     r.decided_by = "none";
     return r;
   }
-  if ((r.sticking = stick_witness(s, a, p, sides))) {
-    r.motion = Motion_over::depends;
-    r.decided_by = "lp";
-    return r;
+  if (const auto some = stick_witness(s, a, p, sides)) {  // closed: confirmed strictly with that distribution
+    if ((r.sticking = stick_witness(s, a, p, sides, &some->distribution))) {
+      r.motion = Motion_over::depends;
+      r.decided_by = "lp";
+      return r;
+    }
   }
   if (twists.size() > 1) {  // their sum too: a twist between the vertices' own
     Vec3q sum{};

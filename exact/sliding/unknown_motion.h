@@ -28,19 +28,24 @@
 
 namespace wrenchkit {
 
-// Rational support forces of one distribution holding the load: g_i·g_i ≤ (μ_i f_i)², Σ (g_i, r_i × g_i) = p.
+// Rational support forces of one distribution holding the load: g_i·g_i < (μ_i f_i)² (g_i = 0 where μ_i f_i = 0),
+// Σ (g_i, r_i × g_i) = p, with friction at two distinct points: p is in the interior of LS(f), so it sticks (a
+// load on the limit surface slides; proofs/notes/SL-1).
 struct Stick_witness {
   std::vector<Rational> distribution;  // one force per support point
   std::vector<Vec2> forces;            // g_i, one per support point
 };
 
-// A stick witness on the inscribed N-gons (N = sides): for the distribution `fixed`, or for some distribution
-// of F when `fixed` is null; nothing when p is not in LS_in^N of any of them. Exact LP [LP-1].
+// A stick witness on the inscribed N-gons (N = sides) for the distribution `fixed`: the exact LP [LP-1]
+// maximising a common margin t with Σ_j λ_ij + t ≤ μ_i f_i (|u_j| = 1, so |g_i| ≤ Σ_j λ_ij < μ_i f_i when
+// t > 0); nothing when p is not strictly inside LS_in^N(f) or friction acts at fewer than two distinct points.
+// With `fixed` null: some distribution of F with p in LS_in^N(f) (closed; the caller confirms it strictly with
+// that f fixed).
 std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a, const Vec3q& p, int sides,
                                            const std::vector<Rational>* fixed = nullptr);
 
-// Does q prove that p slides for every distribution of F (q·p > max_F Σ μ_i f_i u_i, u_i the rational upper
-// bounds of the speeds)? Exact.
+// Does q prove that p slides for every distribution of F (q ≠ 0 and q·p ≥ max_F Σ μ_i f_i u_i, u_i the rational
+// upper bounds of the speeds: p is nowhere inside a limit surface of F)? Exact.
 bool slides_for_every(const Support& s, const Admissible& a, const Vec3q& p, const Vec3q& q);
 
 enum class Motion_over { sticks, slides, depends, undecided };
