@@ -25,6 +25,7 @@ namespace {
 
 struct Ls_options {
   Mode mode = Mode::hybrid;
+  bool polytopes = true;
   int sides = 32;
   std::optional<Rational> tolerance;
   int sets_built = 0;  // direction sets tried to meet the tolerance
@@ -136,6 +137,10 @@ Ls_options limit_surface_options(const Options& o) {
   lo.svg_file = o.svg_file;
   lo.list = o.list;
   lo.mode = o.mode;
+  // The polytopes are built when asked for (--sides, --tolerance, --list, the exports) or when nothing else is
+  // asked; a --load or --twist query alone is answered on the true surface, building them only if needed.
+  lo.polytopes = o.sides || o.tolerance || lo.list || !lo.off_file.empty() || !lo.obj_file.empty() ||
+                 !lo.svg_file.empty() || (!lo.load && !lo.twist);
   if (lo.mode == Mode::float_only && (lo.list || !lo.off_file.empty() || !lo.obj_file.empty() || !lo.svg_file.empty()))
     throw Usage_error("--list, --off, --obj and --svg show the exact polytopes: not with --mode float");
   return lo;
@@ -180,6 +185,7 @@ Support_item compute_limit_surface(const Ls_options& lo, const Options& o, const
   q.sides = lo.sides;
   q.twist = lo.twist;
   q.load = lo.load;
+  q.polytopes = lo.polytopes;
   return answered(answer_support(text, source, request_of(o), q));
 }
 
@@ -206,8 +212,11 @@ std::string limit_surface_json(const Ls_options& lo, const Support_item& r) {
     << ", \"support\": {\"input_points\": " << r.scene.support->points.size() << ", \"points\": " << sup.points.size()
     << ", \"collinear\": " << (sup.collinear ? "true" : "false") << ", \"mu_f0\": " << jq(sa.mu_f0)
     << ", \"center_of_friction\": [" << jq(sa.center_of_friction.x) << ", " << jq(sa.center_of_friction.y)
-    << "]}, \"dimension\": " << model.dimension() << ", \"inner\": " << polytope_json(r.in, lo.list)
-    << ", \"outer\": " << polytope_json(r.out, lo.list);
+    << "]}, \"dimension\": " << model.dimension();
+  if (r.polytopes_built)
+    s << ", \"inner\": " << polytope_json(r.in, lo.list) << ", \"outer\": " << polytope_json(r.out, lo.list);
+  else
+    s << ", \"polytopes\": false";  // a query alone: answered without them (--sides or --list builds them)
   if (lo.twist) {
     s << ", \"twist\": " << jv(*lo.twist) << ", \"load_for_twist\": {\"inner\": " << face_json(sa.inner_face)
       << ", \"outer\": " << face_json(sa.outer_face) << ", \"power\": {\"inner\": " << jq(sa.h_inner)
@@ -223,10 +232,11 @@ std::string limit_surface_json(const Ls_options& lo, const Support_item& r) {
       for (std::size_t i = 0; i < c.lineality.size(); ++i) t += (i ? ", " : "") + jz(c.lineality[i]);
       return t + "]}";
     };
-    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\""
-      << motion_fields(r) << ", \"gauge\": {\"outer\": " << gauge_json(r.gauge_out) << ", \"inner\": " << gauge_json(r.gauge_in)
-      << "}" << certificate_fields(r);
-    if (r.motion.motion != Motion::sticks)
+    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\"" << motion_fields(r);
+    if (r.polytopes_built)
+      s << ", \"gauge\": {\"outer\": " << gauge_json(r.gauge_out) << ", \"inner\": " << gauge_json(r.gauge_in) << "}";
+    s << certificate_fields(r);
+    if (r.polytopes_built && r.motion.motion != Motion::sticks)
       s << ", \"twist_cone\": {\"outer\": " << cone_json(r.cone_out) << ", \"inner\": " << cone_json(r.cone_in) << "}";
   }
   s << "}";
@@ -252,8 +262,12 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
     s << "note: one support point: the limit surface is a flat disc in the plane of its rotation twist (dimension 2);"
          " 'facets' are its two sides\n";
   if (model.dimension() == 0) s << "note: no point has mu*f > 0: the limit surface is the single point 0\n";
-  for (const auto& [name, P] : {std::pair<const char*, const Ls_polytope*>{"inner", &r.in}, {"outer", &r.out}})
-    s << name << ": " << P->facets.size() << " facets, " << P->vertices.size() << " vertices, " << P->edges << " edges\n";
+  if (r.polytopes_built)
+    for (const auto& [name, P] : {std::pair<const char*, const Ls_polytope*>{"inner", &r.in}, {"outer", &r.out}})
+      s << name << ": " << P->facets.size() << " facets, " << P->vertices.size() << " vertices, " << P->edges
+        << " edges\n";
+  else
+    s << "polytopes: not built (the query is answered on the true surface; --sides or --list builds them)\n";
   s << "convention: " << kConvention << "\n";
   if (lo.twist) {
     s << "twist " << tv(*lo.twist) << ": " << sa.cls.text << "\n";
@@ -270,15 +284,18 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
     if (r.true_power) s << "  true power (float twin, certified): " << bounded_text(*r.true_power) << "\n";
   }
   if (lo.load) {
-    s << "load " << tv(*lo.load) << ": " << motion_name(r.motion.motion) << "  (gauge between " << gauge_text(r.gauge_out)
-      << " and " << gauge_text(r.gauge_in) << "; sticks if < 1, slides if >= 1; decided by "
+    s << "load " << tv(*lo.load) << ": " << motion_name(r.motion.motion) << "  (";
+    if (r.polytopes_built)
+      s << "gauge between " << gauge_text(r.gauge_out) << " and " << gauge_text(r.gauge_in)
+        << "; sticks if < 1, slides if >= 1; ";
+    s << "decided by "
       << (std::string(r.motion.decided_by) == "float" ? "the float twin's certified search on the true surface"
                                                        : std::string(r.motion.decided_by) == "polygons" ? "the polygons"
                                                                                                          : "nothing")
       << ")\n";
     if (r.motion.motion == Motion::undecided) s << "  undecided: refine with more --sides or a smaller --tolerance\n";
     s << certificate_line(r);
-    if (r.motion.motion != Motion::sticks) {
+    if (r.polytopes_built && r.motion.motion != Motion::sticks) {
       s << "  twists (outward normals of LS_out at the load's direction):";
       for (const Vec3z& g : r.cone_out.generators) s << " " << tz(g);
       for (const Vec3z& g : r.cone_out.lineality) s << " +-" << tz(g);

@@ -34,7 +34,8 @@ void twin_polygons(const Support_query& q, Support_item& r) {
 
 void answer_limit_surface(const Support_query& q, Support_item& r) {
   const Polygonal_ls& model = r.model.emplace(merge_support(*r.scene.support), make_directions(q.sides));
-  if (model.candidate_count() > kMaxCandidates)
+  const bool build = q.polytopes && r.mode != Mode::float_only;
+  if (build && model.candidate_count() > kMaxCandidates)
     throw Input_error("sides " + std::to_string(q.sides) + " with " + std::to_string(model.support().points.size()) +
                       " distinct support points needs " + std::to_string(model.candidate_count()) +
                       " candidate normals, more than the limit " + std::to_string(kMaxCandidates) +
@@ -50,13 +51,19 @@ void answer_limit_surface(const Support_query& q, Support_item& r) {
     }
     return;
   }
-  r.in = model.build(Side::inner);
-  r.out = model.build(Side::outer);
+  if (build) {
+    r.in = model.build(Side::inner);
+    r.out = model.build(Side::outer);
+    r.polytopes_built = true;
+  }
   r.sliding = compute_sliding(model, q.twist);
   if (!q.load) return;
+  // Hybrid decides on the true surface first; the polytopes only when it cannot tell (decide_motion builds them
+  // then, within kMaxCandidates).
+  r.motion = decide_motion(model, *q.load, r.mode, build ? &r.in : nullptr, build ? &r.out : nullptr);
+  if (!build) return;
   r.gauge_in = model.gauge(r.in, Side::inner, *q.load);
   r.gauge_out = model.gauge(r.out, Side::outer, *q.load);
-  r.motion = decide_motion(model, *q.load, r.mode, &r.in, &r.out);
   if (r.motion.motion != Motion::sticks) {
     r.cone_in = model.normal_cone(r.in, Side::inner, *q.load);
     r.cone_out = model.normal_cone(r.out, Side::outer, *q.load);
@@ -102,6 +109,7 @@ std::vector<Vec3q> slide_candidates(const Support& s, const std::vector<Rational
   std::optional<Polygonal_ls::Normal_cone> built;
   if (!cone && std::string(d.decided_by) != "float") {
     const Polygonal_ls model(merge_support(s, &f), make_directions(sides));
+    if (model.candidate_count() > kMaxCandidates) return c;
     const Ls_polytope out = model.build(Side::outer);
     cone = &built.emplace(model.normal_cone(out, Side::outer, p));
   }
@@ -143,9 +151,16 @@ void certify_known(const Support_query& q, Support_item& r) {
       r.motion.decided_by = "certificate";
     }
   } else if (r.motion.motion == Motion::slides) {
-    const bool cone = !r.cone_out.generators.empty() || !r.cone_out.lineality.empty();
+    const bool cone = r.polytopes_built && (!r.cone_out.generators.empty() || !r.cone_out.lineality.empty());
     const auto c = slide_candidates(s, a.given, p, r.motion, q.sides, cone ? &r.cone_out : nullptr);
     if (auto w = first_slide_witness(s, a.given, p, c)) r.certificate = slides_certificate(p, *w);
+  }
+  if (r.motion.motion == Motion::sticks && r.certificate.empty() &&
+      s.points.size() * static_cast<std::size_t>(std::max(q.sides, 8)) > kMaxStickWitnessColumns) {
+    // Too many support points for the stick witness LP: the certified search's verdict stands, unchecked.
+    r.uncertified = "no certificate: the stick witness LP is run up to " + std::to_string(kMaxStickWitnessColumns) +
+                    " columns (support points x sides); the verdict is the float twin's certified search's";
+    return;
   }
   if (r.motion.motion != Motion::undecided && r.certificate.empty()) {
     r.uncertified = std::string("the certified search says ") + motion_name(r.motion.motion) +

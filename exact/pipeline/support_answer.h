@@ -34,6 +34,7 @@ struct Support_query {
   int sides = 32;                // polygon sides N (even, 4..kMaxSides)
   std::optional<Vec3q> twist;    // the load for this twist (not zero)
   std::optional<Vec3q> load;     // limit-surface: does it stick or slide?
+  bool polytopes = true;         // limit-surface: build the exact polytopes (else only if nothing else decides)
 };
 
 struct Support_item {
@@ -43,7 +44,8 @@ struct Support_item {
   Mode mode = Mode::hybrid;
   // exact and hybrid (and limit-surface's model in float, for the search)
   std::optional<Polygonal_ls> model;
-  Ls_polytope in, out;          // limit-surface, exact and hybrid
+  Ls_polytope in, out;          // limit-surface, exact and hybrid, when built
+  bool polytopes_built = false;
   Sliding_answer sliding;       // exact and hybrid
   std::optional<Rational> gauge_in, gauge_out;  // with a load
   Motion_decision motion;                       // with a load

@@ -30,7 +30,7 @@ std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<R
 
 std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admissible& a, const Vec3q& p, int sides,
                                                    const std::vector<Rational>& f) {
-  for (int n = sides; n <= 1024; n *= 2)
+  for (int n = sides; n <= 1024 && s.points.size() * static_cast<std::size_t>(n) <= kMaxStickWitnessColumns; n *= 2)
     if (auto w = stick_witness(s, a, p, n, &f)) return w;
   return std::nullopt;
 }

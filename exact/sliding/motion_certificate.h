@@ -27,7 +27,9 @@ std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q);
 std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
                                            const Vec3q& q);
 
-// A stick witness for the distribution f, trying N = sides, 2·sides, … up to 1024 inscribed sides.
+// A stick witness for the distribution f, trying N = sides, 2·sides, … up to 1024 inscribed sides, as long as
+// the LP stays within kMaxStickWitnessColumns columns (support points × sides).
+constexpr std::size_t kMaxStickWitnessColumns = 16384;
 std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admissible& a, const Vec3q& p, int sides,
                                                    const std::vector<Rational>& f);
 

@@ -143,6 +143,7 @@ Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mo
     }
     if (mode == Mode::float_only) return d;
   }
+  if ((!inner || !outer) && model.candidate_count() > kMaxCandidates) return d;  // too large to build: undecided
   std::optional<Ls_polytope> built_in, built_out;
   if (!inner) inner = &built_in.emplace(model.build(Side::inner));
   if (!outer) outer = &built_out.emplace(model.build(Side::outer));
