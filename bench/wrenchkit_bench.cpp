@@ -33,6 +33,7 @@
 
 #include "bench/peers.h"
 #include "exact/statics/closure.h"
+#include "exact/pipeline/support_answer.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/statics/moment_labels.h"
 #include "testing/twin_agreement.h"
@@ -377,6 +378,74 @@ void register_limit_surface() {
 
 }  // namespace
 
+// Stick / slide through the pipeline, with certificates checked by the independent checker (issue 15's
+// targets): a support of k points on a disc (a discretised plate; random forces, or all unknown with the
+// weight at the centre), loads cycled over sticking, sliding and (unknown) depending ones. `polytopes`:
+// the same support's polytopes built at N = 32, for comparison.
+std::string plate_text(int k, bool unknown, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::string pts;
+  for (int i = 0; i < k; ++i) {
+    const double a = 6.283185307179586 * u(rng), r = std::sqrt(u(rng));
+    char b[160];
+    std::snprintf(b, sizeof b, "%s{\"at\": [\"%.6f\", \"%.6f\"]%s}", i ? ", " : "", r * std::cos(a), r * std::sin(a),
+                  unknown ? "" : ", \"force\": 1");
+    pts += b;
+  }
+  return std::string("{\"wrenchkit\": 1, \"support\": {\"mu\": \"1/2\"") +
+         (unknown ? ", \"weight\": 1, \"pressure_center\": [0, 0]" : "") + ", \"points\": [" + pts + "]}}";
+}
+
+void register_sliding() {
+  const auto run = [](int k, bool unknown, Mode mode, bool polytopes) {
+    return [k, unknown, mode, polytopes](benchmark::State& st) {
+      std::mt19937_64 rng(1234 + k);
+      const std::string text = plate_text(k, unknown, rng);
+      const Scene scene = read_scene(text, Input_limits{});
+      const double w = unknown ? 1.0 : k;  // μ W = w/2: loads at 0.3, 0.6, 1.2 times it
+      const std::vector<Vec3q> loads = {{Rational(0.15 * w), 0, 0}, {0, 0, Rational(0.15 * w)},
+                                        {Rational(0.6 * w), 0, Rational(0.1 * w)}, {0, Rational(0.3 * w), Rational(0.2 * w)}};
+      Request request;
+      request.mode = mode;
+      std::size_t i = 0, certified = 0, decided = 0;
+      for (auto _ : st) {
+        Support_query q;
+        q.sides = 32;
+        if (polytopes) {
+          const Polygonal_ls model(merge_support(*scene.support), make_directions(32));
+          benchmark::DoNotOptimize(model.build(Side::inner).facets.size() + model.build(Side::outer).facets.size());
+          continue;
+        }
+        q.load = loads[i++ % loads.size()];
+        q.polytopes = false;
+        const Support_item r = answer_support(scene, text, "bench", request, q);
+        if (r.status != Status::answered) {
+          std::fprintf(stderr, "sliding bench: %s\n", r.message.c_str());
+          g_failed = true;
+        }
+        const bool d = unknown ? r.motion_over && r.motion_over->motion != Motion_over::undecided
+                               : r.motion.motion != Motion::undecided;
+        decided += d;
+        certified += !r.certificate.empty();
+      }
+      st.counters["decided"] = double(decided);
+      st.counters["certified"] = double(certified);
+    };
+  };
+  const int unknown_k = 10, known_k = g_smoke ? 100 : 1000;
+  benchmark::RegisterBenchmark(("sliding/unknown/" + std::to_string(unknown_k) + "/hybrid_certified").c_str(),
+                               run(unknown_k, true, Mode::hybrid, false))
+      ->Unit(benchmark::kMillisecond);
+  for (const Mode m : {Mode::hybrid, Mode::float_only})
+    benchmark::RegisterBenchmark(("sliding/known/" + std::to_string(known_k) + "/" + mode_name(m)).c_str(),
+                                 run(known_k, false, m, false))
+        ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("sliding/known/10/hybrid_certified", run(10, false, Mode::hybrid, false))
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("sliding/known/10/polytopes_n32", run(10, false, Mode::exact, true))
+      ->Unit(benchmark::kMillisecond);
+}
+
 int main(int argc, char** argv) {
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
@@ -390,6 +459,7 @@ int main(int argc, char** argv) {
   register_generic();
   register_growth();
   register_limit_surface();
+  register_sliding();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   if (g_failed) std::fprintf(stderr, "wrenchkit_bench: a certified method was wrong (see above)\n");
