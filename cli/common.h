@@ -14,6 +14,7 @@
 
 #include "cli/reference.h"
 #include "core/mode.h"
+#include "exact/io/json_writer.h"
 #include "exact/pipeline/pipeline.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
@@ -118,12 +119,25 @@ std::string region_sentence(const std::string& shape, const std::vector<std::str
 // The per-scene commands' JSON answers, shared by the single commands (`wrenchkit COMMAND --json`),
 // `wrenchkit batch COMMAND` and any other front end.
 //
-// A Scene_answer maps one scene text to the command's --json answer: one line, no newline, exactly
-// what `wrenchkit COMMAND --json SCENE` prints. `source` names the text in messages. It throws
-// Input_error for a bad scene (exit 2), Undecided (exit 3), Self_check_failure (exit 4), and
-// Usage_error when the options cannot apply to this scene (limit-surface's --sides on a large
-// support). It may be called from several threads at once.
-using Scene_answer = std::function<std::string(const std::string& scene_text, const std::string& source)>;
+// A Scene_answer writes one scene text's --json answer into `w` (exact/io/json_writer.h): the members of
+// the answer's object, into the object the caller opened, so that `wrenchkit COMMAND --json SCENE`
+// prints exactly them in braces on one line (json_answer) and batch puts its "line" member first.
+// `source` names the text in messages. It throws Input_error for a bad scene (exit 2), Undecided
+// (exit 3), Self_check_failure (exit 4), and Usage_error when the options cannot apply to this scene
+// (limit-surface's --sides on a large support), having written nothing or a part the caller drops.
+// It may be called from several threads at once (each with its own writer).
+using Scene_answer =
+    std::function<void(Json_writer& w, const std::string& scene_text, const std::string& source)>;
+
+// One --json answer: the members `write(Json_writer&)` writes, in braces, as one line's text (no newline).
+template <class Write>
+std::string json_answer(Write&& write, std::size_t reserve = 512) {
+  Json_writer w(reserve);
+  w.object();
+  write(w);
+  w.end_object();
+  return w.take();
+}
 
 // Each command's prepare_*_json reads what it needs of the (already validated) options once, checks
 // how they combine (Usage_error), and returns its Scene_answer, which keeps them.
@@ -136,12 +150,12 @@ Scene_answer prepare_analyze_json(const Options& o);
 Scene_answer prepare_limit_surface_json(const Options& o);
 Scene_answer prepare_sliding_json(const Options& o);
 
-// closure_command.cpp, equilibrium_command.cpp (analyze and reference use these pieces): the pipeline's
-// items (exact/pipeline/pipeline.h) written as JSON and as text.
-std::string closure_json(const Options& o, const Closure_item& r, const char* command);
+// closure_command.cpp, equilibrium_command.cpp (analyze uses these pieces): the pipeline's items
+// (exact/pipeline/pipeline.h) written as the members of a JSON answer and as text.
+void write_closure(Json_writer& w, const Options& o, const Closure_item& r, const char* command);
 std::string closure_human(const Closure_item& r);
 int run_closure(const Options& o, const std::string& scene_text, const std::string& source, const char* command);
-std::string equilibrium_json(const Options& o, const Equilibrium_item& r, const char* command);
+void write_equilibrium(Json_writer& w, const Options& o, const Equilibrium_item& r, const char* command);
 std::string equilibrium_human(const Equilibrium_item& r);
 int run_equilibrium(const Options& o, const std::string& scene_text, const std::string& source);
 

@@ -12,7 +12,7 @@
 #include "cli/float_json.h"
 #include "cli/render_limit_surface.h"
 #include "exact/io/input_error.h"
-#include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
@@ -34,41 +34,37 @@ struct Ls_options {
   bool list = false;
 };
 
-std::string jq(const Rational& q) { return json::quote(to_string(q)); }
-std::string jv(const Vec3q& v) { return "[" + jq(v[0]) + ", " + jq(v[1]) + ", " + jq(v[2]) + "]"; }
-std::string jz(const Vec3z& v) {
-  return "[" + json::quote(v[0].get_str()) + ", " + json::quote(v[1].get_str()) + ", " + json::quote(v[2].get_str()) + "]";
-}
+void write_vec(Json_writer& w, const Vec3q& v) { w.array().rational(v[0]).rational(v[1]).rational(v[2]).end_array(); }
+void write_vec(Json_writer& w, const Vec3z& v) { w.array().rational(v[0]).rational(v[1]).rational(v[2]).end_array(); }
 std::string tv(const Vec3q& v) { return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")"; }
 std::string tz(const Vec3z& v) { return "(" + v[0].get_str() + ", " + v[1].get_str() + ", " + v[2].get_str() + ")"; }
 
-std::string face_json(const Ls_face& f) {
-  std::string s = "{\"dimension\": " + std::to_string(f.dimension) + ", \"vertices\": [";
-  for (std::size_t i = 0; i < f.vertices.size(); ++i) s += (i ? ", " : "") + jv(f.vertices[i]);
-  return s + "]}";
+void write_face(Json_writer& w, const Ls_face& f) {
+  w.object().member("dimension", f.dimension).key("vertices").array();
+  for (const Vec3q& v : f.vertices) write_vec(w, v);
+  w.end_array().end_object();
 }
 
-std::string polytope_json(const Ls_polytope& P, bool list) {
+void write_polytope(Json_writer& w, const Ls_polytope& P, bool list) {
   std::size_t rot = 0;
   for (const Ls_facet& f : P.facets) rot += f.support_point >= 0;
-  std::string s = "{\"dimension\": " + std::to_string(P.dimension) + ", \"facets\": " + std::to_string(P.facets.size()) +
-                  ", \"vertices\": " + std::to_string(P.vertices.size()) + ", \"edges\": " + std::to_string(P.edges) +
-                  ", \"rotation_facets\": " + std::to_string(rot);
+  w.object().member("dimension", P.dimension).member("facets", P.facets.size()).member("vertices", P.vertices.size());
+  w.member("edges", P.edges).member("rotation_facets", rot);
   if (list) {
-    s += ", \"facet_list\": [";
-    for (std::size_t i = 0; i < P.facets.size(); ++i) {
-      const Ls_facet& f = P.facets[i];
-      s += (i ? ", " : "") + std::string("{\"normal\": ") + jz(f.normal) + ", \"b\": " + jq(f.b) + ", \"vertices\": [";
-      for (std::size_t j = 0; j < f.vertices.size(); ++j) s += (j ? ", " : "") + std::to_string(f.vertices[j]);
-      s += "]";
-      if (f.support_point >= 0) s += ", \"rotation_about_support_point\": " + std::to_string(f.support_point);
-      s += "}";
+    w.key("facet_list").array();
+    for (const Ls_facet& f : P.facets) {
+      write_vec(w.object().key("normal"), f.normal);
+      w.member("b", f.b).key("vertices").array();
+      for (const int v : f.vertices) w.integer(v);
+      w.end_array();
+      if (f.support_point >= 0) w.member("rotation_about_support_point", f.support_point);
+      w.end_object();
     }
-    s += "], \"vertex_list\": [";
-    for (std::size_t i = 0; i < P.vertices.size(); ++i) s += (i ? ", " : "") + jv(P.vertices[i]);
-    s += "]";
+    w.end_array().key("vertex_list").array();
+    for (const Vec3q& v : P.vertices) write_vec(w, v);
+    w.end_array();
   }
-  return s + "}";
+  w.end_object();
 }
 
 std::string off_text(const Ls_polytope& in, const Ls_polytope& out) {
@@ -114,7 +110,7 @@ std::string obj_text(const Ls_polytope& in, const Ls_polytope& out) {
 }
 
 std::string gauge_text(const std::optional<Rational>& g) { return g ? human_number(*g) : std::string("infinite"); }
-std::string gauge_json(const std::optional<Rational>& g) { return g ? jq(*g) : std::string("null"); }
+void write_gauge(Json_writer& w, const std::optional<Rational>& g) { g ? w.rational(*g) : w.null(); }
 
 // The options, combined once (before any scene): --sides or --tolerance (resolved to N here), --twist,
 // --load, the exports and --list (each already validated where it was parsed).
@@ -142,22 +138,23 @@ Ls_options limit_surface_options(const Options& o) {
   return lo;
 }
 
-std::string bounded_json(const fl::Bounded& b) { return float_value_json(b); }
 std::string bounded_text(const fl::Bounded& b) { return float_value_text(b); }
 
-// The true surface's fields (hybrid and float): ', "true_power": …, "true_load": …'.
-std::string true_json(const Support_item& r) {
-  if (!r.true_power) return "";
-  return ", \"true_power\": " + bounded_json(*r.true_power) + ", \"true_load\": " + float_load_json(*r.true_load);
+// The true surface's members (hybrid and float): "true_power", "true_load".
+void write_true(Json_writer& w, const Support_item& r) {
+  if (!r.true_power) return;
+  write_float_value(w.key("true_power"), *r.true_power);
+  write_float_load(w.key("true_load"), *r.true_load);
 }
 
-std::string motion_fields(const Support_item& r) {
-  std::string s = std::string(", \"motion_decided_by\": \"") + r.motion.decided_by + "\"";
-  if (r.motion.cells) s += ", \"search_twists\": " + std::to_string(r.motion.cells);
-  if (std::string(r.motion.decided_by) == "float" && r.motion.motion == Motion::slides)
-    s += ", \"witness_twist\": [" + float_number(r.motion.witness[0]) + ", " + float_number(r.motion.witness[1]) + ", " +
-         float_number(r.motion.witness[2]) + "]";
-  return s;
+void write_motion(Json_writer& w, const Support_item& r) {
+  w.member("motion_decided_by", r.motion.decided_by);
+  if (r.motion.cells) w.member("search_twists", r.motion.cells);
+  if (std::string(r.motion.decided_by) == "float" && r.motion.motion == Motion::slides) {
+    w.key("witness_twist").array();
+    for (const double x : r.motion.witness) w.raw(float_number(x));
+    w.end_array();
+  }
 }
 
 // The scene's answer through the pipeline; a failure unwinds as the CLI's Failure.
@@ -180,44 +177,53 @@ std::string ratio_text(const Directions& d) {
   return buf;
 }
 
-std::string limit_surface_json(const Ls_options& lo, const Support_item& r) {
+void write_limit_surface(Json_writer& w, const Ls_options& lo, const Support_item& r) {
   const Polygonal_ls& model = *r.model;
   const Directions& d = model.directions();
   const Ls_support& sup = model.support();
   const Sliding_answer& sa = r.sliding;
-  std::ostringstream s;
-  s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \""
-    << mode_name(lo.mode) << "\", \"convention\": " << json::quote(kConvention) << ", \"sides\": " << lo.sides;
-  if (lo.tolerance) s << ", \"tolerance\": " << jq(*lo.tolerance) << ", \"direction_sets_tried\": " << lo.sets_built;
-  s << ", \"lambda_squared\": " << jq(d.lambda_sq) << ", \"relative_error_bound_approx\": " << ratio_text(d)
-    << ", \"support\": {\"input_points\": " << r.scene.support->points.size() << ", \"points\": " << sup.points.size()
-    << ", \"collinear\": " << (sup.collinear ? "true" : "false") << ", \"mu_f0\": " << jq(sa.mu_f0)
-    << ", \"center_of_friction\": [" << jq(sa.center_of_friction.x) << ", " << jq(sa.center_of_friction.y)
-    << "]}, \"dimension\": " << model.dimension() << ", \"inner\": " << polytope_json(r.in, lo.list)
-    << ", \"outer\": " << polytope_json(r.out, lo.list);
+  w.member("command", "limit-surface").member("name", r.scene.name).member("mode", mode_name(lo.mode));
+  w.member("convention", kConvention).member("sides", lo.sides);
+  if (lo.tolerance) w.member("tolerance", *lo.tolerance).member("direction_sets_tried", lo.sets_built);
+  w.member("lambda_squared", d.lambda_sq).key("relative_error_bound_approx").raw(ratio_text(d));
+  w.key("support").object().member("input_points", r.scene.support->points.size()).member("points", sup.points.size());
+  w.member("collinear", sup.collinear).member("mu_f0", sa.mu_f0).key("center_of_friction").array();
+  w.rational(sa.center_of_friction.x).rational(sa.center_of_friction.y).end_array().end_object();
+  w.member("dimension", model.dimension());
+  write_polytope(w.key("inner"), r.in, lo.list);
+  write_polytope(w.key("outer"), r.out, lo.list);
   if (lo.twist) {
-    s << ", \"twist\": " << jv(*lo.twist) << ", \"load_for_twist\": {\"inner\": " << face_json(sa.inner_face)
-      << ", \"outer\": " << face_json(sa.outer_face) << ", \"power\": {\"inner\": " << jq(sa.h_inner)
-      << ", \"outer\": " << jq(sa.h_outer) << "}, \"true_surface\": {\"kind\": \""
-      << (sa.cls.kind == Twist_kind::facet ? "facet" : (sa.cls.kind == Twist_kind::vertex ? "vertex" : "smooth"))
-      << "\", \"text\": " << json::quote(sa.cls.text) << "}" << true_json(r) << "}";
+    write_vec(w.key("twist"), *lo.twist);
+    write_face(w.key("load_for_twist").object().key("inner"), sa.inner_face);
+    write_face(w.key("outer"), sa.outer_face);
+    w.key("power").object().member("inner", sa.h_inner).member("outer", sa.h_outer).end_object();
+    w.key("true_surface").object();
+    w.member("kind", sa.cls.kind == Twist_kind::facet ? "facet" : (sa.cls.kind == Twist_kind::vertex ? "vertex" : "smooth"));
+    w.member("text", sa.cls.text).end_object();
+    write_true(w, r);
+    w.end_object();
   }
   if (lo.load) {
-    auto cone_json = [&](const Polygonal_ls::Normal_cone& c) {
-      std::string t = "{\"generators\": [";
-      for (std::size_t i = 0; i < c.generators.size(); ++i) t += (i ? ", " : "") + jz(c.generators[i]);
-      t += "], \"lineality\": [";
-      for (std::size_t i = 0; i < c.lineality.size(); ++i) t += (i ? ", " : "") + jz(c.lineality[i]);
-      return t + "]}";
+    const auto cone = [&w](const char* key, const Polygonal_ls::Normal_cone& c) {
+      w.key(key).object().key("generators").array();
+      for (const Vec3z& g : c.generators) write_vec(w, g);
+      w.end_array().key("lineality").array();
+      for (const Vec3z& g : c.lineality) write_vec(w, g);
+      w.end_array().end_object();
     };
-    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\""
-      << motion_fields(r) << ", \"gauge\": {\"outer\": " << gauge_json(r.gauge_out) << ", \"inner\": " << gauge_json(r.gauge_in)
-      << "}";
-    if (r.motion.motion != Motion::sticks)
-      s << ", \"twist_cone\": {\"outer\": " << cone_json(r.cone_out) << ", \"inner\": " << cone_json(r.cone_in) << "}";
+    write_vec(w.key("load"), *lo.load);
+    w.member("motion", motion_name(r.motion.motion));
+    write_motion(w, r);
+    write_gauge(w.key("gauge").object().key("outer"), r.gauge_out);
+    write_gauge(w.key("inner"), r.gauge_in);
+    w.end_object();
+    if (r.motion.motion != Motion::sticks) {
+      w.key("twist_cone").object();
+      cone("outer", r.cone_out);
+      cone("inner", r.cone_in);
+      w.end_object();
+    }
   }
-  s << "}";
-  return s.str();
 }
 
 std::string limit_surface_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
@@ -276,25 +282,31 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
 
 // --mode float: the twin alone (no exact polytopes). Its direction set has double parameters t_j, so
 // its λ² is certified for that set (close to, not equal to, the exact set's).
-std::string limit_surface_float_json(const Ls_options& lo, const Support_item& r) {
+void write_limit_surface_float(Json_writer& w, const Ls_options& lo, const Support_item& r) {
   const fl::Directions_twin& d = *r.twin_directions;
   const fl::Point2& cof = r.twin_center_of_friction;
-  const fl::Bounded& mu_f0 = r.twin_mu_f0;
-  std::ostringstream s;
-  s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"float\""
-    << ", \"convention\": " << json::quote(kConvention) << ", \"sides\": " << lo.sides;
-  if (lo.tolerance) s << ", \"tolerance\": " << jq(*lo.tolerance);
-  s << ", \"lambda_squared\": " << bounded_json(d.lambda_sq) << ", \"support\": {\"input_points\": "
-    << r.scene.support->points.size() << ", \"points\": " << r.twin.size() << ", \"mu_f0\": " << bounded_json(mu_f0)
-    << ", \"center_of_friction\": [" << bounded_json(cof.x) << ", " << bounded_json(cof.y) << "]}";
-  if (lo.twist)
-    s << ", \"twist\": " << jv(*lo.twist) << ", \"load_for_twist\": {\"power\": {\"inner\": "
-      << bounded_json(*r.twin_power_inner) << ", \"outer\": " << bounded_json(*r.twin_power_outer) << "}"
-      << true_json(r) << "}";
-  if (lo.load)
-    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\"" << motion_fields(r);
-  s << "}";
-  return s.str();
+  w.member("command", "limit-surface").member("name", r.scene.name).member("mode", "float");
+  w.member("convention", kConvention).member("sides", lo.sides);
+  if (lo.tolerance) w.member("tolerance", *lo.tolerance);
+  write_float_value(w.key("lambda_squared"), d.lambda_sq);
+  w.key("support").object().member("input_points", r.scene.support->points.size()).member("points", r.twin.size());
+  write_float_value(w.key("mu_f0"), r.twin_mu_f0);
+  write_float_value(w.key("center_of_friction").array(), cof.x);
+  write_float_value(w, cof.y);
+  w.end_array().end_object();
+  if (lo.twist) {
+    write_vec(w.key("twist"), *lo.twist);
+    write_float_value(w.key("load_for_twist").object().key("power").object().key("inner"), *r.twin_power_inner);
+    write_float_value(w.key("outer"), *r.twin_power_outer);
+    w.end_object();
+    write_true(w, r);
+    w.end_object();
+  }
+  if (lo.load) {
+    write_vec(w.key("load"), *lo.load);
+    w.member("motion", motion_name(r.motion.motion));
+    write_motion(w, r);
+  }
 }
 
 std::string limit_surface_float_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
@@ -327,9 +339,10 @@ std::string limit_surface_float_human(const Ls_options& lo, const Support_item& 
 }  // namespace
 
 Scene_answer prepare_limit_surface_json(const Options& o) {
-  return [o, lo = limit_surface_options(o)](const std::string& text, const std::string& source) {
+  return [o, lo = limit_surface_options(o)](Json_writer& w, const std::string& text, const std::string& source) {
     const Support_item r = compute_limit_surface(lo, o, text, source);
-    return lo.mode == Mode::float_only ? limit_surface_float_json(lo, r) : limit_surface_json(lo, r);
+    if (lo.mode == Mode::float_only) write_limit_surface_float(w, lo, r);
+    else write_limit_surface(w, lo, r);
   };
 }
 
@@ -339,10 +352,13 @@ int run_limit_surface(const Options& o, const std::string& text, const std::stri
   if (!lo.off_file.empty()) write_file(lo.off_file, off_text(r.in, r.out));
   if (!lo.obj_file.empty()) write_file(lo.obj_file, obj_text(r.in, r.out));
   if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.sides));
-  if (lo.mode == Mode::float_only)
-    std::cout << (o.json ? limit_surface_float_json(lo, r) + "\n" : limit_surface_float_human(lo, r, source));
+  const bool fm = lo.mode == Mode::float_only;
+  if (o.json)
+    std::cout << json_answer([&](Json_writer& w) { fm ? write_limit_surface_float(w, lo, r) : write_limit_surface(w, lo, r); },
+                             4096)
+              << "\n";
   else
-    std::cout << (o.json ? limit_surface_json(lo, r) + "\n" : limit_surface_human(lo, r, source));
+    std::cout << (fm ? limit_surface_float_human(lo, r, source) : limit_surface_human(lo, r, source));
   return kAnswered;
 }
 

@@ -9,7 +9,7 @@
 #include "cli/common.h"
 #include "cli/float_json.h"
 #include "exact/io/input_error.h"
-#include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/sliding.h"
 #include "exact/io/streaming_scene_reader.h"
@@ -19,15 +19,15 @@ namespace wrenchkit::cli {
 
 namespace {
 
-std::string jq(const Rational& q) { return json::quote(to_string(q)); }
-std::string jv(const Vec3q& v) { return "[" + jq(v[0]) + ", " + jq(v[1]) + ", " + jq(v[2]) + "]"; }
+void write_vec(Json_writer& w, const Vec3q& v) { w.array().rational(v[0]).rational(v[1]).rational(v[2]).end_array(); }
+void write_pair(Json_writer& w, const Rational& x, const Rational& y) { w.array().rational(x).rational(y).end_array(); }
 std::string thv(const Vec3q& v) {
   return "(" + human_number(v[0]) + ", " + human_number(v[1]) + ", " + human_number(v[2]) + ")";
 }
-std::string face_json(const Ls_face& f) {
-  std::string s = "{\"dimension\": " + std::to_string(f.dimension) + ", \"vertices\": [";
-  for (std::size_t i = 0; i < f.vertices.size(); ++i) s += (i ? ", " : "") + jv(f.vertices[i]);
-  return s + "]}";
+void write_face(Json_writer& w, const Ls_face& f) {
+  w.object().member("dimension", f.dimension).key("vertices").array();
+  for (const Vec3q& v : f.vertices) write_vec(w, v);
+  w.end_array().end_object();
 }
 
 // The options (validated where they were parsed): --twist (not zero) and --sides (default 64).
@@ -55,25 +55,27 @@ Support_item compute(const Sliding_options& so, const Options& o, const std::str
 }
 
 // The float twin's values for the twist (hybrid: added to the exact answer).
-std::string true_fields(const Support_item& r) {
-  if (!r.true_power) return "";
-  return ", \"true_power\": " + float_value_json(*r.true_power) + ", \"true_load\": " + float_load_json(*r.true_load);
+void write_true(Json_writer& w, const Support_item& r) {
+  if (!r.true_power) return;
+  write_float_value(w.key("true_power"), *r.true_power);
+  write_float_load(w.key("true_load"), *r.true_load);
 }
 
-std::string sliding_float_json(const Sliding_options& so, const Support_item& r) {
+void write_sliding_float(Json_writer& w, const Sliding_options& so, const Support_item& r) {
   const fl::Point2& cof = r.twin_center_of_friction;
-  const fl::Bounded& mu_f0 = r.twin_mu_f0;
-  std::ostringstream s;
-  s << "{\"command\": \"sliding\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"float\""
-    << ", \"center_of_friction\": [" << float_value_json(cof.x) << ", " << float_value_json(cof.y)
-    << "], \"mu_f0\": " << float_value_json(mu_f0);
-  if (so.twist)
-    s << ", \"twist\": " << jv(*so.twist) << ", \"sides\": " << so.sides << ", \"lambda_squared\": "
-      << float_value_json(r.twin_directions->lambda_sq) << ", \"power\": {\"inner\": "
-      << float_value_json(*r.twin_power_inner) << ", \"outer\": " << float_value_json(*r.twin_power_outer) << "}"
-      << true_fields(r);
-  s << "}";
-  return s.str();
+  w.member("command", "sliding").member("name", r.scene.name).member("mode", "float");
+  write_float_value(w.key("center_of_friction").array(), cof.x);
+  write_float_value(w, cof.y);
+  write_float_value(w.end_array().key("mu_f0"), r.twin_mu_f0);
+  if (so.twist) {
+    write_vec(w.key("twist"), *so.twist);
+    w.member("sides", so.sides);
+    write_float_value(w.key("lambda_squared"), r.twin_directions->lambda_sq);
+    write_float_value(w.key("power").object().key("inner"), *r.twin_power_inner);
+    write_float_value(w.key("outer"), *r.twin_power_outer);
+    w.end_object();
+    write_true(w, r);
+  }
 }
 
 std::string sliding_float_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
@@ -94,38 +96,39 @@ const char* kConvention =
     "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
     "the friction wrench on the slider is its negative";
 
-std::string sliding_json(const Sliding_options& so, const Support_item& r) {
+void write_sliding(Json_writer& w, const Sliding_options& so, const Support_item& r) {
   const Sliding_answer& a = r.sliding;
   const char* kinds[] = {"facet", "vertex", "smooth"};
-  std::ostringstream s;
-  s << "{\"command\": \"sliding\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"" << mode_name(so.mode)
-    << "\", \"convention\": " << json::quote(kConvention)
-    << ", \"center_of_friction\": [" << jq(a.center_of_friction.x) << ", " << jq(a.center_of_friction.y)
-    << "], \"friction_centroid\": [" << jq(a.friction_centroid.x) << ", " << jq(a.friction_centroid.y)
-    << "], \"mu_f0\": " << jq(a.mu_f0);
-  if (a.has_twist) {
-    s << ", \"twist\": " << jv(a.twist) << ", \"motion\": \"" << (a.translation ? "translation" : "rotation") << "\"";
-    if (a.translation) {
-      s << ", \"load_direction\": " << jv(a.load_direction) << ", \"speed_squared\": " << jq(a.speed_squared)
-        << ", \"load\": " << (a.load ? jv(*a.load) : std::string("null"));
-    } else {
-      s << ", \"rotation_center\": [" << jq(a.rotation_center.x) << ", " << jq(a.rotation_center.y) << "]";
-    }
-    s << ", \"true_surface\": {\"kind\": \"" << kinds[static_cast<int>(a.cls.kind)] << "\", \"text\": "
-      << json::quote(a.cls.text);
-    if (a.cls.support_point >= 0) {
-      const Ls_point& p = r.model->support().points[static_cast<std::size_t>(a.cls.support_point)];
-      s << ", \"facet_disc\": {\"at\": [" << jq(p.at.x) << ", " << jq(p.at.y) << "], \"radius\": " << jq(p.rho) << "}";
-    }
-    s << "}, \"sides\": " << so.sides << ", \"lambda_squared\": " << jq(r.model->directions().lambda_sq)
-      << ", \"power\": {\"inner\": " << jq(a.h_inner) << ", \"outer\": " << jq(a.h_outer) << ", \"lower\": "
-      << jq(a.h_lo) << ", \"upper\": " << jq(a.h_hi) << "}, \"load_box\": {\"lower\": " << jv(a.load_lo)
-      << ", \"upper\": " << jv(a.load_hi) << ", \"of\": \""
-      << (a.cls.kind == Twist_kind::facet ? "the facet's centre" : "the load") << "\"}, \"inner_load\": "
-      << face_json(a.inner_face) << ", \"outer_load\": " << face_json(a.outer_face) << true_fields(r);
+  w.member("command", "sliding").member("name", r.scene.name).member("mode", mode_name(so.mode));
+  w.member("convention", kConvention);
+  write_pair(w.key("center_of_friction"), a.center_of_friction.x, a.center_of_friction.y);
+  write_pair(w.key("friction_centroid"), a.friction_centroid.x, a.friction_centroid.y);
+  w.member("mu_f0", a.mu_f0);
+  if (!a.has_twist) return;
+  write_vec(w.key("twist"), a.twist);
+  w.member("motion", a.translation ? "translation" : "rotation");
+  if (a.translation) {
+    write_vec(w.key("load_direction"), a.load_direction);
+    w.member("speed_squared", a.speed_squared).key("load");
+    a.load ? write_vec(w, *a.load) : void(w.null());
+  } else {
+    write_pair(w.key("rotation_center"), a.rotation_center.x, a.rotation_center.y);
   }
-  s << "}";
-  return s.str();
+  w.key("true_surface").object().member("kind", kinds[static_cast<int>(a.cls.kind)]).member("text", a.cls.text);
+  if (a.cls.support_point >= 0) {
+    const Ls_point& p = r.model->support().points[static_cast<std::size_t>(a.cls.support_point)];
+    write_pair(w.key("facet_disc").object().key("at"), p.at.x, p.at.y);
+    w.member("radius", p.rho).end_object();
+  }
+  w.end_object().member("sides", so.sides).member("lambda_squared", r.model->directions().lambda_sq);
+  w.key("power").object().member("inner", a.h_inner).member("outer", a.h_outer).member("lower", a.h_lo);
+  w.member("upper", a.h_hi).end_object();
+  write_vec(w.key("load_box").object().key("lower"), a.load_lo);
+  write_vec(w.key("upper"), a.load_hi);
+  w.member("of", a.cls.kind == Twist_kind::facet ? "the facet's centre" : "the load").end_object();
+  write_face(w.key("inner_load"), a.inner_face);
+  write_face(w.key("outer_load"), a.outer_face);
+  write_true(w, r);
 }
 
 std::string sliding_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
@@ -159,19 +162,22 @@ std::string sliding_human(const Sliding_options& so, const Support_item& r, cons
 }  // namespace
 
 Scene_answer prepare_sliding_json(const Options& o) {
-  return [o, so = sliding_options(o)](const std::string& text, const std::string& source) {
+  return [o, so = sliding_options(o)](Json_writer& w, const std::string& text, const std::string& source) {
     const Support_item r = compute(so, o, text, source);
-    return so.mode == Mode::float_only ? sliding_float_json(so, r) : sliding_json(so, r);
+    if (so.mode == Mode::float_only) write_sliding_float(w, so, r);
+    else write_sliding(w, so, r);
   };
 }
 
 int run_sliding(const Options& o, const std::string& text, const std::string& source) {
   const Sliding_options so = sliding_options(o);
   const Support_item r = compute(so, o, text, source);
-  if (so.mode == Mode::float_only)
-    std::cout << (o.json ? sliding_float_json(so, r) + "\n" : sliding_float_human(so, r, source));
+  const bool fm = so.mode == Mode::float_only;
+  if (o.json)
+    std::cout << json_answer([&](Json_writer& w) { fm ? write_sliding_float(w, so, r) : write_sliding(w, so, r); }, 2048)
+              << "\n";
   else
-    std::cout << (o.json ? sliding_json(so, r) + "\n" : sliding_human(so, r, source));
+    std::cout << (fm ? sliding_float_human(so, r, source) : sliding_human(so, r, source));
   return kAnswered;
 }
 
