@@ -41,7 +41,8 @@ std::string human_verdict(const Closure_answer& a, bool form) {
   return s.str();
 }
 
-void write_pair(Json_writer& w, const char* key, std::size_t force, std::size_t form) {
+template <std::size_t N>
+void write_pair(Json_writer& w, const char (&key)[N], std::size_t force, std::size_t form) {
   w.key(key).object().member("force", force).member("form", form).end_object();
 }
 

@@ -2,23 +2,7 @@
 
 #include <cstring>
 
-#include "exact/io/json.h"
-
 namespace wrenchkit {
-
-Json_writer& Json_writer::key(std::string_view k) {
-  separate();
-  json::append_quoted(out_, k);
-  out_ += ": ";
-  after_key_ = true;
-  return *this;
-}
-
-Json_writer& Json_writer::string(std::string_view s) {
-  separate();
-  json::append_quoted(out_, s);
-  return *this;
-}
 
 // GMP writes the digits straight into the output (room for a sign, '/' and its terminating NUL), so an
 // exact number costs no allocation of its own.
