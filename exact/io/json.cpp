@@ -4,6 +4,7 @@
 #include <unordered_set>
 
 #include "exact/io/input_error.h"
+#include "exact/io/json_writer.h"
 
 namespace wrenchkit::json {
 namespace {
@@ -358,25 +359,31 @@ std::string quote(std::string_view s) {
   return out;
 }
 
-std::string text_of(const Value& v) {
+namespace {
+void write_value(Json_writer& w, const Value& v) {
   switch (v.type) {
-    case Type::null: return "null";
-    case Type::boolean: return v.boolean ? "true" : "false";
-    case Type::number: return v.text;
-    case Type::string: return quote(v.text);
-    case Type::array: {
-      std::string s = "[";
-      for (std::size_t i = 0; i < v.items.size(); ++i) s += (i ? ", " : "") + text_of(v.items[i]);
-      return s + "]";
-    }
-    case Type::object: {
-      std::string s = "{";
-      for (std::size_t i = 0; i < v.members.size(); ++i)
-        s += (i ? ", " : "") + quote(v.members[i].first) + ": " + text_of(v.members[i].second);
-      return s + "}";
-    }
+    case Type::null: w.null(); break;
+    case Type::boolean: w.boolean(v.boolean); break;
+    case Type::number: w.raw(v.text); break;
+    case Type::string: w.string(v.text); break;
+    case Type::array:
+      w.array();
+      for (const Value& x : v.items) write_value(w, x);
+      w.end_array();
+      break;
+    case Type::object:
+      w.object();
+      for (const auto& [k, x] : v.members) write_value(w.key(k), x);
+      w.end_object();
+      break;
   }
-  return "null";
+}
+}  // namespace
+
+std::string text_of(const Value& v) {
+  Json_writer w;
+  write_value(w, v);
+  return w.take();
 }
 
 }  // namespace wrenchkit::json

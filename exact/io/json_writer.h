@@ -31,7 +31,7 @@ class Json_writer {
   // allocation once warm); `reserve` bytes are reserved up front.
   explicit Json_writer(std::size_t reserve = 256, std::string buffer = std::string()) : out_(std::move(buffer)) {
     out_.clear();
-    out_.reserve(reserve);
+    if (out_.capacity() < reserve) out_.reserve(reserve);  // never a shrinking request
   }
 
   Json_writer& object() { return open('{'); }
@@ -80,7 +80,8 @@ class Json_writer {
     out_.append(b, static_cast<std::size_t>(std::to_chars(b, b + sizeof b, n).ptr - b));
     return *this;
   }
-  // An exact number as its quoted lowest-terms text: "p/q", or "p" when q = 1 (to_string's text).
+  // An exact number as its quoted text, to_string's: "p/q", or "p" when q = 1 (lowest terms: the engine
+  // keeps every Rational canonical).
   Json_writer& rational(const Rational& q);
   Json_writer& rational(const Integer& z);
   // An already written JSON value (a certificate, a number formatted by the caller), as is.
