@@ -59,7 +59,7 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
     if (scene.load && scene.load->kind != Load::Kind::gravity) {
       const Vec3q p = as_vec(load_wrench(scene));
       const Motion_decision m = decide_motion(model, p, o.mode, &in, &out);
-      j.key("load_motion").object().key("load").array().rational(p[0]).rational(p[1]).rational(p[2]).end_array();
+      j.key("load_motion").object().key("load").rationals(p);
       j.member("motion", motion_name(m.motion)).member("decided_by", m.decided_by).end_object();
       r.human += "the load on the support: " + std::string(motion_name(m.motion)) +
                  (std::string(m.decided_by) == "float" ? " (the float twin's certified search on the true limit surface)"

@@ -61,7 +61,6 @@ std::string labels_human(const Moment_labels& l) {
   return s.str();
 }
 
-void write_wrench(Json_writer& w, const Vec3& x) { w.array().rational(x[0]).rational(x[1]).rational(x[2]).end_array(); }
 
 // "mode", "decided_by", "predicates", "exact_predicates" of the answer (--mode float: decided by the twin).
 void write_mode(Json_writer& w, const Labels_item& s) {
@@ -101,7 +100,7 @@ std::string float_labels_human(const fl::Labels_twin& l) {
 // The scene's load read on the labels: balanced ⇔ −w ∈ W (theory.md §5.5).
 void write_load(Json_writer& w, const Labels_item& s) {
   if (!s.load) return;
-  write_wrench(w.key("load").object().key("wrench"), *s.load);
+  w.key("load").object().key("wrench").rationals(*s.load);
   w.member("balanced", *s.load_balanced).end_object();
 }
 
@@ -138,7 +137,7 @@ Labels_item label(const Options& o, const Labels_query& q, const std::string& te
 
 void write_resultant(Json_writer& w, const Labels_query& q, const Labels_item& s) {
   if (!q.resultant) return;
-  write_wrench(w.key("resultant").object().key("wrench"), *q.resultant);
+  w.key("resultant").object().key("wrench").rationals(*q.resultant);
   w.member("possible", *s.resultant_possible).end_object();
 }
 

@@ -34,14 +34,12 @@ struct Ls_options {
   bool list = false;
 };
 
-void write_vec(Json_writer& w, const Vec3q& v) { w.array().rational(v[0]).rational(v[1]).rational(v[2]).end_array(); }
-void write_vec(Json_writer& w, const Vec3z& v) { w.array().rational(v[0]).rational(v[1]).rational(v[2]).end_array(); }
 std::string tv(const Vec3q& v) { return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")"; }
 std::string tz(const Vec3z& v) { return "(" + v[0].get_str() + ", " + v[1].get_str() + ", " + v[2].get_str() + ")"; }
 
 void write_face(Json_writer& w, const Ls_face& f) {
   w.object().member("dimension", f.dimension).key("vertices").array();
-  for (const Vec3q& v : f.vertices) write_vec(w, v);
+  for (const Vec3q& v : f.vertices) w.rationals(v);
   w.end_array().end_object();
 }
 
@@ -53,7 +51,7 @@ void write_polytope(Json_writer& w, const Ls_polytope& P, bool list) {
   if (list) {
     w.key("facet_list").array();
     for (const Ls_facet& f : P.facets) {
-      write_vec(w.object().key("normal"), f.normal);
+      w.object().key("normal").rationals(f.normal);
       w.member("b", f.b).key("vertices").array();
       for (const int v : f.vertices) w.integer(v);
       w.end_array();
@@ -61,7 +59,7 @@ void write_polytope(Json_writer& w, const Ls_polytope& P, bool list) {
       w.end_object();
     }
     w.end_array().key("vertex_list").array();
-    for (const Vec3q& v : P.vertices) write_vec(w, v);
+    for (const Vec3q& v : P.vertices) w.rationals(v);
     w.end_array();
   }
   w.end_object();
@@ -193,7 +191,7 @@ void write_limit_surface(Json_writer& w, const Ls_options& lo, const Support_ite
   write_polytope(w.key("inner"), r.in, lo.list);
   write_polytope(w.key("outer"), r.out, lo.list);
   if (lo.twist) {
-    write_vec(w.key("twist"), *lo.twist);
+    w.key("twist").rationals(*lo.twist);
     write_face(w.key("load_for_twist").object().key("inner"), sa.inner_face);
     write_face(w.key("outer"), sa.outer_face);
     w.key("power").object().member("inner", sa.h_inner).member("outer", sa.h_outer).end_object();
@@ -206,12 +204,12 @@ void write_limit_surface(Json_writer& w, const Ls_options& lo, const Support_ite
   if (lo.load) {
     const auto cone = [&w](const char* key, const Polygonal_ls::Normal_cone& c) {
       w.key(key).object().key("generators").array();
-      for (const Vec3z& g : c.generators) write_vec(w, g);
+      for (const Vec3z& g : c.generators) w.rationals(g);
       w.end_array().key("lineality").array();
-      for (const Vec3z& g : c.lineality) write_vec(w, g);
+      for (const Vec3z& g : c.lineality) w.rationals(g);
       w.end_array().end_object();
     };
-    write_vec(w.key("load"), *lo.load);
+    w.key("load").rationals(*lo.load);
     w.member("motion", motion_name(r.motion.motion));
     write_motion(w, r);
     write_gauge(w.key("gauge").object().key("outer"), r.gauge_out);
@@ -295,7 +293,7 @@ void write_limit_surface_float(Json_writer& w, const Ls_options& lo, const Suppo
   write_float_value(w, cof.y);
   w.end_array().end_object();
   if (lo.twist) {
-    write_vec(w.key("twist"), *lo.twist);
+    w.key("twist").rationals(*lo.twist);
     write_float_value(w.key("load_for_twist").object().key("power").object().key("inner"), *r.twin_power_inner);
     write_float_value(w.key("outer"), *r.twin_power_outer);
     w.end_object();
@@ -303,7 +301,7 @@ void write_limit_surface_float(Json_writer& w, const Ls_options& lo, const Suppo
     w.end_object();
   }
   if (lo.load) {
-    write_vec(w.key("load"), *lo.load);
+    w.key("load").rationals(*lo.load);
     w.member("motion", motion_name(r.motion.motion));
     write_motion(w, r);
   }

@@ -43,7 +43,6 @@ std::uint64_t splitmix64(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
-void write_vec(Json_writer& w, const Vec3q& v) { w.array().rational(v[0]).rational(v[1]).rational(v[2]).end_array(); }
 void write_double(Json_writer& w, double d) {  // a double for reading, as a JSON number
   char b[32];
   std::snprintf(b, sizeof b, "%.3g", d);
@@ -156,7 +155,7 @@ void write_limit_surface(Json_writer& w, const Scene& scene, int sides) {
   w.key("twists").array();
   for (const Vec3q& t : reference_twists(model.support())) {
     const Sliding_answer a = compute_sliding(model, t);
-    write_vec(w.object().key("twist"), t);
+    w.object().key("twist").rationals(t);
     w.member("h_inner", a.h_inner).member("h_outer", a.h_outer);
     w.key("power_bracket").array().rational(a.h_lo).rational(a.h_hi).end_array();
     w.member("true_surface", kinds[static_cast<int>(a.cls.kind)]).end_object();

@@ -19,14 +19,13 @@ namespace wrenchkit::cli {
 
 namespace {
 
-void write_vec(Json_writer& w, const Vec3q& v) { w.array().rational(v[0]).rational(v[1]).rational(v[2]).end_array(); }
 void write_pair(Json_writer& w, const Rational& x, const Rational& y) { w.array().rational(x).rational(y).end_array(); }
 std::string thv(const Vec3q& v) {
   return "(" + human_number(v[0]) + ", " + human_number(v[1]) + ", " + human_number(v[2]) + ")";
 }
 void write_face(Json_writer& w, const Ls_face& f) {
   w.object().member("dimension", f.dimension).key("vertices").array();
-  for (const Vec3q& v : f.vertices) write_vec(w, v);
+  for (const Vec3q& v : f.vertices) w.rationals(v);
   w.end_array().end_object();
 }
 
@@ -68,7 +67,7 @@ void write_sliding_float(Json_writer& w, const Sliding_options& so, const Suppor
   write_float_value(w, cof.y);
   write_float_value(w.end_array().key("mu_f0"), r.twin_mu_f0);
   if (so.twist) {
-    write_vec(w.key("twist"), *so.twist);
+    w.key("twist").rationals(*so.twist);
     w.member("sides", so.sides);
     write_float_value(w.key("lambda_squared"), r.twin_directions->lambda_sq);
     write_float_value(w.key("power").object().key("inner"), *r.twin_power_inner);
@@ -105,12 +104,12 @@ void write_sliding(Json_writer& w, const Sliding_options& so, const Support_item
   write_pair(w.key("friction_centroid"), a.friction_centroid.x, a.friction_centroid.y);
   w.member("mu_f0", a.mu_f0);
   if (!a.has_twist) return;
-  write_vec(w.key("twist"), a.twist);
+  w.key("twist").rationals(a.twist);
   w.member("motion", a.translation ? "translation" : "rotation");
   if (a.translation) {
-    write_vec(w.key("load_direction"), a.load_direction);
+    w.key("load_direction").rationals(a.load_direction);
     w.member("speed_squared", a.speed_squared).key("load");
-    a.load ? write_vec(w, *a.load) : void(w.null());
+    a.load ? w.rationals(*a.load) : w.null();
   } else {
     write_pair(w.key("rotation_center"), a.rotation_center.x, a.rotation_center.y);
   }
@@ -123,8 +122,8 @@ void write_sliding(Json_writer& w, const Sliding_options& so, const Support_item
   w.end_object().member("sides", so.sides).member("lambda_squared", r.model->directions().lambda_sq);
   w.key("power").object().member("inner", a.h_inner).member("outer", a.h_outer).member("lower", a.h_lo);
   w.member("upper", a.h_hi).end_object();
-  write_vec(w.key("load_box").object().key("lower"), a.load_lo);
-  write_vec(w.key("upper"), a.load_hi);
+  w.key("load_box").object().key("lower").rationals(a.load_lo);
+  w.key("upper").rationals(a.load_hi);
   w.member("of", a.cls.kind == Twist_kind::facet ? "the facet's centre" : "the load").end_object();
   write_face(w.key("inner_load"), a.inner_face);
   write_face(w.key("outer_load"), a.outer_face);

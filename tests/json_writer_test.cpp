@@ -3,9 +3,11 @@
 // lowest-terms text to_string gives.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <climits>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "exact/io/json.h"
 #include "exact/io/json_writer.h"
@@ -20,10 +22,12 @@ TEST(JsonWriter, TheOneLayout) {
   w.key("none").object().end_object().key("x").null();
   w.key("list").array().integer(-1).rational(Rational(-3, 2)).raw("2.5e-3").string("a").array().end_array().end_array();
   w.key("nested").object().key("a").object().member("b", false).end_object().end_object();
+  w.key("v").rationals(std::array<Rational, 2>{Rational(1, 3), Rational(-2)}).key("z").rationals(std::vector<Integer>{});
   w.end_object();
   EXPECT_EQ(w.str(),
             "{\"command\": \"closure\", \"holds\": true, \"rank\": 3, \"empty\": [], \"none\": {}, \"x\": null, "
-            "\"list\": [-1, \"-3/2\", 2.5e-3, \"a\", []], \"nested\": {\"a\": {\"b\": false}}}");
+            "\"list\": [-1, \"-3/2\", 2.5e-3, \"a\", []], \"nested\": {\"a\": {\"b\": false}}, "
+            "\"v\": [\"1/3\", \"-2\"], \"z\": []}");
 }
 
 // A function writing members into an object its caller opened, and a writer reusing a caller's string.

@@ -84,6 +84,13 @@ class Json_writer {
   // keeps every Rational canonical).
   Json_writer& rational(const Rational& q);
   Json_writer& rational(const Integer& z);
+  // An array of exact numbers (a vector's coordinates: Rational or Integer).
+  template <class Numbers>
+  Json_writer& rationals(const Numbers& xs) {
+    array();
+    for (const auto& x : xs) rational(x);
+    return end_array();
+  }
   // An already written JSON value (a certificate, a number formatted by the caller), as is.
   Json_writer& raw(std::string_view json) {
     separate();
@@ -150,5 +157,14 @@ class Json_writer {
   std::string out_;
   bool after_key_ = false;
 };
+
+// The text of one value that `write` writes (the string forms of the write_* functions: certificate_json,
+// region_json, …).
+template <class T>
+std::string json_text(void (*write)(Json_writer&, const T&), const T& x, std::size_t reserve = 256) {
+  Json_writer w(reserve);
+  write(w, x);
+  return w.take();
+}
 
 }  // namespace wrenchkit

@@ -187,12 +187,12 @@ void write_combination(Json_writer& w, const std::vector<std::pair<Generator_ref
 }
 
 void write_twist(Json_writer& w, const std::array<Rational, 3>& t) {
-  w.key("twist").array().rational(t[0]).rational(t[1]).rational(t[2]).end_array();
+  w.key("twist").rationals(t);
   const Twist_reading r = read_twist(t);
   w.key("reading").object();
   if (r.label == 'i') w.member("label", "infinity").key("direction");
   else w.member("label", std::string_view(&r.label, 1)).key("point");
-  w.array().rational(r.point[0]).rational(r.point[1]).end_array().end_object();
+  w.rationals(r.point).end_object();
 }
 
 void write_certificate(Json_writer& w, const Closure_certificate& c) {
@@ -209,10 +209,6 @@ void write_certificate(Json_writer& w, const Closure_certificate& c) {
   w.end_object();
 }
 
-std::string certificate_json(const Closure_certificate& c) {
-  Json_writer w(512);
-  write_certificate(w, c);
-  return w.take();
-}
+std::string certificate_json(const Closure_certificate& c) { return json_text(write_certificate, c, 512); }
 
 }  // namespace wrenchkit

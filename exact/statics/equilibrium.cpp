@@ -157,10 +157,6 @@ void write_certificate(Json_writer& w, const Equilibrium_certificate& c) {
   w.end_object();
 }
 
-std::string certificate_json(const Equilibrium_certificate& c) {
-  Json_writer w(512);
-  write_certificate(w, c);
-  return w.take();
-}
+std::string certificate_json(const Equilibrium_certificate& c) { return json_text(write_certificate, c, 512); }
 
 }  // namespace wrenchkit

@@ -352,22 +352,8 @@ void write_infinity(Json_writer& w, const Cone2& c) {
   w.end_array();
 }
 
-std::string region_json(const Region& r) {
-  Json_writer w;
-  write_region(w, r);
-  return w.take();
-}
-
-std::string infinity_json(const Cone2& c) {
-  Json_writer w;
-  write_infinity(w, c);
-  return w.take();
-}
-
-std::string point_json(const Vec2& p) {
-  Json_writer w(64);
-  write_point(w, p);
-  return w.take();
-}
+std::string region_json(const Region& r) { return json_text(write_region, r); }
+std::string infinity_json(const Cone2& c) { return json_text(write_infinity, c); }
+std::string point_json(const Vec2& p) { return json_text(write_point, p, 64); }
 
 }  // namespace wrenchkit
