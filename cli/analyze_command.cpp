@@ -7,6 +7,8 @@
 
 #include "cli/common.h"
 #include "exact/io/json_writer.h"
+#include "exact/io/support_check.h"
+#include "exact/statics/planar_region.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
@@ -84,6 +86,7 @@ struct Analysis {
   std::optional<Equilibrium_item> equilibrium;
   std::optional<Ls_summary> limit_surface;
   std::vector<std::pair<std::string, std::string>> skipped;
+  std::optional<std::pair<Vec2, Vec2>> gravity_off;  // body.com, the support's centre of pressure
 };
 
 Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, const std::string& scene_text,
@@ -92,7 +95,11 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
   const Request request = request_of(o);
   a.closure = answered(answer_closure(scene_text, source, request, a.scene));
   if (a.scene.load) a.equilibrium = answered(answer_equilibrium(a.scene, scene_text, request));
-  if (a.scene.support) {
+  if (a.scene.support && !a.scene.support->known()) {
+    a.skipped.push_back({"limit_surface", "the forces of some support points are not given: use 'wrenchkit "
+                                          "limit-surface --load' or 'sliding --twist' (they answer over every "
+                                          "admissible distribution)"});
+  } else if (a.scene.support) {
     std::string why;
     a.limit_surface = limit_surface_summary(o, tolerance, a.scene, why);
     if (!a.limit_surface) a.skipped.push_back({"limit_surface", why});
@@ -102,6 +109,7 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
   } else if (tolerance) {
     a.skipped.push_back({"limit_surface", "--tolerance was given but the scene has no support"});
   }
+  a.gravity_off = gravity_off_pressure_center(a.scene);
   return a;
 }
 
@@ -117,6 +125,12 @@ void write_analysis(Json_writer& w, const Options& o, const Analysis& a, const c
   w.key("skipped").array();
   for (const auto& [what, why] : a.skipped) w.object().member("what", what).member("why", why).end_object();
   w.end_array();
+  if (a.gravity_off) {
+    w.key("warnings").array().object().member("what", "gravity_off_pressure_center");
+    write_point(w.key("com"), a.gravity_off->first);
+    write_point(w.key("pressure_center"), a.gravity_off->second);
+    w.end_object().end_array();
+  }
 }
 
 }  // namespace
@@ -137,6 +151,11 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
   if (a.equilibrium) std::cout << equilibrium_human(*a.equilibrium);
   if (a.limit_surface) std::cout << a.limit_surface->human;
   for (const auto& [what, why] : a.skipped) std::cout << "skipped " << what << ": " << why << "\n";
+  if (a.gravity_off)
+    std::cout << "warning: the weight acts at body.com (" << to_string(a.gravity_off->first.x) << ", "
+              << to_string(a.gravity_off->first.y) << ") but the support's centre of pressure is ("
+              << to_string(a.gravity_off->second.x) << ", " << to_string(a.gravity_off->second.y)
+              << "): a body at rest on the support would need them to coincide\n";
   std::cout << "decided by: " << a.closure.decided_by() << " for closure"
             << (a.equilibrium ? std::string(", ") + a.equilibrium->answer.decided_by() + " for equilibrium" : std::string())
             << "\n"

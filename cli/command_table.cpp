@@ -377,7 +377,8 @@ std::vector<Command> make_table() {
               with_help(kTwist,
                         "also the load for this twist on LS_in and LS_out (a point, a segment or a facet), the "
                         "bounds h_in <= h <= h_out, and what the twist is on the true LS"),
-              kLoad, kList, kOff, kObj, kSvg},
+              kLoad, with_help(kCertificate, "write the certificate of --load's motion to FILE (checked first)"), kList,
+              kOff, kObj, kSvg},
              kLimits}),
        {kScene},
        run_limit_surface,

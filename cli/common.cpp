@@ -72,6 +72,16 @@ std::string vec_text(const std::array<Rational, 3>& v) {
   return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")";
 }
 
+int write_answer(const Options& o, const std::function<std::string()>& json, const std::function<std::string()>& text) {
+  if (o.json) std::cout << json() << "\n";
+  else std::cout << text();
+  return kAnswered;
+}
+
+std::string scene_line(const std::string& name, const std::string& source) {
+  return "scene: " + (name.empty() ? source : name) + "\n";
+}
+
 std::string region_sentence(const std::string& shape, const std::vector<std::string>& v,
                             const std::vector<std::string>& d) {
   const auto list = [](const std::vector<std::string>& x) {

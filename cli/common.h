@@ -16,6 +16,7 @@
 #include "core/mode.h"
 #include "exact/io/json_writer.h"
 #include "exact/pipeline/pipeline.h"
+#include "exact/pipeline/support_answer.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/numbers/limits.h"
@@ -100,6 +101,16 @@ int report(const Ended& e);
 // The pipeline request of the command line's options: --mode, --verdict-only, the --max-* limits.
 Request request_of(const Options& o);
 
+// Writes a single command's answer: its JSON line with --json, else its text for people (each made only
+// when needed); returns kAnswered.
+int write_answer(const Options& o, const std::function<std::string()>& json, const std::function<std::string()>& text);
+// sliding_command.cpp: a support with unknown forces as JSON members ("distribution": "unknown", … and
+// "power": {…}) written into the answer's object, for sliding and limit-surface alike.
+void write_unknown_distribution(Json_writer& w, const Support_item& r);
+void write_power_over(Json_writer& w, const Support_item& r);
+// "scene: NAME" (or the source when the scene has no name), the first line of every text answer.
+std::string scene_line(const std::string& name, const std::string& source);
+
 // Reads a whole file (or standard input for "-"), refusing more than `limit` bytes.
 std::string read_input(const std::string& path, std::size_t limit);
 // Writes FILE atomically: a temporary beside it, then a rename, so nothing is half-written.
@@ -137,6 +148,26 @@ std::string json_answer(Write&& write, std::size_t reserve = 512) {
   write(w);
   w.end_object();
   return w.take();
+}
+
+// A per-scene command from its parts: `read` takes its options once (before any scene), `answer` answers one
+// scene through the pipeline, `json` (Json_writer&, options, item) writes the answer's members and `to_text`
+// its text. per_scene gives its batch form (the command's --json answer per scene text); run_per_scene
+// answers one scene and writes it.
+template <class Read, class Answer, class Json>
+Scene_answer per_scene(const Options& o, Read read, Answer answer, Json json) {
+  return [o, opts = read(o), answer, json](Json_writer& w, const std::string& text, const std::string& source) {
+    json(w, opts, answer(opts, o, text, source));
+  };
+}
+template <class Read, class Answer, class Json, class Text>
+int run_per_scene(const Options& o, const std::string& text, const std::string& source, Read read, Answer answer,
+                  Json json, Text to_text) {
+  const auto opts = read(o);
+  const auto item = answer(opts, o, text, source);
+  return write_answer(
+      o, [&] { return json_answer([&](Json_writer& w) { json(w, opts, item); }, 2048); },
+      [&] { return to_text(opts, item, source); });
 }
 
 // Each command's prepare_*_json reads what it needs of the (already validated) options once, checks

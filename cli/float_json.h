@@ -10,8 +10,8 @@
 #include <string>
 
 #include "exact/io/json_writer.h"
-#include "float/labels_twin.h"
-#include "float/limit_surface_twin.h"
+#include "exact/pipeline/labels_answer.h"   // the twin's values the pipeline answers with
+#include "exact/pipeline/support_answer.h"
 
 namespace wrenchkit::cli {
 

@@ -275,41 +275,29 @@ Scene_answer prepare_reuleaux_json(const Options& o) {
   };
 }
 
-int run_labels(const Options& o, const std::string& text, const std::string& source) {
-  const Labels_query q = labels_query(o);
-  const Labels_item s = label(o, q, text, source);
-  if (o.json) {
-    std::cout << json_answer([&](Json_writer& w) { write_labels_answer(w, s, q); }, 2048) << "\n";
-    return kAnswered;
-  }
-  std::cout << "scene: " << (s.scene.name.empty() ? source : s.scene.name) << "\n"
-            << "moment labels of the contact wrench cone (with friction"
-            << (s.mode == Mode::float_only ? "" : "; exact") << "):\n"
-            << human_labels(s) << "force closure: " << (s.closed() ? "yes" : "no")
-            << " (nothing labeled, infinity included)\n";
+namespace {
+
+std::string labels_text(const Labels_item& s, const Labels_query& q, const std::string& source) {
+  std::ostringstream out;
+  out << scene_line(s.scene.name, source) << "moment labels of the contact wrench cone (with friction"
+      << (s.mode == Mode::float_only ? "" : "; exact") << "):\n"
+      << human_labels(s) << "force closure: " << (s.closed() ? "yes" : "no") << " (nothing labeled, infinity included)\n";
   if (q.resultant)
-    std::cout << "resultant " << vec_text({(*q.resultant)[0], (*q.resultant)[1], (*q.resultant)[2]}) << ": "
-              << (*s.resultant_possible ? "possible" : "not possible") << "\n";
-  std::cout << decided_line(s);
-  return kAnswered;
+    out << "resultant " << vec_text({(*q.resultant)[0], (*q.resultant)[1], (*q.resultant)[2]}) << ": "
+        << (*s.resultant_possible ? "possible" : "not possible") << "\n";
+  return out.str() + decided_line(s);
 }
 
-int run_dual(const Options& o, const std::string& text, const std::string& source) {
-  const Labels_query q = dual_query(o);
-  const Labels_item s = label(o, q, text, source);
+std::string dual_text(const Labels_item& s, const std::string& source) {
   const bool fm = s.mode == Mode::float_only;
-  if (o.json) {
-    std::cout << json_answer([&](Json_writer& w) { fm ? write_float_dual_answer(w, s) : write_dual_answer(w, s); }, 4096)
-              << "\n";
-    return kAnswered;
-  }
-  std::cout << "scene: " << (s.scene.name.empty() ? source : s.scene.name) << "\n"
-            << "force dual of the contact wrench cone (D(w) = (-fy, fx, m)" << (fm ? "" : "; exact") << "):\n";
-  const auto sheets = [](bool covers_all, const std::string& plus, const std::string& minus, const std::string& inf) {
-    std::cout << "covers the whole two-sided plane: " << (covers_all ? "yes (force closure)" : "no") << "\n"
-              << "+ sheet (m > 0): " << plus << "\n"
-              << "- sheet (m < 0): " << minus << "\n"
-              << "at infinity (m = 0): " << inf << "\n";
+  std::ostringstream out;
+  out << scene_line(s.scene.name, source) << "force dual of the contact wrench cone (D(w) = (-fy, fx, m)"
+      << (fm ? "" : "; exact") << "):\n";
+  const auto sheets = [&](bool covers_all, const std::string& plus, const std::string& minus, const std::string& inf) {
+    out << "covers the whole two-sided plane: " << (covers_all ? "yes (force closure)" : "no") << "\n"
+        << "+ sheet (m > 0): " << plus << "\n"
+        << "- sheet (m < 0): " << minus << "\n"
+        << "at infinity (m = 0): " << inf << "\n";
   };
   if (fm) {
     const fl::Dual_twin& d = *s.twin_dual;
@@ -319,36 +307,56 @@ int run_dual(const Options& o, const std::string& text, const std::string& sourc
     const Force_dual& d = *s.dual;
     sheets(d.covers_all, region_text(d.plus_sheet), region_text(d.minus_sheet), infinity_text(d.infinity));
     if (d.reference)
-      std::cout << "about the reference point " << pt(*d.reference)
-                << " (inside the + region of the labels) the dual is " << region_text(d.about_reference) << "\n";
+      out << "about the reference point " << pt(*d.reference) << " (inside the + region of the labels) the dual is "
+          << region_text(d.about_reference) << "\n";
   }
-  std::cout << decided_line(s);
-  return kAnswered;
+  return out.str() + decided_line(s);
+}
+
+std::string reuleaux_text(const Labels_item& s, const Labels_query& q, const std::string& source) {
+  std::ostringstream out;
+  out << scene_line(s.scene.name, source) << "Reuleaux's method: the contacts read frictionless\n" << human_labels(s)
+      << "first-order form closure: " << (s.closed() ? "yes (no feasible rotation centre or translation)" : "no")
+      << "\n";
+  if (q.motion) {
+    const Mode_answer& m = *s.modes;
+    out << "twist " << vec_text({(*q.motion)[0], (*q.motion)[1], (*q.motion)[2]}) << ": "
+        << (m.feasible ? (m.marginal ? "feasible, marginal (keeps some contacts to first order)" : "feasible")
+                       : "infeasible (penetrates)")
+        << "\n";
+    for (std::size_t i = 0; i < m.modes.size(); ++i) out << "  contact " << i << ": " << mode_name(m.modes[i]) << "\n";
+  }
+  return out.str() + decided_line(s);
+}
+
+}  // namespace
+
+int run_labels(const Options& o, const std::string& text, const std::string& source) {
+  const Labels_query q = labels_query(o);
+  const Labels_item s = label(o, q, text, source);
+  return write_answer(
+      o, [&] { return json_answer([&](Json_writer& w) { write_labels_answer(w, s, q); }, 2048); },
+      [&] { return labels_text(s, q, source); });
+}
+
+int run_dual(const Options& o, const std::string& text, const std::string& source) {
+  const Labels_item s = label(o, dual_query(o), text, source);
+  return write_answer(
+      o,
+      [&] {
+        return json_answer([&](Json_writer& w) {
+          s.mode == Mode::float_only ? write_float_dual_answer(w, s) : write_dual_answer(w, s);
+        }, 4096);
+      },
+      [&] { return dual_text(s, source); });
 }
 
 int run_reuleaux(const Options& o, const std::string& text, const std::string& source) {
   const Labels_query q = reuleaux_query(o);
   const Labels_item s = label(o, q, text, source);
-  if (o.json) {
-    std::cout << json_answer([&](Json_writer& w) { write_reuleaux_answer(w, s, q); }, 2048) << "\n";
-    return kAnswered;
-  }
-  std::cout << "scene: " << (s.scene.name.empty() ? source : s.scene.name) << "\n"
-            << "Reuleaux's method: the contacts read frictionless\n"
-            << human_labels(s)
-            << "first-order form closure: " << (s.closed() ? "yes (no feasible rotation centre or translation)" : "no")
-            << "\n";
-  if (q.motion) {
-    const Mode_answer& m = *s.modes;
-    std::cout << "twist " << vec_text({(*q.motion)[0], (*q.motion)[1], (*q.motion)[2]}) << ": "
-              << (m.feasible ? (m.marginal ? "feasible, marginal (keeps some contacts to first order)" : "feasible")
-                             : "infeasible (penetrates)")
-              << "\n";
-    for (std::size_t i = 0; i < m.modes.size(); ++i)
-      std::cout << "  contact " << i << ": " << mode_name(m.modes[i]) << "\n";
-  }
-  std::cout << decided_line(s);
-  return kAnswered;
+  return write_answer(
+      o, [&] { return json_answer([&](Json_writer& w) { write_reuleaux_answer(w, s, q); }, 2048); },
+      [&] { return reuleaux_text(s, q, source); });
 }
 
 }  // namespace wrenchkit::cli

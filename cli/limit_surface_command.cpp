@@ -18,7 +18,6 @@
 #include "exact/sliding/sliding.h"
 #include "exact/io/streaming_scene_reader.h"
 #include "exact/io/to_float.h"
-#include "float/limit_surface_twin.h"
 
 namespace wrenchkit::cli {
 
@@ -145,6 +144,19 @@ void write_true(Json_writer& w, const Support_item& r) {
   write_float_load(w.key("true_load"), *r.true_load);
 }
 
+// "certificate_checked": true, "certificate": {…} when the motion has a certificate (the independent checker
+// accepted it); "uncertified": "…" when a verdict found no rational witness and is reported undecided.
+void write_certificate_members(Json_writer& w, const Support_item& r) {
+  if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
+  else if (!r.uncertified.empty()) w.member("uncertified", r.uncertified);
+}
+
+std::string certificate_line(const Support_item& r) {
+  if (!r.certificate.empty()) return "  certificate accepted by the independent checker (exact arithmetic)\n";
+  if (!r.uncertified.empty()) return "  " + r.uncertified + "\n";
+  return "";
+}
+
 void write_motion(Json_writer& w, const Support_item& r) {
   w.member("motion_decided_by", r.motion.decided_by);
   if (r.motion.cells) w.member("search_twists", r.motion.cells);
@@ -215,6 +227,7 @@ void write_limit_surface(Json_writer& w, const Ls_options& lo, const Support_ite
     write_gauge(w.key("gauge").object().key("outer"), r.gauge_out);
     write_gauge(w.key("inner"), r.gauge_in);
     w.end_object();
+    write_certificate_members(w, r);
     if (r.motion.motion != Motion::sticks) {
       w.key("twist_cone").object();
       cone("outer", r.cone_out);
@@ -268,6 +281,7 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
                                                                                                          : "nothing")
       << ")\n";
     if (r.motion.motion == Motion::undecided) s << "  undecided: refine with more --sides or a smaller --tolerance\n";
+    s << certificate_line(r);
     if (r.motion.motion != Motion::sticks) {
       s << "  twists (outward normals of LS_out at the load's direction):";
       for (const Vec3z& g : r.cone_out.generators) s << " " << tz(g);
@@ -278,8 +292,8 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
   return s.str();
 }
 
-// --mode float: the twin alone (no exact polytopes). Its direction set has double parameters t_j, so
-// its λ² is certified for that set (close to, not equal to, the exact set's).
+// --mode float: the twin alone (no exact polytopes). Its direction set is the exact engine's (the same
+// integer parameters, core/limit_surface_directions.h), so its λ² and polygonal powers bracket the exact ones.
 void write_limit_surface_float(Json_writer& w, const Ls_options& lo, const Support_item& r) {
   const fl::Directions_twin& d = *r.twin_directions;
   const fl::Point2& cof = r.twin_center_of_friction;
@@ -304,6 +318,7 @@ void write_limit_surface_float(Json_writer& w, const Ls_options& lo, const Suppo
     w.key("load").rationals(*lo.load);
     w.member("motion", motion_name(r.motion.motion));
     write_motion(w, r);
+    write_certificate_members(w, r);
   }
 }
 
@@ -329,35 +344,120 @@ std::string limit_surface_float_human(const Ls_options& lo, const Support_item& 
     if (r.motion.motion == Motion::slides)
       s << "  a twist with h(q) <= q.p: (" << float_number(r.motion.witness[0]) << ", " << float_number(r.motion.witness[1])
         << ", " << float_number(r.motion.witness[2]) << ")\n";
+    s << certificate_line(r);
   }
   s << "decided by: the float twin alone (every sign certified; values with certified bounds)\n";
   return s.str();
 }
 
+// An unknown distribution (docs/theory-sliding.md §2): the admissible set, the power over it for --twist,
+// and for --load whether it sticks for every distribution, slides for every one, or depends, with witnesses.
+void write_limit_surface_unknown(Json_writer& w, const Ls_options& lo, const Support_item& r) {
+  w.member("command", "limit-surface").member("name", r.scene.name).member("mode", mode_name(r.mode));
+  w.member("convention", kConvention).member("sides", lo.sides);
+  write_unknown_distribution(w, r);
+  if (lo.twist) {
+    w.key("twist").rationals(*lo.twist);
+    write_power_over(w, r);
+  }
+  if (!lo.load) return;
+  const Motion_over_f& m = *r.motion_over;
+  w.key("load").rationals(*lo.load).member("motion", motion_over_name(m.motion)).member("motion_decided_by", m.decided_by);
+  w.key("per_extreme_distribution").array();
+  for (const Motion v : m.per_vertex) w.string(motion_name(v));
+  w.end_array();
+  if (m.motion == Motion_over::depends) {
+    w.key("witnesses").object().key("sticks").object();
+    if (m.sticking) {
+      w.key("distribution").rationals(m.sticking->distribution).key("support_forces").array();
+      for (const auto& f : m.sticking->forces) w.array().rational(f.x).rational(f.y).end_array();
+      w.end_array();
+    } else {
+      w.key("distribution").rationals(r.vertices[*m.sticking_vertex]);
+    }
+    w.end_object().key("slides").object().key("distribution").rationals(r.vertices[*m.sliding_vertex]);
+    w.end_object().end_object();
+  }
+  if (m.separating_twist) w.key("separating_twist").rationals(*m.separating_twist);
+  write_certificate_members(w, r);
+}
+
+std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
+  const Admissible& a = *r.admissible;
+  const auto dist = [](const std::vector<Rational>& f) {
+    std::string s = "(";
+    for (std::size_t i = 0; i < f.size(); ++i) s += (i ? ", " : "") + human_number(f[i]);
+    return s + ")";
+  };
+  std::ostringstream s;
+  s << scene_line(r.scene.name, source) << "support: " << r.scene.support->points.size() << " points, the forces of "
+    << a.unknown.size() << " not given; weight " << human_number(*r.scene.support->weight) << ", centre of pressure ("
+    << human_number(r.pressure_center.x) << ", " << human_number(r.pressure_center.y) << "); "
+    << r.vertices.size() << " extreme admissible distributions\n";
+  if (lo.twist)
+    s << "twist " << tv(*lo.twist) << ": the frictional power over every admissible distribution lies in ["
+      << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n";
+  if (lo.load) {
+    const Motion_over_f& m = *r.motion_over;
+    s << "load " << tv(*lo.load) << ": ";
+    switch (m.motion) {
+      case Motion_over::sticks: s << "sticks for every admissible distribution (every extreme one sticks)\n"; break;
+      case Motion_over::slides:
+        s << "slides for every admissible distribution (the twist " << tv(*m.separating_twist)
+          << " drives it past every one's limit surface)\n";
+        break;
+      case Motion_over::depends:
+        s << "depends on the distribution: it sticks with f = "
+          << dist(m.sticking ? m.sticking->distribution : r.vertices[*m.sticking_vertex]) << " and slides with f = "
+          << dist(r.vertices[*m.sliding_vertex]) << "\n";
+        break;
+      case Motion_over::undecided:
+        s << "undecided (within the resolution of the limit surfaces; refine --sides)\n";
+        break;
+    }
+    s << certificate_line(r);
+  }
+  s << "convention: " << kConvention << "\n";
+  return s.str();
+}
+
+// The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone, or
+// the exact answer).
+void answer_json(Json_writer& w, const Ls_options& lo, const Support_item& r) {
+  if (r.admissible) write_limit_surface_unknown(w, lo, r);
+  else if (lo.mode == Mode::float_only) write_limit_surface_float(w, lo, r);
+  else write_limit_surface(w, lo, r);
+}
+
+std::string answer_text(const Ls_options& lo, const Support_item& r, const std::string& source) {
+  if (r.admissible) return limit_surface_unknown_human(lo, r, source);
+  return lo.mode == Mode::float_only ? limit_surface_float_human(lo, r, source) : limit_surface_human(lo, r, source);
+}
+
 }  // namespace
 
 Scene_answer prepare_limit_surface_json(const Options& o) {
-  return [o, lo = limit_surface_options(o)](Json_writer& w, const std::string& text, const std::string& source) {
-    const Support_item r = compute_limit_surface(lo, o, text, source);
-    if (lo.mode == Mode::float_only) write_limit_surface_float(w, lo, r);
-    else write_limit_surface(w, lo, r);
-  };
+  return per_scene(o, limit_surface_options, compute_limit_surface, answer_json);
 }
 
 int run_limit_surface(const Options& o, const std::string& text, const std::string& source) {
   const Ls_options lo = limit_surface_options(o);
   const Support_item r = compute_limit_surface(lo, o, text, source);
+  if (r.admissible && (lo.list || !lo.off_file.empty() || !lo.obj_file.empty() || !lo.svg_file.empty()))
+    throw Input_error(source + ": support: the forces of some points are not given, so there is no one limit surface "
+                      "to list or draw (--list, --off, --obj, --svg need every force)");
+  if (!o.certificate_file.empty()) {
+    if (r.certificate.empty())
+      throw Failure(Status::undecided, cli_message(Status::undecided, "the load's motion is undecided: no certificate to "
+                                                                      "write"));
+    write_file(o.certificate_file, r.certificate + "\n");
+  }
   if (!lo.off_file.empty()) write_file(lo.off_file, off_text(r.in, r.out));
   if (!lo.obj_file.empty()) write_file(lo.obj_file, obj_text(r.in, r.out));
   if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.sides));
-  const bool fm = lo.mode == Mode::float_only;
-  if (o.json)
-    std::cout << json_answer([&](Json_writer& w) { fm ? write_limit_surface_float(w, lo, r) : write_limit_surface(w, lo, r); },
-                             4096)
-              << "\n";
-  else
-    std::cout << (fm ? limit_surface_float_human(lo, r, source) : limit_surface_human(lo, r, source));
-  return kAnswered;
+  return write_answer(
+      o, [&] { return json_answer([&](Json_writer& w) { answer_json(w, lo, r); }, 4096); },
+      [&] { return answer_text(lo, r, source); });
 }
 
 }  // namespace wrenchkit::cli

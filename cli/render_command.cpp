@@ -23,12 +23,7 @@ const char* kLoad = "#1e8c3a";
 const char* kCone = "#f0a030";
 
 std::string swatch(const std::string& colour, double opacity = 0.45) {
-  return "fill=\"" + colour + "\" fill-opacity=\"" + std::to_string(opacity).substr(0, 4) + "\" stroke=\"" + colour + "\"";
-}
-
-P2 unit(P2 d) {
-  const double n = std::hypot(d.x, d.y);
-  return n > 0 ? P2{d.x / n, d.y / n} : P2{1, 0};
+  return "fill=\"" + colour + "\" fill-opacity=\"" + svg_num(opacity) + "\" stroke=\"" + colour + "\"";
 }
 
 // The view: every finite point the picture shows, with a margin.

@@ -17,12 +17,35 @@
 
 namespace wrenchkit::cli {
 
+// An unknown distribution (docs/theory-sliding.md §1–§2), for sliding and limit-surface alike.
+void write_unknown_distribution(Json_writer& w, const Support_item& r) {
+  const Admissible& a = *r.admissible;
+  w.member("distribution", "unknown").key("unknown_points").array();
+  for (const auto k : a.unknown) w.integer(k);
+  w.end_array().member("weight", *r.scene.support->weight);
+  w.key("pressure_center").array().rational(r.pressure_center.x).rational(r.pressure_center.y).end_array();
+  w.key("extreme_distributions");
+  if (a.unknown.size() > kMaxEnumeratedUnknowns) {
+    w.null();
+    return;
+  }
+  w.array();
+  for (const std::vector<Rational>& f : r.vertices) w.rationals(f);
+  w.end_array();
+}
+
+void write_power_over(Json_writer& w, const Support_item& r) {
+  w.key("power").object().member("lower", r.power->lower).member("upper", r.power->upper);
+  w.key("min_distribution").rationals(r.power->min_distribution);
+  w.key("max_distribution").rationals(r.power->max_distribution).end_object();
+}
+
 namespace {
 
-void write_pair(Json_writer& w, const Rational& x, const Rational& y) { w.array().rational(x).rational(y).end_array(); }
 std::string thv(const Vec3q& v) {
   return "(" + human_number(v[0]) + ", " + human_number(v[1]) + ", " + human_number(v[2]) + ")";
 }
+void write_pair(Json_writer& w, const Rational& x, const Rational& y) { w.array().rational(x).rational(y).end_array(); }
 void write_face(Json_writer& w, const Ls_face& f) {
   w.object().member("dimension", f.dimension).key("vertices").array();
   for (const Vec3q& v : f.vertices) w.rationals(v);
@@ -67,8 +90,7 @@ void write_sliding_float(Json_writer& w, const Sliding_options& so, const Suppor
   write_float_value(w, cof.y);
   write_float_value(w.end_array().key("mu_f0"), r.twin_mu_f0);
   if (so.twist) {
-    w.key("twist").rationals(*so.twist);
-    w.member("sides", so.sides);
+    w.key("twist").rationals(*so.twist).member("sides", so.sides);
     write_float_value(w.key("lambda_squared"), r.twin_directions->lambda_sq);
     write_float_value(w.key("power").object().key("inner"), *r.twin_power_inner);
     write_float_value(w.key("outer"), *r.twin_power_outer);
@@ -95,6 +117,39 @@ const char* kConvention =
     "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
     "the friction wrench on the slider is its negative";
 
+void write_sliding_unknown(Json_writer& w, const Sliding_options& so, const Support_item& r) {
+  w.member("command", "sliding").member("name", r.scene.name).member("mode", mode_name(r.mode));
+  w.member("convention", kConvention);
+  write_unknown_distribution(w, r);
+  if (so.twist) {
+    w.key("twist").rationals(*so.twist);
+    write_power_over(w, r);
+  }
+}
+
+std::string sliding_unknown_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
+  const Admissible& a = *r.admissible;
+  const auto dist = [](const std::vector<Rational>& f) {
+    std::string s = "(";
+    for (std::size_t i = 0; i < f.size(); ++i) s += (i ? ", " : "") + human_number(f[i]);
+    return s + ")";
+  };
+  std::ostringstream s;
+  s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
+    << "support: " << r.scene.support->points.size() << " points, the forces of " << a.unknown.size()
+    << " not given; weight " << human_number(*r.scene.support->weight) << ", centre of pressure ("
+    << human_number(r.pressure_center.x) << ", " << human_number(r.pressure_center.y) << ")\n";
+  if (a.unknown.size() <= kMaxEnumeratedUnknowns)
+    s << "extreme admissible distributions: " << r.vertices.size() << "\n";
+  if (so.twist)
+    s << "twist " << thv(*so.twist) << ": the frictional power over every admissible distribution lies in ["
+      << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n"
+      << "  least at f = " << dist(r.power->min_distribution) << ", most at f = " << dist(r.power->max_distribution)
+      << "\n";
+  s << "convention: " << kConvention << "\n";
+  return s.str();
+}
+
 void write_sliding(Json_writer& w, const Sliding_options& so, const Support_item& r) {
   const Sliding_answer& a = r.sliding;
   const char* kinds[] = {"facet", "vertex", "smooth"};
@@ -104,11 +159,9 @@ void write_sliding(Json_writer& w, const Sliding_options& so, const Support_item
   write_pair(w.key("friction_centroid"), a.friction_centroid.x, a.friction_centroid.y);
   w.member("mu_f0", a.mu_f0);
   if (!a.has_twist) return;
-  w.key("twist").rationals(a.twist);
-  w.member("motion", a.translation ? "translation" : "rotation");
+  w.key("twist").rationals(a.twist).member("motion", a.translation ? "translation" : "rotation");
   if (a.translation) {
-    w.key("load_direction").rationals(a.load_direction);
-    w.member("speed_squared", a.speed_squared).key("load");
+    w.key("load_direction").rationals(a.load_direction).member("speed_squared", a.speed_squared).key("load");
     a.load ? w.rationals(*a.load) : w.null();
   } else {
     write_pair(w.key("rotation_center"), a.rotation_center.x, a.rotation_center.y);
@@ -122,8 +175,7 @@ void write_sliding(Json_writer& w, const Sliding_options& so, const Support_item
   w.end_object().member("sides", so.sides).member("lambda_squared", r.model->directions().lambda_sq);
   w.key("power").object().member("inner", a.h_inner).member("outer", a.h_outer).member("lower", a.h_lo);
   w.member("upper", a.h_hi).end_object();
-  w.key("load_box").object().key("lower").rationals(a.load_lo);
-  w.key("upper").rationals(a.load_hi);
+  w.key("load_box").object().key("lower").rationals(a.load_lo).key("upper").rationals(a.load_hi);
   w.member("of", a.cls.kind == Twist_kind::facet ? "the facet's centre" : "the load").end_object();
   write_face(w.key("inner_load"), a.inner_face);
   write_face(w.key("outer_load"), a.outer_face);
@@ -158,26 +210,25 @@ std::string sliding_human(const Sliding_options& so, const Support_item& r, cons
   return s.str();
 }
 
-}  // namespace
-
-Scene_answer prepare_sliding_json(const Options& o) {
-  return [o, so = sliding_options(o)](Json_writer& w, const std::string& text, const std::string& source) {
-    const Support_item r = compute(so, o, text, source);
-    if (so.mode == Mode::float_only) write_sliding_float(w, so, r);
-    else write_sliding(w, so, r);
-  };
+// The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone,
+// or the exact answer).
+void answer_json(Json_writer& w, const Sliding_options& so, const Support_item& r) {
+  if (r.admissible) write_sliding_unknown(w, so, r);
+  else if (so.mode == Mode::float_only) write_sliding_float(w, so, r);
+  else write_sliding(w, so, r);
 }
 
+std::string answer_text(const Sliding_options& so, const Support_item& r, const std::string& source) {
+  if (r.admissible) return sliding_unknown_human(so, r, source);
+  return so.mode == Mode::float_only ? sliding_float_human(so, r, source) : sliding_human(so, r, source);
+}
+
+}  // namespace
+
+Scene_answer prepare_sliding_json(const Options& o) { return per_scene(o, sliding_options, compute, answer_json); }
+
 int run_sliding(const Options& o, const std::string& text, const std::string& source) {
-  const Sliding_options so = sliding_options(o);
-  const Support_item r = compute(so, o, text, source);
-  const bool fm = so.mode == Mode::float_only;
-  if (o.json)
-    std::cout << json_answer([&](Json_writer& w) { fm ? write_sliding_float(w, so, r) : write_sliding(w, so, r); }, 2048)
-              << "\n";
-  else
-    std::cout << (fm ? sliding_float_human(so, r, source) : sliding_human(so, r, source));
-  return kAnswered;
+  return run_per_scene(o, text, source, sliding_options, compute, answer_json, answer_text);
 }
 
 }  // namespace wrenchkit::cli

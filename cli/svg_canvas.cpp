@@ -10,16 +10,33 @@ namespace {
 
 constexpr double kWidth = 720, kDiscPx = 320, kCx = 360, kCy = 396;
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kPanel = 300, kGap = 30, kTop = 70;  // Svg_panels: panel side, margins, heading height
 
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f", std::isfinite(v) ? v : 0.0);
-  return b;
+std::string num(double v) { return svg_num(v); }
+std::string xy(P2 p) { return num(p.x) + "," + num(p.y); }
+
+// The elements, in page pixels (y runs down), one line each.
+std::string line_el(P2 a, P2 b, const std::string& style) {
+  return "<line x1=\"" + num(a.x) + "\" y1=\"" + num(a.y) + "\" x2=\"" + num(b.x) + "\" y2=\"" + num(b.y) + "\" " + style +
+         "/>\n";
 }
-
-P2 unit(P2 d) {
-  const double n = std::hypot(d.x, d.y);
-  return n > 0 ? P2{d.x / n, d.y / n} : P2{1, 0};
+std::string polygon_el(const std::vector<P2>& px, const std::string& style) {
+  std::string s = "<polygon points=\"";
+  for (const P2& p : px) s += xy(p) + " ";
+  return s + "\" " + style + "/>\n";
+}
+std::string circle_el(P2 c, double r, const std::string& style) {
+  return "<circle cx=\"" + num(c.x) + "\" cy=\"" + num(c.y) + "\" r=\"" + num(r) + "\" " + style + "/>\n";
+}
+std::string text_el(P2 at, const std::string& text, const std::string& style) {
+  return "<text x=\"" + num(at.x) + "\" y=\"" + num(at.y) + "\" " + style + ">" + xml_escape(text) + "</text>\n";
+}
+// The document's opening: size, title, white background (close with "</svg>\n").
+std::string document_head(double width, double height, const std::string& title) {
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(width) +
+         "\" height=\"" + num(height) + "\" viewBox=\"0 0 " + num(width) + " " + num(height) +
+         "\" font-family=\"sans-serif\">\n<title>" + xml_escape(title) +
+         "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
 }
 
 // Liang–Barsky: the part of segment a→b inside the box; false if none.
@@ -46,6 +63,38 @@ bool clip_segment(P2& a, P2& b, double x0, double y0, double x1, double y1) {
 }  // namespace
 
 P2 to_p2(const Vec2& v) { return {v.x.get_d(), v.y.get_d()}; }
+
+P2 unit(P2 d) {
+  const double n = std::hypot(d.x, d.y);
+  return n > 0 ? P2{d.x / n, d.y / n} : P2{1, 0};
+}
+
+std::string svg_num(double v, int decimals) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", decimals, std::isfinite(v) ? v : 0.0);
+  return b;
+}
+
+std::vector<P2> convex_hull(std::vector<P2> p) {
+  const auto less = [](P2 a, P2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
+  const auto same = [](P2 a, P2 b) { return a.x == b.x && a.y == b.y; };
+  const auto cross = [](P2 o, P2 a, P2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+  std::sort(p.begin(), p.end(), less);
+  p.erase(std::unique(p.begin(), p.end(), same), p.end());
+  if (p.size() < 3) return p;
+  std::vector<P2> h(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {  // lower chain
+    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, t = k + 1; i > 0; --i) {  // upper chain
+    while (k >= t && cross(h[k - 2], h[k - 1], p[i - 1]) <= 0) --k;
+    h[k++] = p[i - 1];
+  }
+  h.resize(k - 1);
+  return h;
+}
 
 std::string xml_escape(const std::string& s) {
   std::string o;
@@ -107,21 +156,16 @@ std::vector<P2> Svg_canvas::clip(const std::vector<P2>& poly) const {
 std::vector<P2> Svg_canvas::polygon(const std::vector<P2>& pts, const std::string& style) {
   const std::vector<P2> c = clip(pts);
   if (c.size() < 3) return c;
-  body_ += "<polygon points=\"";
-  for (const P2& p : c) {
-    const P2 s = screen(p);
-    body_ += num(s.x) + "," + num(s.y) + " ";
-  }
-  body_ += "\" " + style + "/>\n";
+  std::vector<P2> px;
+  for (const P2& p : c) px.push_back(screen(p));
+  body_ += polygon_el(px, style);
   return c;
 }
 
 void Svg_canvas::line(P2 a, P2 b, const std::string& style) {
   const double r = 1.05 * radius_;
   if (!clip_segment(a, b, centre_.x - r, centre_.y - r, centre_.x + r, centre_.y + r)) return;
-  const P2 sa = screen(a), sb = screen(b);
-  body_ += "<line x1=\"" + num(sa.x) + "\" y1=\"" + num(sa.y) + "\" x2=\"" + num(sb.x) + "\" y2=\"" + num(sb.y) +
-           "\" " + style + "/>\n";
+  body_ += line_el(screen(a), screen(b), style);
 }
 
 void Svg_canvas::full_line(P2 p, P2 d, const std::string& style) {
@@ -137,8 +181,7 @@ void Svg_canvas::arrowhead(P2 tip, P2 dir, const std::string& colour) {
   const P2 n{-d.y, d.x};
   const double L = 11, W = 5;
   const P2 a{s.x - L * d.x + W * n.x, s.y - L * d.y + W * n.y}, b{s.x - L * d.x - W * n.x, s.y - L * d.y - W * n.y};
-  body_ += "<polygon points=\"" + num(s.x) + "," + num(s.y) + " " + num(a.x) + "," + num(a.y) + " " + num(b.x) + "," +
-           num(b.y) + "\" fill=\"" + colour + "\"/>\n";
+  body_ += "<polygon points=\"" + xy(s) + " " + xy(a) + " " + xy(b) + "\" fill=\"" + colour + "\"/>\n";
 }
 
 void Svg_canvas::arrow(P2 from, P2 to, const std::string& colour, double width) {
@@ -148,16 +191,14 @@ void Svg_canvas::arrow(P2 from, P2 to, const std::string& colour, double width) 
 
 void Svg_canvas::dot(P2 p, double r_px, const std::string& style) {
   if (std::hypot(p.x - centre_.x, p.y - centre_.y) > 1.05 * radius_) return;
-  const P2 s = screen(p);
-  body_ += "<circle cx=\"" + num(s.x) + "\" cy=\"" + num(s.y) + "\" r=\"" + num(r_px) + "\" " + style + "/>\n";
+  body_ += circle_el(screen(p), r_px, style);
 }
 
 void Svg_canvas::text(P2 p, const std::string& s, const std::string& style) {
   if (std::hypot(p.x - centre_.x, p.y - centre_.y) > radius_) return;
   const P2 q = screen(p);
   const bool sized = style.find("font-size") != std::string::npos;
-  body_ += "<text x=\"" + num(q.x + 6) + "\" y=\"" + num(q.y - 6) + "\" " + (sized ? "" : "font-size=\"13\" ") + style + ">" +
-           xml_escape(s) + "</text>\n";
+  body_ += text_el({q.x + 6, q.y - 6}, s, (sized ? "" : "font-size=\"13\" ") + style);
 }
 
 void Svg_canvas::region(const Region& r, const std::string& fill, const std::string& stroke, const std::string& label) {
@@ -285,17 +326,13 @@ void Svg_canvas::caption(const std::string& text) { captions_.push_back(text); }
 std::string Svg_canvas::finish() const {
   const double top = kCy + kDiscPx + 30;
   const double height = top + 22.0 * static_cast<double>(legend_.size() + captions_.size()) + 16;
-  std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
-                  num(kWidth) + "\" height=\"" + num(height) + "\" viewBox=\"0 0 " + num(kWidth) + " " + num(height) +
-                  "\" font-family=\"sans-serif\">\n";
-  s += "<title>" + xml_escape(title_ + " \u2014 " + subtitle_) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  std::string s = document_head(kWidth, height, title_ + " \u2014 " + subtitle_);
   s += "<defs><clipPath id=\"view\"><circle cx=\"" + num(kCx) + "\" cy=\"" + num(kCy) + "\" r=\"" + num(kDiscPx) +
        "\"/></clipPath></defs>\n";
   s += "<text x=\"" + num(kCx) + "\" y=\"28\" font-size=\"16\" text-anchor=\"middle\">" + xml_escape(title_) + "</text>\n";
   s += "<text x=\"" + num(kCx) + "\" y=\"50\" font-size=\"14\" fill=\"#555\" text-anchor=\"middle\">" +
        xml_escape(subtitle_) + "</text>\n";
-  s += "<circle cx=\"" + num(kCx) + "\" cy=\"" + num(kCy) + "\" r=\"" + num(kDiscPx + 6) +
-       "\" fill=\"none\" stroke=\"#bbb\" stroke-width=\"1\" stroke-dasharray=\"4 4\"/>\n";
+  s += circle_el({kCx, kCy}, kDiscPx + 6, "fill=\"none\" stroke=\"#bbb\" stroke-width=\"1\" stroke-dasharray=\"4 4\"");
   s += "<g clip-path=\"url(#view)\">\n" + body_ + "</g>\n" + rim_;
   double y = top;
   for (const auto& [style, text] : legend_) {
@@ -308,6 +345,74 @@ std::string Svg_canvas::finish() const {
     y += 22;
   }
   return s + "</svg>\n";
+}
+
+Svg_panels::Svg_panels(std::string title, std::string heading, std::string subheading)
+    : title_(std::move(title)), heading_(std::move(heading)), subheading_(std::move(subheading)) {}
+
+int Svg_panels::panel(std::string title, std::string xlabel, std::string ylabel) {
+  panels_.push_back({std::move(title), std::move(xlabel), std::move(ylabel), {}});
+  return static_cast<int>(panels_.size()) - 1;
+}
+
+void Svg_panels::polygon(int i, std::vector<P2> pts, const std::string& style) {
+  if (!pts.empty()) panels_.at(static_cast<std::size_t>(i)).shapes.push_back({std::move(pts), 0, style});
+}
+
+void Svg_panels::circle(int i, double r, const std::string& style) {
+  panels_.at(static_cast<std::size_t>(i)).shapes.push_back({{}, r, style});
+}
+
+void Svg_panels::legend_box(double x, const std::string& style, const std::string& text) {
+  const double ly = kTop + kPanel + 30;
+  legend_ += "<rect x=\"" + num(kGap + x) + "\" y=\"" + num(ly - 10) + "\" width=\"14\" height=\"10\" " + style + "/>\n";
+  legend_ += text_el({kGap + x + 20, ly}, text, "font-size=\"12\"");
+}
+
+void Svg_panels::legend_line(double x, const std::string& style, const std::string& text) {
+  const double ly = kTop + kPanel + 30;
+  legend_ += line_el({kGap + x, ly - 4}, {kGap + x + 20, ly - 4}, style);
+  legend_ += text_el({kGap + x + 26, ly}, text, "font-size=\"12\"");
+}
+
+std::string Svg_panels::panel_svg(const Panel& p, double x0) const {
+  const double size = kPanel, y0 = kTop;
+  double r = 0;  // the half-range: every shape fits
+  for (const Shape& sh : p.shapes) {
+    r = std::max(r, sh.r);
+    for (const P2& q : sh.pts) r = std::max({r, std::fabs(q.x), std::fabs(q.y)});
+  }
+  if (r == 0) r = 1;
+  const double s = 0.42 * size / r, cx = x0 + size / 2, cy = y0 + size / 2;
+  std::string o = "<g>\n<rect x=\"" + num(x0) + "\" y=\"" + num(y0) + "\" width=\"" + num(size) + "\" height=\"" + num(size) +
+                  "\" fill=\"#fcfcfc\" stroke=\"#999\"/>\n";
+  o += line_el({x0 + 8, cy}, {x0 + size - 8, cy}, "stroke=\"#bbb\"");
+  o += line_el({cx, y0 + 8}, {cx, y0 + size - 8}, "stroke=\"#bbb\"");
+  o += text_el({x0 + size - 10, cy - 6}, p.xlabel, "text-anchor=\"end\" font-size=\"13\"");
+  o += text_el({cx + 6, y0 + 20}, p.ylabel, "font-size=\"13\"");
+  o += text_el({x0 + size / 2, y0 - 8}, p.title, "text-anchor=\"middle\" font-size=\"14\"");
+  // Ticks at ±r, so the scale is readable.
+  o += text_el({cx + s * r, cy + 16}, num(r), "text-anchor=\"middle\" font-size=\"11\"");
+  o += text_el({cx - 4, cy - s * r + 4}, num(r), "text-anchor=\"end\" font-size=\"11\"");
+  for (const Shape& sh : p.shapes) {
+    if (sh.pts.empty()) {
+      o += circle_el({cx, cy}, s * sh.r, sh.style);
+      continue;
+    }
+    std::vector<P2> px;
+    for (const P2& q : sh.pts) px.push_back({cx + s * q.x, cy - s * q.y});
+    o += polygon_el(px, sh.style);
+  }
+  return o + "</g>\n";
+}
+
+std::string Svg_panels::finish() const {
+  const double n = static_cast<double>(panels_.size());
+  std::string s = document_head(kGap + n * (kPanel + kGap), kTop + kPanel + 70, title_);
+  s += "<text x=\"" + num(kGap) + "\" y=\"26\" font-size=\"16\">" + xml_escape(heading_) + "</text>\n";
+  s += "<text x=\"" + num(kGap) + "\" y=\"46\" font-size=\"12\">" + xml_escape(subheading_) + "</text>\n";
+  for (std::size_t i = 0; i < panels_.size(); ++i) s += panel_svg(panels_[i], kGap + static_cast<double>(i) * (kPanel + kGap));
+  return s + legend_ + "</svg>\n";
 }
 
 }  // namespace wrenchkit::cli

@@ -18,7 +18,8 @@
 // two-sided plane) are in counter-clockwise cyclic order: the front sheet is conv{p_j/Z_j : Z_j > 0}
 // + pos(D), where D holds (X, Y) of the rays with Z = 0 and of the crossings Z_a p_b − Z_b p_a of
 // consecutive rays with Z_a > 0 > Z_b (and symmetrically); the back sheet is the front sheet of the
-// negated cone (its cycle reversed); the points at infinity are pos(D). Complexity O(K) after FC-1.
+// negated cone (its cycle reversed); the points at infinity are pos(D). Complexity O(K) after FC-1. Why this
+// walk is not exact/statics/planar_region.h's slicing written over Bounded: proofs/notes/LB-5-slicing-twins.md.
 #pragma once
 
 #include <cstddef>

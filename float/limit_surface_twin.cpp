@@ -1,5 +1,7 @@
 #include "float/limit_surface_twin.h"
 
+#include "core/limit_surface_directions.h"
+
 #include <cmath>
 #include <queue>
 #include <stdexcept>
@@ -10,7 +12,6 @@ namespace wrenchkit::fl {
 namespace {
 
 constexpr double kSqrt2Up = 1.4142135623730952;  // the double above √2
-constexpr double kPi = 3.14159265358979323846;
 
 Bounded ex(double x) { return Bounded::exact(x); }
 
@@ -73,25 +74,21 @@ Load_twin load_for_twist(const std::vector<Support_point_twin>& s, const Bounded
 }
 
 Directions_twin make_directions(int n) {
-  if (n < 4 || n % 2 != 0 || n > 4096)
-    throw std::invalid_argument("make_directions: n must be even, 4 <= n <= 4096, not " + std::to_string(n));
+  // The exact engine's integers (core/limit_surface_directions.h): t = a/den gives
+  // u = ((den² − a²), 2·a·den)/(den² + a²), integers below 2^53 (exact doubles), one Bounded quotient each.
+  const Direction_parameters p = direction_parameters(n);
+  const int half = n / 2, q = static_cast<int>(p.a.size());
   Directions_twin d;
   d.n = n;
   d.u.resize(n);
-  const int half = n / 2;
-  for (int j = 0; j < half; ++j) {
-    const int mirror = half - 1 - j;
-    if (mirror < j) break;
-    if (mirror == j) {  // φ = π/2: u = (0, 1)
-      d.u[j] = {ex(0), ex(1)};
-      break;
-    }
-    // φ_j = 2π(j + ½)/n in (0, π/2); t = tan(φ/2) rounded to a double is an exact rational parameter.
-    const Bounded t = ex(std::tan(kPi * (j + 0.5) / n));
-    const Bounded den = ex(1) + t * t;
-    d.u[j] = {(ex(1) - t * t) / den, (ex(2) * t) / den};
-    d.u[mirror] = {-d.u[j].x, d.u[j].y};  // u(1/t): the reflection in the y-axis, exactly
+  const double den = static_cast<double>(p.den), den2 = den * den;
+  for (int j = 0; j < q; ++j) {
+    const double a = static_cast<double>(p.a[j]);
+    const Bounded norm = ex(den2 + a * a);
+    d.u[j] = {ex(den2 - a * a) / norm, ex(2 * a * den) / norm};
+    d.u[half - 1 - j] = {-d.u[j].x, d.u[j].y};  // u(1/t): the reflection in the y-axis, exactly
   }
+  if (p.middle) d.u[q] = {ex(0), ex(1)};  // φ = π/2: u = (0, 1)
   for (int j = 0; j < half; ++j) d.u[j + half] = {-d.u[j].x, -d.u[j].y};
   Bounded cmin = ex(2);
   for (int j = 0; j < n; ++j) {

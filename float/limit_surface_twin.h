@@ -4,8 +4,9 @@
 //   h(q) = Σ_i ρ_i |v_i(q)|,   v_i(q) = (v_x − ω y_i, v_y + ω x_i)             (theory.md §11.3)
 // and the true load for a twist, p(q) = Σ_{v_i ≠ 0} ρ_i (v̂_i, r_i × v̂_i) (a facet when some v_i = 0, §11.5),
 // with square roots and quotients in Bounded arithmetic [FL-1, FL-5]; the polygonal bounds h_in ≤ h ≤ h_out
-// of §12 over a direction set whose parameters t_j are doubles (so every u(t_j) is an exact point of the
-// unit circle and λ is certified); and whether a load sticks or slides on the TRUE limit surface,
+// of §12 over the exact engine's direction sets (the same integer parameters, core/limit_surface_directions.h,
+// so the same polygons, each u(t_j) an exact rational point of the unit circle held as a Bounded pair, and λ
+// certified); and whether a load sticks or slides on the TRUE limit surface,
 // certified by a search over the twists (proofs/notes/FL-7-limit-surface-twin.md):
 //   slides  — a twist q with h(q) ≤ q·p (certified): p is not in the interior of LS; q is a witness;
 //   sticks  — h(q) − q·p > 0 certified on every cell of a subdivision of the cube's surface, using the
@@ -50,9 +51,11 @@ struct Load_twin {
 };
 Load_twin load_for_twist(const std::vector<Support_point_twin>& s, const Bounded3& q);
 
-// [LS-1] in floating point: n (even, 4 ≤ n ≤ 4096) unit vectors u(t_j) with double parameters t_j
-// (u(t) = ((1 − t²)/(1 + t²), 2t/(1 + t²)), exact rationals, held as Bounded), counter-clockwise and
-// centrally symmetric, and λ² = (1 + min_j u_j·u_{j+1})/2 as a Bounded (its lower end is a certified λ²).
+// [LS-1] in floating point: the exact engine's n (even, 4 ≤ n ≤ kMaxSides) unit vectors u(t_j), from the
+// same integers t_j = a_j/den (core/limit_surface_directions.h; u(t) = ((1 − t²)/(1 + t²), 2t/(1 + t²))),
+// each coordinate a Bounded containing the exact rational of make_directions in exact/sliding/limit_surface.h;
+// counter-clockwise (certified) and centrally symmetric, and λ² = (1 + min_j u_j·u_{j+1})/2 as a Bounded
+// containing the exact λ² (its lower end is a certified λ²).
 struct Directions_twin {
   int n = 0;
   std::vector<Point2> u;

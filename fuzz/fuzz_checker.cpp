@@ -1,6 +1,8 @@
 // libFuzzer target: any bytes as "SCENE\0CERTIFICATE". The checker must never crash, and must never
 // accept a certificate whose claim is false: whenever it accepts, the exact engine must agree with
-// the claim (soundness, differential against the engine).
+// the claim (soundness, differential against the engine). For property "motion" (sliding) on a
+// support the engine reads (every force given), the float twin's certified search on the true limit
+// surface must not decide the opposite; unknown distributions have no engine oracle yet.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -11,7 +13,12 @@
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/io/input_error.h"
+#include "exact/io/json.h"
 #include "exact/io/scene.h"
+#include "exact/numbers/rational.h"
+#include "exact/sliding/limit_surface.h"
+#include "exact/sliding/sliding.h"
+#include "float/limit_surface_twin.h"
 #include "proofs/checker/checker.h"
 
 namespace {
@@ -60,6 +67,34 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // The claim, read token-wise (JSON allows whitespace around the colon).
   const bool claims_holds = value_of(cert, "holds") == "true";
   const std::string_view property = value_of(cert, "property");
+  if (property == "\"motion\"") {
+    if (!scene.support) {
+      std::cerr << "checker accepted a motion claim on a scene without support\n";
+      std::abort();
+    }
+    // The accepted certificate is valid JSON: its load and claim, read with the engine's parser.
+    const wrenchkit::json::Value c = wrenchkit::json::parse(cert, limits, "certificate");
+    const std::string claim = c.find("motion")->text;
+    if (claim == "depends") return 0;  // only with unknown forces, which the engine does not read yet
+    wrenchkit::fl::Bounded3 p;
+    for (std::size_t k = 0; k < 3; ++k) {
+      std::string why;
+      wrenchkit::Input_limits unlimited;
+      unlimited.max_digits = 200000;
+      unlimited.max_exponent = 200000;
+      const auto q = wrenchkit::parse_rational(c.find("load")->items[k].text, false, unlimited, why);
+      if (!q) std::abort();  // the checker accepted it as a rational
+      p[k] = wrenchkit::to_bounded(*q);
+    }
+    const auto twin = wrenchkit::twin_support(wrenchkit::merge_support(*scene.support));
+    const wrenchkit::fl::Motion_answer a = wrenchkit::fl::classify_load(twin, p, 20000);
+    if (a.motion != wrenchkit::fl::Motion_twin::undecided &&
+        (a.motion == wrenchkit::fl::Motion_twin::slides) != (claim == "slides")) {
+      std::cerr << "checker accepted \"" << claim << "\"; the certified float search decides the opposite\n";
+      std::abort();
+    }
+    return 0;
+  }
   const bool form = property == "\"form_closure\"";
   const bool equilibrium = property == "\"equilibrium\"";
   if (equilibrium && !scene.load) {

@@ -32,6 +32,7 @@
 #include "exact/io/scene.h"
 #include "exact/io/scene_writer.h"
 #include "exact/sliding/sliding.h"
+#include "exact/sliding/unknown_motion.h"
 #include "exact/io/streaming_scene_reader.h"
 #include "exact/io/to_float.h"
 #include "testing/twin_agreement.h"
@@ -85,9 +86,11 @@ inline std::string scene_difference(const wrenchkit::Scene& a, const wrenchkit::
   if (!same_optional(a.load, b.load, same_load)) return "load";
   const auto same_q = [](const Rational& x, const Rational& y) { return x == y; };
   const auto same_support = [&](const Support& x, const Support& y) {
-    if (!same_optional(x.mu, y.mu, same_q) || x.points.size() != y.points.size()) return false;
+    if (!same_optional(x.mu, y.mu, same_q) || !same_optional(x.weight, y.weight, same_q) ||
+        !same_optional(x.pressure_center, y.pressure_center, same_vec) || x.points.size() != y.points.size())
+      return false;
     for (std::size_t i = 0; i < x.points.size(); ++i)
-      if (!same_vec(x.points[i].at, y.points[i].at) || x.points[i].force != y.points[i].force ||
+      if (!same_vec(x.points[i].at, y.points[i].at) || !same_optional(x.points[i].force, y.points[i].force, same_q) ||
           !same_optional(x.points[i].mu, y.points[i].mu, same_q))
         return false;
     return true;
@@ -233,7 +236,23 @@ inline bool check_scene_text(std::string_view text) {
     }
   }
   if (scene.support && scene.support->points.size() <= 4) {
-    const wrenchkit::Polygonal_ls model(wrenchkit::merge_support(*scene.support), wrenchkit::make_directions(8));
+    // An unknown distribution: its first extreme distribution here, and sticks/slides/depends over all of them
+    // in hybrid never contradicts exact (below).
+    const wrenchkit::Admissible adm = wrenchkit::admissible_set(scene);
+    const auto extreme = wrenchkit::vertices(*scene.support, adm);
+    const wrenchkit::Polygonal_ls model(
+        wrenchkit::merge_support(*scene.support, scene.support->known() ? nullptr : &extreme.at(0)),
+        wrenchkit::make_directions(8));
+    if (!scene.support->known() && scene.load) {
+      const auto p = wrenchkit::as_vec(wrenchkit::load_wrench(scene));
+      const auto e = wrenchkit::decide_motion_over(*scene.support, adm, p, wrenchkit::Mode::exact, 8);
+      const auto h = wrenchkit::decide_motion_over(*scene.support, adm, p, wrenchkit::Mode::hybrid, 8);
+      if (e.motion != wrenchkit::Motion_over::undecided && h.motion != wrenchkit::Motion_over::undecided &&
+          e.motion != h.motion) {
+        std::cerr << "stick/slide over the admissible distributions: hybrid contradicts exact\n" << printed;
+        std::abort();
+      }
+    }
     const auto tw = wrenchkit::twin_support(model.support());
     const wrenchkit::Ls_polytope in = model.build(wrenchkit::Side::inner), out = model.build(wrenchkit::Side::outer);
     const wrenchkit::Vec3q twists[] = {{1, 0, 0}, {0, 1, 1}, {wrenchkit::Rational(1, 3), -2, -1}};

@@ -374,6 +374,54 @@ Vec3q nonzero_twist(const std::vector<std::string>& t) {
   return q;
 }
 
+py::tuple distribution(const std::vector<Rational>& f) {
+  py::list l;
+  for (const Rational& x : f) l.append(fraction(x));
+  return py::tuple(l);
+}
+
+// A support with unknown forces (limit_surface and sliding alike): the admissible set, the power of a twist
+// over it, and whether a load sticks for every distribution, slides for every one, or depends.
+py::dict unknown_distribution(const Support_item& r, const std::string& mode, const Support_query& q) {
+  py::dict d;
+  d["mode"] = mode;
+  d["distribution"] = "unknown";
+  d["unknown_points"] = r.admissible->unknown;
+  d["weight"] = fraction(*r.scene.support->weight);
+  d["pressure_center"] = point(r.pressure_center);
+  py::list v;
+  for (const auto& f : r.vertices) v.append(distribution(f));
+  d["extreme_distributions"] = v;
+  if (r.power) {
+    d["twist"] = triple(*q.twist);
+    d["power"] = py::make_tuple(fraction(r.power->lower), fraction(r.power->upper));
+    d["min_distribution"] = distribution(r.power->min_distribution);
+    d["max_distribution"] = distribution(r.power->max_distribution);
+  }
+  if (r.motion_over) {
+    const Motion_over_f& m = *r.motion_over;
+    d["load"] = triple(*q.load);
+    d["motion"] = motion_over_name(m.motion);
+    d["motion_decided_by"] = m.decided_by;
+    if (m.motion == Motion_over::depends) {
+      py::dict w;
+      w["sticks"] = distribution(m.sticking ? m.sticking->distribution : r.vertices[*m.sticking_vertex]);
+      w["slides"] = distribution(r.vertices[*m.sliding_vertex]);
+      d["witnesses"] = w;
+    }
+    if (m.separating_twist) d["separating_twist"] = triple(*m.separating_twist);
+  }
+  return d;
+}
+
+// The polygonal surfaces' power bounds and loads of a twist (limit_surface and sliding alike).
+void polygonal_twist_fields(py::dict& d, const Sliding_answer& a) {
+  d["h_inner"] = fraction(a.h_inner);
+  d["h_outer"] = fraction(a.h_outer);
+  d["inner_load"] = face(a.inner_face);
+  d["outer_load"] = face(a.outer_face);
+}
+
 py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::string>& tolerance,
                        const std::optional<std::vector<std::string>>& twist,
                        const std::optional<std::vector<std::string>>& load, const std::string& mode) {
@@ -388,8 +436,9 @@ py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::st
   q.sides = checked_sides(sides);
   if (twist) q.twist = nonzero_twist(*twist);
   if (load) q.load = vec3(*load, "load");
-  const Support_item r = answer_support(s.scene, s.source, exact_request(mode, "limit_surface"), q);
+  const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "limit_surface"), q);
   raise_unless_answered(r.status, r.message);
+  if (r.admissible) return unknown_distribution(r, mode, q);
   const Sliding_answer& sa = r.sliding;
   py::dict d;
   d["mode"] = mode;
@@ -402,10 +451,7 @@ py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::st
   d["outer"] = polytope(r.out);
   if (q.twist) {
     d["twist"] = triple(*q.twist);
-    d["h_inner"] = fraction(sa.h_inner);
-    d["h_outer"] = fraction(sa.h_outer);
-    d["inner_load"] = face(sa.inner_face);
-    d["outer_load"] = face(sa.outer_face);
+    polygonal_twist_fields(d, sa);
   }
   if (q.load) {
     d["load"] = triple(*q.load);
@@ -425,11 +471,12 @@ py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>
   q.question = Support_question::sliding;
   q.sides = checked_sides(sides);
   if (twist) q.twist = nonzero_twist(*twist);
-  const Support_item r = answer_support(s.scene, s.source, exact_request(mode, "sliding"), q);
+  const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "sliding"), q);
   raise_unless_answered(r.status, r.message);
-  const Sliding_answer& a = r.sliding;
+  if (r.admissible) return unknown_distribution(r, mode, q);
   py::dict d;
   d["mode"] = mode;
+  const Sliding_answer& a = r.sliding;
   d["center_of_friction"] = point(a.center_of_friction);
   d["friction_centroid"] = point(a.friction_centroid);
   d["mu_f0"] = fraction(a.mu_f0);
@@ -448,12 +495,9 @@ py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>
     d["true_surface_text"] = a.cls.text;
     d["sides"] = sides;
     d["lambda_squared"] = fraction(r.model->directions().lambda_sq);
-    d["h_inner"] = fraction(a.h_inner);
-    d["h_outer"] = fraction(a.h_outer);
     d["power_bracket"] = py::make_tuple(fraction(a.h_lo), fraction(a.h_hi));
     d["load_box"] = py::make_tuple(triple(a.load_lo), triple(a.load_hi));
-    d["inner_load"] = face(a.inner_face);
-    d["outer_load"] = face(a.outer_face);
+    polygonal_twist_fields(d, a);
   }
   return d;
 }

@@ -31,6 +31,10 @@ check_dir(exact/io "\"exact/(statics|sliding|pipeline)/" "io/ sits on numbers/ o
 check_dir(exact/statics "\"exact/(sliding|pipeline)/" "statics/ does not know sliding or the pipeline")
 check_dir(exact/sliding "\"exact/(statics|pipeline)/" "sliding/ does not know statics or the pipeline")
 check_dir(testing "\"(cli|python)/" "test scenery does not depend on front ends")
+# The front ends reach the twin only through the pipeline (they write the values it answered with).
+foreach(front cli python)
+  check_dir(${front} "\"float/|\"exact/statics/hybrid_kernel\\.h" "front ends reach the twin only through exact/pipeline/")
+endforeach()
 # The benchmarks' peers (qhull, cddlib, GLPK, bench/) are never part of the engine or the command.
 foreach(dir exact cli)
   check_dir(${dir} "<libqhull|<cdd/|<glpk|\"bench/" "peers stay in bench/")

@@ -6,6 +6,7 @@
 // invariance; and a seeded random byte-mutation run that must never crash (run it under ASan/UBSan).
 #include "proofs/checker/checker.h"
 
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,6 +20,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -151,8 +153,8 @@ TEST(CheckerBadScene, PinnedMessages) {
   EXPECT_EQ(scene_error(one(R"({"at": [0,0], "at": [0,0], "normal": [0,1]})")), R"(contacts[0]: duplicate key "at")");
   EXPECT_EQ(scene_error(R"({"wrenchkit": 1, "wrenchkit": 1})"), R"(duplicate key "wrenchkit")");
   EXPECT_EQ(scene_error(R"({"wrenchkit": 1, "body": {"com": [0, 0], "com": [1, 1]}})"), R"(body: duplicate key "com")");
-  EXPECT_EQ(scene_error(R"({"wrenchkit": 1, "support": {"a b": {"x": 1, "x": 2}}})"),
-            R"(support["a b"]: duplicate key "x")");
+  EXPECT_EQ(scene_error(R"({"wrenchkit": 1, "body": {"outline": [{"x": 1, "x": 2}]}})"),
+            R"(body.outline[0]: duplicate key "x")");
   EXPECT_EQ(scene_error(R"({"wrenchkit": 2})"), "wrenchkit: expected 1 (the scene format version)");
   EXPECT_EQ(scene_error(R"({"contacts": []})"), R"(missing required key "wrenchkit")");
   EXPECT_EQ(scene_error(R"({"wrenchkit": 1, "contacts": {}})"), "contacts: expected an array");
@@ -222,8 +224,8 @@ TEST(CheckerBadScene, NumberGrammar) {
 TEST(CheckerBadScene, JsonStrictness) {
   EXPECT_EQ(scene_error(""), "1:1: invalid JSON: unexpected end of input");
   EXPECT_EQ(scene_error("{\"wrenchkit\": 1} x"), "1:18: invalid JSON: unexpected data after the JSON value");
-  EXPECT_EQ(scene_error("{\"wrenchkit\": 1,\n \"support\": {\"a\": [1,]}}"),
-            "2:22: invalid JSON: unexpected character ']'");
+  EXPECT_EQ(scene_error("{\"wrenchkit\": 1,\n \"body\": {\"outline\": [1,]}}"),
+            "2:25: invalid JSON: unexpected character ']'");
   EXPECT_EQ(scene_error("{\"wrenchkit\": 1,}"), "1:17: invalid JSON: expected a string as object key");
   EXPECT_EQ(scene_error("{\"wrenchkit\" 1}"), "1:14: invalid JSON: expected ':' after an object key");
   EXPECT_EQ(scene_error("{\"wrenchkit\": 1 \"name\": \"x\"}"),
@@ -241,17 +243,17 @@ TEST(CheckerBadScene, JsonStrictness) {
   EXPECT_EQ(scene_error(named("a\tb")), "1:28: invalid JSON: unescaped control character in a string");
   EXPECT_NE(scene_error(named("\\x")).find("invalid escape"), std::string::npos);
   EXPECT_NE(scene_error(named("\\u12G4")).find("four hex digits"), std::string::npos);
-  EXPECT_NE(scene_error("{\"wrenchkit\": 1, \"support\": {\"a\": tru}}").find("invalid literal"), std::string::npos);
-  EXPECT_NE(scene_error("{\"wrenchkit\": 1, \"support\": {\"a\": nul}}").find("invalid literal"), std::string::npos);
+  EXPECT_NE(scene_error("{\"wrenchkit\": 1, \"body\": {\"outline\": [tru]}}").find("invalid literal"), std::string::npos);
+  EXPECT_NE(scene_error("{\"wrenchkit\": 1, \"body\": {\"outline\": [nul]}}").find("invalid literal"), std::string::npos);
 }
 
 TEST(CheckerBadScene, Depth) {
-  // top-level object (1) + support (2) + n arrays (support is not interpreted: any JSON inside)
+  // top-level object (1) + body (2) + n arrays (body.outline's points are not interpreted: any JSON inside)
   auto nested = [](std::size_t n) {
-    return "{\"wrenchkit\": 1, \"support\": {\"a\": " + std::string(n, '[') + std::string(n, ']') + "}}";
+    return "{\"wrenchkit\": 1, \"body\": {\"outline\": " + std::string(n, '[') + std::string(n, ']') + "}}";
   };
   EXPECT_NE(check(nested(62), "{}").outcome, Outcome::bad_scene);
-  EXPECT_EQ(scene_error(nested(63)), "1:97: invalid JSON: nested deeper than 64 levels");
+  EXPECT_EQ(scene_error(nested(63)), "1:100: invalid JSON: nested deeper than 64 levels");
   EXPECT_NE(scene_error(nested(1000000)).find("nested deeper than 64 levels"), std::string::npos);
   Limits deep;  // the reader does not recurse: a million levels do not overflow the stack
   deep.max_depth = 2000000;
@@ -376,7 +378,7 @@ TEST(CheckerMalformed, KeysAndTypes) {
               "wrenchkit_certificate: expected the integer 1");
   EXPECT_EQ(
       rejection(block_corner, R"({"wrenchkit_certificate": 1, "property": "closure", "holds": false, )" + twist + "}"),
-      R"(property: expected "force_closure", "form_closure" or "equilibrium")");
+      R"(property: expected "force_closure", "form_closure", "equilibrium" or "motion")");
   EXPECT_EQ(rejection(block_corner,
                       R"({"wrenchkit_certificate": 1, "property": "force_closure", "holds": "false", )" + twist + "}"),
             "holds: expected true or false");
@@ -764,6 +766,7 @@ TEST(CheckerMutations, NegativeCertificates) {
   std::set<std::string> seen;
   for (const Example& e : load_examples(".valid.json")) {
     std::smatch m;
+    if (e.cert.find(R"("property": "motion")") != std::string::npos) continue;  // sliding: CheckerMotion*
     if (!std::regex_search(e.cert, m, twist_re)) continue;
     ++negatives;
     const std::string twist = m.str(1);
@@ -787,6 +790,569 @@ TEST(CheckerMutations, NegativeCertificates) {
   }
   EXPECT_GE(negatives, 7);
   EXPECT_EQ(seen, all_powers_zero);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sliding (certificate-format.md §6): the support in the scene, and property "motion"
+
+using Q = mpq_class;
+
+// support = {...}: a scene with only this support (and, if com, body.com).
+std::string with_support(const std::string& support, const std::string& com = "") {
+  return R"({"wrenchkit": 1, )" + (com.empty() ? "" : R"("body": {"com": )" + com + "}, ") + R"("support": )" + support +
+         "}";
+}
+const std::string table_points = R"("points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}])";
+
+TEST(CheckerSupport, BadSupports) {
+  auto bad = [](const std::string& support, const std::string& com = "") { return scene_error(with_support(support, com)); };
+  EXPECT_EQ(bad(R"({"mu": 1, "points": []})"), "support.points: empty (a support needs at least one point)");
+  EXPECT_EQ(bad(R"({"mu": 1})"), R"(support: missing required key "points")");
+  EXPECT_EQ(bad(R"({"mu": 1, "points": [{"at": [0, 0], "force": 1}], "extra": 1})"), R"(support: unknown key "extra")");
+  EXPECT_EQ(bad(R"({"mu": 1, "points": [{"at": [0, 0], "force": 1, "name": "x"}]})"),
+            R"(support.points[0]: unknown key "name")");
+  EXPECT_EQ(bad(R"({"mu": 1, "points": [{"force": 1}]})"), R"(support.points[0]: missing required key "at")");
+  EXPECT_EQ(bad(R"({"points": [{"at": [0, 0], "force": 1, "mu": 1}, {"at": [1, 0], "force": 1}]})"),
+            R"(support.points[1]: missing key "mu" (and support.mu gives no default))");
+  EXPECT_EQ(bad(R"({"mu": "-1/2", "points": [{"at": [0, 0], "force": 1}]})"), R"(support.mu: "-1/2" is negative)");
+  EXPECT_EQ(bad(R"({"mu": 1, "points": [{"at": [0, 0], "force": 1, "mu": -1}]})"),
+            R"(support.points[0].mu: "-1" is negative)");
+  EXPECT_EQ(bad(R"({"mu": 1, "points": [{"at": [0, 0], "force": "-1e-3"}]})"),
+            R"(support.points[0].force: "-1e-3" is negative)");
+  EXPECT_EQ(bad(R"({"mu": 1, "points": [{"at": [0, 0], "force": 0}, {"at": [1, 0], "force": "0/3"}]})"),
+            "support.points: all forces are zero");
+  EXPECT_EQ(bad(R"({"mu": 1, "points": [{"at": [0, "x"], "force": 1}]})"),
+            R"(support.points[0].at[1]: "x" is not a number)");
+  EXPECT_EQ(bad(R"({"mu": 1, "points": [{"at": [0, )" + std::string(10001, '7') + R"(], "force": 1}]})"),
+            "support.points[0].at[1]: number with 10001 digits (limit 10000)");
+  EXPECT_EQ(bad(R"({"mu": 1, "points": [{"at": [0, 0], "force": 1e10001}]})"),
+            "support.points[0].force: exponent 10001 out of range (limit 10000)");
+  EXPECT_EQ(bad(R"({"mu": 1, "weight": 0, )" + table_points + "}"),
+            R"(support.weight: "0" is not positive (a weight must be > 0))");
+  EXPECT_EQ(bad("[]"), "support: expected an object");
+  Limits few;
+  few.max_contacts = 3;
+  EXPECT_EQ(scene_error(with_support(R"({"mu": 1, "weight": 1, )" + table_points + "}", "[0, 0]"), few),
+            "support.points: more than 3 points");
+  // unknown forces need W and c
+  EXPECT_EQ(bad(R"({"mu": 1, "pressure_center": [0, 0], )" + table_points + "}"),
+            R"(support: missing key "weight" (required when a point has no "force"))");
+  EXPECT_EQ(bad(R"({"mu": 1, "weight": 1, )" + table_points + "}"),
+            R"(support: missing key "pressure_center" (required when a point has no "force" and body.com is not given))");
+  // every force given: weight and pressure_center must agree exactly
+  const std::string barbell = R"("points": [{"at": [0, -1], "force": "1/4"}, {"at": [0, 1], "force": "3/4"}])";
+  EXPECT_EQ(bad(R"({"mu": 1, "weight": "1.1", )" + barbell + "}"), "support.weight: 11/10 is not the sum 1 of the given forces");
+  EXPECT_EQ(bad(R"({"mu": 1, "pressure_center": [0, 0], )" + barbell + "}"),
+            "support.pressure_center: (0, 0) is not the centre of pressure (0, 1/2) of the given forces");
+  EXPECT_NE(check(with_support(R"({"mu": 1, "weight": 1, "pressure_center": [0, 0.5], )" + barbell + "}", "[9, 9]"), "{}")
+                .outcome,
+            Outcome::bad_scene);  // body.com is not the centre of pressure of a known distribution
+}
+
+TEST(CheckerSupport, EmptyAdmissibleSetHasAReason) {
+  const std::string none = "support: no admissible distribution: ";
+  auto bad = [](const std::string& support, const std::string& com = "") { return scene_error(with_support(support, com)); };
+  EXPECT_EQ(bad(R"({"mu": 1, "weight": 1, "pressure_center": [2, 0], )" + table_points + "}"),
+            none + "the centre of pressure (2, 0) is outside the convex hull of the support points (the body would tip over)");
+  EXPECT_EQ(bad(R"({"mu": 1, "weight": 1, )" + table_points + "}", R"(["1.5", "-1/2"])"),
+            none + "the centre of pressure (3/2, -1/2) is outside the convex hull of the support points (the body would "
+                   "tip over)");
+  // known forces: too heavy; the whole weight, off centre; the rest outside the hull of the others
+  EXPECT_EQ(bad(R"({"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": [1, 1], "force": 2}, {"at": [-1, -1]}]})"),
+            none + "the given forces sum to 2, more than support.weight 1");
+  EXPECT_EQ(bad(R"({"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": [1, 1], "force": 1}, {"at": [-1, -1]}]})"),
+            none + "the given forces carry the whole weight 1, but their centre of pressure (1, 1) is not the centre of "
+                   "pressure (0, 0)");
+  EXPECT_EQ(bad(R"({"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": [1, 1], "force": "1/2"},
+                 {"at": [1, -1]}, {"at": [2, 0]}]})"),
+            none + "the points without a given force must carry the remaining weight 1/2 with its centre at (-1, -1), which "
+                   "is outside their convex hull");
+  // degenerate hulls: a point, a segment (collinear, coincident points), c on an edge or at a vertex
+  const std::vector<std::pair<std::string, bool>> cases = {
+      {R"([{"at": [1, 1]}, {"at": [1, 1]}], "pressure_center": [1, 1])", true},
+      {R"([{"at": [1, 1]}, {"at": [1, 1]}], "pressure_center": [1, "1.0001"])", false},
+      {R"([{"at": [0, 0]}, {"at": [1, 1]}, {"at": [2, 2]}, {"at": [2, 2]}], "pressure_center": ["3/2", "3/2"])", true},
+      {R"([{"at": [0, 0]}, {"at": [1, 1]}, {"at": [2, 2]}], "pressure_center": [3, 3])", false},
+      {R"([{"at": [0, 0]}, {"at": [1, 1]}, {"at": [2, 2]}], "pressure_center": [-1, -1])", false},
+      {R"([{"at": [0, 0]}, {"at": [1, 1]}, {"at": [2, 2]}], "pressure_center": [1, "1/1000000"])", false},
+      {R"([{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}], "pressure_center": [1, 0])", true},
+      {R"([{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}], "pressure_center": [-1, -1])", true},
+      {R"([{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}], "pressure_center": ["-1.001", 0])", false},
+      {R"([{"at": [0, 0]}, {"at": [4, 0]}, {"at": [0, 4]}, {"at": [1, 1]}], "pressure_center": [2, 2])", true},
+      {R"([{"at": [0, 0]}, {"at": [4, 0]}, {"at": [0, 4]}, {"at": [1, 1]}], "pressure_center": [2, "2.01"])", false},
+      {R"([{"at": [3, 0]}, {"at": [0, 0]}, {"at": [1, 0]}, {"at": [0, 3]}, {"at": [0, 1]}], "pressure_center": [1, 1])", true},
+  };
+  for (const auto& [rest, admissible] : cases) {
+    const Result r = check(with_support(R"({"mu": 1, "weight": 2, "points": )" + rest + "}"), "{}");
+    EXPECT_EQ(r.outcome != Outcome::bad_scene, admissible) << rest << " -> " << r.message;
+    if (!admissible) {
+      EXPECT_EQ(r.message.rfind(none, 0), 0u) << r.message;
+    }
+  }
+}
+
+const std::string table_scene =
+    with_support(R"({"mu": 1, "weight": 1, "pressure_center": [0, 0], )" + table_points + "}");
+const std::string motion_head = R"({"wrenchkit_certificate": 1, "property": "motion", )";
+
+TEST(CheckerMotion, KeysAndScenes) {
+  const std::string sticks = motion_head + R"("load": ["0", "0", "0"], "motion": "sticks", )";
+  EXPECT_EQ(rejection(block_corner, sticks + R"("support_forces": []})"),
+            R"(property: "motion" needs a scene with a support)");
+  EXPECT_EQ(rejection(table_scene, motion_head + R"("motion": "sticks", "vertices": []})"), R"(missing required key "load")");
+  EXPECT_EQ(rejection(table_scene, motion_head + R"("load": ["0", "0", "0"], "vertices": []})"),
+            R"(missing required key "motion")");
+  EXPECT_EQ(rejection(table_scene, sticks + R"("vertices": [], "holds": true})"),
+            R"(key "holds" is not allowed when "property" is "motion")");
+  EXPECT_EQ(rejection(table_scene, sticks + R"("support_forces": []})"),
+            R"(key "support_forces" is not allowed when "motion" is "sticks" and some support force is unknown)");
+  EXPECT_EQ(rejection(table_scene, sticks + R"("vertices": [], "dual": ["0", "0", "0"]})"),
+            R"(key "dual" is not allowed when "motion" is "sticks" and some support force is unknown)");
+  EXPECT_EQ(rejection(table_scene, sticks + R"("vertices": [{"distribution": [], "support_forces": [], "x": 1}]})"),
+            R"(vertices[0]: unknown key "x")");
+  EXPECT_EQ(rejection(table_scene, sticks + R"("vertices": [{"distribution": []}]})"),
+            R"(vertices[0]: missing required key "support_forces")");
+  EXPECT_EQ(rejection(table_scene, sticks + R"("vertices": [{"distribution": ["1/2", "0", "1/2"], "support_forces": []}]})"),
+            "vertices[0].distribution: 3 entries, but the support has 4 points");
+  EXPECT_EQ(rejection(table_scene, sticks + R"("vertices": [{"distribution": ["1/2", "0", "1/2", 0], "support_forces": []}]})"),
+            R"(vertices[0].distribution[3]: expected a rational as a JSON string, such as "-3/4")");
+  EXPECT_EQ(rejection(table_scene, motion_head + R"("load": ["0", "0", "0"], "motion": "stops", "vertices": []})"),
+            R"(motion: expected "sticks", "slides" or "depends")");
+  EXPECT_EQ(rejection(table_scene, motion_head + R"("load": ["0", "0"], "motion": "sticks", "vertices": []})"),
+            "load: expected an array of three rationals [fx, fy, m]");
+  EXPECT_EQ(rejection(table_scene, sticks + R"("vertices": []})"),
+            "vertices: the vertex (1/2, 0, 1/2, 0) of the admissible distributions has no witness");
+  // motion keys in other properties
+  EXPECT_EQ(rejection(block_corner, negative_head + R"("twist": ["0", "1", "0"], "load": ["0", "0", "0"]})"),
+            R"(key "load" is not allowed when "property" is "force_closure")");
+  // a distribution outside F, entry by entry
+  const std::string depends = motion_head + R"("load": ["0", "0", "0"], "motion": "depends", "sliding": )"
+                              R"({"distribution": ["1/2", "0", "1/2", "0"], "twist": ["0", "0", "0"], "speed_bounds": ["0", "0", "0", "0"]}, )";
+  auto sticking = [&](const std::string& d) {
+    return depends + R"("sticking": {"distribution": [)" + d + R"(], "support_forces": [["0", "0"], ["0", "0"], ["0", "0"], ["0", "0"]]}})";
+  };
+  EXPECT_EQ(rejection(table_scene, sticking(R"("1", "-1/2", "1", "-1/2")")), "sticking.distribution[1]: -1/2 is negative");
+  EXPECT_EQ(rejection(table_scene, sticking(R"("1/2", "0", "1/4", "0")")),
+            "sticking.distribution: the forces sum to 3/4, not the weight 1");
+  EXPECT_EQ(rejection(table_scene, sticking(R"("1/2", "0", "1/2", "0")")),
+            "sliding.twist: power q.p = 0 is not more than sum mu_i f_i u_i = 0");
+  const std::string mixed =
+      with_support(R"({"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": [1, 1], "force": "1/4"},
+                   {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]})");
+  EXPECT_EQ(rejection(mixed, sticking(R"("1/2", "0", "1/2", "0")")),
+            "sticking.distribution[0]: 1/2 is not the given force 1/4 of support.points[0]");
+}
+
+TEST(CheckerMotion, NumbersTooLargeToKeep) {
+  // Coordinates and mu of 101 digits are kept as text and read again when needed (as for contacts):
+  // the table scaled by 10^100, mu = 10^-100 from support.mu, the same certificate with moments scaled.
+  const std::string big = with_support(R"({"mu": "1e-100", "weight": 1, "pressure_center": [0, 0], "points": [
+      {"at": ["1e100", "1e100"]}, {"at": ["-1e100", "1e100"]}, {"at": ["-1e100", "-1e100"]}, {"at": ["1e100", "-1e100"]}]})");
+  const std::string g = "1/4" + std::string(100, '0');  // 1/(4 * 10^100)
+  const std::string cert = motion_head + R"("load": ["1/2)" + std::string(100, '0') + R"(", "0", "0"], "motion": "sticks", "vertices": [
+      {"distribution": ["1/2", "0", "1/2", "0"], "support_forces": [[")" + g + R"(", "0"], ["0", "0"], [")" + g + R"(", "0"], ["0", "0"]]},
+      {"distribution": ["0", "1/2", "0", "1/2"], "support_forces": [["0", "0"], [")" + g + R"(", "0"], ["0", "0"], [")" + g + R"(", "0"]]}]})";
+  EXPECT_EQ(check(big, cert).outcome, Outcome::accepted) << check(big, cert).message;
+  std::string over = cert;
+  over.replace(over.find(g), g.size(), "1/1" + std::string(100, '0'));  // 10^-100 > mu f = 10^-100 / 2
+  EXPECT_EQ(check(big, over).message.rfind("vertices[0].support_forces[0]: |g|^2 = ", 0), 0u) << check(big, over).message;
+}
+
+TEST(CheckerMotion, TooLargeToCheck) {
+  Limits small;
+  small.max_vertex_bases = 13;  // the table has 4 + 6 + 4 = 14 candidate bases
+  const std::string cert = slurp(examples / "table_four_legs.sticks_for_every.valid.json");
+  EXPECT_EQ(check(table_scene, cert).outcome, Outcome::accepted);
+  EXPECT_EQ(check(table_scene, cert, small).message,
+            "vertices: too large to check: 4 points without a given force give 14 candidate bases (limit 13)");
+  // 300 unknown points: refused at once, not enumerated (300 + C(300, 2) + C(300, 3) = 4500250)
+  std::string points;
+  for (int i = 0; i < 300; ++i) points += std::string(i ? ", " : "") + R"({"at": [)" + std::to_string(i % 17) + ", " + std::to_string(i / 17) + "]}";
+  const std::string many = with_support(R"({"mu": 1, "weight": 1, "pressure_center": [1, 1], "points": [)" + points + "]}");
+  EXPECT_EQ(check(many, motion_head + R"("load": ["0", "0", "0"], "motion": "sticks", "vertices": []})").message,
+            "vertices: too large to check: 300 points without a given force give 4500250 candidate bases (limit 2000000)");
+}
+
+// Random supports (fixed seed): an independent brute force builds certificates, the checker must accept
+// them, and tampered ones must be rejected.
+struct Point {
+  Q x, y, mu;
+  bool known = false;
+  Q f;  // the given force, or the force of the distribution f0 that made F
+};
+struct Random_support {
+  std::vector<Point> p;
+  Q W, c[2];
+  std::string scene;
+};
+std::string str(const Q& q) { return q.get_str(); }
+std::string rationals(const std::vector<Q>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", \"" : "\"") + str(v[i]) + "\"";
+  return s + "]";
+}
+
+Random_support random_support(std::mt19937& rng, bool all_known) {
+  auto small = [&](int lo, int hi, int den) {
+    Q q(static_cast<long>(lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo + 1))), 1 + static_cast<long>(rng() % static_cast<unsigned>(den)));
+    q.canonicalize();
+    return q;
+  };
+  Random_support s;
+  const std::size_t k = 4 + rng() % 5;
+  const bool collinear = rng() % 6 == 0;
+  for (std::size_t i = 0; i < k; ++i) {
+    Point pt;
+    pt.x = small(-2, 2, 1);  // a small grid: coincident and collinear points are common
+    pt.y = collinear ? Q(pt.x * 2 - 1) : small(-2, 2, 2);
+    pt.mu = small(1, 8, 4);
+    pt.f = rng() % 4 == 0 ? Q(0) : small(1, 5, 3);
+    pt.known = all_known || rng() % 3 == 0;
+    s.p.push_back(pt);
+  }
+  if (!all_known) s.p[rng() % k].known = false;
+  Q W = 0, M[2] = {0, 0};
+  for (const Point& pt : s.p) W += pt.f, M[0] += pt.f * pt.x, M[1] += pt.f * pt.y;
+  if (W == 0) s.p[0].f = 1, W = 1, M[0] = s.p[0].x, M[1] = s.p[0].y;
+  s.W = W, s.c[0] = M[0] / W, s.c[1] = M[1] / W;
+  std::string pts;
+  for (std::size_t i = 0; i < k; ++i)
+    pts += std::string(i ? ", " : "") + R"({"at": [")" + str(s.p[i].x) + R"(", ")" + str(s.p[i].y) + R"("], "mu": ")" +
+           str(s.p[i].mu) + "\"" + (s.p[i].known ? R"(, "force": ")" + str(s.p[i].f) + "\"" : std::string()) + "}";
+  s.scene = all_known ? with_support(R"({"points": [)" + pts + "]}")
+                      : with_support(R"({"weight": ")" + str(W) + R"(", "pressure_center": [")" + str(s.c[0]) + R"(", ")" +
+                                     str(s.c[1]) + R"("], "points": [)" + pts + "]}");
+  return s;
+}
+
+// The vertices of F by brute force: every set S of at most three unknown points on which the three rows
+// (1, x, y) have a unique, strictly positive solution (Gauss-Jordan elimination).
+std::vector<std::vector<Q>> brute_vertices(const Random_support& s) {
+  std::vector<std::size_t> unknown;
+  std::vector<Q> base;
+  Q b[3] = {s.W, Q(s.W * s.c[0]), Q(s.W * s.c[1])};
+  for (std::size_t i = 0; i < s.p.size(); ++i) {
+    base.push_back(s.p[i].known ? s.p[i].f : Q(0));
+    if (!s.p[i].known) unknown.push_back(i);
+    else b[0] -= s.p[i].f, b[1] -= s.p[i].f * s.p[i].x, b[2] -= s.p[i].f * s.p[i].y;
+  }
+  std::vector<std::vector<Q>> out;
+  const std::size_t n = unknown.size();
+  for (unsigned mask = 0; mask < (1u << n); ++mask) {
+    std::vector<std::size_t> S;
+    for (std::size_t j = 0; j < n; ++j)
+      if (mask >> j & 1) S.push_back(unknown[j]);
+    if (S.size() > 3) continue;
+    std::vector<std::vector<Q>> A(3, std::vector<Q>(S.size() + 1));
+    for (std::size_t j = 0; j < S.size(); ++j) A[0][j] = 1, A[1][j] = s.p[S[j]].x, A[2][j] = s.p[S[j]].y;
+    for (int r = 0; r < 3; ++r) A[r][S.size()] = b[r];
+    bool ok = true;
+    for (std::size_t col = 0; col < S.size() && ok; ++col) {
+      std::size_t piv = col;
+      while (piv < 3 && A[piv][col] == 0) ++piv;
+      if (piv == 3) { ok = false; break; }
+      std::swap(A[col], A[piv]);
+      const Q d = A[col][col];
+      for (Q& v : A[col]) v /= d;
+      for (std::size_t r = 0; r < 3; ++r)
+        if (r != col && A[r][col] != 0) {
+          const Q m = A[r][col];
+          for (std::size_t j = 0; j <= S.size(); ++j) A[r][j] -= m * A[col][j];
+        }
+    }
+    for (std::size_t r = S.size(); r < 3 && ok; ++r) ok = A[r][S.size()] == 0;
+    for (std::size_t j = 0; j < S.size() && ok; ++j) ok = A[j][S.size()] > 0;
+    if (!ok) continue;
+    std::vector<Q> f = base;
+    for (std::size_t j = 0; j < S.size(); ++j) f[S[j]] = A[j][S.size()];
+    out.push_back(f);
+  }
+  return out;
+}
+
+// A rational u >= sqrt(s) (s >= 0), within 1/1000.
+Q upper_sqrt(const Q& s) {
+  mpz_class t = s.get_num() * s.get_den() * 1000000, r;
+  mpz_sqrt(r.get_mpz_t(), t.get_mpz_t());
+  Q u(mpz_class(r + 1), mpz_class(s.get_den() * 1000));
+  u.canonicalize();
+  return u;
+}
+// A rational l <= sqrt(s) (s >= 0).
+Q lower_sqrt(const Q& s) {
+  mpz_class t = s.get_num() * s.get_den() * 1000000, r;
+  mpz_sqrt(r.get_mpz_t(), t.get_mpz_t());
+  Q l(r, mpz_class(s.get_den() * 1000));
+  l.canonicalize();
+  return l;
+}
+
+// Support forces g_i = f_i (t + s rot90(r_i - c)) for a distribution f: they sum to (W t, W c x t + s J),
+// J = sum f_i |r_i - c|^2 (SL-1 §5); the stick witness's JSON, or "" if some |g_i| > mu_i f_i.
+std::string forces_json(const Random_support& s, const std::vector<Q>& f, const Q (&t)[2], const Q& spin) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const Q gx = f[i] * (t[0] - spin * (s.p[i].y - s.c[1])), gy = f[i] * (t[1] + spin * (s.p[i].x - s.c[0]));
+    if (gx * gx + gy * gy > s.p[i].mu * f[i] * s.p[i].mu * f[i]) return "";
+    out += std::string(i ? ", " : "") + "[\"" + str(gx) + "\", \"" + str(gy) + "\"]";
+  }
+  return out + "]";
+}
+Q second_moment(const Random_support& s, const std::vector<Q>& f) {
+  Q J = 0;
+  for (std::size_t i = 0; i < f.size(); ++i)
+    J += f[i] * ((s.p[i].x - s.c[0]) * (s.p[i].x - s.c[0]) + (s.p[i].y - s.c[1]) * (s.p[i].y - s.c[1]));
+  return J;
+}
+
+TEST(CheckerMotionProperties, SticksForEveryDistribution) {
+  std::mt19937 rng(20261124);
+  int accepted = 0, rank_deficient = 0;
+  for (int round = 0; round < 150; ++round) {
+    const Random_support s = random_support(rng, false);
+    ASSERT_NE(check(s.scene, "{}").outcome, Outcome::bad_scene) << s.scene;
+    const auto vertices = brute_vertices(s);
+    ASSERT_FALSE(vertices.empty()) << s.scene;
+    // a common load: translation part t and moment m0, shrunk until every vertex's forces fit their discs
+    Q t[2] = {Q(static_cast<long>(rng() % 7) - 3, 4), Q(static_cast<long>(rng() % 7) - 3, 4)}, m0(static_cast<long>(rng() % 9) - 4, 5);
+    for (const auto& f : vertices)
+      if (second_moment(s, f) == 0) m0 = 0;
+    std::vector<std::string> witnesses;
+    for (int shrink = 0; shrink < 40; ++shrink) {
+      witnesses.clear();
+      for (const auto& f : vertices) {
+        const Q J = second_moment(s, f);
+        const std::string g = forces_json(s, f, t, J == 0 ? Q(0) : Q(m0 / J));
+        if (g.empty()) break;
+        witnesses.push_back(R"({"distribution": )" + rationals(f) + R"(, "support_forces": )" + g + "}");
+      }
+      if (witnesses.size() == vertices.size()) break;
+      t[0] /= 2, t[1] /= 2, m0 /= 2;
+    }
+    ASSERT_EQ(witnesses.size(), vertices.size()) << s.scene;
+    const std::vector<Q> load = {Q(s.W * t[0]), Q(s.W * t[1]), Q(s.W * (s.c[0] * t[1] - s.c[1] * t[0]) + m0)};
+    auto cert = [&](const std::vector<Q>& p, const std::vector<std::string>& w) {
+      std::string list;
+      for (std::size_t k = 0; k < w.size(); ++k) list += (k ? ", " : "") + w[k];
+      return motion_head + R"("load": )" + rationals(p) + R"(, "motion": "sticks", "vertices": [)" + list + "]}";
+    };
+    std::vector<std::string> shuffled = witnesses;
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    const Result r = check(s.scene, cert(load, shuffled));
+    ASSERT_EQ(r.outcome, Outcome::accepted) << s.scene << "\n" << cert(load, shuffled) << "\n" << r.message;
+    ++accepted;
+    std::size_t unknown = 0;
+    for (const Point& pt : s.p) unknown += pt.known ? 0 : 1;
+    if (vertices.size() > 0 && unknown >= 3) {
+      // rank < 3 somewhere: some three unknown points collinear, or two coincident
+      for (std::size_t i = 0; i < s.p.size(); ++i)
+        for (std::size_t j = i + 1; j < s.p.size(); ++j)
+          if (!s.p[i].known && !s.p[j].known && s.p[i].x == s.p[j].x && s.p[i].y == s.p[j].y) ++rank_deficient, i = j = s.p.size();
+    }
+    // tampering: each vertex left out, the load moved, one distribution entry moved
+    for (std::size_t k = 0; k < witnesses.size(); ++k) {
+      std::vector<std::string> fewer = witnesses;
+      fewer.erase(fewer.begin() + static_cast<std::ptrdiff_t>(k));
+      EXPECT_EQ(check(s.scene, cert(load, fewer)).message.rfind("vertices: the vertex ", 0), 0u) << s.scene;
+    }
+    std::vector<Q> moved = load;
+    moved[rng() % 3] += Q(1, 1000);
+    EXPECT_EQ(check(s.scene, cert(moved, witnesses)).outcome, Outcome::rejected) << s.scene;
+    std::vector<Q> f = vertices[0];
+    f[rng() % f.size()] += Q(1, 7);
+    std::vector<std::string> off = witnesses;
+    off[0] = R"({"distribution": )" + rationals(f) + witnesses[0].substr(witnesses[0].find(R"(, "support_forces")"));
+    EXPECT_EQ(check(s.scene, cert(load, off)).outcome, Outcome::rejected) << s.scene;
+  }
+  EXPECT_EQ(accepted, 150);
+  EXPECT_GE(rank_deficient, 5);
+}
+
+// A slide witness for twist q: speeds u_i >= |v_i(q)|.
+std::vector<Q> speed_bounds(const Random_support& s, const Q (&q)[3]) {
+  std::vector<Q> u;
+  for (const Point& pt : s.p) {
+    const Q vx = q[0] - q[2] * pt.y, vy = q[1] + q[2] * pt.x;
+    u.push_back(upper_sqrt(Q(vx * vx + vy * vy)));
+  }
+  return u;
+}
+
+TEST(CheckerMotionProperties, SlidesForEveryDistribution) {
+  std::mt19937 rng(20261125);
+  for (int round = 0; round < 200; ++round) {
+    const Random_support s = random_support(rng, false);
+    Q q[3];
+    do
+      for (Q& x : q) x = static_cast<long>(rng() % 7) - 3;
+    while (q[0] == 0 && q[1] == 0 && q[2] == 0);
+    std::vector<Q> u = speed_bounds(s, q);
+    // a dual: random (yx, yy), and y0 as small as the unknown points allow
+    const Q yx(static_cast<long>(rng() % 5) - 2, 3), yy(static_cast<long>(rng() % 5) - 2, 3);
+    Q y0, bound = 0, rest_w = s.W, rest_m[2] = {Q(s.W * s.c[0]), Q(s.W * s.c[1])};
+    bool first = true;
+    for (std::size_t i = 0; i < s.p.size(); ++i) {
+      const Point& pt = s.p[i];
+      if (pt.known) {
+        bound += pt.mu * pt.f * u[i], rest_w -= pt.f, rest_m[0] -= pt.f * pt.x, rest_m[1] -= pt.f * pt.y;
+      } else {
+        const Q need = pt.mu * u[i] - yx * pt.x - yy * pt.y;
+        if (first || need > y0) y0 = need, first = false;
+      }
+    }
+    bound += y0 * rest_w + yx * rest_m[0] + yy * rest_m[1];
+    // a load along a random direction d with q.d > 0, just past the bound
+    Q d[3];
+    do
+      for (Q& x : d) x = static_cast<long>(rng() % 7) - 3;
+    while (q[0] * d[0] + q[1] * d[1] + q[2] * d[2] == 0);
+    const Q qd = q[0] * d[0] + q[1] * d[1] + q[2] * d[2];
+    auto load_at = [&](const Q& power) { return std::vector<Q>{Q(d[0] * power / qd), Q(d[1] * power / qd), Q(d[2] * power / qd)}; };
+    auto cert = [&](const std::vector<Q>& p, const std::vector<Q>& speeds, const Q& y0_) {
+      return motion_head + R"("load": )" + rationals(p) + R"(, "motion": "slides", "twist": )" + rationals({q[0], q[1], q[2]}) +
+             R"(, "speed_bounds": )" + rationals(speeds) + R"(, "dual": )" + rationals({y0_, yx, yy}) + "}";
+    };
+    const std::vector<Q> p = load_at(Q(bound + Q(1, 1 + static_cast<long>(rng() % 50))));
+    const Result r = check(s.scene, cert(p, u, y0));
+    ASSERT_EQ(r.outcome, Outcome::accepted) << s.scene << "\n" << cert(p, u, y0) << "\n" << r.message;
+    // exactly at the bound: not strict
+    EXPECT_EQ(check(s.scene, cert(load_at(bound), u, y0)).message.rfind("twist: power q.p = ", 0), 0u) << s.scene;
+    // y0 lowered: the tightest unknown point's constraint fails
+    EXPECT_EQ(check(s.scene, cert(p, u, Q(y0 - Q(1, 1000)))).message.rfind("dual: mu_i u_i = ", 0), 0u) << s.scene;
+    // a speed bound below the speed
+    for (std::size_t i = 0; i < u.size(); ++i) {
+      if (u[i] * u[i] <= Q(1, 1000000)) continue;
+      std::vector<Q> low = u;
+      low[i] = lower_sqrt(Q(u[i] * u[i] - Q(1, 1000)));
+      const Q vx = q[0] - q[2] * s.p[i].y, vy = q[1] + q[2] * s.p[i].x;
+      if (low[i] * low[i] >= vx * vx + vy * vy) continue;
+      EXPECT_EQ(check(s.scene, cert(p, low, y0)).message.find("speed_bounds[" + std::to_string(i) + "]: u^2 = "), 0u);
+      break;
+    }
+  }
+}
+
+TEST(CheckerMotionProperties, KnownDistributions) {
+  std::mt19937 rng(20261126);
+  int slides = 0;
+  for (int round = 0; round < 200; ++round) {
+    const Random_support s = random_support(rng, true);
+    ASSERT_NE(check(s.scene, "{}").outcome, Outcome::bad_scene) << s.scene;
+    // random rational g_i inside the discs |g_i| <= mu_i f_i: p = sum (g_i, r_i x g_i) sticks
+    Q p[3] = {0, 0, 0};
+    std::string forces = "[";
+    for (std::size_t i = 0; i < s.p.size(); ++i) {
+      Q gx(static_cast<long>(rng() % 11) - 5, 5), gy(static_cast<long>(rng() % 11) - 5, 5);
+      const Q cap = s.p[i].mu * s.p[i].f;
+      if (cap == 0) gx = gy = 0;
+      while (gx * gx + gy * gy > cap * cap) gx /= 2, gy /= 2;
+      p[0] += gx, p[1] += gy, p[2] += s.p[i].x * gy - s.p[i].y * gx;
+      forces += std::string(i ? ", " : "") + "[\"" + str(gx) + "\", \"" + str(gy) + "\"]";
+    }
+    forces += "]";
+    const std::string stick = motion_head + R"("load": )" + rationals({p[0], p[1], p[2]}) +
+                              R"(, "motion": "sticks", "support_forces": )" + forces + "}";
+    ASSERT_EQ(check(s.scene, stick).outcome, Outcome::accepted) << s.scene << "\n" << stick << "\n" << check(s.scene, stick).message;
+    // one force pushed just outside its disc: rejected there (the forces before it are fine)
+    const std::size_t i = rng() % s.p.size();
+    const Q cap = s.p[i].mu * s.p[i].f, over = cap + Q(1, 1000);
+    std::string bad = stick;
+    std::size_t at = bad.find(R"("support_forces": [)") + 19;
+    for (std::size_t k = 0; k < i; ++k) at = bad.find("], [", at) + 3;
+    bad.replace(at, bad.find(']', at) + 1 - at, "[\"" + str(over) + "\", \"0\"]");
+    EXPECT_EQ(check(s.scene, bad).message, "support_forces[" + std::to_string(i) + "]: |g|^2 = " + str(over * over) +
+                                               " is more than (mu f)^2 = " + str(cap * cap));
+    // the stick load scaled past a slide witness: q = the load's own direction as a twist (q.p > 0 unless p = 0)
+    const Q qp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+    if (qp == 0) continue;
+    const Q q[3] = {p[0], p[1], p[2]};
+    const std::vector<Q> u = speed_bounds(s, q);
+    Q h = 0;
+    for (std::size_t k = 0; k < s.p.size(); ++k) h += s.p[k].mu * s.p[k].f * u[k];
+    const Q lambda = h / qp + Q(1, 100);  // lambda q.p = h + qp/100 > h
+    const std::vector<Q> scaled = {Q(lambda * p[0]), Q(lambda * p[1]), Q(lambda * p[2])};
+    const std::string slide = motion_head + R"("load": )" + rationals(scaled) + R"(, "motion": "slides", "twist": )" +
+                              rationals({q[0], q[1], q[2]}) + R"(, "speed_bounds": )" + rationals(u) + "}";
+    ASSERT_EQ(check(s.scene, slide).outcome, Outcome::accepted) << s.scene << "\n" << slide;
+    ++slides;
+    // the same witness for the sticking load itself: q.p = |p|^2 <= h, since p is in LS(f)
+    const std::string unscaled = motion_head + R"("load": )" + rationals({p[0], p[1], p[2]}) + R"(, "motion": "slides", "twist": )" +
+                                 rationals({q[0], q[1], q[2]}) + R"(, "speed_bounds": )" + rationals(u) + "}";
+    EXPECT_EQ(check(s.scene, unscaled).outcome, Outcome::rejected) << s.scene;
+  }
+  EXPECT_GE(slides, 150);
+}
+
+TEST(CheckerMotionProperties, Depends) {
+  // Two vertices f1, f2 of F; p = (0, 0, m) a pure moment. It sticks under f1 with g_i = f1_i s rot90(r_i - c)
+  // when |s| |r_i - c| <= mu_i (moment s J1), and slides under f2 with q = rotation about c when
+  // m > sum mu_i f2_i u_i, u_i >= |r_i - c|: whenever s J1 exceeds that sum, "depends" has a certificate.
+  std::mt19937 rng(20261127);
+  int found = 0;
+  for (int round = 0; round < 400 && found < 40; ++round) {
+    const Random_support s = random_support(rng, false);
+    const auto vertices = brute_vertices(s);
+    if (vertices.size() < 2) continue;
+    const Q q[3] = {s.c[1], Q(-s.c[0]), 1};  // v_i = (vx - y_i, vy + x_i) = rot90(r_i - c)
+    const std::vector<Q> u = speed_bounds(s, q);
+    for (std::size_t a = 0; a < vertices.size(); ++a)
+      for (std::size_t b = 0; b < vertices.size(); ++b) {
+        if (a == b) continue;
+        const auto &f1 = vertices[a], &f2 = vertices[b];
+        Q spin = -1, h2 = 0;  // spin: the largest s in our grid with |s| |r_i - c| <= mu_i where f1_i > 0
+        for (std::size_t i = 0; i < f1.size(); ++i) {
+          h2 += s.p[i].mu * f2[i] * u[i];
+          const Q r2 = (s.p[i].x - s.c[0]) * (s.p[i].x - s.c[0]) + (s.p[i].y - s.c[1]) * (s.p[i].y - s.c[1]);
+          if (f1[i] == 0 || r2 == 0) continue;
+          const Q cap = lower_sqrt(Q(s.p[i].mu * s.p[i].mu / r2));
+          if (spin < 0 || cap < spin) spin = cap;
+        }
+        if (spin <= 0) continue;
+        const Q m = spin * second_moment(s, f1);
+        if (!(m > h2)) continue;
+        const Q zero[2] = {0, 0};
+        const std::string g = forces_json(s, f1, zero, spin);
+        ASSERT_FALSE(g.empty());
+        const std::string cert = motion_head + R"("load": ["0", "0", ")" + str(m) + R"("], "motion": "depends", "sticking": )" +
+                                 R"({"distribution": )" + rationals(f1) + R"(, "support_forces": )" + g + R"(}, "sliding": )" +
+                                 R"({"distribution": )" + rationals(f2) + R"(, "twist": )" + rationals({q[0], q[1], q[2]}) +
+                                 R"(, "speed_bounds": )" + rationals(u) + "}}";
+        const Result r = check(s.scene, cert);
+        ASSERT_EQ(r.outcome, Outcome::accepted) << s.scene << "\n" << cert << "\n" << r.message;
+        // swapped roles: f2 cannot carry the moment (h2 < m bounds its limit surface) and f1 does not slide
+        const std::string swapped = motion_head + R"("load": ["0", "0", ")" + str(m) + R"("], "motion": "depends", "sticking": )" +
+                                    R"({"distribution": )" + rationals(f2) + R"(, "support_forces": )" + g + R"(}, "sliding": )" +
+                                    R"({"distribution": )" + rationals(f1) + R"(, "twist": )" + rationals({q[0], q[1], q[2]}) +
+                                    R"(, "speed_bounds": )" + rationals(u) + "}}";
+        EXPECT_EQ(check(s.scene, swapped).outcome, Outcome::rejected) << s.scene;
+        ++found;
+        a = b = vertices.size();
+      }
+  }
+  EXPECT_GE(found, 20);
+}
+
+TEST(CheckerExamples, SlidingExamples) {
+  for (const char* f : {"table_four_legs.sticks_for_every.valid.json", "table_four_legs.slides_for_every.valid.json",
+                        "table_four_legs.depends.valid.json", "barbell_known.sticks.valid.json",
+                        "barbell_known.slides.valid.json", "table_four_legs.missing_vertex.invalid.json",
+                        "table_four_legs.dual_violated.invalid.json", "barbell_known.depends_on_known.invalid.json"})
+    EXPECT_TRUE(fs::exists(examples / f)) << f;
+  // The load (1/2, 1/2, 0.9) of theory-sliding.md §6 depends: one diagonal sticks, the other slides.
+  const std::string depends = slurp(examples / "table_four_legs.depends.valid.json");
+  EXPECT_EQ(check(table_scene, depends).outcome, Outcome::accepted);
+  // check_all reads the scene once and answers each certificate as check() does
+  const std::vector<std::string> certs = {depends, slurp(examples / "table_four_legs.missing_vertex.invalid.json"),
+                                          slurp(examples / "table_four_legs.slides_for_every.valid.json"), "{}"};
+  const std::vector<std::string_view> views(certs.begin(), certs.end());
+  const std::vector<Result> all = wrenchkit_checker::check_all(table_scene, views);
+  ASSERT_EQ(all.size(), certs.size());
+  for (std::size_t k = 0; k < certs.size(); ++k) {
+    EXPECT_EQ(all[k].outcome, check(table_scene, certs[k]).outcome) << k;
+    EXPECT_EQ(all[k].message, check(table_scene, certs[k]).message) << k;
+  }
+  EXPECT_EQ(all[0].outcome, Outcome::accepted);
+  EXPECT_EQ(all[1].outcome, Outcome::rejected);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -309,4 +309,66 @@ TEST(CliAnalyzeSupport, ToleranceAndTheLoadsMotion) {
 }
 
 }  // namespace
+// Unknown forces (docs/theory-sliding.md §1–§2): sliding answers the power over every admissible distribution
+// (the four-legged table: rotation about a leg ranges over [√2, 2]); float mode has no LP over F (exit 3);
+// limit-surface --load sticks / slides / depends; an empty F is bad input with the reason.
+TEST(CliSliding, UnknownDistributionsOfTheTable) {
+  const std::string table = R"({"wrenchkit": 1, "name": "table", "support": {"mu": 1, "weight": 1,
+      "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}})";
+  const Cli_result r = run("sliding --json --twist 1,-1,1 -", table);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\"distribution\": \"unknown\", \"unknown_points\": [0, 1, 2, 3], \"weight\": \"1\"")) << r.out;
+  EXPECT_TRUE(has(r.out, "\"extreme_distributions\": [[\"1/2\", \"0\", \"1/2\", \"0\"], [\"0\", \"1/2\", \"0\", \"1/2\"]]"))
+      << r.out;
+  EXPECT_TRUE(has(r.out, "\"min_distribution\": [\"1/2\", \"0\", \"1/2\", \"0\"], \"max_distribution\": [\"0\", "
+                         "\"1/2\", \"0\", \"1/2\"]"))
+      << r.out;
+  const Cli_result b = run("batch sliding --twist 1,-1,1", table.substr(0, 0) + R"({"wrenchkit": 1, "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, -1]}]}})" "\n");
+  ASSERT_EQ(b.code, 0) << b.err;
+  EXPECT_TRUE(has(b.out, "{\"line\": 1, \"command\": \"sliding\"")) << b.out;
+  const Cli_result f = run("sliding --mode float --twist 0,0,1 -", table);
+  EXPECT_EQ(f.code, 3);
+  EXPECT_TRUE(has(f.err, "no LP over the admissible distributions")) << f.err;
+  EXPECT_TRUE(f.out.empty());
+  // limit-surface --load: sticks / slides / depends over every admissible distribution (the table's three cases).
+  const Cli_result d = run("limit-surface --json --load 0.5,0.5,0.9 -", table);
+  ASSERT_EQ(d.code, 0) << d.err;
+  EXPECT_TRUE(has(d.out, "\"motion\": \"depends\", \"motion_decided_by\": \"vertices\", \"per_extreme_distribution\": "
+                         "[\"sticks\", \"slides\"], \"witnesses\": {\"sticks\": {\"distribution\": [\"1/2\", \"0\", "
+                         "\"1/2\", \"0\"]}, \"slides\": {\"distribution\": [\"0\", \"1/2\", \"0\", \"1/2\"]}}"))
+      << d.out;
+  EXPECT_TRUE(has(run("limit-surface --json --load 0.5,0,0 -", table).out, "\"motion\": \"sticks\""));
+  const Cli_result sl = run("limit-surface --json --load 0,0,1.5 -", table);
+  EXPECT_TRUE(has(sl.out, "\"motion\": \"slides\", \"motion_decided_by\": \"twist\"")) << sl.out;
+  EXPECT_TRUE(has(sl.out, "\"separating_twist\": [")) << sl.out;
+  const Cli_result l = run("limit-surface --list --load 0.5,0.5,0.9 -", table);
+  EXPECT_EQ(l.code, 2);
+  EXPECT_TRUE(has(l.err, "no one limit surface to list or draw")) << l.err;
+  EXPECT_TRUE(l.out.empty());
+  std::string tipped = table;
+  tipped.replace(tipped.find("[0, 0]"), 6, "[2, 0]");
+  const Cli_result e = run("sliding --twist 0,0,1 -", tipped);
+  EXPECT_EQ(e.code, 2);
+  EXPECT_TRUE(has(e.err, "outside the convex hull of the points whose force is not given")) << e.err;
+}
+
+// Gravity with a support: a centre of mass away from the support's centre of pressure is reported (text and
+// JSON), not refused; at the centre, nothing is said.
+TEST(CliAnalyze, GravityAwayFromTheCentreOfPressureIsReported) {
+  const std::string off = R"({"wrenchkit": 1, "body": {"com": [1, 0]}, "load": {"gravity": 1},
+      "support": {"mu": 1, "points": [{"at": [0, 1], "force": "1/2"}, {"at": [0, -1], "force": "1/2"}]}})";
+  const Cli_result t = run("analyze -", off);
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_TRUE(has(t.out, "warning: the weight acts at body.com (1, 0) but the support's centre of pressure is (0, 0)"))
+      << t.out;
+  const Cli_result j = run("analyze --json -", off);
+  EXPECT_TRUE(has(j.out, "\"warnings\": [{\"what\": \"gravity_off_pressure_center\", \"com\": [\"1\", \"0\"], "
+                         "\"pressure_center\": [\"0\", \"0\"]}]"))
+      << j.out;
+  std::string on = off;
+  on.replace(on.find("[1, 0]"), 6, "[0, 0]");
+  const Cli_result k = run("analyze --json -", on);
+  EXPECT_FALSE(has(k.out, "warnings")) << k.out;
+}
+
 }  // namespace wrenchkit

@@ -444,6 +444,38 @@ TEST(Cli, LimitsCanBeRaised) {
   return ::testing::AssertionSuccess();
 }
 
+// The limit-surface picture: one writer behind both entry points, three panels, every golden support.
+TEST(Cli, RenderLimitSurfaceOfEverySupport) {
+  const std::string file_out = (scratch() / "ls.svg").string();
+  int n = 0;
+  for (const std::string& file : test::scene_files("tests/golden/limit_surface")) {
+    if (test::read_text(file).find("\"support\"") == std::string::npos) continue;
+    SCOPED_TRACE(file);
+    const Cli_result r = run("render --what limit-surface --sides 8 '" + file + "'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(well_formed_svg(r.out));
+    std::size_t panels = 0;
+    for (std::size_t i = r.out.find("<g>"); i != std::string::npos; i = r.out.find("<g>", i + 1)) ++panels;
+    EXPECT_EQ(panels, 3u);
+    fs::remove(file_out);
+    ASSERT_EQ(run("limit-surface --sides 8 --svg '" + file_out + "' '" + file + "'").code, 0);
+    EXPECT_EQ(test::read_text(file_out), r.out);
+    ++n;
+  }
+  EXPECT_GE(n, 5);
+  // Markup in the name is escaped; one point's slice f_y = 0 is a segment, drawn as its two ends.
+  const std::string one = write("one.json", R"({"wrenchkit": 1, "name": "a <b> & \"c\"", "support": {"mu": 1, )"
+                                            R"("points": [{"at": [0, 0], "force": 1}]}})");
+  const Cli_result r = run("render --what limit-surface --sides 4 '" + one + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(well_formed_svg(r.out));
+  EXPECT_NE(r.out.find("Limit surface of a &lt;b&gt; &amp; &quot;c&quot;: 4 sides"), std::string::npos) << r.out;
+  const std::size_t slice = r.out.find("<polygon points=\"");
+  ASSERT_NE(slice, std::string::npos);
+  const std::string points = r.out.substr(slice, r.out.find('"', slice + 17) - slice);
+  EXPECT_EQ(std::count(points.begin(), points.end(), ','), 2) << points;
+}
+
 TEST(Cli, LabelsAnswerExactlyAndAgreeWithClosure) {
   const Cli_result r = run("labels --json '" + golden("block_corner_mu_0") + "'");
   ASSERT_EQ(r.code, 0) << r.err;

@@ -356,10 +356,8 @@ TEST(ClosureDifferential, RandomizedConstructionMatchesTheReference) {
           for (std::size_t j = 0; j < d.edges.size(); ++j) {
             const Wrench& a = ws[d.edges[j]];
             const Wrench& b = ws[d.edges[(j + 1) % d.edges.size()]];
-            const Rational c[3] = {a.fy * b.m - a.m * b.fy, a.m * b.fx - a.fx * b.m, a.fx * b.fy - a.fy * b.fx};
-            std::array<Integer, 3> r;
-            primitive(c, r.data());
-            out.push_back(r);
+            out.push_back(primitive(std::array<Rational, 3>{a.fy * b.m - a.m * b.fy, a.m * b.fx - a.fx * b.m,
+                                                            a.fx * b.fy - a.fy * b.fx}));
           }
           std::sort(out.begin(), out.end());
           out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -155,14 +155,10 @@ void compare_modes(const std::string& text, Tally& tally, const std::string& tag
 }
 
 TEST(FloatTwin, CertifiedAnswersEqualExactOnDegenerateRichRandomScenes) {
-  const std::uint64_t seed = test::seed(20261121);
-  std::mt19937_64 rng(seed);
   Tally t;
-  for (int i = 0; i < 2000; ++i) {
-    compare_modes(test::scene_json(test::random_contacts(rng, 7)), t,
-                  "twin_grid_" + std::to_string(seed) + "_" + std::to_string(i));
-    if (HasFatalFailure()) return;
-  }
+  test::for_random_scenes(20261121, 2000, "twin_grid", [](std::mt19937_64& rng, int) { return test::random_contacts(rng, 7); },
+                          [&](const std::string& text, const std::string& tag) { compare_modes(text, t, tag); });
+  if (HasFatalFailure()) return;
   // Grid scenes are exact in binary (small integers, halves, quarters… and 1/3): many exact zeros
   // are still certified, since exact operations carry no error.
   std::printf("[ stats    ] grid scenes: the twin decided %d of %d queries alone\n", t.float_decided, t.cases);
@@ -170,13 +166,10 @@ TEST(FloatTwin, CertifiedAnswersEqualExactOnDegenerateRichRandomScenes) {
 }
 
 TEST(FloatTwin, DecidesTypicalScenesByItself) {
-  const std::uint64_t seed = test::seed(5);
-  std::mt19937_64 rng(seed);
   Tally t;
-  for (int i = 0; i < 1000; ++i) {
-    compare_modes(test::scene_json(test::decimal_contacts(rng, 3 + i % 6)), t, "twin_decimal_" + std::to_string(seed) + "_" + std::to_string(i));
-    if (HasFatalFailure()) return;
-  }
+  test::for_random_scenes(5, 1000, "twin_decimal", [](std::mt19937_64& rng, int i) { return test::decimal_contacts(rng, 3 + i % 6); },
+                          [&](const std::string& text, const std::string& tag) { compare_modes(text, t, tag); });
+  if (HasFatalFailure()) return;
   // Form closure of frictionless contacts with generic decimals is generic too: ≥ 99 % overall.
   std::printf("[ stats    ] decimal scenes: the twin decided %d of %d queries alone\n", t.float_decided, t.cases);
   EXPECT_GE(t.float_decided * 100, t.cases * 99) << t.float_decided << " of " << t.cases;
@@ -187,31 +180,26 @@ TEST(FloatTwin, NearThresholdNeverWrongAndNaiveFloatIs) {
   // §8.5, y2 = 1 ± 10^-k, μ = 1/2): closure iff y2 < 1. For small k the twin certifies; for large
   // k it abstains; it is never wrong. The naive kernel guesses and is wrong for some k.
   int naive_wrong = 0, twin_undecided = 0;
-  for (int k = 1; k <= 40; ++k) {
-    for (int side : {-1, 1}) {
-      const std::string y2 = side < 0 ? "0." + std::string(k - 1, '9') + "9" : "1." + std::string(k - 1, '0') + "1";
-      const std::string text = test::scene_json({{"0", "0.5", "1", "0", "0.5"}, {"1", y2, "-1", "0", "0.5"}});
-      const Scene s = read_scene(text, Input_limits{});
-      const bool truth = side < 0;
-      ASSERT_EQ(decide_closure(s, Property::force_closure, Mode::exact).holds, truth) << y2;
-      const Closure_answer twin = decide_closure(s, Property::force_closure, Mode::float_only);
-      if (twin.decided) EXPECT_EQ(twin.holds, truth) << y2;
-      else ++twin_undecided;
-      EXPECT_EQ(decide_closure(s, Property::force_closure, Mode::hybrid).holds, truth) << y2;
-      // Naive: the decimal text parsed to the nearest double (strtod), raw signs.
-      std::vector<fl::Bounded_contact> cs(2);
-      const double pts[2][5] = {{0, 0.5, 1, 0, 0.5}, {1, std::strtod(y2.c_str(), nullptr), -1, 0, 0.5}};
-      for (int c = 0; c < 2; ++c) {
-        cs[c].ax = Bounded::exact(pts[c][0]);
-        cs[c].ay = Bounded::exact(pts[c][1]);
-        cs[c].nx = Bounded::exact(pts[c][2]);
-        cs[c].ny = Bounded::exact(pts[c][3]);
-        cs[c].mu = Bounded::exact(pts[c][4]);
-        cs[c].frictional = true;
-      }
-      const fl::Naive_kernel naive(fl::generators(cs, Reading::friction));
-      naive_wrong += compute_dual_cone(naive).force_closure() != truth;
+  for (const test::Near_edge_grasp& g : test::near_edge_grasps()) {
+    const Scene s = read_scene(g.text, Input_limits{});
+    ASSERT_EQ(decide_closure(s, Property::force_closure, Mode::exact).holds, g.closed) << g.y2;
+    const Closure_answer twin = decide_closure(s, Property::force_closure, Mode::float_only);
+    if (twin.decided) EXPECT_EQ(twin.holds, g.closed) << g.y2;
+    else ++twin_undecided;
+    EXPECT_EQ(decide_closure(s, Property::force_closure, Mode::hybrid).holds, g.closed) << g.y2;
+    // Naive: the decimal text parsed to the nearest double (strtod), raw signs.
+    std::vector<fl::Bounded_contact> cs(2);
+    for (int c = 0; c < 2; ++c) {
+      const double* x = g.contacts[c];
+      cs[c].ax = Bounded::exact(x[0]);
+      cs[c].ay = Bounded::exact(x[1]);
+      cs[c].nx = Bounded::exact(x[2]);
+      cs[c].ny = Bounded::exact(x[3]);
+      cs[c].mu = Bounded::exact(x[4]);
+      cs[c].frictional = true;
     }
+    const fl::Naive_kernel naive(fl::generators(cs, Reading::friction));
+    naive_wrong += compute_dual_cone(naive).force_closure() != g.closed;
   }
   std::printf("[ stats    ] 80 near-edge grasps: twin undecided %d (never wrong), naive wrong %d\n", twin_undecided,
               naive_wrong);

@@ -33,7 +33,7 @@ std::string describe(const Support& s) {
   o << "{\"wrenchkit\": 1, \"support\": {\"mu\": \"" << to_string(*s.mu) << "\", \"points\": [";
   for (std::size_t i = 0; i < s.points.size(); ++i)
     o << (i ? ", " : "") << "{\"at\": [\"" << to_string(s.points[i].at.x) << "\", \"" << to_string(s.points[i].at.y)
-      << "\"], \"force\": \"" << to_string(s.points[i].force) << "\"}";
+      << "\"], \"force\": \"" << to_string(*s.points[i].force) << "\"}";
   o << "]}}";
   return o.str();
 }
@@ -88,6 +88,26 @@ TEST(LimitSurface, DirectionsAreRationalUnitVectorsWithTheCertificate) {
   EXPECT_THROW(make_directions(3), std::invalid_argument);
   EXPECT_THROW(make_directions(7), std::invalid_argument);
   EXPECT_THROW(make_directions(kMaxSides + 2), std::invalid_argument);
+}
+
+// [LS-1] The shared rule (core/limit_surface_directions.h): for every even n ≤ kMaxSides the first
+// denominator 32n separates the directions (1 ≤ a_0 < … < a_{q−1} < den), and t_j = a_j/den is tan(φ_j/2)
+// to within half a step.
+TEST(LimitSurface, DirectionRuleNeedsNoFinerDenominator) {
+  for (int n = 4; n <= kMaxSides; n += 2) {
+    const Direction_parameters p = direction_parameters(n);
+    ASSERT_EQ(p.den, 32 * n) << n;
+    ASSERT_EQ(static_cast<int>(p.a.size()), n / 4) << n;
+    ASSERT_EQ(p.middle, n / 2 % 2 == 1) << n;
+    for (std::size_t j = 0; j < p.a.size(); ++j) {
+      ASSERT_TRUE(j == 0 ? p.a[0] >= 1 : p.a[j - 1] < p.a[j]) << n << " " << j;
+      const double t = std::tan(3.14159265358979323846 * (j + 0.5) / n);
+      ASSERT_LE(std::fabs(static_cast<double>(p.a[j]) - t * static_cast<double>(p.den)), 0.5 + 1e-9) << n << " " << j;
+    }
+    ASSERT_LT(p.a.back(), p.den) << n;
+  }
+  EXPECT_THROW(direction_parameters(2), std::invalid_argument);
+  EXPECT_THROW(direction_parameters(kMaxSides + 2), std::invalid_argument);
 }
 
 TEST(LimitSurface, ToleranceGivesTheSmallestQualifyingN) {

@@ -12,6 +12,7 @@
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
 #include "exact/io/to_float.h"
+#include "testing/twin_agreement.h"
 #include "float/limit_surface_twin.h"
 #include "float/pressure.h"
 #include "tests/test_support.h"
@@ -112,13 +113,31 @@ TEST(LimitSurfaceTwin, SinglePointFlatDiscAndZeroSurface) {
   EXPECT_NE(fl::classify_load(huge, B(5, 0, 0)).motion, fl::Motion_twin::sticks);
 }
 
+// [LS-1] [FL-7] One direction rule: for every N the twin's u_j and λ² are the exact engine's rationals
+// (each coordinate within its bound of the exact one), so the twin's polygons ARE the exact polygons.
+TEST(LimitSurfaceTwin, DirectionSetsAreTheExactOnes) {
+  std::vector<int> sizes = {600, 1000, 1024, 1366, 2048, 3000, 4094, 4096};
+  for (int n = 4; n <= 512; n += 2) sizes.push_back(n);
+  for (int n : sizes) {
+    const Directions d = make_directions(n);
+    const fl::Directions_twin f = fl::make_directions(n);
+    ASSERT_EQ(f.n, n);
+    ASSERT_EQ(f.u.size(), d.u.size());
+    for (int j = 0; j < n; ++j)
+      ASSERT_TRUE(within(f.u[j].x, d.u[j].x) && within(f.u[j].y, d.u[j].y))
+          << "N = " << n << ", u_" << j << ": twin (" << f.u[j].x.v << " ± " << f.u[j].x.e << ", " << f.u[j].y.v
+          << " ± " << f.u[j].y.e << "), exact (" << d.u[j].x << ", " << d.u[j].y << ")";
+    ASSERT_TRUE(within(f.lambda_sq, d.lambda_sq)) << "N = " << n << ": twin λ² " << f.lambda_sq.v << " ± "
+                                                  << f.lambda_sq.e << ", exact " << d.lambda_sq.get_d();
+  }
+}
+
 TEST(LimitSurfaceTwin, TrueValuesLieInTheExactBrackets) {
   const std::uint64_t seed = test::seed(31);
   std::mt19937_64 rng(seed);
   const Directions d16 = make_directions(16);
   const fl::Directions_twin f16 = fl::make_directions(16);
-  const double c16 = std::cos(3.14159265358979323846 / 16);
-  EXPECT_NEAR(f16.lambda_sq.v, c16 * c16, 1e-12);  // the regular 16-gon, to double precision
+  EXPECT_TRUE(within(f16.lambda_sq, d16.lambda_sq));  // the exact 16-gon's λ² (one direction rule)
   for (int t = 0; t < 150; ++t) {
     const Support s = random_support(rng, 1 + t % 6);
     const Ls_support ls = merge_support(s);
@@ -142,8 +161,11 @@ TEST(LimitSurfaceTwin, TrueValuesLieInTheExactBrackets) {
         for (int c = 0; c < 3; ++c) ASSERT_TRUE(meets(l.load[c], a.load_lo[c], a.load_hi[c])) << why << " coordinate " << c;
         ASSERT_EQ(l.facet_points.empty(), a.cls.kind != Twist_kind::facet) << why;
       }
-      // The float polygons bracket the true h, within the certified λ².
+      // The float polygons are the exact ones: their values contain h_in and h_out, and bracket the true h
+      // within the certified λ².
       const Bounded hin = fl::polygonal_support(tw, f16, false, bq), hout = fl::polygonal_support(tw, f16, true, bq);
+      ASSERT_TRUE(within(hin, a.h_inner)) << why << ": twin h_in " << hin.v << " ± " << hin.e << ", exact " << a.h_inner.get_d();
+      ASSERT_TRUE(within(hout, a.h_outer)) << why << ": twin h_out " << hout.v << " ± " << hout.e << ", exact " << a.h_outer.get_d();
       ASSERT_LE(Rational(fl::lower(hin)), a.h_hi) << why;
       ASSERT_GE(Rational(fl::upper(hout)), a.h_lo) << why;
       ASSERT_LE(fl::lower(hout) * fl::lower(f16.lambda_sq), fl::upper(hin) * (1 + 1e-12)) << why;

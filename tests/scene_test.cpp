@@ -131,6 +131,25 @@ std::string error_of(const std::string& text, const Input_limits& lim = {}) {
   return "(accepted)";
 }
 
+// The one primitive-vector helper: the positive multiple with coprime integer entries; zero is a bug.
+TEST(Numbers, PrimitiveVectors) {
+  using Z3 = std::array<Integer, 3>;
+  using Q3 = std::array<Rational, 3>;
+  EXPECT_EQ(primitive(Z3{Integer(6), Integer(-4), Integer(0)}), (Z3{Integer(3), Integer(-2), Integer(0)}));
+  EXPECT_EQ(primitive(Z3{Integer(0), Integer(0), Integer(-7)}), (Z3{Integer(0), Integer(0), Integer(-1)}));
+  EXPECT_EQ(primitive(Q3{Rational(1, 2), Rational(-1, 3), Rational(5, 6)}), (Z3{Integer(3), Integer(-2), Integer(5)}));
+  EXPECT_EQ(primitive(Q3{Rational(-4, 9), Rational(0), Rational(2, 3)}), (Z3{Integer(-2), Integer(0), Integer(3)}));
+  EXPECT_EQ(primitive(Rational(-3, 4), Rational(9, 8)), (std::array<Integer, 2>{Integer(-2), Integer(3)}));
+  EXPECT_EQ(primitive(Rational(0), Rational(-5, 7)), (std::array<Integer, 2>{Integer(0), Integer(-1)}));
+  // 10^30 · (2, 4, 6) / 10^30 keeps its direction and loses its common factor.
+  const Integer big("1000000000000000000000000000000");
+  EXPECT_EQ(primitive(Q3{Rational(2 * big), Rational(4 * big), Rational(6, big)}),
+            (Z3{Integer(big * big), Integer(2 * big * big), Integer(3)}));
+  EXPECT_THROW(primitive(Z3{Integer(0), Integer(0), Integer(0)}), std::logic_error);
+  EXPECT_THROW(primitive(Q3{Rational(0), Rational(0), Rational(0)}), std::logic_error);
+  EXPECT_THROW(primitive(Rational(0), Rational(0)), std::logic_error);
+}
+
 TEST(SceneErrors, MessagesNameThePathAndTheValue) {
   const std::string ok = R"("wrenchkit": 1, )";
   EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contacts": [{"at": [0,0], "normal": [1,0]}, {"at": [0,0], "normal": [1,0]},

@@ -57,6 +57,21 @@ std::string scene_json(const std::vector<Contact_spec>& contacts, const std::str
   return s + "]}";
 }
 
+std::vector<Near_edge_grasp> near_edge_grasps() {
+  std::vector<Near_edge_grasp> out;
+  for (int k = 1; k <= 40; ++k)
+    for (int side : {-1, 1}) {
+      Near_edge_grasp g;
+      g.y2 = side < 0 ? "0." + std::string(k - 1, '9') + "9" : "1." + std::string(k - 1, '0') + "1";
+      g.text = scene_json({{"0", "0.5", "1", "0", "0.5"}, {"1", g.y2, "-1", "0", "0.5"}});
+      g.closed = side < 0;
+      const double c[2][5] = {{0, 0.5, 1, 0, 0.5}, {1, std::strtod(g.y2.c_str(), nullptr), -1, 0, 0.5}};
+      std::copy(&c[0][0], &c[0][0] + 10, &g.contacts[0][0]);
+      out.push_back(g);
+    }
+  return out;
+}
+
 std::uint64_t seed(std::uint64_t fallback) {
   if (const char* e = std::getenv("WRENCHKIT_SEED")) return std::strtoull(e, nullptr, 10);
   return fallback;

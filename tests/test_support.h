@@ -28,6 +28,16 @@ struct Contact_spec {
 };
 std::string scene_json(const std::vector<Contact_spec>& contacts, const std::string& name = "");
 
+// Two fingers with the segment between them 10^-k away from the friction-cone edge (theory.md §8.5,
+// μ = 1/2): y2 = 1 − 10^-k (closed: force closure) and 1 + 10^-k (not), k = 1 … 40; the contacts as text
+// and, for the naive float kernels, as the nearest doubles (strtod).
+struct Near_edge_grasp {
+  std::string y2, text;
+  bool closed = false;
+  double contacts[2][5];  // ax, ay, nx, ny, mu
+};
+std::vector<Near_edge_grasp> near_edge_grasps();
+
 // Seed for randomized tests: WRENCHKIT_SEED from the environment, else `fallback`.
 std::uint64_t seed(std::uint64_t fallback);
 
@@ -38,6 +48,17 @@ std::vector<Contact_spec> random_contacts(std::mt19937_64& rng, int max_contacts
 // Random contacts as users write them: decimal coordinates with 3 digits (0.137 is not a double),
 // integer normals, μ in 0.01 … 0.80: generic, nothing exactly degenerate by construction.
 std::vector<Contact_spec> decimal_contacts(std::mt19937_64& rng, int contacts);
+
+// Calls check(text, tag) on n random scenes, the i-th written by make(rng, i) (contacts) with one generator
+// seeded by seed(fallback) and tagged "<prefix>_<seed>_<i>" (for dump_failure); stops at the first fatal
+// failure (the caller then returns: HasFatalFailure()).
+template <class Make, class Check>
+void for_random_scenes(std::uint64_t fallback, int n, const std::string& prefix, Make make, Check check) {
+  const std::uint64_t s = seed(fallback);
+  std::mt19937_64 rng(s);
+  for (int i = 0; i < n && !::testing::Test::HasFatalFailure(); ++i)
+    check(scene_json(make(rng, i)), prefix + "_" + std::to_string(s) + "_" + std::to_string(i));
+}
 
 // Writes the scene to failures/<tag>.json under the build tree's working directory and returns the
 // path, so a failing random case can be replayed with `wrenchkit closure PATH`.

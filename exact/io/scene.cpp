@@ -1,4 +1,5 @@
 #include "exact/io/scene.h"
+#include "exact/io/support_check.h"
 
 #include <initializer_list>
 #include <limits>
@@ -42,6 +43,8 @@ class Reader {
     }
     if (const Value* v = root.find("load")) s.load = load(*v, s.body);
     if (const Value* v = root.find("support")) s.support = support(*v);
+    const std::string why = support_inadmissible(s);
+    if (!why.empty()) throw Input_error(why);
     return s;
   }
 
@@ -271,16 +274,21 @@ class Reader {
 
   Support support(const Value& v) const {
     expect(v, Type::object, "support", "an object");
-    keys(v, "support", {"mu", "points"});
+    keys(v, "support", {"mu", "points", "weight", "pressure_center"});
     Support s;
     if (const Value* mu = v.find("mu")) s.mu = nonnegative(*mu, "support.mu");
+    if (const Value* w = v.find("weight")) {
+      s.weight = number(*w, "support.weight");
+      if (*s.weight <= 0) fail("support.weight", display(*w) + " is not positive (a total normal force must be > 0)");
+    }
+    if (const Value* c = v.find("pressure_center")) s.pressure_center = vec2(*c, "support.pressure_center");
     const Value& pts = required(v, "support", "points");
     expect(pts, Type::array, "support.points", "an array");
     if (pts.items.empty()) fail("support.points", "empty (a support needs at least one point)");
     if (pts.items.size() > limits_.max_contacts)
       fail("support.points", "has more entries than the limit " +
                                  std::to_string(limits_.max_contacts) + " (--max-contacts)");
-    bool any_force = false;
+    bool any_force = false, all_given = true;
     s.points.reserve(pts.items.size());
     for (std::size_t i = 0; i < pts.items.size(); ++i) {
       const std::string path = "support.points[" + std::to_string(i) + "]";
@@ -289,13 +297,14 @@ class Reader {
       keys(p, path, {"at", "force", "mu"});
       Support_point sp;
       sp.at = vec2(required(p, path, "at"), path + ".at");
-      sp.force = nonnegative(required(p, path, "force"), path + ".force");
+      if (const Value* f = p.find("force")) sp.force = nonnegative(*f, path + ".force");
       if (const Value* mu = p.find("mu")) sp.mu = nonnegative(*mu, path + ".mu");
       if (!sp.mu && !s.mu) fail(path, "missing key \"mu\" (and support.mu gives no default)");
-      any_force |= sp.force > 0;
+      any_force |= sp.force && *sp.force > 0;
+      all_given &= sp.force.has_value();
       s.points.push_back(std::move(sp));
     }
-    if (!any_force) fail("support.points", "all forces are zero");
+    if (all_given && !any_force) fail("support.points", "all forces are zero");
     return s;
   }
 };

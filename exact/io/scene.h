@@ -55,13 +55,23 @@ struct Load {
 
 struct Support_point {
   Vec2 at;
-  Rational force;               // normal force ≥ 0
-  std::optional<Rational> mu;   // own coefficient, else support.mu
+  std::optional<Rational> force;  // normal force ≥ 0; none: unknown (docs/theory-sliding.md §1)
+  std::optional<Rational> mu;     // own coefficient, else support.mu
 };
 
+// A support: its points, and when a force is unknown the total normal force W and the centre of pressure c
+// (pressure_center, else body.com) that fix the admissible distributions (exact/io/support_check.h).
 struct Support {
   std::optional<Rational> mu;
   std::vector<Support_point> points;
+  std::optional<Rational> weight;        // W > 0; required when a force is unknown
+  std::optional<Vec2> pressure_center;   // c
+  // Every point's force is given: one distribution.
+  bool known() const {
+    for (const Support_point& p : points)
+      if (!p.force) return false;
+    return true;
+  }
 };
 
 struct Body {

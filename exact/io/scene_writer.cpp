@@ -56,10 +56,13 @@ std::string write_scene(const Scene& s) {
   if (s.support) {
     o += ",\n \"support\": {";
     if (s.support->mu) o += "\"mu\": " + q(*s.support->mu) + ", ";
+    if (s.support->weight) o += "\"weight\": " + q(*s.support->weight) + ", ";
+    if (s.support->pressure_center) o += "\"pressure_center\": " + pt(*s.support->pressure_center) + ", ";
     o += "\"points\": [";
     for (std::size_t i = 0; i < s.support->points.size(); ++i) {
       const Support_point& p = s.support->points[i];
-      o += (i ? ", " : "") + std::string("{\"at\": ") + pt(p.at) + ", \"force\": " + q(p.force);
+      o += (i ? ", " : "") + std::string("{\"at\": ") + pt(p.at);
+      if (p.force) o += ", \"force\": " + q(*p.force);
       if (p.mu) o += ", \"mu\": " + q(*p.mu);
       o += "}";
     }

@@ -1,4 +1,5 @@
 #include "exact/io/streaming_scene_reader.h"
+#include "exact/io/support_check.h"
 
 #include <cstddef>
 #include <string>
@@ -90,6 +91,7 @@ class Stream {
     if (!(seen & kLoad)) out.load.reset();
     else if (out.load->kind == Load::Kind::gravity && !out.body.com) defer();
     if (!(seen & kSupport)) out.support.reset();
+    else if (!support_inadmissible(out).empty()) defer();  // read_scene_tree gives the reason
   }
 
  private:
@@ -374,18 +376,32 @@ class Stream {
     }
   }
 
-  // {"mu"?, "points": [{"at", "force", "mu"?}, …]} (scene.cpp's support()).
+  // {"mu"?, "weight"?, "pressure_center"?, "points": [{"at", "force"?, "mu"?}, …]} (scene.cpp's support()).
   void support(Support& s) {
-    enum : unsigned { kMu = 1, kPoints = 2 };
+    enum : unsigned { kMu = 1, kPoints = 2, kWeight = 4, kCenter = 8 };
     unsigned seen = 0;
     std::size_t points = 0;
-    bool any_force = false, any_without_mu = false;
+    bool any_force = false, any_without_mu = false, all_given = true;
     object(1, [&](std::string_view key) {
-      const unsigned bit = key == "mu" ? kMu : key == "points" ? kPoints : 0u;
+      const unsigned bit = key == "mu"                ? kMu
+                           : key == "points"          ? kPoints
+                           : key == "weight"          ? kWeight
+                           : key == "pressure_center" ? kCenter
+                                                      : 0u;
       if (bit == 0 || (seen & bit)) defer();
       seen |= bit;
       if (bit == kMu) {
         nonnegative(s.mu ? *s.mu : s.mu.emplace());
+        return;
+      }
+      if (bit == kWeight) {
+        Rational& w = s.weight ? *s.weight : s.weight.emplace();
+        exact(w);
+        if (sgn(w) <= 0) defer();
+        return;
+      }
+      if (bit == kCenter) {
+        vec2(s.pressure_center ? *s.pressure_center : s.pressure_center.emplace(), 2);
         return;
       }
       array(2, [&](std::size_t k) {
@@ -399,22 +415,26 @@ class Stream {
           if (b == 0 || (point_seen & b)) defer();
           point_seen |= b;
           if (b == kAt) vec2(p.at, 4);
-          else if (b == kForce) nonnegative(p.force);
+          else if (b == kForce) nonnegative(p.force ? *p.force : p.force.emplace());
           else nonnegative(p.mu ? *p.mu : p.mu.emplace());
         });
-        if ((point_seen & (kAt | kForce)) != (kAt | kForce)) defer();
+        if (!(point_seen & kAt)) defer();
+        if (!(point_seen & kForce)) p.force.reset();
         if (!(point_seen & kPointMu)) {
           p.mu.reset();
           any_without_mu = true;
         }
-        any_force |= sgn(p.force) > 0;
+        any_force |= p.force && sgn(*p.force) > 0;
+        all_given &= p.force.has_value();
       });
     });
-    if (!(seen & kPoints) || points == 0 || !any_force) defer();
+    if (!(seen & kPoints) || points == 0 || (all_given && !any_force)) defer();
     if (!(seen & kMu)) {
       if (any_without_mu) defer();
       s.mu.reset();
     }
+    if (!(seen & kWeight)) s.weight.reset();
+    if (!(seen & kCenter)) s.pressure_center.reset();
     s.points.resize(points);
   }
 };

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace wrenchkit {
@@ -20,6 +21,25 @@ std::size_t digits(std::string_view s, std::size_t& i) {
 Integer integer_of(std::string_view ds) {
   // ds is a non-empty digit string (already length-limited by the caller).
   return Integer(std::string(ds), 10);
+}
+
+template <std::size_t N>
+std::array<Integer, N> primitive_of(std::array<Integer, N> v) {
+  Integer g = 0;
+  for (const Integer& x : v) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), x.get_mpz_t());
+  if (g == 0) throw std::logic_error("primitive: zero vector");
+  if (g != 1)
+    for (Integer& x : v) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
+  return v;
+}
+
+template <std::size_t N>
+std::array<Integer, N> primitive_of(const std::array<Rational, N>& v) {  // clear the denominators first
+  Integer l = 1;
+  for (const Rational& x : v) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x.get_den_mpz_t());
+  std::array<Integer, N> z;
+  for (std::size_t c = 0; c < N; ++c) z[c] = v[c].get_num() * (l / v[c].get_den());
+  return primitive_of(std::move(z));
 }
 
 }  // namespace
@@ -217,5 +237,9 @@ bool scan_number(std::string_view s, bool json_number, const Input_limits& limit
 
 
 std::string to_string(const Rational& q) { return q.get_str(10); }
+
+std::array<Integer, 3> primitive(std::array<Integer, 3> v) { return primitive_of(std::move(v)); }
+std::array<Integer, 3> primitive(const std::array<Rational, 3>& v) { return primitive_of(v); }
+std::array<Integer, 2> primitive(const Rational& x, const Rational& y) { return primitive_of(std::array<Rational, 2>{x, y}); }
 
 }  // namespace wrenchkit

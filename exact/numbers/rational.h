@@ -4,6 +4,7 @@
 
 #include <gmpxx.h>
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -43,5 +44,13 @@ fl::Bounded to_bounded(const Rational& q);
 
 // Lowest terms, "p" or "p/q" (q > 0): the JSON output form of docs/cli.md.
 std::string to_string(const Rational& q);
+
+// The primitive integer vector positively parallel to v: the positive multiple of v whose entries are
+// coprime integers — the one reduction of every 2-D and 3-D direction of the engine (twists, rays,
+// normals, edge directions). Exact; O(1) gcds. v must be nonzero: a zero vector has no direction, every
+// caller knows its v ≠ 0 or tests it first, so a zero v is a bug and throws std::logic_error.
+std::array<Integer, 3> primitive(std::array<Integer, 3> v);
+std::array<Integer, 3> primitive(const std::array<Rational, 3>& v);
+std::array<Integer, 2> primitive(const Rational& x, const Rational& y);
 
 }  // namespace wrenchkit

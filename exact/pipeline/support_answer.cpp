@@ -1,6 +1,9 @@
 #include "exact/pipeline/support_answer.h"
 
+#include <algorithm>
+
 #include "exact/io/streaming_scene_reader.h"
+#include "exact/io/support_check.h"
 #include "exact/io/to_float.h"
 
 namespace wrenchkit {
@@ -69,14 +72,135 @@ void answer_sliding(const Support_query& q, Support_item& r) {
   r.sliding = compute_sliding(r.model.emplace(merge_support(*r.scene.support), make_directions(q.sides)), q.twist);
 }
 
+// Some force not given: the admissible set, its vertices, and the power range of the twist over it.
+void answer_unknown(std::string_view source, const Support_query& q, Support_item& r) {
+  const Support& s = *r.scene.support;
+  r.admissible = admissible_set(r.scene);
+  r.pressure_center = *pressure_center_of(r.scene);
+  if (r.mode == Mode::float_only)
+    throw Undecided_error("the float twin has no LP over the admissible distributions (the forces of " +
+                          std::to_string(r.admissible->unknown.size()) + " support point(s) are not given)");
+  if (r.admissible->unknown.size() <= kMaxEnumeratedUnknowns) r.vertices = vertices(s, *r.admissible);
+  if (q.twist) r.power = power_range(s, *r.admissible, *q.twist);
+  if (q.question == Support_question::limit_surface && q.load) {
+    if (r.admissible->unknown.size() > kMaxEnumeratedUnknowns)
+      throw Input_error(std::string(source) + ": support: " + std::to_string(r.admissible->unknown.size()) +
+                        " forces are not given: stick or slide over every admissible distribution enumerates the "
+                        "extreme ones, at most " + std::to_string(kMaxEnumeratedUnknowns) + " unknown forces");
+    r.motion_over = decide_motion_over(s, *r.admissible, *q.load, r.mode, q.sides);
+  }
+}
+
+Vec3q rational_twist(const std::array<double, 3>& w) { return {Rational(w[0]), Rational(w[1]), Rational(w[2])}; }
+
+// Twists that may prove "slides" for the distribution f: the certified search's witness, else the outward
+// normals of LS_out at the load (its normal cone's generators).
+std::vector<Vec3q> slide_candidates(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
+                                    const Motion_decision& d, int sides, const Polygonal_ls::Normal_cone* cone) {
+  std::vector<Vec3q> c;
+  if (std::string(d.decided_by) == "float") c.push_back(rational_twist(d.witness));
+  std::optional<Polygonal_ls::Normal_cone> built;
+  if (!cone && std::string(d.decided_by) != "float") {
+    const Polygonal_ls model(merge_support(s, &f), make_directions(sides));
+    const Ls_polytope out = model.build(Side::outer);
+    cone = &built.emplace(model.normal_cone(out, Side::outer, p));
+  }
+  if (cone)
+    for (const Vec3z& g : cone->generators) c.push_back({Rational(g[0]), Rational(g[1]), Rational(g[2])});
+  return c;
+}
+
+std::optional<Slide_witness> first_slide_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
+                                                 const std::vector<Vec3q>& candidates) {
+  for (const Vec3q& q : candidates)
+    if (auto w = slide_witness(s, f, p, q)) return w;
+  return std::nullopt;
+}
+
+// [SL-4] The certificate of a known distribution's motion.
+void certify_known(const Support_query& q, Support_item& r) {
+  const Support& s = *r.scene.support;
+  const Admissible a = admissible_set(r.scene);
+  const Vec3q& p = *q.load;
+  if (r.motion.motion == Motion::sticks) {
+    if (auto w = stick_witness_refined(s, a, p, std::max(q.sides, 8), a.given)) r.certificate = sticks_certificate(p, *w);
+  } else if (r.motion.motion == Motion::slides) {
+    const bool cone = !r.cone_out.generators.empty() || !r.cone_out.lineality.empty();
+    const auto c = slide_candidates(s, a.given, p, r.motion, q.sides, cone ? &r.cone_out : nullptr);
+    if (auto w = first_slide_witness(s, a.given, p, c)) r.certificate = slides_certificate(p, *w);
+  }
+  if (r.motion.motion != Motion::undecided && r.certificate.empty()) {
+    r.uncertified = std::string("the certified search says ") + motion_name(r.motion.motion) +
+                    ", but no rational witness was found (the load is within the inscribed 1024-gons' resolution "
+                    "of the limit surface)";
+    r.motion.motion = Motion::undecided;
+  }
+}
+
+// [SL-4] The certificate of a motion over every admissible distribution.
+void certify_over(const Support_query& q, Support_item& r) {
+  const Support& s = *r.scene.support;
+  const Admissible& a = *r.admissible;
+  Motion_over_f& m = *r.motion_over;
+  const Vec3q& p = *q.load;
+  const int sides = std::max(q.sides, 8);
+  if (m.motion == Motion_over::sticks) {
+    std::vector<Stick_witness> ws;
+    for (const auto& f : r.vertices) {
+      auto w = stick_witness_refined(s, a, p, sides, f);
+      if (!w) break;
+      ws.push_back(std::move(*w));
+    }
+    if (ws.size() == r.vertices.size()) r.certificate = sticks_for_every_certificate(p, ws);
+  } else if (m.motion == Motion_over::slides) {
+    const Vec3q& t = *m.separating_twist;
+    const std::vector<Rational> u = speed_bounds(s, t);
+    std::vector<Rational> coef(s.points.size());
+    for (std::size_t i = 0; i < coef.size(); ++i) {
+      const Support_point& pt = s.points[i];
+      coef[i] = (pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0))) * u[i];
+    }
+    const F_optimum o = maximise_over(s, a, coef);
+    if (t[0] * p[0] + t[1] * p[1] + t[2] * p[2] > o.value) r.certificate = slides_for_every_certificate(p, t, u, o.dual);
+  } else if (m.motion == Motion_over::depends) {
+    std::optional<Stick_witness> sticking = m.sticking;
+    if (!sticking) sticking = stick_witness_refined(s, a, p, sides, r.vertices[*m.sticking_vertex]);
+    const std::vector<Rational>& f = r.vertices[*m.sliding_vertex];
+    const auto sliding = first_slide_witness(s, f, p, slide_candidates(s, f, p, m.decisions[*m.sliding_vertex], sides, nullptr));
+    if (sticking && sliding) r.certificate = depends_certificate(p, *sticking, *sliding);
+  }
+  if (m.motion != Motion_over::undecided && r.certificate.empty()) {
+    r.uncertified = std::string("the answer is ") + motion_over_name(m.motion) +
+                    ", but no rational witness was found (the load is within the inscribed 1024-gons' resolution "
+                    "of a limit surface)";
+    m.motion = Motion_over::undecided;
+  }
+}
+
 void answer(std::string_view source, const Request& request, const Support_query& q, Support_item& r) {
   r.mode = request.mode;
   const bool ls = q.question == Support_question::limit_surface;
   if (!r.scene.support)
     throw Input_error(std::string(source) + ": support: the scene has no \"support\" (" +
                       (ls ? "limit-surface" : "sliding") + " needs one)");
-  if (ls) answer_limit_surface(q, r);
-  else answer_sliding(q, r);
+  if (!r.scene.support->known()) {
+    answer_unknown(source, q, r);
+    if (r.motion_over) certify_over(q, r);
+  } else {
+    if (ls) answer_limit_surface(q, r);
+    else answer_sliding(q, r);
+    if (ls && q.load) certify_known(q, r);
+  }
+}
+
+// The independent checker on the motion's certificate (Status::check_failed if it ever rejects it).
+void check_motion(std::string_view text, const Request& request, Support_item& r) {
+  if (r.certificate.empty()) return;
+  std::string why = check_certificates(text, {r.certificate}, request);
+  if (!why.empty()) {
+    r.status = Status::check_failed;
+    r.message = std::move(why);
+  }
 }
 
 }  // namespace
@@ -87,16 +211,18 @@ Support_item answer_support(std::string_view text, std::string_view source, cons
   guarded(item, [&] {
     read_scene_into(item.scene, text, request.limits, source, false);
     answer(source, request, query, item);
+    check_motion(text, request, item);
   });
   return item;
 }
 
-Support_item answer_support(const Scene& scene, std::string_view source, const Request& request,
+Support_item answer_support(const Scene& scene, std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query) {
   Support_item item;
   guarded(item, [&] {
     item.scene = scene;
     answer(source, request, query, item);
+    check_motion(text, request, item);
   });
   return item;
 }

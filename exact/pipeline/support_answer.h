@@ -18,8 +18,11 @@
 #include <vector>
 
 #include "exact/pipeline/pipeline.h"
+#include "exact/sliding/distribution.h"
 #include "exact/sliding/limit_surface.h"
+#include "exact/sliding/motion_certificate.h"
 #include "exact/sliding/sliding.h"
+#include "exact/sliding/unknown_motion.h"
 #include "float/limit_surface_twin.h"
 
 namespace wrenchkit {
@@ -54,14 +57,32 @@ struct Support_item {
   fl::Point2 twin_center_of_friction;
   fl::Bounded twin_mu_f0;
   std::optional<fl::Bounded> twin_power_inner, twin_power_outer;  // with a twist
+  // An unknown distribution (a point's force not given; docs/theory-sliding.md §1–§2): the admissible set,
+  // its extreme distributions and, with a twist, the range of the power over it (exact, every mode but
+  // float, which has no twin of the LP over F and answers undecided).
+  std::optional<Admissible> admissible;
+  std::vector<std::vector<Rational>> vertices;
+  std::optional<Power_range> power;
+  Vec2 pressure_center;
+  std::optional<Motion_over_f> motion_over;  // limit-surface with a load
+  // limit-surface with a load: the certificate of its motion (proofs/certificate-format.md §6), checked by the
+  // independent checker; empty when undecided. A verdict for which no rational witness was found (a load
+  // within the inscribed 1024-gons' resolution of the limit surface) is undecided, with `uncertified` saying so.
+  std::string certificate;
+  std::string uncertified;
 };
 
 // Reads `text` (eagerly) and answers; never throws. A scene without a support is bad input; so is a
 // limit surface whose candidate normals exceed kMaxCandidates (the polytopes are not built then).
+// An unknown distribution: `sliding` (and `limit-surface --twist`) answers the power range over F and the
+// extreme distributions; `limit-surface --load` whether the load sticks for every admissible distribution,
+// slides for every one, or depends (exact/sliding/unknown_motion.h), with its witnesses. The polytopes
+// depend on the distribution and are not built.
 Support_item answer_support(std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query);
 // The same for a scene already read.
-Support_item answer_support(const Scene& scene, std::string_view source, const Request& request,
+// `text`: a text of the scene for the checker (its own text, or write_scene(scene)).
+Support_item answer_support(const Scene& scene, std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query);
 
 }  // namespace wrenchkit

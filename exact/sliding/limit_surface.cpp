@@ -21,27 +21,8 @@ Integer lcm_of(const Integer& a, const Integer& b) {
   return r;
 }
 
-Vec2z primitive2(const Rational& x, const Rational& y) {
-  const Integer d = lcm_of(x.get_den(), y.get_den());
-  Integer a = x.get_num() * (d / x.get_den()), b = y.get_num() * (d / y.get_den());
-  Integer g;
-  mpz_gcd(g.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
-  if (g != 0) {
-    a /= g;
-    b /= g;
-  }
-  return {a, b};
-}
-
-void make_primitive(Vec3z& v) {
-  Integer g;
-  mpz_gcd(g.get_mpz_t(), v[0].get_mpz_t(), v[1].get_mpz_t());
-  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), v[2].get_mpz_t());
-  if (g > 1)
-    for (auto& c : v) mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t());
-}
-
 bool is_zero(const Vec3z& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+bool is_zero(const Vec3q& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
 
 Vec3z neg(const Vec3z& v) { return {-v[0], -v[1], -v[2]}; }
 
@@ -101,14 +82,6 @@ Vec2 unit_of(const Rational& t) {  // u(t) of theory.md §12.1
 
 }  // namespace
 
-Vec3z primitive(const Vec3q& v) {
-  Integer d = lcm_of(lcm_of(v[0].get_den(), v[1].get_den()), v[2].get_den());
-  Vec3z r;
-  for (int i = 0; i < 3; ++i) r[i] = v[i].get_num() * (d / v[i].get_den());
-  make_primitive(r);
-  return r;
-}
-
 Vec3q to_rational(const Vec3z& v) { return {Rational(v[0]), Rational(v[1]), Rational(v[2])}; }
 
 const char* side_name(Side s) { return s == Side::inner ? "inner" : "outer"; }
@@ -126,24 +99,29 @@ Motion classify_load(const std::optional<Rational>& gi, const std::optional<Rati
 // ---------------------------------------------------------------------------------------------
 // Support
 
-Ls_support merge_support(const Support& s) {
+Ls_support merge_support(const Support& s, const std::vector<Rational>* distribution) {
+  if (distribution && distribution->size() != s.points.size())
+    throw std::invalid_argument("merge_support: a distribution of another size");
   Ls_support r;
   std::map<std::pair<Rational, Rational>, std::size_t> where;
-  for (const Support_point& p : s.points) {
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Support_point& p = s.points[i];
+    if (!distribution && !p.force) throw std::invalid_argument("merge_support: a force is unknown; give a distribution");
+    const Rational& force = distribution ? (*distribution)[i] : *p.force;
     const Rational mu = p.mu ? *p.mu : (s.mu ? *s.mu : Rational(0));
-    r.total_force += p.force;
-    r.weighted_force_sum.x += p.force * p.at.x;
-    r.weighted_force_sum.y += p.force * p.at.y;
-    const Rational rho = mu * p.force;
+    r.total_force += force;
+    r.weighted_force_sum.x += force * p.at.x;
+    r.weighted_force_sum.y += force * p.at.y;
+    const Rational rho = mu * force;
     if (rho == 0) continue;
     const auto key = std::make_pair(p.at.x, p.at.y);
     const auto it = where.find(key);
     if (it != where.end()) {
       r.points[it->second].rho += rho;
-      r.points[it->second].force += p.force;
+      r.points[it->second].force += force;
     } else {
       where.emplace(key, r.points.size());
-      r.points.push_back({p.at, rho, p.force});
+      r.points.push_back({p.at, rho, force});
     }
   }
   if (r.points.size() >= 2) {
@@ -162,50 +140,39 @@ Ls_support merge_support(const Support& s) {
 // [LS-1] Directions
 
 Directions make_directions(int n) {
-  if (n < 4 || n % 2 != 0 || n > kMaxSides)
-    throw std::invalid_argument("make_directions: n must be even, 4 <= n <= " + std::to_string(kMaxSides));
-  const int half = n / 2;
-  const double pi = 3.14159265358979323846;
-  for (long den = 32L * n;; den *= 2) {
-    Directions d;
-    d.n = n;
-    d.t.assign(half, Rational(0));
-    std::vector<Vec2> up(half);
-    for (int j = 0; j < half; ++j) {
-      const int mirror = half - 1 - j;
-      if (mirror < j) break;
-      if (mirror == j) {  // φ = π/2 exactly: t = 1
-        d.t[j] = 1;
-        up[j] = {Rational(0), Rational(1)};
-        break;
-      }
-      const double phi = 2 * pi * (j + 0.5) / n;  // in (0, π/2): t in (0, 1)
-      const double tj = std::round(std::tan(phi / 2) * static_cast<double>(den));
-      Rational t(static_cast<long>(std::max(1.0, tj)), den);
-      t.canonicalize();
-      d.t[j] = t;
-      up[j] = unit_of(t);
-      up[mirror] = {-up[j].x, up[j].y};  // reflection in the y-axis: u(1/t)
-      d.t[mirror] = 1 / t;
-    }
-    d.u.resize(n);
-    for (int j = 0; j < half; ++j) {
-      d.u[j] = up[j];
-      d.u[j + half] = {-up[j].x, -up[j].y};
-    }
-    bool ok = true;
-    Rational cmin = 2;
-    for (int j = 0; j < n && ok; ++j) {
-      const Vec2& a = d.u[j];
-      const Vec2& b = d.u[(j + 1) % n];
-      ok = a.x * b.y - a.y * b.x > 0;
-      const Rational c = a.x * b.x + a.y * b.y;
-      if (c < cmin) cmin = c;
-    }
-    if (!ok) continue;  // rounding merged two directions: a finer denominator
-    d.lambda_sq = (1 + cmin) / 2;
-    return d;
+  const Direction_parameters p = direction_parameters(n);  // the rule shared with the twin
+  const int half = n / 2, q = static_cast<int>(p.a.size());
+  Directions d;
+  d.n = n;
+  d.t.assign(half, Rational(0));
+  std::vector<Vec2> up(half);
+  for (int j = 0; j < q; ++j) {
+    Rational t(static_cast<long>(p.a[j]), static_cast<long>(p.den));
+    t.canonicalize();
+    d.t[j] = t;
+    up[j] = unit_of(t);
+    up[half - 1 - j] = {-up[j].x, up[j].y};  // reflection in the y-axis: u(1/t)
+    d.t[half - 1 - j] = 1 / t;
   }
+  if (p.middle) {  // φ = π/2 exactly: t = 1
+    d.t[q] = 1;
+    up[q] = {Rational(0), Rational(1)};
+  }
+  d.u.resize(n);
+  for (int j = 0; j < half; ++j) {
+    d.u[j] = up[j];
+    d.u[j + half] = {-up[j].x, -up[j].y};
+  }
+  Rational cmin = 2;
+  for (int j = 0; j < n; ++j) {
+    const Vec2& a = d.u[j];
+    const Vec2& b = d.u[(j + 1) % n];
+    if (a.x * b.y - a.y * b.x <= 0) throw std::logic_error("make_directions: directions not counter-clockwise");
+    const Rational c = a.x * b.x + a.y * b.y;
+    if (c < cmin) cmin = c;
+  }
+  d.lambda_sq = (1 + cmin) / 2;
+  return d;
 }
 
 int smallest_sides(const Rational& eps, int max_sides, int* built) {
@@ -244,11 +211,11 @@ Polygonal_ls::Polygonal_ls(Ls_support s, Directions d) : s_(std::move(s)), d_(st
       const Vec2& b = d_.u[(j + 1) % n];
       if (side == Side::inner) {
         t.p[j] = a;
-        t.nrm[j] = primitive2(a.x + b.x, a.y + b.y);
+        t.nrm[j] = primitive(a.x + b.x, a.y + b.y);  // ≠ 0: the gap is < π
       } else {
         const Rational k = 1 + a.x * b.x + a.y * b.y;
         t.p[j] = {(a.x + b.x) / k, (a.y + b.y) / k};
-        t.nrm[j] = primitive2(b.x, b.y);
+        t.nrm[j] = primitive(b.x, b.y);
       }
     }
     // Rational vertices ρ_i A_i(P[j]), then one common denominator L.
@@ -273,8 +240,7 @@ Polygonal_ls::Polygonal_ls(Ls_support s, Directions d) : s_(std::move(s)), d_(st
         for (int c = 0; c < 3; ++c) pt.vert[j][c] = vq[i][j][c].get_num() * (L / vq[i][j][c].get_den());
         // Edge j runs P[j] → P[j+1], direction rot90(nrm[j]) = (−n_y, n_x); A_i of it, times D_i.
         const Integer dx = -t.nrm[j][1], dy = t.nrm[j][0];
-        pt.edir[j] = {dx * den_[i], dy * den_[i], num_[i][0] * dy - num_[i][1] * dx};
-        make_primitive(pt.edir[j]);
+        pt.edir[j] = primitive(Vec3z{dx * den_[i], dy * den_[i], num_[i][0] * dy - num_[i][1] * dx});
       }
     }
   }
@@ -410,8 +376,8 @@ Vec3z Polygonal_ls::tuple_point(const Side_tab& t, const std::vector<std::uint16
 
 Rational Polygonal_ls::support_value(Side side, const Vec3q& q) const {
   const Side_tab& t = tab(side);
+  if (is_zero(q) || s_.points.empty()) return 0;
   const Vec3z qz = primitive(q);
-  if (is_zero(qz) || s_.points.empty()) return 0;
   std::vector<int> kind, idx;
   point_faces(t, qz, kind, idx);
   Vec3z x = {Integer(0), Integer(0), Integer(0)};
@@ -423,8 +389,8 @@ Rational Polygonal_ls::support_value(Side side, const Vec3q& q) const {
 
 Ls_face Polygonal_ls::face(Side side, const Vec3q& q) const {
   const Side_tab& t = tab(side);
+  if (is_zero(q)) throw std::invalid_argument("limit surface face: zero twist");
   const Vec3z qz = primitive(q);
-  if (is_zero(qz)) throw std::invalid_argument("limit surface face: zero twist");
   Ls_face f;
   if (s_.points.empty()) {
     f.vertices.push_back({Rational(0), Rational(0), Rational(0)});
@@ -462,8 +428,7 @@ Ls_polytope Polygonal_ls::build(Side side) const {
   if (k == 1) {  // a flat polygon in the plane ν·x = 0: its two sides
     P.dimension = 2;
     for (int j = 0; j < n; ++j) P.vertices.push_back(to_q(t.pts[0].vert[j]));
-    Vec3z nu = {num_[0][1], -num_[0][0], den_[0]};
-    make_primitive(nu);
+    const Vec3z nu = primitive(Vec3z{num_[0][1], -num_[0][0], den_[0]});
     Ls_facet up{nu, Rational(0), {}, 0}, down{neg(nu), Rational(0), {}, 0};
     for (int j = 0; j < n; ++j) {
       up.vertices.push_back(j);
@@ -479,8 +444,8 @@ Ls_polytope Polygonal_ls::build(Side side) const {
   // Candidates with the sign fixed (first nonzero coordinate positive); −q is handled by symmetry.
   std::vector<Vec3z> cand;
   cand.reserve(static_cast<std::size_t>(candidate_count() / 2 + 1));
-  auto canon = [](Vec3z v) {
-    make_primitive(v);
+  auto canon = [](Vec3z v) {  // v ≠ 0
+    v = primitive(std::move(v));
     const int s = v[0] != 0 ? sgn(v[0]) : (v[1] != 0 ? sgn(v[1]) : sgn(v[2]));
     return s < 0 ? neg(v) : v;
   };
@@ -573,7 +538,7 @@ Polygonal_ls::Normal_cone Polygonal_ls::normal_cone(const Ls_polytope& P, Side s
   }
   if (P.dimension == 2) {
     const Ls_point& pt = s_.points[0];
-    Vec3z nu = primitive({pt.at.y, -pt.at.x, Rational(1)});
+    const Vec3z nu = primitive(Vec3q{pt.at.y, -pt.at.x, Rational(1)});
     const Rational s = pt.at.y * p[0] - pt.at.x * p[1] + p[2];
     if (!g) {  // off the plane: rotation about the point, in the sense of the load's moment about it
       c.generators.push_back(s > 0 ? nu : neg(nu));

@@ -5,8 +5,9 @@
 // Wrenches are (fx, fy, m) with m about the origin; twists (vx, vy, w), counter-clockwise positive.
 //
 // [LS-1] Directions. n (even, 4 ≤ n ≤ kMaxSides) rational unit vectors u_j = u(t_j) (§12.1), sorted
-//   counter-clockwise, centrally symmetric; t_j is a rational approximation of tan(φ_j/2) chosen with
-//   doubles (a CHOICE only); the certificate λ² = (1 + min_j u_j·u_{j+1})/2 is computed exactly from the
+//   counter-clockwise, centrally symmetric; t_j = a_j/den is a rational approximation of tan(φ_j/2) chosen
+//   with doubles (a CHOICE only) by core/limit_surface_directions.h, the rule the float twin shares (so its
+//   polygons are these); the certificate λ² = (1 + min_j u_j·u_{j+1})/2 is computed exactly from the
 //   rationals afterwards. Inner polygon conv{u_j}; outer polygon: the tangents at the u_j (§12.2).
 // [LS-2] Polytopes. LS_in/out = ⊕_i A_{r_i}(ρ_i P_in/out) (§12.3), built exactly by candidate normals
 //   (§12.4): ±ν_{r_i} and ±(A_{r_i} e × A_{r_j} g) over edge directions e, g. Because every polygon is
@@ -27,12 +28,12 @@
 #include <string>
 #include <vector>
 
+#include "core/limit_surface_directions.h"
 #include "exact/numbers/rational.h"
 #include "exact/io/scene.h"
 
 namespace wrenchkit {
 
-constexpr int kMaxSides = 4096;
 // Refuse to build polytopes with more candidate normals than this (a clear error, not a hang or an
 // unbounded allocation; measured ~2.6 kB per candidate for both polytopes).
 constexpr std::uint64_t kMaxCandidates = 400000;  // ≈ 1 GB (10 points, N = 128: 368 660)
@@ -52,7 +53,9 @@ struct Ls_support {
   Vec2 weighted_force_sum; // Σ f_{n,i} r_i (all input points)
   bool collinear = false;  // ≥ 2 points, all on one line
 };
-Ls_support merge_support(const Support& s);
+// `distribution`: the normal forces to use, one per support point (a distribution of docs/theory-sliding.md
+// §1); without it every force must be given (std::invalid_argument otherwise).
+Ls_support merge_support(const Support& s, const std::vector<Rational>* distribution = nullptr);
 
 // [LS-1]
 struct Directions {
@@ -150,8 +153,6 @@ class Polygonal_ls {
   Side_tab in_, out_;
 };
 
-// Primitive integer multiple (positive factor) of a rational vector; zero stays zero.
-Vec3z primitive(const Vec3q& v);
 Vec3q to_rational(const Vec3z& v);
 
 // [LS-3] The motion for a quasistatic load p: sticks iff p is in the interior of LS (relative

@@ -32,9 +32,8 @@ class Measuring_kernel {
  public:
   Measuring_kernel(const std::vector<Vec3>& rows, std::size_t n) : n_(n) {
     for (const Vec3& r : rows) {
-      const Rational in[3] = {r[0], r[1], r[2]};
       std::array<Integer, 3> z;
-      if (sgn(r[0]) != 0 || sgn(r[1]) != 0 || sgn(r[2]) != 0) primitive(in, z.data());  // else the zero row
+      if (sgn(r[0]) != 0 || sgn(r[1]) != 0 || sgn(r[2]) != 0) z = primitive(r);  // else the zero row
       rows_.push_back(z);
       const Integer sq = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
       const Big_double b = big(sq);

@@ -28,19 +28,12 @@ Int3 cross3(const Int3& a, const Int3& b) {
   return {Integer(a[1] * b[2] - a[2] * b[1]), Integer(a[2] * b[0] - a[0] * b[2]), Integer(a[0] * b[1] - a[1] * b[0])};
 }
 
-// The primitive integer vector positively parallel to v ≠ 0, as certificate rationals.
-std::array<Rational, 3> primitive_twist(Int3 v) {
-  Integer g = 0;
-  for (const Integer& x : v) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), x.get_mpz_t());
-  if (g == 0) throw std::logic_error("primitive_twist: zero vector");
-  for (Integer& x : v) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
-  return {Rational(v[0]), Rational(v[1]), Rational(v[2])};
-}
+std::array<Rational, 3> as_rationals(const Int3& v) { return {Rational(v[0]), Rational(v[1]), Rational(v[2])}; }
 
 }  // namespace
 
 std::array<Rational, 3> twist_of_ray(const Exact_kernel& k, std::size_t a, std::size_t b) {
-  return primitive_twist(cross3(k.row(a), k.row(b)));
+  return as_rationals(primitive(cross3(k.row(a), k.row(b))));
 }
 
 namespace {
@@ -57,7 +50,7 @@ std::array<Rational, 3> negative_twist(const Dual_cone& dc, const Exact_kernel& 
         Int3 e{Integer(0), Integer(0), Integer(0)};
         e[static_cast<std::size_t>(axis)] = 1;
         const Int3 t = cross3(g, e);
-        if (t[0] != 0 || t[1] != 0 || t[2] != 0) return primitive_twist(t);
+        if (t[0] != 0 || t[1] != 0 || t[2] != 0) return as_rationals(primitive(t));
       }
       break;
     }
@@ -171,10 +164,8 @@ Twist_reading read_twist(const std::array<Rational, 3>& t) {
     r.label = w > 0 ? '+' : '-';
     r.point = {-t[1] / w, t[0] / w};
   } else if (t[0] != 0 || t[1] != 0) {
-    const Rational in[3] = {-t[1], t[0], 0};
-    Integer out[3];
-    primitive(in, out);
-    r.point = {Rational(out[0]), Rational(out[1])};
+    const std::array<Integer, 2> d = primitive(-t[1], t[0]);
+    r.point = {Rational(d[0]), Rational(d[1])};
   }
   return r;
 }

@@ -66,7 +66,8 @@ Closure_answer decide_closure(const Scene& scene, Property property, Mode mode =
                               bool certify = true);
 
 // [FC-5] Certificate parts from the integer rows of an exact kernel built With_provenance (also
-// used by equilibrium): the primitive twist positively parallel to row_a × row_b, and the positive
+// used by equilibrium): the primitive twist positively parallel to row_a × row_b (rows not parallel, else
+// std::logic_error), and the positive
 // certificate [FC-2] from generators H with pos(H) = R³ (weights on the unscaled generators,
 // coprime integers). Throws std::logic_error if pos(H) ≠ R³ (a bug of the caller).
 std::array<Rational, 3> twist_of_ray(const Exact_kernel& k, std::size_t a, std::size_t b);

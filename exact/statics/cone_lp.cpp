@@ -264,17 +264,12 @@ Integer_cone_membership phase1(const std::vector<std::array<typename P::E, 3>>& 
     return out;
   }
   // Optimal with value > 0: y = c_B B⁻¹ = Y / det B; z = −(flip ∘ y), scaled by |det B| > 0.
-  Integer z[3], gcd = 0;
-  for (int r = 0; r < 3; ++r) {
+  std::array<Integer, 3> z;
+  for (std::size_t r = 0; r < 3; ++r) {
     z[r] = P::integer(Y[r]);
     if ((flip[r] > 0) == (sdet > 0)) z[r] = -z[r];
-    mpz_gcd(gcd.get_mpz_t(), gcd.get_mpz_t(), z[r].get_mpz_t());
   }
-  if (gcd == 0) throw std::logic_error("cone_membership: zero Farkas twist (impossible)");
-  for (int r = 0; r < 3; ++r) {
-    mpz_divexact(z[r].get_mpz_t(), z[r].get_mpz_t(), gcd.get_mpz_t());
-    out.twist[static_cast<std::size_t>(r)] = z[r];
-  }
+  out.twist = primitive(std::move(z));  // ≠ 0 (a Farkas twist); zero would be a logic_error
   return out;
 }
 

@@ -30,18 +30,6 @@ std::vector<Generator> generators(const Scene& scene, Reading reading) {
   return out;
 }
 
-void primitive(const Rational in[3], Integer out[3]) {
-  Integer l = 1;
-  for (int c = 0; c < 3; ++c) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), in[c].get_den_mpz_t());
-  Integer g = 0;
-  for (int c = 0; c < 3; ++c) {
-    out[c] = in[c].get_num() * (l / in[c].get_den());
-    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), out[c].get_mpz_t());
-  }
-  if (g == 0) throw std::invalid_argument("primitive: zero vector");
-  for (int c = 0; c < 3; ++c) mpz_divexact(out[c].get_mpz_t(), out[c].get_mpz_t(), g.get_mpz_t());
-}
-
 Vec3 as_vec(const Wrench& w) { return {w.fx, w.fy, w.m}; }
 
 Vec3 cross(const Vec3& a, const Vec3& b) {
@@ -49,10 +37,8 @@ Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 
 Vec3 primitive_vec(const Vec3& v) {
-  const Rational in[3] = {v[0], v[1], v[2]};
-  Integer out[3];
-  primitive(in, out);
-  return {Rational(out[0]), Rational(out[1]), Rational(out[2])};
+  const std::array<Integer, 3> z = primitive(v);
+  return {Rational(z[0]), Rational(z[1]), Rational(z[2])};
 }
 
 namespace {

@@ -99,13 +99,11 @@ class Exact_kernel {
 // The number of generators of generators(scene, reading), without building them.
 std::size_t generator_count(const Scene& scene, Reading reading);
 
-// The primitive integer vector positively parallel to a nonzero rational 3-vector.
-void primitive(const Rational in[3], Integer out[3]);
-
 using Vec3 = std::array<Rational, 3>;
 Vec3 as_vec(const Wrench& w);
 Vec3 cross(const Vec3& a, const Vec3& b);
-// `primitive` for a Vec3, as rationals (how twists are written in certificates).
+// primitive(v) of exact/numbers/rational.h (v ≠ 0, else std::logic_error), as rationals: how twists and rays
+// are written in answers and certificates.
 Vec3 primitive_vec(const Vec3& v);
 
 }  // namespace wrenchkit

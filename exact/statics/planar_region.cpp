@@ -148,10 +148,8 @@ bool Region::full_dimensional() const {
 }
 
 Vec2 primitive2(const Rational& x, const Rational& y) {
-  const Rational in[3] = {x, y, Rational(0)};
-  Integer out[3];
-  primitive(in, out);
-  return {Rational(out[0]), Rational(out[1])};
+  const std::array<Integer, 2> d = primitive(x, y);
+  return {Rational(d[0]), Rational(d[1])};
 }
 
 Cone2 cone_hull(const std::vector<Vec2>& dirs) {

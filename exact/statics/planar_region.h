@@ -14,6 +14,8 @@
 //
 // Everything is exact rational arithmetic; no square root, no division by a quantity that may be
 // zero, no perturbation: degenerate regions (a point, a segment, a line, …) are ordinary answers.
+// The float twin slices only pointed cones by a walk of their cycle (float/labels_twin.h); why there are
+// two slicings and which test ties them: proofs/notes/LB-5-slicing-twins.md.
 #pragma once
 
 #include <string>
@@ -73,7 +75,7 @@ Region slice_front(const std::vector<Vec3>& gens, bool cyclic_pointed);
 Cone2 slice_infinity(const std::vector<Vec3>& gens, bool cyclic_pointed);
 std::vector<Vec3> negated(std::vector<Vec3> gens);
 
-// The primitive integer vector positively parallel to a nonzero rational 2-vector.
+// primitive(x, y) of exact/numbers/rational.h ((x, y) ≠ 0, else std::logic_error), as a rational Vec2.
 Vec2 primitive2(const Rational& x, const Rational& y);
 
 // JSON (docs/cli.md, REGION): a REGION {"empty", "shape", "vertices", "directions"}; the labeled points

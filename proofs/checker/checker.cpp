@@ -1,11 +1,12 @@
 // proofs/checker/checker.cpp - certificate format v1: reading the scene, recomputing its generators
 // and its load, and the conditions of proofs/certificate-format.md §3.1 (holds = true), §3.2
-// (holds = false) and §3.3 (equilibrium).
+// (holds = false), §3.3 (equilibrium) and §6 (motion: sliding on the support, [SL-1]).
 #include "proofs/checker/checker.h"
 
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <exception>
 #include <map>
@@ -372,14 +373,208 @@ Load read_load(Reader& r, const Limits& lim) {
   return load;
 }
 
+// The scene's support (docs/scene-format.md; the unknown distribution of docs/theory-sliding.md §1).
+// Each point's numbers are kept as text, and as values when they are small, as for contacts.
+struct Support_point {
+  bool known = false;             // "force" given
+  std::vector<std::string> text;  // x, y, mu (its own or support.mu), force ("" if unknown)
+  std::vector<Q> value;           // the same values, or empty (some number is not small)
+};
+struct Point_values {
+  Q x, y, mu, f;  // f = 0 if unknown
+};
+Point_values values(const Support_point& p, const Limits& lim) {
+  if (!p.value.empty()) return {p.value[0], p.value[1], p.value[2], p.value[3]};
+  auto q = [&](std::size_t k) { return p.text[k].empty() ? Q(0) : scene_number(p.text[k], lim, "support"); };
+  return {q(0), q(1), q(2), q(3)};  // valid: read before
+}
+
+struct Support {
+  bool present = false;
+  std::vector<Support_point> points;
+  std::size_t unknown = 0;  // points without a given force
+  bool has_weight = false, has_center = false;
+  Q weight, center[2];      // as written (support.weight, support.pressure_center)
+  // The admissible set F = {f >= 0 : f_i = given where given, sum f = W, sum f r = W c} (theory-sliding
+  // §1): with unknown forces, W = weight and c = pressure_center or body.com, and the unknown forces
+  // must carry rest_weight = W - sum_known f_i with moment rest_moment = W c - sum_known f_i r_i.
+  Q W, c[2], rest_weight, rest_moment[2];
+};
+
+// {"mu"?, "weight"?, "pressure_center"?, "points": [{"at": [x, y], "force"?: f, "mu"?: mu}, ...]}
+// (docs/scene-format.md). Every number is read exactly and checked: forces, weights and mu >= 0.
+Support read_support(Reader& r, const Limits& lim) {
+  if (r.peek() != Kind::object) r.fail("expected an object");
+  r.begin_object();
+  Support s;
+  s.present = true;
+  bool has_mu = false, has_points = false;
+  std::string mu_text, key;
+  struct Raw {
+    std::vector<std::string> text;
+    std::vector<Q> value;
+    bool has_mu = false, positive = false;  // positive: a given force > 0
+    std::string path;
+  };
+  std::vector<Raw> raw;  // points, before support.mu (which may follow) is known
+  while (r.next_key(key)) {
+    if (key == "mu") {
+      if (read_number(r, lim, &mu_text) < 0) r.fail(quote(mu_text) + " is negative");
+      has_mu = true;
+    } else if (key == "weight") {
+      std::string text;
+      s.weight = read_number(r, lim, &text);
+      if (s.weight <= 0) r.fail(quote(text) + " is not positive (a weight must be > 0)");
+      s.has_weight = true;
+    } else if (key == "pressure_center") {
+      read_vector(r, lim, 2, s.center);
+      s.has_center = true;
+    } else if (key == "points") {
+      has_points = true;
+      if (r.peek() != Kind::array) r.fail("expected an array");
+      r.begin_array();
+      while (r.next_item()) {
+        if (raw.size() == lim.max_contacts)
+          throw Failure{"support.points: more than " + std::to_string(lim.max_contacts) + " points"};
+        Raw p;
+        p.path = r.path();
+        if (r.peek() != Kind::object) r.fail("expected an object {\"at\", \"force\"?, \"mu\"?}");
+        r.begin_object();
+        std::string point_key, at[2], mu, force;
+        Q at_value[2], mu_value, force_value;
+        bool has_at = false, has_force = false;
+        while (r.next_key(point_key)) {
+          if (point_key == "at") {
+            read_fixed(r, 2, numbers_text(2), [&](std::size_t k) { at_value[k] = read_number(r, lim, &at[k]); });
+            has_at = true;
+          } else if (point_key == "force") {
+            force_value = read_number(r, lim, &force);
+            if (force_value < 0) r.fail(quote(force) + " is negative");
+            has_force = true;
+          } else if (point_key == "mu") {
+            mu_value = read_number(r, lim, &mu);
+            if (mu_value < 0) r.fail(quote(mu) + " is negative");
+            p.has_mu = true;
+          } else {
+            r.fail("unknown key " + quote(point_key), true);
+          }
+        }
+        if (!has_at) r.fail("missing required key \"at\"");
+        p.text = {std::move(at[0]), std::move(at[1]), std::move(mu), has_force ? std::move(force) : std::string()};
+        p.value = kept({at_value[0], at_value[1], mu_value, force_value});  // mu 0 until support.mu is known
+        p.positive = has_force && force_value > 0;
+        raw.push_back(std::move(p));
+      }
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  if (!has_points) r.fail("missing required key \"points\"");
+  if (raw.empty()) throw Failure{"support.points: empty (a support needs at least one point)"};
+  const Q support_mu = has_mu ? scene_number(mu_text, lim, "support.mu") : Q(0);
+  bool any_force = false;
+  for (Raw& p : raw) {
+    if (!p.has_mu && !has_mu) throw Failure{p.path + ": missing key \"mu\" (and support.mu gives no default)"};
+    if (!p.has_mu) {
+      p.text[2] = mu_text;
+      if (!p.value.empty()) p.value[2] = support_mu;
+      if (!small(support_mu)) p.value.clear();
+    }
+    Support_point sp;
+    sp.known = !p.text[3].empty();
+    any_force = any_force || p.positive;
+    s.unknown += sp.known ? 0 : 1;
+    sp.text = std::move(p.text);
+    sp.value = std::move(p.value);
+    s.points.push_back(std::move(sp));
+  }
+  if (s.unknown == 0 && !any_force) throw Failure{"support.points: all forces are zero"};
+  return s;
+}
+
+// The distribution's condition of F once the whole scene is read (body.com may follow support): W and
+// c, and an empty F reported in words. F is not empty iff rest_weight >= 0 and the point
+// rest_moment / rest_weight lies in the convex hull of the points without a given force (or
+// rest_weight = 0 and rest_moment = 0, when they all carry nothing).
+void settle_support(Support& s, bool has_com, const Q (&com)[2], const Limits& lim) {
+  Q sum = 0, moment[2] = {0, 0};
+  for (const Support_point& p : s.points) {
+    if (!p.known) continue;
+    const Point_values v = values(p, lim);
+    sum += v.f, moment[0] += v.f * v.x, moment[1] += v.f * v.y;
+  }
+  if (s.unknown == 0) {  // a known distribution: weight and pressure_center, if given, must agree
+    s.W = s.has_weight ? s.weight : sum;
+    if (s.has_weight && s.weight != sum)
+      throw Failure{"support.weight: " + show(s.weight) + " is not the sum " + show(sum) + " of the given forces"};
+    if (s.has_center && (s.W * s.center[0] != moment[0] || s.W * s.center[1] != moment[1]))
+      throw Failure{"support.pressure_center: " + show(s.center[0], s.center[1]) +
+                    " is not the centre of pressure " + show(moment[0] / sum, moment[1] / sum) +
+                    " of the given forces"};
+    return;
+  }
+  if (!s.has_weight) throw Failure{"support: missing key \"weight\" (required when a point has no \"force\")"};
+  if (!s.has_center && !has_com)
+    throw Failure{"support: missing key \"pressure_center\" (required when a point has no \"force\" and body.com "
+                  "is not given)"};
+  s.W = s.weight;
+  for (int k = 0; k < 2; ++k) s.c[k] = s.has_center ? s.center[k] : com[k];
+  s.rest_weight = s.W - sum;
+  for (int k = 0; k < 2; ++k) s.rest_moment[k] = s.W * s.c[k] - moment[k];
+  const std::string none = "support: no admissible distribution: ";
+  if (s.rest_weight < 0)
+    throw Failure{none + "the given forces sum to " + show(sum) + ", more than support.weight " + show(s.W)};
+  if (s.rest_weight == 0) {
+    if (s.rest_moment[0] != 0 || s.rest_moment[1] != 0)
+      throw Failure{none + "the given forces carry the whole weight " + show(s.W) + ", but their centre of pressure " +
+                    show(moment[0] / sum, moment[1] / sum) + " is not the centre of pressure " + show(s.c[0], s.c[1])};
+    return;
+  }
+  // Is 0 in the convex hull of d_i = rest_weight r_i - rest_moment (i unknown)? Equivalently: do the
+  // d_i fail to fit in an open half-plane? One pass keeps the smallest cone [R, L] (counter-clockwise
+  // from R to L, angle < pi) holding every d_i so far; a d_i that cannot join it with an angle < pi
+  // (or d_i = 0) puts 0 in the hull (separation: 0 outside a compact convex set means an open
+  // half-plane holds it). Only signs of cross and dot products: exact, no angles.
+  auto cross = [](const Q(&a)[2], const Q(&b)[2]) { return sgn(Q(a[0] * b[1] - a[1] * b[0])); };
+  auto dot = [](const Q(&a)[2], const Q(&b)[2]) { return sgn(Q(a[0] * b[0] + a[1] * b[1])); };
+  bool inside = false, started = false;
+  Q R[2], L[2];
+  for (std::size_t i = 0; i < s.points.size() && !inside; ++i) {
+    if (s.points[i].known) continue;
+    const Point_values v = values(s.points[i], lim);
+    const Q d[2] = {s.rest_weight * v.x - s.rest_moment[0], s.rest_weight * v.y - s.rest_moment[1]};
+    if (d[0] == 0 && d[1] == 0) {
+      inside = true;
+    } else if (!started) {
+      started = true, R[0] = L[0] = d[0], R[1] = L[1] = d[1];
+    } else if ((cross(R, d) == 0 && dot(R, d) < 0) || (cross(L, d) == 0 && dot(L, d) < 0)) {
+      inside = true;  // opposite to a direction held: 0 on the segment between them
+    } else if (cross(R, d) < 0) {  // clockwise of R: R moves to d if the cone stays below pi
+      if (cross(d, L) > 0) R[0] = d[0], R[1] = d[1];
+      else inside = true;
+    } else if (cross(d, L) < 0) {  // counter-clockwise of L
+      if (cross(R, d) > 0) L[0] = d[0], L[1] = d[1];
+      else inside = true;
+    }  // else d is in the cone already
+  }
+  if (inside) return;
+  const Q cx = s.rest_moment[0] / s.rest_weight, cy = s.rest_moment[1] / s.rest_weight;
+  if (s.unknown == s.points.size())
+    throw Failure{none + "the centre of pressure " + show(cx, cy) +
+                  " is outside the convex hull of the support points (the body would tip over)"};
+  throw Failure{none + "the points without a given force must carry the remaining weight " + show(s.rest_weight) +
+                " with its centre at " + show(cx, cy) + ", which is outside their convex hull"};
+}
+
 struct Scene {
   std::vector<Contact> contacts;
   bool has_load = false;
   Wrench load;  // w_ext (certificate-format.md §3.3), if has_load
+  Support support;
 };
 
-// The top-level scene object. support is not used by the checker: only its type (object) and its
-// JSON well-formedness are checked. body is read for body.com, load for w_ext.
+// The top-level scene object. body is read for body.com, load for w_ext, support for the sliding
+// certificates (§6); an empty admissible set F is a bad scene.
 Scene read_scene(Reader& r, const Limits& lim) {
   Scene scene;
   if (r.peek() != Kind::object) r.fail("a scene must be a JSON object");
@@ -399,8 +594,7 @@ Scene read_scene(Reader& r, const Limits& lim) {
     } else if (key == "load") {
       load = read_load(r, lim);
     } else if (key == "support") {
-      if (r.peek() != Kind::object) r.fail("expected an object");
-      r.skip();
+      scene.support = read_support(r, lim);
     } else if (key == "contacts") {
       if (r.peek() != Kind::array) r.fail("expected an array");
       r.begin_array();
@@ -414,6 +608,7 @@ Scene read_scene(Reader& r, const Limits& lim) {
     }
   }
   if (!has_version) r.fail("missing required key \"wrenchkit\"");
+  if (scene.support.present) settle_support(scene.support, has_com, com, lim);
   // w_ext (theory.md §9): W(p, f) = (fx, fy, x*fy - y*fx); gravity w at com is W(com, (0, -w)) = (0, -w, -w*com_x)
   scene.has_load = load.form != Load::Form::none;
   switch (load.form) {
@@ -519,15 +714,34 @@ struct Term {
   std::string weight_text;
   Q weight;
 };
+using Pair = std::array<Q, 2>;
+// A stick witness {"distribution", "support_forces"} or a slide witness {"distribution", "twist",
+// "speed_bounds"} (§6.2).
+struct Witness {
+  std::string path;
+  std::vector<Q> distribution;
+  std::vector<Pair> forces;  // support_forces
+  Q twist[3];
+  std::vector<Q> speeds;  // speed_bounds
+};
 struct Certificate {
   std::set<std::string> keys;  // the keys present
+  std::string property;
   Reading reading = Reading::friction;
   bool equilibrium = false;  // property "equilibrium" (§3.3), read with friction
+  bool motion = false;       // property "motion" (§6)
   bool holds = false;
   std::vector<Term> combination;
   std::vector<Ref> independent;
   Q twist[3], where[2];  // where: reading.point or reading.direction
   std::string label;     // reading.label
+  // property "motion"
+  std::string claim;  // "sticks", "slides" or "depends"
+  Q load[3], dual[3];
+  std::vector<Pair> support_forces;
+  std::vector<Q> speed_bounds;
+  std::vector<Witness> vertices;
+  Witness sticking, sliding;
 };
 
 Q read_rational(Reader& r, std::string* text = nullptr) {
@@ -577,6 +791,57 @@ Term read_term(Reader& r, bool weighted) {
   return t;
 }
 
+// An array of rationals, of any length.
+std::vector<Q> read_rationals(Reader& r) {
+  if (r.peek() != Kind::array) r.fail("expected an array of rationals");
+  r.begin_array();
+  std::vector<Q> out;
+  while (r.next_item()) out.push_back(read_rational(r));
+  return out;
+}
+// An array of [x, y] pairs of rationals.
+std::vector<Pair> read_pairs(Reader& r) {
+  if (r.peek() != Kind::array) r.fail("expected an array of [gx, gy] pairs of rationals");
+  r.begin_array();
+  std::vector<Pair> out;
+  while (r.next_item()) {
+    out.emplace_back();
+    read_fixed(r, 2, "an array of two rationals [gx, gy]", [&](std::size_t k) { out.back()[k] = read_rational(r); });
+  }
+  return out;
+}
+
+// A stick witness {"distribution", "support_forces"} or (slide) a slide witness {"distribution",
+// "twist", "speed_bounds"}: exactly these keys.
+Witness read_witness(Reader& r, bool slide) {
+  Witness w;
+  w.path = r.path();
+  const char* const what = slide ? "expected an object {\"distribution\", \"twist\", \"speed_bounds\"}"
+                                 : "expected an object {\"distribution\", \"support_forces\"}";
+  if (r.peek() != Kind::object) r.fail(what);
+  r.begin_object();
+  std::set<std::string> keys;
+  std::string key;
+  while (r.next_key(key)) {
+    keys.insert(key);
+    if (key == "distribution") {
+      w.distribution = read_rationals(r);
+    } else if (key == "support_forces" && !slide) {
+      w.forces = read_pairs(r);
+    } else if (key == "twist" && slide) {
+      read_fixed(r, 3, "an array of three rationals [vx, vy, w]", [&](std::size_t k) { w.twist[k] = read_rational(r); });
+    } else if (key == "speed_bounds" && slide) {
+      w.speeds = read_rationals(r);
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  for (const char* k : slide ? std::vector<const char*>{"distribution", "twist", "speed_bounds"}
+                             : std::vector<const char*>{"distribution", "support_forces"})
+    if (!keys.count(k)) r.fail(std::string("missing required key \"") + k + "\"");
+  return w;
+}
+
 // {"label": "+" | "-", "point": [x, y]} or {"label": "infinity", "direction": [dx, dy]}
 void read_reading(Reader& r, Certificate& c) {
   if (r.peek() != Kind::object) r.fail("expected an object {\"label\", \"point\"} or {\"label\", \"direction\"}");
@@ -616,10 +881,12 @@ Certificate read_certificate(Reader& r) {
       if (r.peek() != Kind::number || r.number() != "1") r.fail("expected the integer 1");
     } else if (key == "property") {
       const std::string p = r.peek() == Kind::string ? r.string() : "";
-      if (p != "force_closure" && p != "form_closure" && p != "equilibrium")
-        r.fail("expected \"force_closure\", \"form_closure\" or \"equilibrium\"");
+      if (p != "force_closure" && p != "form_closure" && p != "equilibrium" && p != "motion")
+        r.fail("expected \"force_closure\", \"form_closure\", \"equilibrium\" or \"motion\"");
+      c.property = p;
       c.reading = p == "form_closure" ? Reading::frictionless : Reading::friction;
       c.equilibrium = p == "equilibrium";
+      c.motion = p == "motion";
     } else if (key == "holds") {
       if (r.peek() != Kind::boolean) r.fail("expected true or false");
       c.holds = r.boolean();
@@ -638,6 +905,26 @@ Certificate read_certificate(Reader& r) {
                  [&](std::size_t k) { c.twist[k] = read_rational(r); });
     } else if (key == "reading") {
       read_reading(r, c);
+    } else if (key == "load") {
+      read_fixed(r, 3, "an array of three rationals [fx, fy, m]", [&](std::size_t k) { c.load[k] = read_rational(r); });
+    } else if (key == "motion") {
+      c.claim = r.peek() == Kind::string ? r.string() : "";
+      if (c.claim != "sticks" && c.claim != "slides" && c.claim != "depends")
+        r.fail("expected \"sticks\", \"slides\" or \"depends\"");
+    } else if (key == "support_forces") {
+      c.support_forces = read_pairs(r);
+    } else if (key == "speed_bounds") {
+      c.speed_bounds = read_rationals(r);
+    } else if (key == "dual") {
+      read_fixed(r, 3, "an array of three rationals [y0, yx, yy]", [&](std::size_t k) { c.dual[k] = read_rational(r); });
+    } else if (key == "vertices") {
+      if (r.peek() != Kind::array) r.fail("expected an array of {\"distribution\", \"support_forces\"}");
+      r.begin_array();
+      while (r.next_item()) c.vertices.push_back(read_witness(r, false));
+    } else if (key == "sticking") {
+      c.sticking = read_witness(r, false);
+    } else if (key == "sliding") {
+      c.sliding = read_witness(r, true);
     } else {
       r.fail("unknown key " + quote(key), true);
     }
@@ -661,7 +948,12 @@ void check_keys(const Certificate& c) {
     if (c.keys.count("independent"))
       throw Failure{"key \"independent\" is not allowed when \"property\" is \"equilibrium\""};
   };
-  need("wrenchkit_certificate"), need("property"), need("holds");
+  need("wrenchkit_certificate"), need("property");
+  if (c.motion) return;  // check_motion() decides, knowing the scene's support
+  for (const char* key : {"load", "motion", "support_forces", "speed_bounds", "dual", "vertices", "sticking", "sliding"})
+    if (c.keys.count(key))
+      throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is " + quote(c.property)};
+  need("holds");
   if (c.holds) {
     need("combination");
     if (c.equilibrium)
@@ -803,6 +1095,238 @@ void check_negative(const Certificate& c, const std::vector<Contact>& contacts, 
   }
 }
 
+// ---------------------------------------------------------------------------------------------
+// Sliding certificates (certificate-format.md §6; docs/theory-sliding.md §2-§3; proofs/notes/SL-1)
+
+// "(a, b, c, ...)" for a message, at most 8 entries shown.
+std::string show_list(const std::vector<Q>& v) {
+  std::string s = "(";
+  for (std::size_t i = 0; i < v.size() && i < 8; ++i) s += (i ? ", " : "") + show(v[i]);
+  if (v.size() > 8) s += ", ... (" + std::to_string(v.size()) + " entries)";
+  return s + ")";
+}
+std::string point_name(std::size_t i) { return "support.points[" + std::to_string(i) + "]"; }
+
+class Motion_check {
+ public:
+  Motion_check(const Certificate& c, const Support& s, const Limits& lim) : c_(c), s_(s), lim_(lim) {}
+
+  void run() {
+    const bool known = s_.unknown == 0;
+    if (c_.claim == "depends" && known)
+      throw Failure{"motion: \"depends\" needs a support with an unknown distribution (every force is given)"};
+    std::set<std::string> allowed;
+    if (c_.claim == "sticks") allowed = known ? std::set<std::string>{"support_forces"} : std::set<std::string>{"vertices"};
+    if (c_.claim == "slides")
+      allowed = known ? std::set<std::string>{"twist", "speed_bounds"} : std::set<std::string>{"twist", "speed_bounds", "dual"};
+    if (c_.claim == "depends") allowed = {"sticking", "sliding"};
+    const char* const keys[] = {"support_forces", "twist", "speed_bounds", "dual", "vertices", "sticking", "sliding"};
+    for (const char* key : keys)
+      if (!allowed.count(key) && c_.keys.count(key))
+        throw Failure{std::string("key \"") + key + "\" is not allowed when \"motion\" is " + quote(c_.claim) +
+                      (known ? " and every support force is given" : " and some support force is unknown")};
+    for (const char* key : keys)
+      if (allowed.count(key) && !c_.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
+    if (c_.claim == "sticks" && known) return stick(given(), c_.support_forces, "support_forces");
+    if (c_.claim == "slides" && known) return slide(given(), c_.twist, c_.speed_bounds, "", nullptr);
+    if (c_.claim == "slides") return slide(given(), c_.twist, c_.speed_bounds, "", c_.dual);
+    if (c_.claim == "depends") {
+      in_f(c_.sticking.distribution, c_.sticking.path + ".distribution");
+      stick(c_.sticking.distribution, c_.sticking.forces, c_.sticking.path + ".support_forces");
+      in_f(c_.sliding.distribution, c_.sliding.path + ".distribution");
+      return slide(c_.sliding.distribution, c_.sliding.twist, c_.sliding.speeds, c_.sliding.path + ".", nullptr);
+    }
+    sticks_for_every();
+  }
+
+ private:
+  // The scene's forces (0 where unknown).
+  std::vector<Q> given() const {
+    std::vector<Q> f;
+    for (const Support_point& p : s_.points) f.push_back(values(p, lim_).f);
+    return f;
+  }
+
+  // f is in F: one entry per point, f >= 0, f_i the given force where given, sum f = W, sum f r = W c.
+  void in_f(const std::vector<Q>& f, const std::string& path) const {
+    size(f.size(), path);
+    Q sum = 0, moment[2] = {0, 0};
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const Point_values v = values(s_.points[i], lim_);
+      const std::string at = path + "[" + std::to_string(i) + "]: ";
+      if (sgn(f[i]) < 0) throw Failure{at + show(f[i]) + " is negative"};
+      if (s_.points[i].known && f[i] != v.f)
+        throw Failure{at + show(f[i]) + " is not the given force " + show(v.f) + " of " + point_name(i)};
+      sum += f[i], moment[0] += f[i] * v.x, moment[1] += f[i] * v.y;
+    }
+    if (sum != s_.W) throw Failure{path + ": the forces sum to " + show(sum) + ", not the weight " + show(s_.W)};
+    const Q wc[2] = {s_.W * s_.c[0], s_.W * s_.c[1]};
+    if (moment[0] != wc[0] || moment[1] != wc[1])
+      throw Failure{path + ": sum f_i r_i is " + show(moment[0], moment[1]) + ", not W c = " + show(wc[0], wc[1]) +
+                    " (the centre of pressure is not " + show(s_.c[0], s_.c[1]) + ")"};
+  }
+
+  void size(std::size_t n, const std::string& path) const {
+    if (n != s_.points.size())
+      throw Failure{path + ": " + std::to_string(n) + " entries, but the support has " +
+                    std::to_string(s_.points.size()) + " points"};
+  }
+
+  // Sticks under f (theory-sliding §3): |g_i|^2 <= (mu_i f_i)^2 and sum (g_i, r_i x g_i) = p.
+  void stick(const std::vector<Q>& f, const std::vector<Pair>& g, const std::string& path) const {
+    size(g.size(), path);
+    Q sum[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      const Point_values v = values(s_.points[i], lim_);
+      const Q lhs = g[i][0] * g[i][0] + g[i][1] * g[i][1], bound = v.mu * f[i];
+      if (lhs > bound * bound)
+        throw Failure{path + "[" + std::to_string(i) + "]: |g|^2 = " + show(lhs) + " is more than (mu f)^2 = " +
+                      show(Q(bound * bound))};
+      sum[0] += g[i][0], sum[1] += g[i][1], sum[2] += v.x * g[i][1] - v.y * g[i][0];
+    }
+    if (sum[0] != c_.load[0] || sum[1] != c_.load[1] || sum[2] != c_.load[2])
+      throw Failure{path + ": the support forces give the load (" + show(sum[0]) + ", " + show(sum[1]) + ", " +
+                    show(sum[2]) + "), not (" + show(c_.load[0]) + ", " + show(c_.load[1]) + ", " +
+                    show(c_.load[2]) + ")"};
+  }
+
+  // Slides (theory-sliding §3): u_i >= 0, u_i^2 >= |v_i(q)|^2 and q.p > a bound on the frictional
+  // power h_f(q) = sum mu_i f_i |v_i(q)|: sum mu_i f_i u_i for the distribution f, or, with a dual
+  // (every f in F), sum_known mu_i f_i u_i + y0 W' + yx M'x + yy M'y where mu_i u_i <= y0 + y.r_i for
+  // every unknown i.
+  void slide(const std::vector<Q>& f, const Q (&q)[3], const std::vector<Q>& u, const std::string& prefix,
+             const Q* dual) const {
+    const std::string path = prefix + "speed_bounds";
+    size(u.size(), path);
+    Q bound = 0;
+    for (std::size_t i = 0; i < u.size(); ++i) {
+      const Point_values v = values(s_.points[i], lim_);
+      const std::string at = path + "[" + std::to_string(i) + "]: ";
+      if (sgn(u[i]) < 0) throw Failure{at + show(u[i]) + " is negative"};
+      const Q vx = q[0] - q[2] * v.y, vy = q[1] + q[2] * v.x, speed2 = vx * vx + vy * vy;
+      if (u[i] * u[i] < speed2)
+        throw Failure{at + "u^2 = " + show(Q(u[i] * u[i])) + " is less than |v_i(q)|^2 = " + show(speed2)};
+      const Q mu_u = v.mu * u[i];
+      if (!dual || s_.points[i].known) {
+        bound += mu_u * f[i];
+      } else if (mu_u > dual[0] + dual[1] * v.x + dual[2] * v.y) {
+        throw Failure{"dual: mu_i u_i = " + show(mu_u) + " is more than y0 + yx x_i + yy y_i = " +
+                      show(Q(dual[0] + dual[1] * v.x + dual[2] * v.y)) + " at " + point_name(i)};
+      }
+    }
+    if (dual) bound += dual[0] * s_.rest_weight + dual[1] * s_.rest_moment[0] + dual[2] * s_.rest_moment[1];
+    const Q power = q[0] * c_.load[0] + q[1] * c_.load[1] + q[2] * c_.load[2];
+    if (!(power > bound))
+      throw Failure{prefix + "twist: power q.p = " + show(power) + " is not more than " +
+                    (dual ? "the dual bound " : "sum mu_i f_i u_i = ") + show(bound)};
+  }
+
+  // Sticks for every f in F: every witness is in F and sticks, and every vertex of F is the
+  // distribution of a witness. The vertices are the basic feasible solutions of the three rows
+  // (1, x_i, y_i) over the unknown forces (SL-1 §3): a vertex's support S (its positive unknown
+  // forces) has linearly independent columns, so |S| <= 3 and the vertex is the unique solution on S.
+  void sticks_for_every() const {
+    // Each witness is checked; its unknown support (when at most 3 points) names the vertex it can be.
+    std::map<std::vector<std::size_t>, std::size_t> by_support;
+    for (std::size_t w = 0; w < c_.vertices.size(); ++w) {
+      const Witness& v = c_.vertices[w];
+      in_f(v.distribution, v.path + ".distribution");
+      stick(v.distribution, v.forces, v.path + ".support_forces");
+      std::vector<std::size_t> support;
+      for (std::size_t i = 0; i < v.distribution.size() && support.size() <= 3; ++i)
+        if (!s_.points[i].known && sgn(v.distribution[i]) > 0) support.push_back(i);
+      if (support.size() <= 3) by_support.emplace(support, w);
+    }
+    std::vector<std::size_t> unknown;  // indices of the points without a given force
+    for (std::size_t i = 0; i < s_.points.size(); ++i)
+      if (!s_.points[i].known) unknown.push_back(i);
+    const unsigned long long n = unknown.size();
+    const unsigned long long bases =  // no overflow: n is at most max_contacts, capped here at 10^6
+        n > 1000000 ? ULLONG_MAX : n + n * (n - 1) / 2 + n * (n - 1) * (n - 2) / 6;
+    if (bases > lim_.max_vertex_bases)
+      throw Failure{"vertices: too large to check: " + std::to_string(n) + " points without a given force give " +
+                    std::to_string(bases) + " candidate bases (limit " + std::to_string(lim_.max_vertex_bases) + ")"};
+    const std::vector<Q> base = given();
+    // A vertex with unknown support S and values x_S: it must be some witness's distribution.
+    auto covered = [&](const std::vector<std::size_t>& S, const std::vector<Q>& x) {
+      std::vector<Q> f = base;
+      for (std::size_t k = 0; k < S.size(); ++k) f[S[k]] = x[k];
+      const auto at = by_support.find(S);
+      if (at == by_support.end() || c_.vertices[at->second].distribution != f)
+        throw Failure{"vertices: the vertex " + show_list(f) + " of the admissible distributions has no witness"};
+    };
+    if (s_.rest_weight == 0) return covered({}, {});  // F = {given forces, 0 elsewhere}: one vertex
+    // Integer columns a_i = D_i (1, x_i, y_i) and b = B (W', M'): positive scalings, so the signs of
+    // the solutions are those of the true ones (x_i = D_i x'_i / B).
+    std::vector<std::array<Z, 3>> a;
+    std::vector<Point_values> pt;
+    for (const std::size_t i : unknown) {
+      pt.push_back(values(s_.points[i], lim_));
+      const Q &x = pt.back().x, &y = pt.back().y;
+      a.push_back({Z(x.get_den() * y.get_den()), Z(x.get_num() * y.get_den()), Z(y.get_num() * x.get_den())});
+    }
+    const Int_wrench bw = integer_form(s_.rest_weight, s_.rest_moment[0], s_.rest_moment[1]);
+    const Z(&b)[3] = bw.v;
+    auto cross = [](const std::array<Z, 3>& u, const std::array<Z, 3>& v) {
+      return std::array<Z, 3>{Z(u[1] * v[2] - u[2] * v[1]), Z(u[2] * v[0] - u[0] * v[2]), Z(u[0] * v[1] - u[1] * v[0])};
+    };
+    auto dot_b = [&b](const std::array<Z, 3>& v) { return Z(b[0] * v[0] + b[1] * v[1] + b[2] * v[2]); };
+    const Q cx = s_.rest_moment[0] / s_.rest_weight, cy = s_.rest_moment[1] / s_.rest_weight;  // c' = M'/W'
+    // |S| = 1: r_i = c', x_i = W'.
+    for (std::size_t p = 0; p < n; ++p)
+      if (pt[p].x == cx && pt[p].y == cy) covered({unknown[p]}, {s_.rest_weight});
+    // |S| = 2: r_i != r_j and c' strictly between them: b . (a_i x a_j) = 0 (b in their span) and the
+    // two coordinates of b in the basis have the sign of |a_i x a_j|^2 > 0.
+    std::vector<std::vector<std::array<Z, 3>>> c(n, std::vector<std::array<Z, 3>>(n));  // c[i][j] = a_i x a_j, i < j
+    std::vector<std::vector<Z>> beta(n, std::vector<Z>(n));                               // b . c[i][j]
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) {
+        c[i][j] = cross(a[i], a[j]), beta[i][j] = dot_b(c[i][j]);
+        if (c[i][j][0] == 0 && c[i][j][1] == 0 && c[i][j][2] == 0) continue;  // coincident points
+        if (beta[i][j] != 0) continue;
+        const std::array<Z, 3> bz{b[0], b[1], b[2]};
+        if (sgn(Z(dot3(cross(bz, a[j]), c[i][j]))) <= 0 || sgn(Z(dot3(cross(a[i], bz), c[i][j]))) <= 0) continue;
+        // t = x_j: (c' - r_i) = t/W' (r_j - r_i), read on the larger coordinate difference
+        const Q dx = pt[j].x - pt[i].x, dy = pt[j].y - pt[i].y;
+        const Q t = dx != 0 ? Q(s_.rest_weight * (cx - pt[i].x) / dx) : Q(s_.rest_weight * (cy - pt[i].y) / dy);
+        covered({unknown[i], unknown[j]}, {Q(s_.rest_weight - t), t});
+      }
+    // |S| = 3: D = det[a_i a_j a_k] = a_i . (a_j x a_k) != 0; by Cramer the coordinates of b are
+    // (b.(a_j x a_k), b.(a_k x a_i), b.(a_i x a_j)) / D, all > 0.
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        for (std::size_t k = j + 1; k < n; ++k) {
+          const Z D = dot3(a[i], c[j][k]);
+          const int sd = sgn(D);
+          if (sd == 0 || sgn(beta[j][k]) != sd || -sgn(beta[i][k]) != sd || sgn(beta[i][j]) != sd) continue;
+          const Z B = bw.d;
+          auto value = [&](std::size_t p, const Z& num) {  // x_p = D_p (num / D) / B
+            Q x(Z(a[p][0] * num), Z(D * B));
+            x.canonicalize();
+            return x;
+          };
+          covered({unknown[i], unknown[j], unknown[k]},
+                  {value(i, beta[j][k]), value(j, Z(-beta[i][k])), value(k, beta[i][j])});
+        }
+  }
+
+  static Z dot3(const std::array<Z, 3>& u, const std::array<Z, 3>& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
+
+  const Certificate& c_;
+  const Support& s_;
+  const Limits& lim_;
+};
+
+// Property "motion" (§6).
+void check_motion(const Certificate& c, const Scene& scene, const Limits& lim) {
+  for (const char* key : {"load", "motion"})
+    if (!c.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
+  for (const char* key : {"holds", "combination", "independent", "reading"})
+    if (c.keys.count(key)) throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is \"motion\""};
+  if (!scene.support.present) throw Failure{"property: \"motion\" needs a scene with a support"};
+  Motion_check(c, scene.support, lim).run();
+}
+
 // The certificate against an already read scene.
 Result check_certificate(const Scene& scene, std::string_view certificate_json, const Limits& limits) {
   try {
@@ -810,6 +1334,10 @@ Result check_certificate(const Scene& scene, std::string_view certificate_json, 
     const Certificate c = read_certificate(r);
     r.finish();
     check_keys(c);
+    if (c.motion) {
+      check_motion(c, scene, limits);
+      return {Outcome::accepted, "accepted"};
+    }
     if (c.equilibrium && !scene.has_load) throw Failure{"property: \"equilibrium\" needs a scene with a load"};
     const Wrench* load = c.equilibrium ? &scene.load : nullptr;
     if (c.holds)

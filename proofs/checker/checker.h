@@ -10,7 +10,13 @@
 //     a wrench, or gravity at body.com), with the friction generators: holds = true when strictly
 //     positive weights of distinct generators (possibly none) sum to -w_ext; holds = false when a
 //     twist has non-negative power against every generator and positive power against w_ext. A
-//     scene without a load has no equilibrium claim: such a certificate is rejected.
+//     scene without a load has no equilibrium claim: such a certificate is rejected;
+//   * property "motion" (certificate-format.md §6, proofs/notes/SL-1), about a load p applied to the
+//     scene's support: "sticks" (rational support forces inside their friction discs that carry p),
+//     "slides" (a twist and rational speed bounds whose power bound p beats), for the scene's known
+//     distribution or for every admissible distribution F (a stick witness for every vertex of F,
+//     which the checker enumerates itself; an LP dual bound for slides), or "depends" (one admissible
+//     distribution sticks, another slides). An empty F is a bad scene, with the reason.
 // Every generator, and the load, is recomputed from the scene text; the certificate supplies only
 // indices and rationals. All arithmetic is exact (GMP rationals); there is no floating point.
 //
@@ -35,7 +41,11 @@ struct Limits {
   std::size_t max_digits = 10000;  // digits of a scene number's text (exponent included) and of its value written out
   long max_exponent = 10000;       // |exponent| of a scene number
   std::size_t max_depth = 64;      // JSON containers nested in one another
-  std::size_t max_contacts = 100000;
+  std::size_t max_contacts = 100000;  // also the limit on support.points
+  // Sliding certificates that claim "sticks" for every admissible distribution (certificate-format.md
+  // §6): the checker enumerates the vertices of F itself, over n + C(n,2) + C(n,3) candidate bases for
+  // n points without a given force, and rejects a larger certificate as too large to check.
+  unsigned long long max_vertex_bases = 2000000;
 };
 
 enum class Outcome {

@@ -109,6 +109,20 @@ SCENES = {
             {"wrench": [-1, -1, -1]},
         ],
     },
+    # Sliding (certificate-format.md section 6): the four-legged table of theory-sliding.md section 6,
+    # every leg's force unknown, and a barbell whose two forces are given.
+    "table_four_legs": {
+        "wrenchkit": 1,
+        "name": "four-legged table, legs (+-1,+-1), mu = 1, W = 1, every leg force unknown (theory-sliding.md 6)",
+        "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "com": [0, 0]},
+        "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0],
+                    "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]},
+    },
+    "barbell_known": {
+        "wrenchkit": 1,
+        "name": "barbell, forces 1/2 at (0,-1) and (0,1), mu = 1/2 (a known distribution)",
+        "support": {"mu": "1/2", "points": [{"at": [0, -1], "force": "1/2"}, {"at": [0, 1], "force": 0.5}]},
+    },
 }
 
 # ----------------------------------------------------------------------------------------------
@@ -140,6 +154,37 @@ def negative(prop, twist, reading=None):
     if reading is not None:
         cert["reading"] = reading
     return cert
+
+
+def motion(claim, load, **rest):
+    """A sliding certificate (certificate-format.md section 6): load p = (fx, fy, m) as rationals."""
+    return dict({"wrenchkit_certificate": 1, "property": "motion", "load": [str(F(v)) for v in load],
+                 "motion": claim}, **rest)
+
+
+def stick_witness(distribution, forces):
+    return {"distribution": distribution, "support_forces": forces}
+
+
+def slide_witness(distribution, twist, speeds):
+    return {"distribution": distribution, "twist": twist, "speed_bounds": speeds}
+
+
+# The table (legs (1,1), (-1,1), (-1,-1), (1,-1), mu = W = 1, c = 0): F's vertices are the two diagonal
+# barbells (1/2, 0, 1/2, 0) and (0, 1/2, 0, 1/2).
+TABLE_STICKS = motion("sticks", [F(1, 2), 0, 0], vertices=[  # g = (1/4, 0) at both legs of the diagonal
+    stick_witness(["1/2", "0", "1/2", "0"], [["1/4", "0"], ["0", "0"], ["1/4", "0"], ["0", "0"]]),
+    stick_witness(["0", "1/2", "0", "1/2"], [["0", "0"], ["1/4", "0"], ["0", "0"], ["1/4", "0"]])])
+# q = (1, 0, 0): every speed is 1; mu_i u_i = 1 <= y0 = 1, so the frictional power is at most W = 1 < 3/2.
+TABLE_SLIDES = motion("slides", [F(3, 2), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1", "1", "1"],
+                      dual=["1", "0", "0"])
+# (1/2, 1/2, 9/10): on the diagonal (1,1)-(-1,-1) it sticks with g = (1/40, 19/40) and (19/40, 1/40) (sum
+# (1/2, 1/2), moment 9/10, |g|^2 = 181/800 <= 1/4); on the other it slides: q = (1, 1, 1) has speeds
+# 2, 0, 2, 2 sqrt 2 <= 17/6, and power 19/10 > (1/2) 17/6 = 17/12 (found by a small exact search over integer twists).
+TABLE_DEPENDS = motion("depends", [F(1, 2), F(1, 2), F(9, 10)],
+                       sticking=stick_witness(["1/2", "0", "1/2", "0"],
+                                              [["1/40", "19/40"], ["0", "0"], ["19/40", "1/40"], ["0", "0"]]),
+                       sliding=slide_witness(["0", "1/2", "0", "1/2"], ["1", "1", "1"], ["2", "0", "2", "17/6"]))
 
 
 SQUARE = comb((0, "normal", "1"), (1, "normal", "1"), (2, "normal", "1"), (3, "normal", "1"))
@@ -274,12 +319,38 @@ CERTS = [
     ("wrench_generators", "normal_edge_on_wrench", 'invalid:reference|combination[0].edge: contacts[0] has no edge "normal" under the friction reading (it has "wrench")',
      positive("force_closure", comb((0, "normal", "1"), (1, "wrench", "1"), (2, "wrench", "1"), (3, "wrench", "1")),
               WRENCHES_IND)),
+
+    # sliding (certificate-format.md section 6)
+    ("table_four_legs", "sticks_for_every", "valid", TABLE_STICKS),
+    ("table_four_legs", "slides_for_every", "valid", TABLE_SLIDES),
+    ("table_four_legs", "depends", "valid", TABLE_DEPENDS),
+    ("barbell_known", "sticks", "valid", motion("sticks", [F(1, 4), 0, 0], support_forces=[["1/8", "0"], ["1/8", "0"]])),
+    ("barbell_known", "slides", "valid", motion("slides", [1, 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1"])),
+    ("table_four_legs", "force_outside_disc", "invalid:stick|vertices[1].support_forces[1]: |g|^2 = 5/16 is more than (mu f)^2 = 1/4",
+     dict(TABLE_STICKS, vertices=[TABLE_STICKS["vertices"][0],
+                                  stick_witness(["0", "1/2", "0", "1/2"], [["0", "0"], ["-1/4", "1/2"], ["0", "0"], ["3/4", "-1/2"]])])),
+    ("table_four_legs", "missing_vertex", "invalid:vertex|vertices: the vertex (0, 1/2, 0, 1/2) of the admissible distributions has no witness",
+     dict(TABLE_STICKS, vertices=TABLE_STICKS["vertices"][:1])),
+    ("table_four_legs", "distribution_outside_F", "invalid:F|sticking.distribution: sum f_i r_i is (1, 0), not W c = (0, 0)",
+     dict(TABLE_DEPENDS, sticking=stick_witness(["1/2", "0", "0", "1/2"], TABLE_DEPENDS["sticking"]["support_forces"]))),
+    ("table_four_legs", "speed_bound_too_small", "invalid:speed|speed_bounds[3]: u^2 = 9801/10000 is less than |v_i(q)|^2 = 1",
+     dict(TABLE_SLIDES, speed_bounds=["1", "1", "1", "99/100"])),
+    ("table_four_legs", "dual_violated", "invalid:dual|dual: mu_i u_i = 1 is more than y0 + yx x_i + yy y_i = 9/10 at support.points[0]",
+     dict(TABLE_SLIDES, dual=["9/10", "0", "0"])),
+    ("table_four_legs", "slides_without_dual", 'invalid:keys|missing required key "dual"',
+     {k: v for k, v in TABLE_SLIDES.items() if k != "dual"}),
+    ("barbell_known", "power_not_strict", "invalid:power|twist: power q.p = 1/2 is not more than sum mu_i f_i u_i = 1/2",
+     motion("slides", [F(1, 2), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1"])),
+    ("barbell_known", "depends_on_known", 'invalid:depends known|motion: "depends" needs a support with an unknown distribution',
+     dict(motion("depends", [F(1, 2), F(1, 2), F(9, 10)]), sticking=TABLE_DEPENDS["sticking"], sliding=TABLE_DEPENDS["sliding"])),
+    ("barbell_known", "vertices_on_known", 'invalid:keys|key "vertices" is not allowed when "motion" is "sticks" and every support force is given',
+     motion("sticks", [F(1, 4), 0, 0], vertices=[stick_witness(["1/2", "1/2"], [["1/8", "0"], ["1/8", "0"]])])),
 ]
 
 # ----------------------------------------------------------------------------------------------
 # An independent exact checker (Python fractions)
 
-PROPERTIES = ("force_closure", "form_closure", "equilibrium")
+PROPERTIES = ("force_closure", "form_closure", "equilibrium", "motion")
 SCENE_NUMBER = re.compile(r"[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?|[+-]?\d+/\d+")
 RATIONAL = re.compile(r"-?(0|[1-9][0-9]*)(/[1-9][0-9]*)?")
 
@@ -331,12 +402,147 @@ def det3(a, b, c):
             + a[2] * (b[0] * c[1] - b[1] * c[0]))
 
 
+MOTION_KEYS = {  # (claim, every force given) -> the keys besides the common ones
+    ("sticks", True): {"support_forces"}, ("slides", True): {"twist", "speed_bounds"},
+    ("sticks", False): {"vertices"}, ("slides", False): {"twist", "speed_bounds", "dual"},
+    ("depends", False): {"sticking", "sliding"},
+}
+
+
+def gauss_solve(columns, b):
+    """The unique x with sum_j x_j columns[j] = b if the columns are independent and b is in their span,
+    else None (Gauss-Jordan elimination on Fractions; a second method beside the C++ checker's Cramer rule)."""
+    n = len(columns)
+    A = [[columns[j][k] for j in range(n)] + [b[k]] for k in range(3)]
+    row = 0
+    for col in range(n):
+        piv = next((r for r in range(row, 3) if A[r][col] != 0), None)
+        if piv is None:
+            return None  # dependent columns
+        A[row], A[piv] = A[piv], A[row]
+        A[row] = [v / A[row][col] for v in A[row]]
+        for r in range(3):
+            if r != row:
+                A[r] = [a - A[r][col] * c for a, c in zip(A[r], A[row])]
+        row += 1
+    if any(A[r][n] != 0 for r in range(n, 3)):
+        return None
+    return [A[r][n] for r in range(n)]
+
+
+def verify_motion(scene, cert):
+    """verify() for property "motion": None if valid, else a short reason."""
+    sup = scene.get("support")
+    if sup is None:
+        return "no support"
+    pts = [(number(q["at"][0]), number(q["at"][1]), number(q.get("mu", sup.get("mu"))),
+            None if "force" not in q else number(q["force"])) for q in sup["points"]]
+    known = all(f is not None for *_, f in pts)
+    claim = cert["motion"]
+    if claim == "depends" and known:
+        return "depends known"
+    if set(cert) != {"wrenchkit_certificate", "property", "load", "motion"} | MOTION_KEYS[(claim, known)]:
+        return "keys"
+    p = [rational(v) for v in cert["load"]]
+    given = [f or F(0) for *_, f in pts]
+    if known:
+        W, c = sum(given), None
+    else:
+        W = number(sup["weight"])
+        c = [number(v) for v in sup.get("pressure_center", scene.get("body", {}).get("com"))]
+
+    def in_F(f):
+        return (len(f) == len(pts) and all(v >= 0 for v in f)
+                and all(q[3] is None or q[3] == v for q, v in zip(pts, f)) and sum(f) == W
+                and all(sum(v * q[k] for v, q in zip(f, pts)) == W * c[k] for k in range(2)))
+
+    def sticks(f, g):
+        g = [[rational(a) for a in gi] for gi in g]
+        if len(g) != len(pts) or any(a * a + b * b > (q[2] * fi) ** 2 for (a, b), q, fi in zip(g, pts, f)):
+            return False
+        total = [sum(a for a, _ in g), sum(b for _, b in g), sum(q[0] * b - q[1] * a for (a, b), q in zip(g, pts))]
+        return total == p
+
+    def speeds(q, u):  # None if fine, else the reason
+        if len(u) != len(pts) or any(v < 0 for v in u):
+            return "speed"
+        if any(v * v < (q[0] - q[2] * y) ** 2 + (q[1] + q[2] * x) ** 2 for v, (x, y, *_) in zip(u, pts)):
+            return "speed"
+        return None
+
+    def power(q):
+        return q[0] * p[0] + q[1] * p[1] + q[2] * p[2]
+
+    if claim == "sticks" and known:
+        return None if sticks(given, cert["support_forces"]) else "stick"
+    if claim == "slides":
+        q, u = [rational(v) for v in cert["twist"]], [rational(v) for v in cert["speed_bounds"]]
+        if speeds(q, u):
+            return "speed"
+        if known:
+            return None if power(q) > sum(qq[2] * f * v for qq, f, v in zip(pts, given, u)) else "power"
+        y = [rational(v) for v in cert["dual"]]
+        if any(q_[3] is None and q_[2] * v > y[0] + y[1] * q_[0] + y[2] * q_[1] for q_, v in zip(pts, u)):
+            return "dual"
+        rest_w = W - sum(given)
+        rest_m = [W * c[k] - sum(f * q_[k] for f, q_ in zip(given, pts)) for k in range(2)]
+        bound = (sum(q_[2] * f * v for q_, f, v in zip(pts, given, u) if q_[3] is not None)
+                 + y[0] * rest_w + y[1] * rest_m[0] + y[2] * rest_m[1])
+        return None if power(q) > bound else "power"
+    if claim == "depends":
+        st, sl = cert["sticking"], cert["sliding"]
+        f1, f2 = [rational(v) for v in st["distribution"]], [rational(v) for v in sl["distribution"]]
+        if not in_F(f1) or not in_F(f2):
+            return "F"
+        if not sticks(f1, st["support_forces"]):
+            return "stick"
+        q, u = [rational(v) for v in sl["twist"]], [rational(v) for v in sl["speed_bounds"]]
+        if speeds(q, u):
+            return "speed"
+        return None if power(q) > sum(qq[2] * f * v for qq, f, v in zip(pts, f2, u)) else "power"
+    # sticks for every distribution: every witness in F and sticking, every vertex of F witnessed.
+    # Vertices by brute force: every set S of at most three unknown points whose columns (1, x, y) are
+    # independent and give a strictly positive solution of the three rows.
+    wit = []
+    for w in cert["vertices"]:
+        f = [rational(v) for v in w["distribution"]]
+        if not in_F(f):
+            return "F"
+        if not sticks(f, w["support_forces"]):
+            return "stick"
+        wit.append(f)
+    unknown = [i for i, q in enumerate(pts) if q[3] is None]
+    b = [W - sum(given)] + [W * c[k] - sum(f * q[k] for f, q in zip(given, pts)) for k in range(2)]
+    for size in range(0, 4):
+        for S in itertools.combinations(unknown, size):
+            if size == 0:
+                if any(b):
+                    continue
+                x = []
+            else:
+                x = gauss_solve([(F(1), pts[i][0], pts[i][1]) for i in S], b)
+                if x is None or any(v <= 0 for v in x):
+                    continue
+            f = list(given)
+            for i, v in zip(S, x):
+                f[i] = v
+            if f not in wit:
+                return "vertex"
+    return None
+
+
 def verify(scene, cert):
     """Returns None if cert proves its claim for scene, else a short reason."""
     keys = set(cert)
-    allowed = {"wrenchkit_certificate", "property", "holds", "combination", "independent", "twist", "reading"}
+    allowed = {"wrenchkit_certificate", "property", "holds", "combination", "independent", "twist", "reading",
+               "load", "motion", "support_forces", "speed_bounds", "dual", "vertices", "sticking", "sliding"}
     if keys - allowed:
         return "unknown key"
+    if cert.get("wrenchkit_certificate") == 1 and cert.get("property") == "motion":
+        try:
+            return verify_motion(scene, cert)
+        except (ValueError, KeyError, TypeError) as e:
+            return f"malformed: {e}"
     if cert.get("wrenchkit_certificate") != 1 or cert.get("property") not in PROPERTIES:
         return "header"
     friction = cert["property"] != "form_closure"

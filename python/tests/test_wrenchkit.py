@@ -277,3 +277,30 @@ def test_limit_surface_motion_by_mode_as_the_command_line():
         out = subprocess.run([CLI, "limit-surface", "--json", "--sides", "8", "--load", "0,0,0.999", "-"],
                              input=p, capture_output=True, text=True, check=True)
         assert json.loads(out.stdout)["motion"] == hybrid["motion"]
+
+
+TABLE = {"support": {"mu": 1, "weight": 1, "pressure_center": [0, 0],
+                     "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}}
+
+
+def test_sliding_over_every_admissible_distribution_of_the_table():
+    # Rotation about a leg (1, 1): the diagonal through it has power sqrt(2), the other 2 (theory-sliding §6).
+    r = wrenchkit.sliding(TABLE, twist=(1, -1, 1))
+    assert r["distribution"] == "unknown" and r["unknown_points"] == [0, 1, 2, 3]
+    lo, hi = r["power"]
+    assert lo * lo < 2 < (lo + Fraction(1, 10**9)) ** 2 and 2 <= hi < 2 + Fraction(1, 10**9)
+    assert r["min_distribution"] == (Fraction(1, 2), 0, Fraction(1, 2), 0)
+    assert r["max_distribution"] == (0, Fraction(1, 2), 0, Fraction(1, 2))
+    assert len(r["extreme_distributions"]) == 2
+    with pytest.raises(wrenchkit.InputError, match="outside the convex hull"):
+        wrenchkit.Scene({"support": dict(TABLE["support"], pressure_center=[2, 0])})
+
+
+def test_limit_surface_over_every_admissible_distribution_of_the_table():
+    assert wrenchkit.limit_surface(TABLE, load=("1/2", 0, 0))["motion"] == "sticks"
+    s = wrenchkit.limit_surface(TABLE, load=(0, 0, "3/2"))
+    assert s["motion"] == "slides" and len(s["separating_twist"]) == 3
+    d = wrenchkit.limit_surface(TABLE, load=("1/2", "1/2", "9/10"))
+    assert d["motion"] == "depends"
+    assert d["witnesses"]["sticks"] == (Fraction(1, 2), 0, Fraction(1, 2), 0)
+    assert d["witnesses"]["slides"] == (0, Fraction(1, 2), 0, Fraction(1, 2))

@@ -1,0 +1,158 @@
+#include "exact/sliding/unknown_motion.h"
+
+#include <stdexcept>
+
+#include "exact/numbers/exact_lp.h"
+
+namespace wrenchkit {
+
+const char* motion_over_name(Motion_over m) {
+  switch (m) {
+    case Motion_over::sticks: return "sticks";
+    case Motion_over::slides: return "slides";
+    case Motion_over::depends: return "depends";
+    case Motion_over::undecided: return "undecided";
+  }
+  return "?";
+}
+
+namespace {
+
+Rational mu_of(const Support& s, const Support_point& p) { return p.mu ? *p.mu : (s.mu ? *s.mu : Rational(0)); }
+
+}  // namespace
+
+std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a, const Vec3q& p, int sides,
+                                           const std::vector<Rational>* fixed) {
+  const Directions d = make_directions(sides);
+  const std::size_t k = s.points.size(), n = d.u.size();
+  const bool free_f = !fixed && !a.known();
+  const std::vector<Rational> f0 = fixed ? *fixed : a.given;
+  // Columns: λ_ij (k·n), slack s_i (k), then the unknown forces (free_f only).
+  const std::size_t lambda = k * n, slack = lambda, force = lambda + k;
+  const std::size_t cols = force + (free_f ? a.unknown.size() : 0);
+  std::vector<std::vector<Rational>> A;
+  std::vector<Rational> b;
+  // Σ_ij λ_ij (u_j, r_i × u_j) = p.
+  for (int row = 0; row < 3; ++row) {
+    std::vector<Rational> r(cols);
+    for (std::size_t i = 0; i < k; ++i)
+      for (std::size_t j = 0; j < n; ++j) {
+        const Vec2& u = d.u[j];
+        const Vec2& at = s.points[i].at;
+        r[i * n + j] = row == 0 ? u.x : row == 1 ? u.y : Rational(at.x * u.y - at.y * u.x);
+      }
+    A.push_back(std::move(r));
+    b.push_back(p[static_cast<std::size_t>(row)]);
+  }
+  // Σ_j λ_ij + s_i = μ_i f_i (f_i a column when free).
+  for (std::size_t i = 0; i < k; ++i) {
+    std::vector<Rational> r(cols);
+    for (std::size_t j = 0; j < n; ++j) r[i * n + j] = 1;
+    r[slack + i] = 1;
+    const Rational mu = mu_of(s, s.points[i]);
+    Rational rhs = mu * f0[i];
+    if (free_f)
+      for (std::size_t u = 0; u < a.unknown.size(); ++u)
+        if (a.unknown[u] == i) {
+          r[force + u] = -mu;
+          rhs = 0;
+        }
+    A.push_back(std::move(r));
+    b.push_back(rhs);
+  }
+  // The rows of F over the unknown forces.
+  if (free_f) {
+    for (int row = 0; row < 3; ++row) {
+      std::vector<Rational> r(cols);
+      for (std::size_t u = 0; u < a.unknown.size(); ++u) {
+        const Vec2& at = s.points[a.unknown[u]].at;
+        r[force + u] = row == 0 ? Rational(1) : row == 1 ? at.x : at.y;
+      }
+      A.push_back(std::move(r));
+    }
+    b.push_back(a.rest);
+    b.push_back(a.rest_moment.x);
+    b.push_back(a.rest_moment.y);
+  }
+  const Lp_result lp = maximise(A, b, std::vector<Rational>(cols));
+  if (lp.status != Lp_result::Status::optimal) return std::nullopt;
+  Stick_witness w;
+  w.distribution = f0;
+  if (free_f)
+    for (std::size_t u = 0; u < a.unknown.size(); ++u) w.distribution[a.unknown[u]] = lp.x[force + u];
+  w.forces.assign(k, Vec2{});
+  for (std::size_t i = 0; i < k; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      const Rational& l = lp.x[i * n + j];
+      if (l == 0) continue;
+      w.forces[i].x += l * d.u[j].x;
+      w.forces[i].y += l * d.u[j].y;
+    }
+  return w;
+}
+
+bool slides_for_every(const Support& s, const Admissible& a, const Vec3q& p, const Vec3q& q) {
+  if (q[0] == 0 && q[1] == 0 && q[2] == 0) return false;
+  const Power_range r = power_range(s, a, q);
+  return q[0] * p[0] + q[1] * p[1] + q[2] * p[2] > r.upper;
+}
+
+Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Vec3q& p, Mode mode, int sides) {
+  if (a.known() || a.unknown.size() > kMaxEnumeratedUnknowns)
+    throw std::invalid_argument("decide_motion_over: needs a few unknown forces");
+  Motion_over_f r;
+  const std::vector<std::vector<Rational>> v = vertices(s, a);
+  std::vector<Vec3q> twists;  // the sliding vertices' twists (from the certified search), candidates for step 3
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Polygonal_ls model(merge_support(s, &v[i]), make_directions(sides));
+    const Motion_decision m = decide_motion(model, p, mode);
+    r.per_vertex.push_back(m.motion);
+    r.decisions.push_back(m);
+    if (m.motion == Motion::sticks && !r.sticking_vertex) r.sticking_vertex = i;
+    if (m.motion == Motion::slides && !r.sliding_vertex) r.sliding_vertex = i;
+    if (m.motion == Motion::slides && std::string(m.decided_by) == "float")
+      twists.push_back({Rational(m.witness[0]), Rational(m.witness[1]), Rational(m.witness[2])});
+  }
+  if (r.sticking_vertex && r.sliding_vertex) {
+    r.motion = Motion_over::depends;
+    r.decided_by = "vertices";
+    return r;
+  }
+  bool all_stick = true, all_slide = true;
+  for (Motion m : r.per_vertex) {
+    all_stick &= m == Motion::sticks;
+    all_slide &= m == Motion::slides;
+  }
+  if (all_stick) {
+    r.motion = Motion_over::sticks;
+    r.decided_by = "vertices";
+    return r;
+  }
+  if (!all_slide) {  // some vertices undecided and none of the other kind: not decided
+    r.decided_by = "none";
+    return r;
+  }
+  if ((r.sticking = stick_witness(s, a, p, sides))) {
+    r.motion = Motion_over::depends;
+    r.decided_by = "lp";
+    return r;
+  }
+  if (twists.size() > 1) {  // their sum too: a twist between the vertices' own
+    Vec3q sum{};
+    for (const Vec3q& q : twists)
+      for (std::size_t c = 0; c < 3; ++c) sum[c] += q[c];
+    twists.push_back(sum);
+  }
+  for (const Vec3q& q : twists)
+    if (slides_for_every(s, a, p, q)) {
+      r.motion = Motion_over::slides;
+      r.separating_twist = q;
+      r.decided_by = "twist";
+      return r;
+    }
+  r.decided_by = "none";
+  return r;
+}
+
+}  // namespace wrenchkit

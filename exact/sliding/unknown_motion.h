@@ -1,0 +1,61 @@
+// [SL-3] Does a load stick or slide when the support's distribution is unknown (docs/theory-sliding.md §2)?
+//
+//   sticks   for every admissible distribution  ⇔  p ∈ LS(f_v) for every vertex f_v of F (LS is linear in f
+//            under Minkowski sums, so every f = Σ λ_v f_v sticks too);
+//   slides   for every one  ⇔  p ∉ U = ∪_F LS(f)  ⇔  some twist q has q·p > max_F h_f(q);
+//   depends  otherwise: one admissible distribution sticks and another slides.
+//
+// Decided as follows, every step certified:
+//   1. each vertex: decide_motion on its own support (hybrid: the float twin's certified search on the true
+//      limit surface first, the exact polygons when it cannot tell) — all stick: sticks; a stick and a slide:
+//      depends;
+//   2. every vertex slides: an exact LP over F × (inscribed N-gons) looks for one distribution that sticks
+//      (a stick witness: rational support forces g_i with |g_i| ≤ μ_i f_i — |u_j| = 1 exactly — summing to p):
+//      found: depends;
+//   3. else twists that separate p from all of U: the vertices' sliding twists, checked exactly with the
+//      speeds bounded above by rationals (u_i² ≥ |v_i(q)|²) and the LP over F: q·p > max_F Σ μ_i f_i u_i
+//      proves slides;
+//   4. else undecided (the load is within the resolution of U's boundary).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/mode.h"
+#include "exact/sliding/distribution.h"
+#include "exact/sliding/sliding.h"
+
+namespace wrenchkit {
+
+// Rational support forces of one distribution holding the load: g_i·g_i ≤ (μ_i f_i)², Σ (g_i, r_i × g_i) = p.
+struct Stick_witness {
+  std::vector<Rational> distribution;  // one force per support point
+  std::vector<Vec2> forces;            // g_i, one per support point
+};
+
+// A stick witness on the inscribed N-gons (N = sides): for the distribution `fixed`, or for some distribution
+// of F when `fixed` is null; nothing when p is not in LS_in^N of any of them. Exact LP [LP-1].
+std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a, const Vec3q& p, int sides,
+                                           const std::vector<Rational>* fixed = nullptr);
+
+// Does q prove that p slides for every distribution of F (q·p > max_F Σ μ_i f_i u_i, u_i the rational upper
+// bounds of the speeds)? Exact.
+bool slides_for_every(const Support& s, const Admissible& a, const Vec3q& p, const Vec3q& q);
+
+enum class Motion_over { sticks, slides, depends, undecided };
+const char* motion_over_name(Motion_over m);
+
+struct Motion_over_f {
+  Motion_over motion = Motion_over::undecided;
+  std::vector<Motion> per_vertex;                 // each vertex's own answer (decide_motion)
+  std::vector<Motion_decision> decisions;         // … and how it was decided (the search's witness twist)
+  std::optional<std::size_t> sticking_vertex, sliding_vertex;  // depends: witnesses among the vertices
+  std::optional<Stick_witness> sticking;          // depends found by the LP (step 2)
+  std::optional<Vec3q> separating_twist;          // slides (step 3)
+  std::string decided_by;                         // "vertices", "lp", "twist" or "none"
+};
+// Precondition: some force unknown, at most kMaxEnumeratedUnknowns of them.
+Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Vec3q& p, Mode mode, int sides);
+
+}  // namespace wrenchkit
