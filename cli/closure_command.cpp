@@ -56,7 +56,8 @@ void write_closure(Json_writer& w, const Options& o, const Closure_item& r, cons
   write_pair(w, "predicates", r.force.predicates, r.form.predicates);
   write_pair(w, "exact_predicates", r.force.exact_predicates, r.form.exact_predicates);
   w.member("certificates_checked", !r.force_certificate.empty());
-  if (!r.force_certificate.empty()) w.key("certificate").raw(r.force_certificate).key("form_certificate").raw(r.form_certificate);
+  if (!r.force_certificate.empty())
+    w.key("certificate").raw(r.force_certificate).key("form_certificate").raw(r.form_certificate);
 }
 
 std::string closure_human(const Closure_item& r) {

@@ -101,9 +101,10 @@ int report(const Ended& e);
 // The pipeline request of the command line's options: --mode, --verdict-only, the --max-* limits.
 Request request_of(const Options& o);
 
-// Writes a single command's answer: its JSON line with --json, else its text for people (each made only
-// when needed); returns kAnswered.
-int write_answer(const Options& o, const std::function<std::string()>& json, const std::function<std::string()>& text);
+// Writes a single command's answer: with --json its JSON line (the members `json` writes, in braces), else its
+// text for people (each made only when needed); returns kAnswered.
+int write_answer(const Options& o, const std::function<void(Json_writer&)>& json,
+                 const std::function<std::string()>& text);
 // sliding_command.cpp: a support with unknown forces as JSON members ("distribution": "unknown", … and
 // "power": {…}) written into the answer's object, for sliding and limit-surface alike.
 void write_unknown_distribution(Json_writer& w, const Support_item& r);
@@ -165,9 +166,7 @@ int run_per_scene(const Options& o, const std::string& text, const std::string& 
                   Json json, Text to_text) {
   const auto opts = read(o);
   const auto item = answer(opts, o, text, source);
-  return write_answer(
-      o, [&] { return json_answer([&](Json_writer& w) { json(w, opts, item); }, 2048); },
-      [&] { return to_text(opts, item, source); });
+  return write_answer(o, [&](Json_writer& w) { json(w, opts, item); }, [&] { return to_text(opts, item, source); });
 }
 
 // Each command's prepare_*_json reads what it needs of the (already validated) options once, checks

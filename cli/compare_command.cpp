@@ -434,7 +434,8 @@ int run_compare(const Options& o) {
 
   if (o.json) {
     Json_writer w(4096);
-    w.object().member("command", "compare").member("reference_scenes", corpus.refs.size()).member("answered", c.answered);
+    w.object().member("command", "compare").member("reference_scenes", corpus.refs.size());
+    w.member("answered", c.answered);
     w.member("not_answered", missing).member("errors", c.errors).key("fields").object();
     for (const char* f : kFields) {
       const auto it = c.fields.find(f);

@@ -227,7 +227,8 @@ void write_query(Json_writer& w, const Labels_query& q, const Labels_item& s) {
   w.key("query").object();
   write_twist(w, {(*q.motion)[0], (*q.motion)[1], (*q.motion)[2]});
   w.member("feasible", m.feasible).member("marginal", m.marginal).key("modes").array();
-  for (std::size_t i = 0; i < m.modes.size(); ++i) w.object().member("contact", i).member("mode", mode_name(m.modes[i])).end_object();
+  for (std::size_t i = 0; i < m.modes.size(); ++i)
+    w.object().member("contact", i).member("mode", mode_name(m.modes[i])).end_object();
   w.end_array().end_object();
 }
 
@@ -334,29 +335,23 @@ std::string reuleaux_text(const Labels_item& s, const Labels_query& q, const std
 int run_labels(const Options& o, const std::string& text, const std::string& source) {
   const Labels_query q = labels_query(o);
   const Labels_item s = label(o, q, text, source);
-  return write_answer(
-      o, [&] { return json_answer([&](Json_writer& w) { write_labels_answer(w, s, q); }, 2048); },
-      [&] { return labels_text(s, q, source); });
+  const auto json = [&](Json_writer& w) { write_labels_answer(w, s, q); };
+  return write_answer(o, json, [&] { return labels_text(s, q, source); });
 }
 
 int run_dual(const Options& o, const std::string& text, const std::string& source) {
   const Labels_item s = label(o, dual_query(o), text, source);
-  return write_answer(
-      o,
-      [&] {
-        return json_answer([&](Json_writer& w) {
-          s.mode == Mode::float_only ? write_float_dual_answer(w, s) : write_dual_answer(w, s);
-        }, 4096);
-      },
-      [&] { return dual_text(s, source); });
+  const auto json = [&](Json_writer& w) {
+    s.mode == Mode::float_only ? write_float_dual_answer(w, s) : write_dual_answer(w, s);
+  };
+  return write_answer(o, json, [&] { return dual_text(s, source); });
 }
 
 int run_reuleaux(const Options& o, const std::string& text, const std::string& source) {
   const Labels_query q = reuleaux_query(o);
   const Labels_item s = label(o, q, text, source);
-  return write_answer(
-      o, [&] { return json_answer([&](Json_writer& w) { write_reuleaux_answer(w, s, q); }, 2048); },
-      [&] { return reuleaux_text(s, q, source); });
+  const auto json = [&](Json_writer& w) { write_reuleaux_answer(w, s, q); };
+  return write_answer(o, json, [&] { return reuleaux_text(s, q, source); });
 }
 
 }  // namespace wrenchkit::cli

@@ -208,7 +208,8 @@ void write_limit_surface(Json_writer& w, const Ls_options& lo, const Support_ite
     write_face(w.key("outer"), sa.outer_face);
     w.key("power").object().member("inner", sa.h_inner).member("outer", sa.h_outer).end_object();
     w.key("true_surface").object();
-    w.member("kind", sa.cls.kind == Twist_kind::facet ? "facet" : (sa.cls.kind == Twist_kind::vertex ? "vertex" : "smooth"));
+    const char* kinds[] = {"facet", "vertex", "smooth"};
+    w.member("kind", kinds[static_cast<int>(sa.cls.kind)]);
     w.member("text", sa.cls.text).end_object();
     write_true(w, r);
     w.end_object();
@@ -362,7 +363,8 @@ void write_limit_surface_unknown(Json_writer& w, const Ls_options& lo, const Sup
   }
   if (!lo.load) return;
   const Motion_over_f& m = *r.motion_over;
-  w.key("load").rationals(*lo.load).member("motion", motion_over_name(m.motion)).member("motion_decided_by", m.decided_by);
+  w.key("load").rationals(*lo.load).member("motion", motion_over_name(m.motion));
+  w.member("motion_decided_by", m.decided_by);
   w.key("per_extreme_distribution").array();
   for (const Motion v : m.per_vertex) w.string(motion_name(v));
   w.end_array();
@@ -455,9 +457,7 @@ int run_limit_surface(const Options& o, const std::string& text, const std::stri
   if (!lo.off_file.empty()) write_file(lo.off_file, off_text(r.in, r.out));
   if (!lo.obj_file.empty()) write_file(lo.obj_file, obj_text(r.in, r.out));
   if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.sides));
-  return write_answer(
-      o, [&] { return json_answer([&](Json_writer& w) { answer_json(w, lo, r); }, 4096); },
-      [&] { return answer_text(lo, r, source); });
+  return write_answer(o, [&](Json_writer& w) { answer_json(w, lo, r); }, [&] { return answer_text(lo, r, source); });
 }
 
 }  // namespace wrenchkit::cli

@@ -220,7 +220,8 @@ Built build_line(const Entry& e, const Reference_options& ro) {
   w.key("rank").object().member("force", c.force.rank).member("form", c.form.rank).end_object();
   if (eq) {
     const Wrench& l = eq->answer.load;
-    w.member("equilibrium", eq->answer.balanced).key("load").array().rational(l.fx).rational(l.fy).rational(l.m).end_array();
+    w.member("equilibrium", eq->answer.balanced);
+    w.key("load").array().rational(l.fx).rational(l.fy).rational(l.m).end_array();
   }
   write_labels(w.key("labels").object(), labels);
   w.end_object();
@@ -298,8 +299,9 @@ int run_reference(const Options& o) {
   write_text(tmp / "reference.jsonl", jsonl);
   write_text(tmp / "expected.csv", csv);
   Json_writer m(512);
-  m.object().member("wrenchkit_reference", 1).member("generator", "wrenchkit 0.1.0").member("format", "docs/reference-format.md");
-  m.member("seed", std::to_string(ro.seed)).member("cases", ro.cases).member("random", ro.random).member("sides", ro.sides);
+  m.object().member("wrenchkit_reference", 1).member("generator", "wrenchkit 0.1.0");
+  m.member("format", "docs/reference-format.md").member("seed", std::to_string(ro.seed)).member("cases", ro.cases);
+  m.member("random", ro.random).member("sides", ro.sides);
   m.key("epsilons").array();
   for (int k : kEpsilonExponents) m.string("1e-" + std::to_string(k));
   m.end_array().member("scenes", corpus.ids.size()).key("files").object().member("corpus", "reference.jsonl");

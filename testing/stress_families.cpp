@@ -129,7 +129,8 @@ std::string random_generic(Rng& r) {
   for (int i = 0; i < k; ++i) {
     int nx = r.integer(-999, 999), ny = r.integer(-999, 999);
     if (nx == 0 && ny == 0) nx = 1;
-    const std::string mu = decimal(r.integer(0, 800)), ay = decimal(r.integer(-999, 999)), ax = decimal(r.integer(-999, 999));
+    const std::string mu = decimal(r.integer(0, 800)), ay = decimal(r.integer(-999, 999));
+    const std::string ax = decimal(r.integer(-999, 999));
     w.object().key("at").array().raw(ax).raw(ay).end_array();
     w.key("normal").array().integer(nx).integer(ny).end_array().key("mu").raw(mu).end_object();
   }
