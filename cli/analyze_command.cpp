@@ -6,8 +6,9 @@
 #include <vector>
 
 #include "cli/common.h"
-#include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 #include "exact/io/support_check.h"
+#include "exact/statics/planar_region.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
@@ -48,11 +49,11 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
     const Vec2 cof{sup.weighted_force_sum.x / sup.total_force, sup.weighted_force_sum.y / sup.total_force};
     const std::string lam = to_string(model.directions().lambda_sq);
     Ls_summary r;
-    r.json = "{\"sides\": " + std::to_string(n) + ", \"lambda_squared\": " + json::quote(lam) +
-             ", \"center_of_friction\": [" + json::quote(to_string(cof.x)) + ", " + json::quote(to_string(cof.y)) +
-             "], \"inner\": {\"facets\": " + std::to_string(in.facets.size()) + ", \"vertices\": " +
-             std::to_string(in.vertices.size()) + "}, \"outer\": {\"facets\": " + std::to_string(out.facets.size()) +
-             ", \"vertices\": " + std::to_string(out.vertices.size()) + "}";
+    Json_writer j;
+    j.object().member("sides", n).member("lambda_squared", model.directions().lambda_sq);
+    j.key("center_of_friction").array().rational(cof.x).rational(cof.y).end_array();
+    j.key("inner").object().member("facets", in.facets.size()).member("vertices", in.vertices.size()).end_object();
+    j.key("outer").object().member("facets", out.facets.size()).member("vertices", out.vertices.size()).end_object();
     r.human = "limit surface (" + std::to_string(n) + " sides" + (tolerance ? ", the fewest meeting --tolerance" : "") +
               "): lambda^2 = " + lam + ", inner " + std::to_string(in.facets.size()) + " facets, outer " +
               std::to_string(out.facets.size()) + " facets; centre of friction (" + to_string(cof.x) + ", " +
@@ -60,16 +61,15 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
     if (scene.load && scene.load->kind != Load::Kind::gravity) {
       const Vec3q p = as_vec(load_wrench(scene));
       const Motion_decision m = decide_motion(model, p, o.mode, &in, &out);
-      r.json += ", \"load_motion\": {\"load\": [" + json::quote(to_string(p[0])) + ", " + json::quote(to_string(p[1])) +
-                ", " + json::quote(to_string(p[2])) + "], \"motion\": \"" + motion_name(m.motion) +
-                "\", \"decided_by\": \"" + m.decided_by + "\"}";
+      j.key("load_motion").object().key("load").rationals(p);
+      j.member("motion", motion_name(m.motion)).member("decided_by", m.decided_by).end_object();
       r.human += "the load on the support: " + std::string(motion_name(m.motion)) +
                  (std::string(m.decided_by) == "float" ? " (the float twin's certified search on the true limit surface)"
                   : std::string(m.decided_by) == "polygons" ? " (the exact polygons)"
                                                             : " (within the polygons' resolution: refine --tolerance)") +
                  "\n";
     }
-    r.json += "}";
+    r.json = j.end_object().take();
     return r;
   }
   why = "too many support points for analyze's summary; use wrenchkit limit-surface";
@@ -113,38 +113,38 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
   return a;
 }
 
-std::string analyze_json(const Options& o, const Analysis& a, const char* command) {
-  std::string s = "{\"command\": \"" + std::string(command) + "\", \"name\": " + json::quote(a.scene.name) +
-                  ", \"closure\": " + closure_json(o, a.closure, "closure");
-  if (a.equilibrium) s += ", \"equilibrium\": " + equilibrium_json(o, *a.equilibrium, "equilibrium");
-  if (a.limit_surface) s += ", \"limit_surface\": " + a.limit_surface->json;
-  s += ", \"skipped\": [";
-  for (std::size_t i = 0; i < a.skipped.size(); ++i)
-    s += (i ? ", " : "") + std::string("{\"what\": ") + json::quote(a.skipped[i].first) +
-         ", \"why\": " + json::quote(a.skipped[i].second) + "}";
-  s += "]";
-  if (a.gravity_off) {
-    const auto pt = [](const Vec2& p) {
-      return "[" + json::quote(to_string(p.x)) + ", " + json::quote(to_string(p.y)) + "]";
-    };
-    s += ", \"warnings\": [{\"what\": \"gravity_off_pressure_center\", \"com\": " + pt(a.gravity_off->first) +
-         ", \"pressure_center\": " + pt(a.gravity_off->second) + "}]";
+void write_analysis(Json_writer& w, const Options& o, const Analysis& a, const char* command) {
+  w.member("command", command).member("name", a.scene.name);
+  write_closure(w.key("closure").object(), o, a.closure, "closure");
+  w.end_object();
+  if (a.equilibrium) {
+    write_equilibrium(w.key("equilibrium").object(), o, *a.equilibrium, "equilibrium");
+    w.end_object();
   }
-  return s + "}";
+  if (a.limit_surface) w.key("limit_surface").raw(a.limit_surface->json);
+  w.key("skipped").array();
+  for (const auto& [what, why] : a.skipped) w.object().member("what", what).member("why", why).end_object();
+  w.end_array();
+  if (a.gravity_off) {
+    w.key("warnings").array().object().member("what", "gravity_off_pressure_center");
+    write_point(w.key("com"), a.gravity_off->first);
+    write_point(w.key("pressure_center"), a.gravity_off->second);
+    w.end_object().end_array();
+  }
 }
 
 }  // namespace
 
 Scene_answer prepare_analyze_json(const Options& o) {
-  return [o, tolerance = o.tolerance](const std::string& text, const std::string& source) {
-    return analyze_json(o, analyze(o, tolerance, text, source), "analyze");
+  return [o, tolerance = o.tolerance](Json_writer& w, const std::string& text, const std::string& source) {
+    write_analysis(w, o, analyze(o, tolerance, text, source), "analyze");
   };
 }
 
 int run_analyze(const Options& o, const std::string& scene_text, const std::string& source, const char* command) {
   const Analysis a = analyze(o, o.tolerance, scene_text, source);
   if (o.json) {
-    std::cout << analyze_json(o, a, command) << "\n";
+    std::cout << json_answer([&](Json_writer& w) { write_analysis(w, o, a, command); }, 2048) << "\n";
     return kAnswered;
   }
   std::cout << "scene: " << (a.scene.name.empty() ? source : a.scene.name) << "\n" << closure_human(a.closure);

@@ -11,7 +11,7 @@
 #include "cli/common.h"
 #include "exact/pipeline/ordered_map.h"
 #include "exact/io/input_error.h"
-#include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 
 namespace wrenchkit::cli {
 
@@ -79,10 +79,10 @@ struct Worker {
 
 // A line that was not answered: {"line": N, KIND: MESSAGE, "exit_code": C}, KIND "error" (bad input, or
 // options that cannot apply to this scene), "undecided" or "internal_error".
-void error_line(std::string& out, std::size_t line, const Ended& e) {
+void write_error_line(Json_writer& w, std::size_t line, const Ended& e) {
   const char* kind = e.status == Status::bad_input ? "error" : e.status == Status::undecided ? "undecided" : "internal_error";
-  out = "{\"line\": " + std::to_string(line) + ", \"" + kind + "\": " + json::quote(e.message) +
-        ", \"exit_code\": " + std::to_string(exit_code(e.status)) + "}";
+  w.clear();
+  w.object().member("line", line).member(kind, e.message).member("exit_code", exit_code(e.status)).end_object();
 }
 
 }  // namespace
@@ -96,22 +96,22 @@ int run_batch(const Options& o, const Scene_answer& answer) {
       o.jobs, [&](Line& l) { return reader.next(l.text, l.too_long); },
       [&](Worker& w, const Line& l, std::string& out, std::size_t index) {
         const std::size_t n = index + 1;
+        Json_writer j(512, std::move(out));  // the line's own string again: its capacity is reused
         try {
           if (l.too_long)
             throw Input_error("line larger than the size limit of " + std::to_string(o.limits.max_file_bytes) +
                               " bytes (--max-file-size)");
           w.source = "line " + std::to_string(n);
-          const std::string json = answer(l.text, w.source);
-          out = "{\"line\": ";  // the command's answer with "line" first
-          out += std::to_string(n);
-          out += ", ";
-          out.append(json, 1, std::string::npos);
+          j.object().member("line", n);  // the command's answer with "line" first
+          answer(j, l.text, w.source);
+          j.end_object();
         } catch (...) {
           const Ended e = failure_of(std::current_exception());
           if (e.status == Status::check_failed) self_check_failed = true;
           if (e.status == Status::internal_error) internal_error = true;
-          error_line(out, n, e);
+          write_error_line(j, n, e);
         }
+        out = j.take();
       },
       [&](std::size_t, const std::string& out) {
         std::cout.write(out.data(), static_cast<std::streamsize>(out.size()));

@@ -4,7 +4,6 @@
 
 #include "cli/common.h"
 #include "exact/io/input_error.h"
-#include "exact/io/json.h"
 
 namespace wrenchkit::cli {
 
@@ -18,8 +17,8 @@ int run_check(const Options& o) {
   if (r.outcome == Outcome::bad_scene) throw Input_error(o.positional[0] + ": " + r.message);
   const bool ok = r.outcome == Outcome::accepted;
   if (o.json)
-    std::cout << "{\"accepted\": " << (ok ? "true" : "false")
-              << ", \"reason\": " << json::quote(ok ? "" : r.message) << "}\n";
+    std::cout << json_answer([&](Json_writer& w) { w.member("accepted", ok).member("reason", ok ? "" : r.message); })
+              << "\n";
   else
     std::cout << (ok ? "accepted" : "rejected: " + r.message) << "\n";
   return ok ? kAnswered : kRejected;

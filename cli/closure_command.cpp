@@ -9,7 +9,7 @@
 
 #include "cli/common.h"
 #include "exact/io/input_error.h"
-#include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 
 namespace wrenchkit::cli {
 
@@ -41,48 +41,23 @@ std::string human_verdict(const Closure_answer& a, bool form) {
   return s.str();
 }
 
-void append_pair(std::string& s, const char* key, std::size_t force, std::size_t form) {
-  s += ", \"";
-  s += key;
-  s += "\": {\"force\": ";
-  s += std::to_string(force);
-  s += ", \"form\": ";
-  s += std::to_string(form);
-  s += "}";
+template <std::size_t N>
+void write_pair(Json_writer& w, const char (&key)[N], std::size_t force, std::size_t form) {
+  w.key(key).object().member("force", force).member("form", form).end_object();
 }
 
 }  // namespace
 
-// One line of JSON (no newline).
-std::string closure_json(const Options& o, const Closure_item& r, const char* command) {
-  std::string s;
-  s.reserve(512 + r.force_certificate.size() + r.form_certificate.size());
-  s += "{\"command\": \"";
-  s += command;
-  s += "\", \"name\": ";
-  s += json::quote(r.name);
-  s += ", \"mode\": \"";
-  s += mode_name(o.mode);
-  s += "\", \"decided_by\": \"";
-  s += r.decided_by();
-  s += "\", \"force_closure\": ";
-  s += r.force.holds ? "true" : "false";
-  s += ", \"form_closure\": ";
-  s += r.form.holds ? "true" : "false";
-  append_pair(s, "rank", static_cast<std::size_t>(r.force.rank), static_cast<std::size_t>(r.form.rank));
-  append_pair(s, "generators", r.force.generators, r.form.generators);
-  append_pair(s, "predicates", r.force.predicates, r.form.predicates);
-  append_pair(s, "exact_predicates", r.force.exact_predicates, r.form.exact_predicates);
-  s += ", \"certificates_checked\": ";
-  s += r.force_certificate.empty() ? "false" : "true";
-  if (!r.force_certificate.empty()) {
-    s += ", \"certificate\": ";
-    s += r.force_certificate;
-    s += ", \"form_certificate\": ";
-    s += r.form_certificate;
-  }
-  s += "}";
-  return s;
+void write_closure(Json_writer& w, const Options& o, const Closure_item& r, const char* command) {
+  w.member("command", command).member("name", r.name).member("mode", mode_name(o.mode));
+  w.member("decided_by", r.decided_by()).member("force_closure", r.force.holds).member("form_closure", r.form.holds);
+  write_pair(w, "rank", static_cast<std::size_t>(r.force.rank), static_cast<std::size_t>(r.form.rank));
+  write_pair(w, "generators", r.force.generators, r.form.generators);
+  write_pair(w, "predicates", r.force.predicates, r.form.predicates);
+  write_pair(w, "exact_predicates", r.force.exact_predicates, r.form.exact_predicates);
+  w.member("certificates_checked", !r.force_certificate.empty());
+  if (!r.force_certificate.empty())
+    w.key("certificate").raw(r.force_certificate).key("form_certificate").raw(r.form_certificate);
 }
 
 std::string closure_human(const Closure_item& r) {
@@ -90,9 +65,9 @@ std::string closure_human(const Closure_item& r) {
 }
 
 Scene_answer prepare_closure_json(const Options& o) {
-  return [o, request = request_of(o)](const std::string& text, const std::string& source) {
+  return [o, request = request_of(o)](Json_writer& w, const std::string& text, const std::string& source) {
     thread_local Scene scratch;  // reused from one scene to the next: no allocation once warm
-    return closure_json(o, answered(answer_closure(text, source, request, scratch)), "closure");
+    write_closure(w, o, answered(answer_closure(text, source, request, scratch)), "closure");
   };
 }
 
@@ -103,7 +78,7 @@ int run_closure(const Options& o, const std::string& scene_text, const std::stri
   if (!o.certificate_file.empty()) write_file(o.certificate_file, r.force_certificate + "\n");
   if (!o.form_certificate_file.empty()) write_file(o.form_certificate_file, r.form_certificate + "\n");
   if (o.json) {
-    std::cout << closure_json(o, r, command) << "\n";
+    std::cout << json_answer([&](Json_writer& w) { write_closure(w, o, r, command); }) << "\n";
   } else {
     std::cout << "scene: " << (r.name.empty() ? source : r.name) << "\n"
               << closure_human(r)

@@ -72,8 +72,9 @@ std::string vec_text(const std::array<Rational, 3>& v) {
   return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")";
 }
 
-int write_answer(const Options& o, const std::function<std::string()>& json, const std::function<std::string()>& text) {
-  if (o.json) std::cout << json() << "\n";
+int write_answer(const Options& o, const std::function<void(Json_writer&)>& json,
+                 const std::function<std::string()>& text) {
+  if (o.json) std::cout << json_answer(json, 4096) << "\n";
   else std::cout << text();
   return kAnswered;
 }

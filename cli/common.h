@@ -14,6 +14,7 @@
 
 #include "cli/reference.h"
 #include "core/mode.h"
+#include "exact/io/json_writer.h"
 #include "exact/pipeline/pipeline.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/statics/closure.h"
@@ -100,14 +101,14 @@ int report(const Ended& e);
 // The pipeline request of the command line's options: --mode, --verdict-only, the --max-* limits.
 Request request_of(const Options& o);
 
-// Writes a single command's answer: its JSON line with --json, else its text for people (each made only
-// when needed); returns kAnswered.
-int write_answer(const Options& o, const std::function<std::string()>& json, const std::function<std::string()>& text);
-// sliding_command.cpp: a support with unknown forces as JSON fields (', "distribution": "unknown", …' and
-// ', "power": {…}'), for sliding and limit-surface alike.
-std::string distribution_json(const std::vector<Rational>& f);
-std::string unknown_distribution_fields(const Support_item& r);
-std::string power_over_fields(const Support_item& r);
+// Writes a single command's answer: with --json its JSON line (the members `json` writes, in braces), else its
+// text for people (each made only when needed); returns kAnswered.
+int write_answer(const Options& o, const std::function<void(Json_writer&)>& json,
+                 const std::function<std::string()>& text);
+// sliding_command.cpp: a support with unknown forces as JSON members ("distribution": "unknown", … and
+// "power": {…}) written into the answer's object, for sliding and limit-surface alike.
+void write_unknown_distribution(Json_writer& w, const Support_item& r);
+void write_power_over(Json_writer& w, const Support_item& r);
 // "scene: NAME" (or the source when the scene has no name), the first line of every text answer.
 std::string scene_line(const std::string& name, const std::string& source);
 
@@ -130,20 +131,34 @@ std::string region_sentence(const std::string& shape, const std::vector<std::str
 // The per-scene commands' JSON answers, shared by the single commands (`wrenchkit COMMAND --json`),
 // `wrenchkit batch COMMAND` and any other front end.
 //
-// A Scene_answer maps one scene text to the command's --json answer: one line, no newline, exactly
-// what `wrenchkit COMMAND --json SCENE` prints. `source` names the text in messages. It throws
-// Input_error for a bad scene (exit 2), Undecided (exit 3), Self_check_failure (exit 4), and
-// Usage_error when the options cannot apply to this scene (limit-surface's --sides on a large
-// support). It may be called from several threads at once.
-using Scene_answer = std::function<std::string(const std::string& scene_text, const std::string& source)>;
+// A Scene_answer writes one scene text's --json answer into `w` (exact/io/json_writer.h): the members of
+// the answer's object, into the object the caller opened, so that `wrenchkit COMMAND --json SCENE`
+// prints exactly them in braces on one line (json_answer) and batch puts its "line" member first.
+// `source` names the text in messages. It throws Input_error for a bad scene (exit 2), Undecided
+// (exit 3), Self_check_failure (exit 4), and Usage_error when the options cannot apply to this scene
+// (limit-surface's --sides on a large support), having written nothing or a part the caller drops.
+// It may be called from several threads at once (each with its own writer).
+using Scene_answer =
+    std::function<void(Json_writer& w, const std::string& scene_text, const std::string& source)>;
+
+// One --json answer: the members `write(Json_writer&)` writes, in braces, as one line's text (no newline).
+template <class Write>
+std::string json_answer(Write&& write, std::size_t reserve = 512) {
+  Json_writer w(reserve);
+  w.object();
+  write(w);
+  w.end_object();
+  return w.take();
+}
 
 // A per-scene command from its parts: `read` takes its options once (before any scene), `answer` answers one
-// scene through the pipeline, `json` and `to_text` write the answer. per_scene gives its batch form (the
-// command's --json answer per scene text); run_per_scene answers one scene and writes it.
+// scene through the pipeline, `json` (Json_writer&, options, item) writes the answer's members and `to_text`
+// its text. per_scene gives its batch form (the command's --json answer per scene text); run_per_scene
+// answers one scene and writes it.
 template <class Read, class Answer, class Json>
 Scene_answer per_scene(const Options& o, Read read, Answer answer, Json json) {
-  return [o, opts = read(o), answer, json](const std::string& text, const std::string& source) {
-    return json(opts, answer(opts, o, text, source));
+  return [o, opts = read(o), answer, json](Json_writer& w, const std::string& text, const std::string& source) {
+    json(w, opts, answer(opts, o, text, source));
   };
 }
 template <class Read, class Answer, class Json, class Text>
@@ -151,7 +166,7 @@ int run_per_scene(const Options& o, const std::string& text, const std::string& 
                   Json json, Text to_text) {
   const auto opts = read(o);
   const auto item = answer(opts, o, text, source);
-  return write_answer(o, [&] { return json(opts, item); }, [&] { return to_text(opts, item, source); });
+  return write_answer(o, [&](Json_writer& w) { json(w, opts, item); }, [&] { return to_text(opts, item, source); });
 }
 
 // Each command's prepare_*_json reads what it needs of the (already validated) options once, checks
@@ -165,12 +180,12 @@ Scene_answer prepare_analyze_json(const Options& o);
 Scene_answer prepare_limit_surface_json(const Options& o);
 Scene_answer prepare_sliding_json(const Options& o);
 
-// closure_command.cpp, equilibrium_command.cpp (analyze and reference use these pieces): the pipeline's
-// items (exact/pipeline/pipeline.h) written as JSON and as text.
-std::string closure_json(const Options& o, const Closure_item& r, const char* command);
+// closure_command.cpp, equilibrium_command.cpp (analyze uses these pieces): the pipeline's items
+// (exact/pipeline/pipeline.h) written as the members of a JSON answer and as text.
+void write_closure(Json_writer& w, const Options& o, const Closure_item& r, const char* command);
 std::string closure_human(const Closure_item& r);
 int run_closure(const Options& o, const std::string& scene_text, const std::string& source, const char* command);
-std::string equilibrium_json(const Options& o, const Equilibrium_item& r, const char* command);
+void write_equilibrium(Json_writer& w, const Options& o, const Equilibrium_item& r, const char* command);
 std::string equilibrium_human(const Equilibrium_item& r);
 int run_equilibrium(const Options& o, const std::string& scene_text, const std::string& source);
 

@@ -17,6 +17,7 @@
 #include "cli/reference.h"
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 
 namespace wrenchkit::cli {
 
@@ -432,35 +433,42 @@ int run_compare(const Options& o) {
   auto scene_path = [&](const Ref& r) { return (corpus.dir / r.scene_file).string(); };
 
   if (o.json) {
-    std::ostringstream s;
-    s << "{\"command\": \"compare\", \"reference_scenes\": " << corpus.refs.size() << ", \"answered\": " << c.answered
-      << ", \"not_answered\": " << missing << ", \"errors\": " << c.errors << ", \"fields\": {";
-    bool first = true;
+    Json_writer w(4096);
+    w.object().member("command", "compare").member("reference_scenes", corpus.refs.size());
+    w.member("answered", c.answered);
+    w.member("not_answered", missing).member("errors", c.errors).key("fields").object();
     for (const char* f : kFields) {
       const auto it = c.fields.find(f);
       if (it == c.fields.end()) continue;
       const Field_tally& t = it->second;
-      s << (first ? "" : ", ") << "\"" << f << "\": {\"compared\": " << t.compared << ", \"agree\": " << t.agree
-        << ", \"disagree\": " << t.disagree << ", \"no_answer\": " << t.no_answer << "}";
-      first = false;
+      w.key(f).object().member("compared", t.compared).member("agree", t.agree).member("disagree", t.disagree);
+      w.member("no_answer", t.no_answer).end_object();
     }
-    s << "}, \"disagreements\": [";
-    for (std::size_t i = 0; i < c.disagreements.size(); ++i) {
-      const Disagreement& d = c.disagreements[i];
+    w.end_object().key("disagreements").array();
+    const auto text_or_null = [&w](const std::string& x) { x.empty() ? void(w.null()) : void(w.string(x)); };
+    for (const Disagreement& d : c.disagreements) {
       const Ref& r = *d.ref;
-      s << (i ? ", " : "") << "{\"id\": " << json::quote(r.id) << ", \"family\": " << json::quote(r.family)
-        << ", \"epsilon\": " << (r.epsilon.empty() ? "null" : json::quote(r.epsilon))
-        << ", \"side\": " << (r.side.empty() ? "null" : json::quote(r.side)) << ", \"distance\": ";
-      if (r.distance) s << *r.distance;
-      else s << "null";
-      s << ", \"nearest\": " << (r.nearest.empty() ? "null" : json::quote(r.nearest))
-        << ", \"exact_zero_determinants\": " << r.exact_zeros << ", \"near_boundary\": " << (d.near ? "true" : "false")
-        << ", \"field\": " << json::quote(d.field) << ", \"reference\": " << json::quote(d.reference)
-        << ", \"answer\": " << json::quote(d.answer) << ", \"scene_file\": " << json::quote(scene_path(r)) << "}";
+      w.object().member("id", r.id).member("family", r.family);
+      w.key("epsilon");
+      text_or_null(r.epsilon);
+      w.key("side");
+      text_or_null(r.side);
+      w.key("distance");
+      if (r.distance) {
+        std::ostringstream x;  // the stream's default format (%g, 6 significant digits)
+        x << *r.distance;
+        w.raw(x.str());
+      } else {
+        w.null();
+      }
+      w.key("nearest");
+      text_or_null(r.nearest);
+      w.member("exact_zero_determinants", r.exact_zeros).member("near_boundary", d.near).member("field", d.field);
+      w.member("reference", d.reference).member("answer", d.answer).member("scene_file", scene_path(r)).end_object();
     }
-    s << "], \"near_boundary\": " << near_count << ", \"far_from_boundary\": " << c.disagreements.size() - near_count
-      << ", \"agree\": " << (c.disagreements.empty() ? "true" : "false") << "}\n";
-    std::cout << s.str();
+    w.end_array().member("near_boundary", near_count).member("far_from_boundary", c.disagreements.size() - near_count);
+    w.member("agree", c.disagreements.empty()).end_object();
+    std::cout << w.str() << "\n";
   } else {
     std::ostringstream s;
     s << "reference: " << corpus.refs.size() << " scenes; answers: " << c.answered << " (" << missing

@@ -5,18 +5,17 @@
 #include <string>
 
 #include "cli/common.h"
-#include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 #include "exact/io/streaming_scene_reader.h"
 
 namespace wrenchkit::cli {
 
-std::string equilibrium_json(const Options& o, const Equilibrium_item& r, const char* command) {
+void write_equilibrium(Json_writer& w, const Options& o, const Equilibrium_item& r, const char* command) {
   const Wrench& l = r.answer.load;
-  return "{\"command\": \"" + std::string(command) + "\", \"name\": " + json::quote(r.name) +
-         ", \"mode\": \"" + mode_name(o.mode) + "\", \"decided_by\": \"" + r.answer.decided_by() + "\", \"balanced\": " +
-         (r.answer.balanced ? "true" : "false") + ", \"load\": [" + json::quote(to_string(l.fx)) + ", " +
-         json::quote(to_string(l.fy)) + ", " + json::quote(to_string(l.m)) + "], \"generators\": " +
-         std::to_string(r.answer.generators) + ", \"certificate_checked\": true, \"certificate\": " + r.certificate + "}";
+  w.member("command", command).member("name", r.name).member("mode", mode_name(o.mode));
+  w.member("decided_by", r.answer.decided_by()).member("balanced", r.answer.balanced);
+  w.key("load").array().rational(l.fx).rational(l.fy).rational(l.m).end_array();
+  w.member("generators", r.answer.generators).member("certificate_checked", true).key("certificate").raw(r.certificate);
 }
 
 std::string equilibrium_human(const Equilibrium_item& r) {
@@ -48,9 +47,9 @@ std::string equilibrium_human(const Equilibrium_item& r) {
 }
 
 Scene_answer prepare_equilibrium_json(const Options& o) {
-  return [o, request = request_of(o)](const std::string& text, const std::string& source) {
+  return [o, request = request_of(o)](Json_writer& w, const std::string& text, const std::string& source) {
     thread_local Scene scratch;
-    return equilibrium_json(o, answered(answer_equilibrium(text, source, request, scratch)), "equilibrium");
+    write_equilibrium(w, o, answered(answer_equilibrium(text, source, request, scratch)), "equilibrium");
   };
 }
 
@@ -59,7 +58,7 @@ int run_equilibrium(const Options& o, const std::string& scene_text, const std::
   const Equilibrium_item r = answered(answer_equilibrium(scene_text, source, request_of(o), scene));
   if (!o.certificate_file.empty()) write_file(o.certificate_file, r.certificate + "\n");
   if (o.json) {
-    std::cout << equilibrium_json(o, r, "equilibrium") << "\n";
+    std::cout << json_answer([&](Json_writer& w) { write_equilibrium(w, o, r, "equilibrium"); }) << "\n";
   } else {
     std::cout << "scene: " << (r.name.empty() ? source : r.name) << "\n"
               << equilibrium_human(r) << "certificate accepted by the independent checker (exact arithmetic)\n";

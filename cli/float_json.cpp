@@ -34,18 +34,20 @@ std::string bound_number(double e) { return float_number(e == 0 ? 0.0 : e * (1 +
 
 }  // namespace
 
-std::string float_point_json(const fl::Point2& p) { return "[" + float_number(p.x.v) + ", " + float_number(p.y.v) + "]"; }
-std::string float_bounds_json(const fl::Point2& p) {
-  return "[" + bound_number(shown_bound(p.x, float_number(p.x.v))) + ", " +
-         bound_number(shown_bound(p.y, float_number(p.y.v))) + "]";
+void write_float_point(Json_writer& w, const fl::Point2& p) {
+  w.array().raw(float_number(p.x.v)).raw(float_number(p.y.v)).end_array();
+}
+void write_float_bounds(Json_writer& w, const fl::Point2& p) {
+  w.array().raw(bound_number(shown_bound(p.x, float_number(p.x.v))));
+  w.raw(bound_number(shown_bound(p.y, float_number(p.y.v)))).end_array();
 }
 
 namespace {
 
-std::string list(const std::vector<fl::Point2>& v, std::string (*f)(const fl::Point2&)) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + f(v[i]);
-  return s + "]";
+void write_list(Json_writer& w, const std::vector<fl::Point2>& v, void (*f)(Json_writer&, const fl::Point2&)) {
+  w.array();
+  for (const fl::Point2& p : v) f(w, p);
+  w.end_array();
 }
 
 fl::Point2 exact_point(double x, double y) { return {fl::Bounded::exact(x), fl::Bounded::exact(y)}; }
@@ -65,18 +67,25 @@ std::string float_value_text(const fl::Bounded& b) {
   return std::string(s) + t;
 }
 
-std::string float_value_json(const fl::Bounded& b) {
-  if (!std::isfinite(b.v) || !std::isfinite(b.e)) return "null";
+void write_float_value(Json_writer& w, const fl::Bounded& b) {
+  if (!std::isfinite(b.v) || !std::isfinite(b.e)) {
+    w.null();
+    return;
+  }
   const std::string v = float_number(b.v);
-  return "{\"value\": " + v + ", \"bound\": " + bound_number(shown_bound(b, v)) + "}";
+  w.object().key("value").raw(v).key("bound").raw(bound_number(shown_bound(b, v))).end_object();
 }
 
-std::string float_load_json(const fl::Load_twin& l) {
-  if (!l.decided) return "null";
-  std::string s = "{\"load\": [" + float_value_json(l.load[0]) + ", " + float_value_json(l.load[1]) + ", " +
-                  float_value_json(l.load[2]) + "], \"facet_points\": [";
-  for (std::size_t i = 0; i < l.facet_points.size(); ++i) s += (i ? ", " : "") + std::to_string(l.facet_points[i]);
-  return s + "]}";
+void write_float_load(Json_writer& w, const fl::Load_twin& l) {
+  if (!l.decided) {
+    w.null();
+    return;
+  }
+  w.object().key("load").array();
+  for (const fl::Bounded& x : l.load) write_float_value(w, x);
+  w.end_array().key("facet_points").array();
+  for (const auto i : l.facet_points) w.integer(i);
+  w.end_array().end_object();
 }
 
 std::string float_load_text(const fl::Load_twin& l) {
@@ -86,27 +95,37 @@ std::string float_load_text(const fl::Load_twin& l) {
   return s;
 }
 
-std::string float_region_json(const fl::Region2& r) {
+void write_float_region(Json_writer& w, const fl::Region2& r) {
   std::vector<fl::Point2> v = r.vertices, d = r.directions;
   if (r.shape == fl::Region2::Shape::plane) {  // as the exact format: the origin and the four axes
     v = {exact_point(0, 0)};
     d = {exact_point(1, 0), exact_point(0, 1), exact_point(-1, 0), exact_point(0, -1)};
   }
-  return std::string("{\"empty\": ") + (r.shape == fl::Region2::Shape::empty ? "true" : "false") + ", \"shape\": \"" +
-         fl::shape_name(r.shape) + "\", \"vertices\": " + list(v, float_point_json) +
-         ", \"vertex_bounds\": " + list(v, float_bounds_json) + ", \"directions\": " + list(d, float_point_json) +
-         ", \"direction_bounds\": " + list(d, float_bounds_json) + "}";
+  w.object().member("empty", r.shape == fl::Region2::Shape::empty).member("shape", fl::shape_name(r.shape));
+  write_list(w.key("vertices"), v, write_float_point);
+  write_list(w.key("vertex_bounds"), v, write_float_bounds);
+  write_list(w.key("directions"), d, write_float_point);
+  write_list(w.key("direction_bounds"), d, write_float_bounds);
+  w.end_object();
 }
 
-std::string float_infinity_json(const fl::Arc2& a) {
+void write_float_infinity(Json_writer& w, const fl::Arc2& a) {
+  w.array();
   switch (a.shape) {
-    case fl::Arc2::Shape::zero: return "[]";
-    case fl::Arc2::Shape::ray: return "[{\"direction\": " + float_point_json(a.extreme[0]) + "}]";
+    case fl::Arc2::Shape::zero: break;
+    case fl::Arc2::Shape::ray: write_float_point(w.object().key("direction"), a.extreme[0]); break;
     case fl::Arc2::Shape::wedge:
-      return "[{\"from\": " + float_point_json(a.extreme[0]) + ", \"to\": " + float_point_json(a.extreme[1]) + "}]";
-    case fl::Arc2::Shape::full: return "[{\"from\": [1, 0], \"to\": [1, 0], \"full\": true}]";
+      write_float_point(w.object().key("from"), a.extreme[0]);
+      write_float_point(w.key("to"), a.extreme[1]);
+      break;
+    case fl::Arc2::Shape::full:
+      write_float_point(w.object().key("from"), exact_point(1, 0));
+      write_float_point(w.key("to"), exact_point(1, 0));
+      w.member("full", true);
+      break;
   }
-  return "[]";
+  if (a.shape != fl::Arc2::Shape::zero) w.end_object();
+  w.end_array();
 }
 
 std::string float_region_text(const fl::Region2& r) {
@@ -129,10 +148,15 @@ std::string float_infinity_text(const fl::Arc2& a) {
   return "?";
 }
 
-std::string float_dual_point_json(const fl::Dual_point_twin& p) {
-  if (p.sheet == 'i') return "{\"sheet\": \"infinity\", \"direction\": " + float_point_json(p.at) + "}";
-  return std::string("{\"sheet\": \"") + p.sheet + "\", \"point\": " + float_point_json(p.at) +
-         ", \"bounds\": " + float_bounds_json(p.at) + "}";
+void write_float_dual_point(Json_writer& w, const fl::Dual_point_twin& p) {
+  w.object();
+  if (p.sheet == 'i') {
+    write_float_point(w.member("sheet", "infinity").key("direction"), p.at);
+  } else {
+    write_float_point(w.member("sheet", std::string_view(&p.sheet, 1)).key("point"), p.at);
+    write_float_bounds(w.key("bounds"), p.at);
+  }
+  w.end_object();
 }
 
 }  // namespace wrenchkit::cli

@@ -9,26 +9,28 @@
 
 #include <string>
 
+#include "exact/io/json_writer.h"
 #include "exact/pipeline/labels_answer.h"   // the twin's values the pipeline answers with
 #include "exact/pipeline/support_answer.h"
 
 namespace wrenchkit::cli {
 
-std::string float_number(double x);                  // shortest round-trip decimal (%.17g), finite
-std::string float_point_json(const fl::Point2& p);    // [x, y]
-std::string float_bounds_json(const fl::Point2& p);   // [ex, ey]
-std::string float_region_json(const fl::Region2& r);  // REGION with numbers and bounds
-std::string float_infinity_json(const fl::Arc2& a);   // [] | [{"direction"}] | [{"from", "to"}] | full circle
+std::string float_number(double x);  // shortest round-trip decimal (%.17g), finite
+// Each written into `w` (exact/io/json_writer.h) as one value.
+void write_float_point(Json_writer& w, const fl::Point2& p);    // [x, y]
+void write_float_bounds(Json_writer& w, const fl::Point2& p);   // [ex, ey]
+void write_float_region(Json_writer& w, const fl::Region2& r);  // REGION with numbers and bounds
+void write_float_infinity(Json_writer& w, const fl::Arc2& a);   // [] | [{"direction"}] | [{"from", "to"}] | full circle
+void write_float_dual_point(Json_writer& w, const fl::Dual_point_twin& p);
 std::string float_region_text(const fl::Region2& r);  // for people: x ± e
 std::string float_infinity_text(const fl::Arc2& a);
-std::string float_dual_point_json(const fl::Dual_point_twin& p);
 // One value: {"value": v, "bound": e} (e covering the printing of v too), or null without a finite bound;
 // and "v ± e" for people.
-std::string float_value_json(const fl::Bounded& b);
+void write_float_value(Json_writer& w, const fl::Bounded& b);
 std::string float_value_text(const fl::Bounded& b);
 // The true load of a twist: {"load": [VALUE, VALUE, VALUE], "facet_points": [i, …]} (the load is then the
 // facet's centre) or null when the twin could not decide it; and its text.
-std::string float_load_json(const fl::Load_twin& l);
+void write_float_load(Json_writer& w, const fl::Load_twin& l);
 std::string float_load_text(const fl::Load_twin& l);
 
 }  // namespace wrenchkit::cli

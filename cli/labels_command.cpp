@@ -12,7 +12,7 @@
 #include "cli/float_json.h"
 #include "exact/pipeline/labels_answer.h"
 #include "exact/statics/force_dual.h"
-#include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 
 namespace wrenchkit::cli {
 
@@ -61,22 +61,31 @@ std::string labels_human(const Moment_labels& l) {
   return s.str();
 }
 
-std::string wrench_json(const Vec3& w) {
-  return "[" + json::quote(to_string(w[0])) + ", " + json::quote(to_string(w[1])) + ", " + json::quote(to_string(w[2])) + "]";
-}
 
-// "mode", "decided_by", "predicates", "exact_predicates" of an exact or hybrid answer.
-std::string mode_fields(const Labels_item& s) {
+// "mode", "decided_by", "predicates", "exact_predicates" of the answer (--mode float: decided by the twin).
+void write_mode(Json_writer& w, const Labels_item& s) {
+  if (s.mode == Mode::float_only) {
+    w.member("mode", "float").member("decided_by", "float");
+    return;
+  }
   const Wrench_cone& c = s.labels.cone;
-  const char* by = decided_by(s.mode, c.predicates, c.exact_predicates);
-  return std::string(", \"mode\": \"") + mode_name(s.mode) + "\", \"decided_by\": \"" + by +
-         "\", \"predicates\": " + std::to_string(c.predicates) +
-         ", \"exact_predicates\": " + std::to_string(c.exact_predicates);
+  w.member("mode", mode_name(s.mode)).member("decided_by", decided_by(s.mode, c.predicates, c.exact_predicates));
+  w.member("predicates", c.predicates).member("exact_predicates", c.exact_predicates);
 }
 
-std::string float_labels_fields(const fl::Labels_twin& l) {
-  return "\"plus\": " + float_region_json(l.plus) + ", \"minus\": " + float_region_json(l.minus) +
-         ", \"both\": [], \"infinity\": " + float_infinity_json(l.infinity);
+// "rank", then CLOSED (force_closure or form_closure), then the labels' members (the twin's under --mode float).
+void write_labels_members(Json_writer& w, const Labels_item& s, const char* closed) {
+  if (s.mode == Mode::float_only) w.member("rank", 3);
+  else w.member("rank", s.labels.cone.rank);
+  w.member(closed, s.closed());
+  if (s.mode != Mode::float_only) {
+    write_labels(w, s.labels);
+    return;
+  }
+  write_float_region(w.key("plus"), s.twin.plus);
+  write_float_region(w.key("minus"), s.twin.minus);
+  w.key("both").array().end_array();
+  write_float_infinity(w.key("infinity"), s.twin.infinity);
 }
 
 std::string float_labels_human(const fl::Labels_twin& l) {
@@ -89,10 +98,10 @@ std::string float_labels_human(const fl::Labels_twin& l) {
 }
 
 // The scene's load read on the labels: balanced ⇔ −w ∈ W (theory.md §5.5).
-std::string load_json(const Labels_item& s) {
-  if (!s.load) return "";
-  return ", \"load\": {\"wrench\": " + wrench_json(*s.load) + ", \"balanced\": " + (*s.load_balanced ? "true" : "false") +
-         "}";
+void write_load(Json_writer& w, const Labels_item& s) {
+  if (!s.load) return;
+  w.key("load").object().key("wrench").rationals(*s.load);
+  w.member("balanced", *s.load_balanced).end_object();
 }
 
 // labels: the optional --resultant query (its numbers read where the options are parsed).
@@ -126,98 +135,108 @@ Labels_item label(const Options& o, const Labels_query& q, const std::string& te
   return answered(answer_labels(text, source, request_of(o), q));
 }
 
-const char* kFloatMode = ", \"mode\": \"float\", \"decided_by\": \"float\"";
-
-std::string resultant_json(const Labels_query& q, const Labels_item& s) {
-  if (!q.resultant) return "";
-  return ", \"resultant\": {\"wrench\": " + wrench_json(*q.resultant) + ", \"possible\": " +
-         (*s.resultant_possible ? "true" : "false") + "}";
+void write_resultant(Json_writer& w, const Labels_query& q, const Labels_item& s) {
+  if (!q.resultant) return;
+  w.key("resultant").object().key("wrench").rationals(*q.resultant);
+  w.member("possible", *s.resultant_possible).end_object();
 }
 
-std::string labels_json(const Labels_item& s, const Labels_query& q) {
-  const bool fm = s.mode == Mode::float_only;
-  return "{\"command\": \"labels\", \"name\": " + json::quote(s.scene.name) + ", \"reading\": \"friction\"" +
-         (fm ? std::string(kFloatMode) : mode_fields(s)) + ", \"rank\": " +
-         (fm ? std::string("3") : std::to_string(s.labels.cone.rank)) + ", \"force_closure\": " +
-         (s.closed() ? "true" : "false") + ", " + (fm ? float_labels_fields(s.twin) : labels_json_fields(s.labels)) +
-         resultant_json(q, s) + load_json(s) + "}";
+void write_labels_answer(Json_writer& w, const Labels_item& s, const Labels_query& q) {
+  w.member("command", "labels").member("name", s.scene.name).member("reading", "friction");
+  write_mode(w, s);
+  write_labels_members(w, s, "force_closure");
+  write_resultant(w, q, s);
+  write_load(w, s);
 }
 
-std::string dual_json(const Labels_item& s) {
-  const Force_dual& d = *s.dual;
-  std::ostringstream j;
-  const auto pts = [](const std::vector<Vec2>& v) {
-    std::string r = "[";
-    for (std::size_t i = 0; i < v.size(); ++i) r += (i ? ", " : "") + point_json(v[i]);
-    return r + "]";
-  };
-  j << "{\"command\": \"dual\", \"name\": " << json::quote(s.scene.name) << mode_fields(s) << ", \"covers_all\": "
-    << (d.covers_all ? "true" : "false") << ", \"plus_sheet\": " << pts(d.plus_sheet.vertices)
-    << ", \"minus_sheet\": " << pts(d.minus_sheet.vertices) << ", \"infinity\": " << infinity_json(d.infinity)
-    << ", \"plus_region\": " << region_json(d.plus_sheet) << ", \"minus_region\": " << region_json(d.minus_sheet)
-    << ", \"generators\": [";
-  for (std::size_t i = 0; i < s.generators.size(); ++i)
-    j << (i ? ", " : "") << "{\"contact\": " << s.generators[i].contact << ", \"edge\": \""
-      << edge_name(s.generators[i].edge) << "\", \"dual\": " << dual_point_json(d.generators[i]) << "}";
-  j << "], \"reference\": ";
-  if (d.reference)
-    j << "{\"point\": " << point_json(*d.reference) << ", \"polygon\": " << region_json(d.about_reference) << "}";
-  else
-    j << "null";
-  if (s.load) {
-    const Vec3& w = *s.load;
-    j << ", \"load\": {\"antipode\": " << dual_point_json(dual_point({-w[0], -w[1], -w[2]}))
-      << ", \"balanced\": " << (*s.load_balanced ? "true" : "false") << "}";
+// The generators' members of dual: [{"contact", "edge", "dual": DUAL POINT}, …].
+template <class Point>
+void write_generators(Json_writer& w, const Labels_item& s, const std::vector<Point>& duals,
+                      void (*write_dual)(Json_writer&, const Point&)) {
+  w.key("generators").array();
+  for (std::size_t i = 0; i < s.generators.size(); ++i) {
+    w.object().member("contact", s.generators[i].contact).member("edge", edge_name(s.generators[i].edge));
+    write_dual(w.key("dual"), duals[i]);
+    w.end_object();
   }
-  j << "}";
-  return j.str();
+  w.end_array();
 }
 
-std::string float_dual_json(const Labels_item& s) {
-  const fl::Dual_twin& d = *s.twin_dual;
-  std::ostringstream j;
-  const auto pts = [](const fl::Region2& r) {
-    std::string x = "[";
-    for (std::size_t i = 0; i < r.vertices.size(); ++i) x += (i ? ", " : "") + float_point_json(r.vertices[i]);
-    return x + "]";
+void write_dual_answer(Json_writer& w, const Labels_item& s) {
+  const Force_dual& d = *s.dual;
+  const auto pts = [&w](const std::vector<Vec2>& v) {
+    w.array();
+    for (const Vec2& p : v) write_point(w, p);
+    w.end_array();
   };
-  j << "{\"command\": \"dual\", \"name\": " << json::quote(s.scene.name) << kFloatMode
-    << ", \"covers_all\": " << (d.covers_all ? "true" : "false") << ", \"plus_sheet\": " << pts(d.plus_sheet)
-    << ", \"minus_sheet\": " << pts(d.minus_sheet) << ", \"infinity\": " << float_infinity_json(d.infinity)
-    << ", \"plus_region\": " << float_region_json(d.plus_sheet)
-    << ", \"minus_region\": " << float_region_json(d.minus_sheet) << ", \"generators\": [";
-  for (std::size_t i = 0; i < s.generators.size(); ++i)
-    j << (i ? ", " : "") << "{\"contact\": " << s.generators[i].contact << ", \"edge\": \""
-      << edge_name(s.generators[i].edge) << "\", \"dual\": " << float_dual_point_json(s.twin_dual_points[i]) << "}";
-  j << "], \"reference\": null";  // the reference-point picture is exact only
-  if (s.load)
-    j << ", \"load\": {\"antipode\": " << float_dual_point_json(*s.twin_antipode) << ", \"balanced\": "
-      << (*s.load_balanced ? "true" : "false") << "}";
-  j << "}";
-  return j.str();
+  w.member("command", "dual").member("name", s.scene.name);
+  write_mode(w, s);
+  w.member("covers_all", d.covers_all);
+  w.key("plus_sheet");
+  pts(d.plus_sheet.vertices);
+  w.key("minus_sheet");
+  pts(d.minus_sheet.vertices);
+  write_infinity(w.key("infinity"), d.infinity);
+  write_region(w.key("plus_region"), d.plus_sheet);
+  write_region(w.key("minus_region"), d.minus_sheet);
+  write_generators(w, s, d.generators, write_dual_point);
+  w.key("reference");
+  if (d.reference) {
+    write_point(w.object().key("point"), *d.reference);
+    write_region(w.key("polygon"), d.about_reference);
+    w.end_object();
+  } else {
+    w.null();
+  }
+  if (s.load) {
+    const Vec3& x = *s.load;
+    write_dual_point(w.key("load").object().key("antipode"), dual_point({-x[0], -x[1], -x[2]}));
+    w.member("balanced", *s.load_balanced).end_object();
+  }
 }
 
-// ', "query": {…}' of reuleaux with a motion (every mode).
-std::string query_json(const Labels_query& q, const Labels_item& s) {
-  if (!q.motion) return "";
+void write_float_dual_answer(Json_writer& w, const Labels_item& s) {
+  const fl::Dual_twin& d = *s.twin_dual;
+  const auto pts = [&w](const fl::Region2& r) {
+    w.array();
+    for (const fl::Point2& p : r.vertices) write_float_point(w, p);
+    w.end_array();
+  };
+  w.member("command", "dual").member("name", s.scene.name);
+  write_mode(w, s);
+  w.member("covers_all", d.covers_all);
+  w.key("plus_sheet");
+  pts(d.plus_sheet);
+  w.key("minus_sheet");
+  pts(d.minus_sheet);
+  write_float_infinity(w.key("infinity"), d.infinity);
+  write_float_region(w.key("plus_region"), d.plus_sheet);
+  write_float_region(w.key("minus_region"), d.minus_sheet);
+  write_generators(w, s, s.twin_dual_points, write_float_dual_point);
+  w.key("reference").null();  // the reference-point picture is exact only
+  if (s.load) {
+    write_float_dual_point(w.key("load").object().key("antipode"), *s.twin_antipode);
+    w.member("balanced", *s.load_balanced).end_object();
+  }
+}
+
+// The "query" member of reuleaux with a motion (every mode).
+void write_query(Json_writer& w, const Labels_query& q, const Labels_item& s) {
+  if (!q.motion) return;
   const Mode_answer& m = *s.modes;
-  const std::array<Rational, 3> ta = {(*q.motion)[0], (*q.motion)[1], (*q.motion)[2]};
-  std::string j = ", \"query\": {" + twist_json(ta) + ", \"feasible\": " + (m.feasible ? "true" : "false") +
-                  ", \"marginal\": " + (m.marginal ? "true" : "false") + ", \"modes\": [";
+  w.key("query").object();
+  write_twist(w, {(*q.motion)[0], (*q.motion)[1], (*q.motion)[2]});
+  w.member("feasible", m.feasible).member("marginal", m.marginal).key("modes").array();
   for (std::size_t i = 0; i < m.modes.size(); ++i)
-    j += (i ? ", " : "") + std::string("{\"contact\": ") + std::to_string(i) + ", \"mode\": \"" + mode_name(m.modes[i]) +
-         "\"}";
-  return j + "]}";
+    w.object().member("contact", i).member("mode", mode_name(m.modes[i])).end_object();
+  w.end_array().end_object();
 }
 
-std::string reuleaux_json(const Labels_item& s, const Labels_query& q) {
-  const bool fm = s.mode == Mode::float_only;
-  std::string j = "{\"command\": \"reuleaux\", \"name\": " + json::quote(s.scene.name) +
-                  ", \"reading\": \"frictionless\"" + (fm ? std::string(kFloatMode) : mode_fields(s)) + ", \"rank\": " +
-                  (fm ? std::string("3") : std::to_string(s.labels.cone.rank)) + ", \"form_closure\": " +
-                  (s.closed() ? "true" : "false") + ", " +
-                  (fm ? float_labels_fields(s.twin) : labels_json_fields(s.labels));
-  return j + query_json(q, s) + "}";
+void write_reuleaux_answer(Json_writer& w, const Labels_item& s, const Labels_query& q) {
+  w.member("command", "reuleaux").member("name", s.scene.name).member("reading", "frictionless");
+  write_mode(w, s);
+  write_labels_members(w, s, "form_closure");
+  write_query(w, q, s);
 }
 
 std::string decided_line(const Labels_item& s) {
@@ -238,21 +257,22 @@ std::string human_labels(const Labels_item& s) {
 }  // namespace
 
 Scene_answer prepare_labels_json(const Options& o) {
-  return [o, q = labels_query(o)](const std::string& text, const std::string& source) {
-    return labels_json(label(o, q, text, source), q);
+  return [o, q = labels_query(o)](Json_writer& w, const std::string& text, const std::string& source) {
+    write_labels_answer(w, label(o, q, text, source), q);
   };
 }
 
 Scene_answer prepare_dual_json(const Options& o) {
-  return [o, q = dual_query(o)](const std::string& text, const std::string& source) {
+  return [o, q = dual_query(o)](Json_writer& w, const std::string& text, const std::string& source) {
     const Labels_item s = label(o, q, text, source);
-    return s.mode == Mode::float_only ? float_dual_json(s) : dual_json(s);
+    if (s.mode == Mode::float_only) write_float_dual_answer(w, s);
+    else write_dual_answer(w, s);
   };
 }
 
 Scene_answer prepare_reuleaux_json(const Options& o) {
-  return [o, q = reuleaux_query(o)](const std::string& text, const std::string& source) {
-    return reuleaux_json(label(o, q, text, source), q);
+  return [o, q = reuleaux_query(o)](Json_writer& w, const std::string& text, const std::string& source) {
+    write_reuleaux_answer(w, label(o, q, text, source), q);
   };
 }
 
@@ -315,20 +335,23 @@ std::string reuleaux_text(const Labels_item& s, const Labels_query& q, const std
 int run_labels(const Options& o, const std::string& text, const std::string& source) {
   const Labels_query q = labels_query(o);
   const Labels_item s = label(o, q, text, source);
-  return write_answer(o, [&] { return labels_json(s, q); }, [&] { return labels_text(s, q, source); });
+  const auto json = [&](Json_writer& w) { write_labels_answer(w, s, q); };
+  return write_answer(o, json, [&] { return labels_text(s, q, source); });
 }
 
 int run_dual(const Options& o, const std::string& text, const std::string& source) {
   const Labels_item s = label(o, dual_query(o), text, source);
-  return write_answer(
-      o, [&] { return s.mode == Mode::float_only ? float_dual_json(s) : dual_json(s); },
-      [&] { return dual_text(s, source); });
+  const auto json = [&](Json_writer& w) {
+    s.mode == Mode::float_only ? write_float_dual_answer(w, s) : write_dual_answer(w, s);
+  };
+  return write_answer(o, json, [&] { return dual_text(s, source); });
 }
 
 int run_reuleaux(const Options& o, const std::string& text, const std::string& source) {
   const Labels_query q = reuleaux_query(o);
   const Labels_item s = label(o, q, text, source);
-  return write_answer(o, [&] { return reuleaux_json(s, q); }, [&] { return reuleaux_text(s, q, source); });
+  const auto json = [&](Json_writer& w) { write_reuleaux_answer(w, s, q); };
+  return write_answer(o, json, [&] { return reuleaux_text(s, q, source); });
 }
 
 }  // namespace wrenchkit::cli

@@ -12,7 +12,7 @@
 #include "cli/float_json.h"
 #include "cli/render_limit_surface.h"
 #include "exact/io/input_error.h"
-#include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
@@ -34,41 +34,35 @@ struct Ls_options {
   bool list = false;
 };
 
-std::string jq(const Rational& q) { return json::quote(to_string(q)); }
-std::string jv(const Vec3q& v) { return "[" + jq(v[0]) + ", " + jq(v[1]) + ", " + jq(v[2]) + "]"; }
-std::string jz(const Vec3z& v) {
-  return "[" + json::quote(v[0].get_str()) + ", " + json::quote(v[1].get_str()) + ", " + json::quote(v[2].get_str()) + "]";
-}
 std::string tv(const Vec3q& v) { return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")"; }
 std::string tz(const Vec3z& v) { return "(" + v[0].get_str() + ", " + v[1].get_str() + ", " + v[2].get_str() + ")"; }
 
-std::string face_json(const Ls_face& f) {
-  std::string s = "{\"dimension\": " + std::to_string(f.dimension) + ", \"vertices\": [";
-  for (std::size_t i = 0; i < f.vertices.size(); ++i) s += (i ? ", " : "") + jv(f.vertices[i]);
-  return s + "]}";
+void write_face(Json_writer& w, const Ls_face& f) {
+  w.object().member("dimension", f.dimension).key("vertices").array();
+  for (const Vec3q& v : f.vertices) w.rationals(v);
+  w.end_array().end_object();
 }
 
-std::string polytope_json(const Ls_polytope& P, bool list) {
+void write_polytope(Json_writer& w, const Ls_polytope& P, bool list) {
   std::size_t rot = 0;
   for (const Ls_facet& f : P.facets) rot += f.support_point >= 0;
-  std::string s = "{\"dimension\": " + std::to_string(P.dimension) + ", \"facets\": " + std::to_string(P.facets.size()) +
-                  ", \"vertices\": " + std::to_string(P.vertices.size()) + ", \"edges\": " + std::to_string(P.edges) +
-                  ", \"rotation_facets\": " + std::to_string(rot);
+  w.object().member("dimension", P.dimension).member("facets", P.facets.size()).member("vertices", P.vertices.size());
+  w.member("edges", P.edges).member("rotation_facets", rot);
   if (list) {
-    s += ", \"facet_list\": [";
-    for (std::size_t i = 0; i < P.facets.size(); ++i) {
-      const Ls_facet& f = P.facets[i];
-      s += (i ? ", " : "") + std::string("{\"normal\": ") + jz(f.normal) + ", \"b\": " + jq(f.b) + ", \"vertices\": [";
-      for (std::size_t j = 0; j < f.vertices.size(); ++j) s += (j ? ", " : "") + std::to_string(f.vertices[j]);
-      s += "]";
-      if (f.support_point >= 0) s += ", \"rotation_about_support_point\": " + std::to_string(f.support_point);
-      s += "}";
+    w.key("facet_list").array();
+    for (const Ls_facet& f : P.facets) {
+      w.object().key("normal").rationals(f.normal);
+      w.member("b", f.b).key("vertices").array();
+      for (const int v : f.vertices) w.integer(v);
+      w.end_array();
+      if (f.support_point >= 0) w.member("rotation_about_support_point", f.support_point);
+      w.end_object();
     }
-    s += "], \"vertex_list\": [";
-    for (std::size_t i = 0; i < P.vertices.size(); ++i) s += (i ? ", " : "") + jv(P.vertices[i]);
-    s += "]";
+    w.end_array().key("vertex_list").array();
+    for (const Vec3q& v : P.vertices) w.rationals(v);
+    w.end_array();
   }
-  return s + "}";
+  w.end_object();
 }
 
 std::string off_text(const Ls_polytope& in, const Ls_polytope& out) {
@@ -114,7 +108,7 @@ std::string obj_text(const Ls_polytope& in, const Ls_polytope& out) {
 }
 
 std::string gauge_text(const std::optional<Rational>& g) { return g ? human_number(*g) : std::string("infinite"); }
-std::string gauge_json(const std::optional<Rational>& g) { return g ? jq(*g) : std::string("null"); }
+void write_gauge(Json_writer& w, const std::optional<Rational>& g) { g ? w.rational(*g) : w.null(); }
 
 // The options, combined once (before any scene): --sides or --tolerance (resolved to N here), --twist,
 // --load, the exports and --list (each already validated where it was parsed).
@@ -146,21 +140,20 @@ Ls_options limit_surface_options(const Options& o) {
   return lo;
 }
 
-std::string bounded_json(const fl::Bounded& b) { return float_value_json(b); }
 std::string bounded_text(const fl::Bounded& b) { return float_value_text(b); }
 
-// The true surface's fields (hybrid and float): ', "true_power": …, "true_load": …'.
-std::string true_json(const Support_item& r) {
-  if (!r.true_power) return "";
-  return ", \"true_power\": " + bounded_json(*r.true_power) + ", \"true_load\": " + float_load_json(*r.true_load);
+// The true surface's members (hybrid and float): "true_power", "true_load".
+void write_true(Json_writer& w, const Support_item& r) {
+  if (!r.true_power) return;
+  write_float_value(w.key("true_power"), *r.true_power);
+  write_float_load(w.key("true_load"), *r.true_load);
 }
 
-// ', "certificate_checked": true, "certificate": {…}' when the motion has a certificate (the independent checker
-// accepted it); ', "uncertified": "…"' when a verdict found no rational witness and is reported undecided.
-std::string certificate_fields(const Support_item& r) {
-  if (!r.certificate.empty()) return ", \"certificate_checked\": true, \"certificate\": " + r.certificate;
-  if (!r.uncertified.empty()) return ", \"uncertified\": " + json::quote(r.uncertified);
-  return "";
+// "certificate_checked": true, "certificate": {…} when the motion has a certificate (the independent checker
+// accepted it); "uncertified": "…" when a verdict found no rational witness and is reported undecided.
+void write_certificate_members(Json_writer& w, const Support_item& r) {
+  if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
+  else if (!r.uncertified.empty()) w.member("uncertified", r.uncertified);
 }
 
 std::string certificate_line(const Support_item& r) {
@@ -169,13 +162,14 @@ std::string certificate_line(const Support_item& r) {
   return "";
 }
 
-std::string motion_fields(const Support_item& r) {
-  std::string s = std::string(", \"motion_decided_by\": \"") + r.motion.decided_by + "\"";
-  if (r.motion.cells) s += ", \"search_twists\": " + std::to_string(r.motion.cells);
-  if (std::string(r.motion.decided_by) == "float" && r.motion.motion == Motion::slides)
-    s += ", \"witness_twist\": [" + float_number(r.motion.witness[0]) + ", " + float_number(r.motion.witness[1]) + ", " +
-         float_number(r.motion.witness[2]) + "]";
-  return s;
+void write_motion(Json_writer& w, const Support_item& r) {
+  w.member("motion_decided_by", r.motion.decided_by);
+  if (r.motion.cells) w.member("search_twists", r.motion.cells);
+  if (std::string(r.motion.decided_by) == "float" && r.motion.motion == Motion::slides) {
+    w.key("witness_twist").array();
+    for (const double x : r.motion.witness) w.raw(float_number(x));
+    w.end_array();
+  }
 }
 
 // The scene's answer through the pipeline; a failure unwinds as the CLI's Failure.
@@ -199,48 +193,61 @@ std::string ratio_text(const Directions& d) {
   return buf;
 }
 
-std::string limit_surface_json(const Ls_options& lo, const Support_item& r) {
+void write_limit_surface(Json_writer& w, const Ls_options& lo, const Support_item& r) {
   const Polygonal_ls& model = *r.model;
   const Directions& d = model.directions();
   const Ls_support& sup = model.support();
   const Sliding_answer& sa = r.sliding;
-  std::ostringstream s;
-  s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \""
-    << mode_name(lo.mode) << "\", \"convention\": " << json::quote(kConvention) << ", \"sides\": " << lo.sides;
-  if (lo.tolerance) s << ", \"tolerance\": " << jq(*lo.tolerance) << ", \"direction_sets_tried\": " << lo.sets_built;
-  s << ", \"lambda_squared\": " << jq(d.lambda_sq) << ", \"relative_error_bound_approx\": " << ratio_text(d)
-    << ", \"support\": {\"input_points\": " << r.scene.support->points.size() << ", \"points\": " << sup.points.size()
-    << ", \"collinear\": " << (sup.collinear ? "true" : "false") << ", \"mu_f0\": " << jq(sa.mu_f0)
-    << ", \"center_of_friction\": [" << jq(sa.center_of_friction.x) << ", " << jq(sa.center_of_friction.y)
-    << "]}, \"dimension\": " << model.dimension();
-  if (r.polytopes_built)
-    s << ", \"inner\": " << polytope_json(r.in, lo.list) << ", \"outer\": " << polytope_json(r.out, lo.list);
-  else
-    s << ", \"polytopes\": false";  // a query alone: answered without them (--sides or --list builds them)
+  w.member("command", "limit-surface").member("name", r.scene.name).member("mode", mode_name(lo.mode));
+  w.member("convention", kConvention).member("sides", lo.sides);
+  if (lo.tolerance) w.member("tolerance", *lo.tolerance).member("direction_sets_tried", lo.sets_built);
+  w.member("lambda_squared", d.lambda_sq).key("relative_error_bound_approx").raw(ratio_text(d));
+  w.key("support").object().member("input_points", r.scene.support->points.size()).member("points", sup.points.size());
+  w.member("collinear", sup.collinear).member("mu_f0", sa.mu_f0).key("center_of_friction").array();
+  w.rational(sa.center_of_friction.x).rational(sa.center_of_friction.y).end_array().end_object();
+  w.member("dimension", model.dimension());
+  if (r.polytopes_built) {
+    write_polytope(w.key("inner"), r.in, lo.list);
+    write_polytope(w.key("outer"), r.out, lo.list);
+  } else {
+    w.member("polytopes", false);  // a query alone: answered without them (--sides or --list builds them)
+  }
   if (lo.twist) {
-    s << ", \"twist\": " << jv(*lo.twist) << ", \"load_for_twist\": {\"inner\": " << face_json(sa.inner_face)
-      << ", \"outer\": " << face_json(sa.outer_face) << ", \"power\": {\"inner\": " << jq(sa.h_inner)
-      << ", \"outer\": " << jq(sa.h_outer) << "}, \"true_surface\": {\"kind\": \""
-      << (sa.cls.kind == Twist_kind::facet ? "facet" : (sa.cls.kind == Twist_kind::vertex ? "vertex" : "smooth"))
-      << "\", \"text\": " << json::quote(sa.cls.text) << "}" << true_json(r) << "}";
+    w.key("twist").rationals(*lo.twist);
+    write_face(w.key("load_for_twist").object().key("inner"), sa.inner_face);
+    write_face(w.key("outer"), sa.outer_face);
+    w.key("power").object().member("inner", sa.h_inner).member("outer", sa.h_outer).end_object();
+    w.key("true_surface").object();
+    const char* kinds[] = {"facet", "vertex", "smooth"};
+    w.member("kind", kinds[static_cast<int>(sa.cls.kind)]);
+    w.member("text", sa.cls.text).end_object();
+    write_true(w, r);
+    w.end_object();
   }
   if (lo.load) {
-    auto cone_json = [&](const Polygonal_ls::Normal_cone& c) {
-      std::string t = "{\"generators\": [";
-      for (std::size_t i = 0; i < c.generators.size(); ++i) t += (i ? ", " : "") + jz(c.generators[i]);
-      t += "], \"lineality\": [";
-      for (std::size_t i = 0; i < c.lineality.size(); ++i) t += (i ? ", " : "") + jz(c.lineality[i]);
-      return t + "]}";
+    const auto cone = [&w](const char* key, const Polygonal_ls::Normal_cone& c) {
+      w.key(key).object().key("generators").array();
+      for (const Vec3z& g : c.generators) w.rationals(g);
+      w.end_array().key("lineality").array();
+      for (const Vec3z& g : c.lineality) w.rationals(g);
+      w.end_array().end_object();
     };
-    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\"" << motion_fields(r);
-    if (r.polytopes_built)
-      s << ", \"gauge\": {\"outer\": " << gauge_json(r.gauge_out) << ", \"inner\": " << gauge_json(r.gauge_in) << "}";
-    s << certificate_fields(r);
-    if (r.polytopes_built && r.motion.motion != Motion::sticks)
-      s << ", \"twist_cone\": {\"outer\": " << cone_json(r.cone_out) << ", \"inner\": " << cone_json(r.cone_in) << "}";
+    w.key("load").rationals(*lo.load);
+    w.member("motion", motion_name(r.motion.motion));
+    write_motion(w, r);
+    if (r.polytopes_built) {
+      write_gauge(w.key("gauge").object().key("outer"), r.gauge_out);
+      write_gauge(w.key("inner"), r.gauge_in);
+      w.end_object();
+    }
+    write_certificate_members(w, r);
+    if (r.polytopes_built && r.motion.motion != Motion::sticks) {
+      w.key("twist_cone").object();
+      cone("outer", r.cone_out);
+      cone("inner", r.cone_in);
+      w.end_object();
+    }
   }
-  s << "}";
-  return s.str();
 }
 
 std::string limit_surface_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
@@ -307,26 +314,32 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
 
 // --mode float: the twin alone (no exact polytopes). Its direction set is the exact engine's (the same
 // integer parameters, core/limit_surface_directions.h), so its λ² and polygonal powers bracket the exact ones.
-std::string limit_surface_float_json(const Ls_options& lo, const Support_item& r) {
+void write_limit_surface_float(Json_writer& w, const Ls_options& lo, const Support_item& r) {
   const fl::Directions_twin& d = *r.twin_directions;
   const fl::Point2& cof = r.twin_center_of_friction;
-  const fl::Bounded& mu_f0 = r.twin_mu_f0;
-  std::ostringstream s;
-  s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"float\""
-    << ", \"convention\": " << json::quote(kConvention) << ", \"sides\": " << lo.sides;
-  if (lo.tolerance) s << ", \"tolerance\": " << jq(*lo.tolerance);
-  s << ", \"lambda_squared\": " << bounded_json(d.lambda_sq) << ", \"support\": {\"input_points\": "
-    << r.scene.support->points.size() << ", \"points\": " << r.twin.size() << ", \"mu_f0\": " << bounded_json(mu_f0)
-    << ", \"center_of_friction\": [" << bounded_json(cof.x) << ", " << bounded_json(cof.y) << "]}";
-  if (lo.twist)
-    s << ", \"twist\": " << jv(*lo.twist) << ", \"load_for_twist\": {\"power\": {\"inner\": "
-      << bounded_json(*r.twin_power_inner) << ", \"outer\": " << bounded_json(*r.twin_power_outer) << "}"
-      << true_json(r) << "}";
-  if (lo.load)
-    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_name(r.motion.motion) << "\"" << motion_fields(r)
-      << certificate_fields(r);
-  s << "}";
-  return s.str();
+  w.member("command", "limit-surface").member("name", r.scene.name).member("mode", "float");
+  w.member("convention", kConvention).member("sides", lo.sides);
+  if (lo.tolerance) w.member("tolerance", *lo.tolerance);
+  write_float_value(w.key("lambda_squared"), d.lambda_sq);
+  w.key("support").object().member("input_points", r.scene.support->points.size()).member("points", r.twin.size());
+  write_float_value(w.key("mu_f0"), r.twin_mu_f0);
+  write_float_value(w.key("center_of_friction").array(), cof.x);
+  write_float_value(w, cof.y);
+  w.end_array().end_object();
+  if (lo.twist) {
+    w.key("twist").rationals(*lo.twist);
+    write_float_value(w.key("load_for_twist").object().key("power").object().key("inner"), *r.twin_power_inner);
+    write_float_value(w.key("outer"), *r.twin_power_outer);
+    w.end_object();
+    write_true(w, r);
+    w.end_object();
+  }
+  if (lo.load) {
+    w.key("load").rationals(*lo.load);
+    w.member("motion", motion_name(r.motion.motion));
+    write_motion(w, r);
+    write_certificate_members(w, r);
+  }
 }
 
 std::string limit_surface_float_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
@@ -359,35 +372,35 @@ std::string limit_surface_float_human(const Ls_options& lo, const Support_item& 
 
 // An unknown distribution (docs/theory-sliding.md §2): the admissible set, the power over it for --twist,
 // and for --load whether it sticks for every distribution, slides for every one, or depends, with witnesses.
-std::string limit_surface_unknown_json(const Ls_options& lo, const Support_item& r) {
-  std::ostringstream s;
-  s << "{\"command\": \"limit-surface\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \""
-    << mode_name(r.mode) << "\", \"convention\": " << json::quote(kConvention) << ", \"sides\": " << lo.sides
-    << unknown_distribution_fields(r);
-  if (lo.twist) s << ", \"twist\": " << jv(*lo.twist) << power_over_fields(r);
-  if (lo.load) {
-    const Motion_over_f& m = *r.motion_over;
-    s << ", \"load\": " << jv(*lo.load) << ", \"motion\": \"" << motion_over_name(m.motion)
-      << "\", \"motion_decided_by\": \"" << m.decided_by << "\", \"per_extreme_distribution\": [";
-    for (std::size_t i = 0; i < m.per_vertex.size(); ++i) s << (i ? ", " : "") << "\"" << motion_name(m.per_vertex[i]) << "\"";
-    s << "]";
-    if (m.motion == Motion_over::depends) {
-      s << ", \"witnesses\": {\"sticks\": ";
-      if (m.sticking) {
-        s << "{\"distribution\": " << distribution_json(m.sticking->distribution) << ", \"support_forces\": [";
-        for (std::size_t i = 0; i < m.sticking->forces.size(); ++i)
-          s << (i ? ", " : "") << "[" << jq(m.sticking->forces[i].x) << ", " << jq(m.sticking->forces[i].y) << "]";
-        s << "]}";
-      } else {
-        s << "{\"distribution\": " << distribution_json(r.vertices[*m.sticking_vertex]) << "}";
-      }
-      s << ", \"slides\": {\"distribution\": " << distribution_json(r.vertices[*m.sliding_vertex]) << "}}";
-    }
-    if (m.separating_twist) s << ", \"separating_twist\": " << jv(*m.separating_twist);
-    s << certificate_fields(r);
+void write_limit_surface_unknown(Json_writer& w, const Ls_options& lo, const Support_item& r) {
+  w.member("command", "limit-surface").member("name", r.scene.name).member("mode", mode_name(r.mode));
+  w.member("convention", kConvention).member("sides", lo.sides);
+  write_unknown_distribution(w, r);
+  if (lo.twist) {
+    w.key("twist").rationals(*lo.twist);
+    write_power_over(w, r);
   }
-  s << "}";
-  return s.str();
+  if (!lo.load) return;
+  const Motion_over_f& m = *r.motion_over;
+  w.key("load").rationals(*lo.load).member("motion", motion_over_name(m.motion));
+  w.member("motion_decided_by", m.decided_by);
+  w.key("per_extreme_distribution").array();
+  for (const Motion v : m.per_vertex) w.string(motion_name(v));
+  w.end_array();
+  if (m.motion == Motion_over::depends) {
+    w.key("witnesses").object().key("sticks").object();
+    if (m.sticking) {
+      w.key("distribution").rationals(m.sticking->distribution).key("support_forces").array();
+      for (const auto& f : m.sticking->forces) w.array().rational(f.x).rational(f.y).end_array();
+      w.end_array();
+    } else {
+      w.key("distribution").rationals(r.vertices[*m.sticking_vertex]);
+    }
+    w.end_object().key("slides").object().key("distribution").rationals(r.vertices[*m.sliding_vertex]);
+    w.end_object().end_object();
+  }
+  if (m.separating_twist) w.key("separating_twist").rationals(*m.separating_twist);
+  write_certificate_members(w, r);
 }
 
 std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
@@ -431,9 +444,10 @@ std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item
 
 // The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone, or
 // the exact answer).
-std::string answer_json(const Ls_options& lo, const Support_item& r) {
-  if (r.admissible) return limit_surface_unknown_json(lo, r);
-  return lo.mode == Mode::float_only ? limit_surface_float_json(lo, r) : limit_surface_json(lo, r);
+void answer_json(Json_writer& w, const Ls_options& lo, const Support_item& r) {
+  if (r.admissible) write_limit_surface_unknown(w, lo, r);
+  else if (lo.mode == Mode::float_only) write_limit_surface_float(w, lo, r);
+  else write_limit_surface(w, lo, r);
 }
 
 std::string answer_text(const Ls_options& lo, const Support_item& r, const std::string& source) {
@@ -462,7 +476,7 @@ int run_limit_surface(const Options& o, const std::string& text, const std::stri
   if (!lo.off_file.empty()) write_file(lo.off_file, off_text(r.in, r.out));
   if (!lo.obj_file.empty()) write_file(lo.obj_file, obj_text(r.in, r.out));
   if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.sides));
-  return write_answer(o, [&] { return answer_json(lo, r); }, [&] { return answer_text(lo, r, source); });
+  return write_answer(o, [&](Json_writer& w) { answer_json(w, lo, r); }, [&] { return answer_text(lo, r, source); });
 }
 
 }  // namespace wrenchkit::cli

@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -15,6 +14,7 @@
 #include "exact/statics/boundary_distance.h"
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/statics/moment_labels.h"
 #include "exact/io/scene_writer.h"
@@ -43,14 +43,14 @@ std::uint64_t splitmix64(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
-std::string jq(const Rational& q) { return json::quote(to_string(q)); }
-std::string jv(const Vec3q& v) { return "[" + jq(v[0]) + ", " + jq(v[1]) + ", " + jq(v[2]) + "]"; }
-std::string jd(double d) {  // a double for reading, as a JSON number
+void write_double(Json_writer& w, double d) {  // a double for reading, as a JSON number
   char b[32];
   std::snprintf(b, sizeof b, "%.3g", d);
-  return b;
+  w.raw(b);
 }
-std::string jd(const std::optional<double>& d) { return d ? jd(*d) : "null"; }
+void write_double(Json_writer& w, const std::optional<double>& d) { d ? write_double(w, *d) : void(w.null()); }
+// A text, or null when it is empty.
+void write_text_or_null(Json_writer& w, const std::string& s) { s.empty() ? void(w.null()) : void(w.string(s)); }
 
 // The canonical text (exact/io/scene_writer.h) on one line: newlines (never inside strings, which
 // json::quote escapes) and their indentation removed.
@@ -109,22 +109,28 @@ std::vector<Entry> corpus_entries(const Reference_options& ro) {
   return out;
 }
 
-std::string flip_json(const std::optional<Friction_flip>& f) {
-  if (!f) return "null";
-  return "{\"flips_between\": [" + jq(f->lo) + ", " + jq(f->hi) + "], \"distance\": " + jd(f->distance) + "}";
+void write_flip(Json_writer& w, const std::optional<Friction_flip>& f) {
+  if (!f) {
+    w.null();
+    return;
+  }
+  w.object().key("flips_between").array().rational(f->lo).rational(f->hi).end_array();
+  write_double(w.key("distance"), f->distance);
+  w.end_object();
 }
 
-std::string boundary_json(const Boundary_distance& b, const std::string& epsilon, bool load) {
-  std::string s = "{\"epsilon\": " + (epsilon.empty() ? std::string("null") : epsilon) +
-                  ", \"distance\": " + jd(b.distance) + ", \"nearest\": " +
-                  (b.nearest.empty() ? std::string("null") : json::quote(b.nearest)) +
-                  ", \"exact_zero_determinants\": " + std::to_string(b.exact_zeros()) +
-                  ", \"min_relative_determinant\": {\"force_closure\": " + jd(b.force.min_relative) +
-                  ", \"form_closure\": " + jd(b.form.min_relative);
-  if (load) s += ", \"equilibrium\": " + jd(b.equilibrium.min_relative);
-  s += "}, \"friction_scale\": {\"force_closure\": " + flip_json(b.closure_flip);
-  if (load) s += ", \"equilibrium\": " + flip_json(b.equilibrium_flip);
-  return s + "}}";
+void write_boundary(Json_writer& w, const Boundary_distance& b, const std::string& epsilon, bool load) {
+  w.object().key("epsilon");
+  epsilon.empty() ? w.null() : w.raw(epsilon);
+  write_double(w.key("distance"), b.distance);
+  write_text_or_null(w.key("nearest"), b.nearest);
+  w.member("exact_zero_determinants", b.exact_zeros());
+  write_double(w.key("min_relative_determinant").object().key("force_closure"), b.force.min_relative);
+  write_double(w.key("form_closure"), b.form.min_relative);
+  if (load) write_double(w.key("equilibrium"), b.equilibrium.min_relative);
+  write_flip(w.end_object().key("friction_scale").object().key("force_closure"), b.closure_flip);
+  if (load) write_flip(w.key("equilibrium"), b.equilibrium_flip);
+  w.end_object().end_object();
 }
 
 // The twists at which the power is bracketed: translations along x and y, a rotation about the
@@ -135,27 +141,26 @@ std::vector<Vec3q> reference_twists(const Ls_support& s) {
   return t;
 }
 
-std::string limit_surface_json(const Scene& scene, int sides) {
+void write_limit_surface(Json_writer& w, const Scene& scene, int sides) {
   const Polygonal_ls model(merge_support(*scene.support), make_directions(sides));
   if (model.candidate_count() > kMaxCandidates) throw Usage_error("--sides: too many for the corpus' supports");
   const Ls_polytope in = model.build(Side::inner), out = model.build(Side::outer);
   const Sliding_answer base = compute_sliding(model, std::nullopt);
-  std::string s = "{\"sides\": " + std::to_string(sides) + ", \"lambda_squared\": " +
-                  jq(model.directions().lambda_sq) + ", \"dimension\": " + std::to_string(model.dimension()) +
-                  ", \"center_of_friction\": [" + jq(base.center_of_friction.x) + ", " +
-                  jq(base.center_of_friction.y) + "], \"mu_f0\": " + jq(base.mu_f0) + ", \"inner\": {\"facets\": " +
-                  std::to_string(in.facets.size()) + ", \"vertices\": " + std::to_string(in.vertices.size()) +
-                  "}, \"outer\": {\"facets\": " + std::to_string(out.facets.size()) + ", \"vertices\": " +
-                  std::to_string(out.vertices.size()) + "}, \"twists\": [";
+  w.object().member("sides", sides).member("lambda_squared", model.directions().lambda_sq);
+  w.member("dimension", model.dimension()).key("center_of_friction").array();
+  w.rational(base.center_of_friction.x).rational(base.center_of_friction.y).end_array().member("mu_f0", base.mu_f0);
+  w.key("inner").object().member("facets", in.facets.size()).member("vertices", in.vertices.size()).end_object();
+  w.key("outer").object().member("facets", out.facets.size()).member("vertices", out.vertices.size()).end_object();
   const char* kinds[] = {"facet", "vertex", "smooth"};
-  const std::vector<Vec3q> twists = reference_twists(model.support());
-  for (std::size_t i = 0; i < twists.size(); ++i) {
-    const Sliding_answer a = compute_sliding(model, twists[i]);
-    s += (i ? ", " : "") + std::string("{\"twist\": ") + jv(twists[i]) + ", \"h_inner\": " + jq(a.h_inner) +
-         ", \"h_outer\": " + jq(a.h_outer) + ", \"power_bracket\": [" + jq(a.h_lo) + ", " + jq(a.h_hi) +
-         "], \"true_surface\": \"" + kinds[static_cast<int>(a.cls.kind)] + "\"}";
+  w.key("twists").array();
+  for (const Vec3q& t : reference_twists(model.support())) {
+    const Sliding_answer a = compute_sliding(model, t);
+    w.object().key("twist").rationals(t);
+    w.member("h_inner", a.h_inner).member("h_outer", a.h_outer);
+    w.key("power_bracket").array().rational(a.h_lo).rational(a.h_hi).end_array();
+    w.member("true_surface", kinds[static_cast<int>(a.cls.kind)]).end_object();
   }
-  return s + "]}";
+  w.end_array().end_object();
 }
 
 // A golden's expected answers against ours: a disagreement is a bug in one of them (exit 4).
@@ -204,26 +209,28 @@ Built build_line(const Entry& e, const Reference_options& ro) {
   const Moment_labels labels = moment_labels(scene, Reading::friction);
   const Boundary_distance bd = boundary_distance(scene);
 
-  std::ostringstream s;
-  const auto str_or_null = [](const std::string& x) { return x.empty() ? std::string("null") : json::quote(x); };
-  s << "{\"id\": " << json::quote(e.id) << ", \"family\": " << json::quote(e.family)
-    << ", \"epsilon\": " << str_or_null(e.epsilon) << ", \"side\": " << str_or_null(e.side)
-    << ", \"seed\": " << str_or_null(e.seed) << ", \"source\": " << str_or_null(e.source)
-    << ", \"scene_file\": " << json::quote("scenes/" + e.id + ".json") << ", \"scene\": " << text
-    << ", \"force_closure\": " << (c.force.holds ? "true" : "false")
-    << ", \"form_closure\": " << (c.form.holds ? "true" : "false") << ", \"rank\": {\"force\": " << c.force.rank
-    << ", \"form\": " << c.form.rank << "}";
+  Json_writer w(8192);
+  w.object().member("id", e.id).member("family", e.family);
+  write_text_or_null(w.key("epsilon"), e.epsilon);
+  write_text_or_null(w.key("side"), e.side);
+  write_text_or_null(w.key("seed"), e.seed);
+  write_text_or_null(w.key("source"), e.source);
+  w.member("scene_file", "scenes/" + e.id + ".json").key("scene").raw(text);
+  w.member("force_closure", c.force.holds).member("form_closure", c.form.holds);
+  w.key("rank").object().member("force", c.force.rank).member("form", c.form.rank).end_object();
   if (eq) {
     const Wrench& l = eq->answer.load;
-    s << ", \"equilibrium\": " << (eq->answer.balanced ? "true" : "false") << ", \"load\": [" << jq(l.fx) << ", "
-      << jq(l.fy) << ", " << jq(l.m) << "]";
+    w.member("equilibrium", eq->answer.balanced);
+    w.key("load").array().rational(l.fx).rational(l.fy).rational(l.m).end_array();
   }
-  s << ", \"labels\": {" << labels_json_fields(labels) << "}";
-  if (scene.support) s << ", \"limit_surface\": " << limit_surface_json(scene, ro.sides);
-  s << ", \"certificates\": {\"force_closure\": " << c.force_certificate << ", \"form_closure\": " << c.form_certificate;
-  if (eq) s << ", \"equilibrium\": " << eq->certificate;
-  s << "}, \"boundary\": " << boundary_json(bd, e.epsilon, eq.has_value()) << "}";
-  b.line = s.str();
+  write_labels(w.key("labels").object(), labels);
+  w.end_object();
+  if (scene.support) write_limit_surface(w.key("limit_surface"), scene, ro.sides);
+  w.key("certificates").object().key("force_closure").raw(c.force_certificate);
+  w.key("form_closure").raw(c.form_certificate);
+  if (eq) w.key("equilibrium").raw(eq->certificate);
+  write_boundary(w.end_object().key("boundary"), bd, e.epsilon, eq.has_value());
+  b.line = w.end_object().take();
   b.certificates = eq ? 3 : 2;
   b.csv = e.id + "," + (c.force.holds ? "true" : "false") + "," + (c.form.holds ? "true" : "false") + "," +
           (eq ? (eq->answer.balanced ? "true" : "false") : "");
@@ -291,14 +298,15 @@ int run_reference(const Options& o) {
   }
   write_text(tmp / "reference.jsonl", jsonl);
   write_text(tmp / "expected.csv", csv);
-  std::string eps = "[";
-  for (int k : kEpsilonExponents) eps += (eps.size() > 1 ? ", \"1e-" : "\"1e-") + std::to_string(k) + "\"";
-  const std::string manifest =
-      "{\"wrenchkit_reference\": 1, \"generator\": \"wrenchkit 0.1.0\", \"format\": \"docs/reference-format.md\", "
-      "\"seed\": \"" + std::to_string(ro.seed) + "\", \"cases\": " + std::to_string(ro.cases) +
-      ", \"random\": " + std::to_string(ro.random) + ", \"sides\": " + std::to_string(ro.sides) +
-      ", \"epsilons\": " + eps + "], \"scenes\": " + std::to_string(corpus.ids.size()) +
-      ", \"files\": {\"corpus\": \"reference.jsonl\", \"scenes\": \"scenes/\", \"verdicts\": \"expected.csv\"}}\n";
+  Json_writer m(512);
+  m.object().member("wrenchkit_reference", 1).member("generator", "wrenchkit 0.1.0");
+  m.member("format", "docs/reference-format.md").member("seed", std::to_string(ro.seed)).member("cases", ro.cases);
+  m.member("random", ro.random).member("sides", ro.sides);
+  m.key("epsilons").array();
+  for (int k : kEpsilonExponents) m.string("1e-" + std::to_string(k));
+  m.end_array().member("scenes", corpus.ids.size()).key("files").object().member("corpus", "reference.jsonl");
+  m.member("scenes", "scenes/").member("verdicts", "expected.csv").end_object().end_object();
+  const std::string manifest = m.take() + "\n";
   write_text(tmp / "manifest.json", manifest);
   fs::remove_all(dir, ec);
   fs::rename(tmp, dir, ec);
@@ -306,8 +314,10 @@ int run_reference(const Options& o) {
 
   const std::size_t certificates = corpus.certificates;
   if (o.json)
-    std::cout << "{\"command\": \"reference\", \"out\": " << json::quote(out_dir) << ", \"scenes\": " << corpus.ids.size()
-              << ", \"certificates_checked\": " << certificates << ", \"bytes\": " << jsonl.size() << "}\n";
+    std::cout << json_answer([&](Json_writer& w) {
+      w.member("command", "reference").member("out", out_dir).member("scenes", corpus.ids.size());
+      w.member("certificates_checked", certificates).member("bytes", jsonl.size());
+    }) << "\n";
   else
     std::cout << "wrote " << corpus.ids.size() << " scenes to " << out_dir << "/reference.jsonl (" << jsonl.size()
               << " bytes), scenes/, expected.csv, manifest.json\n"

@@ -9,7 +9,7 @@
 #include "cli/common.h"
 #include "cli/float_json.h"
 #include "exact/io/input_error.h"
-#include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/sliding.h"
 #include "exact/io/streaming_scene_reader.h"
@@ -18,43 +18,38 @@
 namespace wrenchkit::cli {
 
 // An unknown distribution (docs/theory-sliding.md §1–§2), for sliding and limit-surface alike.
-std::string distribution_json(const std::vector<Rational>& f) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < f.size(); ++i) s += (i ? ", " : "") + json::quote(to_string(f[i]));
-  return s + "]";
-}
-
-std::string unknown_distribution_fields(const Support_item& r) {
+void write_unknown_distribution(Json_writer& w, const Support_item& r) {
   const Admissible& a = *r.admissible;
-  std::string s = ", \"distribution\": \"unknown\", \"unknown_points\": [";
-  for (std::size_t k = 0; k < a.unknown.size(); ++k) s += (k ? ", " : "") + std::to_string(a.unknown[k]);
-  s += "], \"weight\": " + json::quote(to_string(*r.scene.support->weight)) + ", \"pressure_center\": [" +
-       json::quote(to_string(r.pressure_center.x)) + ", " + json::quote(to_string(r.pressure_center.y)) +
-       "], \"extreme_distributions\": ";
-  if (a.unknown.size() > kMaxEnumeratedUnknowns) return s + "null";
-  s += "[";
-  for (std::size_t v = 0; v < r.vertices.size(); ++v) s += (v ? ", " : "") + distribution_json(r.vertices[v]);
-  return s + "]";
+  w.member("distribution", "unknown").key("unknown_points").array();
+  for (const auto k : a.unknown) w.integer(k);
+  w.end_array().member("weight", *r.scene.support->weight);
+  w.key("pressure_center").array().rational(r.pressure_center.x).rational(r.pressure_center.y).end_array();
+  w.key("extreme_distributions");
+  if (a.unknown.size() > kMaxEnumeratedUnknowns) {
+    w.null();
+    return;
+  }
+  w.array();
+  for (const std::vector<Rational>& f : r.vertices) w.rationals(f);
+  w.end_array();
 }
 
-std::string power_over_fields(const Support_item& r) {
-  return ", \"power\": {\"lower\": " + json::quote(to_string(r.power->lower)) + ", \"upper\": " +
-         json::quote(to_string(r.power->upper)) + ", \"min_distribution\": " +
-         distribution_json(r.power->min_distribution) + ", \"max_distribution\": " +
-         distribution_json(r.power->max_distribution) + "}";
+void write_power_over(Json_writer& w, const Support_item& r) {
+  w.key("power").object().member("lower", r.power->lower).member("upper", r.power->upper);
+  w.key("min_distribution").rationals(r.power->min_distribution);
+  w.key("max_distribution").rationals(r.power->max_distribution).end_object();
 }
 
 namespace {
 
-std::string jq(const Rational& q) { return json::quote(to_string(q)); }
-std::string jv(const Vec3q& v) { return "[" + jq(v[0]) + ", " + jq(v[1]) + ", " + jq(v[2]) + "]"; }
 std::string thv(const Vec3q& v) {
   return "(" + human_number(v[0]) + ", " + human_number(v[1]) + ", " + human_number(v[2]) + ")";
 }
-std::string face_json(const Ls_face& f) {
-  std::string s = "{\"dimension\": " + std::to_string(f.dimension) + ", \"vertices\": [";
-  for (std::size_t i = 0; i < f.vertices.size(); ++i) s += (i ? ", " : "") + jv(f.vertices[i]);
-  return s + "]}";
+void write_pair(Json_writer& w, const Rational& x, const Rational& y) { w.array().rational(x).rational(y).end_array(); }
+void write_face(Json_writer& w, const Ls_face& f) {
+  w.object().member("dimension", f.dimension).key("vertices").array();
+  for (const Vec3q& v : f.vertices) w.rationals(v);
+  w.end_array().end_object();
 }
 
 // The options (validated where they were parsed): --twist (not zero) and --sides (default 64).
@@ -82,25 +77,26 @@ Support_item compute(const Sliding_options& so, const Options& o, const std::str
 }
 
 // The float twin's values for the twist (hybrid: added to the exact answer).
-std::string true_fields(const Support_item& r) {
-  if (!r.true_power) return "";
-  return ", \"true_power\": " + float_value_json(*r.true_power) + ", \"true_load\": " + float_load_json(*r.true_load);
+void write_true(Json_writer& w, const Support_item& r) {
+  if (!r.true_power) return;
+  write_float_value(w.key("true_power"), *r.true_power);
+  write_float_load(w.key("true_load"), *r.true_load);
 }
 
-std::string sliding_float_json(const Sliding_options& so, const Support_item& r) {
+void write_sliding_float(Json_writer& w, const Sliding_options& so, const Support_item& r) {
   const fl::Point2& cof = r.twin_center_of_friction;
-  const fl::Bounded& mu_f0 = r.twin_mu_f0;
-  std::ostringstream s;
-  s << "{\"command\": \"sliding\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"float\""
-    << ", \"center_of_friction\": [" << float_value_json(cof.x) << ", " << float_value_json(cof.y)
-    << "], \"mu_f0\": " << float_value_json(mu_f0);
-  if (so.twist)
-    s << ", \"twist\": " << jv(*so.twist) << ", \"sides\": " << so.sides << ", \"lambda_squared\": "
-      << float_value_json(r.twin_directions->lambda_sq) << ", \"power\": {\"inner\": "
-      << float_value_json(*r.twin_power_inner) << ", \"outer\": " << float_value_json(*r.twin_power_outer) << "}"
-      << true_fields(r);
-  s << "}";
-  return s.str();
+  w.member("command", "sliding").member("name", r.scene.name).member("mode", "float");
+  write_float_value(w.key("center_of_friction").array(), cof.x);
+  write_float_value(w, cof.y);
+  write_float_value(w.end_array().key("mu_f0"), r.twin_mu_f0);
+  if (so.twist) {
+    w.key("twist").rationals(*so.twist).member("sides", so.sides);
+    write_float_value(w.key("lambda_squared"), r.twin_directions->lambda_sq);
+    write_float_value(w.key("power").object().key("inner"), *r.twin_power_inner);
+    write_float_value(w.key("outer"), *r.twin_power_outer);
+    w.end_object();
+    write_true(w, r);
+  }
 }
 
 std::string sliding_float_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
@@ -121,10 +117,14 @@ const char* kConvention =
     "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
     "the friction wrench on the slider is its negative";
 
-std::string sliding_unknown_json(const Sliding_options& so, const Support_item& r) {
-  return "{\"command\": \"sliding\", \"name\": " + json::quote(r.scene.name) + ", \"mode\": \"" +
-         mode_name(r.mode) + "\", \"convention\": " + json::quote(kConvention) + unknown_distribution_fields(r) +
-         (so.twist ? ", \"twist\": " + jv(*so.twist) + power_over_fields(r) : std::string()) + "}";
+void write_sliding_unknown(Json_writer& w, const Sliding_options& so, const Support_item& r) {
+  w.member("command", "sliding").member("name", r.scene.name).member("mode", mode_name(r.mode));
+  w.member("convention", kConvention);
+  write_unknown_distribution(w, r);
+  if (so.twist) {
+    w.key("twist").rationals(*so.twist);
+    write_power_over(w, r);
+  }
 }
 
 std::string sliding_unknown_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
@@ -150,38 +150,36 @@ std::string sliding_unknown_human(const Sliding_options& so, const Support_item&
   return s.str();
 }
 
-std::string sliding_json(const Sliding_options& so, const Support_item& r) {
+void write_sliding(Json_writer& w, const Sliding_options& so, const Support_item& r) {
   const Sliding_answer& a = r.sliding;
   const char* kinds[] = {"facet", "vertex", "smooth"};
-  std::ostringstream s;
-  s << "{\"command\": \"sliding\", \"name\": " << json::quote(r.scene.name) << ", \"mode\": \"" << mode_name(so.mode)
-    << "\", \"convention\": " << json::quote(kConvention)
-    << ", \"center_of_friction\": [" << jq(a.center_of_friction.x) << ", " << jq(a.center_of_friction.y)
-    << "], \"friction_centroid\": [" << jq(a.friction_centroid.x) << ", " << jq(a.friction_centroid.y)
-    << "], \"mu_f0\": " << jq(a.mu_f0);
-  if (a.has_twist) {
-    s << ", \"twist\": " << jv(a.twist) << ", \"motion\": \"" << (a.translation ? "translation" : "rotation") << "\"";
-    if (a.translation) {
-      s << ", \"load_direction\": " << jv(a.load_direction) << ", \"speed_squared\": " << jq(a.speed_squared)
-        << ", \"load\": " << (a.load ? jv(*a.load) : std::string("null"));
-    } else {
-      s << ", \"rotation_center\": [" << jq(a.rotation_center.x) << ", " << jq(a.rotation_center.y) << "]";
-    }
-    s << ", \"true_surface\": {\"kind\": \"" << kinds[static_cast<int>(a.cls.kind)] << "\", \"text\": "
-      << json::quote(a.cls.text);
-    if (a.cls.support_point >= 0) {
-      const Ls_point& p = r.model->support().points[static_cast<std::size_t>(a.cls.support_point)];
-      s << ", \"facet_disc\": {\"at\": [" << jq(p.at.x) << ", " << jq(p.at.y) << "], \"radius\": " << jq(p.rho) << "}";
-    }
-    s << "}, \"sides\": " << so.sides << ", \"lambda_squared\": " << jq(r.model->directions().lambda_sq)
-      << ", \"power\": {\"inner\": " << jq(a.h_inner) << ", \"outer\": " << jq(a.h_outer) << ", \"lower\": "
-      << jq(a.h_lo) << ", \"upper\": " << jq(a.h_hi) << "}, \"load_box\": {\"lower\": " << jv(a.load_lo)
-      << ", \"upper\": " << jv(a.load_hi) << ", \"of\": \""
-      << (a.cls.kind == Twist_kind::facet ? "the facet's centre" : "the load") << "\"}, \"inner_load\": "
-      << face_json(a.inner_face) << ", \"outer_load\": " << face_json(a.outer_face) << true_fields(r);
+  w.member("command", "sliding").member("name", r.scene.name).member("mode", mode_name(so.mode));
+  w.member("convention", kConvention);
+  write_pair(w.key("center_of_friction"), a.center_of_friction.x, a.center_of_friction.y);
+  write_pair(w.key("friction_centroid"), a.friction_centroid.x, a.friction_centroid.y);
+  w.member("mu_f0", a.mu_f0);
+  if (!a.has_twist) return;
+  w.key("twist").rationals(a.twist).member("motion", a.translation ? "translation" : "rotation");
+  if (a.translation) {
+    w.key("load_direction").rationals(a.load_direction).member("speed_squared", a.speed_squared).key("load");
+    a.load ? w.rationals(*a.load) : w.null();
+  } else {
+    write_pair(w.key("rotation_center"), a.rotation_center.x, a.rotation_center.y);
   }
-  s << "}";
-  return s.str();
+  w.key("true_surface").object().member("kind", kinds[static_cast<int>(a.cls.kind)]).member("text", a.cls.text);
+  if (a.cls.support_point >= 0) {
+    const Ls_point& p = r.model->support().points[static_cast<std::size_t>(a.cls.support_point)];
+    write_pair(w.key("facet_disc").object().key("at"), p.at.x, p.at.y);
+    w.member("radius", p.rho).end_object();
+  }
+  w.end_object().member("sides", so.sides).member("lambda_squared", r.model->directions().lambda_sq);
+  w.key("power").object().member("inner", a.h_inner).member("outer", a.h_outer).member("lower", a.h_lo);
+  w.member("upper", a.h_hi).end_object();
+  w.key("load_box").object().key("lower").rationals(a.load_lo).key("upper").rationals(a.load_hi);
+  w.member("of", a.cls.kind == Twist_kind::facet ? "the facet's centre" : "the load").end_object();
+  write_face(w.key("inner_load"), a.inner_face);
+  write_face(w.key("outer_load"), a.outer_face);
+  write_true(w, r);
 }
 
 std::string sliding_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
@@ -214,9 +212,10 @@ std::string sliding_human(const Sliding_options& so, const Support_item& r, cons
 
 // The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone,
 // or the exact answer).
-std::string answer_json(const Sliding_options& so, const Support_item& r) {
-  if (r.admissible) return sliding_unknown_json(so, r);
-  return so.mode == Mode::float_only ? sliding_float_json(so, r) : sliding_json(so, r);
+void answer_json(Json_writer& w, const Sliding_options& so, const Support_item& r) {
+  if (r.admissible) write_sliding_unknown(w, so, r);
+  else if (so.mode == Mode::float_only) write_sliding_float(w, so, r);
+  else write_sliding(w, so, r);
 }
 
 std::string answer_text(const Sliding_options& so, const Support_item& r, const std::string& source) {

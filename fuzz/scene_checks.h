@@ -213,8 +213,8 @@ inline bool check_scene_text(std::string_view text) {
       std::cerr << "labels / dual disagree with closure\n" << printed;
       std::abort();
     }
-    if (wrenchkit::labels_json_fields(wrenchkit::moment_labels(scene, reading, wrenchkit::Mode::hybrid)) !=
-        wrenchkit::labels_json_fields(l)) {
+    if (wrenchkit::labels_json(wrenchkit::moment_labels(scene, reading, wrenchkit::Mode::hybrid)) !=
+        wrenchkit::labels_json(l)) {
       std::cerr << "hybrid labels differ from exact labels\n" << printed;
       std::abort();
     }

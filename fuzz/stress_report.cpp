@@ -160,7 +160,7 @@ void run_contact_case(const families::Case& k, std::uint64_t seed, long index, R
   std::string twin_why = labels_disagreement(lt, le);
   if (lt.decided() && fault("twin")) twin_why = "injected fault";
   if (!twin_why.empty()) ++labels.twin_wrong, report_wrong("labels twin", k, seed, index, twin_why);
-  if (labels_json_fields(lh) != labels_json_fields(le) || fault("hybrid"))
+  if (labels_json(lh) != labels_json(le) || fault("hybrid"))
     ++labels.hybrid_wrong, report_wrong("labels hybrid", k, seed, index, "not the exact labels");
   // The exact labels read back: nothing labeled ⇔ closure (§5.5); the load balanced ⇔ −w ∈ W.
   bool exact_ok;

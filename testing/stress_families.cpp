@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 #include "exact/numbers/rational.h"
 
 namespace wrenchkit::stress {
@@ -42,18 +44,20 @@ namespace {
 
 // The contacts (and optional gravity) as scene text: decimal text of the doubles, as users write it.
 std::string scene_text(const std::vector<Contact_spec>& cs, const Gravity_spec& g) {
-  std::string s = "{\"wrenchkit\": 1, ";
-  if (g.present)
-    s += "\"body\": {\"com\": [" + number_text(g.cx) + ", " + number_text(g.cy) + "]}, \"load\": {\"gravity\": " +
-         number_text(g.w) + "}, ";
-  s += "\"contacts\": [";
-  for (std::size_t i = 0; i < cs.size(); ++i) {
-    const Contact_spec& c = cs[i];
-    s += (i ? ", " : "") + std::string("{\"at\": [") + number_text(c.ax) + ", " + number_text(c.ay) +
-         "], \"normal\": [" + number_text(c.nx) + ", " + number_text(c.ny) + "], \"mu\": " +
-         (c.mu_text.empty() ? number_text(c.mu) : "\"" + c.mu_text + "\"") + "}";
+  Json_writer w(128 + 128 * cs.size());
+  w.object().member("wrenchkit", 1);
+  if (g.present) {
+    w.key("body").object().key("com").array().raw(number_text(g.cx)).raw(number_text(g.cy)).end_array().end_object();
+    w.key("load").object().key("gravity").raw(number_text(g.w)).end_object();
   }
-  return s + "]}";
+  w.key("contacts").array();
+  for (const Contact_spec& c : cs) {
+    w.object().key("at").array().raw(number_text(c.ax)).raw(number_text(c.ay)).end_array();
+    w.key("normal").array().raw(number_text(c.nx)).raw(number_text(c.ny)).end_array().key("mu");
+    c.mu_text.empty() ? w.raw(number_text(c.mu)) : w.string(c.mu_text);
+    w.end_object();
+  }
+  return w.end_array().end_object().take();
 }
 
 // Rotate by a random angle (rational parametrisation, then a random half-turn), scale, translate.
@@ -101,35 +105,44 @@ std::string decimal(int thousandths) {
   return b;
 }
 
-std::string random_support(Rng& r, bool grid) {
+// The member "support" of a random scene.
+void write_random_support(Json_writer& w, Rng& r, bool grid) {
   const int k = r.integer(1, 4);
   static const char* mus[] = {"1/2", "1", "1/3", "0.3"};
   static const char* forces[] = {"1", "1/2", "2", "3/2"};
-  std::string s = ", \"support\": {\"mu\": \"" + std::string(mus[r.integer(0, 3)]) + "\", \"points\": [";
+  w.key("support").object().member("mu", mus[r.integer(0, 3)]).key("points").array();
   for (int i = 0; i < k; ++i) {
     const std::string x = grid ? std::to_string(r.integer(-2, 2)) : decimal(r.integer(-999, 999));
     const std::string y = grid ? std::to_string(r.integer(-2, 2)) : decimal(r.integer(-999, 999));
-    s += (i ? ", " : "") + std::string("{\"at\": [") + x + ", " + y + "], \"force\": \"" + forces[r.integer(0, 3)] + "\"}";
+    w.object().key("at").array().raw(x).raw(y).end_array().member("force", forces[r.integer(0, 3)]).end_object();
   }
-  return s + "]}";
+  w.end_array().end_object();
 }
 
+// Random scenes draw the numbers of one contact (or load) last to first: the order the scenes were
+// first generated in (string concatenation, evaluated right to left by GCC), which the seeds of the
+// reference corpus and of recorded failures name.
 std::string random_generic(Rng& r) {
   const int k = r.integer(3, 8);
-  std::string s = "{\"wrenchkit\": 1, \"contacts\": [";
+  Json_writer w(1024);
+  w.object().member("wrenchkit", 1).key("contacts").array();
   for (int i = 0; i < k; ++i) {
     int nx = r.integer(-999, 999), ny = r.integer(-999, 999);
     if (nx == 0 && ny == 0) nx = 1;
-    s += (i ? ", " : "") + std::string("{\"at\": [") + decimal(r.integer(-999, 999)) + ", " +
-         decimal(r.integer(-999, 999)) + "], \"normal\": [" + std::to_string(nx) + ", " + std::to_string(ny) +
-         "], \"mu\": " + decimal(r.integer(0, 800)) + "}";
+    const std::string mu = decimal(r.integer(0, 800)), ay = decimal(r.integer(-999, 999));
+    const std::string ax = decimal(r.integer(-999, 999));
+    w.object().key("at").array().raw(ax).raw(ay).end_array();
+    w.key("normal").array().integer(nx).integer(ny).end_array().key("mu").raw(mu).end_object();
   }
-  s += "]";
-  if (r.integer(0, 2) == 0)
-    s += ", \"load\": {\"force\": [" + decimal(r.integer(-999, 999)) + ", " + decimal(r.integer(-999, 999)) +
-         "], \"at\": [" + decimal(r.integer(-999, 999)) + ", " + decimal(r.integer(-999, 999)) + "]}";
-  if (r.integer(0, 3) == 0) s += random_support(r, false);
-  return s + "}";
+  w.end_array();
+  if (r.integer(0, 2) == 0) {
+    std::string v[4];  // force x, y, at x, y
+    for (int i = 3; i >= 0; --i) v[i] = decimal(r.integer(-999, 999));
+    w.key("load").object().key("force").array().raw(v[0]).raw(v[1]).end_array();
+    w.key("at").array().raw(v[2]).raw(v[3]).end_array().end_object();
+  }
+  if (r.integer(0, 3) == 0) write_random_support(w, r, false);
+  return w.end_object().take();
 }
 
 std::string random_grid(Rng& r) {
@@ -137,37 +150,42 @@ std::string random_grid(Rng& r) {
   static const int normals[][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 1}, {-1, 1},
                                    {1, -1}, {-1, -1}, {2, 1}, {1, 2}, {-2, 3}, {3, -1}};
   const int k = r.integer(0, 6);
-  std::string s = "{\"wrenchkit\": 1, \"contacts\": [";
+  Json_writer w(1024);
+  w.object().member("wrenchkit", 1).key("contacts").array();
   for (int i = 0; i < k; ++i) {
-    s += i ? ", " : "";
     if (r.integer(0, 11) == 0) {
-      int w[3];
+      int x[3];
       do
-        for (int& x : w) x = r.integer(-2, 2);
-      while (w[0] == 0 && w[1] == 0 && w[2] == 0);
-      s += "{\"wrench\": [" + std::to_string(w[0]) + ", " + std::to_string(w[1]) + ", " + std::to_string(w[2]) + "]}";
+        for (int& c : x) c = r.integer(-2, 2);
+      while (x[0] == 0 && x[1] == 0 && x[2] == 0);
+      w.object().key("wrench").array().integer(x[0]).integer(x[1]).integer(x[2]).end_array().end_object();
     } else {
       const auto& n = normals[r.integer(0, 11)];
       const int len = r.integer(1, 2);
-      s += "{\"at\": [" + std::to_string(r.integer(-3, 3)) + ", " + std::to_string(r.integer(-3, 3)) +
-           "], \"normal\": [" + std::to_string(n[0] * len) + ", " + std::to_string(n[1] * len) + "], \"mu\": \"" +
-           mus[r.integer(0, 6)] + "\"}";
+      const char* mu = mus[r.integer(0, 6)];
+      const int y = r.integer(-3, 3), x = r.integer(-3, 3);
+      w.object().key("at").array().integer(x).integer(y).end_array();
+      w.key("normal").array().integer(n[0] * len).integer(n[1] * len).end_array().member("mu", mu).end_object();
     }
   }
-  s += "]";
+  w.end_array();
   switch (r.integer(0, 3)) {
-    case 0:
-      s += ", \"load\": {\"force\": [" + std::to_string(r.integer(-2, 2)) + ", " + std::to_string(r.integer(-2, 2)) +
-           "], \"at\": [" + std::to_string(r.integer(-3, 3)) + ", " + std::to_string(r.integer(-3, 3)) + "]}";
+    case 0: {
+      const int ay = r.integer(-3, 3), ax = r.integer(-3, 3), fy = r.integer(-2, 2), fx = r.integer(-2, 2);
+      w.key("load").object().key("force").array().integer(fx).integer(fy).end_array();
+      w.key("at").array().integer(ax).integer(ay).end_array().end_object();
       break;
-    case 1:
-      s += ", \"load\": {\"wrench\": [" + std::to_string(r.integer(-2, 2)) + ", " + std::to_string(r.integer(-2, 2)) +
-           ", " + std::to_string(r.integer(-2, 2)) + "]}";
+    }
+    case 1: {
+      int m[3];
+      for (int i = 2; i >= 0; --i) m[i] = r.integer(-2, 2);
+      w.key("load").object().key("wrench").array().integer(m[0]).integer(m[1]).integer(m[2]).end_array().end_object();
       break;
+    }
     default: break;
   }
-  if (r.integer(0, 3) == 0) s += random_support(r, true);
-  return s + "}";
+  if (r.integer(0, 3) == 0) write_random_support(w, r, true);
+  return w.end_object().take();
 }
 
 Family_scene near_degenerate(const Family& f, double eps, Rng& r) {
@@ -258,7 +276,7 @@ std::string exact_text(const Rational& q) {
   int twos = 0, fives = 0;
   while (mpz_divisible_ui_p(den.get_mpz_t(), 2)) den /= 2, ++twos;
   while (mpz_divisible_ui_p(den.get_mpz_t(), 5)) den /= 5, ++fives;
-  if (den != 1) return "\"" + q.get_num().get_str() + "/" + q.get_den().get_str() + "\"";
+  if (den != 1) return json::quote(to_string(q));
   const int e = std::max(twos, fives);
   const Integer m = q.get_num() * (power_of_ten(e) / q.get_den());  // q = m·10^-e exactly
   std::string digits = Integer(abs(m)).get_str();
@@ -283,18 +301,18 @@ struct Exact_contact {
 // The scene text of exact contacts (and an optional tail of members), and the doubles naive code
 // reads from it.
 std::string exact_scene_text(const std::vector<Exact_contact>& cs, std::vector<Contact_spec>* naive = nullptr) {
-  std::string s = "{\"wrenchkit\": 1, \"contacts\": [";
+  Json_writer w(128 + 160 * cs.size());
+  w.object().member("wrenchkit", 1).key("contacts").array();
   if (naive) naive->clear();
-  for (std::size_t i = 0; i < cs.size(); ++i) {
-    const Exact_contact& c = cs[i];
+  for (const Exact_contact& c : cs) {
     const std::string ax = exact_text(c.ax), ay = exact_text(c.ay), nx = exact_text(c.nx), ny = exact_text(c.ny),
                       mu = exact_text(c.mu);
-    s += (i ? ", " : "") + std::string("{\"at\": [") + ax + ", " + ay + "], \"normal\": [" + nx + ", " + ny +
-         "], \"mu\": " + mu + "}";
+    w.object().key("at").array().raw(ax).raw(ay).end_array().key("normal").array().raw(nx).raw(ny).end_array();
+    w.key("mu").raw(mu).end_object();
     if (naive)
       naive->push_back({naive_double(ax), naive_double(ay), naive_double(nx), naive_double(ny), naive_double(mu), ""});
   }
-  return s + "]}";
+  return w.end_array().end_object().take();
 }
 
 // A rotation by exact rationals, c² + s² = 1.
@@ -432,7 +450,9 @@ Family_scene collinear_support(const Family& f, double eps, Rng& r) {
   const int points = r.integer(3, 6);
   const Rational rho_per_force(1, 2);
   Rational px = 0, py = 0, pm = 0;
-  std::string s = "{\"wrenchkit\": 1, \"contacts\": [], \"support\": {\"mu\": \"1/2\", \"points\": [";
+  Json_writer w(256 + 96 * static_cast<std::size_t>(points));
+  w.object().member("wrenchkit", 1).key("contacts").array().end_array();
+  w.key("support").object().member("mu", "1/2").key("points").array();
   for (int i = 0; i < points; ++i) {
     const Rational d = short_decimal(r, 200, 2000, 3) * (r.coin() ? 1 : -1);
     const Rational t = short_decimal(r, 500, 1000, 3) * (r.coin() ? 1 : -1) / (2 * ten_to(k));
@@ -446,10 +466,10 @@ Family_scene collinear_support(const Family& f, double eps, Rng& r) {
     py += rho * vy;
     pm += rho * (x * vy - y * vx);
     const std::string xt = exact_text(x), yt = exact_text(y);
-    s += (i ? ", " : "") + std::string("{\"at\": [") + xt + ", " + yt + "], \"force\": " + std::to_string(force) + "}";
+    w.object().key("at").array().raw(xt).raw(yt).end_array().member("force", force).end_object();
     out.support.push_back({naive_double(xt), naive_double(yt), static_cast<double>(force), 0.5});
   }
-  out.text = s + "]}}";
+  out.text = w.end_array().end_object().end_object().take();
   const Rational p[3] = {nudged(px, k, out.above), nudged(py, k, out.above), nudged(pm, k, out.above)};
   for (int i = 0; i < 3; ++i) {
     out.load_text[static_cast<std::size_t>(i)] = exact_text(p[i]);

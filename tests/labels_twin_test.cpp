@@ -204,7 +204,7 @@ TEST(LabelsHybrid, SameAnswerAsExactWithFewExactPredicates) {
     for (Reading r : {Reading::friction, Reading::frictionless}) {
       const Moment_labels e = moment_labels(s, r, Mode::exact), h = moment_labels(s, r, Mode::hybrid);
       const std::string tag = "labels_hybrid_" + std::to_string(seed) + "_" + std::to_string(i);
-      ASSERT_EQ(labels_json_fields(h), labels_json_fields(e)) << "dumped to " << test::dump_failure(texts[i], tag);
+      ASSERT_EQ(labels_json(h), labels_json(e)) << "dumped to " << test::dump_failure(texts[i], tag);
       ASSERT_EQ(h.cone.rank, e.cone.rank);
       ASSERT_EQ(e.cone.exact_predicates, e.cone.predicates);
       predicates += h.cone.predicates;

@@ -4,6 +4,7 @@
 #include <unordered_set>
 
 #include "exact/io/input_error.h"
+#include "exact/io/json_writer.h"
 
 namespace wrenchkit::json {
 namespace {
@@ -323,9 +324,14 @@ std::string decode_string(std::string_view text, std::size_t& pos, const Input_l
   return Parser(text, limits, source).string_at(pos);
 }
 
-std::string quote(std::string_view s) {
-  std::string out = "\"";
-  for (const char c : s) {
+void append_quoted(std::string& out, std::string_view s) {
+  out += '"';
+  std::size_t plain = 0;  // start of the run of bytes copied as they are
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (c != '"' && c != '\\' && static_cast<unsigned char>(c) >= 0x20) continue;
+    out.append(s.data() + plain, i - plain);
+    plain = i + 1;
     switch (c) {
       case '"': out += "\\\""; break;
       case '\\': out += "\\\\"; break;
@@ -334,40 +340,50 @@ std::string quote(std::string_view s) {
       case '\t': out += "\\t"; break;
       case '\b': out += "\\b"; break;
       case '\f': out += "\\f"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          static const char* hex = "0123456789abcdef";
-          out += "\\u00";
-          out += hex[(c >> 4) & 0xF];
-          out += hex[c & 0xF];
-        } else {
-          out += c;
-        }
+      default: {
+        static const char* hex = "0123456789abcdef";
+        out += "\\u00";
+        out += hex[(c >> 4) & 0xF];
+        out += hex[c & 0xF];
+      }
     }
   }
+  out.append(s.data() + plain, s.size() - plain);
   out += '"';
+}
+
+std::string quote(std::string_view s) {
+  std::string out;
+  out.reserve(s.size() + 2);
+  append_quoted(out, s);
   return out;
 }
 
-std::string text_of(const Value& v) {
+namespace {
+void write_value(Json_writer& w, const Value& v) {
   switch (v.type) {
-    case Type::null: return "null";
-    case Type::boolean: return v.boolean ? "true" : "false";
-    case Type::number: return v.text;
-    case Type::string: return quote(v.text);
-    case Type::array: {
-      std::string s = "[";
-      for (std::size_t i = 0; i < v.items.size(); ++i) s += (i ? ", " : "") + text_of(v.items[i]);
-      return s + "]";
-    }
-    case Type::object: {
-      std::string s = "{";
-      for (std::size_t i = 0; i < v.members.size(); ++i)
-        s += (i ? ", " : "") + quote(v.members[i].first) + ": " + text_of(v.members[i].second);
-      return s + "}";
-    }
+    case Type::null: w.null(); break;
+    case Type::boolean: w.boolean(v.boolean); break;
+    case Type::number: w.raw(v.text); break;
+    case Type::string: w.string(v.text); break;
+    case Type::array:
+      w.array();
+      for (const Value& x : v.items) write_value(w, x);
+      w.end_array();
+      break;
+    case Type::object:
+      w.object();
+      for (const auto& [k, x] : v.members) write_value(w.key(k), x);
+      w.end_object();
+      break;
   }
-  return "null";
+}
+}  // namespace
+
+std::string text_of(const Value& v) {
+  Json_writer w;
+  write_value(w, v);
+  return w.take();
 }
 
 }  // namespace wrenchkit::json

@@ -48,8 +48,10 @@ bool skip_number(std::string_view text, std::size_t& pos);
 std::string decode_string(std::string_view text, std::size_t& pos, const Input_limits& limits,
                           std::string_view source);
 
-// Writes `s` as a JSON string literal (with quotes), escaping as RFC 8259 requires.
+// Writes `s` as a JSON string literal (with quotes), escaping as RFC 8259 requires: quote returns it,
+// append_quoted appends it to `out` (Json_writer, exact/io/json_writer.h, writes every string with it).
 std::string quote(std::string_view s);
+void append_quoted(std::string& out, std::string_view s);
 
 // The JSON text of a parsed value, numbers with their original text (so exact values survive a
 // round trip): how the CLI and the tests hand a certificate read from a file to the checker.

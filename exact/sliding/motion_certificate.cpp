@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 
 namespace wrenchkit {
 
@@ -130,57 +130,60 @@ std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admis
 
 namespace {
 
-std::string q(const Rational& x) { return json::quote(to_string(x)); }
-
-std::string list(const std::vector<Rational>& v) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + q(v[i]);
-  return s + "]";
+void write_forces(Json_writer& w, const std::vector<Vec2>& g) {
+  w.array();
+  for (const Vec2& f : g) w.array().rational(f.x).rational(f.y).end_array();
+  w.end_array();
 }
 
-std::string triple(const Vec3q& v) { return "[" + q(v[0]) + ", " + q(v[1]) + ", " + q(v[2]) + "]"; }
-
-std::string forces(const std::vector<Vec2>& g) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < g.size(); ++i) s += (i ? ", " : "") + std::string("[") + q(g[i].x) + ", " + q(g[i].y) + "]";
-  return s + "]";
+// The certificate's object, opened, with its first members: the load and the motion.
+Json_writer head(const Vec3q& p, const char* motion) {
+  Json_writer w(512);
+  w.object().member("wrenchkit_certificate", 1).member("property", "motion").key("load").rationals(p);
+  w.member("motion", motion);
+  return w;
 }
 
-std::string head(const Vec3q& p, const char* motion) {
-  return std::string("{\"wrenchkit_certificate\": 1, \"property\": \"motion\", \"load\": ") + triple(p) +
-         ", \"motion\": \"" + motion + "\"";
-}
-
-std::string stick_object(const Stick_witness& w) {
-  return "{\"distribution\": " + list(w.distribution) + ", \"support_forces\": " + forces(w.forces) + "}";
+void write_stick(Json_writer& w, const Stick_witness& s) {
+  w.object().key("distribution").rationals(s.distribution);
+  write_forces(w.key("support_forces"), s.forces);
+  w.end_object();
 }
 
 }  // namespace
 
-std::string sticks_certificate(const Vec3q& p, const Stick_witness& w) {
-  return head(p, "sticks") + ", \"support_forces\": " + forces(w.forces) + "}";
+std::string sticks_certificate(const Vec3q& p, const Stick_witness& s) {
+  Json_writer w = head(p, "sticks");
+  write_forces(w.key("support_forces"), s.forces);
+  return w.end_object().take();
 }
 
-std::string slides_certificate(const Vec3q& p, const Slide_witness& w) {
-  return head(p, "slides") + ", \"twist\": " + triple(w.twist) + ", \"speed_bounds\": " + list(w.speed_bounds) + "}";
+std::string slides_certificate(const Vec3q& p, const Slide_witness& s) {
+  Json_writer w = head(p, "slides");
+  w.key("twist").rationals(s.twist).key("speed_bounds").rationals(s.speed_bounds);
+  return w.end_object().take();
 }
 
 std::string sticks_for_every_certificate(const Vec3q& p, const std::vector<Stick_witness>& vertices) {
-  std::string s = head(p, "sticks") + ", \"vertices\": [";
-  for (std::size_t i = 0; i < vertices.size(); ++i) s += (i ? ", " : "") + stick_object(vertices[i]);
-  return s + "]}";
+  Json_writer w = head(p, "sticks");
+  w.key("vertices").array();
+  for (const Stick_witness& s : vertices) write_stick(w, s);
+  return w.end_array().end_object().take();
 }
 
 std::string slides_for_every_certificate(const Vec3q& p, const Vec3q& twist, const std::vector<Rational>& u,
                                          const std::array<Rational, 3>& dual) {
-  return head(p, "slides") + ", \"twist\": " + triple(twist) + ", \"speed_bounds\": " + list(u) + ", \"dual\": [" +
-         q(dual[0]) + ", " + q(dual[1]) + ", " + q(dual[2]) + "]}";
+  Json_writer w = head(p, "slides");
+  w.key("twist").rationals(twist).key("speed_bounds").rationals(u).key("dual").rationals(dual);
+  return w.end_object().take();
 }
 
 std::string depends_certificate(const Vec3q& p, const Stick_witness& sticking, const Slide_witness& sliding) {
-  return head(p, "depends") + ", \"sticking\": " + stick_object(sticking) + ", \"sliding\": {\"distribution\": " +
-         list(sliding.distribution) + ", \"twist\": " + triple(sliding.twist) + ", \"speed_bounds\": " +
-         list(sliding.speed_bounds) + "}}";
+  Json_writer w = head(p, "depends");
+  write_stick(w.key("sticking"), sticking);
+  w.key("sliding").object().key("distribution").rationals(sliding.distribution).key("twist").rationals(sliding.twist);
+  w.key("speed_bounds").rationals(sliding.speed_bounds).end_object();
+  return w.end_object().take();
 }
 
 }  // namespace wrenchkit

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "exact/statics/cone_lp.h"
-#include "exact/io/json.h"
+#include "exact/io/json_writer.h"
 #include "exact/statics/hybrid_kernel.h"
 #include "exact/io/to_float.h"
 
@@ -170,37 +170,36 @@ Twist_reading read_twist(const std::array<Rational, 3>& t) {
   return r;
 }
 
-std::string combination_json(const std::vector<std::pair<Generator_ref, Rational>>& terms) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < terms.size(); ++i) {
-    const auto& [ref, w] = terms[i];
-    s += (i ? ", " : "") + std::string("{\"contact\": ") + std::to_string(ref.contact) + ", \"edge\": \"" +
-         edge_name(ref.edge) + "\", \"weight\": " + json::quote(to_string(w)) + "}";
-  }
-  return s + "]";
+void write_combination(Json_writer& w, const std::vector<std::pair<Generator_ref, Rational>>& terms) {
+  w.array();
+  for (const auto& [ref, weight] : terms)
+    w.object().member("contact", ref.contact).member("edge", edge_name(ref.edge)).member("weight", weight).end_object();
+  w.end_array();
 }
 
-std::string twist_json(const std::array<Rational, 3>& t) {
-  auto q = [](const Rational& x) { return json::quote(to_string(x)); };
-  std::string s = "\"twist\": [" + q(t[0]) + ", " + q(t[1]) + ", " + q(t[2]) + "]";
+void write_twist(Json_writer& w, const std::array<Rational, 3>& t) {
+  w.key("twist").rationals(t);
   const Twist_reading r = read_twist(t);
-  if (r.label == 'i')
-    s += ", \"reading\": {\"label\": \"infinity\", \"direction\": [";
-  else
-    s += std::string(", \"reading\": {\"label\": \"") + r.label + "\", \"point\": [";
-  return s + q(r.point[0]) + ", " + q(r.point[1]) + "]}";
+  w.key("reading").object();
+  if (r.label == 'i') w.member("label", "infinity").key("direction");
+  else w.member("label", std::string_view(&r.label, 1)).key("point");
+  w.rationals(r.point).end_object();
 }
 
-std::string certificate_json(const Closure_certificate& c) {
-  std::string s = "{\"wrenchkit_certificate\": 1, \"property\": \"";
-  s += property_name(c.property);
-  s += "\", \"holds\": ";
-  if (!c.holds) return s + "false, " + twist_json(c.twist) + "}";
-  s += "true, \"combination\": " + combination_json(c.combination) + ", \"independent\": [";
-  for (int i = 0; i < 3; ++i)
-    s += (i ? ", " : "") + std::string("{\"contact\": ") + std::to_string(c.independent[i].contact) +
-         ", \"edge\": \"" + edge_name(c.independent[i].edge) + "\"}";
-  return s + "]}";
+void write_certificate(Json_writer& w, const Closure_certificate& c) {
+  w.object().member("wrenchkit_certificate", 1).member("property", property_name(c.property)).member("holds", c.holds);
+  if (!c.holds) {
+    write_twist(w, c.twist);
+  } else {
+    write_combination(w.key("combination"), c.combination);
+    w.key("independent").array();
+    for (const Generator_ref& g : c.independent)
+      w.object().member("contact", g.contact).member("edge", edge_name(g.edge)).end_object();
+    w.end_array();
+  }
+  w.end_object();
 }
+
+std::string certificate_json(const Closure_certificate& c) { return json_text(write_certificate, c, 512); }
 
 }  // namespace wrenchkit

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "exact/io/json_writer.h"
+
 namespace wrenchkit {
 
 Dual_point dual_point(const Vec3& w) {
@@ -57,10 +59,12 @@ Force_dual force_dual(const Moment_labels& labels, const std::vector<Wrench>& ge
   return f;
 }
 
-std::string dual_point_json(const Dual_point& p) {
-  if (p.sheet == '0') return "{\"sheet\": \"none\", \"zero\": true}";
-  if (p.sheet == 'i') return "{\"sheet\": \"infinity\", \"direction\": " + point_json(p.at) + "}";
-  return std::string("{\"sheet\": \"") + p.sheet + "\", \"point\": " + point_json(p.at) + "}";
+void write_dual_point(Json_writer& w, const Dual_point& p) {
+  w.object();
+  if (p.sheet == '0') w.member("sheet", "none").member("zero", true);
+  else if (p.sheet == 'i') write_point(w.member("sheet", "infinity").key("direction"), p.at);
+  else write_point(w.member("sheet", std::string_view(&p.sheet, 1)).key("point"), p.at);
+  w.end_object();
 }
 
 }  // namespace wrenchkit

@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "exact/io/json_writer.h"
 #include "exact/io/to_float.h"
 
 namespace wrenchkit {
@@ -63,20 +64,35 @@ Moment_labels moment_labels(const Scene& scene, Reading reading, Mode mode) {
   return moment_labels(w, mode, &twin);
 }
 
-std::string both_json(const Both_set& b) {
+void write_both(Json_writer& w, const Both_set& b) {
+  w.array();
   switch (b.kind) {
-    case Both_set::Kind::none: return "[]";
-    case Both_set::Kind::point: return "[{\"point\": " + point_json(b.point) + "}]";
+    case Both_set::Kind::none: break;
+    case Both_set::Kind::point: write_point(w.object().key("point"), b.point); break;
     case Both_set::Kind::line:
-      return "[{\"line\": {\"through\": " + point_json(b.point) + ", \"direction\": " + point_json(b.direction) + "}}]";
-    case Both_set::Kind::plane: return "[{\"plane\": true}]";
+      write_point(w.object().key("line").object().key("through"), b.point);
+      write_point(w.key("direction"), b.direction);
+      w.end_object();
+      break;
+    case Both_set::Kind::plane: w.object().member("plane", true); break;
   }
-  return "[]";
+  if (b.kind != Both_set::Kind::none) w.end_object();
+  w.end_array();
 }
 
-std::string labels_json_fields(const Moment_labels& l) {
-  return "\"plus\": " + region_json(l.plus) + ", \"minus\": " + region_json(l.minus) +
-         ", \"both\": " + both_json(l.both) + ", \"infinity\": " + infinity_json(l.infinity);
+void write_labels(Json_writer& w, const Moment_labels& l) {
+  write_region(w.key("plus"), l.plus);
+  write_region(w.key("minus"), l.minus);
+  write_both(w.key("both"), l.both);
+  write_infinity(w.key("infinity"), l.infinity);
+}
+
+std::string labels_json(const Moment_labels& l) {
+  Json_writer w(1024);
+  w.object();
+  write_labels(w, l);
+  w.end_object();
+  return w.take();
 }
 
 const char* mode_name(Contact_mode m) {
