@@ -2,7 +2,10 @@
 // accept a certificate whose claim is false: whenever it accepts, the exact engine must agree with
 // the claim (soundness, differential against the engine). For property "motion" (sliding) on a
 // support the engine reads (every force given), the float twin's certified search on the true limit
-// surface must not decide the opposite; unknown distributions have no engine oracle yet.
+// surface must not decide the opposite; unknown distributions have no engine oracle yet. Both sides
+// say "sticks" only for the interior of a three-dimensional limit surface and "slides" on its boundary;
+// when LS is flat (friction at fewer than two distinct points) the twin's "sticks" means the relative
+// interior, which has no interior point: there the checker must only ever accept "slides".
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -75,7 +78,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // The accepted certificate is valid JSON: its load and claim, read with the engine's parser.
     const wrenchkit::json::Value c = wrenchkit::json::parse(cert, limits, "certificate");
     const std::string claim = c.find("motion")->text;
-    if (claim == "depends") return 0;  // only with unknown forces, which the engine does not read yet
+    if (claim == "depends") return 0;  // only with unknown forces: no engine oracle yet
+    for (const wrenchkit::Support_point& x : scene.support->points)
+      if (!x.force) return 0;
     wrenchkit::fl::Bounded3 p;
     for (std::size_t k = 0; k < 3; ++k) {
       std::string why;
@@ -86,8 +91,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (!q) std::abort();  // the checker accepted it as a rational
       p[k] = wrenchkit::to_bounded(*q);
     }
-    const auto twin = wrenchkit::twin_support(wrenchkit::merge_support(*scene.support));
-    const wrenchkit::fl::Motion_answer a = wrenchkit::fl::classify_load(twin, p, 20000);
+    const wrenchkit::Ls_support merged = wrenchkit::merge_support(*scene.support);
+    if (merged.points.size() < 2) {  // coincident points merged, rho = 0 dropped: LS is flat (or {0})
+      if (claim != "slides") {
+        std::cerr << "checker accepted \"" << claim << "\" on a flat limit surface, which has no interior\n";
+        std::abort();
+      }
+      return 0;
+    }
+    const wrenchkit::fl::Motion_answer a = wrenchkit::fl::classify_load(wrenchkit::twin_support(merged), p, 20000);
     if (a.motion != wrenchkit::fl::Motion_twin::undecided &&
         (a.motion == wrenchkit::fl::Motion_twin::slides) != (claim == "slides")) {
       std::cerr << "checker accepted \"" << claim << "\"; the certified float search decides the opposite\n";

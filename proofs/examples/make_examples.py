@@ -172,14 +172,14 @@ def slide_witness(distribution, twist, speeds):
 
 # The table (legs (1,1), (-1,1), (-1,-1), (1,-1), mu = W = 1, c = 0): F's vertices are the two diagonal
 # barbells (1/2, 0, 1/2, 0) and (0, 1/2, 0, 1/2).
-TABLE_STICKS = motion("sticks", [F(1, 2), 0, 0], vertices=[  # g = (1/4, 0) at both legs of the diagonal
+TABLE_STICKS = motion("sticks", [F(1, 2), 0, 0], vertices=[  # g = (1/4, 0), strictly inside |g| < 1/2, at both legs of the diagonal
     stick_witness(["1/2", "0", "1/2", "0"], [["1/4", "0"], ["0", "0"], ["1/4", "0"], ["0", "0"]]),
     stick_witness(["0", "1/2", "0", "1/2"], [["0", "0"], ["1/4", "0"], ["0", "0"], ["1/4", "0"]])])
 # q = (1, 0, 0): every speed is 1; mu_i u_i = 1 <= y0 = 1, so the frictional power is at most W = 1 < 3/2.
 TABLE_SLIDES = motion("slides", [F(3, 2), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1", "1", "1"],
                       dual=["1", "0", "0"])
 # (1/2, 1/2, 9/10): on the diagonal (1,1)-(-1,-1) it sticks with g = (1/40, 19/40) and (19/40, 1/40) (sum
-# (1/2, 1/2), moment 9/10, |g|^2 = 181/800 <= 1/4); on the other it slides: q = (1, 1, 1) has speeds
+# (1/2, 1/2), moment 9/10, |g|^2 = 181/800 < 1/4); on the other it slides: q = (1, 1, 1) has speeds
 # 2, 0, 2, 2 sqrt 2 <= 17/6, and power 19/10 > (1/2) 17/6 = 17/12 (found by a small exact search over integer twists).
 TABLE_DEPENDS = motion("depends", [F(1, 2), F(1, 2), F(9, 10)],
                        sticking=stick_witness(["1/2", "0", "1/2", "0"],
@@ -326,7 +326,7 @@ CERTS = [
     ("table_four_legs", "depends", "valid", TABLE_DEPENDS),
     ("barbell_known", "sticks", "valid", motion("sticks", [F(1, 4), 0, 0], support_forces=[["1/8", "0"], ["1/8", "0"]])),
     ("barbell_known", "slides", "valid", motion("slides", [1, 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1"])),
-    ("table_four_legs", "force_outside_disc", "invalid:stick|vertices[1].support_forces[1]: |g|^2 = 5/16 is more than (mu f)^2 = 1/4",
+    ("table_four_legs", "force_outside_disc", "invalid:stick|vertices[1].support_forces[1]: |g|^2 = 5/16 is not less than (mu f)^2 = 1/4",
      dict(TABLE_STICKS, vertices=[TABLE_STICKS["vertices"][0],
                                   stick_witness(["0", "1/2", "0", "1/2"], [["0", "0"], ["-1/4", "1/2"], ["0", "0"], ["3/4", "-1/2"]])])),
     ("table_four_legs", "missing_vertex", "invalid:vertex|vertices: the vertex (0, 1/2, 0, 1/2) of the admissible distributions has no witness",
@@ -339,8 +339,11 @@ CERTS = [
      dict(TABLE_SLIDES, dual=["9/10", "0", "0"])),
     ("table_four_legs", "slides_without_dual", 'invalid:keys|missing required key "dual"',
      {k: v for k, v in TABLE_SLIDES.items() if k != "dual"}),
-    ("barbell_known", "power_not_strict", "invalid:power|twist: power q.p = 1/2 is not more than sum mu_i f_i u_i = 1/2",
-     motion("slides", [F(1, 2), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1"])),
+    ("barbell_known", "slides_on_surface", "valid", motion("slides", [F(1, 2), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1"])),
+    ("barbell_known", "power_below_bound", "invalid:power|twist: power q.p = 2/5 is less than sum mu_i f_i u_i = 1/2",
+     motion("slides", [F(2, 5), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1"])),
+    ("barbell_known", "g_on_circle", "invalid:stick|support_forces[0]: |g|^2 = 1/16 is not less than (mu f)^2 = 1/16",
+     motion("sticks", [F(1, 2), 0, 0], support_forces=[["1/4", "0"], ["1/4", "0"]])),
     ("barbell_known", "depends_on_known", 'invalid:depends known|motion: "depends" needs a support with an unknown distribution',
      dict(motion("depends", [F(1, 2), F(1, 2), F(9, 10)]), sticking=TABLE_DEPENDS["sticking"], sliding=TABLE_DEPENDS["sliding"])),
     ("barbell_known", "vertices_on_known", 'invalid:keys|key "vertices" is not allowed when "motion" is "sticks" and every support force is given',
@@ -456,21 +459,26 @@ def verify_motion(scene, cert):
                 and all(q[3] is None or q[3] == v for q, v in zip(pts, f)) and sum(f) == W
                 and all(sum(v * q[k] for v, q in zip(f, pts)) == W * c[k] for k in range(2)))
 
-    def sticks(f, g):
+    def sticks(f, g):  # p in the interior of LS(f): strictly inside the discs, friction at two distinct points
         g = [[rational(a) for a in gi] for gi in g]
-        if len(g) != len(pts) or any(a * a + b * b > (q[2] * fi) ** 2 for (a, b), q, fi in zip(g, pts, f)):
+        if len(g) != len(pts) or any((a, b) != (0, 0) if q[2] * fi == 0 else a * a + b * b >= (q[2] * fi) ** 2
+                                     for (a, b), q, fi in zip(g, pts, f)):
+            return False
+        if len({(q[0], q[1]) for q, fi in zip(pts, f) if q[2] * fi > 0}) < 2:
             return False
         total = [sum(a for a, _ in g), sum(b for _, b in g), sum(q[0] * b - q[1] * a for (a, b), q in zip(g, pts))]
         return total == p
 
     def speeds(q, u):  # None if fine, else the reason
+        if not any(q):
+            return "zero twist"
         if len(u) != len(pts) or any(v < 0 for v in u):
             return "speed"
         if any(v * v < (q[0] - q[2] * y) ** 2 + (q[1] + q[2] * x) ** 2 for v, (x, y, *_) in zip(u, pts)):
             return "speed"
         return None
 
-    def power(q):
+    def power(q):  # q.p; a slide witness needs q != 0 and q.p >= the bound (a load on the limit surface slides)
         return q[0] * p[0] + q[1] * p[1] + q[2] * p[2]
 
     if claim == "sticks" and known:
@@ -478,9 +486,9 @@ def verify_motion(scene, cert):
     if claim == "slides":
         q, u = [rational(v) for v in cert["twist"]], [rational(v) for v in cert["speed_bounds"]]
         if speeds(q, u):
-            return "speed"
+            return speeds(q, u)
         if known:
-            return None if power(q) > sum(qq[2] * f * v for qq, f, v in zip(pts, given, u)) else "power"
+            return None if power(q) >= sum(qq[2] * f * v for qq, f, v in zip(pts, given, u)) else "power"
         y = [rational(v) for v in cert["dual"]]
         if any(q_[3] is None and q_[2] * v > y[0] + y[1] * q_[0] + y[2] * q_[1] for q_, v in zip(pts, u)):
             return "dual"
@@ -488,7 +496,7 @@ def verify_motion(scene, cert):
         rest_m = [W * c[k] - sum(f * q_[k] for f, q_ in zip(given, pts)) for k in range(2)]
         bound = (sum(q_[2] * f * v for q_, f, v in zip(pts, given, u) if q_[3] is not None)
                  + y[0] * rest_w + y[1] * rest_m[0] + y[2] * rest_m[1])
-        return None if power(q) > bound else "power"
+        return None if power(q) >= bound else "power"
     if claim == "depends":
         st, sl = cert["sticking"], cert["sliding"]
         f1, f2 = [rational(v) for v in st["distribution"]], [rational(v) for v in sl["distribution"]]
@@ -498,8 +506,8 @@ def verify_motion(scene, cert):
             return "stick"
         q, u = [rational(v) for v in sl["twist"]], [rational(v) for v in sl["speed_bounds"]]
         if speeds(q, u):
-            return "speed"
-        return None if power(q) > sum(qq[2] * f * v for qq, f, v in zip(pts, f2, u)) else "power"
+            return speeds(q, u)
+        return None if power(q) >= sum(qq[2] * f * v for qq, f, v in zip(pts, f2, u)) else "power"
     # sticks for every distribution: every witness in F and sticking, every vertex of F witnessed.
     # Vertices by brute force: every set S of at most three unknown points whose columns (1, x, y) are
     # independent and give a strictly positive solution of the three rows.
