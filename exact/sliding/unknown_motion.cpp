@@ -112,6 +112,18 @@ bool slides_for_every(const Support& s, const Admissible& a, const Vec3q& p, con
   return q[0] * p[0] + q[1] * p[1] + q[2] * p[2] >= r.upper;
 }
 
+// Friction at fewer than two distinct points: LS(f) is flat and has no interior, so every load slides on it (the
+// convention of the certificates, proofs/notes/SL-1: a load on the limit surface slides).
+bool flat(const Support& s, const std::vector<Rational>& f) {
+  const Vec2* first = nullptr;
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    if (mu_of(s, s.points[i]) * f[i] == 0) continue;
+    if (first && (first->x != s.points[i].at.x || first->y != s.points[i].at.y)) return false;
+    if (!first) first = &s.points[i].at;
+  }
+  return true;
+}
+
 Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Vec3q& p, Mode mode, int sides) {
   if (a.known() || a.unknown.size() > kMaxEnumeratedUnknowns)
     throw std::invalid_argument("decide_motion_over: needs a few unknown forces");
@@ -120,7 +132,13 @@ Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Ve
   std::vector<Vec3q> twists;  // the sliding vertices' twists (from the certified search), candidates for step 3
   for (std::size_t i = 0; i < v.size(); ++i) {
     const Polygonal_ls model(merge_support(s, &v[i]), make_directions(sides));
-    const Motion_decision m = decide_motion(model, p, mode);
+    Motion_decision m;
+    if (flat(s, v[i])) {
+      m.motion = Motion::slides;
+      m.decided_by = "flat";
+    } else {
+      m = decide_motion(model, p, mode);
+    }
     r.per_vertex.push_back(m.motion);
     r.decisions.push_back(m);
     if (m.motion == Motion::sticks && !r.sticking_vertex) r.sticking_vertex = i;
