@@ -108,8 +108,13 @@ std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a
 
 bool slides_for_every(const Support& s, const Admissible& a, const Vec3q& p, const Vec3q& q) {
   if (q[0] == 0 && q[1] == 0 && q[2] == 0) return false;
-  const Power_range r = power_range(s, a, q);
-  return q[0] * p[0] + q[1] * p[1] + q[2] * p[2] >= r.upper;
+  std::vector<Rational> coef(s.points.size());  // μ_i times the rational upper bound of |v_i(q)|
+  for (std::size_t i = 0; i < coef.size(); ++i) {
+    const Support_point& pt = s.points[i];
+    const Rational vx = q[0] - q[2] * pt.at.y, vy = q[1] + q[2] * pt.at.x;
+    coef[i] = mu_of(s, pt) * sqrt_bracket(vx * vx + vy * vy).second;
+  }
+  return q[0] * p[0] + q[1] * p[1] + q[2] * p[2] >= maximise_over(s, a, coef).value;
 }
 
 // Friction at fewer than two distinct points: LS(f) is flat and has no interior, so every load slides on it (the
@@ -165,18 +170,11 @@ Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Ve
     r.decided_by = "none";
     return r;
   }
-  if (const auto some = stick_witness(s, a, p, sides)) {  // closed: confirmed strictly with that distribution
-    if ((r.sticking = stick_witness(s, a, p, sides, &some->distribution))) {
-      r.motion = Motion_over::depends;
-      r.decided_by = "lp";
-      return r;
-    }
-  }
-  if (twists.size() > 1) {  // their sum too: a twist between the vertices' own
+  if (twists.size() > 1) {  // their sum first: a twist between the vertices' own
     Vec3q sum{};
     for (const Vec3q& q : twists)
       for (std::size_t c = 0; c < 3; ++c) sum[c] += q[c];
-    twists.push_back(sum);
+    twists.insert(twists.begin(), sum);
   }
   for (const Vec3q& q : twists)
     if (slides_for_every(s, a, p, q)) {
@@ -185,6 +183,13 @@ Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Ve
       r.decided_by = "twist";
       return r;
     }
+  if (const auto some = stick_witness(s, a, p, sides)) {  // closed: confirmed strictly with that distribution
+    if ((r.sticking = stick_witness(s, a, p, sides, &some->distribution))) {
+      r.motion = Motion_over::depends;
+      r.decided_by = "lp";
+      return r;
+    }
+  }
   r.decided_by = "none";
   return r;
 }

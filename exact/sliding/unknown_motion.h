@@ -9,12 +9,11 @@
 //   1. each vertex: decide_motion on its own support (hybrid: the float twin's certified search on the true
 //      limit surface first, the exact polygons when it cannot tell) — all stick: sticks; a stick and a slide:
 //      depends;
-//   2. every vertex slides: an exact LP over F × (inscribed N-gons) looks for one distribution that sticks
-//      (a stick witness: rational support forces g_i with |g_i| ≤ μ_i f_i — |u_j| = 1 exactly — summing to p):
-//      found: depends;
-//   3. else twists that separate p from all of U: the vertices' sliding twists, checked exactly with the
-//      speeds bounded above by rationals (u_i² ≥ |v_i(q)|²) and the LP over F: q·p > max_F Σ μ_i f_i u_i
-//      proves slides;
+//   2. every vertex slides: twists that separate p from all of U — the vertices' sliding twists and their sum,
+//      checked exactly with the speeds bounded above by rationals (u_i² ≥ |v_i(q)|²) and the LP over F:
+//      q·p ≥ max_F Σ μ_i f_i u_i proves slides;
+//   3. else an exact LP over F × (inscribed N-gons) looks for one distribution that sticks (a stick witness:
+//      rational support forces strictly inside the discs summing to p): found: depends;
 //   4. else undecided (the load is within the resolution of U's boundary).
 #pragma once
 
