@@ -105,6 +105,16 @@ Request request_of(const Options& o);
 // text for people (each made only when needed); returns kAnswered.
 int write_answer(const Options& o, const std::function<void(Json_writer&)>& json,
                  const std::function<std::string()>& text);
+// The writer of a support's answer by what the pipeline answered: an unknown distribution, the twin alone
+// (--mode float), or the exact answer (sliding and limit-surface alike).
+template <class F>
+F by_answer(const Support_item& r, Mode mode, F unknown, F twin, F exact) {
+  return r.admissible ? unknown : mode == Mode::float_only ? twin : exact;
+}
+
+// sliding_command.cpp: a distribution and a support with unknown forces as text (the first lines of the answer).
+std::string distribution_text(const std::vector<Rational>& f);
+std::string unknown_support_text(const Support_item& r, const std::string& source);
 // sliding_command.cpp: a support with unknown forces as JSON members ("distribution": "unknown", … and
 // "power": {…}) written into the answer's object, for sliding and limit-surface alike.
 void write_unknown_distribution(Json_writer& w, const Support_item& r);

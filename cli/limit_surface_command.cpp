@@ -404,17 +404,9 @@ void write_limit_surface_unknown(Json_writer& w, const Ls_options& lo, const Sup
 }
 
 std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
-  const Admissible& a = *r.admissible;
-  const auto dist = [](const std::vector<Rational>& f) {
-    std::string s = "(";
-    for (std::size_t i = 0; i < f.size(); ++i) s += (i ? ", " : "") + human_number(f[i]);
-    return s + ")";
-  };
+  const auto dist = distribution_text;
   std::ostringstream s;
-  s << scene_line(r.scene.name, source) << "support: " << r.scene.support->points.size() << " points, the forces of "
-    << a.unknown.size() << " not given; weight " << human_number(*r.scene.support->weight) << ", centre of pressure ("
-    << human_number(r.pressure_center.x) << ", " << human_number(r.pressure_center.y) << "); "
-    << r.vertices.size() << " extreme admissible distributions\n";
+  s << unknown_support_text(r, source);
   if (lo.twist)
     s << "twist " << tv(*lo.twist) << ": the frictional power over every admissible distribution lies in ["
       << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n";
@@ -445,14 +437,12 @@ std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item
 // The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone, or
 // the exact answer).
 void answer_json(Json_writer& w, const Ls_options& lo, const Support_item& r) {
-  if (r.admissible) write_limit_surface_unknown(w, lo, r);
-  else if (lo.mode == Mode::float_only) write_limit_surface_float(w, lo, r);
-  else write_limit_surface(w, lo, r);
+  by_answer(r, lo.mode, &write_limit_surface_unknown, &write_limit_surface_float, &write_limit_surface)(w, lo, r);
 }
 
 std::string answer_text(const Ls_options& lo, const Support_item& r, const std::string& source) {
-  if (r.admissible) return limit_surface_unknown_human(lo, r, source);
-  return lo.mode == Mode::float_only ? limit_surface_float_human(lo, r, source) : limit_surface_human(lo, r, source);
+  return by_answer(r, lo.mode, &limit_surface_unknown_human, &limit_surface_float_human, &limit_surface_human)(lo, r,
+                                                                                                              source);
 }
 
 }  // namespace

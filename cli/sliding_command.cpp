@@ -18,6 +18,23 @@
 namespace wrenchkit::cli {
 
 // An unknown distribution (docs/theory-sliding.md §1–§2), for sliding and limit-surface alike.
+std::string distribution_text(const std::vector<Rational>& f) {
+  std::string s = "(";
+  for (std::size_t i = 0; i < f.size(); ++i) s += (i ? ", " : "") + human_number(f[i]);
+  return s + ")";
+}
+
+std::string unknown_support_text(const Support_item& r, const std::string& source) {
+  const Admissible& a = *r.admissible;
+  std::string s = scene_line(r.scene.name, source) + "support: " + std::to_string(r.scene.support->points.size()) +
+                  " points, the forces of " + std::to_string(a.unknown.size()) + " not given; weight " +
+                  human_number(*r.scene.support->weight) + ", centre of pressure (" + human_number(r.pressure_center.x) +
+                  ", " + human_number(r.pressure_center.y) + ")";
+  if (a.unknown.size() <= kMaxEnumeratedUnknowns)
+    s += "; " + std::to_string(r.vertices.size()) + " extreme admissible distributions";
+  return s + "\n";
+}
+
 void write_unknown_distribution(Json_writer& w, const Support_item& r) {
   const Admissible& a = *r.admissible;
   w.member("distribution", "unknown").key("unknown_points").array();
@@ -128,24 +145,13 @@ void write_sliding_unknown(Json_writer& w, const Sliding_options& so, const Supp
 }
 
 std::string sliding_unknown_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
-  const Admissible& a = *r.admissible;
-  const auto dist = [](const std::vector<Rational>& f) {
-    std::string s = "(";
-    for (std::size_t i = 0; i < f.size(); ++i) s += (i ? ", " : "") + human_number(f[i]);
-    return s + ")";
-  };
   std::ostringstream s;
-  s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
-    << "support: " << r.scene.support->points.size() << " points, the forces of " << a.unknown.size()
-    << " not given; weight " << human_number(*r.scene.support->weight) << ", centre of pressure ("
-    << human_number(r.pressure_center.x) << ", " << human_number(r.pressure_center.y) << ")\n";
-  if (a.unknown.size() <= kMaxEnumeratedUnknowns)
-    s << "extreme admissible distributions: " << r.vertices.size() << "\n";
+  s << unknown_support_text(r, source);
   if (so.twist)
     s << "twist " << thv(*so.twist) << ": the frictional power over every admissible distribution lies in ["
       << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n"
-      << "  least at f = " << dist(r.power->min_distribution) << ", most at f = " << dist(r.power->max_distribution)
-      << "\n";
+      << "  least at f = " << distribution_text(r.power->min_distribution)
+      << ", most at f = " << distribution_text(r.power->max_distribution) << "\n";
   s << "convention: " << kConvention << "\n";
   return s.str();
 }
@@ -213,14 +219,11 @@ std::string sliding_human(const Sliding_options& so, const Support_item& r, cons
 // The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone,
 // or the exact answer).
 void answer_json(Json_writer& w, const Sliding_options& so, const Support_item& r) {
-  if (r.admissible) write_sliding_unknown(w, so, r);
-  else if (so.mode == Mode::float_only) write_sliding_float(w, so, r);
-  else write_sliding(w, so, r);
+  by_answer(r, so.mode, &write_sliding_unknown, &write_sliding_float, &write_sliding)(w, so, r);
 }
 
 std::string answer_text(const Sliding_options& so, const Support_item& r, const std::string& source) {
-  if (r.admissible) return sliding_unknown_human(so, r, source);
-  return so.mode == Mode::float_only ? sliding_float_human(so, r, source) : sliding_human(so, r, source);
+  return by_answer(r, so.mode, &sliding_unknown_human, &sliding_float_human, &sliding_human)(so, r, source);
 }
 
 }  // namespace
