@@ -10,6 +10,7 @@
 #include "exact/io/scene.h"
 #include "exact/io/scene_writer.h"
 #include "exact/numbers/exact_lp.h"
+#include "exact/pipeline/support_answer.h"
 #include "exact/sliding/distribution.h"
 #include "exact/sliding/unknown_motion.h"
 #include "fuzz/scene_checks.h"
@@ -347,6 +348,79 @@ TEST(UnknownMotion, RandomAnswersAgreeWithTheirWitnesses) {
   EXPECT_GT(counts[0], 0);  // some stick, some slide, some depend
   EXPECT_GT(counts[1], 0);
   EXPECT_GT(counts[2], 0);
+}
+
+// Near the thresholds, through the pipeline with certificates (every one re-checked by the independent checker
+// inside answer_support, Status::check_failed otherwise): random known supports of 4–8 points under loads
+// 1 ∓ 10⁻³ times a boundary load ∂h(q) of a random twist (computed in double: its error is far below 10⁻³), and the
+// table's and the dinner plate's thresholds (docs/theory-sliding.md §6). Right answers, nothing undecided.
+TEST(UnknownMotion, NearTheThresholdsWithCertificates) {
+  std::mt19937_64 rng(test::seed(9090));
+  std::uniform_int_distribution<int> c(-20, 20), force(1, 5), coin(0, 2);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const char* mus[] = {"1/2", "1/4", "1"};
+  int right = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const int k = 4 + trial % 5;
+    std::string pts;
+    std::vector<std::array<double, 4>> raw;  // x, y, f, μ
+    for (int i = 0; i < k; ++i) {
+      const int x = c(rng), y = c(rng), f = force(rng), m = coin(rng);
+      raw.push_back({x / 10.0, y / 10.0, double(f), m == 0 ? 0.5 : m == 1 ? 0.25 : 1.0});
+      pts += std::string(i ? ", " : "") + "{\"at\": [\"" + std::to_string(x) + "/10\", \"" + std::to_string(y) +
+             "/10\"], \"force\": " + std::to_string(f) + ", \"mu\": \"" + mus[m] + "\"}";
+    }
+    const std::string text = "{\"wrenchkit\": 1, \"support\": {\"points\": [" + pts + "]}}";
+    const Scene scene = read_scene(text, Input_limits{});
+    const double q[3] = {u(rng), u(rng), u(rng)};
+    double b[3] = {0, 0, 0};
+    for (const auto& [x, y, f, mu] : raw) {
+      const double vx = q[0] - q[2] * y, vy = q[1] + q[2] * x, n = std::hypot(vx, vy);
+      if (n == 0) continue;
+      const double gx = f * mu * vx / n, gy = f * mu * vy / n;
+      b[0] += gx, b[1] += gy, b[2] += x * gy - y * gx;
+    }
+    for (const double s : {1 - 1e-3, 1 + 1e-3}) {
+      Support_query query;
+      query.load = Vec3q{Rational(s * b[0]), Rational(s * b[1]), Rational(s * b[2])};
+      query.polytopes = false;
+      const Support_item r = answer_support(scene, text, "near", Request{}, query);
+      ASSERT_EQ(r.status, Status::answered) << r.message << "\n" << text;
+      EXPECT_EQ(r.motion.motion, s < 1 ? Motion::sticks : Motion::slides) << text;
+      EXPECT_FALSE(r.certificate.empty()) << r.uncertified << "\n" << text;
+      right += r.motion.motion == (s < 1 ? Motion::sticks : Motion::slides);
+    }
+  }
+  EXPECT_EQ(right, 80);
+  // The table: |f| = 1 and m = √2 are the thresholds for every distribution; the plate: m = 1 separates depends
+  // from slides.
+  const std::string plate = R"({"wrenchkit": 1, "body": {"com": [0, 0]}, "support": {"mu": 1, "weight": 1,
+      "points": [{"at": [1, 0]}, {"at": ["3/5", "4/5"]}, {"at": [0, 1]}, {"at": ["-3/5", "4/5"]}, {"at": [-1, 0]},
+                 {"at": ["-3/5", "-4/5"]}, {"at": [0, -1]}, {"at": ["3/5", "-4/5"]}, {"at": [0, 0]}]}})";
+  const struct {
+    const char* scene;
+    Vec3q load;
+    Motion_over want;
+  } cases[] = {
+      {kTable, {Rational("999/1000"), 0, 0}, Motion_over::sticks},
+      {kTable, {Rational("1001/1000"), 0, 0}, Motion_over::slides},
+      {kTable, {0, 0, Rational("1413/1000")}, Motion_over::sticks},   // √2 = 1.41421…
+      {kTable, {0, 0, Rational("1415/1000")}, Motion_over::slides},
+      {kTable, {Rational("1/2"), Rational("1/2"), Rational("9/10")}, Motion_over::depends},
+      {plate.c_str(), {0, 0, Rational("999/1000")}, Motion_over::depends},
+      {plate.c_str(), {0, 0, Rational("1001/1000")}, Motion_over::slides},
+  };
+  for (const auto& x : cases) {
+    const Scene scene = read_scene(x.scene, Input_limits{});
+    Support_query query;
+    query.load = x.load;
+    query.polytopes = false;
+    const Support_item r = answer_support(scene, x.scene, "near", Request{}, query);
+    ASSERT_EQ(r.status, Status::answered) << r.message;
+    ASSERT_TRUE(r.motion_over);
+    EXPECT_EQ(r.motion_over->motion, x.want) << to_string(x.load[0]) << " " << to_string(x.load[2]);
+    EXPECT_FALSE(r.certificate.empty()) << r.uncertified;
+  }
 }
 
 }  // namespace
