@@ -196,12 +196,19 @@ int smallest_sides(const Rational& eps, int max_sides, int* built) {
 // The per-point tables
 
 Polygonal_ls::Polygonal_ls(Ls_support s, Directions d) : s_(std::move(s)), d_(std::move(d)) {
-  const int n = d_.n;
   for (const Ls_point& p : s_.points) {
     const Integer D = lcm_of(p.at.x.get_den(), p.at.y.get_den());
     den_.push_back(D);
     num_.push_back({p.at.x.get_num() * (D / p.at.x.get_den()), p.at.y.get_num() * (D / p.at.y.get_den())});
   }
+}
+
+// The inner and outer polygons' tables, built on first use: a query answered on the true surface (or with
+// the support values alone) never pays for them.
+void Polygonal_ls::build_tables() const {
+  if (tables_built_) return;
+  tables_built_ = true;
+  const int n = d_.n;
   for (Side side : {Side::inner, Side::outer}) {
     Side_tab& t = side == Side::inner ? in_ : out_;
     t.p.resize(n);

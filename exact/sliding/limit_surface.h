@@ -138,7 +138,11 @@ class Polygonal_ls {
     Integer L;                              // common denominator of all vert
     std::vector<Point_tab> pts;
   };
-  const Side_tab& tab(Side s) const { return s == Side::inner ? in_ : out_; }
+  const Side_tab& tab(Side s) const {
+    build_tables();
+    return s == Side::inner ? in_ : out_;
+  }
+  void build_tables() const;
   // Per point: face index; returns −1 vertex m / edge m / whole polygon through kind.
   void point_faces(const Side_tab& t, const Vec3z& q, std::vector<int>& kind, std::vector<int>& idx) const;
   // The face as a cycle of vertex index tuples (dimension via *dim).
@@ -150,7 +154,8 @@ class Polygonal_ls {
   Directions d_;
   std::vector<Integer> den_;                 // D_i: common denominator of r_i
   std::vector<std::array<Integer, 2>> num_;  // D_i·r_i
-  Side_tab in_, out_;
+  mutable Side_tab in_, out_;  // built on first use (build_tables)
+  mutable bool tables_built_ = false;
 };
 
 Vec3q to_rational(const Vec3z& v);

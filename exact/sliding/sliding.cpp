@@ -128,20 +128,29 @@ std::vector<fl::Support_point_twin> twin_support(const Ls_support& s) {
   return out;
 }
 
+namespace {
+
+// The float twin's certified search on the true surface [FL-7]; undecided when it cannot tell.
+Motion_decision search(const Ls_support& support, const Vec3q& p) {
+  Motion_decision d;
+  const fl::Motion_answer f = fl::classify_load(twin_support(support), {to_bounded(p[0]), to_bounded(p[1]), to_bounded(p[2])});
+  d.cells = f.cells;
+  if (f.motion != fl::Motion_twin::undecided) {
+    d.motion = f.motion == fl::Motion_twin::sticks ? Motion::sticks : Motion::slides;
+    d.decided_by = "float";
+    d.witness = f.witness;
+  }
+  return d;
+}
+
+}  // namespace
+
 Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mode, const Ls_polytope* inner,
                               const Ls_polytope* outer) {
   Motion_decision d;
   if (mode != Mode::exact) {
-    const fl::Motion_answer f =
-        fl::classify_load(twin_support(model.support()), {to_bounded(p[0]), to_bounded(p[1]), to_bounded(p[2])});
-    d.cells = f.cells;
-    if (f.motion != fl::Motion_twin::undecided) {
-      d.motion = f.motion == fl::Motion_twin::sticks ? Motion::sticks : Motion::slides;
-      d.decided_by = "float";
-      d.witness = f.witness;
-      return d;
-    }
-    if (mode == Mode::float_only) return d;
+    d = search(model.support(), p);
+    if (d.motion != Motion::undecided || mode == Mode::float_only) return d;
   }
   if ((!inner || !outer) && model.candidate_count() > kMaxCandidates) return d;  // too large to build: undecided
   std::optional<Ls_polytope> built_in, built_out;
@@ -150,6 +159,14 @@ Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mo
   d.motion = classify_load(model.gauge(*inner, Side::inner, p), model.gauge(*outer, Side::outer, p));
   if (d.motion != Motion::undecided) d.decided_by = "polygons";
   return d;
+}
+
+Motion_decision decide_motion(const Ls_support& support, const Vec3q& p, Mode mode, int sides) {
+  if (mode != Mode::exact) {
+    const Motion_decision d = search(support, p);
+    if (d.motion != Motion::undecided || mode == Mode::float_only) return d;
+  }
+  return decide_motion(Polygonal_ls(support, make_directions(sides)), p, Mode::exact);
 }
 
 }  // namespace wrenchkit

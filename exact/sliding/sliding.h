@@ -76,5 +76,7 @@ struct Motion_decision {
 };
 Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& load, Mode mode,
                               const Ls_polytope* inner = nullptr, const Ls_polytope* outer = nullptr);
+// The same from the merged support alone: the polygons (N = sides) are set up only when the search cannot tell.
+Motion_decision decide_motion(const Ls_support& support, const Vec3q& load, Mode mode, int sides);
 
 }  // namespace wrenchkit

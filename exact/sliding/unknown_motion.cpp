@@ -136,13 +136,12 @@ Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Ve
   const std::vector<std::vector<Rational>> v = vertices(s, a);
   std::vector<Vec3q> twists;  // the sliding vertices' twists (from the certified search), candidates for step 3
   for (std::size_t i = 0; i < v.size(); ++i) {
-    const Polygonal_ls model(merge_support(s, &v[i]), make_directions(sides));
     Motion_decision m;
     if (flat(s, v[i])) {
       m.motion = Motion::slides;
       m.decided_by = "flat";
     } else {
-      m = decide_motion(model, p, mode);
+      m = decide_motion(merge_support(s, &v[i]), p, mode, sides);
     }
     r.per_vertex.push_back(m.motion);
     r.decisions.push_back(m);
