@@ -125,23 +125,18 @@ Bounded polygonal_support(const std::vector<Support_point_twin>& s, const Direct
 Motion_answer classify_load(const std::vector<Support_point_twin>& s, const Bounded3& p, std::size_t max_cells) {
   Motion_answer a;
   using M = Motion_twin;
-  // The zero load sticks (its gauge is 0).
-  if (p[0].sign() == Sign::zero && p[1].sign() == Sign::zero && p[2].sign() == Sign::zero) {
-    a.motion = M::sticks;
-    return a;
-  }
   std::vector<Support_point_twin> pts;  // the points with ρ > 0
   for (const Support_point_twin& x : s) {
     const Sign r = x.rho.sign();
     if (r == Sign::uncertain || r == Sign::negative) return a;
     if (r == Sign::positive) pts.push_back(x);
   }
-  const auto nonzero = [](const Bounded& b) { return b.sign() == Sign::positive || b.sign() == Sign::negative; };
-  if (pts.empty()) {  // LS = {0}: a nonzero load slides
-    if (nonzero(p[0]) || nonzero(p[1]) || nonzero(p[2])) a.motion = M::slides;
+  // A load sticks when it is inside the limit surface (on it, it slides; proofs/notes/SL-1). With friction at
+  // fewer than two distinct points LS is flat (a disc, or {0}) and has no interior: every load slides.
+  if (pts.empty()) {
+    a.motion = M::slides;
     return a;
   }
-  // Dimension: two points certified apart make LS three-dimensional; all certified equal make it flat.
   bool apart = false, all_equal = true;
   for (std::size_t i = 1; i < pts.size() && !apart; ++i) {
     const Sign dx = (pts[i].x - pts[0].x).sign(), dy = (pts[i].y - pts[0].y).sign();
@@ -150,18 +145,12 @@ Motion_answer classify_load(const std::vector<Support_point_twin>& s, const Boun
   }
   if (!apart && !all_equal) return a;
   if (!apart) {
-    // One point r with ρ = Σρ_i: the flat disc {(f, r × f) : |f| ≤ ρ}, normal ν = (y, −x, 1) (§11.1).
-    Bounded rho;
-    for (const Support_point_twin& x : pts) rho = rho + x.rho;
-    const Sign off = (pts[0].y * p[0] - pts[0].x * p[1] + p[2]).sign();
-    if (off == Sign::uncertain) return a;
-    if (off != Sign::zero) {
-      a.motion = M::slides;
-      return a;
-    }
-    const Sign in = (p[0] * p[0] + p[1] * p[1] - rho * rho).sign();
-    if (in == Sign::negative) a.motion = M::sticks;
-    else if (in != Sign::uncertain) a.motion = M::slides;
+    a.motion = M::slides;
+    return a;
+  }
+  // The zero load is inside a three-dimensional LS: it sticks.
+  if (p[0].sign() == Sign::zero && p[1].sign() == Sign::zero && p[2].sign() == Sign::zero) {
+    a.motion = M::sticks;
     return a;
   }
   // Three-dimensional LS. Work about a double origin c near the points, scaled by a power of two R ≥

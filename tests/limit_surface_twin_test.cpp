@@ -99,12 +99,13 @@ TEST(LimitSurfaceTwin, BarbellTheory14_2) {
 TEST(LimitSurfaceTwin, SinglePointFlatDiscAndZeroSurface) {
   const auto one = fl::bounded_support({{1, 2, 2, 0.5}});  // ρ = 1 at (1, 2): ν = (2, −1, 1)
   const auto B = [](double a, double b, double c) { return fl::Bounded3{Bounded::exact(a), Bounded::exact(b), Bounded::exact(c)}; };
-  // In the disc's plane: (f, r × f) with r × f = 1·f_y − 2·f_x.
-  EXPECT_EQ(fl::classify_load(one, B(0.5, 0.25, 0.25 - 1.0)).motion, fl::Motion_twin::sticks);
+  // A flat limit surface has no interior (proofs/notes/SL-1): even a load in the disc's relative interior,
+  // (f, r × f) with r × f = 1·f_y − 2·f_x and |f| < ρ, slides (about the point, at no frictional cost).
+  EXPECT_EQ(fl::classify_load(one, B(0.5, 0.25, 0.25 - 1.0)).motion, fl::Motion_twin::slides);
   EXPECT_EQ(fl::classify_load(one, B(1, 0, -2)).motion, fl::Motion_twin::slides);  // on the rim
   EXPECT_EQ(fl::classify_load(one, B(0.5, 0.25, 0)).motion, fl::Motion_twin::slides);  // off the plane
   const auto none = fl::bounded_support({{1, 2, 2, 0}});
-  EXPECT_EQ(fl::classify_load(none, B(0, 0, 0)).motion, fl::Motion_twin::sticks);
+  EXPECT_EQ(fl::classify_load(none, B(0, 0, 0)).motion, fl::Motion_twin::slides);  // LS = {0}: no interior
   EXPECT_EQ(fl::classify_load(none, B(0, 0, 1)).motion, fl::Motion_twin::slides);
   EXPECT_THROW(fl::bounded_support({{0, 0, -1, 0.5}}), std::invalid_argument);
   // Coordinates near the top of the double range: bounds overflow; the search abstains rather than guess.

@@ -148,6 +148,11 @@ Motion_decision search(const Ls_support& support, const Vec3q& p) {
 Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mode, const Ls_polytope* inner,
                               const Ls_polytope* outer) {
   Motion_decision d;
+  if (model.dimension() < 3) {  // a flat limit surface has no interior: every load slides (SL-1)
+    d.motion = Motion::slides;
+    d.decided_by = "flat";
+    return d;
+  }
   if (mode != Mode::exact) {
     d = search(model.support(), p);
     if (d.motion != Motion::undecided || mode == Mode::float_only) return d;
@@ -162,6 +167,7 @@ Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mo
 }
 
 Motion_decision decide_motion(const Ls_support& support, const Vec3q& p, Mode mode, int sides) {
+  if (support.points.size() < 2) return decide_motion(Polygonal_ls(support, make_directions(sides)), p, mode);
   if (mode != Mode::exact) {
     const Motion_decision d = search(support, p);
     if (d.motion != Motion::undecided || mode == Mode::float_only) return d;
