@@ -98,6 +98,7 @@ case "${1:-}" in
     install_packages
     build
     docs/gallery/make_gallery.sh "${BUILD_DIR:-build}"
+    PYTHONPATH="${BUILD_DIR:-build}/python" /usr/bin/python3 docs/sliding/make_slices.py
     ;;
   bench)
     PACKAGES+=(python3)  # the report generator (standard library only)
