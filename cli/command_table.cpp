@@ -95,6 +95,16 @@ std::string file_value(const std::string& option, const std::string& v) {
   return v;
 }
 
+// An option that names a file the command writes (not in batch): its value goes into the field F.
+template <std::string Options::*F>
+void read_file_name(Options& o, const std::string& n, const std::string& v) {
+  o.*F = file_value(n, v);
+}
+template <std::string Options::*F>
+Option file_option(const char* name, const char* help) {
+  return {name, "FILE", help, read_file_name<F>, Option::Role::file};
+}
+
 template <std::size_t N>
 bool all_zero(const std::array<Rational, N>& v) {
   for (const Rational& x : v)
@@ -144,10 +154,10 @@ const std::vector<Option> kLimits = {
      [](Options& o, S n, S v) { o.limits.max_contacts = count_value(n, v); }, Role::limit},
 };
 
-const Option kCertificate{"certificate", "FILE", "write the force-closure certificate to FILE",
-                          [](Options& o, S n, S v) { o.certificate_file = file_value(n, v); }, Role::file};
-const Option kFormCertificate{"form-certificate", "FILE", "write the form-closure certificate to FILE",
-                              [](Options& o, S n, S v) { o.form_certificate_file = file_value(n, v); }, Role::file};
+const Option kCertificate =
+    file_option<&Options::certificate_file>("certificate", "write the force-closure certificate to FILE");
+const Option kFormCertificate =
+    file_option<&Options::form_certificate_file>("form-certificate", "write the form-closure certificate to FILE");
 
 const Option kTwist{"twist", "vx,vy,w", "the motion (exact numbers: 1, -1/2, 0.25); not the zero twist",
                     [](Options& o, S n, S v) {
@@ -189,8 +199,7 @@ const Option kWhat{"what", "labels|dual|reuleaux|limit-surface", "what to draw (
                      else if (v == "limit-surface") o.what = Picture::limit_surface;
                      else bad_value(n, v, "is not one of labels, dual, reuleaux, limit-surface");
                    }};
-const Option kOutput{"output,o", "FILE", "write the SVG to FILE (default: standard output)",
-                     [](Options& o, S n, S v) { o.output = file_value(n, v); }, Role::file};
+const Option kOutput = file_option<&Options::output>("output,o", "write the SVG to FILE (default: standard output)");
 
 const Option kLoad{"load", "fx,fy,m",
                    "also \"motion\": sticks (certainly inside LS), slides (certainly not inside), or undecided "
@@ -198,12 +207,12 @@ const Option kLoad{"load", "fx,fy,m",
                    [](Options& o, S n, S v) { o.load = exact_values<3>(o, n, v, "fx,fy,m"); }};
 const Option kList{"list", nullptr, "list every facet (normal, offset, vertex indices) and vertex, exactly",
                    [](Options& o, S, S) { o.list = true; }};
-const Option kOff{"off", "FILE", "write both polytopes as one coloured OFF mesh (inner blue, outer red)",
-                  [](Options& o, S n, S v) { o.off_file = file_value(n, v); }, Role::file};
-const Option kObj{"obj", "FILE", "write both polytopes as a Wavefront OBJ with objects \"inner\" and \"outer\"",
-                  [](Options& o, S n, S v) { o.obj_file = file_value(n, v); }, Role::file};
-const Option kSvg{"svg", "FILE", "write the picture of 'wrenchkit render --what limit-surface' to FILE",
-                  [](Options& o, S n, S v) { o.svg_file = file_value(n, v); }, Role::file};
+const Option kOff =
+    file_option<&Options::off_file>("off", "write both polytopes as one coloured OFF mesh (inner blue, outer red)");
+const Option kObj = file_option<&Options::obj_file>(
+    "obj", "write both polytopes as a Wavefront OBJ with objects \"inner\" and \"outer\"");
+const Option kSvg =
+    file_option<&Options::svg_file>("svg", "write the picture of 'wrenchkit render --what limit-surface' to FILE");
 
 const Option kJobs{"jobs", "N", "threads (default: all cores); the output is the same for any N",
                    [](Options& o, S n, S v) {
