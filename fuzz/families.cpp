@@ -19,6 +19,7 @@ const char* question_name(Question q) {
     case Question::equilibrium: return "equilibrium";
     case Question::all: return "all";
     case Question::stick_slide: return "stick_slide";
+    case Question::stick_slide_over: return "stick_slide_over";
   }
   return "?";
 }
@@ -95,7 +96,8 @@ Case make_case(const Family& f, double eps, stress::Rng& rng) {
   c.above = fs.above;
   c.untransformed = std::move(fs.untransformed);
   c.support = std::move(fs.support);
-  if (f.question == Question::stick_slide) {
+  c.allowed = fs.allowed;
+  if (f.question == Question::stick_slide || f.question == Question::stick_slide_over) {
     for (std::size_t i = 0; i < 3; ++i) {
       std::string why;
       const std::string& t = fs.load_text[i];
@@ -105,7 +107,7 @@ Case make_case(const Family& f, double eps, stress::Rng& rng) {
     }
     c.motion_load_naive = fs.load;
   }
-  c.expected = c.known ? c.above : decide(read_scene(c.text, Input_limits{}), f.question, Mode::exact).holds;
+  c.expected = c.known || f.question == Question::stick_slide_over ? c.above : decide(read_scene(c.text, Input_limits{}), f.question, Mode::exact).holds;
   return c;
 }
 

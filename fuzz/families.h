@@ -57,6 +57,7 @@ struct Case {
   Vec3q motion_load;
   std::array<double, 3> motion_load_naive{};
   std::vector<stress::Support_spec> support;
+  unsigned allowed = 0;  // stick_slide_over: the answers the construction leaves possible (stress::Motion_answer)
 };
 
 // The next case of a family from a running generator (the stress report draws a family's cases for every

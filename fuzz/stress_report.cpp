@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "exact/pipeline/support_answer.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/io/to_float.h"
 #include "testing/twin_agreement.h"
@@ -45,14 +46,16 @@ const std::vector<double> kEpsilons = {1e-2,  1e-4,  1e-6,  1e-8,  1e-10, 1e-12,
 constexpr int kSides = 16;  // polygonal bounds of the exact stick/slide route (1/λ − 1 ≈ 2 %)
 
 // What a row measures: the family's verdict (closure / equilibrium), its moment labels, or stick/slide.
-enum class Check { verdict, labels, motion };
-const char* check_name(Check c) {
-  return c == Check::verdict ? "verdict" : c == Check::labels ? "labels" : "stick/slide";
+enum class Measure { verdict, labels, motion, motion_over };
+const char* check_name(Measure c) {
+  return c == Measure::verdict ? "verdict" : c == Measure::labels ? "labels" : c == Measure::motion ? "stick/slide"
+                                                                                               : "stick/slide over F";
 }
+bool is_motion(Question q) { return q == Question::stick_slide || q == Question::stick_slide_over; }
 
 struct Row {
   std::string family;
-  Check check = Check::verdict;
+  Measure check = Measure::verdict;
   double eps = 0;
   long cases = 0, naive_wrong = 0, twin_undecided = 0, twin_wrong = 0, hybrid_undecided = 0, hybrid_wrong = 0,
        exact_undecided = 0, exact_wrong = 0;
@@ -89,6 +92,7 @@ long cases_for(const Family& f, long cases) {
   const std::string n = f.name;
   if (n == "many_contacts") return std::max(1L, cases / 25);
   if (n == "collinear_support") return std::max(1L, cases / 20);
+  if (n == "unknown_support") return std::max(1L, cases / 10);
   return cases;
 }
 
@@ -198,6 +202,60 @@ void run_motion_case(const families::Case& k, std::uint64_t seed, long index, Ro
   if (exact.decided && exact.holds != truth) ++row.exact_wrong, report_wrong("stick/slide exact", k, seed, index, "");
 }
 
+// stick/slide over every admissible distribution (unknown_support): each mode through the pipeline (the same
+// answer_support as the CLI), the certificate checked by the independent checker there (a rejected one is a
+// wrong answer). Right = one of the answers the construction leaves possible, and the same as the other mode
+// when both decide. The naive guess: the even split of the unknown weight, then the naive search — one
+// definite answer where the truth may be "depends".
+void run_motion_over_case(const families::Case& k, std::uint64_t seed, long index, Row& row) {
+  const Scene scene = read_scene(k.text, Input_limits{});
+  Support_query query;
+  query.question = Support_question::limit_surface;
+  query.sides = kSides;
+  query.load = k.motion_load;
+  query.polytopes = false;
+  const auto answer_in = [&](Mode mode, std::string& why) {
+    Request request;
+    request.mode = mode;
+    const Support_item item = answer_support(scene, k.text, "stress", request, query);
+    if (item.status == Status::answered && item.motion_over) return item.motion_over->motion;
+    if (item.status != Status::undecided) why = item.message;
+    return Motion_over::undecided;
+  };
+  std::string why_exact, why_twin, why_hybrid;
+  Motion_over exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });
+  Motion_over twin = timed(row.t_twin, [&] { return answer_in(Mode::float_only, why_twin); });
+  Motion_over hybrid = timed(row.t_hybrid, [&] { return answer_in(Mode::hybrid, why_hybrid); });
+  const bool naive = timed(row.t_naive, [&] { return families::naive_slides(k); });
+  const auto bit = [](Motion_over m) {
+    return m == Motion_over::sticks ? stress::answer_sticks : m == Motion_over::slides ? stress::answer_slides
+                                                                                         : stress::answer_depends;
+  };
+  const auto flip = [&](Motion_over m) {  // fault injection: an answer the construction rules out, or another one
+    for (Motion_over o : {Motion_over::sticks, Motion_over::slides, Motion_over::depends})
+      if (o != m && !(k.allowed & bit(o))) return o;
+    return m == Motion_over::sticks ? Motion_over::depends : Motion_over::sticks;
+  };
+  if (twin != Motion_over::undecided && fault("twin")) twin = flip(twin);
+  if (hybrid != Motion_over::undecided && fault("hybrid")) hybrid = flip(hybrid);
+  if (exact != Motion_over::undecided && fault("exact")) exact = flip(exact);
+  const auto wrong = [&](Motion_over m, Motion_over other, const std::string& why) {
+    if (!why.empty()) return true;  // an error or a rejected certificate
+    if (m == Motion_over::undecided) return false;
+    return !(k.allowed & bit(m)) || (other != Motion_over::undecided && other != m);
+  };
+  ++row.cases;
+  const Motion_over truth = exact != Motion_over::undecided ? exact : hybrid;
+  const Motion_over naive_answer = naive ? Motion_over::slides : Motion_over::sticks;
+  row.naive_wrong += !(k.allowed & bit(naive_answer)) || (truth != Motion_over::undecided && truth != naive_answer);
+  row.twin_undecided += twin == Motion_over::undecided;
+  row.hybrid_undecided += hybrid == Motion_over::undecided;
+  row.exact_undecided += exact == Motion_over::undecided;
+  if (wrong(twin, hybrid, why_twin)) ++row.twin_wrong, report_wrong("over F twin", k, seed, index, why_twin);
+  if (wrong(hybrid, exact, why_hybrid)) ++row.hybrid_wrong, report_wrong("over F hybrid", k, seed, index, why_hybrid);
+  if (wrong(exact, hybrid, why_exact)) ++row.exact_wrong, report_wrong("over F exact", k, seed, index, why_exact);
+}
+
 std::string pct(long n, long d) {
   char b[32];
   std::snprintf(b, sizeof b, "%.1f%%", d ? 100.0 * double(n) / double(d) : 0.0);
@@ -217,9 +275,9 @@ std::string eps_text(double e) {
 
 // ---- the SVG: one panel per family and check, rates against ε (the ε axis by category) -----------------
 
-void write_svg(const std::vector<Row>& rows, const std::vector<std::pair<std::string, Check>>& panels,
+void write_svg(const std::vector<Row>& rows, const std::vector<std::pair<std::string, Measure>>& panels,
                const std::string& path) {
-  const auto cases_per_eps = [&](const std::pair<std::string, Check>& p) {
+  const auto cases_per_eps = [&](const std::pair<std::string, Measure>& p) {
     for (const Row& r : rows)
       if (r.family == p.first && r.check == p.second) return r.cases;
     return 0L;
@@ -251,7 +309,7 @@ void write_svg(const std::vector<Row>& rows, const std::vector<std::pair<std::st
   };
   for (std::size_t p = 0; p < panels.size(); ++p) {
     const int x0 = int(p % cols) * pw + left, y0 = int(p / cols) * ph + top;
-    const bool motion = panels[p].second == Check::motion;
+    const bool motion = panels[p].second == Measure::motion;
     s << "<text x='" << x0 << "' y='" << y0 - 7 << "'><tspan font-weight='bold'>" << panels[p].first << " — "
       << check_name(panels[p].second) << "</tspan> (" << cases_per_eps(panels[p]) << " per ε)</text>\n";
     s << "<rect x='" << x0 << "' y='" << y0 << "' width='" << w << "' height='" << h
@@ -331,10 +389,12 @@ std::string table_row(const Row& r, const std::string& first) {
          " | " + us(r.t_twin, r.cases) + " | " + us(r.t_hybrid, r.cases) + " | " + us(r.t_exact, r.cases) + " |\n";
 }
 
-const char* cross_check(const Family& f, Check c) {
+const char* cross_check(const Family& f, Measure c) {
   const std::string n = f.name;
-  if (c == Check::motion) return "the answer by construction (p(q) on LS, load p(q)·(1 ± 10^-k))";
-  if (c == Check::labels)
+  if (c == Measure::motion) return "the answer by construction (p(q) on LS, load p(q)·(1 ± 10^-k))";
+  if (c == Measure::motion_over)
+    return "the answers left possible by construction + the checker (every certificate) + exact = hybrid";
+  if (c == Measure::labels)
     return f.question == Question::equilibrium ? "−load ∈ W read on the exact labels = the true balance"
                                                : "nothing labeled ⇔ the true closure verdict (§5.5)";
   if (n == "rational_rotation" || n == "huge_scale" || n == "tiny_scale" || n == "beyond_double")
@@ -347,7 +407,7 @@ struct Summary {
   double max_naive = 0;
   Row total;
 };
-Summary summarize(const std::vector<Row>& rows, const std::string& family, Check check) {
+Summary summarize(const std::vector<Row>& rows, const std::string& family, Measure check) {
   Summary s;
   for (const Row& r : rows) {
     if (r.family != family || r.check != check) continue;
@@ -359,9 +419,10 @@ Summary summarize(const std::vector<Row>& rows, const std::string& family, Check
   return s;
 }
 
-std::vector<Check> checks_of(const Family& f) {
-  if (f.question == Question::stick_slide) return {Check::motion};
-  return {Check::verdict, Check::labels};
+std::vector<Measure> checks_of(const Family& f) {
+  if (f.question == Question::stick_slide) return {Measure::motion};
+  if (f.question == Question::stick_slide_over) return {Measure::motion_over};
+  return {Measure::verdict, Measure::labels};
 }
 
 std::string totals_table(const std::vector<Row>& rows, const std::vector<Family>& fams) {
@@ -371,7 +432,7 @@ std::string totals_table(const std::vector<Row>& rows, const std::vector<Family>
       "undecided | exact wrong |\n|---|---|---|---|---|---|---|---|---|---|\n";
   Row all;
   for (const Family& f : fams)
-    for (Check c : checks_of(f)) {
+    for (Measure c : checks_of(f)) {
       const Row t = summarize(rows, f.name, c).total;
       all.add(t);
       s += "| " + std::string(f.name) + " | " + check_name(c) + " | " + std::to_string(t.cases) + " | " +
@@ -424,9 +485,9 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << "| family | question | naive wrong from ε ≤ | naive worst | twin abstains from ε ≤ | twin wrong | hybrid wrong "
         "| exact wrong | cross-check of the truth |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Family& f : fams)
-    for (Check c : checks_of(f)) {
+    for (Measure c : checks_of(f)) {
       const Summary s = summarize(rows, f.name, c);
-      md << "| " << f.name << " | " << (c == Check::verdict ? families::question_name(f.question) : check_name(c))
+      md << "| " << f.name << " | " << (c == Measure::verdict ? families::question_name(f.question) : check_name(c))
          << " | " << s.first_naive_wrong << " | " << pct(long(std::lround(1000 * s.max_naive)), 1000) << " | "
          << s.first_undecided << " | " << s.total.twin_wrong << " | " << s.total.hybrid_wrong << " | "
          << s.total.exact_wrong << " | " << cross_check(f, c) << " |\n";
@@ -482,8 +543,8 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << campaign << "\n\n"
      << "## Every family and ε\n\n";
   for (const Family& f : fams)
-    for (Check c : checks_of(f)) {
-      md << "### " << f.name << " — " << (c == Check::verdict ? families::question_name(f.question) : check_name(c))
+    for (Measure c : checks_of(f)) {
+      md << "### " << f.name << " — " << (c == Measure::verdict ? families::question_name(f.question) : check_name(c))
          << "\n\n"
          << table_header();
       for (const Row& r : rows)
@@ -572,15 +633,18 @@ int main(int argc, char** argv) {
       Row verdict, labels;
       verdict.family = labels.family = fam.name;
       verdict.eps = labels.eps = eps;
-      verdict.check = fam.question == Question::stick_slide ? Check::motion : Check::verdict;
-      labels.check = Check::labels;
+      verdict.check = fam.question == Question::stick_slide        ? Measure::motion
+                      : fam.question == Question::stick_slide_over ? Measure::motion_over
+                                                                   : Measure::verdict;
+      labels.check = Measure::labels;
       for (long c = 0; c < n; ++c) {
         const families::Case k = families::make_case(fam, eps, rng);
         if (fam.question == Question::stick_slide) run_motion_case(k, seed, c, verdict);
+        else if (fam.question == Question::stick_slide_over) run_motion_over_case(k, seed, c, verdict);
         else run_contact_case(k, seed, c, verdict, labels);
       }
       rows.push_back(verdict);
-      if (fam.question != Question::stick_slide) rows.push_back(labels);
+      if (!is_motion(fam.question)) rows.push_back(labels);
     }
     std::fprintf(stderr, "stress_report: %-20s %6ld cases per eps, %.1f s\n", fam.name, n, now() - t0);
   }
@@ -593,9 +657,9 @@ int main(int argc, char** argv) {
     const std::string md_path = report + "/stability.md";
     const std::string md = report_markdown(rows, fams, cases, seed, seconds, campaign_section(read_file(md_path)));
     std::ofstream(md_path, std::ios::binary) << md;
-    std::vector<std::pair<std::string, Check>> panels;
+    std::vector<std::pair<std::string, Measure>> panels;
     for (const Family& f : fams)
-      for (Check c : checks_of(f)) panels.emplace_back(f.name, c);
+      for (Measure c : checks_of(f)) panels.emplace_back(f.name, c);
     write_svg(rows, panels, report + "/stability.svg");
   }
   if (!campaign.empty() && !injecting) {

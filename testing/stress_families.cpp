@@ -478,6 +478,234 @@ Family_scene collinear_support(const Family& f, double eps, Rng& r) {
   return out;
 }
 
+// ---- unknown_support: stick/slide over every admissible distribution ---------------------------------------
+
+struct Leg {
+  Rational x, y, mu, force;  // force: given, or the one that placed the centre of pressure (random supports)
+  bool known = false;
+};
+
+// The admissible distributions' vertices by brute force, independently of the engine: every set of 1–3 unknown
+// forces solving Σ f = W', Σ f r = M' (the rest after the given forces) with f ≥ 0, each once.
+std::vector<std::vector<Rational>> brute_vertices(const std::vector<Leg>& legs, const Rational& w,
+                                                  const Rational& cx, const Rational& cy) {
+  Rational rw = w, rx = w * cx, ry = w * cy;
+  std::vector<std::size_t> u;
+  std::vector<Rational> base(legs.size());
+  for (std::size_t i = 0; i < legs.size(); ++i) {
+    if (!legs[i].known) {
+      u.push_back(i);
+      continue;
+    }
+    base[i] = legs[i].force;
+    rw -= legs[i].force, rx -= legs[i].force * legs[i].x, ry -= legs[i].force * legs[i].y;
+  }
+  std::vector<std::vector<Rational>> out;
+  const auto offer = [&](const std::vector<std::pair<std::size_t, Rational>>& sol) {
+    std::vector<Rational> f = base;
+    Rational sw = 0, sx = 0, sy = 0;
+    for (const auto& [i, v] : sol) {
+      if (v < 0) return;
+      f[i] = v, sw += v, sx += v * legs[i].x, sy += v * legs[i].y;
+    }
+    if (sw != rw || sx != rx || sy != ry) return;
+    for (const auto& g : out)
+      if (g == f) return;
+    out.push_back(std::move(f));
+  };
+  for (std::size_t a = 0; a < u.size(); ++a) {
+    offer({{u[a], rw}});
+    for (std::size_t b = a + 1; b < u.size(); ++b) {
+      const Leg &A = legs[u[a]], &B = legs[u[b]];
+      const Rational dx = B.x - A.x, dy = B.y - A.y;
+      if (dx != 0 || dy != 0) {
+        const Rational fb = dx != 0 ? (rx - rw * A.x) / dx : (ry - rw * A.y) / dy;
+        offer({{u[a], rw - fb}, {u[b], fb}});
+      }
+      for (std::size_t c = b + 1; c < u.size(); ++c) {
+        const Leg& C = legs[u[c]];
+        // Cramer on the columns (1, x, y) of A, B, C.
+        const Rational det = (B.x - A.x) * (C.y - A.y) - (C.x - A.x) * (B.y - A.y);
+        if (det == 0) continue;
+        const auto area = [](const Rational& px, const Rational& py, const Leg& P, const Leg& Q) -> Rational {
+          return (P.x - px) * (Q.y - py) - (Q.x - px) * (P.y - py);
+        };
+        // Barycentric coordinates of the rest's centre (rx, ry)/rw, times rw.
+        const Rational gx = rx / (rw == 0 ? Rational(1) : rw), gy = ry / (rw == 0 ? Rational(1) : rw);
+        if (rw == 0) continue;
+        offer({{u[a], rw * area(gx, gy, B, C) / det},
+               {u[b], rw * area(gx, gy, C, A) / det},
+               {u[c], rw * area(gx, gy, A, B) / det}});
+      }
+    }
+  }
+  if (u.empty() || rw == 0) offer({});
+  return out;
+}
+
+// Friction at two distinct points at least (else the limit surface is flat and nothing sticks on it).
+bool two_points(const std::vector<Leg>& legs, const std::vector<Rational>& f) {
+  const Leg* first = nullptr;
+  for (std::size_t i = 0; i < legs.size(); ++i) {
+    if (legs[i].mu * f[i] == 0) continue;
+    if (first && (first->x != legs[i].x || first->y != legs[i].y)) return true;
+    if (!first) first = &legs[i];
+  }
+  return false;
+}
+
+// ⌊√n⌋ for n ≥ 0.
+Integer isqrt(const Integer& n) {
+  Integer r;
+  mpz_sqrt(r.get_mpz_t(), n.get_mpz_t());
+  return r;
+}
+
+// Family "unknown_support". A support (random 4–8 points with a few forces given, the table (±1, ±1) or the
+// dinner plate, every force unknown), a twist q and one admissible distribution f — the vertex of F with the
+// largest power h_f(q) (its limit surface touches the union U of all of them there), the one with the smallest,
+// or any — not flat. With rational l_i ≤ 1/|v_i(q)| (D = k + 6 digits), the forces g_i = μ_i f_i l_i v_i are
+// inside the discs, and p̂ = Σ (g_i, r_i × g_i) lies within 10^-D of the boundary point of LS(f) for q. The
+// load is p̂·(1 ± 10^-k): below, the forces (1 − 10^-k) g_i hold it strictly inside LS(f): f sticks, so the
+// answer is sticks or depends; above, q·p > Σ μ_i f_i u_i with u_i ≥ |v_i| (checked here exactly): f slides —
+// and for the largest vertex q·p exceeds every vertex's bound, so the load slides for every distribution.
+Family_scene unknown_support(const Family& fam, double eps, Rng& r) {
+  const int k = decimal_exponent(eps), digits = k + 6;
+  for (;;) {
+    Family_scene out;
+    out.family = fam.name;
+    out.epsilon = eps;
+    out.known = true;
+    out.above = r.coin();
+    const int shape = r.integer(0, 3);  // 0, 1: random; 2: the table; 3: the plate
+    std::vector<Leg> legs;
+    Rational w = 1, cx = 0, cy = 0;
+    std::string support_mu;
+    if (shape >= 2) {
+      static const int rim[][2][2] = {{{1, 1}, {0, 1}},  {{3, 5}, {4, 5}},  {{0, 1}, {1, 1}},  {{-3, 5}, {4, 5}},
+                                      {{-1, 1}, {0, 1}}, {{-3, 5}, {-4, 5}}, {{0, 1}, {-1, 1}}, {{3, 5}, {-4, 5}},
+                                      {{0, 1}, {0, 1}}};
+      if (shape == 2)
+        for (const auto& [x, y] : {std::pair{1, 1}, {-1, 1}, {-1, -1}, {1, -1}}) legs.push_back({x, y, 1, 0});
+      else
+        for (const auto& p : rim) legs.push_back({Rational(p[0][0], p[0][1]), Rational(p[1][0], p[1][1]), 1, 0});
+      support_mu = "1";
+    } else {
+      const int n = r.integer(4, 8);
+      static const char* mus[] = {"1/2", "1", "1/3", "3/4"};
+      support_mu = mus[r.integer(0, 3)];
+      Rational sw = 0, sx = 0, sy = 0;
+      for (int i = 0; i < n; ++i) {
+        Leg g{short_decimal(r, -1000, 1000, 3), short_decimal(r, -1000, 1000, 3), 0, r.integer(1, 5), false};
+        g.mu = r.integer(0, 3) == 0 ? Rational(r.integer(1, 8), 4) : Rational(0);  // 0: the support's μ
+        g.known = r.integer(0, 2) == 0;
+        sw += g.force, sx += g.force * g.x, sy += g.force * g.y;
+        legs.push_back(g);
+      }
+      legs[static_cast<std::size_t>(r.integer(0, n - 1))].known = false;
+      w = sw, cx = sx / sw, cy = sy / sw;
+    }
+    Rational support_mu_q;
+    {
+      const std::size_t slash = support_mu.find('/');
+      support_mu_q = slash == std::string::npos ? Rational(std::stoi(support_mu))
+                                                : Rational(std::stoi(support_mu.substr(0, slash)),
+                                                           std::stoi(support_mu.substr(slash + 1)));
+    }
+    for (Leg& g : legs)
+      if (g.mu == 0) g.mu = support_mu_q;
+    const std::vector<std::vector<Rational>> vs = brute_vertices(legs, w, cx, cy);
+    // The twist (a translation a quarter of the time) and each point's speed, bracketed.
+    const Rational q0 = short_decimal(r, -1000, 1000, 3), q1 = short_decimal(r, -1000, 1000, 3),
+                   q2 = r.integer(0, 3) == 0 ? Rational(0) : short_decimal(r, -1000, 1000, 3);
+    std::vector<Rational> vx, vy, lower_inv, upper;
+    bool still = false;
+    const Integer scale = power_of_ten(digits);
+    for (const Leg& g : legs) {
+      vx.push_back(q0 - q2 * g.y);
+      vy.push_back(q1 + q2 * g.x);
+      const Rational s2 = vx.back() * vx.back() + vy.back() * vy.back();
+      if (s2 == 0) still = true;
+      // √s2 = √(n·d)/d: S = ⌊√(n·d)·10^D⌋, so S/(d·10^D) ≤ √s2 ≤ (S + 1)/(d·10^D).
+      const Integer n = s2.get_num(), d = s2.get_den(), S = isqrt(n * d * scale * scale);
+      const Rational hi(S + 1, d * scale);
+      upper.push_back(hi);
+      Rational inv(Integer(d * scale * scale) / (S + 1), scale);  // ⌊10^D/hi⌋/10^D ≤ 1/hi ≤ 1/|v|
+      inv.canonicalize();
+      lower_inv.push_back(inv);
+    }
+    if (still) continue;  // a rotation about a support point: its friction direction is free; draw again
+    const auto power_bound = [&](const std::vector<Rational>& f) {
+      Rational h = 0;
+      for (std::size_t i = 0; i < legs.size(); ++i) h += legs[i].mu * f[i] * upper[i];
+      return h;
+    };
+    const int which = r.integer(0, 2);  // 0: the largest power (U's boundary); 1: the smallest; 2: any vertex
+    std::size_t pick = 0;
+    std::vector<std::size_t> usable;
+    for (std::size_t i = 0; i < vs.size(); ++i)
+      if (two_points(legs, vs[i])) usable.push_back(i);
+    if (usable.empty()) continue;
+    pick = usable[static_cast<std::size_t>(r.integer(0, static_cast<int>(usable.size()) - 1))];
+    if (which < 2) {
+      for (std::size_t i : usable) {
+        const Rational a = power_bound(vs[i]), b = power_bound(vs[pick]);
+        if (which == 0 ? a > b : a < b) pick = i;
+      }
+      if (which == 0) {  // the largest among all vertices, flat ones included
+        bool largest = true;
+        for (const auto& g : vs) largest &= power_bound(g) <= power_bound(vs[pick]);
+        if (!largest) continue;
+      }
+    }
+    const std::vector<Rational>& f = vs[pick];
+    Rational px = 0, py = 0, pm = 0;
+    for (std::size_t i = 0; i < legs.size(); ++i) {
+      const Rational c = legs[i].mu * f[i] * lower_inv[i];
+      const Rational gx = c * vx[i], gy = c * vy[i];
+      px += gx, py += gy, pm += legs[i].x * gy - legs[i].y * gx;
+    }
+    const Rational p[3] = {nudged(px, k, out.above), nudged(py, k, out.above), nudged(pm, k, out.above)};
+    const Rational qp = q0 * p[0] + q1 * p[1] + q2 * p[2];
+    if (out.above) {
+      if (qp <= power_bound(f)) continue;  // not proved outside LS(f) (never seen: the margin is 10^-k vs 10^-D)
+      bool every = which == 0;
+      if (every)
+        for (const auto& g : vs) every &= qp > power_bound(g);
+      out.allowed = every ? answer_slides : (answer_slides | answer_depends);
+    } else {
+      out.allowed = answer_sticks | answer_depends;
+    }
+    // The text: the support's μ, the points (a force where given), the weight and the centre of pressure.
+    Json_writer jw(256 + 96 * legs.size());
+    jw.object().member("wrenchkit", 1).key("contacts").array().end_array();
+    jw.key("support").object().key("mu").raw(exact_text(support_mu_q)).key("weight").raw(exact_text(w));
+    jw.key("pressure_center").array().raw(exact_text(cx)).raw(exact_text(cy)).end_array().key("points").array();
+    Rational rest = w;
+    int unknown = 0;
+    for (const Leg& g : legs) {
+      if (g.known) rest -= g.force;
+      unknown += !g.known;
+    }
+    for (const Leg& g : legs) {
+      const std::string xt = exact_text(g.x), yt = exact_text(g.y);
+      jw.object().key("at").array().raw(xt).raw(yt).end_array();
+      if (g.mu != support_mu_q) jw.key("mu").raw(exact_text(g.mu));
+      if (g.known) jw.key("force").raw(exact_text(g.force));
+      jw.end_object();
+      const Rational naive_force = g.known ? g.force : rest / unknown;  // the "natural" even split
+      out.support.push_back({naive_double(xt), naive_double(yt), naive_double(exact_text(naive_force)),
+                             naive_double(exact_text(g.mu))});
+    }
+    out.text = jw.end_array().end_object().end_object().take();
+    for (int i = 0; i < 3; ++i) {
+      out.load_text[static_cast<std::size_t>(i)] = exact_text(p[i]);
+      out.load[static_cast<std::size_t>(i)] = naive_double(out.load_text[static_cast<std::size_t>(i)]);
+    }
+    return out;
+  }
+}
+
 }  // namespace
 
 const std::vector<Family>& families() {
@@ -536,6 +764,12 @@ const std::vector<Family>& report_only_families() {
        "3–6 support points ε off a line (at rational distances from c), load p(q)·(1 ± ε) for the rotation q about c "
        "(p(q) on the limit surface, exact): slides iff above",
        Question::stick_slide, true, true},
+      {"unknown_support",
+       "the distribution unknown: random supports of 4–8 points (some forces given), the table (±1, ±1) and the "
+       "dinner plate; load p·(1 ± ε) with p within 10^-(k+6) of a vertex distribution's limit surface for a random "
+       "twist (the one with the largest power: U's boundary, the smallest, or any): the answers left possible are "
+       "known by construction",
+       Question::stick_slide_over, true, true},
   };
   return f;
 }
@@ -558,6 +792,7 @@ Family_scene make_scene(const Family& family, double epsilon, Rng& rng) {
     throw std::invalid_argument(std::string(family.name) + ": epsilon must be in (0, 1), got " + number_text(epsilon));
   const std::string name = family.name;
   if (name == "collinear_support") return collinear_support(family, epsilon, rng);
+  if (name == "unknown_support") return unknown_support(family, epsilon, rng);
   if (name == "long_rational" || name == "rational_rotation" || name == "huge_scale" || name == "tiny_scale" ||
       name == "beyond_double" || name == "many_contacts")
     return exact_family(family, epsilon, rng);

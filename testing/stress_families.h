@@ -53,7 +53,12 @@ struct Gravity_spec {
 
 // What a family's scenes are made to test. stick_slide: does the load `Family_scene::load_text`
 // stick or slide on the support's (true) limit surface (exact/sliding/sliding.h decide_motion)?
-enum class Question { force_closure, form_closure, equilibrium, all, stick_slide };
+// stick_slide_over: the support's distribution is unknown: does the load stick for every admissible
+// distribution, slide for every one, or does it depend (exact/sliding/unknown_motion.h)?
+enum class Question { force_closure, form_closure, equilibrium, all, stick_slide, stick_slide_over };
+
+// stick_slide_over: the answers a scene's construction leaves possible (a bit set).
+enum Motion_answer : unsigned { answer_sticks = 1, answer_slides = 2, answer_depends = 4 };
 
 struct Family {
   const char* name;
@@ -75,7 +80,8 @@ const std::vector<Family>& families();
 // "beyond_double" (numbers beyond 10^±250: the corpus' boundary measure and `compare` do not handle
 // them yet — see docs/stability.md), "many_contacts" (10^3–10^4 contacts, too large for the corpus and
 // its O(k³) brute-force test) and "collinear_support" (a stick/slide question, which the corpus format
-// does not carry).
+// does not carry), "unknown_support" (stick/slide over every admissible distribution: random supports of
+// 4–8 points, the four-legged table and the dinner plate, loads 10^-k from the thresholds).
 const std::vector<Family>& report_only_families();
 const Family* find_family(std::string_view name);  // either list; nullptr when unknown
 
@@ -99,7 +105,8 @@ struct Family_scene {
   // stick_slide: the load (fx, fy, m) as exact number texts, and as naive doubles; the support's doubles.
   std::array<std::string, 3> load_text;
   std::array<double, 3> load{};
-  std::vector<Support_spec> support;
+  std::vector<Support_spec> support;  // stick_slide_over: an unknown force as the naive even split of the rest
+  unsigned allowed = 0;               // stick_slide_over: the Motion_answer bits the construction allows
 };
 
 // A deterministic random source (mt19937_64 and IEEE arithmetic only; see the file comment).

@@ -164,8 +164,8 @@ void certify_known(const Support_query& q, Support_item& r) {
   }
   if (r.motion.motion != Motion::undecided && r.certificate.empty()) {
     r.uncertified = std::string("the certified search says ") + motion_name(r.motion.motion) +
-                    ", but no rational witness was found (the load is within the inscribed 1024-gons' resolution "
-                    "of the limit surface)";
+                    ", but no rational witness was found (the load is too close to the limit surface for the witnesses: "
+                    "the smoothed twist witness in double and the exact LP on inscribed 256-gons)";
     r.motion.motion = Motion::undecided;
   }
 }
@@ -204,8 +204,8 @@ void certify_over(const Support_query& q, Support_item& r) {
   }
   if (m.motion != Motion_over::undecided && r.certificate.empty()) {
     r.uncertified = std::string("the answer is ") + motion_over_name(m.motion) +
-                    ", but no rational witness was found (the load is within the inscribed 1024-gons' resolution "
-                    "of a limit surface)";
+                    ", but no rational witness was found (the load is too close to the limit surface for the witnesses: "
+                    "the smoothed twist witness in double and the exact LP on inscribed 256-gons)";
     m.motion = Motion_over::undecided;
   }
 }

@@ -27,9 +27,10 @@ std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q);
 std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
                                            const Vec3q& q);
 
-// A stick witness for the distribution f, trying N = sides, 2·sides, … up to 1024 inscribed sides, as long as
-// the LP stays within kMaxStickWitnessColumns columns (support points × sides).
-constexpr std::size_t kMaxStickWitnessColumns = 16384;
+// A stick witness for the distribution f: the smoothed Newton witness (forces along one twist's velocities, an
+// exact last round), else the exact LP on inscribed N-gons, N = sides, 2·sides, … up to 256 sides, as long as
+// the LP stays within kMaxStickWitnessColumns columns (support points × sides; the exact simplex grows fast).
+constexpr std::size_t kMaxStickWitnessColumns = 2048;
 std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admissible& a, const Vec3q& p, int sides,
                                                    const std::vector<Rational>& f);
 
