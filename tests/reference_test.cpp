@@ -400,5 +400,86 @@ TEST(ReferenceCli, SmallCorpusReplacesAnEarlierOne) {
   EXPECT_FALSE(fs::exists(d.string() + ".tmp-wrenchkit"));
 }
 
+// ---- reference --scenes: the user's own scenes ------------------------------------------------------
+
+const char* const kOwnScenes =
+    R"({"id": "pinch", "family": "pinch", "scene": {"wrenchkit": 1, "contacts": [{"at": [0, 1], "normal": [0, -1], "mu": 0.3}, {"at": [0, -1], "normal": [0, 1], "mu": 0.3}]}})"
+    "\n\n"
+    R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]}], "load": {"wrench": [-1, 0, 0]}, "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}})"
+    "\n"
+    R"({"id": "plate", "scene": {"wrenchkit": 1, "load": {"wrench": ["1/10", 0, 0]}, "support": {"mu": 1, "points": [{"at": [1, 0], "force": 1}, {"at": [-1, 0], "force": 1}]}}, "_note": "ignored"})"
+    "\n";
+
+TEST(ReferenceScenes, OwnScenesGetTheCorpusFormatAndCompareAgrees) {
+  const fs::path d = scratch() / "own";
+  fs::remove_all(d);
+  fs::create_directories(d);
+  std::ofstream(d / "mine.jsonl") << kOwnScenes;
+  Cli_result r = run("reference --scenes '" + (d / "mine.jsonl").string() + "' --out '" + (d / "corpus").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::istringstream in(test::read_text((d / "corpus" / "reference.jsonl").string()));
+  std::vector<json::Value> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(json::parse(line, Input_limits{}, "own"));
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0].find("id")->text, "pinch");
+  EXPECT_EQ(lines[0].find("family")->text, "pinch");
+  EXPECT_EQ(lines[1].find("id")->text, "line.3");  // a bare scene: its line number
+  EXPECT_EQ(lines[1].find("family")->text, "user");
+  EXPECT_TRUE(lines[0].find("force_closure")->boolean);
+  // The unknown distribution: power ranges per twist, and the load's motion over every distribution.
+  EXPECT_EQ(lines[1].find("limit_surface")->find("distribution")->text, "unknown");
+  EXPECT_NE(lines[1].find("limit_surface")->find("twists")->items[0].find("power_range"), nullptr);
+  EXPECT_EQ(lines[1].find("motion")->text, "slides");
+  EXPECT_EQ(lines[2].find("motion")->text, "sticks");  // |f| = 1/10 < mu·W = 2
+  // Per-field distances; nearest doubles; every certificate accepted by the independent checker.
+  EXPECT_NE(lines[0].find("boundary")->find("fields")->find("form_closure"), nullptr);
+  EXPECT_EQ(json::text_of(*lines[0].find("approx")->find("scene")->find("contacts")->items[0].find("mu")), "0.3");
+  for (const json::Value& v : lines)
+    for (const auto& [what, cert] : v.find("certificates")->members)
+      EXPECT_TRUE(test::checker_accepts(json::text_of(*v.find("scene")), json::text_of(cert))) << what;
+  EXPECT_NE(lines[2].find("certificates")->find("motion"), nullptr);
+  r = run("compare '" + (d / "corpus").string() + "' '" + (d / "corpus" / "expected.csv").string() + "'");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  // A directory of scene files: ids from the paths, families from the directories.
+  fs::create_directories(d / "dir" / "clamps");
+  std::ofstream(d / "dir" / "a.json") << R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]}]})";
+  std::ofstream(d / "dir" / "clamps" / "b.json") << R"({"wrenchkit": 1})";
+  std::ofstream(d / "dir" / "notes.txt") << "not a scene";
+  r = run("reference --scenes '" + (d / "dir").string() + "' --out '" + (d / "dircorpus").string() + "' --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string csv = test::read_text((d / "dircorpus" / "expected.csv").string());
+  EXPECT_NE(csv.find("\na,false,false,\nclamps.b,false,false,\n"), std::string::npos) << csv;
+  EXPECT_NE(test::read_text((d / "dircorpus" / "reference.jsonl").string()).find("\"family\": \"clamps\""), std::string::npos);
+}
+
+TEST(ReferenceScenes, BadScenesNameFileLineAndFieldAndWriteNothing) {
+  const fs::path d = scratch() / "own_bad";
+  fs::remove_all(d);
+  fs::create_directories(d);
+  struct Case {
+    std::string text, message;
+  };
+  const std::vector<Case> cases = {
+      {"{\"wrenchkit\": 1}\n{\"wrenchkit\": 1, \"contacts\": [{\"at\": [0, 0], \"normal\": [0, 0]}]}\n",
+       "s.jsonl:2: contacts[0].normal: zero vector"},
+      {"{\"wrenchkit\": 1,\n", "s.jsonl:1:"},
+      {"[1]\n", "s.jsonl:1: a scene line must be a JSON object"},
+      {"{\"id\": \"x\", \"scene\": {\"wrenchkit\": 1}}\n{\"id\": \"x\", \"scene\": {\"wrenchkit\": 1}}\n",
+       "s.jsonl:2: id: \"x\" appears twice"},
+      {"{\"id\": \"../x\", \"scene\": {\"wrenchkit\": 1}}\n", "s.jsonl:1: id: \"../x\" is not a corpus id"},
+      {"{\"id\": \"x\", \"scene\": {\"wrenchkit\": 1}, \"famly\": \"a\"}\n", "s.jsonl:1: \"famly\": unknown field"},
+      {"{\"id\": 3, \"scene\": {\"wrenchkit\": 1}}\n", "s.jsonl:1: id: 3 is not a string"},
+      {"\n", "no scenes"},
+  };
+  for (const Case& c : cases) {
+    std::ofstream(d / "s.jsonl") << c.text;
+    const Cli_result r = run("reference --scenes '" + (d / "s.jsonl").string() + "' --out '" + (d / "out").string() + "'");
+    EXPECT_EQ(r.code, 2) << c.text;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.text << ": " << r.err;
+    EXPECT_FALSE(fs::exists(d / "out")) << c.text;
+  }
+  EXPECT_EQ(run("reference --scenes '" + (d / "missing.jsonl").string() + "' --out '" + (d / "out").string() + "'").code, 2);
+}
+
 }  // namespace
 }  // namespace wrenchkit
