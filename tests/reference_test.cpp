@@ -522,6 +522,20 @@ TEST(ReferenceScenes, OwnScenesGetTheCorpusFormatAndCompareAgrees) {
   EXPECT_NE(lines[2].find("certificates")->find("motion"), nullptr);
   r = run("compare '" + (d / "corpus").string() + "' '" + (d / "corpus" / "expected.csv").string() + "'");
   EXPECT_EQ(r.code, 0) << r.out << r.err;
+  // Motion: "sticks" where the load slides for every distribution is unsafe; the power range over the
+  // distributions is compared within the tolerance (here: the corpus' own range, as nearest doubles).
+  const json::Value& ranges = *lines[1].find("approx")->find("limit_surface")->find("twists");
+  std::string range = "[";
+  for (std::size_t i = 0; i < ranges.items.size(); ++i)
+    range += (i ? ", " : "") + json::text_of(*ranges.items[i].find("power_range"));
+  r = run("compare '" + (d / "corpus").string() + "' -",
+          "{\"id\": \"line.3\", \"motion\": \"sticks\", \"power_range\": " + range + "]}\n"
+          "{\"id\": \"plate\", \"motion\": \"sticks\"}\n");
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("motion: falsely sticks (unsafe): reference slides, answer sticks"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("power_range              1 compared       1 agree"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("motion                   2 compared       1 agree       1 disagree"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("no boundary measure for motion"), std::string::npos) << r.out;
   // A directory of scene files: ids from the paths, families from the directories.
   fs::create_directories(d / "dir" / "clamps");
   std::ofstream(d / "dir" / "a.json") << R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]}]})";
