@@ -613,21 +613,21 @@ std::string distance_text(const Disagreement& d) {
 }
 
 // The suggestion when most far disagreements sit within a plausible documented tolerance (≤ 10^-3) of a
-// boundary: the smallest power of ten that covers more than half of them; nullopt otherwise.
+// boundary: the smallest power of ten that covers every one of them within 10^-3, when those are more
+// than half; nullopt otherwise.
 std::optional<std::string> suggested_tolerance(const std::vector<Disagreement>& ds, std::size_t& covered,
                                                std::size_t& far) {
   std::vector<double> d;
   for (const Disagreement& x : ds)
     if (place_of(x) == Place::far) d.push_back(*x.at.distance);
   far = d.size();
-  if (d.size() < 2) return std::nullopt;
   std::sort(d.begin(), d.end());
-  const double median_up = d[d.size() / 2];  // more than half are ≤ this
-  if (median_up > 1e-3) return std::nullopt;
-  int k = static_cast<int>(std::ceil(std::log10(median_up)));
-  if (std::pow(10.0, k) < median_up) ++k;
-  const double t = std::pow(10.0, k);
-  covered = static_cast<std::size_t>(std::upper_bound(d.begin(), d.end(), t) - d.begin());
+  const std::size_t within = static_cast<std::size_t>(std::upper_bound(d.begin(), d.end(), 1e-3) - d.begin());
+  if (far < 2 || 2 * within <= far) return std::nullopt;
+  const double largest = d[within - 1];
+  int k = static_cast<int>(std::ceil(std::log10(largest)));
+  if (std::pow(10.0, k) < largest) ++k;
+  covered = within;
   return "1e" + std::to_string(k);
 }
 
@@ -812,7 +812,13 @@ int run_compare(const Options& o) {
         s << ", " << distance_text(d) << "\n    " << d.field << ": ";
         if (d.kind != "value") s << d.kind << (d.unsafe ? " (unsafe)" : " (lost)") << ": ";
         if (d.power.empty()) {
-          s << "reference " << d.reference << ", answer " << d.answer;
+          s << "reference " << d.reference;
+          if (d.field == "center_of_friction") {  // the exact point also as nearest doubles
+            Json_writer a(64);
+            write_approx(a, *d.reference_value);
+            s << " (nearest doubles " << a.str() << ")";
+          }
+          s << ", answer " << d.answer;
         } else {
           s << d.power.size() << " of " << d.ref->limit_surface->find("twists")->items.size()
             << " twists outside the reference";
