@@ -658,7 +658,9 @@ int run_compare(const Options& o) {
   const Tolerance tol{o.rtol, o.atol};
   // The threshold of "near": --near, or the documented --tolerance when it is larger.
   const Rational threshold = o.tolerance && *o.tolerance > o.near ? *o.tolerance : o.near;
-  const double near = threshold.get_d();
+  // The corpus' distances are doubles (3 significant digits): compared with the threshold's nearest double,
+  // so that a distance written 0.001 is within --tolerance 1e-3.
+  const double near = nearest_double(threshold).value_or(HUGE_VAL);
   const std::string& answers_path = o.positional[1];
   std::string format = o.format;
   if (format.empty())
@@ -671,7 +673,7 @@ int run_compare(const Options& o) {
       format == "csv" ? read_csv_answers(source, text) : read_jsonl_answers(source, text, o.limits);
   Comparison c = compare(corpus, answers, tol);
   for (Disagreement& d : c.disagreements)
-    d.near = d.at.measured && (d.at.exact_zeros > 0 || (d.at.distance && Rational(*d.at.distance) <= threshold));
+    d.near = d.at.measured && (d.at.exact_zeros > 0 || (d.at.distance && *d.at.distance <= near));
   // Far from any boundary first (likely bugs), then those with no measure, then the nearest to a boundary
   // last; by distance, then id within.
   std::stable_sort(c.disagreements.begin(), c.disagreements.end(), [](const Disagreement& a, const Disagreement& b) {
