@@ -478,6 +478,10 @@ std::vector<Command> make_table() {
        "DIR gets reference.jsonl (one scene per line), scenes/ID.json (each scene's canonical text),\n"
        "expected.csv (the simple verdicts) and manifest.json. DIR must not exist, be empty, or hold an\n"
        "earlier corpus (which is replaced); nothing is written unless the whole corpus was built.\n"
+       "\n"
+       "With --scenes FILE.jsonl|DIR, the corpus holds your own scenes instead, in the same format:\n"
+       "FILE has one scene per line (id line.N) or {\"id\": ID, \"family\": F, \"scene\": SCENE} per line;\n"
+       "DIR holds scene files *.json (id: the path without .json, family: the directory).\n"
        "Compare an implementation's answers with: wrenchkit compare DIR answers.jsonl\n",
        {kHelp, with_help(kJson, "print the summary as JSON"),
         {"out", "DIR", "where to write the corpus (required)",
@@ -492,7 +496,9 @@ std::vector<Command> make_table() {
         {"random", "N", "scenes per random family (default 100; 2000 for a big corpus)",
          [](Options& o, S n, S v) { o.reference.random = int_between(n, v, 0, 100000); }},
         {"sides", "N", "polygon sides of the limit-surface bounds (even, 4..64, default 16)",
-         [](Options& o, S n, S v) { o.reference.sides = sides_value(n, v, 64); }}},
+         [](Options& o, S n, S v) { o.reference.sides = sides_value(n, v, 64); }},
+        {"scenes", "FILE|DIR", "your own scenes (JSON lines, or a directory of scene files) instead of the families",
+         [](Options& o, S n, S v) { o.reference.scenes = file_value(n, v); }}},
        {},
        nullptr,
        run_reference});
@@ -505,7 +511,8 @@ std::vector<Command> make_table() {
        "reference' (CORPUS: its directory, or its reference.jsonl). ANSWERS (- for standard input) is\n"
        "JSON lines, one object per answered scene:\n"
        "  {\"id\": \"golden.ladder_mu_1_7\", \"force_closure\": false, \"form_closure\": false}\n"
-       "with any of the fields force_closure, form_closure, equilibrium (true/false/null),\n"
+       "with any of the fields force_closure, form_closure, equilibrium (true/false, 1/0, 1.0/0.0, null),\n"
+       "motion (sticks/slides/depends),\n"
        "center_of_friction ([x, y]), power ([h, ...]: the frictional power for each of the scene's\n"
        "limit_surface.twists), labels ({\"plus\": R, \"minus\": R}, R with any of empty, shape,\n"
        "vertices), error (a string: the implementation gave no answer). Fields starting with _ are\n"
@@ -514,10 +521,12 @@ std::vector<Command> make_table() {
        "Numbers are read exactly from their text and compared within --rtol/--atol; power must lie in\n"
        "the exact bracket of the true power (widened by the tolerance).\n"
        "\n"
-       "Reports agreement per field and each disagreement with its scene id, family, eps, its distance\n"
-       "to a degenerate boundary and the scene's file: disagreements far from any boundary are listed\n"
-       "first (likely bugs), then those within --near of one or on an exact degeneracy (likely\n"
-       "tolerance issues). Scenes without an answer are counted, not failed.\n"
+       "Reports per field and per family the agreements and the disagreements, the unsafe ones (falsely\n"
+       "closed, falsely balanced, falsely sticks) apart from the lost ones (falsely open, unbalanced,\n"
+       "slides), and each disagreement with its scene id, family, eps, the field's own distance to a\n"
+       "degenerate boundary and the scene's file: disagreements far from any boundary are listed first\n"
+       "(likely bugs), then those within --near (or your documented --tolerance) of one or on an exact\n"
+       "degeneracy (likely tolerance issues). Scenes without an answer are counted, not failed.\n"
        "\n"
        "Exit codes: 0 every given answer agrees, 1 disagreements found, 2 bad input (a malformed line,\n"
        "an unknown id or field: the message names the line and the field).\n",
@@ -532,7 +541,9 @@ std::vector<Command> make_table() {
               {"atol", "A", "absolute tolerance (default 1e-12)",
                [](Options& o, S n, S v) { o.atol = non_negative(o, n, v); }},
               {"near", "D", "a distance <= D counts as near a boundary (default 1e-9)",
-               [](Options& o, S n, S v) { o.near = non_negative(o, n, v); }}},
+               [](Options& o, S n, S v) { o.near = non_negative(o, n, v); }},
+              with_help(kTolerance, "the tolerance your implementation documents: a disagreement within EPS of a "
+                                    "degenerate boundary counts as near (EPS > 0)")},
              with_help(kLimits, "max-file-size", "largest answers file (default 67108864)")}),
        {"CORPUS", "ANSWERS"},
        nullptr,

@@ -57,7 +57,8 @@ struct Options {
   std::optional<Picture> what;
   std::string output, off_file, obj_file, svg_file;
   bool list = false;
-  // compare: --format jsonl|csv ("" = by the file name), --rtol, --atol, --near (exact, >= 0).
+  // compare: --format jsonl|csv ("" = by the file name), --rtol, --atol, --near (exact, >= 0), --tolerance
+  // (the field above).
   std::string format;
   Rational rtol{"1/1000000000"}, atol{"1/1000000000000"}, near{"1/1000000000"};
   // reference: --out DIR, --seed, --cases, --random, --sides (4..64).

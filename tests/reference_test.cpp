@@ -300,7 +300,12 @@ TEST_F(Corpus, CompareReportsADisagreementWithItsScene) {
   EXPECT_NE(r.out.find("eps 1e-16"), std::string::npos) << r.out;
   const Cli_result j = run("compare --json '" + dir_ + "' '" + answers.string() + "'");
   EXPECT_EQ(j.code, 1);
-  EXPECT_NE(j.out.find("\"near_boundary\": 1, \"far_from_boundary\": 1, \"agree\": false"), std::string::npos) << j.out;
+  EXPECT_NE(j.out.find("\"near_boundary\": 1, \"far_from_boundary\": 1, \"no_boundary_measure\": 0, \"unsafe\": 0, \"lost\": 2"),
+            std::string::npos)
+      << j.out;
+  EXPECT_NE(j.out.find("\"kind\": \"falsely open\", \"unsafe\": false"), std::string::npos) << j.out;
+  EXPECT_NE(r.out.find("(unsafe: 0 falsely closed; lost: 2 falsely open)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("force_closure: falsely open (lost): reference true, answer false"), std::string::npos) << r.out;
 }
 
 TEST_F(Corpus, CompareReadsQuotedCsvAndPythonBooleans) {
@@ -336,6 +341,78 @@ TEST_F(Corpus, CompareReadsQuotedCsvAndPythonBooleans) {
   EXPECT_NE(o.err.find("a\"b"), std::string::npos) << o.err;
 }
 
+TEST_F(Corpus, CompareReadsVerdictsAsNumPyWritesThem) {
+  // The corpus' own verdicts written every way NumPy and pandas users write them, in JSON lines and CSV
+  // alike: agreement, exit 0. Then one verdict flipped, written as 1: found.
+  const auto forms = [](bool b, int k) -> std::string {
+    switch (k % 6) {
+      case 0: return b ? "1" : "0";
+      case 1: return b ? "1.0" : "0.0";
+      case 2: return b ? "true" : "false";
+      case 3: return b ? "\"True\"" : "\"False\"";
+      case 4: return b ? "\"1\"" : "\"0\"";
+      default: return b ? "1e0" : "-0.0";
+    }
+  };
+  std::string jsonl;
+  int k = 0;
+  for (const json::Value& v : lines_) {
+    const bool fc = v.find("force_closure")->boolean, fo = v.find("form_closure")->boolean;
+    jsonl += "{\"id\": " + json::quote(v.find("id")->text) + ", \"force_closure\": " + forms(fc, k) +
+             ", \"form_closure\": " + forms(fo, k + 1) + "}\n";
+    ++k;
+  }
+  Cli_result r = run("compare '" + dir_ + "' -", jsonl);
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  const fs::path p = scratch() / "numpy.csv";
+  std::string fixed = "id,force_closure,form_closure\n";  // pandas: 1.0/0.0 (a float column), True/False
+  k = 0;
+  for (const json::Value& v : lines_) {
+    const bool fc = v.find("force_closure")->boolean, fo = v.find("form_closure")->boolean;
+    fixed += v.find("id")->text + "," + (fc ? "1.0" : "0.0") + "," + (k++ % 2 ? (fo ? "True" : "False") : (fo ? "1" : "0")) + "\n";
+  }
+  std::ofstream(p) << fixed;
+  r = run("compare '" + dir_ + "' '" + p.string() + "'");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  r = run("compare '" + dir_ + "' -", "{\"id\": \"golden.ladder_mu_1_7\", \"force_closure\": 1}\n");
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("force_closure: falsely closed (unsafe): reference false, answer true"), std::string::npos) << r.out;
+}
+
+TEST_F(Corpus, ComparePowerShowsTwistBracketAndRelativeErrorAndIncompleteIsNoAnswer) {
+  const json::Value* barbell = nullptr;
+  for (const json::Value& v : lines_)
+    if (v.find("id")->text == "golden.limit_surface.barbell") barbell = &v;
+  ASSERT_NE(barbell, nullptr);
+  const auto& tw = barbell->find("limit_surface")->find("twists")->items;
+  ASSERT_EQ(json::text_of(*tw[2].find("power_bracket")), "[\"1\", \"1\"]");
+  std::string good = "[", bad = "[", partial = "[";
+  for (std::size_t i = 0; i < tw.size(); ++i) {
+    const double h = *nearest_double(Rational(tw[i].find("power_bracket")->items[0].text));
+    good += (i ? ", " : "") + stress::number_text(h);
+    bad += (i ? ", " : "") + (i == 2 ? std::string("1.001") : stress::number_text(h));  // the bracket at 2 is [1, 1]
+    partial += (i ? ", " : "") + (i == 1 ? std::string("null") : stress::number_text(h));
+  }
+  const std::string id = "{\"id\": \"golden.limit_surface.barbell\", \"power\": ";
+  Cli_result r = run("compare '" + dir_ + "' -", id + partial + "]}\n");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("power                    0 compared       0 agree       0 disagree       1 no answer"),
+            std::string::npos) << r.out;
+  r = run("compare '" + dir_ + "' -", id + bad + "]}\n");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("1 of 5 twists outside the reference\n      twist 2 [\"0\", \"0\", \"1\"]: reference"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("relative error 0.001"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("no boundary measure for power"), std::string::npos) << r.out;
+  r = run("compare --json '" + dir_ + "' -", id + bad + "]}\n");
+  EXPECT_NE(r.out.find("\"twists\": [{\"index\": 2, \"twist\": [\"0\", \"0\", \"1\"], \"bracket\": ["), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("\"relative_error\": 0.001"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"bracket_approx\": ["), std::string::npos) << r.out;
+  r = run("compare '" + dir_ + "' -", id + good + "]}\n");
+  EXPECT_EQ(r.code, 0) << r.out;
+}
+
 TEST_F(Corpus, CompareBadInputNamesLineAndField) {
   struct Case {
     std::string name, text, message;
@@ -344,12 +421,17 @@ TEST_F(Corpus, CompareBadInputNamesLineAndField) {
       {"a.jsonl", "{\"id\": \"golden.ladder_mu_1_7\", \"force_closure\": false}\n{\"id\": \"nope\"}\n",
        "a.jsonl:2: id: \"nope\" is not in the corpus"},
       {"b.jsonl", "\n{\"id\": \"golden.ladder_mu_1_7\", \"force_closure\": \"no\"}\n",
-       "b.jsonl:2: force_closure: \"no\" is not true, false or null"},
+       "b.jsonl:2: force_closure: \"no\" is not true, false, 1, 0"},
       {"c.jsonl", "{\"id\": \"golden.ladder_mu_1_7\", \"forceclosure\": true}\n", "c.jsonl:1: \"forceclosure\": unknown field"},
       {"d.jsonl", "{\"id\": \"golden.ladder_mu_1_7\",\n", "d.jsonl:1:"},
       {"e.jsonl", "{\"id\": \"golden.ladder_mu_1_7\"}\n{\"id\": \"golden.ladder_mu_1_7\"}\n", "e.jsonl:2: id: \"golden.ladder_mu_1_7\" is answered twice"},
       {"f.csv", "id,force_closure,grip\n", "f.csv:1: column 3: \"grip\" is not one of"},
-      {"g.csv", "id,force_closure\ngolden.ladder_mu_1_7,maybe\n", "g.csv:2: force_closure: \"maybe\" is not true, false (any case), 1, 0 or empty"},
+      {"g.csv", "id,force_closure\ngolden.ladder_mu_1_7,maybe\n", "g.csv:2: force_closure: \"maybe\" is not true, false (any case), 1, 0 (or 1.0, 0.0) or empty"},
+      {"n.jsonl", "{\"id\": \"golden.ladder_mu_1_7\", \"force_closure\": 2}\n", "n.jsonl:1: force_closure: 2 is not true, false, 1, 0"},
+      {"o.jsonl", "{\"id\": \"golden.ladder_mu_1_7\", \"force_closure\": 0.5}\n", "o.jsonl:1: force_closure: 0.5 is not true"},
+      {"p.csv", "id,force_closure\ngolden.ladder_mu_1_7,-1\n", "p.csv:2: force_closure: \"-1\" is not true"},
+      {"q.jsonl", "{\"id\": \"golden.ladder_mu_1_7\", \"motion\": \"sticks\"}\n", "q.jsonl:1: motion: scene \"golden.ladder_mu_1_7\" has no load on a support"},
+      {"r.jsonl", "{\"id\": \"golden.limit_surface.barbell\", \"power_range\": []}\n", "r.jsonl:1: power_range: scene \"golden.limit_surface.barbell\" has a known distribution"},
       {"k.csv", "id,force_closure\n\"golden.ladder_mu_1_7,true\n", "k.csv:2: a quoted cell is not closed"},
       {"l.csv", "id,force_closure\n\"golden.ladder_mu_1_7\"x,true\n", "l.csv:2: text after a quoted cell"},
       {"m.csv", "id,force_closure\ngolden.\"ladder,true\n", "m.csv:2: a quote inside an unquoted cell"},
@@ -398,6 +480,101 @@ TEST(ReferenceCli, SmallCorpusReplacesAnEarlierOne) {
   const std::string manifest = test::read_text((d / "manifest.json").string());
   EXPECT_NE(manifest.find("\"cases\": 0, \"random\": 1"), std::string::npos) << manifest;
   EXPECT_FALSE(fs::exists(d.string() + ".tmp-wrenchkit"));
+}
+
+// ---- reference --scenes: the user's own scenes ------------------------------------------------------
+
+const char* const kOwnScenes =
+    R"({"id": "pinch", "family": "pinch", "scene": {"wrenchkit": 1, "contacts": [{"at": [0, 1], "normal": [0, -1], "mu": 0.3}, {"at": [0, -1], "normal": [0, 1], "mu": 0.3}]}})"
+    "\n\n"
+    R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]}], "load": {"wrench": [-1, 0, 0]}, "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}})"
+    "\n"
+    R"({"id": "plate", "scene": {"wrenchkit": 1, "load": {"wrench": ["1/10", 0, 0]}, "support": {"mu": 1, "points": [{"at": [1, 0], "force": 1}, {"at": [-1, 0], "force": 1}]}}, "_note": "ignored"})"
+    "\n";
+
+TEST(ReferenceScenes, OwnScenesGetTheCorpusFormatAndCompareAgrees) {
+  const fs::path d = scratch() / "own";
+  fs::remove_all(d);
+  fs::create_directories(d);
+  std::ofstream(d / "mine.jsonl") << kOwnScenes;
+  Cli_result r = run("reference --scenes '" + (d / "mine.jsonl").string() + "' --out '" + (d / "corpus").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::istringstream in(test::read_text((d / "corpus" / "reference.jsonl").string()));
+  std::vector<json::Value> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(json::parse(line, Input_limits{}, "own"));
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0].find("id")->text, "pinch");
+  EXPECT_EQ(lines[0].find("family")->text, "pinch");
+  EXPECT_EQ(lines[1].find("id")->text, "line.3");  // a bare scene: its line number
+  EXPECT_EQ(lines[1].find("family")->text, "user");
+  EXPECT_TRUE(lines[0].find("force_closure")->boolean);
+  // The unknown distribution: power ranges per twist, and the load's motion over every distribution.
+  EXPECT_EQ(lines[1].find("limit_surface")->find("distribution")->text, "unknown");
+  EXPECT_NE(lines[1].find("limit_surface")->find("twists")->items[0].find("power_range"), nullptr);
+  EXPECT_EQ(lines[1].find("motion")->text, "slides");
+  EXPECT_EQ(lines[2].find("motion")->text, "sticks");  // |f| = 1/10 < mu·W = 2
+  // Per-field distances; nearest doubles; every certificate accepted by the independent checker.
+  EXPECT_NE(lines[0].find("boundary")->find("fields")->find("form_closure"), nullptr);
+  EXPECT_EQ(json::text_of(*lines[0].find("approx")->find("scene")->find("contacts")->items[0].find("mu")), "0.3");
+  for (const json::Value& v : lines)
+    for (const auto& [what, cert] : v.find("certificates")->members)
+      EXPECT_TRUE(test::checker_accepts(json::text_of(*v.find("scene")), json::text_of(cert))) << what;
+  EXPECT_NE(lines[2].find("certificates")->find("motion"), nullptr);
+  r = run("compare '" + (d / "corpus").string() + "' '" + (d / "corpus" / "expected.csv").string() + "'");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  // Motion: "sticks" where the load slides for every distribution is unsafe; the power range over the
+  // distributions is compared within the tolerance (here: the corpus' own range, as nearest doubles).
+  const json::Value& ranges = *lines[1].find("approx")->find("limit_surface")->find("twists");
+  std::string range = "[";
+  for (std::size_t i = 0; i < ranges.items.size(); ++i)
+    range += (i ? ", " : "") + json::text_of(*ranges.items[i].find("power_range"));
+  r = run("compare '" + (d / "corpus").string() + "' -",
+          "{\"id\": \"line.3\", \"motion\": \"sticks\", \"power_range\": " + range + "]}\n"
+          "{\"id\": \"plate\", \"motion\": \"sticks\"}\n");
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("motion: falsely sticks (unsafe): reference slides, answer sticks"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("power_range              1 compared       1 agree"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("motion                   2 compared       1 agree       1 disagree"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("no boundary measure for motion"), std::string::npos) << r.out;
+  // A directory of scene files: ids from the paths, families from the directories.
+  fs::create_directories(d / "dir" / "clamps");
+  std::ofstream(d / "dir" / "a.json") << R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]}]})";
+  std::ofstream(d / "dir" / "clamps" / "b.json") << R"({"wrenchkit": 1})";
+  std::ofstream(d / "dir" / "notes.txt") << "not a scene";
+  r = run("reference --scenes '" + (d / "dir").string() + "' --out '" + (d / "dircorpus").string() + "' --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string csv = test::read_text((d / "dircorpus" / "expected.csv").string());
+  EXPECT_NE(csv.find("\na,false,false,\nclamps.b,false,false,\n"), std::string::npos) << csv;
+  EXPECT_NE(test::read_text((d / "dircorpus" / "reference.jsonl").string()).find("\"family\": \"clamps\""), std::string::npos);
+}
+
+TEST(ReferenceScenes, BadScenesNameFileLineAndFieldAndWriteNothing) {
+  const fs::path d = scratch() / "own_bad";
+  fs::remove_all(d);
+  fs::create_directories(d);
+  struct Case {
+    std::string text, message;
+  };
+  const std::vector<Case> cases = {
+      {"{\"wrenchkit\": 1}\n{\"wrenchkit\": 1, \"contacts\": [{\"at\": [0, 0], \"normal\": [0, 0]}]}\n",
+       "s.jsonl:2: contacts[0].normal: zero vector"},
+      {"{\"wrenchkit\": 1,\n", "s.jsonl:1:"},
+      {"[1]\n", "s.jsonl:1: a scene line must be a JSON object"},
+      {"{\"id\": \"x\", \"scene\": {\"wrenchkit\": 1}}\n{\"id\": \"x\", \"scene\": {\"wrenchkit\": 1}}\n",
+       "s.jsonl:2: id: \"x\" appears twice"},
+      {"{\"id\": \"../x\", \"scene\": {\"wrenchkit\": 1}}\n", "s.jsonl:1: id: \"../x\" is not a corpus id"},
+      {"{\"id\": \"x\", \"scene\": {\"wrenchkit\": 1}, \"famly\": \"a\"}\n", "s.jsonl:1: \"famly\": unknown field"},
+      {"{\"id\": 3, \"scene\": {\"wrenchkit\": 1}}\n", "s.jsonl:1: id: 3 is not a string"},
+      {"\n", "no scenes"},
+  };
+  for (const Case& c : cases) {
+    std::ofstream(d / "s.jsonl") << c.text;
+    const Cli_result r = run("reference --scenes '" + (d / "s.jsonl").string() + "' --out '" + (d / "out").string() + "'");
+    EXPECT_EQ(r.code, 2) << c.text;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.text << ": " << r.err;
+    EXPECT_FALSE(fs::exists(d / "out")) << c.text;
+  }
+  EXPECT_EQ(run("reference --scenes '" + (d / "missing.jsonl").string() + "' --out '" + (d / "out").string() + "'").code, 2);
 }
 
 }  // namespace

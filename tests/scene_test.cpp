@@ -2,6 +2,10 @@
 // message text pinned (the message names the JSON path and the offending text).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
 #include <random>
 
 #include "exact/io/input_error.h"
@@ -148,6 +152,52 @@ TEST(Numbers, PrimitiveVectors) {
   EXPECT_THROW(primitive(Z3{Integer(0), Integer(0), Integer(0)}), std::logic_error);
   EXPECT_THROW(primitive(Q3{Rational(0), Rational(0), Rational(0)}), std::logic_error);
   EXPECT_THROW(primitive(Rational(0), Rational(0)), std::logic_error);
+}
+
+// nearest_double: correctly rounded (ties to even), against glibc's strtod (correctly rounded) on decimals
+// and against its definition (no double is nearer; a tie goes to the even one) on fractions, with the
+// cases where mpq_get_d (truncation) is wrong, halfway cases, subnormals and the ends of the range.
+TEST(Numbers, NearestDoubleIsCorrectlyRounded) {
+  const auto nearest = [](const Rational& q) { return nearest_double(q).value_or(-12345.0); };
+  const Rational two53 = Rational(Integer(1) << 53);
+  EXPECT_EQ(nearest(two53 + 1), 9007199254740992.0);  // halfway: to the even 2^53
+  EXPECT_EQ(nearest(two53 + 3), 9007199254740996.0);  // halfway: to the even 2^53 + 4
+  const Rational below_one(Integer((Integer(1) << 54) - 1), Integer(1) << 54);
+  EXPECT_EQ(nearest(below_one), 1.0);
+  EXPECT_LT(below_one.get_d(), 1.0);  // mpq_get_d truncates: this is why nearest_double exists
+  EXPECT_EQ(nearest(Rational(2, 3)), 2.0 / 3.0);
+  EXPECT_EQ(nearest(Rational(-1, 10)), -0.1);
+  EXPECT_EQ(nearest(Rational(0)), 0.0);
+  const Rational tiny(Integer(1), Integer(1) << 1075);  // half the smallest subnormal: ties to even 0
+  EXPECT_EQ(nearest(tiny), 0.0);
+  EXPECT_EQ(nearest(tiny * 3), 2 * std::numeric_limits<double>::denorm_min());  // 1.5 ulp: to the even 2
+  EXPECT_EQ(nearest(tiny * Rational(101, 100)), std::numeric_limits<double>::denorm_min());
+  const Rational max(Integer(std::numeric_limits<double>::max()));
+  EXPECT_EQ(nearest(max), std::numeric_limits<double>::max());
+  const Rational half_ulp_above = max + Rational(Integer(1) << 970);  // halfway to 2^1024: overflows
+  EXPECT_FALSE(nearest_double(half_ulp_above).has_value());
+  EXPECT_EQ(nearest(half_ulp_above - 1), std::numeric_limits<double>::max());
+  std::mt19937_64 rng(20261124);
+  for (int i = 0; i < 4000; ++i) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%s%llu.%llue%d", rng() % 2 ? "-" : "", static_cast<unsigned long long>(rng() % 100000000000ull),
+                  static_cast<unsigned long long>(rng()), static_cast<int>(rng() % 620) - 340);
+    EXPECT_EQ(nearest(exact(text, false)), std::strtod(text, nullptr)) << text;
+  }
+  for (int i = 0; i < 4000; ++i) {
+    const Integer p = Integer(static_cast<unsigned long>(rng() >> 1)) * static_cast<unsigned long>(rng() | 1) - Integer(static_cast<unsigned long>(rng()));
+    const Integer q = (Integer(static_cast<unsigned long>(rng() | 1)) << static_cast<unsigned>(rng() % 200));
+    const Rational x(p, q * static_cast<unsigned long>(rng() % 1000 + 1));
+    const Rational v(nearest(x));
+    const Rational up(std::nextafter(v.get_d(), HUGE_VAL)), down(std::nextafter(v.get_d(), -HUGE_VAL));
+    const Rational e = abs(x - v);
+    EXPECT_LE(e, abs(x - up)) << x;
+    EXPECT_LE(e, abs(x - down)) << x;
+    if (e == abs(x - up) || e == abs(x - down)) {  // a tie: the even significand
+      int exp2 = 0;
+      EXPECT_EQ(std::fmod(std::ldexp(std::frexp(v.get_d(), &exp2), 53), 2.0), 0.0) << x;
+    }
+  }
 }
 
 TEST(SceneErrors, MessagesNameThePathAndTheValue) {

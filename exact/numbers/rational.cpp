@@ -1,5 +1,6 @@
 #include "exact/numbers/rational.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <optional>
@@ -235,6 +236,34 @@ bool scan_number(std::string_view s, bool json_number, const Input_limits& limit
   return parse_impl(s, json_number, limits, why, &approx, nullptr, &sign);
 }
 
+
+std::optional<double> nearest_double(const Rational& q) {
+  const int sign = sgn(q);
+  if (sign == 0) return 0.0;
+  const Integer n = abs(q.get_num()), &d = q.get_den();
+  // 2^E ≤ n/d < 2^(E+1)
+  long E = static_cast<long>(mpz_sizeinbase(n.get_mpz_t(), 2)) - static_cast<long>(mpz_sizeinbase(d.get_mpz_t(), 2));
+  {
+    Integer a = n, b = d;
+    if (E >= 0) b <<= static_cast<mp_bitcnt_t>(E);
+    else a <<= static_cast<mp_bitcnt_t>(-E);
+    if (a < b) --E;
+  }
+  if (E > 1023) return std::nullopt;
+  // The unit in the last place of a double of that size (subnormals: 2^-1074); m = n/d / 2^u rounded
+  // to the nearest integer, ties to even: m ≤ 2^53, so m·2^u is exact in a double (or overflows).
+  const long u = std::max(E, -1022L) - 52;
+  Integer num = n, den = d;
+  if (u >= 0) den <<= static_cast<mp_bitcnt_t>(u);
+  else num <<= static_cast<mp_bitcnt_t>(-u);
+  Integer m, r;
+  mpz_tdiv_qr(m.get_mpz_t(), r.get_mpz_t(), num.get_mpz_t(), den.get_mpz_t());
+  const int c = cmp(Integer(r * 2), den);
+  if (c > 0 || (c == 0 && mpz_odd_p(m.get_mpz_t()))) ++m;
+  const double v = std::ldexp(m.get_d(), static_cast<int>(u));  // m.get_d() is exact: m ≤ 2^53
+  if (std::isinf(v)) return std::nullopt;
+  return sign < 0 ? -v : v;
+}
 
 std::string to_string(const Rational& q) { return q.get_str(10); }
 

@@ -42,6 +42,12 @@ bool scan_number(std::string_view text, bool json_number, const Input_limits& li
 // normal double is at most 2^-52·|v|), +∞ if q is outside the normal range of doubles. [FL-4]
 fl::Bounded to_bounded(const Rational& q);
 
+// q correctly rounded to the nearest double (ties to even, IEEE 754 binary64, subnormals included):
+// exact integer division with a sticky remainder, no floating-point step before the last (exact)
+// scaling. mpq_get_d truncates toward zero and is not this. nullopt when q rounds beyond the largest
+// finite double (|q| ≥ 2^1024 − 2^970); a tiny q rounds to ±0.
+std::optional<double> nearest_double(const Rational& q);
+
 // Lowest terms, "p" or "p/q" (q > 0): the JSON output form of docs/cli.md.
 std::string to_string(const Rational& q);
 

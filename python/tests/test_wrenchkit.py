@@ -304,3 +304,30 @@ def test_limit_surface_over_every_admissible_distribution_of_the_table():
     assert d["motion"] == "depends"
     assert d["witnesses"]["sticks"] == (Fraction(1, 2), 0, Fraction(1, 2), 0)
     assert d["witnesses"]["slides"] == (0, Fraction(1, 2), 0, Fraction(1, 2))
+
+
+# ---- reference corpus of the user's own scenes ------------------------------------------------------
+
+def test_reference_of_own_scenes_is_the_command_s_corpus(tmp_path):
+    scenes = tmp_path / "mine.jsonl"
+    scenes.write_text(
+        json.dumps({"id": "pinch", "family": "pinch", "scene": {"wrenchkit": 1, "contacts": [
+            {"at": [0, 1], "normal": [0, -1], "mu": 0.3}, {"at": [0, -1], "normal": [0, 1], "mu": 0.3}]}}) + "\n"
+        + json.dumps({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]}],
+                      "load": {"wrench": [-1, 0, 0]}}) + "\n")
+    summary = wrenchkit.reference(scenes, tmp_path / "py")
+    assert summary["scenes"] == 2 and summary["certificates_checked"] == 5
+    lines = [json.loads(l) for l in (tmp_path / "py" / "reference.jsonl").read_text().splitlines()]
+    assert [l["id"] for l in lines] == ["pinch", "line.2"]
+    assert lines[0]["force_closure"] is True and lines[1]["equilibrium"] is True
+    assert lines[0]["approx"]["scene"]["contacts"][0]["mu"] == 0.3
+    if CLI:
+        subprocess.run([CLI, "reference", "--scenes", str(scenes), "--out", str(tmp_path / "cli")], check=True,
+                       capture_output=True)
+        for f in ("reference.jsonl", "expected.csv", "manifest.json"):
+            assert (tmp_path / "py" / f).read_bytes() == (tmp_path / "cli" / f).read_bytes(), f
+    bad = tmp_path / "bad.jsonl"
+    bad.write_text('{"wrenchkit": 1}\n{"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [0, 0]}]}\n')
+    with pytest.raises(wrenchkit.InputError, match="bad.jsonl:2: contacts\\[0\\].normal: zero vector"):
+        wrenchkit.reference(bad, tmp_path / "nothing")
+    assert not (tmp_path / "nothing").exists()

@@ -51,7 +51,7 @@ from . import _core  # noqa: E402  (the exception classes above are handed to th
 _core._set_exceptions(InputError, InternalError, UndecidedError)
 
 __all__ = ["Scene", "closure", "force_closure", "form_closure", "equilibrium", "labels", "dual",
-           "limit_surface", "sliding", "check", "InputError", "UndecidedError", "InternalError"]
+           "limit_surface", "sliding", "check", "reference", "InputError", "UndecidedError", "InternalError"]
 
 
 def _number_text(x, path):
@@ -229,6 +229,17 @@ def limit_surface(scene, sides=32, *, tolerance=None, twist=None, load=None, mod
 def sliding(scene, twist=None, sides=64, mode="hybrid"):
     """Centre of friction and the frictional load for a twist (theory.md section 10), exact bounds."""
     return _core.sliding(_scene(scene), _vec(twist, "twist"), int(sides), mode)
+
+
+def reference(scenes, out, sides=16):
+    """The reference corpus of your own scenes, as `wrenchkit reference --scenes SCENES --out OUT`.
+
+    scenes: a JSON-lines file (one scene per line, or {"id", "family", "scene"} per line) or a
+    directory of scene files (*.json); out: the corpus directory (docs/reference-format.md), written by
+    the same C++ as the command. Returns {"scenes", "certificates_checked", "bytes"}; raises InputError
+    naming the file, line and field for a bad scene (nothing is written then).
+    """
+    return _core.reference(_os.fspath(scenes), _os.fspath(out), int(sides))
 
 
 def _certificate_text(c):

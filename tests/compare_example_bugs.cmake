@@ -1,0 +1,61 @@
+# CTest driver of the worked examples of docs/compare-example.md §4 (compare_example_bugs): the four peers of
+# docs/examples/peer_bugs.py (standard-library Python) over the default corpus, each bug found where the
+# page says and classified as it says.
+#   cmake -DCLI=<wrenchkit> -DPYTHON=<python3> -DSCRIPT=<peer_bugs.py> -DWORK=<dir> -P compare_example_bugs.cmake
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+execute_process(COMMAND "${CLI}" reference --out "${WORK}/corpus" RESULT_VARIABLE rc OUTPUT_QUIET)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "wrenchkit reference failed (${rc})")
+endif()
+
+# Runs the peer with BUG, compares, and checks that the first disagreement far from any boundary is ID
+# with KIND; sets the report's JSON in `json`.
+function(peer bug id kind)
+  execute_process(COMMAND "${PYTHON}" "${SCRIPT}" "${WORK}/corpus" --bug ${bug} OUTPUT_FILE "${WORK}/${bug}.jsonl"
+    RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "peer_bugs.py --bug ${bug} failed (${rc}): ${err}")
+  endif()
+  execute_process(COMMAND "${CLI}" compare --json "${WORK}/corpus" "${WORK}/${bug}.jsonl" RESULT_VARIABLE rc
+    OUTPUT_VARIABLE out)
+  if(NOT rc EQUAL 1)
+    message(FATAL_ERROR "${bug}: compare should find disagreements (exit 1), got ${rc}")
+  endif()
+  string(JSON n LENGTH "${out}" disagreements)
+  math(EXPR last "${n} - 1")
+  set(found "")
+  foreach(i RANGE ${last})
+    string(JSON near GET "${out}" disagreements ${i} near_boundary)
+    string(JSON measured GET "${out}" disagreements ${i} boundary_measured)
+    string(JSON did GET "${out}" disagreements ${i} id)
+    string(JSON dkind GET "${out}" disagreements ${i} kind)
+    if(NOT near AND measured AND did STREQUAL "${id}" AND dkind STREQUAL "${kind}")
+      set(found yes)
+    endif()
+  endforeach()
+  if(NOT found)
+    message(FATAL_ERROR "${bug}: expected ${id} (${kind}) far from any boundary:\n${out}")
+  endif()
+  set(json "${out}" PARENT_SCOPE)
+endfunction()
+
+function(expect what actual expected)
+  if(NOT "${actual}" STREQUAL "${expected}")
+    message(FATAL_ERROR "${what}: ${actual}, expected ${expected}")
+  endif()
+endfunction()
+
+peer(threshold random_generic.0000 "falsely open")
+string(JSON unsafe GET "${json}" unsafe)
+string(JSON hint GET "${json}" suggested_tolerance)
+expect("threshold: unsafe" ${unsafe} 0)
+expect("threshold: suggested tolerance" "${hint}" "1e-3")
+peer(orientation random_grid.0027 "falsely closed")
+peer(lp-bounds golden.square_pinwheel "falsely closed")
+string(JSON unsafe GET "${json}" unsafe)
+string(JSON lost GET "${json}" lost)
+if(unsafe LESS_EQUAL lost)
+  message(FATAL_ERROR "lp-bounds: most disagreements should be unsafe (${unsafe} unsafe, ${lost} lost)")
+endif()
+peer(scaling golden.two_finger_scale_1e-20 "falsely open")
