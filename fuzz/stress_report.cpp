@@ -513,7 +513,8 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << "* **Stick/slide over every distribution** (unknown_support): naive code picks one distribution (the even\n"
      << "  split) and answers sticks or slides where the truth is often \"depends\": wrong at every ε. Hybrid answers\n"
      << "  with a certificate the independent checker accepts, or says undecided: near 10^-3 in under 1 % of the\n"
-     << "  cases (a test), more as ε shrinks (its stick witnesses are computed in double, then made exact). The twin\n"
+     << "  cases (a test), rarely down to 10^-14, mostly below (its stick witnesses are computed in double, then made\n"
+     << "  exact; its polygon LP then runs to 256 sides, which is what makes those cases slow). The twin\n"
      << "  alone has no LP over the distributions and abstains; exact mode decides far from the thresholds only.\n"
      << "\n| family | what |\n|---|---|\n";
   for (const Family& f : fams) {
