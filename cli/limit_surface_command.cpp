@@ -400,6 +400,7 @@ void write_limit_surface_unknown(Json_writer& w, const Ls_options& lo, const Sup
     w.end_object().end_object();
   }
   if (m.separating_twist) w.key("separating_twist").rationals(*m.separating_twist);
+  if (!m.undecided_why.empty()) w.member("undecided_why", m.undecided_why);
   write_certificate_members(w, r);
 }
 
@@ -425,7 +426,7 @@ std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item
           << dist(r.vertices[*m.sliding_vertex]) << "\n";
         break;
       case Motion_over::undecided:
-        s << "undecided (within the resolution of the limit surfaces; refine --sides)\n";
+        s << "undecided: " << m.undecided_why << "\n";
         break;
     }
     s << certificate_line(r);

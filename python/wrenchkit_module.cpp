@@ -411,6 +411,7 @@ py::dict unknown_distribution(const Support_item& r, const std::string& mode, co
       d["witnesses"] = w;
     }
     if (m.separating_twist) d["separating_twist"] = triple(*m.separating_twist);
+    if (!m.undecided_why.empty()) d["undecided_why"] = m.undecided_why;
   }
   return d;
 }

@@ -259,6 +259,8 @@ TEST(StressFamilies, UnknownSupportNearTheThresholds) {
                               s.load_text[1] + ", " + s.load_text[2];
     if (item.status == Status::undecided || (item.motion_over && item.motion_over->motion == Motion_over::undecided)) {
       ++undecided;
+      EXPECT_TRUE(!item.uncertified.empty() || (item.motion_over && !item.motion_over->undecided_why.empty()))
+          << "an undecided answer says why, with its distance\n" << where;
       if (std::getenv("WRENCHKIT_TEST_VERBOSE"))
       {
         std::string per;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "exact/numbers/exact_lp.h"
@@ -22,6 +23,15 @@ const char* motion_over_name(Motion_over m) {
 namespace {
 
 Rational mu_of(const Support& s, const Support_point& p) { return p.mu ? *p.mu : (s.mu ? *s.mu : Rational(0)); }
+
+constexpr double kPi = 3.141592653589793;
+
+// A relative gap for a sentence (two significant digits; text only, never a predicate).
+std::string gap_text(double g) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2g", g);
+  return b;
+}
 
 }  // namespace
 
@@ -245,6 +255,14 @@ Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Ve
   }
   if (!all_slide) {  // some vertices undecided and none of the other kind: not decided
     r.decided_by = "none";
+    for (std::size_t i = 0; i < r.per_vertex.size(); ++i)
+      if (r.per_vertex[i] == Motion::undecided) {
+        r.undecided_why = "extreme distribution " + std::to_string(i + 1) + " of " + std::to_string(v.size()) +
+                          " is undecided: the load lies between its inscribed and circumscribed " + std::to_string(sides) +
+                          "-gon limit surfaces, within " + gap_text(1 / std::cos(kPi / sides) - 1) +
+                          " of its limit surface (relative, along the load's ray; refine --sides)";
+        break;
+      }
     return r;
   }
   if (twists.size() > 1) {  // their sum first: a twist between the vertices' own
@@ -269,7 +287,9 @@ Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Ve
       return r;
     }
   // A distribution that sticks: the exact LP over F × inscribed N-gons, N doubled while the LP stays small.
-  for (int n = sides; n <= 256 && s.points.size() * static_cast<std::size_t>(n) <= 1024; n *= 2)
+  int largest = 0;
+  for (int n = sides; n <= 256 && s.points.size() * static_cast<std::size_t>(n) <= 1024; n *= 2) {
+    largest = n;
     if (const auto some = stick_witness(s, a, p, n)) {  // closed: confirmed strictly with that distribution
       if ((r.sticking = stick_witness_refined(s, a, p, n, some->distribution))) {
         r.motion = Motion_over::depends;
@@ -277,7 +297,13 @@ Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Ve
         return r;
       }
     }
+  }
   r.decided_by = "none";
+  r.undecided_why = "every extreme distribution slides, no twist tried separates the load from the union of the limit "
+                    "surfaces, and no distribution holds it with forces on inscribed " +
+                    std::to_string(largest ? largest : sides) + "-gons: if inside that union, the load is within " +
+                    gap_text(1 - std::cos(kPi / (largest ? largest : sides))) +
+                    " of its boundary (relative, along the load's ray)";
   return r;
 }
 

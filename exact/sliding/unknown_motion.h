@@ -58,6 +58,8 @@ struct Motion_over_f {
   std::optional<Stick_witness> sticking;          // depends found by the LP (step 2)
   std::optional<Vec3q> separating_twist;          // slides (step 3)
   std::string decided_by;                         // "vertices", "lp", "twist" or "none"
+  // undecided: why, with the distance from a limit surface within which the load lies (relative, along its ray).
+  std::string undecided_why;
 };
 // Precondition: some force unknown, at most kMaxEnumeratedUnknowns of them.
 Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Vec3q& p, Mode mode, int sides);
