@@ -24,6 +24,7 @@
 #include "exact/io/scene_writer.h"
 #include "exact/sliding/sliding.h"
 #include "proofs/checker/checker.h"
+#include "python/convert.h"
 
 namespace py = pybind11;
 using namespace wrenchkit;
@@ -36,6 +37,10 @@ py::object g_input_error, g_internal_error, g_undecided_error;
 struct Undecided_exception {
   std::string message;
 };
+
+}  // namespace
+
+namespace wrenchkit::python {
 
 py::object fraction(const Rational& q) {
   static py::object F = py::module_::import("fractions").attr("Fraction");
@@ -152,6 +157,25 @@ py::dict closure_certificate(const Closure_certificate& c) {
   return d;
 }
 
+py::dict equilibrium_certificate(const Equilibrium_certificate& a) {
+  py::dict c;
+  c["wrenchkit_certificate"] = 1;
+  c["property"] = "equilibrium";
+  c["holds"] = a.holds;
+  if (a.holds) c["combination"] = combination_list(a.combination);
+  else {
+    c["twist"] = triple(a.twist[0], a.twist[1], a.twist[2]);
+    c["reading"] = reading_dict(a.twist);
+  }
+  return c;
+}
+
+}  // namespace wrenchkit::python
+
+namespace {
+
+using namespace wrenchkit::python;
+
 py::dict closure(const Py_scene& s, const std::string& mode) {
   const Closure_item r = answer_closure(s.scene, s.text, request_of(mode));
   raise_unless_answered(r.status, r.message);
@@ -178,22 +202,13 @@ py::dict equilibrium(const Py_scene& s, const std::string& mode) {
   const Equilibrium_item r = answer_equilibrium(s.scene, s.text, request_of(mode));
   raise_unless_answered(r.status, r.message);
   const Equilibrium_answer& a = r.answer;
-  py::dict c;
-  c["wrenchkit_certificate"] = 1;
-  c["property"] = "equilibrium";
-  c["holds"] = a.balanced;
-  if (a.balanced) c["combination"] = combination_list(a.certificate.combination);
-  else {
-    c["twist"] = triple(a.certificate.twist[0], a.certificate.twist[1], a.certificate.twist[2]);
-    c["reading"] = reading_dict(a.certificate.twist);
-  }
   py::dict d;
   d["balanced"] = a.balanced;
   d["load"] = triple(a.load.fx, a.load.fy, a.load.m);
   d["generators"] = a.generators;
   d["mode"] = mode;
   d["decided_by"] = a.decided_by();
-  d["certificate"] = c;
+  d["certificate"] = equilibrium_certificate(a.certificate);
   d["certificate_json"] = r.certificate;
   return d;
 }
@@ -552,4 +567,6 @@ PYBIND11_MODULE(_core, m) {
   m.def("limit_surface", &limit_surface);
   m.def("sliding", &sliding);
   m.def("check", &check);
+  register_arrays(m);
+  register_batch(m);
 }
