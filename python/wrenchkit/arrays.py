@@ -48,7 +48,9 @@ def _where(name, mask, values, what, width=None):
         return
     i = tuple(int(k) for k in _np.argwhere(mask)[0])
     at = f"row {i[0]}" + (f", contact {i[1]}" if len(i) > 1 else "") + (f", coordinate {i[2]}" if len(i) > 2 else "")
-    raise ValueError(f"{name}: {at}: {values[i]!r} {what}")
+    v = values[i]
+    v = tuple(float(x) for x in v) if isinstance(v, _np.ndarray) else v.item() if isinstance(v, _np.generic) else v
+    raise ValueError(f"{name}: {at}: {v!r} {what}")
 
 
 def _counts(counts, rows, width):
