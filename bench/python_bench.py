@@ -3,6 +3,8 @@
     PYTHONPATH=build/python python3 bench/python_bench.py --cli build/wrenchkit --out docs/benchmarks/python.json
 
 Random six-contact frictional grasps (uniform doubles in [-1, 1], mu 0.5; seed 7), hybrid mode:
+Wall time and CPU time (user + sys, children included) are both recorded: on a loaded machine the CPU time
+is the cost per core, the wall time shows what jobs and workers gain.
   * closure_arrays on --rows grasps (default 10^6), jobs 1 and 2: force and form closure per row, the array
     validation included; beside `wrenchkit batch closure --verdict-only --jobs 1` on --cli-rows of the same
     grasps written as JSON lines (repr of each double, what a sampler writes), the process's I/O included;
@@ -16,6 +18,7 @@ The machine may be shared: compare the ratios of one run, not the absolute numbe
 import argparse
 import json
 import os
+import resource
 import subprocess
 import sys
 import tempfile
@@ -37,9 +40,18 @@ def lines_of(p, n, mu):
             {"at": p[i, k].tolist(), "normal": n[i, k].tolist(), "mu": float(mu[i, k])} for k in range(6)]})
 
 
-def timed(f):
-    t = time.perf_counter()
+def cpu_seconds():
+    """CPU time (user + sys) of this process and of its waited-for children: on a shared machine, the cost."""
+    me, kids = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return me.ru_utime + me.ru_stime + kids.ru_utime + kids.ru_stime
+
+
+def timed(f, cpu=None):
+    """Wall seconds of f(); with a dict `cpu`, also its CPU seconds in cpu["s"]."""
+    t, c = time.perf_counter(), cpu_seconds()
     f()
+    if cpu is not None:
+        cpu["s"] = cpu_seconds() - c
     return time.perf_counter() - t
 
 
@@ -52,12 +64,16 @@ def main():
     a.add_argument("--cert-rows", type=int, default=20_000)
     a.add_argument("--dask-lines", type=int, default=1_000_000)
     o = a.parse_args()
-    r = {"machine_cores": os.cpu_count(), "load_average_at_start": os.getloadavg()[0]}
+    r = {"machine_cores": os.cpu_count(), "load_average_at_start": os.getloadavg()[0],
+         "when": time.strftime("%Y-%m-%d", time.gmtime()), "rows": o.rows, "dask_lines": o.dask_lines}
     p, n, mu = grasps(o.rows)
     for jobs in (1, 2):
-        dt = timed(lambda: wrenchkit.closure_arrays(p, n, mu, jobs=jobs))
+        cpu = {}
+        dt = timed(lambda: wrenchkit.closure_arrays(p, n, mu, jobs=jobs), cpu)
         r[f"arrays_jobs{jobs}_rows_per_s"] = o.rows / dt
-        print(f"closure_arrays, {o.rows} rows, jobs {jobs}: {dt:.2f} s, {o.rows / dt:,.0f} rows/s", flush=True)
+        r[f"arrays_jobs{jobs}_rows_per_cpu_s"] = o.rows / cpu["s"]
+        print(f"closure_arrays, {o.rows} rows, jobs {jobs}: {dt:.2f} s wall, {cpu['s']:.2f} s CPU, "
+              f"{o.rows / dt:,.0f} rows/s, {o.rows / cpu['s']:,.0f} rows per CPU second", flush=True)
     r["arrays_jobs2_over_jobs1"] = r["arrays_jobs2_rows_per_s"] / r["arrays_jobs1_rows_per_s"]
     with tempfile.TemporaryDirectory() as tmp:
         text = os.path.join(tmp, "grasps.jsonl")
@@ -65,22 +81,29 @@ def main():
             for line in lines_of(p[:o.cli_rows], n[:o.cli_rows], mu[:o.cli_rows]):
                 f.write(line + "\n")
         cmd = f"{o.cli} batch closure --verdict-only --jobs 1 < {text} > /dev/null"
-        dt = timed(lambda: subprocess.run(cmd, shell=True, check=True))
+        cpu = {}
+        dt = timed(lambda: subprocess.run(cmd, shell=True, check=True), cpu)
         r["cli_verdict_only_jobs1_scenes_per_s"] = o.cli_rows / dt
+        r["cli_verdict_only_jobs1_scenes_per_cpu_s"] = o.cli_rows / cpu["s"]
         print(f"wrenchkit batch closure --verdict-only --jobs 1, {o.cli_rows} lines: {o.cli_rows / dt:,.0f} scenes/s",
               flush=True)
         m = o.cert_rows
         res = {}
-        dt = timed(lambda: res.update(wrenchkit.closure_arrays(p[:m], n[:m], mu[:m], certificates=True, jobs=1)))
+        cpu = {}
+        dt = timed(lambda: res.update(wrenchkit.closure_arrays(p[:m], n[:m], mu[:m], certificates=True, jobs=1)), cpu)
         r["arrays_certificates_jobs1_rows_per_s"] = m / dt
+        r["arrays_certificates_jobs1_rows_per_cpu_s"] = m / cpu["s"]
         canon = os.path.join(tmp, "canonical.jsonl")
         with open(canon, "w") as f:
             for c in res["certificates"]:
                 f.write(" ".join(c["scene_json"].split()) + "\n")
-        dt = timed(lambda: subprocess.run(f"{o.cli} batch closure --jobs 1 < {canon} > /dev/null", shell=True, check=True))
+        cpu = {}
+        dt = timed(lambda: subprocess.run(f"{o.cli} batch closure --jobs 1 < {canon} > /dev/null", shell=True,
+                                          check=True), cpu)
         r["cli_certified_jobs1_scenes_per_s"] = m / dt
-        r["cli_certified_over_arrays_certificates"] = (r["cli_certified_jobs1_scenes_per_s"] /
-                                                      r["arrays_certificates_jobs1_rows_per_s"])
+        r["cli_certified_jobs1_scenes_per_cpu_s"] = m / cpu["s"]
+        r["cli_certified_over_arrays_certificates"] = (r["cli_certified_jobs1_scenes_per_cpu_s"] /
+                                                      r["arrays_certificates_jobs1_rows_per_cpu_s"])
         print(f"certificates, {m} rows: arrays {r['arrays_certificates_jobs1_rows_per_s']:,.0f} rows/s, "
               f"batch closure {r['cli_certified_jobs1_scenes_per_s']:,.0f} scenes/s", flush=True)
         del res

@@ -76,6 +76,8 @@ def test_bag_of_scenes_and_of_files(client, tmp_path):
     got = wrenchkit.dask.batch("equilibrium", dask.bag.from_sequence(lines, npartitions=7)).compute()
     assert got == want
     assert wrenchkit.dask.batch("equilibrium", str(a), lines_per_part=50).compute() == want
+    futures = wrenchkit.dask.batch("equilibrium", [str(a)], lines_per_part=50, client=client)
+    assert len(futures) > 5 and [line for f in futures for line in f.result()] == want
 
 
 def test_a_killed_worker_loses_and_duplicates_nothing(client, tmp_path):

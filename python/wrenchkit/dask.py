@@ -11,8 +11,8 @@ tasks elsewhere, and the client writes each part once, in order. Input paths mus
 
     wrenchkit.dask.batch(command, paths_or_bag, *options, client=None, lines_per_part=20000, **keywords)
 
-returns a dask.bag of the output lines (str) in order: from paths (one or a list), or from a dask.bag of
-scenes (dicts, JSON lines, Scenes). Compute it with any client (client=None: the current default).
+returns a dask.bag of the output lines (str) in order, from paths (one or a list) or from a dask.bag of scenes
+(dicts, JSON lines, Scenes); with a client, the parts' futures in order (each a list of lines).
 """
 
 import argparse
@@ -56,14 +56,26 @@ def parts(path, lines_per_part=20000, sample=1 << 20):
     return list(zip(cuts[:-1], cuts[1:]))
 
 
-def _run_range(command, words, path, start, end, first_line):
+def _read_lines(path, start, end):
     with open(path, "rb") as f:
         f.seek(start)
         data = f.read(end - start)
     lines = data.split(b"\n")
     if lines and lines[-1] == b"":
         lines.pop()
-    return list(wrenchkit.batch(command, lines, *words, jobs=1, first_line=first_line))
+    return lines
+
+
+def _run_range(command, words, path, start, end, first_line):
+    return list(wrenchkit.batch(command, _read_lines(path, start, end), *words, jobs=1, first_line=first_line))
+
+
+def _run_range_bytes(command, words, path, start, end, first_line):
+    """The part's output as the command line writes it (lines and newlines), without a Python str per line."""
+    lines, code = wrenchkit._core.Batch([command] + words).run(_read_lines(path, start, end), first_line, 1)
+    if code:
+        raise wrenchkit.InternalError(f"batch {command}: the command line would exit {code} on lines from {first_line}")
+    return b"".join(line + b"\n" for line in lines)
 
 
 def _run_list(command, words, scenes, first_line):
@@ -78,35 +90,38 @@ def _offsets(counts):
     return out
 
 
-def batch(command, paths_or_bag, *options, client=None, lines_per_part=20000, **keywords):
-    """A dask.bag of the lines of `wrenchkit batch COMMAND OPTIONS` on the input, in order (module docstring).
-
-    Options are checked here, before anything is computed (InputError as wrenchkit.batch). `client` is used to
-    count the lines of each part (for their numbers) when given; the bag itself computes on any scheduler.
-    """
-    words = wrenchkit._batch_options(options, keywords)
-    wrenchkit._core.Batch([command] + words)  # usage errors now, not on a worker
+def _parts(command, words, paths_or_bag, lines_per_part, run):
+    """One dask.delayed per part: run(command, words, <the part>, first_line) after the parts' line counts."""
     if isinstance(paths_or_bag, dask.bag.Bag):
         pieces = paths_or_bag.to_delayed()
         counts = [dask.delayed(len)(p) for p in pieces]
         first = dask.delayed(_offsets)(counts)
-        out = [dask.delayed(_run_list, pure=True)(command, words, p, first[k]) for k, p in enumerate(pieces)]
-        return dask.bag.from_delayed(out)
+        return [dask.delayed(_run_list, pure=True)(command, words, p, first[k]) for k, p in enumerate(pieces)]
     paths = [paths_or_bag] if isinstance(paths_or_bag, (str, os.PathLike)) else list(paths_or_bag)
     ranges = [(os.fspath(p), s, e) for p in paths for s, e in parts(os.fspath(p), lines_per_part)]
     counts = [dask.delayed(_line_count, pure=True)(p, s, e) for p, s, e in ranges]
     first = dask.delayed(_offsets)(counts)
-    out = [dask.delayed(_run_range, pure=True)(command, words, p, s, e, first[k]) for k, (p, s, e) in enumerate(ranges)]
+    return [dask.delayed(run, pure=True)(command, words, p, s, e, first[k]) for k, (p, s, e) in enumerate(ranges)]
+
+
+def batch(command, paths_or_bag, *options, client=None, lines_per_part=20000, **keywords):
+    """The lines of `wrenchkit batch COMMAND OPTIONS` on the input, in order (module docstring): a dask.bag (one
+    partition per part), or with `client` the parts submitted to it: a list of futures in order, each with its
+    part's lines. Options are checked here, before anything is computed (InputError as wrenchkit.batch).
+    """
+    words = wrenchkit._batch_options(options, keywords)
+    wrenchkit._core.Batch([command] + words)  # usage errors now, not on a worker
+    out = _parts(command, words, paths_or_bag, lines_per_part, _run_range)
+    if client is not None:
+        return client.compute(out)
     return dask.bag.from_delayed(out) if out else dask.bag.from_sequence([], npartitions=1)
 
 
-def _write_in_order(client, bag, out):
-    """Compute the bag's partitions on the client's workers and write them in order, each once."""
-    futures = client.compute(bag.to_delayed())
+def _write_in_order(client, parts, out):
+    """Compute the parts (bytes) on the client's workers and write them in order, each once."""
+    futures = client.compute(parts)
     for f in futures:
-        for line in f.result():
-            out.write(line.encode("utf-8", "surrogateescape"))
-            out.write(b"\n")
+        out.write(f.result())
         f.release()
     out.flush()
 
@@ -131,7 +146,8 @@ def main(argv=None):
         argv, words = argv[:k], argv[k + 1:]
     a = p.parse_args(argv)
     try:
-        bag = batch(a.command, a.inputs, *words, lines_per_part=a.lines_per_part)
+        wrenchkit._core.Batch([a.command] + words)  # usage errors before any cluster starts
+        parts_ = _parts(a.command, words, a.inputs, a.lines_per_part, _run_range_bytes)
     except (ValueError, OSError) as e:
         print(f"wrenchkit.dask: {e}", file=sys.stderr)
         return 2
@@ -143,7 +159,7 @@ def main(argv=None):
                                dashboard_address=None)
         client = Client(cluster)
     try:
-        _write_in_order(client, bag, sys.stdout.buffer)
+        _write_in_order(client, parts_, sys.stdout.buffer)
     finally:
         client.close()
         if cluster is not None:
