@@ -250,3 +250,30 @@ def test_batch_dicts_keywords_and_line_numbers():
         list(wrenchkit.batch("closure", [s], sides=8))
     with pytest.raises(wrenchkit.InputError, match="not a command that answers per scene"):
         list(wrenchkit.batch("check", [s]))
+
+
+def test_float_mode_marks_undecided_rows_and_agrees_where_it_decides():
+    # Three frictionless contacts whose normal lines nearly meet at the origin (1e-15 off): the twin alone
+    # cannot certify some of them; those rows are -1 (verdicts False, no certificate), as closure() raises.
+    rng = np.random.default_rng(3)
+    rows = 300
+    ang, rad = rng.uniform(0, 2 * np.pi, (rows, 3)), rng.uniform(0.5, 2, (rows, 3))
+    p = np.stack([rad * np.cos(ang), rad * np.sin(ang)], axis=-1)
+    n = np.stack([-np.cos(ang) + rng.normal(0, 1e-15, (rows, 3)), -np.sin(ang)], axis=-1)
+    f = wrenchkit.closure_arrays(p, n, 0.0, mode="float", certificates=True)
+    h = wrenchkit.closure_arrays(p, n, 0.0)
+    undecided = f["decided_by"] == -1
+    assert 0 < undecided.sum() < rows
+    assert (f["force_closure"][undecided] == False).all() and all(f["certificates"][i] is None for i in np.flatnonzero(undecided))  # noqa: E712
+    assert (f["force_closure"][~undecided] == h["force_closure"][~undecided]).all()
+    for i in range(60):
+        s = scene_of(p[i], n[i], [0.0] * 3, 3)
+        if undecided[i]:
+            with pytest.raises(wrenchkit.UndecidedError):
+                wrenchkit.closure(s, mode="float")
+        else:
+            assert wrenchkit.closure(s, mode="float")["force_closure"] == bool(f["force_closure"][i])
+    # Equilibrium in float mode abstains on rank < 3 (one frictionless contact); hybrid decides exactly.
+    pts, nrm, loads = np.zeros((2, 1, 2)), np.array([[[0, 1.0]], [[0, 1.0]]]), np.array([[0, -1, 0], [0, 1, 0.0]])
+    assert wrenchkit.equilibrium_arrays(pts, nrm, 0, loads, mode="float")["decided_by"].tolist() == [-1, -1]
+    assert wrenchkit.equilibrium_arrays(pts, nrm, 0, loads)["balanced"].tolist() == [True, False]
