@@ -77,7 +77,10 @@ struct Worker {
 };
 
 // The rows 0..rows-1 through `answer(Worker&, row, Item&)` on `jobs` threads, the GIL released; `emit(row,
-// Item&)` on the calling thread in row order (it takes the GIL itself when it needs Python).
+// Item&)` on the calling thread in row order (it takes the GIL itself when it needs Python). Windows of
+// kRowsPerThread rows per thread: the threads meet once per window, and a row costs about a microsecond, so
+// a small window would make every thread wait for one that the system preempted.
+constexpr std::size_t kRowsPerThread = 8192;
 template <class Item, class Answer, class Emit>
 void map_rows(std::size_t rows, unsigned jobs, Answer answer, Emit emit) {
   py::gil_scoped_release release;
@@ -85,7 +88,7 @@ void map_rows(std::size_t rows, unsigned jobs, Answer answer, Emit emit) {
   ordered_map<std::size_t, Item, Worker>(
       jobs, [&](std::size_t& i) { return next < rows ? (i = next++, true) : false; },
       [&](Worker& w, std::size_t row, Item& out, std::size_t) { answer(w, row, out); },
-      [&](std::size_t row, Item& item) { emit(row, item); });
+      [&](std::size_t row, Item& item) { emit(row, item); }, kRowsPerThread);
 }
 
 // A status that the validated arrays cannot produce: a bug, raised as InternalError (std::runtime_error).
