@@ -92,3 +92,18 @@ def test_a_killed_worker_loses_and_duplicates_nothing(client, tmp_path):
     out = b"".join(line.encode() + b"\n" for f in futures for line in f.result())
     assert pending > 0, "the run ended before the worker was killed: nothing was tested"
     assert out == want
+
+
+def test_the_command_line_on_a_running_cluster_survives_a_killed_worker(client, tmp_path):
+    # python3 -m wrenchkit.dask --scheduler ADDRESS: once its first lines are out, a worker process is killed.
+    a = write_input(tmp_path / "a.jsonl", 6000, 5)
+    want = cli_batch(["closure"], [a])
+    run = subprocess.Popen([sys.executable, "-m", "wrenchkit.dask", "batch", "closure", "--scheduler",
+                            client.scheduler.address, "--lines-per-part", "150", str(a)], stdout=subprocess.PIPE)
+    first = run.stdout.read(1)
+    victim = next(iter(client.run(os.getpid).values()))
+    os.kill(victim, signal.SIGKILL)
+    rest = run.stdout.read()
+    assert run.wait() == 0
+    assert len(rest) > len(want) // 2, "the run was nearly over when the worker was killed: nothing was tested"
+    assert first + rest == want
