@@ -246,6 +246,7 @@ def test_batch_dicts_keywords_and_line_numbers():
     out = list(wrenchkit.batch("closure", [s, s], mode="exact", verdict_only=True, first_line=41))
     assert out[0].startswith('{"line": 41, "command": "closure"') and out[1].startswith('{"line": 42,')
     assert '"force_closure": true' in out[0]
+    assert list(wrenchkit.batch("closure", [wrenchkit.Scene(s)], mode="exact", verdict_only=True, first_line=41)) == out[:1]
     with pytest.raises(wrenchkit.InputError, match="--sides is not an option of batch closure"):
         list(wrenchkit.batch("closure", [s], sides=8))
     with pytest.raises(wrenchkit.InputError, match="not a command that answers per scene"):

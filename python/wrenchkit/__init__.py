@@ -287,7 +287,7 @@ def _line_text(s):
     if isinstance(s, dict):
         return _to_json(s if "wrenchkit" in s else {"wrenchkit": 1, **s})
     if isinstance(s, Scene):
-        return s.json
+        return s.json.strip().replace("\n", " ")  # one line (a JSON string holds no raw newline)
     raise InputError(f"batch: a scene is a dict, a JSON line (str or bytes) or a Scene, not {type(s).__name__}")
 
 
