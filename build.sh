@@ -15,7 +15,8 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(g++ cmake ninja-build ccache libgmp-dev libgtest-dev librapidcheck-dev clang libclang-rt-14-dev
-          libboost-program-options-dev pybind11-dev python3-dev python3-pytest python3-scipy)
+          libboost-program-options-dev pybind11-dev python3-dev python3-pytest python3-scipy
+          python3-numpy python3-dask python3-distributed python3-build)
 # The benchmark suite and its peers (bench/; built and smoke-tested by `test` so it never rots).
 PACKAGES+=(libbenchmark-dev libqhull-dev libcdd-dev libglpk-dev libcgal-dev)
 

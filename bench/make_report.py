@@ -470,12 +470,48 @@ def main():
     open(os.path.join(docs, "benchmarks", "growth_support_points.svg"), "w").write(kplot.svg())
     md.append("\n![growth with support points](benchmarks/growth_support_points.svg)\n")
 
+    python_section(md, docs)
+
     md.append("## Reproduce\n")
     md.append("```sh\n./build.sh bench                      # everything: build, run (2–5 min), report\n"
               "cmake -S . -B build -DWRENCHKIT_BUILD_BENCH=ON && cmake --build build --target wrenchkit_bench\n"
               "build/bench/wrenchkit_bench --benchmark_filter='^generic/6/'   # one section\n"
-              "build/bench/wrenchkit_bench --smoke --benchmark_min_time=0.001  # the CI smoke\n```\n")
+              "build/bench/wrenchkit_bench --smoke --benchmark_min_time=0.001  # the CI smoke\n"
+              "PYTHONPATH=build/python python3 bench/python_bench.py --cli build/wrenchkit --out docs/benchmarks/python.json"
+              "  # (d)\n```\n")
     open(os.path.join(docs, "benchmarks.md"), "w").write("\n".join(md))
+
+
+def python_section(md, docs):
+    """(d) The Python front ends beside the command line's batch: docs/benchmarks/python.json, written by
+    bench/python_bench.py (its own run: the whole Python stack, so not part of wrenchkit_bench)."""
+    path = os.path.join(docs, "benchmarks", "python.json")
+    if not os.path.exists(path):
+        return
+    r = json.load(open(path))
+    f = lambda x: f"{x:,.0f}".replace(",", " ")
+    md.append("## (d) Python: arrays, certificates, streams on Dask, beside `wrenchkit batch`\n")
+    md.append("Random six-contact frictional grasps (uniform doubles, μ = 0.5), hybrid, one run of "
+              "`bench/python_bench.py` (" + r.get("when", "") + "; load average " +
+              f"{r['load_average_at_start']:.1f} at its start on {r['machine_cores']} cores: a shared machine, so "
+              "compare within the run, not across runs). A row is force and form closure of one grasp.\n")
+    md.append("| what | per wall second | per CPU second |\n|---|---|---|")
+    md.append(f"| `closure_arrays`, {f(r.get('rows', 1000000))} rows, `jobs=1` | {f(r['arrays_jobs1_rows_per_s'])} rows | "
+              f"{f(r['arrays_jobs1_rows_per_cpu_s'])} rows |")
+    md.append(f"| `closure_arrays`, `jobs=2` | {f(r['arrays_jobs2_rows_per_s'])} rows "
+              f"(× {r['arrays_jobs2_over_jobs1']:.2f}) | {f(r['arrays_jobs2_rows_per_cpu_s'])} rows |")
+    md.append(f"| `wrenchkit batch closure --verdict-only --jobs 1` (JSON lines: the doubles' repr) | "
+              f"{f(r['cli_verdict_only_jobs1_scenes_per_s'])} scenes | {f(r['cli_verdict_only_jobs1_scenes_per_cpu_s'])} scenes |")
+    md.append(f"| `closure_arrays(certificates=True, jobs=1)`: both certificates checked, as dicts | "
+              f"{f(r['arrays_certificates_jobs1_rows_per_s'])} rows | {f(r['arrays_certificates_jobs1_rows_per_cpu_s'])} rows |")
+    md.append(f"| `wrenchkit batch closure --jobs 1` on the same scenes (certified) | "
+              f"{f(r['cli_certified_jobs1_scenes_per_s'])} scenes | {f(r['cli_certified_jobs1_scenes_per_cpu_s'])} scenes |")
+    md.append(f"| `python3 -m wrenchkit.dask batch closure --verdict-only --workers 1`, {f(r.get('dask_lines', 1000000))} "
+              f"lines (the cluster's start included) | {f(r['dask_workers1_lines_per_s'])} lines | |")
+    md.append(f"| the same, `--workers 2` | {f(r['dask_workers2_lines_per_s'])} lines "
+              f"(× {r['dask_workers2_over_workers1']:.2f}) | |\n")
+    if r.get("note"):
+        md.append(r["note"] + "\n")
 
 
 if __name__ == "__main__":

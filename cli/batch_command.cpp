@@ -73,9 +73,7 @@ struct Line {
   bool too_long = false;
 };
 
-struct Worker {
-  std::string source;
-};
+struct Worker {};
 
 // A line that was not answered: {"line": N, KIND: MESSAGE, "exit_code": C}, KIND "error" (bad input, or
 // options that cannot apply to this scene), "undecided" or "internal_error".
@@ -87,6 +85,27 @@ void write_error_line(Json_writer& w, std::size_t line, const Ended& e) {
 
 }  // namespace
 
+Status batch_line(const Options& o, const Scene_answer& answer, const std::string& text, bool too_long,
+                  std::size_t n, std::string& out) {
+  Json_writer j(512, std::move(out));  // the line's own string again: its capacity is reused
+  Status status = Status::answered;
+  try {
+    if (too_long)
+      throw Input_error("line larger than the size limit of " + std::to_string(o.limits.max_file_bytes) +
+                        " bytes (--max-file-size)");
+    const std::string source = "line " + std::to_string(n);
+    j.object().member("line", n);  // the command's answer with "line" first
+    answer(j, text, source);
+    j.end_object();
+  } catch (...) {
+    const Ended e = failure_of(std::current_exception());
+    status = e.status;
+    write_error_line(j, n, e);
+  }
+  out = j.take();
+  return status;
+}
+
 // wrenchkit batch COMMAND [OPTIONS] < scenes.jsonl (the command and its options already read and
 // prepared: cli/command_table.cpp).
 int run_batch(const Options& o, const Scene_answer& answer) {
@@ -94,24 +113,10 @@ int run_batch(const Options& o, const Scene_answer& answer) {
   Line_reader reader(std::cin.rdbuf(), o.limits.max_file_bytes);
   ordered_map<Line, std::string, Worker>(
       o.jobs, [&](Line& l) { return reader.next(l.text, l.too_long); },
-      [&](Worker& w, const Line& l, std::string& out, std::size_t index) {
-        const std::size_t n = index + 1;
-        Json_writer j(512, std::move(out));  // the line's own string again: its capacity is reused
-        try {
-          if (l.too_long)
-            throw Input_error("line larger than the size limit of " + std::to_string(o.limits.max_file_bytes) +
-                              " bytes (--max-file-size)");
-          w.source = "line " + std::to_string(n);
-          j.object().member("line", n);  // the command's answer with "line" first
-          answer(j, l.text, w.source);
-          j.end_object();
-        } catch (...) {
-          const Ended e = failure_of(std::current_exception());
-          if (e.status == Status::check_failed) self_check_failed = true;
-          if (e.status == Status::internal_error) internal_error = true;
-          write_error_line(j, n, e);
-        }
-        out = j.take();
+      [&](Worker&, const Line& l, std::string& out, std::size_t index) {
+        const Status s = batch_line(o, answer, l.text, l.too_long, index + 1, out);
+        if (s == Status::check_failed) self_check_failed = true;
+        if (s == Status::internal_error) internal_error = true;
       },
       [&](std::size_t, const std::string& out) {
         std::cout.write(out.data(), static_cast<std::streamsize>(out.size()));

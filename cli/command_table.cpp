@@ -747,6 +747,16 @@ int run_batch_command(const Command& batch, const std::vector<std::string>& args
 
 }  // namespace
 
+Batch_job prepare_batch(const std::vector<std::string>& args) {
+  const Command* batch = find_command("batch");
+  const Command* c = args.empty() ? nullptr : find_command(args[0]);
+  if (!c || !c->prepare)
+    throw Usage_error("batch: \"" + (args.empty() ? std::string() : args[0]) + "\" is not a command that answers per scene");
+  const Options o = parse(batch_grammar(*batch, *c), std::vector<std::string>(args.begin() + 1, args.end()));
+  if (o.help || !o.positional.empty()) throw Usage_error("batch " + args[0] + ": takes options only, no --help or scene files");
+  return {o, c->prepare(o)};
+}
+
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = make_table();
   return table;

@@ -41,6 +41,15 @@ struct Command {
 // The table, in the order of `wrenchkit --help`.
 const std::vector<Command>& commands();
 
+// `batch COMMAND [OPTIONS]` without the word batch: the options parsed and validated as the command line does,
+// and the command's per-scene JSON answer prepared from them (for cli/common.h's batch_line). Usage_error as
+// `wrenchkit batch` gives it.
+struct Batch_job {
+  Options options;
+  Scene_answer answer;
+};
+Batch_job prepare_batch(const std::vector<std::string>& command_and_options);
+
 // `wrenchkit ARGS…` (argv without the program name): parses, validates and runs; the exit code.
 // Throws Usage_error, Input_error, Undecided, Self_check_failure as the commands do.
 int run_command_line(const std::vector<std::string>& args);

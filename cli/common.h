@@ -204,6 +204,10 @@ int run_equilibrium(const Options& o, const std::string& scene_text, const std::
 int run_analyze(const Options& o, const std::string& scene_text, const std::string& source, const char* command);
 // batch: `answer` (the command's, prepared from `o`) on every line of standard input.
 int run_batch(const Options& o, const Scene_answer& answer);
+// One line of batch: the `n`th line's answer (or its error line) into `out` (no newline), and how it ended. Every
+// front end's batch writes its lines with it (the Python bindings' wrenchkit.batch too).
+Status batch_line(const Options& o, const Scene_answer& answer, const std::string& text, bool too_long,
+                  std::size_t n, std::string& out);
 int run_check(const Options& o);
 
 // labels_command.cpp: labels, dual, reuleaux;  render_command.cpp: render

@@ -1,6 +1,6 @@
 # `wrenchkit reference` embeds the golden scenes of tests/golden/ (closure, equilibrium, limit_surface)
 # with their expected answers, so that the installed command needs no source tree.
-# Included from the top-level CMakeLists.txt after add_executable(wrenchkit ...).
+# Included from the top-level CMakeLists.txt after add_library(wrenchkit_cli ...).
 if(CMAKE_SCRIPT_MODE_FILE)
   # Script mode: cmake -DROOT=<tests/golden> -DOUT=<file.inc> -P cli/reference_goldens.cmake
   file(GLOB_RECURSE scenes RELATIVE "${ROOT}" "${ROOT}/*.scene.json")
@@ -28,5 +28,5 @@ add_custom_command(OUTPUT "${WRENCHKIT_GOLDENS_INC}"
           -P ${PROJECT_SOURCE_DIR}/cli/reference_goldens.cmake
   DEPENDS ${WRENCHKIT_GOLDEN_FILES} "${PROJECT_SOURCE_DIR}/cli/reference_goldens.cmake"
   COMMENT "Embedding tests/golden/ for wrenchkit reference")
-target_sources(wrenchkit PRIVATE "${WRENCHKIT_GOLDENS_INC}")
-target_include_directories(wrenchkit PRIVATE "${PROJECT_BINARY_DIR}/generated")
+target_sources(wrenchkit_cli PRIVATE "${WRENCHKIT_GOLDENS_INC}")
+target_include_directories(wrenchkit_cli PRIVATE "${PROJECT_BINARY_DIR}/generated")

@@ -25,6 +25,7 @@
 #include "exact/io/scene_writer.h"
 #include "exact/sliding/sliding.h"
 #include "proofs/checker/checker.h"
+#include "python/convert.h"
 
 namespace py = pybind11;
 using namespace wrenchkit;
@@ -37,6 +38,10 @@ py::object g_input_error, g_internal_error, g_undecided_error;
 struct Undecided_exception {
   std::string message;
 };
+
+}  // namespace
+
+namespace wrenchkit::python {
 
 py::object fraction(const Rational& q) {
   static py::object F = py::module_::import("fractions").attr("Fraction");
@@ -153,6 +158,25 @@ py::dict closure_certificate(const Closure_certificate& c) {
   return d;
 }
 
+py::dict equilibrium_certificate(const Equilibrium_certificate& a) {
+  py::dict c;
+  c["wrenchkit_certificate"] = 1;
+  c["property"] = "equilibrium";
+  c["holds"] = a.holds;
+  if (a.holds) c["combination"] = combination_list(a.combination);
+  else {
+    c["twist"] = triple(a.twist[0], a.twist[1], a.twist[2]);
+    c["reading"] = reading_dict(a.twist);
+  }
+  return c;
+}
+
+}  // namespace wrenchkit::python
+
+namespace {
+
+using namespace wrenchkit::python;
+
 py::dict closure(const Py_scene& s, const std::string& mode) {
   const Closure_item r = answer_closure(s.scene, s.text, request_of(mode));
   raise_unless_answered(r.status, r.message);
@@ -179,22 +203,13 @@ py::dict equilibrium(const Py_scene& s, const std::string& mode) {
   const Equilibrium_item r = answer_equilibrium(s.scene, s.text, request_of(mode));
   raise_unless_answered(r.status, r.message);
   const Equilibrium_answer& a = r.answer;
-  py::dict c;
-  c["wrenchkit_certificate"] = 1;
-  c["property"] = "equilibrium";
-  c["holds"] = a.balanced;
-  if (a.balanced) c["combination"] = combination_list(a.certificate.combination);
-  else {
-    c["twist"] = triple(a.certificate.twist[0], a.certificate.twist[1], a.certificate.twist[2]);
-    c["reading"] = reading_dict(a.certificate.twist);
-  }
   py::dict d;
   d["balanced"] = a.balanced;
   d["load"] = triple(a.load.fx, a.load.fy, a.load.m);
   d["generators"] = a.generators;
   d["mode"] = mode;
   d["decided_by"] = a.decided_by();
-  d["certificate"] = c;
+  d["certificate"] = equilibrium_certificate(a.certificate);
   d["certificate_json"] = r.certificate;
   return d;
 }
@@ -579,4 +594,6 @@ PYBIND11_MODULE(_core, m) {
   m.def("sliding", &sliding);
   m.def("check", &check);
   m.def("reference", &reference);
+  register_arrays(m);
+  register_batch(m);
 }

@@ -314,6 +314,13 @@ class Reader {
 Contact exact_contact(const Contact& c) {
   if (!c.exact_pending) return c;
   Contact e = c;
+  if (c.from_doubles) {  // mpq_set_d: the double's exact binary value
+    e.at = {Rational(c.twin.ax.v), Rational(c.twin.ay.v)};
+    e.normal = {Rational(c.twin.nx.v), Rational(c.twin.ny.v)};
+    e.mu = Rational(c.twin.mu.v);
+    e.exact_pending = e.from_doubles = false;
+    return e;
+  }
   Input_limits unlimited;  // the texts were validated against the caller's limits already
   unlimited.max_digits = static_cast<std::size_t>(-1);
   unlimited.max_exponent = std::numeric_limits<long>::max();
@@ -332,6 +339,19 @@ Contact exact_contact(const Contact& c) {
   }
   e.exact_pending = false;
   return e;
+}
+
+void set_point_contact(Contact& c, double ax, double ay, double nx, double ny, double mu) {
+  c.kind = Contact::Kind::point;
+  c.name.clear();
+  c.twin = fl::Bounded_contact{};
+  c.twin.ax = fl::Bounded::exact(ax);
+  c.twin.ay = fl::Bounded::exact(ay);
+  c.twin.nx = fl::Bounded::exact(nx);
+  c.twin.ny = fl::Bounded::exact(ny);
+  c.twin.mu = fl::Bounded::exact(mu);
+  c.twin.frictional = mu != 0;  // exact: the double is the value
+  c.has_twin = c.exact_pending = c.from_doubles = true;
 }
 
 Scene read_scene_tree(std::string_view json_text, const Input_limits& limits, std::string_view source, bool lazy) {

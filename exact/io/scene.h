@@ -40,7 +40,16 @@ struct Contact {
   bool exact_pending = false;
   std::array<std::string, 5> number_text;
   std::array<bool, 5> number_is_json{};
+  // Lazy from doubles (set_point_contact): exact_pending, and the rationals are the twin's values, each
+  // double being the binary rational it denotes (its bound is 0); no text.
+  bool from_doubles = false;
 };
+
+// A point contact of doubles (the array front ends), each read as the exact binary rational it denotes — not
+// as a decimal text: the certified twin is exact (bounds 0) and the rationals are built on demand by
+// exact_contact (mpq_set_d, exact). Precondition (the caller validates, naming its own indices): every value
+// finite, (nx, ny) ≠ 0, mu ≥ 0. Reuses `c`'s storage.
+void set_point_contact(Contact& c, double ax, double ay, double nx, double ny, double mu);
 
 // The contact with its rationals filled (a copy when it was read lazily).
 Contact exact_contact(const Contact& c);

@@ -34,7 +34,7 @@ void reset(Contact& c) {
   c.name.clear();
   c.twin = fl::Bounded_contact{};
   c.has_twin = false;
-  c.exact_pending = false;
+  c.exact_pending = c.from_doubles = false;
   for (std::string& t : c.number_text) t.clear();
   c.number_is_json.fill(false);
 }

@@ -51,7 +51,9 @@ from . import _core  # noqa: E402  (the exception classes above are handed to th
 _core._set_exceptions(InputError, InternalError, UndecidedError)
 
 __all__ = ["Scene", "closure", "force_closure", "form_closure", "equilibrium", "labels", "dual",
-           "limit_surface", "sliding", "check", "reference", "InputError", "UndecidedError", "InternalError"]
+           "limit_surface", "sliding", "check", "reference", "batch", "closure_arrays", "equilibrium_arrays",
+           "stick_slide_arrays", "DECIDED_BY", "MOTION", "MOTION_DECIDED_BY", "InputError", "UndecidedError",
+           "InternalError"]
 
 
 def _number_text(x, path):
@@ -267,3 +269,74 @@ def check(scene, certificate):
     {"accepted": bool, "reason": str}; raises InputError if the scene itself is bad.
     """
     return _core.check(_scene(scene), _certificate_text(certificate))
+
+
+def _batch_options(options, kwargs):
+    """batch's options as command-line words: strings as given, keywords as --name VALUE (True: a flag)."""
+    words = [str(o) for o in options]
+    for k, v in kwargs.items():
+        flag = "--" + k.replace("_", "-")
+        if v is True:
+            words.append(flag)
+        elif v is False or v is None:
+            continue
+        elif isinstance(v, (list, tuple)):
+            words += [flag, ",".join(_number_text(x, k) for x in v)]
+        elif isinstance(v, str):
+            words += [flag, v]
+        else:
+            words += [flag, _number_text(v, k)]
+    return words
+
+
+def _line_text(s):
+    """One scene as the text of a JSON line: a dict as _to_json, a str or bytes line as given (one final
+    newline dropped), a Scene as its canonical text."""
+    if isinstance(s, bytes):
+        return s[:-1] if s.endswith(b"\n") else s
+    if isinstance(s, str):
+        return s[:-1] if s.endswith("\n") else s
+    if isinstance(s, dict):
+        return _to_json(s if "wrenchkit" in s else {"wrenchkit": 1, **s})
+    if isinstance(s, Scene):
+        return s.json.strip().replace("\n", " ")  # one line (a JSON string holds no raw newline)
+    raise InputError(f"batch: a scene is a dict, a JSON line (str or bytes) or a Scene, not {type(s).__name__}")
+
+
+def batch(command, scenes, *options, jobs=None, first_line=1, chunk=None, **kwargs):
+    """The answers of `wrenchkit batch COMMAND [OPTIONS]` for any iterable of scenes, streamed in order.
+
+    scenes: dicts (the scene format, Python numbers as in Scene), JSON lines (str or bytes), or Scenes.
+    options: the command line's words ("--mode", "exact", "--verdict-only"), or keywords (mode="exact",
+    verdict_only=True, twist=(0, 0, 1), sides=8). Yields one str per scene: exactly the line `wrenchkit batch
+    COMMAND` writes for that scene's line (without the newline), numbered from first_line; bad scenes give
+    their error line, as there. jobs: threads (default: batch's --jobs, else every core). Options that do
+    not apply raise InputError before any scene is read; a certificate rejected by the independent checker
+    (a bug) raises InternalError after its line.
+    """
+    job = _core.Batch([command] + _batch_options(options, kwargs))
+    threads = int(jobs) if jobs else (_os.cpu_count() or 1)
+    size = int(chunk) if chunk else 1024 * threads
+    line = int(first_line)
+    texts = []
+
+    def run(texts, line):
+        lines, code = job.run(texts, line, int(jobs or 0))
+        for out in lines:
+            yield out.decode("utf-8", "surrogateescape")
+        if code:
+            raise InternalError(f"batch {command}: an answer failed its own certificate check or hit an internal "
+                                f"error (the command line exits {code} here): see the lines' messages")
+
+    for s in scenes:
+        texts.append(_line_text(s))
+        if len(texts) == size:
+            yield from run(texts, line)
+            line += len(texts)
+            texts = []
+    if texts:
+        yield from run(texts, line)
+
+
+from .arrays import (DECIDED_BY, MOTION, MOTION_DECIDED_BY, closure_arrays,  # noqa: E402
+                     equilibrium_arrays, stick_slide_arrays)
