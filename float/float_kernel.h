@@ -34,6 +34,7 @@ class Float_kernel {
       m.err = x[0].e + x[1].e + x[2].e;
       mag_.push_back(m);
     }
+    scene_bound_ = scene_bound(g_, mag_);
   }
   std::size_t size() const { return g_.size(); }
   const std::vector<Bounded3>& generators() const { return g_; }
@@ -69,7 +70,25 @@ class Float_kernel {
   // Two stages [FL-2]: a plain-double determinant with a bound from magnitudes (cheap, decides
   // almost every non-degenerate sign), then the Bounded evaluation [FL-1], whose exact rounding
   // errors also certify exact zeros of exact data.
+  // Stage 0 [FL-2] first: the plain-double determinant against one bound for the whole scene
+  // (scene_bound(), computed once from the columns' largest magnitudes and input errors); it decides
+  // almost every sign of an ordinary scene for the price of the determinant alone.
   Sign det_sign(std::size_t i, std::size_t j, std::size_t k) const {
+    const Bounded3& a = g_[i];
+    const Bounded3& b = g_[j];
+    const Bounded3& c = g_[k];
+    const double d0 = a[0].v * (b[1].v * c[2].v - b[2].v * c[1].v) - a[1].v * (b[0].v * c[2].v - b[2].v * c[0].v) +
+                      a[2].v * (b[0].v * c[1].v - b[1].v * c[0].v);
+    if (d0 > scene_bound_) return Sign::positive;
+    if (-d0 > scene_bound_) return Sign::negative;
+    return det_sign_filtered(i, j, k);
+  }
+
+  // Stage 0's bound on |D − D̂| for every determinant of this kernel (+∞ when the stage declines).
+  double scene_bound() const { return scene_bound_; }
+
+  // Stages 1 and 2 alone (what det_sign does when stage 0 cannot decide).
+  Sign det_sign_filtered(std::size_t i, std::size_t j, std::size_t k) const {
     const Sign fast = det_sign_static(i, j, k);
     if (fast != Sign::uncertain) return fast;
     // det is invariant under cyclic permutations of its rows: expand along the row with the largest
@@ -120,12 +139,34 @@ class Float_kernel {
     std::array<double, 3> up;   // an upper bound of the exact |x| of each coordinate
     double err;                 // total input error of the generator
   };
+  // Stage 0 (proofs/notes/FL-1, "Stage 0"): with M_c = max |x̂_c|, M'_c ≥ max(|x̂_c| + e_c) and E_c = max e_c
+  // over the generators (column c), every determinant of three of them has
+  //   |D − D̂| ≤ 6·(E0·M'1·M'2 + M'0·E1·M'2 + M'0·M'1·E2) + 48u·M0·M1·M2,
+  // provided no product underflows or overflows: every nonzero |x̂| within [2^-300, 2^300] (else +∞: the
+  // stage declines). Evaluated with an upward nudge of 2^-45 and a slack of 2^-1000.
+  static double scene_bound(const std::vector<Bounded3>& g, const std::vector<Magnitudes>& mag) {
+    double M[3] = {0, 0, 0}, Mu[3] = {0, 0, 0}, E[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < g.size(); ++i)
+      for (int c = 0; c < 3; ++c) {
+        const double x = mag[i].abs[c];
+        if (x != 0 && !(x >= 0x1p-300 && x <= 0x1p300)) return Bounded::kInf;  // also NaN and ±∞
+        if (!(g[i][c].e < 0x1p300) || !(mag[i].up[c] <= 0x1p301)) return Bounded::kInf;  // also NaN
+        M[c] = x > M[c] ? x : M[c];
+        Mu[c] = mag[i].up[c] > Mu[c] ? mag[i].up[c] : Mu[c];
+        E[c] = g[i][c].e > E[c] ? g[i][c].e : E[c];
+      }
+    const double in = 6 * (E[0] * Mu[1] * Mu[2] + Mu[0] * E[1] * Mu[2] + Mu[0] * Mu[1] * E[2]);
+    const double round = 0x1p-53 * 48 * (M[0] * M[1] * M[2]);
+    return (in + round) * (1 + 0x1p-45) + 0x1p-1000;
+  }
+
   // Σ over the six permutations σ of x_σ0·y_σ1·z_σ2 (non-negative entries).
   static double permanent(const std::array<double, 3>& x, const std::array<double, 3>& y, const std::array<double, 3>& z) {
     return x[0] * (y[1] * z[2] + y[2] * z[1]) + x[1] * (y[0] * z[2] + y[2] * z[0]) + x[2] * (y[0] * z[1] + y[1] * z[0]);
   }
   std::vector<Bounded3> g_;
   std::vector<Magnitudes> mag_;
+  double scene_bound_ = Bounded::kInf;  // stage 0's bound for every determinant (+∞: declined)
 };
 
 class Naive_kernel {
