@@ -22,7 +22,8 @@ using Bounded3 = std::array<Bounded, 3>;
 class Float_kernel {
  public:
   explicit Float_kernel(std::vector<Bounded3> g) : g_(std::move(g)) {
-    mag_.reserve(g_.size());
+    mag_.resize(g_.size());
+    std::size_t n = 0;
     for (const Bounded3& x : g_) {
       Magnitudes m{};
       for (int c = 0; c < 3; ++c) {
@@ -32,7 +33,7 @@ class Float_kernel {
         m.up[c] = x[c].e == 0 ? m.abs[c] : (m.abs[c] + x[c].e) * (1 + 0x1p-51);
       }
       m.err = x[0].e + x[1].e + x[2].e;
-      mag_.push_back(m);
+      mag_[n++] = m;
     }
     scene_bound_ = scene_bound(g_, mag_);
   }
