@@ -82,7 +82,7 @@ TEST(Bounded, EveryBoundContainsTheExactDeterminant) {
   EXPECT_GT(certified, 9000);  // the non-singular half is certified
 }
 
-// [FL-2] Stage 0: one bound per kernel. Kernels of random generators at mixed scales (so the bound is
+// [FL-2] Stage 0: one bound per kernel (determinants and minors). Kernels of random generators at mixed scales (so the bound is
 // coarse for the small ones), half of the triples nearly singular; every sign Stage 0 gives (|D̂| > bound)
 // is the exact sign; magnitudes outside [2^-300, 2^300] make it decline for the whole kernel.
 TEST(FloatKernel, SceneBoundSignsAreExactAndExtremeMagnitudesDecline) {
@@ -106,6 +106,17 @@ TEST(FloatKernel, SceneBoundSignsAreExactAndExtremeMagnitudesDecline) {
       for (int c = 0; c < 3; ++c) g[r][c] = to_bounded(q[r][c]);
     const fl::Float_kernel k(g);
     ASSERT_LT(k.scene_bound(), Bounded::kInf);
+    for (int i = 0; i < 6; ++i)
+      for (int j = i + 1; j < 6; ++j)
+        for (int p = 0; p < 3; ++p) {
+          const int c1 = (p + 1) % 3, c2 = (p + 2) % 3;
+          const double m = g[i][c1].v * g[j][c2].v - g[i][c2].v * g[j][c1].v;
+          const Rational exact = q[i][c1] * q[j][c2] - q[i][c2] * q[j][c1];
+          ASSERT_LE(abs(exact - Rational(m)), Rational(k.cross_bound(p))) << "case " << t;
+          if (std::fabs(m) > k.cross_bound(p)) {
+            ASSERT_NE(exact, 0) << "case " << t;
+          }
+        }
     for (int i = 0; i < 6; ++i)
       for (int j = i + 1; j < 6; ++j)
         for (int l = j + 1; l < 6; ++l) {
@@ -133,6 +144,7 @@ TEST(FloatKernel, SceneBoundSignsAreExactAndExtremeMagnitudesDecline) {
                                    {Bounded::exact(0), Bounded::exact(1), Bounded::exact(0)},
                                    {Bounded::exact(0), Bounded::exact(0), Bounded::exact(extreme)}};
     EXPECT_EQ(fl::Float_kernel(g).scene_bound(), Bounded::kInf) << extreme;
+    EXPECT_EQ(fl::Float_kernel(g).cross_bound(0), Bounded::kInf) << extreme;
   }
 }
 
