@@ -105,10 +105,18 @@ case "${1:-}" in
     PACKAGES+=(python3)  # the report generator (standard library only)
     install_packages
     build
-    out="${BUILD_DIR:-build}/bench/results.json"
+    out="${BUILD_DIR:-build}/bench/results.json" batch="${BUILD_DIR:-build}/bench/batch.json"
     "${BUILD_DIR:-build}/bench/wrenchkit_bench" --benchmark_min_time=0.05 --benchmark_format=console \
       --benchmark_out_format=json --benchmark_out="$out"
-    /usr/bin/python3 bench/make_report.py "$out" docs
+    "${BUILD_DIR:-build}/bench/batch_bench" --benchmark_min_time=0.2 --benchmark_out_format=json --benchmark_out="$batch"
+    base=()
+    if [ -n "${BENCH_BASELINE:-}" ]; then  # an earlier build's bench/ directory: before and after in one session
+      "$BENCH_BASELINE/wrenchkit_bench" --benchmark_filter='^generic/6/|/1e-3/labels_' --benchmark_min_time=0.05 \
+        --benchmark_out_format=json --benchmark_out="$out.baseline"
+      "$BENCH_BASELINE/batch_bench" --benchmark_min_time=0.2 --benchmark_out_format=json --benchmark_out="$batch.baseline"
+      base=(--baseline "$out.baseline" --baseline-batch "$batch.baseline")
+    fi
+    /usr/bin/python3 bench/make_report.py "$out" docs "./build.sh bench" --batch "$batch" "${base[@]}"
     echo "build.sh: wrote docs/benchmarks.md and docs/benchmarks/*.svg"
     ;;
   *)

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "exact/pipeline/batch.h"
+#include "exact/pipeline/labels_answer.h"
 #include "exact/statics/closure.h"
 #include "exact/io/scene.h"
 #include "exact/io/streaming_scene_reader.h"
@@ -66,6 +67,19 @@ void BM_batch_closure(benchmark::State& st, bool certify, bool check) {
 BENCHMARK_CAPTURE(BM_batch_closure, verdict_only, false, false);
 BENCHMARK_CAPTURE(BM_batch_closure, certificates, true, false);
 BENCHMARK_CAPTURE(BM_batch_closure, certificates_checked, true, true);
+
+// batch labels' work (issue 19): read + the exact moment labels in hybrid (no certificate: labels have none).
+void BM_batch_labels(benchmark::State& st) {
+  const auto& lines = scene_lines();
+  const Request o;
+  std::size_t i = 0;
+  for (auto _ : st) {
+    const Labels_item r = answer_labels(lines[i++ % lines.size()], "line", o, Labels_query{});
+    benchmark::DoNotOptimize(r.status);
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations()));
+}
+BENCHMARK(BM_batch_labels);
 
 // The C++ batch API on 1000 scenes per iteration, one thread (its ordered map included).
 void BM_batch_api_verdict_only(benchmark::State& st) {

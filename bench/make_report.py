@@ -1,7 +1,11 @@
 #!/usr/bin/python3
 """Turns the JSON of bench/wrenchkit_bench into docs/benchmarks.md and docs/benchmarks/*.svg.
 
-    bench/make_report.py RESULTS.json DOCS_DIR [COMMAND]
+    bench/make_report.py RESULTS.json DOCS_DIR [COMMAND] [--batch BATCH.json]
+                         [--baseline OLD_RESULTS.json --baseline-batch OLD_BATCH.json]
+
+BATCH.json is bench/batch_bench's JSON (certified batch answers, labels); the baseline files are the same two
+programs of an earlier build, run in the same session, for the before/after table.
 
 Standard library only (no matplotlib): the plots are written by the small SVG writer below.
 Every ratio is computed from timings of the same run.
@@ -148,17 +152,33 @@ def fit_exponent(points):
 
 
 # ---------------------------------------------------------------- the report
-def main():
-    results, docs = sys.argv[1], sys.argv[2]
-    command = sys.argv[3] if len(sys.argv) > 3 else "./build.sh bench"
-    data = json.load(open(results))
-    ctx = data["context"]
-    bench = {}
+def load_bench(path):
+    """{name split at '/': benchmark} of a Google Benchmark JSON file (iterations only), or {}."""
+    if not path:
+        return {}, {}
+    data = json.load(open(path))
+    out = {}
     for b in data["benchmarks"]:
         if b.get("run_type", "iteration") != "iteration":
             continue
-        name = b["name"].split("/iterations:")[0]
-        bench[tuple(name.split("/"))] = b
+        out[tuple(b["name"].split("/iterations:")[0].split("/"))] = b
+    return out, data["context"]
+
+
+def main():
+    args, opts = [], {}
+    it = iter(sys.argv[1:])
+    for a in it:
+        if a.startswith("--"):
+            opts[a[2:]] = next(it)
+        else:
+            args.append(a)
+    results, docs = args[0], args[1]
+    command = args[2] if len(args) > 2 else "./build.sh bench"
+    bench, ctx = load_bench(results)
+    batch, _ = load_bench(opts.get("batch"))
+    old, _ = load_bench(opts.get("baseline"))
+    old_batch, _ = load_bench(opts.get("baseline-batch"))
     os.makedirs(os.path.join(docs, "benchmarks"), exist_ok=True)
 
     def get(*key):
@@ -244,6 +264,28 @@ def main():
     goals.append(("A force-closure query on 6 frictional contacts under 1 µs in the twin (robot-side API)",
                   fmt_t(g6["twin_api"]), g6["twin_api"] < 1.0))
 
+    # issue 19: certified answers at the speed of verdicts, labels at the speed of closure
+    def bt(table, *key):
+        b = table.get(tuple(str(k) for k in key))
+        return us(b) if b else None
+    lab_pairs = [(t("family", k[1], k[2], "labels_twin"), t("family", k[1], k[2], "labels_hybrid"))
+                 for k in bench if k[0] == "family" and k[3] == "labels_hybrid"]
+    lab_r = sorted(h / w for w, h in lab_pairs if w and h)
+    lab_med = lab_r[len(lab_r) // 2] if lab_r else float("nan")
+    goals.append(("The twin's 6-contact force-closure verdict ≤ 0.4 µs (robot-side API)", fmt_t(g6["twin_api"]),
+                  g6["twin_api"] <= 0.4))
+    goals.append(("Moment labels in hybrid within 5× of the labels twin (median over the family sets)",
+                  "%s (%d sets)" % (fmt_ratio(lab_med), len(lab_r)), lab_med <= 5))
+    if batch:
+        v, c, l = (bt(batch, "BM_batch_closure", "verdict_only"), bt(batch, "BM_batch_closure", "certificates_checked"),
+                   bt(batch, "BM_batch_labels"))
+        goals.append(("`batch closure` certified and checked ≤ 3× `--verdict-only` (6 contacts, 6 decimals; "
+                      "bench/batch_bench)", "%s (%s vs %s; %.0f scenes/s)" % (fmt_ratio(ratio(c, v)), fmt_t(c), fmt_t(v),
+                                                                            1e6 / c if c else 0),
+                      ratio(c, v) <= 3))
+        goals.append(("`batch labels` ≤ 5× `batch closure --verdict-only` (bench/batch_bench)",
+                      "%s (%s vs %s)" % (fmt_ratio(ratio(l, v)), fmt_t(l), fmt_t(v)), ratio(l, v) <= 5))
+
     md.append("## Goals\n")
     md.append("| goal | measured (same run) | met |\n|---|---|---|")
     for g, m, ok in goals:
@@ -317,6 +359,32 @@ def main():
         fn = "family_%s.svg" % f
         open(os.path.join(docs, "benchmarks", fn), "w").write(plot.svg())
         md.append("\n![%s](benchmarks/%s)\n" % (f, fn))
+
+    # before and after, one session
+    if old or old_batch:
+        md.append("## Before and after (issue 19)\n")
+        md.append("The same benchmarks of the previous build, run in the same session as this report's "
+                  "(`./build.sh bench` with `BENCH_BASELINE` naming the earlier build's `bench/` directory). "
+                  "CPU time per query or per scene.\n")
+        md.append("| benchmark | before | after | after / before |\n|---|---|---|---|")
+        rows = [(bench, old, ("generic", 6, m)) for m in ("twin_api", "twin", "hybrid", "hybrid_certified",
+                                                          "exact_certified")]
+        rows += [(batch, old_batch, k) for k in (("BM_batch_closure", "verdict_only"),
+                                                 ("BM_batch_closure", "certificates"),
+                                                 ("BM_batch_closure", "certificates_checked"),
+                                                 ("BM_decide_both", "certificates_built"),
+                                                 ("BM_checker", "both_one_scene_read"), ("BM_batch_labels",),
+                                                 ("BM_twin_force_closure",))]
+        for k in sorted(k for k in bench if k[0] == "family" and k[2] == "1e-3" and k[3] in ("labels_twin",
+                                                                                            "labels_hybrid")):
+            rows.append((bench, old, k))
+        for new_t, old_t, k in rows:
+            a, b = bt(old_t, *k), bt(new_t, *k)
+            if a is None and b is None:
+                continue
+            md.append("| %s | %s | %s | %s |" % ("/".join(str(x) for x in k), fmt_t(a) if a else "—",
+                                                 fmt_t(b) if b else "—", "%.2f" % (b / a) if a and b else "—"))
+        md.append("")
 
     # labels
     lab_fams = [f for f in fam_keys if get("family", f, eps_keys[0], "labels_exact")]

@@ -55,14 +55,30 @@ Verdict verdict(const Dual_cone& dc) {
   return dc.force_closure() ? Verdict::closed : Verdict::open;
 }
 
+// generators(bounded_contacts(contacts), reading) without the intermediate contacts (the same checks,
+// the same generators in the same order).
+Verdict closure_of(const std::vector<Point_contact>& contacts, Reading reading) {
+  std::vector<Bounded3> g;
+  g.reserve(2 * contacts.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Point_contact& p = contacts[i];
+    if (p.nx == 0 && p.ny == 0)
+      throw std::invalid_argument("contacts[" + std::to_string(i) + "].normal: zero vector");
+    if (!(p.mu >= 0) || !std::isfinite(p.mu))
+      throw std::invalid_argument("contacts[" + std::to_string(i) + "].mu: must be finite and >= 0");
+    point_contact_generators(Bounded::exact(p.ax), Bounded::exact(p.ay), Bounded::exact(p.nx), Bounded::exact(p.ny),
+                             Bounded::exact(p.mu), p.mu != 0, reading,
+                             [&](Edge, const Bounded& fx, const Bounded& fy, const Bounded& m) {
+                               g.push_back({fx, fy, m});
+                             });
+  }
+  return verdict(compute_dual_cone(Float_kernel(std::move(g))));
+}
+
 }  // namespace
 
-Verdict force_closure(const std::vector<Point_contact>& contacts) {
-  return verdict(dual_cone(bounded_contacts(contacts), Reading::friction));
-}
+Verdict force_closure(const std::vector<Point_contact>& contacts) { return closure_of(contacts, Reading::friction); }
 
-Verdict form_closure(const std::vector<Point_contact>& contacts) {
-  return verdict(dual_cone(bounded_contacts(contacts), Reading::frictionless));
-}
+Verdict form_closure(const std::vector<Point_contact>& contacts) { return closure_of(contacts, Reading::frictionless); }
 
 }  // namespace wrenchkit::fl

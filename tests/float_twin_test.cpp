@@ -12,6 +12,7 @@
 #include "exact/io/to_float.h"
 #include "float/bounded.h"
 #include "float/closure_twin.h"
+#include "float/float_kernel.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {
@@ -79,6 +80,72 @@ TEST(Bounded, EveryBoundContainsTheExactDeterminant) {
     }
   }
   EXPECT_GT(certified, 9000);  // the non-singular half is certified
+}
+
+// [FL-2] Stage 0: one bound per kernel (determinants and minors). Kernels of random generators at mixed scales (so the bound is
+// coarse for the small ones), half of the triples nearly singular; every sign Stage 0 gives (|D̂| > bound)
+// is the exact sign; magnitudes outside [2^-300, 2^300] make it decline for the whole kernel.
+TEST(FloatKernel, SceneBoundSignsAreExactAndExtremeMagnitudesDecline) {
+  std::mt19937_64 rng(test::seed(12));
+  std::uniform_int_distribution<int> num(-1000, 1000), den(1, 1000), scale(-40, 40);
+  int decided = 0;
+  for (int t = 0; t < 2000; ++t) {
+    std::vector<std::array<Rational, 3>> q(6);
+    std::vector<fl::Bounded3> g(6);
+    for (int r = 0; r < 6; ++r) {
+      const int s = scale(rng);
+      for (int c = 0; c < 3; ++c) {
+        q[r][c] = Rational(num(rng), den(rng));
+        if (s >= 0) q[r][c] *= Rational(Integer(1) << s);
+        else q[r][c] /= Rational(Integer(1) << -s);
+      }
+    }
+    if (t % 2)
+      for (int c = 0; c < 3; ++c) q[5][c] = q[3][c] + q[4][c] * Rational(1, 3);  // det(3, 4, 5) = 0 exactly
+    for (int r = 0; r < 6; ++r)
+      for (int c = 0; c < 3; ++c) g[r][c] = to_bounded(q[r][c]);
+    const fl::Float_kernel k(g);
+    ASSERT_LT(k.scene_bound(), Bounded::kInf);
+    for (int i = 0; i < 6; ++i)
+      for (int j = i + 1; j < 6; ++j)
+        for (int p = 0; p < 3; ++p) {
+          const int c1 = (p + 1) % 3, c2 = (p + 2) % 3;
+          const double m = g[i][c1].v * g[j][c2].v - g[i][c2].v * g[j][c1].v;
+          const Rational exact = q[i][c1] * q[j][c2] - q[i][c2] * q[j][c1];
+          ASSERT_LE(abs(exact - Rational(m)), Rational(k.cross_bound(p))) << "case " << t;
+          if (std::fabs(m) > k.cross_bound(p)) {
+            ASSERT_NE(exact, 0) << "case " << t;
+          }
+        }
+    for (int i = 0; i < 6; ++i)
+      for (int j = i + 1; j < 6; ++j)
+        for (int l = j + 1; l < 6; ++l) {
+          const auto& a = g[i];
+          const auto& b = g[j];
+          const auto& c = g[l];
+          const double d = a[0].v * (b[1].v * c[2].v - b[2].v * c[1].v) - a[1].v * (b[0].v * c[2].v - b[2].v * c[0].v) +
+                           a[2].v * (b[0].v * c[1].v - b[1].v * c[0].v);
+          const auto& x = q[i];
+          const auto& y = q[j];
+          const auto& z = q[l];
+          const Rational exact = x[0] * (y[1] * z[2] - y[2] * z[1]) - x[1] * (y[0] * z[2] - y[2] * z[0]) +
+                                 x[2] * (y[0] * z[1] - y[1] * z[0]);
+          // The bound contains the error itself, not only the sign.
+          ASSERT_LE(abs(exact - Rational(d)), Rational(k.scene_bound())) << "case " << t;
+          if (std::fabs(d) > k.scene_bound()) {
+            ++decided;
+            ASSERT_EQ(k.det_sign(i, j, l), sign_of(sgn(exact))) << "case " << t;
+          }
+        }
+  }
+  EXPECT_GT(decided, 1000);
+  for (double extreme : {0x1p-310, 0x1p310, std::numeric_limits<double>::infinity()}) {
+    std::vector<fl::Bounded3> g = {{Bounded::exact(1), Bounded::exact(0), Bounded::exact(0)},
+                                   {Bounded::exact(0), Bounded::exact(1), Bounded::exact(0)},
+                                   {Bounded::exact(0), Bounded::exact(0), Bounded::exact(extreme)}};
+    EXPECT_EQ(fl::Float_kernel(g).scene_bound(), Bounded::kInf) << extreme;
+    EXPECT_EQ(fl::Float_kernel(g).cross_bound(0), Bounded::kInf) << extreme;
+  }
 }
 
 // [FL-5] Quotients and square roots: the bound contains the exact value (checked exactly: for √,

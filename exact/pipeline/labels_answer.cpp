@@ -42,6 +42,7 @@ Mode_answer twin_contact_modes(const Scene& scene, const Vec3& t) {
 Vec3 negated(const Vec3& w) { return {-w[0], -w[1], -w[2]}; }
 
 void decide_exactly(Labels_item& s, const Labels_query& q) {
+  s.wrenches.reserve(s.generators.size());
   for (const Generator& g : s.generators) s.wrenches.push_back(g.w);
   if (s.mode == Mode::hybrid) {
     const std::vector<fl::Bounded3> twin = fl::generators(to_bounded(s.scene), s.reading);

@@ -30,9 +30,9 @@ class Lazy_generators {
   // `extra`: rows appended after the generators for predicates only (equilibrium's load).
   Lazy_generators(const Scene& s, Reading r, std::vector<Wrench> extra = {})
       : scene_(&s), reading_(r), extra_(std::move(extra)) {}
-  // Wrenches that are already exact (no scene behind them): only wrenches() is available.
-  explicit Lazy_generators(std::vector<Wrench> ready)
-      : ws_(std::make_unique<std::vector<Wrench>>(std::move(ready))) {}
+  // Wrenches that are already exact (no scene behind them): only wrenches() is available. `ready` is
+  // not copied: it must outlive this object.
+  explicit Lazy_generators(const std::vector<Wrench>& ready) : ready_(&ready) {}
   const std::vector<Generator>& get() const {
     if (!gens_) {
       if (!scene_) throw std::logic_error("Lazy_generators: no scene behind these wrenches");
@@ -43,7 +43,7 @@ class Lazy_generators {
     }
     return *gens_;
   }
-  const std::vector<Wrench>& wrenches() const { return ws_ ? *ws_ : (get(), *ws_); }
+  const std::vector<Wrench>& wrenches() const { return ready_ ? *ready_ : ws_ ? *ws_ : (get(), *ws_); }
   // The exact kernel of the generators and the extra rows: built from the contacts' integers
   // directly (Exact_kernel(scene, reading, extra): no rational generators) when a scene is behind
   // them, else from the ready wrenches.
@@ -54,6 +54,7 @@ class Lazy_generators {
 
  private:
   const Scene* scene_ = nullptr;
+  const std::vector<Wrench>* ready_ = nullptr;
   Reading reading_ = Reading::friction;
   std::vector<Wrench> extra_;
   mutable std::unique_ptr<std::vector<Generator>> gens_;

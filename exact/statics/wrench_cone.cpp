@@ -84,6 +84,9 @@ Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode, const 
   std::vector<Wrench> ws;
   std::vector<Vec3> g;
   std::vector<fl::Bounded3> tw;
+  ws.reserve(generators.size());
+  g.reserve(generators.size());
+  if (mode == Mode::hybrid) tw.reserve(generators.size());
   for (std::size_t i = 0; i < generators.size(); ++i) {
     const Wrench& w = generators[i];
     if (w.fx == 0 && w.fy == 0 && w.m == 0) continue;

@@ -664,12 +664,98 @@ Int_wrench force_at(const Z (&P)[2], const Z& dp, const Z& Fx, const Z& Fy, cons
   return {{Z(dp * Fx), Z(dp * Fy), Z(P[0] * Fy - P[1] * Fx)}, Z(dp * df)};
 }
 
+// ---- The same integers in 128 bits, when they fit (short decimals: every scene a grasp planner writes).
+// Each operation is checked (__builtin_*_overflow); any overflow abandons the fixed-width attempt and the
+// GMP formulas above and below compute the generators instead. The formulas are the same, term for term,
+// so the integers are the same; only where they are computed differs.
+__extension__ typedef __int128 I128;
+__extension__ typedef unsigned __int128 U128;
+
+struct Fixed {  // a running 128-bit computation; ok == false once anything overflowed
+  bool ok = true;
+  I128 mul(I128 a, I128 b) {
+    I128 r = 0;
+    ok = ok && !__builtin_mul_overflow(a, b, &r);
+    return r;
+  }
+  I128 add(I128 a, I128 b) {
+    I128 r = 0;
+    ok = ok && !__builtin_add_overflow(a, b, &r);
+    return r;
+  }
+  I128 sub(I128 a, I128 b) {
+    I128 r = 0;
+    ok = ok && !__builtin_sub_overflow(a, b, &r);
+    return r;
+  }
+};
+
+// The value of a GMP integer that fits in a signed long (64 bits), or false.
+bool small_int(const Z& z, I128& out) {
+  if (!mpz_fits_slong_p(z.get_mpz_t())) return false;
+  out = mpz_get_si(z.get_mpz_t());
+  return true;
+}
+
+Z to_z(I128 x) {  // exact: two 64-bit halves of |x|
+  const bool negative = x < 0;
+  const U128 m = negative ? -static_cast<U128>(x) : static_cast<U128>(x);
+  Z z;
+  mpz_set_ui(z.get_mpz_t(), static_cast<unsigned long>(m >> 64));
+  mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), 64);
+  mpz_add_ui(z.get_mpz_t(), z.get_mpz_t(), static_cast<unsigned long>(m));
+  if (negative) mpz_neg(z.get_mpz_t(), z.get_mpz_t());
+  return z;
+}
+
+struct Fixed_wrench {
+  I128 v[3], d;
+};
+Int_wrench to_int_wrench(const Fixed_wrench& w) { return {{to_z(w.v[0]), to_z(w.v[1]), to_z(w.v[2])}, to_z(w.d)}; }
+
+// generators() below in 128 bits: false if a value does not fit or a step overflows.
+bool fixed_generators(const std::vector<Q>& v, bool wrench, Reading reading, std::vector<Generator>& out) {
+  I128 num[5], den[5];
+  for (std::size_t k = 0; k < v.size(); ++k)
+    if (!small_int(v[k].get_num(), num[k]) || !small_int(v[k].get_den(), den[k])) return false;
+  Fixed f;
+  if (wrench) {  // integer_form
+    const Fixed_wrench w{{f.mul(f.mul(num[0], den[1]), den[2]), f.mul(f.mul(num[1], den[0]), den[2]),
+                          f.mul(f.mul(num[2], den[0]), den[1])},
+                         f.mul(f.mul(den[0], den[1]), den[2])};
+    if (!f.ok) return false;
+    out.push_back({"wrench", to_int_wrench(w)});
+    return true;
+  }
+  const I128 P[2] = {f.mul(num[0], den[1]), f.mul(num[1], den[0])}, dp = f.mul(den[0], den[1]);
+  const I128 N[2] = {f.mul(num[2], den[3]), f.mul(num[3], den[2])}, dn = f.mul(den[2], den[3]);
+  auto force_at = [&](I128 Fx, I128 Fy, I128 df) {
+    return Fixed_wrench{{f.mul(dp, Fx), f.mul(dp, Fy), f.sub(f.mul(P[0], Fy), f.mul(P[1], Fx))}, f.mul(dp, df)};
+  };
+  if (reading == Reading::frictionless || num[4] == 0) {
+    const Fixed_wrench w = force_at(N[0], N[1], dn);
+    if (!f.ok) return false;
+    out.push_back({"normal", to_int_wrench(w)});
+    return true;
+  }
+  const I128 a = num[4], b = den[4];
+  const I128 bN[2] = {f.mul(b, N[0]), f.mul(b, N[1])}, aN[2] = {f.mul(a, N[0]), f.mul(a, N[1])}, df = f.mul(dn, b);
+  const Fixed_wrench left = force_at(f.sub(bN[0], aN[1]), f.add(bN[1], aN[0]), df);
+  const Fixed_wrench right = force_at(f.add(bN[0], aN[1]), f.sub(bN[1], aN[0]), df);
+  if (!f.ok) return false;
+  out.push_back({"left", to_int_wrench(left)});
+  out.push_back({"right", to_int_wrench(right)});
+  return true;
+}
+
 // The generators of one contact under a reading, recomputed exactly from the scene text.
 std::vector<Generator> generators(const Contact& c, Reading reading, const Limits& lim) {
   std::vector<Q> read;
   if (c.value.empty())
     for (const std::string& s : c.text) read.push_back(scene_number(s, lim, "contacts"));  // valid: read before
   const std::vector<Q>& v = c.value.empty() ? read : c.value;
+  std::vector<Generator> fixed;
+  if (fixed_generators(v, c.wrench, reading, fixed)) return fixed;
   if (c.wrench) return {{"wrench", integer_form(v[0], v[1], v[2])}};
   const Q &px = v[0], &py = v[1], &nx = v[2], &ny = v[3], &mu = v[4];
   // p = P / dp, n = N / dn over the products of the coordinates' denominators.
