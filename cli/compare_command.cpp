@@ -413,7 +413,9 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
     const Ref& ref = corpus.refs[it->second];
     ++c.answered;
     c.errors += a.error;
-    for (const auto& [field, v] : a.fields) {
+    for (const auto& entry : a.fields) {
+      const std::string& field = entry.first;  // a named reference: lambdas may capture it (C++17)
+      const auto& v = entry.second;
       Field_tally& t = c.fields[field];
       Field_tally& ft = c.families[ref.family][field];
       const auto count = [&](std::size_t Field_tally::*n) { ++(t.*n), ++(ft.*n); };
