@@ -216,26 +216,8 @@ struct Answer {
 
 std::vector<Answer> read_jsonl_answers(const std::string& path, const std::string& text, const Input_limits& limits) {
   std::vector<Answer> out;
-  std::size_t start = 0, line = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    ++line;
-    std::string_view l(text.data() + start, end - start);
-    start = end + 1;
-    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
-    if (l.find_first_not_of(" \t") == std::string_view::npos) continue;
-    const std::string where = path + ":" + std::to_string(line);
-    json::Value v;
-    try {
-      v = json::parse(l, limits, path);
-    } catch (const Input_error& e) {  // "PATH:1:COL: invalid JSON: …" → "PATH:LINE:COL: …"
-      std::string m = e.what();
-      const std::string prefix = path + ":1:";
-      if (m.compare(0, prefix.size(), prefix) == 0) m = where + ":" + m.substr(prefix.size());
-      throw Input_error(m);
-    }
-    if (v.type != json::Type::object) throw Input_error(where + ": an answer must be a JSON object, not a " + json::type_name(v.type));
+  json::for_each_object_line(text, limits, path, "an answer",
+                             [&](std::size_t, const std::string& where, std::string_view, json::Value& v) {
     Answer a;
     a.where = where;
     for (auto& [k, x] : v.members) {
@@ -258,7 +240,7 @@ std::vector<Answer> read_jsonl_answers(const std::string& path, const std::strin
     }
     if (a.id.empty()) throw Input_error(where + ": id: missing");
     out.push_back(std::move(a));
-  }
+  });
   return out;
 }
 

@@ -386,4 +386,32 @@ std::string text_of(const Value& v) {
   return w.take();
 }
 
+void for_each_object_line(std::string_view text, const Input_limits& limits, const std::string& source,
+                          std::string_view what,
+                          const std::function<void(std::size_t line, const std::string& where, std::string_view raw, Value& object)>& fn) {
+  std::size_t start = 0, line = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    ++line;
+    std::string_view l = text.substr(start, end - start);
+    start = end + 1;
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    if (l.find_first_not_of(" \t") == std::string_view::npos) continue;
+    const std::string where = source + ":" + std::to_string(line);
+    Value v;
+    try {
+      v = parse(l, limits, source);
+    } catch (const Input_error& x) {  // "SOURCE:1:COL: invalid JSON: …" → "SOURCE:LINE:COL: …"
+      std::string m = x.what();
+      const std::string prefix = source + ":1:";
+      if (m.compare(0, prefix.size(), prefix) == 0) m = where + ":" + m.substr(prefix.size());
+      throw Input_error(m);
+    }
+    if (v.type != Type::object)
+      throw Input_error(where + ": " + std::string(what) + " must be a JSON object, not a " + type_name(v.type));
+    fn(line, where, l, v);
+  }
+}
+
 }  // namespace wrenchkit::json

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -35,6 +36,13 @@ const char* type_name(Type t);
 
 // Parses a whole document. Throws Input_error("SOURCE:LINE:COL: invalid JSON: …").
 Value parse(std::string_view text, const Input_limits& limits, std::string_view source);
+
+// Reads `text` as JSON lines (one document per line; blank lines and a trailing \r are skipped) and calls
+// fn(line, where, raw, object) for each, with `where` = "SOURCE:LINE" and `raw` the line's text. A line that is not valid JSON is bad input
+// named "SOURCE:LINE:COL"; one that is not an object "SOURCE:LINE: <what> must be a JSON object, not a …".
+void for_each_object_line(std::string_view text, const Input_limits& limits, const std::string& source,
+                          std::string_view what,
+                          const std::function<void(std::size_t line, const std::string& where, std::string_view raw, Value& object)>& fn);
 
 // Moves `pos` over the JSON number token (RFC 8259 grammar) that starts at text[pos]; false when it is
 // malformed, with `pos` at the offending character. parse() and the streaming scene reader

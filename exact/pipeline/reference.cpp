@@ -363,27 +363,8 @@ std::vector<Reference_scene> read_user_scenes(const std::string& path, const Inp
     return out;
   }
   const std::string text = read_file_text(path, limits);
-  std::size_t start = 0, line = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    ++line;
-    std::string_view l(text.data() + start, end - start);
-    start = end + 1;
-    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
-    if (l.find_first_not_of(" \t") == std::string_view::npos) continue;
-    const std::string where = path + ":" + std::to_string(line);
-    json::Value v;
-    try {
-      v = json::parse(l, limits, path);
-    } catch (const Input_error& x) {  // "PATH:1:COL: invalid JSON: …" → "PATH:LINE:COL: …"
-      std::string m = x.what();
-      const std::string prefix = path + ":1:";
-      if (m.compare(0, prefix.size(), prefix) == 0) m = where + ":" + m.substr(prefix.size());
-      throw Input_error(m);
-    }
-    if (v.type != json::Type::object)
-      throw Input_error(where + ": a scene line must be a JSON object, not a " + json::type_name(v.type));
+  json::for_each_object_line(text, limits, path, "a scene line", [&](std::size_t line, const std::string& where,
+                                                                     std::string_view raw, json::Value& v) {
     Reference_scene s{"line." + std::to_string(line), "user", where, "", "", "", "", ""};
     if (const json::Value* scene = v.find("scene")) {
       for (const auto& [k, x] : v.members) {
@@ -398,10 +379,10 @@ std::vector<Reference_scene> read_user_scenes(const std::string& path, const Inp
       if (s.family.empty()) throw Input_error(where + ": family: empty");
       s.text = json::text_of(*scene);
     } else {
-      s.text = std::string(l);
+      s.text = std::string(raw);
     }
     add(std::move(s), where);
-  }
+  });
   if (out.empty()) throw Input_error(path + ": no scenes (one scene per line, or {\"id\", \"scene\"})");
   return out;
 }
