@@ -3,7 +3,11 @@
 // stress-family or fuzz-corpus scene refused by the defaults.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
 #include <algorithm>
+#include <cstdlib>
+#include <new>
 #include <cstdint>
 #include <filesystem>
 #include <random>
@@ -195,6 +199,27 @@ TEST(Budget, NoGoldenCorpusStressOrFuzzSceneIsRefusedByTheDefaults) {
             << largest_total.entries << " contacts), the largest digits x contacts "
             << largest_product.digits_times_contacts() << " (" << largest_product.longest << " x "
             << largest_product.entries << ")\n";
+}
+
+// GMP's allocation failure is std::bad_alloc once use_throwing_gmp_allocation() is in place (GMP's own
+// functions abort: the child would die of SIGABRT). In a child process under a 256 MiB address-space limit,
+// 10^(2·10^9) needs 830 MB.
+[[noreturn]] void allocate_beyond_the_address_space() {
+  rlimit r;
+  r.rlim_cur = r.rlim_max = rlim_t(256) << 20;
+  setrlimit(RLIMIT_AS, &r);
+  use_throwing_gmp_allocation();
+  try {
+    Integer x;
+    mpz_ui_pow_ui(x.get_mpz_t(), 10, 2000000000ul);
+  } catch (const std::bad_alloc&) {
+    std::_Exit(70);
+  }
+  std::_Exit(0);
+}
+
+TEST(OutOfMemory, GmpAllocationFailureThrowsInsteadOfAborting) {
+  EXPECT_EXIT(allocate_beyond_the_address_space(), ::testing::ExitedWithCode(70), "");
 }
 
 }  // namespace

@@ -65,7 +65,7 @@ struct Tally {
     const std::size_t t = total + d < total ? static_cast<std::size_t>(-1) : total + d;
     if (t > lim.max_total_digits)
       throw Failure{": the scene's numbers have " + std::to_string(t) + " digits in all up to here (limit " +
-                    std::to_string(lim.max_total_digits) + ", the budget on all digits)"};
+                    std::to_string(lim.max_total_digits) + ", the budget on all digits, --max-total-digits)"};
     const std::size_t m = std::max(longest, d);
     if (times(m, entries) > lim.max_digits_times_contacts) throw Failure{over(m, entries, lim)};
     total = t, longest = m;
@@ -79,7 +79,8 @@ struct Tally {
   static std::string over(std::size_t longest, std::size_t entries, const Limits& lim) {
     return ": the longest number up to here has " + std::to_string(longest) + " digits, times " +
            std::to_string(entries) + " contacts and support points makes " + std::to_string(times(longest, entries)) +
-           " (limit " + std::to_string(lim.max_digits_times_contacts) + ", the budget on digits times contacts)";
+           " (limit " + std::to_string(lim.max_digits_times_contacts) +
+           ", the budget on digits times contacts, --max-digits-times-contacts)";
   }
   static thread_local Tally* reading;
 };
