@@ -201,6 +201,30 @@ TEST(Budget, NoGoldenCorpusStressOrFuzzSceneIsRefusedByTheDefaults) {
             << largest_product.entries << ")\n";
 }
 
+// Within every limit, a balanced scene of six contacts of 10 000-digit fractions has equilibrium weights of
+// about 150 000 characters; the checker's fixed limit of 100 000 rejected the engine's own certificate (exit 4,
+// "always a bug"). Its limit now follows the scene's longest number (certificate-format.md §2).
+TEST(Budget, CertificatesOfScenesWithinTheLimitsAreWithinTheCheckersLimits) {
+  std::mt19937_64 rng(20261226);
+  auto digits = [&](std::size_t n) {
+    std::string s(n, '0');
+    for (char& c : s) c = static_cast<char>('0' + rng() % 10);
+    s[0] = static_cast<char>('1' + rng() % 9);
+    return s;
+  };
+  auto fraction = [&](bool sign) { return std::string("\"") + (sign && rng() % 2 ? "-" : "") + digits(4999) + "/" + digits(4999) + "\""; };
+  std::string text = R"({"wrenchkit": 1, "load": {"wrench": [1, 2, 3]}, "contacts": [)";
+  for (int i = 0; i < 6; ++i)
+    text += std::string(i ? ", " : "") + R"({"at": [)" + fraction(true) + ", " + fraction(true) + R"(], "normal": [)" +
+            fraction(true) + ", " + fraction(true) + R"(], "mu": )" + fraction(false) + "}";
+  text += "]}";
+  Scene scratch;
+  const Equilibrium_item item = answer_equilibrium(text, "scene", Request{}, scratch);
+  ASSERT_EQ(item.status, Status::answered) << item.message.substr(0, 300);
+  EXPECT_TRUE(item.answer.balanced);
+  EXPECT_GT(item.certificate.size(), 200000u);  // weights beyond the old limit of 100 000 characters
+}
+
 // GMP's allocation failure is std::bad_alloc once use_throwing_gmp_allocation() is in place (GMP's own
 // functions abort: the child would die of SIGABRT). In a child process under a 256 MiB address-space limit,
 // 10^(2·10^9) needs 830 MB.

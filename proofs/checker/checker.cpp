@@ -191,12 +191,18 @@ Q scene_number(std::string_view s, const Limits& lim, const std::string& path, T
   return negative ? Q(-q) : q;
 }
 
+// The longest rational a certificate about the scene being checked may hold (certificate-format.md §2):
+// max(100000, 32 L + 64) characters for L the digits of the scene's longest number (a weight is a ratio of
+// 3x3 minors of generator integers of at most 5 L + 1 digits each). Set by check_certificate.
+thread_local std::size_t certificate_rational_limit = 100000;
+
 // A certificate rational (certificate-format.md §2): a JSON string matching
-// -?(0|[1-9][0-9]*)(/[1-9][0-9]*)? of at most 100000 characters. The grammar is checked here, in
-// full, before GMP sees the text (mpq_set_str alone would accept "1/0" and more).
+// -?(0|[1-9][0-9]*)(/[1-9][0-9]*)? of at most certificate_rational_limit characters. The grammar is checked
+// here, in full, before GMP sees the text (mpq_set_str alone would accept "1/0" and more).
 Q certificate_rational(const std::string& s, const std::string& path) {
-  if (s.size() > 100000)
-    throw Failure{path + ": rational of " + std::to_string(s.size()) + " characters (limit 100000)"};
+  if (s.size() > certificate_rational_limit)
+    throw Failure{path + ": rational of " + std::to_string(s.size()) + " characters (limit " +
+                  std::to_string(certificate_rational_limit) + ")"};
   std::size_t i = !s.empty() && s[0] == '-' ? 1 : 0;
   auto integer = [&](bool zero_allowed) {  // 0 | [1-9][0-9]*
     if (i < s.size() && s[i] == '0' && zero_allowed) return ++i, true;
@@ -638,6 +644,7 @@ void settle_support(Support& s, bool has_com, const Q (&com)[2], const Limits& l
 }
 
 struct Scene {
+  std::size_t longest = 0;  // digits of the longest number (as the budget counts them)
   std::vector<Contact> contacts;
   bool has_load = false;
   Wrench load;  // w_ext (certificate-format.md §3.3), if has_load
@@ -1501,6 +1508,9 @@ void check_motion(const Certificate& c, const Scene& scene, const Limits& lim) {
 
 // The certificate against an already read scene.
 Result check_certificate(const Scene& scene, std::string_view certificate_json, const Limits& limits) {
+  certificate_rational_limit = std::max<std::size_t>(100000, scene.longest > (static_cast<std::size_t>(-1) - 64) / 32
+                                                                 ? static_cast<std::size_t>(-1)
+                                                                 : 32 * scene.longest + 64);
   try {
     Reader r(certificate_json, limits.max_depth);
     const Certificate c = read_certificate(r);
@@ -1537,6 +1547,7 @@ bool read_whole_scene(std::string_view scene_json, const Limits& limits, Scene& 
     Reader r(scene_json, limits.max_depth);
     scene = read_scene(r, limits);
     r.finish();
+    scene.longest = tally.longest;
     return true;
   } catch (const Failure& f) {
     bad = {Outcome::bad_scene, f.message};

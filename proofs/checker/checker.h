@@ -36,7 +36,8 @@
 namespace wrenchkit_checker {
 
 // Limits on the scene (docs/scene-format.md "Limits"); max_depth also applies to the certificate.
-// Certificate rationals are at most 100000 characters (certificate-format.md §2), a fixed limit.
+// Certificate rationals are at most max(100000, 32 L + 64) characters for L the digits of the scene's longest
+// number (certificate-format.md §2).
 struct Limits {
   std::size_t max_digits = 10000;  // digits of a scene number's text (exponent included) and of its value written out
   long max_exponent = 10000;       // |exponent| of a scene number
