@@ -100,22 +100,11 @@ class Walker {
 
   // A string's value: a view of the text when it is plain ASCII without escapes, else decoded by json.cpp.
   std::string_view string() {
-    const std::size_t start = ++i_;
-    for (; i_ < s_.size(); ++i_) {
-      const unsigned char c = static_cast<unsigned char>(s_[i_]);
-      if (c == '"') return s_.substr(start, i_++ - start);
-      if (c == '\\' || c < 0x20 || c >= 0x80) {
-        std::size_t pos = start - 1;
-        try {
-          decoded_ = json::decode_string(s_, pos, limits_, "scene");
-        } catch (const Input_error&) {
-          throw Stop{};
-        }
-        i_ = pos;
-        return decoded_;
-      }
+    try {
+      return json::string_view_at(s_, i_, decoded_, limits_, "scene");
+    } catch (const Input_error&) {
+      throw Stop{};
     }
-    throw Stop{};
   }
 
   void count(std::string_view text, bool json_number) {

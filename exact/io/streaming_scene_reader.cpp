@@ -166,18 +166,7 @@ class Stream {
   // json.cpp (the one decoder; it throws Input_error on a malformed string, which defers).
   std::string_view string_token() {
     if (peek() != '"') defer();
-    const std::size_t start = ++i_;
-    for (; i_ < s_.size(); ++i_) {
-      const unsigned char c = static_cast<unsigned char>(s_[i_]);
-      if (c == '"') return s_.substr(start, i_++ - start);
-      if (c == '\\' || c < 0x20 || c >= 0x80) {
-        std::size_t pos = start - 1;
-        decoded_ = json::decode_string(s_, pos, limits_, source_);
-        i_ = pos;
-        return decoded_;
-      }
-    }
-    defer();  // unterminated
+    return json::string_view_at(s_, i_, decoded_, limits_, source_);
   }
 
   std::string_view string_value() { return string_token(); }
