@@ -58,7 +58,7 @@ fuzz() {
     cp -r "$corpus"/. "$work"/
     echo "build.sh: fuzzing $target for ${seconds}s"
     if ! "$dir/fuzz/$target" "$work" -dict=fuzz/scene.dict -max_total_time="$seconds" -timeout=30 \
-         -rss_limit_mb=4096 -artifact_prefix=fuzz-findings/"$target"- -print_final_stats=1 >"$work.log" 2>&1; then
+         -rss_limit_mb=2048 -malloc_limit_mb=1024 -artifact_prefix=fuzz-findings/"$target"- -print_final_stats=1 >"$work.log" 2>&1; then
       tail -n 40 "$work.log"
       echo "build.sh: $target found a problem; the input is in fuzz-findings/" >&2
       rm -rf "$work"

@@ -75,6 +75,14 @@ struct Line {
 
 struct Worker {};
 
+// [BATCH] Memory in flight: a window of at most 256 lines per thread and at most 64 MiB of line text (so a
+// window of long lines holds fewer of them, at least one), and a line's storage beyond 1 MiB is freed
+// before the next line is read into it. With the scene budget (docs/scene-format.md "Limits") bounding
+// what each line's scene can cost, memory is bounded by the window plus one scene per thread.
+constexpr std::size_t kWindowPerThread = 256;
+constexpr std::size_t kWindowBytes = std::size_t(64) << 20;
+constexpr std::size_t kKeptLineBytes = std::size_t(1) << 20;
+
 // A line that was not answered: {"line": N, KIND: MESSAGE, "exit_code": C}, KIND "error" (bad input, or
 // options that cannot apply to this scene), "undecided" or "internal_error".
 void write_error_line(Json_writer& w, std::size_t line, const Ended& e) {
@@ -112,7 +120,11 @@ int run_batch(const Options& o, const Scene_answer& answer) {
   std::atomic<bool> self_check_failed{false}, internal_error{false};
   Line_reader reader(std::cin.rdbuf(), o.limits.max_file_bytes);
   ordered_map<Line, std::string, Worker>(
-      o.jobs, [&](Line& l) { return reader.next(l.text, l.too_long); },
+      o.jobs,
+      [&](Line& l) {
+        if (l.text.capacity() > kKeptLineBytes) std::string().swap(l.text);  // a long line's storage goes
+        return reader.next(l.text, l.too_long);
+      },
       [&](Worker&, const Line& l, std::string& out, std::size_t index) {
         const Status s = batch_line(o, answer, l.text, l.too_long, index + 1, out);
         if (s == Status::check_failed) self_check_failed = true;
@@ -121,7 +133,8 @@ int run_batch(const Options& o, const Scene_answer& answer) {
       [&](std::size_t, const std::string& out) {
         std::cout.write(out.data(), static_cast<std::streamsize>(out.size()));
         std::cout.put('\n');
-      });
+      },
+      kWindowPerThread, kWindowBytes, [](const Line& l) { return l.text.size(); });
   std::cout.flush();
   return self_check_failed ? kSelfCheck : (internal_error ? kInternal : kAnswered);
 }

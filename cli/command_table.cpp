@@ -150,8 +150,13 @@ const std::vector<Option> kLimits = {
      [](Options& o, S n, S v) { o.limits.max_exponent = static_cast<long>(count_value(n, v)); }, Role::limit},
     {"max-file-size", "BYTES", "largest scene file (default 67108864)",
      [](Options& o, S n, S v) { o.limits.max_file_bytes = count_value(n, v); }, Role::limit},
-    {"max-contacts", "N", "most contacts (default 100000)",
+    {"max-contacts", "N", "most contacts, support points, outline points (default 100000)",
      [](Options& o, S n, S v) { o.limits.max_contacts = count_value(n, v); }, Role::limit},
+    {"max-total-digits", "N", "budget: the digits of all the scene's numbers together (default 20000000)",
+     [](Options& o, S n, S v) { o.limits.max_total_digits = count_value(n, v); }, Role::limit},
+    {"max-digits-times-contacts", "N",
+     "budget: the longest number's digits times the contacts and support points (default 10000000)",
+     [](Options& o, S n, S v) { o.limits.max_digits_times_contacts = count_value(n, v); }, Role::limit},
 };
 
 const Option kCertificate =

@@ -51,15 +51,6 @@ void write_file(const std::string& path, const std::string& text) {
   }
 }
 
-wrenchkit_checker::Limits checker_limits(const Input_limits& l) {
-  wrenchkit_checker::Limits c;
-  c.max_digits = l.max_digits;
-  c.max_exponent = l.max_exponent;
-  c.max_depth = l.max_depth;
-  c.max_contacts = l.max_contacts;
-  return c;
-}
-
 std::string human_number(const Rational& q) {
   std::string t = to_string(q);
   if (t.size() <= 24) return t;

@@ -127,7 +127,6 @@ std::string scene_line(const std::string& name, const std::string& source);
 std::string read_input(const std::string& path, std::size_t limit);
 // Writes FILE atomically: a temporary beside it, then a rename, so nothing is half-written.
 void write_file(const std::string& path, const std::string& text);
-wrenchkit_checker::Limits checker_limits(const Input_limits& l);
 // An exact rational for human output: "p/q" when short, else "~" and 12 significant digits (the
 // exact value is in --json).
 std::string human_number(const Rational& q);

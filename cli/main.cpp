@@ -7,10 +7,12 @@
 
 #include "cli/command_table.h"
 #include "exact/io/input_error.h"
+#include "exact/numbers/rational.h"
 
 int main(int argc, char** argv) {
   using namespace wrenchkit::cli;
-  std::ios::sync_with_stdio(false);  // buffered iostreams (batch reads and writes millions of lines)
+  std::ios::sync_with_stdio(false);
+  wrenchkit::use_throwing_gmp_allocation();  // out of memory: exit 70 with a message, never an abort  // buffered iostreams (batch reads and writes millions of lines)
   try {
     return run_command_line(std::vector<std::string>(argv + 1, argv + argc));
   } catch (...) {

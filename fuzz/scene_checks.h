@@ -30,7 +30,9 @@
 #include "exact/statics/force_dual.h"
 #include "exact/io/input_error.h"
 #include "exact/io/scene.h"
+#include "exact/io/scene_budget.h"
 #include "exact/io/scene_writer.h"
+#include "exact/pipeline/pipeline.h"
 #include "exact/sliding/sliding.h"
 #include "exact/sliding/unknown_motion.h"
 #include "exact/io/streaming_scene_reader.h"
@@ -143,6 +145,45 @@ inline std::string readers_disagree(std::string_view text, const wrenchkit::Inpu
   return "";
 }
 
+// [BUDGET] A valid scene (under `limits`) at the boundary of the scene-wide budget: with each budget set to
+// the scene's own measure it is accepted, with either one less it is refused, by every reader alike
+// (readers_disagree) and by the independent checker alike (bad_scene exactly when the engine refuses).
+// The scene's canonical text (write_scene: what the Python bindings give the checker) measures no more.
+// "" or what broke.
+inline std::string budget_boundary_broken(std::string_view text, const wrenchkit::Input_limits& limits,
+                                          wrenchkit::Scene& reused_eager, wrenchkit::Scene& reused_lazy) {
+  using namespace wrenchkit;
+  const Budget_tally m = measure_scene(text, limits);
+  if (!m.within(limits)) return "a valid scene measures over its budget";
+  const Budget_tally c = measure_scene(write_scene(read_scene(text, limits)), limits);
+  if (c.total > m.total || c.longest > m.longest || c.entries != m.entries)
+    return "the canonical text measures more than the scene";
+  for (int k = 0; k < 3; ++k) {
+    Input_limits l = limits;
+    l.max_total_digits = m.total - (k == 1 && m.total > 0 ? 1 : 0);
+    l.max_digits_times_contacts = m.digits_times_contacts() - (k == 2 && m.digits_times_contacts() > 0 ? 1 : 0);
+    const bool refuse = (k == 1 && m.total > 0) || (k == 2 && m.digits_times_contacts() > 0);
+    if (const std::string d = readers_disagree(text, l, reused_eager, reused_lazy); !d.empty())
+      return "at the budget's boundary: " + d;
+    bool engine_accepts = true;
+    try {
+      read_scene(text, l, "fuzz");
+    } catch (const Input_error& e) {
+      engine_accepts = false;
+      if (refuse && std::string(e.what()).find(k == 1 ? "--max-total-digits" : "--max-digits-times-contacts") ==
+                        std::string::npos)
+        return std::string("over budget, but another message: ") + e.what();
+    }
+    if (engine_accepts == refuse) return std::string("budget ") + (refuse ? "one less accepted" : "itself refused");
+    wrenchkit_checker::Limits cl = checker_limits(l);
+    const auto r = wrenchkit_checker::check(text, "{}", cl);
+    if ((r.outcome != wrenchkit_checker::Outcome::bad_scene) != engine_accepts)
+      return std::string("the checker ") + (engine_accepts ? "refuses" : "accepts") +
+             " the scene at the budget's boundary: " + r.message;
+  }
+  return "";
+}
+
 // Checks everything the engine promises about one input text; aborts (a finding) on a broken promise.
 // Returns whether the text was a valid scene.
 inline bool check_scene_text(std::string_view text) {
@@ -172,6 +213,10 @@ inline bool check_scene_text(std::string_view text) {
     std::abort();
   }
   if (!eager_error.empty()) return false;
+  if (const std::string d = budget_boundary_broken(text, limits, reused_eager, reused_lazy); !d.empty()) {
+    std::cerr << d << "\n";
+    std::abort();
+  }
   // parse → print → parse: the canonical text reads back to the same scene.
   const std::string printed = wrenchkit::write_scene(scene);
   try {

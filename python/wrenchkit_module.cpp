@@ -58,6 +58,7 @@ struct Py_scene {
   Scene scene;
   std::string text;    // canonical (exact/io/scene_writer.h)
   std::string source;  // names the input in messages
+  Input_limits limits;  // read within these; its questions (and the checker) keep them
 };
 
 Input_limits limits_of(const py::dict& l) {
@@ -66,6 +67,9 @@ Input_limits limits_of(const py::dict& l) {
   if (l.contains("max_exponent")) x.max_exponent = l["max_exponent"].cast<long>();
   if (l.contains("max_file_size")) x.max_file_bytes = l["max_file_size"].cast<std::size_t>();
   if (l.contains("max_contacts")) x.max_contacts = l["max_contacts"].cast<std::size_t>();
+  if (l.contains("max_total_digits")) x.max_total_digits = l["max_total_digits"].cast<std::size_t>();
+  if (l.contains("max_digits_times_contacts"))
+    x.max_digits_times_contacts = l["max_digits_times_contacts"].cast<std::size_t>();
   return x;
 }
 
@@ -74,14 +78,15 @@ Py_scene read_text(const std::string& text, const std::string& source, const py:
   if (text.size() > l.max_file_bytes)
     throw Input_error(source + ": larger than the size limit of " + std::to_string(l.max_file_bytes) +
                       " bytes (max_file_size)");
-  Py_scene s{read_scene(text, l, source), "", source};
+  Py_scene s{read_scene(text, l, source), "", source, l};
   s.text = write_scene(s.scene);
   return s;
 }
 
 // The request of a question asked in `mode` (parsed once, here: an unknown mode is a ValueError).
-Request request_of(const std::string& mode) {
+Request request_of(const std::string& mode, const Input_limits& limits = {}) {
   Request r;
+  r.limits = limits;
   const std::optional<Mode> m = parse_mode(mode);
   if (!m) throw Input_error("mode: \"" + mode + "\" " + kModeChoices);
   r.mode = *m;
@@ -178,7 +183,7 @@ namespace {
 using namespace wrenchkit::python;
 
 py::dict closure(const Py_scene& s, const std::string& mode) {
-  const Closure_item r = answer_closure(s.scene, s.text, request_of(mode));
+  const Closure_item r = answer_closure(s.scene, s.text, request_of(mode, s.limits));
   raise_unless_answered(r.status, r.message);
   py::dict d;
   d["force_closure"] = r.force.holds;
@@ -200,7 +205,7 @@ py::dict closure(const Py_scene& s, const std::string& mode) {
 }
 
 py::dict equilibrium(const Py_scene& s, const std::string& mode) {
-  const Equilibrium_item r = answer_equilibrium(s.scene, s.text, request_of(mode));
+  const Equilibrium_item r = answer_equilibrium(s.scene, s.text, request_of(mode, s.limits));
   raise_unless_answered(r.status, r.message);
   const Equilibrium_answer& a = r.answer;
   py::dict d;
@@ -280,8 +285,8 @@ Reading reading_of_text(const std::string& r) {
 
 // The bindings offer exact and hybrid (the same exact answer) for the constructions; the float twin's
 // bounded values are the CLI's and the C++ API's (float/).
-Request exact_request(const std::string& mode, const char* what) {
-  const Request r = request_of(mode);
+Request exact_request(const std::string& mode, const char* what, const Input_limits& limits) {
+  const Request r = request_of(mode, limits);
   if (r.mode == Mode::float_only)
     throw Input_error(std::string("mode: \"float\" is not offered by wrenchkit.") + what +
                       " (the float twin's bounded values are in `wrenchkit " + what + " --mode float --json`); use "
@@ -293,7 +298,7 @@ py::dict labels(const Py_scene& s, const std::string& reading, const std::string
   const Reading rd = reading_of_text(reading);
   Labels_query q;
   q.question = rd == Reading::friction ? Labels_question::labels : Labels_question::reuleaux;
-  const Labels_item r = answer_labels(s.scene, exact_request(mode, "labels"), q);
+  const Labels_item r = answer_labels(s.scene, exact_request(mode, "labels", s.limits), q);
   raise_unless_answered(r.status, r.message);
   const Moment_labels& l = r.labels;
   py::dict d;
@@ -331,7 +336,7 @@ py::object dual_point_obj(const Dual_point& p) {
 py::dict dual(const Py_scene& s, const std::string& mode) {
   Labels_query q;
   q.question = Labels_question::dual;
-  const Labels_item r = answer_labels(s.scene, exact_request(mode, "dual"), q);
+  const Labels_item r = answer_labels(s.scene, exact_request(mode, "dual", s.limits), q);
   raise_unless_answered(r.status, r.message);
   const Force_dual& f = *r.dual;
   const std::vector<Generator>& gens = r.generators;
@@ -453,7 +458,7 @@ py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::st
   q.sides = checked_sides(sides);
   if (twist) q.twist = nonzero_twist(*twist);
   if (load) q.load = vec3(*load, "load");
-  const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "limit_surface"), q);
+  const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "limit_surface", s.limits), q);
   raise_unless_answered(r.status, r.message);
   if (r.admissible) return unknown_distribution(r, mode, q);
   const Sliding_answer& sa = r.sliding;
@@ -488,7 +493,7 @@ py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>
   q.question = Support_question::sliding;
   q.sides = checked_sides(sides);
   if (twist) q.twist = nonzero_twist(*twist);
-  const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "sliding"), q);
+  const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "sliding", s.limits), q);
   raise_unless_answered(r.status, r.message);
   if (r.admissible) return unknown_distribution(r, mode, q);
   py::dict d;
@@ -520,7 +525,7 @@ py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>
 }
 
 py::dict check(const Py_scene& s, const std::string& certificate) {
-  const auto r = wrenchkit_checker::check(s.text, certificate);
+  const auto r = wrenchkit_checker::check(s.text, certificate, checker_limits(s.limits));
   if (r.outcome == wrenchkit_checker::Outcome::bad_scene) throw Input_error(r.message);
   py::dict d;
   d["accepted"] = r.outcome == wrenchkit_checker::Outcome::accepted;
@@ -556,6 +561,7 @@ py::dict reference(const std::string& scenes, const std::string& out, int sides)
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "wrenchkit's native engine (use the wrenchkit package, not this module)";
+  use_throwing_gmp_allocation();  // out of memory: InternalError, never an abort of the interpreter
   m.def("_set_exceptions", [](py::object input, py::object internal, py::object undecided) {
     g_input_error = input;
     g_internal_error = internal;

@@ -324,6 +324,21 @@ std::string decode_string(std::string_view text, std::size_t& pos, const Input_l
   return Parser(text, limits, source).string_at(pos);
 }
 
+std::string_view string_view_at(std::string_view text, std::size_t& pos, std::string& scratch,
+                                const Input_limits& limits, std::string_view source) {
+  for (std::size_t i = pos + 1; i < text.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c == '"') {
+      const std::string_view value = text.substr(pos + 1, i - pos - 1);
+      pos = i + 1;
+      return value;
+    }
+    if (c == '\\' || c < 0x20 || c >= 0x80) break;
+  }
+  scratch = decode_string(text, pos, limits, source);  // escapes, non-ASCII, or unterminated (it throws)
+  return scratch;
+}
+
 void append_quoted(std::string& out, std::string_view s) {
   out += '"';
   std::size_t plain = 0;  // start of the run of bytes copied as they are

@@ -56,6 +56,13 @@ bool skip_number(std::string_view text, std::size_t& pos);
 std::string decode_string(std::string_view text, std::size_t& pos, const Input_limits& limits,
                           std::string_view source);
 
+// The value of the JSON string literal whose opening quote is text[pos], `pos` moved past it: a view of the
+// text when it is ASCII without escapes (no copy), else decode_string's value, kept in `scratch`. Throws
+// decode_string's Input_error on a malformed or unterminated literal. For the one-pass readers (the streaming
+// scene reader, the budget's measure).
+std::string_view string_view_at(std::string_view text, std::size_t& pos, std::string& scratch,
+                                const Input_limits& limits, std::string_view source);
+
 // Writes `s` as a JSON string literal (with quotes), escaping as RFC 8259 requires: quote returns it,
 // append_quoted appends it to `out` (Json_writer, exact/io/json_writer.h, writes every string with it).
 std::string quote(std::string_view s);

@@ -8,6 +8,7 @@
 
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
+#include "exact/io/scene_budget.h"
 
 namespace wrenchkit {
 namespace {
@@ -161,6 +162,9 @@ class Reader {
     Body b;
     if (const Value* o = v.find("outline")) {
       expect(*o, Type::array, "body.outline", "an array of points");
+      if (o->items.size() > limits_.max_contacts)
+        fail("body.outline", "has " + std::to_string(o->items.size()) + " points, more than the limit " +
+                                 std::to_string(limits_.max_contacts) + " (--max-contacts)");
       for (std::size_t i = 0; i < o->items.size(); ++i)
         b.outline.push_back(vec2(o->items[i], "body.outline[" + std::to_string(i) + "]"));
     }
@@ -358,6 +362,9 @@ Scene read_scene_tree(std::string_view json_text, const Input_limits& limits, st
   if (json_text.size() > limits.max_file_bytes)
     throw Input_error(std::string(source) + ": larger than the size limit of " +
                       std::to_string(limits.max_file_bytes) + " bytes (--max-file-size)");
+  // [BUDGET] Measured on the text before any number is built and before the JSON tree is.
+  const std::string over = budget_problem(measure_scene(json_text, limits), limits);
+  if (!over.empty()) throw Input_error(over);
   const json::Value root = json::parse(json_text, limits, source);
   return Reader(limits, lazy).scene(root);
 }

@@ -72,7 +72,7 @@ class Stream {
         case kBody: body(out.body); break;
         case kContacts:
           array(1, [&](std::size_t k) {
-            if (k >= limits_.max_contacts) defer();
+            if (k >= limits_.max_contacts || !tally_.add_entry(limits_)) defer();
             contact(slot(out.contacts, k), 2);
             contacts = k + 1;
           });
@@ -102,6 +102,7 @@ class Stream {
   bool lazy_;
   std::size_t i_ = 0;
   std::string why_;      // the number readers' reason (unused: any failure defers)
+  Budget_tally tally_;   // [BUDGET] the scene's measures so far: over budget defers (read_scene_tree says why)
   std::string decoded_;  // a string with escapes or non-ASCII, decoded by json::decode_string
 
   [[noreturn]] static void defer() { throw Defer{}; }
@@ -165,18 +166,7 @@ class Stream {
   // json.cpp (the one decoder; it throws Input_error on a malformed string, which defers).
   std::string_view string_token() {
     if (peek() != '"') defer();
-    const std::size_t start = ++i_;
-    for (; i_ < s_.size(); ++i_) {
-      const unsigned char c = static_cast<unsigned char>(s_[i_]);
-      if (c == '"') return s_.substr(start, i_++ - start);
-      if (c == '\\' || c < 0x20 || c >= 0x80) {
-        std::size_t pos = start - 1;
-        decoded_ = json::decode_string(s_, pos, limits_, source_);
-        i_ = pos;
-        return decoded_;
-      }
-    }
-    defer();  // unterminated
+    return json::string_view_at(s_, i_, decoded_, limits_, source_);
   }
 
   std::string_view string_value() { return string_token(); }
@@ -199,7 +189,7 @@ class Stream {
   // An exact number (eager), with its certified double when `approx` is given.
   void exact(Rational& out, fl::Bounded* approx = nullptr) {
     const Number_text t = number_text();
-    if (!parse_rational_into(t.text, t.json, limits_, why_, out, approx)) defer();
+    if (!parse_rational_into(t.text, t.json, limits_, why_, out, approx, &tally_)) defer();
   }
 
   void nonnegative(Rational& out, fl::Bounded* approx = nullptr) {
@@ -232,7 +222,7 @@ class Stream {
     fl::Bounded v;
     int sign = 0;
     // The certified double of an exact 1 is {1, 0}, and e = 0 means v is the exact value.
-    if (!scan_number(t.text, t.json, limits_, why_, v, sign) || v.v != 1.0 || v.e != 0) defer();
+    if (!scan_number(t.text, t.json, limits_, why_, v, sign, &tally_) || v.v != 1.0 || v.e != 0) defer();
   }
 
   void body(Body& b) {
@@ -245,6 +235,7 @@ class Stream {
       seen |= bit;
       if (bit == kOutline) {
         array(2, [&](std::size_t k) {
+          if (k >= limits_.max_contacts) defer();
           vec2(slot(b.outline, k), 3);
           points = k + 1;
         });
@@ -265,7 +256,7 @@ class Stream {
     }
     const Number_text t = number_text();
     int sign = 0;
-    if (!scan_number(t.text, t.json, limits_, why_, approx, sign)) defer();
+    if (!scan_number(t.text, t.json, limits_, why_, approx, sign, &tally_)) defer();
     c.number_text[static_cast<std::size_t>(slot)].assign(t.text);
     c.number_is_json[static_cast<std::size_t>(slot)] = t.json;
     return sign;
@@ -334,6 +325,7 @@ class Stream {
       return;
     }
     if ((seen & (kAt | kNormal)) != (kAt | kNormal) || zero_normal || mu_sign < 0) defer();
+    if (!(seen & kMu) && !tally_.add_number(1, limits_)) defer();  // an absent mu counts as its "0"
     if (lazy_ && !(seen & kMu)) {  // lazy_contact() keeps "0" for an absent mu
       c.number_text[4] = "0";
       c.number_is_json[4] = true;
@@ -405,7 +397,7 @@ class Stream {
         return;
       }
       array(2, [&](std::size_t k) {
-        if (k >= limits_.max_contacts) defer();
+        if (k >= limits_.max_contacts || !tally_.add_entry(limits_)) defer();
         Support_point& p = slot(s.points, k);
         points = k + 1;
         enum : unsigned { kAt = 1, kForce = 2, kPointMu = 4 };

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -45,6 +47,22 @@ std::array<Integer, N> primitive_of(const std::array<Rational, N>& v) {  // clea
 
 }  // namespace
 
+namespace {
+void* gmp_allocate(std::size_t n) {
+  void* p = std::malloc(n);
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+void* gmp_reallocate(void* p, std::size_t, std::size_t n) {
+  void* q = std::realloc(p, n);
+  if (!q) throw std::bad_alloc();  // p is still valid, and still the number's storage
+  return q;
+}
+void gmp_free(void* p, std::size_t) { std::free(p); }
+}  // namespace
+
+void use_throwing_gmp_allocation() { mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free); }
+
 fl::Bounded to_bounded(const Rational& q) {
   const double v = q.get_d();  // truncation toward zero: |q − v| < ulp(v)
   if (!std::isfinite(v)) return {v, fl::Bounded::kInf};
@@ -55,10 +73,16 @@ fl::Bounded to_bounded(const Rational& q) {
 
 namespace {
 
+const char* const kOverBudget = "is over the scene's budget";
+
 // The grammar, the limits, the certified double and the exact sign of a number; the exact value
 // into `out` unless `out` is null and the digits make it unnecessary (then `*exact_skipped`).
+// With `tally` [BUDGET], the number's digits (as number_digits counts them) join the scene's tally, and a
+// number over what the tally still allows is refused before any conversion. With no approx, out and sign
+// it only validates and counts.
 bool parse_impl(std::string_view s, bool json_number, const Input_limits& limits, std::string& why,
-                fl::Bounded* approx, Rational* out, int* sign) {
+                fl::Bounded* approx, Rational* out, int* sign, Budget_tally* tally = nullptr,
+                std::size_t* counted = nullptr) {
   auto fail = [&why](const char* reason) {
     why = reason;
     return false;
@@ -82,9 +106,12 @@ bool parse_impl(std::string_view s, bool json_number, const Input_limits& limits
     if (den_digits == 0 || i != s.size()) return fail("is not a number");
     if (int_digits + den_digits > limits.max_digits)
       return fail("has more digits than the digit limit");
-    Integer den = integer_of(s.substr(den_start, den_digits));
-    if (den == 0) return fail("has a zero denominator");
-    Rational q(integer_of(int_part), den);
+    if (den_digits == static_cast<std::size_t>(std::count(s.begin() + static_cast<long>(den_start), s.end(), '0')))
+      return fail("has a zero denominator");
+    if (counted) *counted = int_digits + den_digits;
+    if (tally && !tally->add_number(int_digits + den_digits, limits)) return fail(kOverBudget);
+    if (!approx && !out && !sign) return true;
+    Rational q(integer_of(int_part), integer_of(s.substr(den_start, den_digits)));
     q.canonicalize();
     if (negative) q = -q;
     if (approx) *approx = to_bounded(q);
@@ -148,11 +175,17 @@ bool parse_impl(std::string_view s, bool json_number, const Input_limits& limits
   // m/10^k before reduction (significant + k + 1), so that a scene's canonical text (exact/scene_writer:
   // "p/q" in lowest terms, no exponent) reads back under the same limits. Found by fuzz_scene_parser:
   // "1e200" was accepted at --max-digits 200 and its 201-digit canonical text was not. (The checker agrees.)
+  std::size_t count = int_digits + frac_part.size() + exponent_digits;  // number_digits(): the larger count
   if (significant > 0) {
     const std::size_t k = static_cast<std::size_t>(scale < 0 ? -scale : scale);
-    if (significant + k + (scale < 0 ? 1 : 0) > limits.max_digits)
+    const std::size_t written = significant + k + (scale < 0 ? 1 : 0);
+    if (written > limits.max_digits)
       return fail("has more digits than the digit limit when written out exactly");
+    count = std::max(count, written);
   }
+  if (counted) *counted = count;
+  if (tally && !tally->add_number(count, limits)) return fail(kOverBudget);
+  if (!approx && !out && !sign) return true;
   bool approx_done = false;
   // Fast path: at most 18 significant digits and |scale| ≤ 18 fit in 64-bit integers (the value is
   // m·10^scale with m < 10^18 and 10^|scale| ≤ 10^18), so no string-to-GMP conversion is needed.
@@ -227,13 +260,18 @@ std::optional<Rational> parse_rational(std::string_view s, bool json_number, con
 }
 
 bool parse_rational_into(std::string_view s, bool json_number, const Input_limits& limits, std::string& why,
-                         Rational& out, fl::Bounded* approx) {
-  return parse_impl(s, json_number, limits, why, approx, &out, nullptr);
+                         Rational& out, fl::Bounded* approx, Budget_tally* tally) {
+  return parse_impl(s, json_number, limits, why, approx, &out, nullptr, tally);
 }
 
 bool scan_number(std::string_view s, bool json_number, const Input_limits& limits, std::string& why,
-                 fl::Bounded& approx, int& sign) {
-  return parse_impl(s, json_number, limits, why, &approx, nullptr, &sign);
+                 fl::Bounded& approx, int& sign, Budget_tally* tally) {
+  return parse_impl(s, json_number, limits, why, &approx, nullptr, &sign, tally);
+}
+
+bool number_digits(std::string_view s, bool json_number, const Input_limits& limits, std::size_t& digits) {
+  std::string why;
+  return parse_impl(s, json_number, limits, why, nullptr, nullptr, nullptr, nullptr, &digits);
 }
 
 

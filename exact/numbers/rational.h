@@ -17,6 +17,15 @@ namespace wrenchkit {
 using Rational = mpq_class;
 using Integer = mpz_class;
 
+// GMP aborts the process when an allocation fails (its default allocation functions). This installs
+// allocation functions that throw std::bad_alloc instead, so that what the scene budget did not prevent
+// becomes an error (the pipeline's internal_error "out of memory", exit 70; in batch one error line, the
+// other answers kept), never an abort. Process-wide (mp_set_memory_functions); the command line and the
+// Python module call it once at start, a C++ program may too. Idempotent. The unwinding passes through
+// GMP's C frames (built with unwind tables); a number being resized keeps its old storage, temporary
+// blocks of the failed operation are lost (a bounded leak, on an error path).
+void use_throwing_gmp_allocation();
+
 // Reads `text` exactly. `json_number` selects JSON's number grammar (text of a JSON number token);
 // otherwise the string grammar (decimal with optional exponent, or p/q). On failure returns
 // nullopt and sets `why` to a short reason ("is not a number", "has more than 10000 digits", …).
@@ -29,14 +38,22 @@ std::optional<Rational> parse_rational(std::string_view text, bool json_number,
 
 // parse_rational into an existing Rational (the streaming scene reader reuses its storage); the
 // same grammar, limits, value, certified double and reasons. `out` is unspecified on failure.
+// With `tally` [BUDGET], the number's digits join the scene's tally (limits.h), and a number that would take
+// the scene over its budget fails ("is over the scene's budget") before it is converted.
 bool parse_rational_into(std::string_view text, bool json_number, const Input_limits& limits, std::string& why,
-                         Rational& out, fl::Bounded* approx = nullptr);
+                         Rational& out, fl::Bounded* approx = nullptr, Budget_tally* tally = nullptr);
 
 // Validates `text` exactly as parse_rational does and returns its certified double and its exact
 // sign (−1, 0, 1), building no rational when the digits are short enough to avoid it (≤ 18
 // significant digits, |scale| ≤ 15). For the lazy scene reading of the float path.
 bool scan_number(std::string_view text, bool json_number, const Input_limits& limits, std::string& why,
-                 fl::Bounded& approx, int& sign);
+                 fl::Bounded& approx, int& sign, Budget_tally* tally = nullptr);
+
+// [BUDGET] Whether `text` is a valid number within the limits (as parse_rational decides, building
+// nothing), and then its digits as the digit limit counts them: the larger of the digits of its text
+// (integer, fraction, exponent; numerator and denominator) and, for a decimal with a nonzero value, of its
+// value written out (an integer, or m/10^k before reduction). O(|text|).
+bool number_digits(std::string_view text, bool json_number, const Input_limits& limits, std::size_t& digits);
 
 // |q − v| ≤ e: v is q rounded toward zero; e = 0 if exact, 2^-51·|v| otherwise (one ulp of a
 // normal double is at most 2^-52·|v|), +∞ if q is outside the normal range of doubles. [FL-4]

@@ -21,12 +21,22 @@ inline unsigned batch_threads(unsigned jobs) { return jobs ? jobs : std::max(1u,
 // false; work(Worker&, Input&, Output&, index) maps each input (index counts from 0) on `jobs`
 // threads (0: all cores), each thread with its own Worker (scratch storage reused from one input to the
 // next); on the calling thread again, emit(index, Output&) receives the outputs in input order.
-// Inputs are taken in windows of `window_per_thread`·jobs, so memory stays bounded whatever the
-// number of inputs; Input and Output objects are reused from window to window (assign into them).
+// Inputs are taken in windows of `window_per_thread`·jobs, and a window also closes once the inputs in it
+// weigh `window_bytes` or more (weigh(Input&): their bytes; a long input shrinks the window, down to one
+// input), so memory stays bounded whatever the number and the size of the inputs; Input and Output objects
+// are reused from window to window (assign into them).
 // `work` must not throw (turn a per-input error into an Output); next/emit may, and the map then
 // stops and rethrows on the calling thread once its threads are idle.
-template <class Input, class Output, class Worker, class Next, class Work, class Emit>
-void ordered_map(unsigned jobs, Next&& next, Work&& work, Emit&& emit, std::size_t window_per_thread = 256) {
+struct Weightless {
+  template <class Input>
+  std::size_t operator()(const Input&) const {
+    return 0;
+  }
+};
+
+template <class Input, class Output, class Worker, class Next, class Work, class Emit, class Weigh = Weightless>
+void ordered_map(unsigned jobs, Next&& next, Work&& work, Emit&& emit, std::size_t window_per_thread = 256,
+                 std::size_t window_bytes = static_cast<std::size_t>(-1), Weigh weigh = {}) {
   const unsigned threads = batch_threads(jobs);
   const std::size_t window = std::max<std::size_t>(1, window_per_thread * threads);
   std::vector<Input> in(window);
@@ -68,7 +78,8 @@ void ordered_map(unsigned jobs, Next&& next, Work&& work, Emit&& emit, std::size
   try {
     for (bool more = true; more;) {
       count = 0;
-      while (count < window && (more = next(in[count]))) ++count;
+      for (std::size_t bytes = 0; count < window && bytes < window_bytes && (more = next(in[count]));)
+        bytes += weigh(in[count++]);
       if (count == 0) break;
       cursor = 0;
       const unsigned helpers = static_cast<unsigned>(std::min<std::size_t>(threads, count)) - 1;

@@ -19,6 +19,17 @@ int exit_code(Status s) {
   return 70;
 }
 
+wrenchkit_checker::Limits checker_limits(const Input_limits& l) {
+  wrenchkit_checker::Limits c;
+  c.max_digits = l.max_digits;
+  c.max_exponent = l.max_exponent;
+  c.max_depth = l.max_depth;
+  c.max_contacts = l.max_contacts;
+  c.max_total_digits = l.max_total_digits;
+  c.max_digits_times_contacts = l.max_digits_times_contacts;
+  return c;
+}
+
 std::string check_certificates(std::string_view scene_text, const std::vector<std::string_view>& certificates,
                                const Request& request) {
   if (request.check == Check::none) return std::string();
@@ -31,12 +42,8 @@ std::string check_certificates(std::string_view scene_text, const std::vector<st
     injected.insert(1, "\"injected_fault\": true, ");
     checked[0] = injected;
   }
-  wrenchkit_checker::Limits limits;
-  limits.max_digits = request.limits.max_digits;
-  limits.max_exponent = request.limits.max_exponent;
-  limits.max_depth = request.limits.max_depth;
-  limits.max_contacts = request.limits.max_contacts;
-  const std::vector<wrenchkit_checker::Result> results = wrenchkit_checker::check_all(scene_text, checked, limits);
+  const std::vector<wrenchkit_checker::Result> results =
+      wrenchkit_checker::check_all(scene_text, checked, checker_limits(request.limits));
   for (std::size_t k = 0; k < results.size(); ++k)
     if (results[k].outcome != wrenchkit_checker::Outcome::accepted)
       return "the independent checker rejected our own certificate: " + results[k].message +

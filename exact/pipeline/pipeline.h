@@ -29,6 +29,7 @@
 #include "exact/numbers/limits.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
+#include "proofs/checker/checker.h"
 
 namespace wrenchkit {
 
@@ -111,6 +112,9 @@ void guarded(Item& item, F&& decide) {
     fail(Status::internal_error, e.what());
   }
 }
+
+// The independent checker's limits for the request's limits: the same scenes are valid to both.
+wrenchkit_checker::Limits checker_limits(const Input_limits& limits);
 
 // The independent checker's verdict on our own certificates of one scene: "" when every one is accepted,
 // else the reason (with the rejected certificate). Check::none accepts without looking. The environment

@@ -32,9 +32,16 @@ void twin_polygons(const Support_query& q, Support_item& r) {
   r.twin_power_outer = fl::polygonal_support(r.twin, *r.twin_directions, true, t);
 }
 
+// A twist's polygonal values (compute_sliding) need the polygons' tables: refused beyond kMaxTableEntries.
+void require_tables(const Polygonal_ls& model) {
+  const std::string why = model.tables_problem();
+  if (!why.empty()) throw Input_error(why);
+}
+
 void answer_limit_surface(const Support_query& q, Support_item& r) {
   const Polygonal_ls& model = r.model.emplace(merge_support(*r.scene.support), make_directions(q.sides));
   const bool build = q.polytopes && r.mode != Mode::float_only;
+  if (q.twist && r.mode != Mode::float_only) require_tables(model);
   if (build && model.candidate_count() > kMaxCandidates)
     throw Input_error("sides " + std::to_string(q.sides) + " with " + std::to_string(model.support().points.size()) +
                       " distinct support points needs " + std::to_string(model.candidate_count()) +
@@ -76,7 +83,9 @@ void answer_sliding(const Support_query& q, Support_item& r) {
     twin_polygons(q, r);
     return;
   }
-  r.sliding = compute_sliding(r.model.emplace(merge_support(*r.scene.support), make_directions(q.sides)), q.twist);
+  const Polygonal_ls& model = r.model.emplace(merge_support(*r.scene.support), make_directions(q.sides));
+  if (q.twist) require_tables(model);
+  r.sliding = compute_sliding(model, q.twist);
 }
 
 // Some force not given: the admissible set, its vertices, and the power range of the twist over it.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "exact/io/support_check.h"
 #include "exact/numbers/exact_lp.h"
@@ -104,6 +105,9 @@ bool solve_basis(const Rows& r, const std::vector<std::size_t>& B, std::vector<R
 
 std::vector<std::vector<Rational>> vertices(const Support& s, const Admissible& a) {
   if (a.known()) return {a.given};
+  if (a.unknown.size() > kMaxEnumeratedUnknowns)
+    throw std::length_error("vertices: " + std::to_string(a.unknown.size()) + " unknown forces, more than " +
+                            std::to_string(kMaxEnumeratedUnknowns));
   const Rows r = rows_of(s, a);
   const std::size_t k = a.unknown.size();
   std::vector<std::vector<Rational>> out;

@@ -32,7 +32,8 @@ Admissible admissible_set(const Scene& scene);
 // The vertices of F (its extreme distributions), each once, in a fixed order: the basic feasible
 // solutions of the three rows over 1, 2 or 3 unknown forces with independent columns (1, x_i, y_i).
 // O(C(k,3)) exact 3×3 solves for k unknown points; one distribution when every force is given.
-// Callers enumerate only up to kMaxEnumeratedUnknowns unknown points (C(60,3) = 34 220 solves).
+// At most kMaxEnumeratedUnknowns unknown points (C(60,3) = 34 220 solves, at most 60 + 1 770 + 34 220 vertices of
+// k rationals each): beyond, it throws std::length_error before any work (callers check first and say why).
 constexpr std::size_t kMaxEnumeratedUnknowns = 60;
 std::vector<std::vector<Rational>> vertices(const Support& s, const Admissible& a);
 

@@ -205,8 +205,51 @@ Polygonal_ls::Polygonal_ls(Ls_support s, Directions d) : s_(std::move(s)), d_(st
 
 // The inner and outer polygons' tables, built on first use: a query answered on the true surface (or with
 // the support values alone) never pays for them.
+//
+// Their memory, bounded before they are built: per point i and side, n vertices of 3 integers over the common
+// denominator L, which divides the product of the lcms of the unit polygons' denominators, of the ρ_i's, of the
+// x_i's and of the y_i's (ρ_i A_i(P_j) = (ρ P_x, ρ P_y, x ρ P_y − y ρ P_x)), so a vertex integer has at most
+// digits(L) + digits(numerators of ρ_i, r_i) + 2 digits (0.42 byte each); n edge directions; about 650 bytes
+// of fixed cost per vertex and side (measured: 2 048 integer points at N = 128, 339 MB resident in all).
+std::uint64_t Polygonal_ls::table_bytes() const {
+  const auto digits = [](const Integer& z) { return static_cast<std::uint64_t>(mpz_sizeinbase(z.get_mpz_t(), 10)); };
+  const auto join = [](Integer& l, const Integer& d) {
+    if (mpz_divisible_p(l.get_mpz_t(), d.get_mpz_t()) == 0) l = lcm_of(l, d);
+  };
+  Integer p = 1, rho = 1, x = 1, y = 1;
+  const int n = d_.n;
+  for (int j = 0; j < n; ++j) {
+    const Vec2& a = d_.u[j];
+    const Vec2& b = d_.u[(j + 1) % n];
+    const Rational k = 1 + a.x * b.x + a.y * b.y;
+    for (const Rational& c : {a.x, a.y, Rational((a.x + b.x) / k), Rational((a.y + b.y) / k)}) join(p, c.get_den());
+  }
+  for (const Ls_point& pt : s_.points) {
+    join(rho, pt.rho.get_den());
+    join(x, pt.at.x.get_den());
+    join(y, pt.at.y.get_den());
+  }
+  const std::uint64_t L = digits(p) + digits(rho) + digits(x) + digits(y);
+  std::uint64_t bytes = 0;
+  for (const Ls_point& pt : s_.points) {
+    const std::uint64_t d = L + digits(pt.rho.get_num()) + digits(pt.at.x.get_num()) + digits(pt.at.y.get_num()) + 2;
+    bytes += static_cast<std::uint64_t>(n) * 2 * (650 + 3 * (d * 5 / 12 + 8));
+  }
+  return bytes;
+}
+
+std::string Polygonal_ls::tables_problem() const {
+  const std::uint64_t bytes = table_bytes();
+  if (bytes <= kMaxTableBytes) return std::string();
+  return "sides " + std::to_string(d_.n) + " with " + std::to_string(s_.points.size()) +
+         " distinct support points needs polygons of " + std::to_string(s_.points.size() * std::uint64_t(d_.n)) +
+         " vertices taking up to " + std::to_string(bytes >> 20) + " MiB, more than the limit of " +
+         std::to_string(kMaxTableBytes >> 20) + " MiB; use fewer sides";
+}
+
 void Polygonal_ls::build_tables() const {
   if (tables_built_) return;
+  if (const std::string why = tables_problem(); !why.empty()) throw std::length_error("limit surface: " + why);
   tables_built_ = true;
   const int n = d_.n;
   for (Side side : {Side::inner, Side::outer}) {

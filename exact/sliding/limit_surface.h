@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string>
 #include <vector>
 
 #include "core/limit_surface_directions.h"
@@ -37,6 +38,9 @@ namespace wrenchkit {
 // Refuse to build polytopes with more candidate normals than this (a clear error, not a hang or an
 // unbounded allocation; measured ~2.6 kB per candidate for both polytopes).
 constexpr std::uint64_t kMaxCandidates = 400000;  // ≈ 1 GB (10 points, N = 128: 368 660)
+// Refuse to build the polygons' tables (support values, faces, polytopes: every polygonal query) when their
+// memory bound (Polygonal_ls::table_bytes) exceeds this (docs/scene-format.md "Limits").
+constexpr std::uint64_t kMaxTableBytes = std::uint64_t(512) << 20;  // 512 MiB: ≈ 2 900 integer points at N = 128
 
 using Vec3q = std::array<Rational, 3>;
 using Vec3z = std::array<Integer, 3>;
@@ -105,6 +109,11 @@ class Polygonal_ls {
 
   // Candidate normals 2k + k(k−1)n²/4 (before deduplication): the work [LS-2] will do.
   std::uint64_t candidate_count() const;
+  // An upper bound on the memory of the polygons' tables (k·n vertices per side, built on the first polygonal
+  // query), computed in O(k + n) without building them; beyond kMaxTableBytes that query throws
+  // std::length_error (tables_problem(): the message for the user, "" when within).
+  std::uint64_t table_bytes() const;
+  std::string tables_problem() const;
   Ls_polytope build(Side side) const;  // throws std::length_error beyond kMaxCandidates
 
   // h_in/out(q) = Σ ρ_i h_{P}(v_i(q)), exact.

@@ -37,6 +37,11 @@ std::string gap_text(double g) {
 
 std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a, const Vec3q& p, int sides,
                                            const std::vector<Rational>* fixed) {
+  // The LP has (3 + k) rows of about k·n columns: refused beyond kMaxStickWitnessColumns (motion_certificate.h).
+  if (s.points.size() * static_cast<std::size_t>(sides) > kMaxStickWitnessColumns)
+    throw std::length_error("stick_witness: " + std::to_string(s.points.size()) + " support points x " +
+                            std::to_string(sides) + " sides, more than " + std::to_string(kMaxStickWitnessColumns) +
+                            " columns");
   const Directions d = make_directions(sides);
   const std::size_t k = s.points.size(), n = d.u.size();
   const bool free_f = !fixed && !a.known();

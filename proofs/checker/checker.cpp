@@ -52,9 +52,46 @@ std::string show(const Q& a, const Q& b) { return "(" + show(a) + ", " + show(b)
 // or of a number string:
 //   decimal := sign? (digits ("." digits?)? | "." digits) exponent?    exponent := [eE] sign? digits
 //   fraction := sign? digits "/" digits (denominator not zero)
+// The scene-wide budget while a scene is read (Limits::max_total_digits, max_digits_times_contacts):
+// read_whole_scene sets `reading` for the duration of the reading, so that the numbers read again later
+// (generators, support values) are not counted twice.
+struct Tally {
+  std::size_t total = 0, longest = 0, entries = 0;
+  static std::size_t times(std::size_t a, std::size_t b) {  // saturating a * b
+    return a != 0 && b > static_cast<std::size_t>(-1) / a ? static_cast<std::size_t>(-1) : a * b;
+  }
+  // One more number of d digits, refused (a Failure, message after the path) when it takes the scene over.
+  void number(std::size_t d, const Limits& lim) {
+    const std::size_t t = total + d < total ? static_cast<std::size_t>(-1) : total + d;
+    if (t > lim.max_total_digits)
+      throw Failure{": the scene's numbers have " + std::to_string(t) + " digits in all up to here (limit " +
+                    std::to_string(lim.max_total_digits) + ", the budget on all digits, --max-total-digits)"};
+    const std::size_t m = std::max(longest, d);
+    if (times(m, entries) > lim.max_digits_times_contacts) throw Failure{over(m, entries, lim)};
+    total = t, longest = m;
+  }
+  // One more contact or support point: list[index].
+  void entry(const char* list, std::size_t index, const Limits& lim) {
+    if (times(longest, entries + 1) > lim.max_digits_times_contacts)
+      throw Failure{list + ("[" + std::to_string(index) + "]") + over(longest, entries + 1, lim)};
+    ++entries;
+  }
+  static std::string over(std::size_t longest, std::size_t entries, const Limits& lim) {
+    return ": the longest number up to here has " + std::to_string(longest) + " digits, times " +
+           std::to_string(entries) + " contacts and support points makes " + std::to_string(times(longest, entries)) +
+           " (limit " + std::to_string(lim.max_digits_times_contacts) +
+           ", the budget on digits times contacts, --max-digits-times-contacts)";
+  }
+  static thread_local Tally* reading;
+};
+thread_local Tally* Tally::reading = nullptr;
+
 // JSON's number grammar is a subset of `decimal`. The digit and exponent limits are checked on the
-// text before any big number is built (no overflow, no huge power of ten).
-Q scene_number(std::string_view s, const Limits& lim, const std::string& path) {
+// text before any big number is built (no overflow, no huge power of ten). With `tally`, the number is
+// counted against the scene's budget, also before it is built; with `build` false nothing is built (the
+// result is 0): the number is only validated and counted.
+Q scene_number(std::string_view s, const Limits& lim, const std::string& path, Tally* tally = nullptr,
+               bool build = true) {
   const std::string at = path + ": ";
   auto not_a_number = [&] { return Failure{at + quote(s) + " is not a number"}; };
   std::size_t i = 0, digits = 0;
@@ -93,6 +130,8 @@ Q scene_number(std::string_view s, const Limits& lim, const std::string& path) {
   Q q;
   if (fraction) {
     if (den.find_first_not_of('0') == std::string_view::npos) throw Failure{at + quote(s) + " has a zero denominator"};
+    if (tally) tally->number(digits, lim);
+    if (!build) return q;
     q = Q(mpz_class(std::string(whole), 10), mpz_class(std::string(den), 10));  // base 10: "010" is ten
   } else {
     exp.remove_prefix(std::min(exp.find_first_not_of('0'), exp.size()));
@@ -110,13 +149,17 @@ Q scene_number(std::string_view s, const Limits& lim, const std::string& path) {
     while (lead < whole.size() + frac.size() && (lead < whole.size() ? whole[lead] : frac[lead - whole.size()]) == '0')
       ++lead;
     const std::size_t significant = whole.size() + frac.size() - lead;
+    std::size_t counted = digits;  // the budget counts the larger: text or value written out
     if (significant > 0) {
       const std::size_t value_digits =
           significant + static_cast<std::size_t>(scale < 0 ? -scale : scale) + (scale < 0 ? 1 : 0);
       if (value_digits > lim.max_digits)
         throw Failure{at + "number with " + std::to_string(value_digits) + " digits written out (limit " +
                       std::to_string(lim.max_digits) + ")"};
+      counted = std::max(counted, value_digits);
     }
+    if (tally) tally->number(counted, lim);
+    if (!build) return q;
     if (whole.size() + frac.size() <= 19 && scale >= -19 && scale <= 19) {
       // Short decimals (what scenes mostly hold): mantissa and power of ten in 64 bits (10^19 < 2^64),
       // lowest terms by a 64-bit gcd; the same value as below.
@@ -148,12 +191,18 @@ Q scene_number(std::string_view s, const Limits& lim, const std::string& path) {
   return negative ? Q(-q) : q;
 }
 
+// The longest rational a certificate about the scene being checked may hold (certificate-format.md §2):
+// max(100000, 32 L + 64) characters for L the digits of the scene's longest number (a weight is a ratio of
+// 3x3 minors of generator integers of at most 5 L + 1 digits each). Set by check_certificate.
+thread_local std::size_t certificate_rational_limit = 100000;
+
 // A certificate rational (certificate-format.md §2): a JSON string matching
-// -?(0|[1-9][0-9]*)(/[1-9][0-9]*)? of at most 100000 characters. The grammar is checked here, in
-// full, before GMP sees the text (mpq_set_str alone would accept "1/0" and more).
+// -?(0|[1-9][0-9]*)(/[1-9][0-9]*)? of at most certificate_rational_limit characters. The grammar is checked
+// here, in full, before GMP sees the text (mpq_set_str alone would accept "1/0" and more).
 Q certificate_rational(const std::string& s, const std::string& path) {
-  if (s.size() > 100000)
-    throw Failure{path + ": rational of " + std::to_string(s.size()) + " characters (limit 100000)"};
+  if (s.size() > certificate_rational_limit)
+    throw Failure{path + ": rational of " + std::to_string(s.size()) + " characters (limit " +
+                  std::to_string(certificate_rational_limit) + ")"};
   std::size_t i = !s.empty() && s[0] == '-' ? 1 : 0;
   auto integer = [&](bool zero_allowed) {  // 0 | [1-9][0-9]*
     if (i < s.size() && s[i] == '0' && zero_allowed) return ++i, true;
@@ -201,7 +250,7 @@ Q read_number(Reader& r, const Limits& lim, std::string* text = nullptr) {
   std::string s = k == Kind::number ? std::string(r.number()) : r.string();
   Q q;
   try {  // the path only for the message (building it for every number costs more than the number)
-    q = scene_number(s, lim, "");
+    q = scene_number(s, lim, "", Tally::reading);
   } catch (const Failure& f) {
     throw Failure{r.path() + f.message};
   }
@@ -290,6 +339,13 @@ Contact read_contact(Reader& r, const Limits& lim) {
     r.fail("expected \"at\" and \"normal\" (a point contact) or \"wrench\"");
   if (!(keys & kAt)) r.fail("missing required key \"at\"");
   if (!(keys & kNormal)) r.fail("missing required key \"normal\"");
+  if (!(keys & kMu) && Tally::reading) {  // an absent mu counts as its "0" (docs/scene-format.md "Limits")
+    try {
+      Tally::reading->number(1, lim);
+    } catch (const Failure& f) {
+      r.fail(f.message.substr(2));
+    }
+  }
   std::vector<Q> values;
   values.reserve(5);
   for (Q* q : {&at_value[0], &at_value[1], &normal_value[0], &normal_value[1], &mu_value}) values.push_back(std::move(*q));
@@ -310,9 +366,36 @@ void read_body(Reader& r, const Limits& lim, bool& has_com, Q (&com)[2]) {
   r.begin_object();
   std::string key;
   while (r.next_key(key)) {
-    if (key == "outline") {
+    if (key == "outline") {  // not interpreted, but limited and counted in the budget like every point
       if (r.peek() != Kind::array) r.fail("expected an array of points");
-      r.skip();
+      r.begin_array();
+      for (std::size_t points = 0; r.next_item(); ++points) {
+        if (points == lim.max_contacts)
+          throw Failure{"body.outline: more than " + std::to_string(lim.max_contacts) + " points"};
+        if (r.peek() != Kind::array) {
+          r.skip();
+          continue;
+        }
+        r.begin_array();
+        while (r.next_item()) {
+          const Kind k = r.peek();
+          if (k != Kind::number && k != Kind::string) {
+            r.skip();
+            continue;
+          }
+          const std::string s = k == Kind::number ? std::string(r.number()) : r.string();
+          try {  // a valid number counts (the engine refuses an invalid one; the checker ignores it)
+            scene_number(s, lim, "", nullptr, false);
+          } catch (const Failure&) {
+            continue;
+          }
+          try {
+            scene_number(s, lim, "", Tally::reading, false);
+          } catch (const Failure& f) {
+            throw Failure{r.path() + f.message};
+          }
+        }
+      }
     } else if (key == "com") {
       read_vector(r, lim, 2, com);
       has_com = true;
@@ -436,6 +519,7 @@ Support read_support(Reader& r, const Limits& lim) {
       while (r.next_item()) {
         if (raw.size() == lim.max_contacts)
           throw Failure{"support.points: more than " + std::to_string(lim.max_contacts) + " points"};
+        if (Tally::reading) Tally::reading->entry("support.points", raw.size(), lim);
         Raw p;
         p.path = r.path();
         if (r.peek() != Kind::object) r.fail("expected an object {\"at\", \"force\"?, \"mu\"?}");
@@ -567,6 +651,7 @@ void settle_support(Support& s, bool has_com, const Q (&com)[2], const Limits& l
 }
 
 struct Scene {
+  std::size_t longest = 0;  // digits of the longest number (as the budget counts them)
   std::vector<Contact> contacts;
   bool has_load = false;
   Wrench load;  // w_ext (certificate-format.md §3.3), if has_load
@@ -601,6 +686,7 @@ Scene read_scene(Reader& r, const Limits& lim) {
       while (r.next_item()) {
         if (scene.contacts.size() == lim.max_contacts)
           throw Failure{"contacts: more than " + std::to_string(lim.max_contacts) + " contacts"};
+        if (Tally::reading) Tally::reading->entry("contacts", scene.contacts.size(), lim);
         scene.contacts.push_back(read_contact(r, lim));
       }
     } else {
@@ -1429,6 +1515,9 @@ void check_motion(const Certificate& c, const Scene& scene, const Limits& lim) {
 
 // The certificate against an already read scene.
 Result check_certificate(const Scene& scene, std::string_view certificate_json, const Limits& limits) {
+  certificate_rational_limit = std::max<std::size_t>(100000, scene.longest > (static_cast<std::size_t>(-1) - 64) / 32
+                                                                 ? static_cast<std::size_t>(-1)
+                                                                 : 32 * scene.longest + 64);
   try {
     Reader r(certificate_json, limits.max_depth);
     const Certificate c = read_certificate(r);
@@ -1456,10 +1545,16 @@ Result check_certificate(const Scene& scene, std::string_view certificate_json, 
 
 // The scene, or the bad_scene result that check() gives for it.
 bool read_whole_scene(std::string_view scene_json, const Limits& limits, Scene& scene, Result& bad) {
+  Tally tally;  // the scene-wide budget, counted while the scene is read
+  struct Counting {
+    explicit Counting(Tally& t) { Tally::reading = &t; }
+    ~Counting() { Tally::reading = nullptr; }
+  } counting(tally);
   try {
     Reader r(scene_json, limits.max_depth);
     scene = read_scene(r, limits);
     r.finish();
+    scene.longest = tally.longest;
     return true;
   } catch (const Failure& f) {
     bad = {Outcome::bad_scene, f.message};

@@ -36,12 +36,19 @@
 namespace wrenchkit_checker {
 
 // Limits on the scene (docs/scene-format.md "Limits"); max_depth also applies to the certificate.
-// Certificate rationals are at most 100000 characters (certificate-format.md §2), a fixed limit.
+// Certificate rationals are at most max(100000, 32 L + 64) characters for L the digits of the scene's longest
+// number (certificate-format.md §2).
 struct Limits {
   std::size_t max_digits = 10000;  // digits of a scene number's text (exponent included) and of its value written out
   long max_exponent = 10000;       // |exponent| of a scene number
   std::size_t max_depth = 64;      // JSON containers nested in one another
-  std::size_t max_contacts = 100000;  // also the limit on support.points
+  std::size_t max_contacts = 100000;  // also the limit on support.points and on body.outline's points
+  // The scene-wide budget (docs/scene-format.md "Limits"): the digits of all the scene's numbers together
+  // (each counted as max_digits counts it), and the longest number's digits times the number of contacts
+  // and support points. A scene over either is a bad scene, refused while it is read, before the number
+  // that takes it over is built.
+  std::size_t max_total_digits = 20000000;
+  std::size_t max_digits_times_contacts = 10000000;
   // Sliding certificates that claim "sticks" for every admissible distribution (certificate-format.md
   // §6): the checker enumerates the vertices of F itself, over n + C(n,2) + C(n,3) candidate bases for
   // n points without a given force, and rejects a larger certificate as too large to check.

@@ -2,10 +2,14 @@
 //
 // Exit codes (proofs/certificate-format.md §4): 0 accepted, 1 rejected, 2 bad scene, unreadable
 // file or usage error (one line on standard error, starting "wrenchkit-check: error: ").
+#include <gmp.h>
+
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -54,9 +58,23 @@ bool read_file(const std::string& path, std::string& out, std::string& why) {
   return why.empty();
 }
 
+// GMP's allocation failures as std::bad_alloc (check() reports them), not GMP's abort.
+void* allocate(std::size_t n) {
+  void* p = std::malloc(n);
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+void* reallocate(void* p, std::size_t, std::size_t n) {
+  void* q = std::realloc(p, n);
+  if (!q) throw std::bad_alloc();
+  return q;
+}
+void release(void* p, std::size_t) { std::free(p); }
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  mp_set_memory_functions(allocate, reallocate, release);
   std::vector<std::string> files;
   bool json = false;
   for (int i = 1; i < argc; ++i) {

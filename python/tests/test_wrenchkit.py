@@ -238,6 +238,27 @@ def test_other_input_errors():
         wrenchkit.Scene(two_fingers(1, 1), limits={"max_contacts": 1})
 
 
+def test_the_scene_budget_and_its_limits_keys():
+    # issue 21: 10 numbers of 3 digits ("1/2" counts 2, "101" 3) in two contacts; the budget names its option.
+    s = {"contacts": [{"at": [0, "101"], "normal": [1, 0], "mu": "1/2"}, {"at": [1, "101"], "normal": [-1, 0], "mu": "1/2"}]}
+    with pytest.raises(wrenchkit.InputError, match=r"digits in all, more than the budget of 5 \(--max-total-digits\)"):
+        wrenchkit.Scene(s, limits={"max_total_digits": 5})
+    with pytest.raises(wrenchkit.InputError, match=r"3 digits and it has 2 contacts .* \(--max-digits-times-contacts\)"):
+        wrenchkit.Scene(s, limits={"max_digits_times_contacts": 5})
+    # A scene read with raised limits keeps them for its questions and for the checker of its certificates
+    # (mu = 10^12000 is beyond the default digit and exponent limits: the checker with the defaults would
+    # refuse the scene's canonical text).
+    big = {"contacts": [{"at": [0, "1/2"], "normal": [1, 0], "mu": "1e12000"}, {"at": [1, "1/2"], "normal": [-1, 0], "mu": "1e12000"}]}
+    raised = {"max_digits": 20000, "max_exponent": 20000}
+    with pytest.raises(wrenchkit.InputError, match="--max-digits-times-contacts"):
+        wrenchkit.Scene(big, limits=dict(raised, max_digits_times_contacts=20000))
+    scene = wrenchkit.Scene(big, limits=raised)
+    assert wrenchkit.closure(scene, mode="exact")["force_closure"] is True
+    lines = list(wrenchkit.batch("closure", [big], verdict_only=True, max_digits=20000, max_exponent=20000,
+                                 max_digits_times_contacts=20000))
+    assert '"exit_code": 2' in lines[0] and "--max-digits-times-contacts" in lines[0]
+
+
 # ---- one pipeline: every question takes the mode, parsed once, and answers as the CLI does --------------
 
 def test_an_unknown_mode_is_a_value_error_everywhere():

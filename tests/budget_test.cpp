@@ -1,0 +1,251 @@
+// [BUDGET] The scene-wide budget (docs/scene-format.md "Limits"): what it measures, its messages, every
+// reader and the independent checker accepting and refusing alike at its boundary, and no golden, corpus,
+// stress-family or fuzz-corpus scene refused by the defaults.
+#include <gtest/gtest.h>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <new>
+#include <cstdint>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "exact/io/input_error.h"
+#include "exact/io/scene.h"
+#include "exact/io/scene_budget.h"
+#include "exact/pipeline/pipeline.h"
+#include "fuzz/scene_checks.h"
+#include "proofs/checker/checker.h"
+#include "testing/stress_families.h"
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+
+std::string error_of(const std::string& text, const Input_limits& limits = {}) {
+  try {
+    read_scene(text, limits, "s.json");
+  } catch (const Input_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// n point contacts whose every number is `number` (a JSON value as written).
+std::string contacts_scene(std::size_t n, const std::string& number, const std::string& extra = "") {
+  std::string s = R"({"wrenchkit": 1, )" + extra + R"("contacts": [)";
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i) s += ", ";
+    s += R"({"at": [)" + number + ", " + number + R"(], "normal": [)" + number + ", " + number + R"(], "mu": )" + number +
+         "}";
+  }
+  return s + "]}";
+}
+
+TEST(Budget, MeasuresEveryNumberAndEntry) {
+  // Digits as the digit limit counts them: the larger of the text's digits and the value's written out.
+  std::size_t d = 0;
+  ASSERT_TRUE(number_digits("1e9999", true, Input_limits{}, d));
+  EXPECT_EQ(d, 10000u);
+  ASSERT_TRUE(number_digits("0.5", true, Input_limits{}, d));
+  EXPECT_EQ(d, 3u);  // 5/10: 1 + 1 + 1
+  ASSERT_TRUE(number_digits("-12/345", false, Input_limits{}, d));
+  EXPECT_EQ(d, 5u);
+  ASSERT_TRUE(number_digits("0.000", false, Input_limits{}, d));
+  EXPECT_EQ(d, 4u);  // zero: its text's digits
+  EXPECT_FALSE(number_digits("1/0", false, Input_limits{}, d));
+  EXPECT_FALSE(number_digits("1e10000", false, Input_limits{}, d));
+  EXPECT_FALSE(number_digits("abc", false, Input_limits{}, d));
+
+  const Budget_tally m = measure_scene(R"({"wrenchkit": 1, "name": "1e9999",
+      "body": {"outline": [[0, "1/3"], [1, 2]], "com": [0.5, 0]},
+      "contacts": [{"at": [1, 2], "normal": [0, 1], "mu": "1e3", "name": "22"}, {"wrench": [1, 0, 10]}, 7],
+      "load": {"force": [0, -1], "at": [0, 0]},
+      "support": {"mu": 1, "weight": 2, "pressure_center": [0, 0], "points": [{"at": [1, 0]}, {"at": [-1, 0]}]},
+      "unknown": [1e9999, 5]})",
+                                       Input_limits{});
+  // wrenchkit 1; outline 1+2+1+1; com 3+1; contact 1+1+1+1+4, wrench 1+1+2; load 1+1+1+1 ("-1" has 1 digit);
+  // support 1+1+1+1, points 1+1+1+1: names and unknown keys do not count.
+  EXPECT_EQ(m.total, 1u + 5 + 4 + 8 + 4 + 4 + 8);
+  EXPECT_EQ(m.longest, 4u);
+  EXPECT_EQ(m.entries, 5u);  // 3 contacts (the 7 too: an entry, invalid) + 2 support points
+  EXPECT_EQ(m.digits_times_contacts(), 20u);
+  // Text that is not JSON: the measures of what was read before it.
+  EXPECT_EQ(measure_scene(R"({"wrenchkit": 1, "contacts": [{"at": [1e99, 1], )", Input_limits{}).total, 1u + 100 + 1);
+  EXPECT_EQ(measure_scene("", Input_limits{}).total, 0u);
+  EXPECT_EQ(measure_scene("[1, 2", Input_limits{}).total, 0u);
+}
+
+TEST(Budget, OverBudgetIsBadInputThatNamesTheBudgetTheMeasureAndTheOption) {
+  const std::string hostile = contacts_scene(3000, "\"1e9999\"");  // 15 000 numbers of 10 000 digits
+  EXPECT_EQ(error_of(hostile),
+            "scene: its numbers have 150000001 digits in all, more than the budget of 20000000 (--max-total-digits)");
+  Input_limits raised;
+  raised.max_total_digits = 200000000;
+  EXPECT_EQ(error_of(hostile, raised),
+            "scene: its longest number has 10000 digits and it has 3000 contacts and support points, 30000000 digits "
+            "times contacts, more than the budget of 10000000 (--max-digits-times-contacts)");
+  EXPECT_EQ(error_of(contacts_scene(30, "\"1e9999\"")), "");  // 1 500 001 digits, 10 000 x 30: within
+  // Outline points are limited like contacts (and count in the budget).
+  Input_limits few;
+  few.max_contacts = 2;
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "body": {"outline": [[0,0],[1,0],[1,1]]}})", few),
+            "body.outline: has 3 points, more than the limit 2 (--max-contacts)");
+  // The budget comes before the schema (nothing is built for a scene over budget) and after nothing else; an
+  // absent mu counts as its "0".
+  Input_limits tiny;
+  tiny.max_total_digits = 3;
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "extra": 1, "contacts": [{"at": [10, 10], "normal": [0, 1]}]})", tiny),
+            "scene: its numbers have 8 digits in all, more than the budget of 3 (--max-total-digits)");
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contacts": [{"at": [10, 10], "normal": [0, 1]}]} x)", tiny),
+            "scene: its numbers have 8 digits in all, more than the budget of 3 (--max-total-digits)");
+}
+
+// Every reader (tree and streaming, eager and lazy, fresh and reused) and the checker accept and refuse
+// alike at the boundary of each budget, on hand-made scenes of every shape and on random ones.
+TEST(Budget, ReadersAndCheckerAgreeAtTheBoundary) {
+  const std::vector<std::string> texts = {
+      R"({"wrenchkit": 1})",
+      contacts_scene(4, "\"1e40\""),
+      contacts_scene(2, "\"123456789/987654321\""),
+      R"({"contacts": [{"mu": 0.5, "normal": [1, 0], "at": [0.25, "1/3"]}], "wrenchkit": "1/1", "name": "n"})",
+      R"({"wrenchkit": 1, "body": {"outline": [[0,0],["1e30",0],[1,1]], "com": ["1/2", 0.5]}, "load": {"gravity": 2}})",
+      R"({"load": {"gravity": "1e20"}, "body": {"com": [0, 0]}, "wrenchkit": 1, "contacts": [{"wrench": [1, 0, 0]}]})",
+      R"({"wrenchkit": 1, "support": {"points": [{"at": [0, 0], "force": 1, "mu": 0.5}, {"force": 0, "at": [1e25, 0], "mu": 1}]}})",
+      R"({"wrenchkit": 1, "support": {"mu": 1, "weight": "7/2", "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}})",
+      R"({"wrenchkit": 1, "load": {"force": [0, -1], "at": [1e12, 2]}, "support": {"mu": 0.5, "points": [{"at": [0, -1], "force": "1/2"}]}})",
+      R"({"w\u0072enchkit": 1, "contacts": [{"\u0061t": [0, "1\u0065\u0039"], "normal": [0, 1]}]})",
+  };
+  Scene eager, lazy;
+  for (const std::string& t : texts) {
+    ASSERT_EQ(error_of(t), "") << t;
+    EXPECT_EQ(budget_boundary_broken(t, Input_limits{}, eager, lazy), "") << t;
+  }
+  // Random scenes: contacts with numbers of random length (fixed seed; WRENCHKIT_SEED overrides).
+  const std::uint64_t seed = test::seed(20261221);
+  std::mt19937_64 rng(seed);
+  for (int k = 0; k < 200; ++k) {
+    std::vector<test::Contact_spec> cs;
+    const int n = static_cast<int>(rng() % 6);
+    auto number = [&] {
+      const int len = 1 + static_cast<int>(rng() % 30);
+      std::string s(static_cast<std::size_t>(len), '0');
+      for (char& c : s) c = static_cast<char>('1' + rng() % 9);
+      return rng() % 2 ? s : s + "e" + std::to_string(rng() % 40);
+    };
+    for (int i = 0; i < n; ++i) cs.push_back({number(), number(), number(), number(), rng() % 2 ? number() : ""});
+    const std::string t = test::scene_json(cs);
+    const std::string d = budget_boundary_broken(t, Input_limits{}, eager, lazy);
+    if (!d.empty()) {
+      ADD_FAILURE() << "seed " << seed << ", case " << k << ": " << d << "\n" << t << "\ndumped to "
+                    << test::dump_failure(t, "budget_boundary");
+      break;
+    }
+  }
+}
+
+// The defaults refuse none of the scenes the project knows, with a margin of 4 on each budget: the goldens,
+// the committed fuzz corpora, every stress family (the reference corpus's families and the report's) at
+// every ε of the stress report with several seeds.
+TEST(Budget, NoGoldenCorpusStressOrFuzzSceneIsRefusedByTheDefaults) {
+  const Input_limits defaults;
+  Input_limits unlimited;  // the scene is valid, budgets aside
+  unlimited.max_total_digits = unlimited.max_digits_times_contacts = static_cast<std::size_t>(-1);
+  Budget_tally largest_total, largest_product;
+  std::size_t scenes = 0;
+  auto check = [&](const std::string& text, const std::string& where) {
+    try {
+      read_scene(text, unlimited);
+    } catch (const Input_error&) {
+      return;  // not a scene (fuzz inputs): nothing to keep
+    }
+    ++scenes;
+    const Budget_tally m = measure_scene(text, defaults);
+    if (m.total > largest_total.total) largest_total = m;
+    if (m.digits_times_contacts() > largest_product.digits_times_contacts()) largest_product = m;
+    EXPECT_EQ(error_of(text), "") << where;
+    EXPECT_LE(4 * m.total, defaults.max_total_digits) << where;
+    EXPECT_LE(4 * m.digits_times_contacts(), defaults.max_digits_times_contacts) << where;
+  };
+  namespace fs = std::filesystem;
+  const std::string root = test::source_dir();
+  for (const auto& e : fs::recursive_directory_iterator(root + "/tests/golden")) {
+    const std::string p = e.path().string();
+    if (e.is_regular_file() && p.size() > 11 && p.compare(p.size() - 11, 11, ".scene.json") == 0)
+      check(test::read_text(p), p);
+  }
+  for (const char* dir : {"scene", "checker", "structured"})
+    for (const auto& e : fs::directory_iterator(root + "/fuzz/corpus/" + dir)) {
+      std::string t = test::read_text(e.path().string());
+      if (std::string(dir) == "checker") t = t.substr(0, t.find('\0'));
+      check(t, e.path().string());
+    }
+  const double epsilons[] = {1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-13, 1e-14, 1e-15, 1e-16, 1e-20, 1e-30, 1e-40};
+  for (const auto* list : {&stress::families(), &stress::report_only_families()})
+    for (const stress::Family& f : *list)
+      for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        if (!f.uses_epsilon) {
+          for (std::uint64_t s = 0; s < 30; ++s) check(stress::make_scene(f.name, 0, seed * 1000 + s).text, f.name);
+          continue;
+        }
+        for (const double eps : epsilons)
+          check(stress::make_scene(f.name, eps, seed).text, std::string(f.name) + " " + std::to_string(eps));
+      }
+  EXPECT_GT(scenes, 2500u);
+  std::cout << "budget: " << scenes << " scenes; the largest total " << largest_total.total << " digits ("
+            << largest_total.entries << " contacts), the largest digits x contacts "
+            << largest_product.digits_times_contacts() << " (" << largest_product.longest << " x "
+            << largest_product.entries << ")\n";
+}
+
+// Within every limit, a balanced scene of six contacts of 10 000-digit fractions has equilibrium weights of
+// about 150 000 characters; the checker's fixed limit of 100 000 rejected the engine's own certificate (exit 4,
+// "always a bug"). Its limit now follows the scene's longest number (certificate-format.md §2).
+TEST(Budget, CertificatesOfScenesWithinTheLimitsAreWithinTheCheckersLimits) {
+  std::mt19937_64 rng(20261226);
+  auto digits = [&](std::size_t n) {
+    std::string s(n, '0');
+    for (char& c : s) c = static_cast<char>('0' + rng() % 10);
+    s[0] = static_cast<char>('1' + rng() % 9);
+    return s;
+  };
+  auto fraction = [&](bool sign) { return std::string("\"") + (sign && rng() % 2 ? "-" : "") + digits(4999) + "/" + digits(4999) + "\""; };
+  std::string text = R"({"wrenchkit": 1, "load": {"wrench": [1, 2, 3]}, "contacts": [)";
+  for (int i = 0; i < 6; ++i)
+    text += std::string(i ? ", " : "") + R"({"at": [)" + fraction(true) + ", " + fraction(true) + R"(], "normal": [)" +
+            fraction(true) + ", " + fraction(true) + R"(], "mu": )" + fraction(false) + "}";
+  text += "]}";
+  Scene scratch;
+  const Equilibrium_item item = answer_equilibrium(text, "scene", Request{}, scratch);
+  ASSERT_EQ(item.status, Status::answered) << item.message.substr(0, 300);
+  EXPECT_TRUE(item.answer.balanced);
+  EXPECT_GT(item.certificate.size(), 200000u);  // weights beyond the old limit of 100 000 characters
+}
+
+// GMP's allocation failure is std::bad_alloc once use_throwing_gmp_allocation() is in place (GMP's own
+// functions abort: the child would die of SIGABRT). In a child process under a 256 MiB address-space limit,
+// 10^(2·10^9) needs 830 MB.
+[[noreturn]] void allocate_beyond_the_address_space() {
+  rlimit r;
+  r.rlim_cur = r.rlim_max = rlim_t(256) << 20;
+  setrlimit(RLIMIT_AS, &r);
+  use_throwing_gmp_allocation();
+  try {
+    Integer x;
+    mpz_ui_pow_ui(x.get_mpz_t(), 10, 2000000000ul);
+  } catch (const std::bad_alloc&) {
+    std::_Exit(70);
+  }
+  std::_Exit(0);
+}
+
+TEST(OutOfMemory, GmpAllocationFailureThrowsInsteadOfAborting) {
+  EXPECT_EXIT(allocate_beyond_the_address_space(), ::testing::ExitedWithCode(70), "");
+}
+
+}  // namespace
+}  // namespace wrenchkit
