@@ -420,6 +420,33 @@ std::vector<Command> make_table() {
        nullptr,
        prepare_sliding_json});
   t.push_back(
+      {"hold",
+       "fixtures on a support: can the contacts together with the support's friction hold the body against the "
+       "scene's load? Holds, does not (with the motion), or depends, with a certificate",
+       "[OPTIONS] SCENE.json",
+       "A body on a horizontal support (\"support\": its points, their normal forces and friction) is touched\n"
+       "by the scene's contacts (with their friction) and pushed by the scene's in-plane \"load\" (a force at a\n"
+       "point or a wrench). Does it hold — can contact forces in their friction cones and support friction\n"
+       "forces in their discs balance the load (minus the load in W + LS(f), docs/fixtures.md)? The answer is\n"
+       "\"holds\": true (with the forces), false (with the motion the body takes: a rotation centre or a\n"
+       "translation direction, allowed by every contact and driven past the most the support's friction can\n"
+       "resist), or, when some support forces are not given, \"depends\" (one admissible distribution holds,\n"
+       "another does not) — each with a certificate the independent checker re-verifies first. A load that\n"
+       "friction can just carry (on the boundary) holds; one within the resolution of inscribed 256-gons of\n"
+       "that boundary whose witnesses are irrational is \"undecided\", with the reason.\n"
+       "No support: hold is equilibrium. No contacts: hold is stick/slide, except on the limit surface itself\n"
+       "(stick/slide says a load there slides; hold says friction can just carry it).\n",
+       join({{kHelp, kJson,
+              with_help(kMode,
+                        "hybrid (default): float witnesses checked exactly, then exact LPs on inscribed N-gons; exact: "
+                        "exact arithmetic only; float: the float witnesses alone (exit 3 if they decide nothing)"),
+              with_help(kCertificate, "write the certificate to FILE (checked first)")},
+             kLimits}),
+       {kScene},
+       run_hold,
+       nullptr,
+       prepare_hold_json});
+  t.push_back(
       {"analyze",
        "everything the scene calls for: closure, equilibrium when it has a load, a summary of the limit surface "
        "when it has a support",
