@@ -988,7 +988,7 @@ Certificate read_certificate(Reader& r) {
       c.hold = p == "hold";
     } else if (key == "holds") {
       if (r.peek() == Kind::string) {  // "depends": property "hold" only (checked once the property is known)
-        if (r.string() != "depends") r.fail("expected true, false or (property \"hold\") \"depends\"");
+        if (r.string() != "depends") r.fail("expected true or false (or \"depends\" for property \"hold\")");
         c.depends = true;
       } else {
         if (r.peek() != Kind::boolean) r.fail("expected true or false");
