@@ -43,7 +43,7 @@ void write_hold(Json_writer& w, const Hold_item& r) {
   w.member("decided_by", a.decided_by);
   w.key("load").array().rational(a.load.fx).rational(a.load.fy).rational(a.load.m).end_array();
   w.member("generators", a.generators).member("support", support_kind(a));
-  if (a.sides) w.member("sides", a.sides);
+  if (a.rounds) w.member("lp_rounds", a.rounds);
   if (a.unknown) {
     w.key("extreme_distributions").array();
     for (const auto& f : a.extreme) w.rationals(f);
