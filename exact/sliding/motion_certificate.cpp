@@ -129,16 +129,18 @@ std::optional<Support_witness> smoothed_witness(const Support& s, const std::vec
             h[r][c] += rho[i] * (a[r][0] * (b[0][0] * a[c][0] + b[0][1] * a[c][1]) +
                                  a[r][1] * (b[1][0] * a[c][0] + b[1][1] * a[c][1]));
       }
+      double scale = pnorm;  // the gradient's terms' size: the load's, and the cone's forces (rounding cancels them)
       for (const auto& cj : c) {  // the cone's penalty: gradient max(λ·ĉ, 0) ĉ, Hessian ĉĉᵀ where active
         const double d = l[0] * cj[0] + l[1] * cj[1] + l[2] * cj[2];
         if (!(d > 0)) continue;
         for (std::size_t r = 0; r < 3; ++r) {
           g[r] += d * cj[r];
+          scale += std::fabs(d * cj[r]);
           for (std::size_t cc = 0; cc < 3; ++cc) h[r][cc] += cj[r] * cj[cc];
         }
       }
       const double gn = std::fabs(g[0]) + std::fabs(g[1]) + std::fabs(g[2]);
-      if (gn <= 1e-14 * pnorm) return true;
+      if (gn <= 1e-14 * scale) return true;
       double step[3];
       if (!solve3(h, g, step)) return false;
       double t = 1, f0 = phi(l, sigma), trial[3];
@@ -146,7 +148,7 @@ std::optional<Support_witness> smoothed_witness(const Support& s, const std::vec
         for (int c = 0; c < 3; ++c) trial[c] = l[c] - t * step[c];
         if (phi(trial, sigma) <= f0 || t < 1e-12) break;
       }
-      if (t < 1e-12) return gn <= 1e-9 * pnorm;  // no more progress: accept only a small gradient
+      if (t < 1e-12) return gn <= 1e-9 * scale;  // no more progress: accept only a small gradient
       for (int c = 0; c < 3; ++c) l[c] = trial[c];
       if (!(std::fabs(l[0]) + std::fabs(l[1]) + std::fabs(l[2]) < 1e150)) return false;  // unbounded: outside
     }
