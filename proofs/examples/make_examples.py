@@ -136,8 +136,7 @@ SCENES = {
     # carrying 1/4 with mu = 1/2 (friction discs of radius 1/8), against a frictionless pin at (-1,0) pushing
     # along +x (generator (1,0,0)), under three loads; and the four-legged table with the same pin, every leg
     # force unknown, under three more.
-    "fixture_pin_push": dict(FIXTURE, name="part on four legs and a pin, pushed by (-1, 1/4) at (1,0): held, "
-                             "the right legs' friction just saturated", load={"force": [-1, "1/4"], "at": [1, 0]}),
+    "fixture_pin_push": dict(FIXTURE, name="part on four legs and a pin, pushed by (-1, 1/4) at (1,0): held", load={"force": [-1, "1/4"], "at": [1, 0]}),
     "fixture_pin_lift": dict(FIXTURE, name="part on four legs and a pin, pushed by (0, 1) at (1,0): it turns about "
                              "the pin", load={"force": [0, 1], "at": [1, 0]}),
     "fixture_pin_pull": dict(FIXTURE, name="part on four legs and a pin, pulled by (1/2, 0) at the centre: friction "
