@@ -520,6 +520,25 @@ def gauss_solve(columns, b):
     return [A[r][n] for r in range(n)]
 
 
+def vertices_of_F(pts, given, W, c):
+    """The vertices of F by brute force: every set S of at most three unknown points whose columns (1, x, y) are
+    independent and give a strictly positive solution of the three rows (and the given forces alone when the rest
+    is zero)."""
+    unknown = [i for i, q in enumerate(pts) if q[3] is None]
+    b = [W - sum(given)] + [W * c[k] - sum(f * q[k] for f, q in zip(given, pts)) for k in range(2)]
+    out = []
+    for size in range(0, 4):
+        for S in itertools.combinations(unknown, size):
+            x = [] if size == 0 else gauss_solve([(F(1), pts[i][0], pts[i][1]) for i in S], b)
+            if (size == 0 and any(b)) or x is None or any(v <= 0 for v in x):
+                continue
+            f = list(given)
+            for i, v in zip(S, x):
+                f[i] = v
+            out.append(f)
+    return out
+
+
 def verify_motion(scene, cert):
     """verify() for property "motion": None if valid, else a short reason."""
     sup = scene.get("support")
@@ -606,24 +625,7 @@ def verify_motion(scene, cert):
         if not sticks(f, w["support_forces"]):
             return "stick"
         wit.append(f)
-    unknown = [i for i, q in enumerate(pts) if q[3] is None]
-    b = [W - sum(given)] + [W * c[k] - sum(f * q[k] for f, q in zip(given, pts)) for k in range(2)]
-    for size in range(0, 4):
-        for S in itertools.combinations(unknown, size):
-            if size == 0:
-                if any(b):
-                    continue
-                x = []
-            else:
-                x = gauss_solve([(F(1), pts[i][0], pts[i][1]) for i in S], b)
-                if x is None or any(v <= 0 for v in x):
-                    continue
-            f = list(given)
-            for i, v in zip(S, x):
-                f[i] = v
-            if f not in wit:
-                return "vertex"
-    return None
+    return None if all(f in wit for f in vertices_of_F(pts, given, W, c)) else "vertex"
 
 
 def verify_hold(scene, cert):
@@ -719,19 +721,7 @@ def verify_hold(scene, cert):
         if reason:
             return reason
         wit.append(f)
-    unknown = [i for i, q in enumerate(pts) if q[3] is None]
-    b = [W - sum(given)] + [W * c[k] - sum(f * q[k] for f, q in zip(given, pts)) for k in range(2)]
-    for size in range(0, 4):
-        for S in itertools.combinations(unknown, size):
-            x = [] if size == 0 else gauss_solve([(F(1), pts[i][0], pts[i][1]) for i in S], b)
-            if (size == 0 and any(b)) or x is None or any(v <= 0 for v in x):
-                continue
-            f = list(given)
-            for i, v in zip(S, x):
-                f[i] = v
-            if f not in wit:
-                return "vertex"
-    return None
+    return None if all(f in wit for f in vertices_of_F(pts, given, W, c)) else "vertex"
 
 
 def verify(scene, cert):
