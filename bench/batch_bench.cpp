@@ -17,12 +17,14 @@
 #include <vector>
 
 #include "exact/pipeline/batch.h"
+#include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/labels_answer.h"
 #include "exact/statics/closure.h"
 #include "exact/io/scene.h"
 #include "exact/io/streaming_scene_reader.h"
 #include "float/closure_twin.h"
 #include "proofs/checker/checker.h"
+#include "testing/stress_families.h"
 
 namespace {
 
@@ -91,6 +93,35 @@ void BM_batch_api_verdict_only(benchmark::State& st) {
   st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * lines.size()));
 }
 BENCHMARK(BM_batch_api_verdict_only);
+
+// batch hold's work (issue 16): read + hold with its certificate checked, one thread, per scene: 4 frictional
+// contacts and 10 known support points (testing/stress_families.h fixture_text, loads 0.5–1.5 of Σ μ_i f_i).
+const std::vector<std::string>& fixture_lines() {
+  static const std::vector<std::string> lines = [] {
+    stress::Rng rng(16);
+    std::vector<std::string> out;
+    for (int s = 0; s < 500; ++s) out.push_back(stress::fixture_text(rng, 4, 10, 0.5 + (s % 11) / 10.0));
+    return out;
+  }();
+  return lines;
+}
+
+void BM_batch_hold(benchmark::State& st, Mode mode) {
+  const auto& lines = fixture_lines();
+  Request o;
+  o.mode = mode;
+  std::size_t i = 0, held = 0, undecided = 0;
+  for (auto _ : st) {
+    const Hold_item r = answer_hold(lines[i++ % lines.size()], "line", o);
+    held += r.answer.verdict == Hold_verdict::holds;
+    undecided += r.status != Status::answered || r.answer.verdict == Hold_verdict::undecided;
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations()));
+  st.counters["held"] = benchmark::Counter(double(held) / double(st.iterations()));
+  st.counters["undecided"] = double(undecided);
+}
+BENCHMARK_CAPTURE(BM_batch_hold, hybrid, Mode::hybrid);
+BENCHMARK_CAPTURE(BM_batch_hold, float, Mode::float_only);
 
 // ---- the scene readers alone ----
 

@@ -33,9 +33,11 @@
 
 #include "bench/peers.h"
 #include "exact/statics/closure.h"
+#include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/statics/moment_labels.h"
+#include "testing/stress_families.h"
 #include "testing/twin_agreement.h"
 #include "exact/io/to_float.h"
 #include "float/closure_twin.h"
@@ -446,6 +448,36 @@ void register_sliding() {
       ->Unit(benchmark::kMillisecond);
 }
 
+// hold (issue 16): 4 frictional contacts and 10 known support points (testing/stress_families.h fixture_text,
+// loads 0.5–1.5 of Σ μ_i f_i, about half held), the answer with its certificate checked by the independent checker,
+// per scene. Goal: ≤ 1 ms in hybrid. Counters: the share held and the undecided answers (must stay 0 in hybrid).
+void register_hold() {
+  const auto run = [](Mode mode) {
+    return [mode](benchmark::State& st) {
+      stress::Rng rng(16);
+      std::vector<std::string> texts;
+      for (int s = 0; s < 64; ++s) texts.push_back(stress::fixture_text(rng, 4, 10, 0.5 + (s % 11) / 10.0));
+      Request request;
+      request.mode = mode;
+      std::size_t i = 0, held = 0, undecided = 0;
+      for (auto _ : st) {
+        const Hold_item r = answer_hold(texts[i++ % texts.size()], "bench", request);
+        if (r.status != Status::answered && r.status != Status::undecided) {
+          std::fprintf(stderr, "hold bench: %s\n", r.message.c_str());
+          g_failed = true;
+        }
+        held += r.status == Status::answered && r.answer.verdict == Hold_verdict::holds;
+        undecided += r.status != Status::answered || r.answer.verdict == Hold_verdict::undecided;
+      }
+      st.counters["held"] = double(held) / double(st.iterations());
+      st.counters["undecided"] = double(undecided);
+    };
+  };
+  for (const Mode m : {Mode::hybrid, Mode::float_only, Mode::exact})
+    benchmark::RegisterBenchmark((std::string("hold/4_contacts_10_points/") + mode_name(m)).c_str(), run(m))
+        ->Unit(benchmark::kMicrosecond);
+}
+
 int main(int argc, char** argv) {
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
@@ -460,6 +492,7 @@ int main(int argc, char** argv) {
   register_growth();
   register_limit_surface();
   register_sliding();
+  register_hold();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   if (g_failed) std::fprintf(stderr, "wrenchkit_bench: a certified method was wrong (see above)\n");

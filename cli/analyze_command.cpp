@@ -85,6 +85,7 @@ struct Analysis {
   Closure_item closure;
   std::optional<Equilibrium_item> equilibrium;
   std::optional<Ls_summary> limit_surface;
+  std::optional<Hold_item> hold;  // contacts, a support and an in-plane load: the two together
   std::vector<std::pair<std::string, std::string>> skipped;
   std::optional<std::pair<Vec2, Vec2>> gravity_off;  // body.com, the support's centre of pressure
 };
@@ -109,6 +110,15 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
   } else if (tolerance) {
     a.skipped.push_back({"limit_surface", "--tolerance was given but the scene has no support"});
   }
+  // Equilibrium above is the contacts without the support; the load's motion on the support is the support without
+  // the contacts; hold is both together (docs/fixtures.md).
+  if (!a.scene.contacts.empty() && a.scene.support && a.scene.load) {
+    if (a.scene.load->kind == Load::Kind::gravity)
+      a.skipped.push_back({"hold", "gravity acts across a horizontal support, not in its plane: give the in-plane load "
+                                   "as a force or a wrench for hold"});
+    else
+      a.hold = answered(answer_hold(a.scene, scene_text, request));
+  }
   a.gravity_off = gravity_off_pressure_center(a.scene);
   return a;
 }
@@ -122,6 +132,10 @@ void write_analysis(Json_writer& w, const Options& o, const Analysis& a, const c
     w.end_object();
   }
   if (a.limit_surface) w.key("limit_surface").raw(a.limit_surface->json);
+  if (a.hold) {
+    write_hold(w.key("hold").object(), *a.hold);
+    w.end_object();
+  }
   w.key("skipped").array();
   for (const auto& [what, why] : a.skipped) w.object().member("what", what).member("why", why).end_object();
   w.end_array();
@@ -150,6 +164,10 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
   std::cout << "scene: " << (a.scene.name.empty() ? source : a.scene.name) << "\n" << closure_human(a.closure);
   if (a.equilibrium) std::cout << equilibrium_human(*a.equilibrium);
   if (a.limit_surface) std::cout << a.limit_surface->human;
+  if (a.hold)
+    std::cout << "hold — the contacts and the support's friction together (equilibrium above is the contacts alone, the "
+                 "load on the support the support alone):\n"
+              << hold_human(*a.hold);
   for (const auto& [what, why] : a.skipped) std::cout << "skipped " << what << ": " << why << "\n";
   if (a.gravity_off)
     std::cout << "warning: the weight acts at body.com (" << to_string(a.gravity_off->first.x) << ", "

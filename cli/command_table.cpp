@@ -197,12 +197,13 @@ const Option kDirection{"direction", "dx,dy",
                           if (all_zero(*o.direction)) throw Usage_error(n + ": the zero vector is no direction");
                         }};
 
-const Option kWhat{"what", "labels|dual|reuleaux|limit-surface", "what to draw (required)", [](Options& o, S n, S v) {
+const Option kWhat{"what", "labels|dual|reuleaux|limit-surface|hold", "what to draw (required)", [](Options& o, S n, S v) {
                      if (v == "labels") o.what = Picture::labels;
                      else if (v == "dual") o.what = Picture::dual;
                      else if (v == "reuleaux") o.what = Picture::reuleaux;
                      else if (v == "limit-surface") o.what = Picture::limit_surface;
-                     else bad_value(n, v, "is not one of labels, dual, reuleaux, limit-surface");
+                     else if (v == "hold") o.what = Picture::hold;
+                     else bad_value(n, v, "is not one of labels, dual, reuleaux, limit-surface, hold");
                    }};
 const Option kOutput = file_option<&Options::output>("output,o", "write the SVG to FILE (default: standard output)");
 
@@ -336,8 +337,8 @@ std::vector<Command> make_table() {
        nullptr,
        prepare_reuleaux_json});
   t.push_back(
-      {"render", "an SVG picture: render SCENE.json --what labels|dual|reuleaux|limit-surface -o FILE.svg",
-       "SCENE.json --what labels|dual|reuleaux|limit-surface [-o FILE.svg]",
+      {"render", "an SVG picture: render SCENE.json --what labels|dual|reuleaux|limit-surface|hold -o FILE.svg",
+       "SCENE.json --what labels|dual|reuleaux|limit-surface|hold [-o FILE.svg]",
        "Draws the construction as an SVG picture (standard output without -o): the body, the\n"
        "contacts with their friction cones (or normals), the lines of force, the + / - regions\n"
        "shaded and clipped to a disc whose rim is the circle at infinity (labeled directions drawn\n"
@@ -345,7 +346,11 @@ std::vector<Command> make_table() {
        "floating point. docs/gallery.md shows the textbook cases.\n"
        "\n"
        "With --what limit-surface: the support's inner and outer polygonal limit surfaces (the f_y = 0\n"
-       "slice, the (f_x, m) and (f_x, f_y) projections), --sides N as for limit-surface (default 32).\n",
+       "slice, the (f_x, m) and (f_x, f_y) projections), --sides N as for limit-surface (default 32).\n"
+       "\n"
+       "With --what hold: the contacts, the support points (discs grow with mu*f), the load and, when it does\n"
+       "not hold, the motion of the certificate's twist (its rotation centre and sense, or its direction),\n"
+       "decided as 'wrenchkit hold' (hybrid) decides it.\n",
        join({{kHelp, kWhat, kOutput,
               with_help(kSides, "with --what limit-surface: polygon sides, even, 4..4096 (default 32)")},
              kLimits}),
@@ -424,6 +429,33 @@ std::vector<Command> make_table() {
        run_sliding,
        nullptr,
        prepare_sliding_json});
+  t.push_back(
+      {"hold",
+       "fixtures on a support: can the contacts together with the support's friction hold the body against the "
+       "scene's load? Holds, does not (with the motion), or depends, with a certificate",
+       "[OPTIONS] SCENE.json",
+       "A body on a horizontal support (\"support\": its points, their normal forces and friction) is touched\n"
+       "by the scene's contacts (with their friction) and pushed by the scene's in-plane \"load\" (a force at a\n"
+       "point or a wrench). Does it hold — can contact forces in their friction cones and support friction\n"
+       "forces in their discs balance the load (minus the load in W + LS(f), docs/fixtures.md)? The answer is\n"
+       "\"holds\": true (with the forces), false (with the motion the body takes: a rotation centre or a\n"
+       "translation direction, allowed by every contact and driven past the most the support's friction can\n"
+       "resist), or, when some support forces are not given, \"depends\" (one admissible distribution holds,\n"
+       "another does not) — each with a certificate the independent checker re-verifies first. A load that\n"
+       "friction can just carry (on the boundary) holds; one within the resolution of inscribed 256-gons of\n"
+       "that boundary whose witnesses are irrational is \"undecided\", with the reason.\n"
+       "No support: hold is equilibrium. No contacts: hold is stick/slide, except on the limit surface itself\n"
+       "(stick/slide says a load there slides; hold says friction can just carry it).\n",
+       join({{kHelp, kJson,
+              with_help(kMode,
+                        "hybrid (default): float witnesses checked exactly, then exact LPs on inscribed N-gons; exact: "
+                        "exact arithmetic only; float: the float witnesses alone (exit 3 if they decide nothing)"),
+              with_help(kCertificate, "write the certificate to FILE (checked first)")},
+             kLimits}),
+       {kScene},
+       run_hold,
+       nullptr,
+       prepare_hold_json});
   t.push_back(
       {"analyze",
        "everything the scene calls for: closure, equilibrium when it has a load, a summary of the limit surface "

@@ -16,6 +16,7 @@
 #include "core/mode.h"
 #include "exact/io/json_writer.h"
 #include "exact/pipeline/pipeline.h"
+#include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
@@ -28,7 +29,7 @@ namespace wrenchkit::cli {
 enum Exit { kAnswered = 0, kRejected = 1, kBadInput = 2, kUndecided = 3, kSelfCheck = 4, kInternal = 70 };
 
 // What `render --what` draws.
-enum class Picture { labels, dual, reuleaux, limit_surface };
+enum class Picture { labels, dual, reuleaux, limit_surface, hold };
 
 // The options of one command line, each validated where it is parsed (cli/command_table.cpp: the
 // exact numbers through parse_rational within the scene limits) into its typed field. A command
@@ -189,6 +190,7 @@ Scene_answer prepare_reuleaux_json(const Options& o);
 Scene_answer prepare_analyze_json(const Options& o);
 Scene_answer prepare_limit_surface_json(const Options& o);
 Scene_answer prepare_sliding_json(const Options& o);
+Scene_answer prepare_hold_json(const Options& o);
 
 // closure_command.cpp, equilibrium_command.cpp (analyze uses these pieces): the pipeline's items
 // (exact/pipeline/pipeline.h) written as the members of a JSON answer and as text.
@@ -214,6 +216,11 @@ int run_labels(const Options& o, const std::string& scene_text, const std::strin
 int run_dual(const Options& o, const std::string& scene_text, const std::string& source);
 int run_reuleaux(const Options& o, const std::string& scene_text, const std::string& source);
 int run_render(const Options& o, const std::string& scene_text, const std::string& source);
+
+// hold_command.cpp (analyze uses these pieces): contacts and the support's friction against the load.
+void write_hold(Json_writer& w, const Hold_item& r);
+std::string hold_human(const Hold_item& r);
+int run_hold(const Options& o, const std::string& scene_text, const std::string& source);
 
 // limit_surface_command.cpp, sliding_command.cpp
 int run_limit_surface(const Options& o, const std::string& scene_text, const std::string& source);

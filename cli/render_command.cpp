@@ -152,13 +152,83 @@ void labels_legend(Svg_canvas& c, const Moment_labels& l, const Scene& s, bool f
 
 std::string title_of(const Scene& s, const std::string& source) { return s.name.empty() ? source : s.name; }
 
+const char* kSupport = "#5a5a5a";
+const char* kMotion = "#c0392b";
+
+// --what hold: the contacts, the support (each point a disc of radius ∝ its friction μf, hollow where the force is
+// unknown), the load, and when the load does not hold, the motion of the certificate's twist: its rotation centre
+// (with the sense) or its translation direction.
+std::string render_hold(const Scene& s, const Hold_item& h, const std::string& source) {
+  const Hold_answer& a = h.answer;
+  const std::optional<std::array<Rational, 3>> motion =
+      a.failing && (a.verdict == Hold_verdict::fails || a.verdict == Hold_verdict::depends)
+          ? std::optional<std::array<Rational, 3>>(a.failing->twist)
+          : std::nullopt;
+  Bounds b;
+  add_scene_bounds(b, s);
+  if (s.support)
+    for (const Support_point& p : s.support->points) b.add(to_p2(p.at));
+  if (motion && (*motion)[2] != 0)
+    b.add({Rational(-(*motion)[1] / (*motion)[2]).get_d(), Rational((*motion)[0] / (*motion)[2]).get_d()});
+  const std::string verdict = a.verdict == Hold_verdict::holds   ? "holds"
+                              : a.verdict == Hold_verdict::fails ? "does not hold"
+                              : a.verdict == Hold_verdict::depends ? "depends on the distribution"
+                                                                   : "undecided";
+  Svg_canvas c = b.canvas(title_of(s, source), "hold: the contacts and the support's friction against the load");
+  const std::vector<Generator> gens = generators(s, Reading::friction);
+  draw_scene(c, s, gens, false);
+  if (s.support) {
+    Rational most;
+    for (const Support_point& p : s.support->points) {
+      const Rational mu = p.mu ? *p.mu : (s.support->mu ? *s.support->mu : Rational(0));
+      if (p.force && mu * *p.force > most) most = mu * *p.force;
+    }
+    for (std::size_t i = 0; i < s.support->points.size(); ++i) {
+      const Support_point& p = s.support->points[i];
+      const Rational mu = p.mu ? *p.mu : (s.support->mu ? *s.support->mu : Rational(0));
+      const double r = p.force && most > 0 ? 4 + 8 * std::sqrt(Rational(mu * *p.force / most).get_d()) : 6;
+      c.dot(to_p2(p.at), r, p.force ? "fill=\"" + std::string(kSupport) + "\" fill-opacity=\"0.5\" stroke=\"#222\""
+                                    : "fill=\"none\" stroke=\"" + std::string(kSupport) + "\" stroke-width=\"2\"");
+    }
+  }
+  if (motion) {
+    const std::array<Rational, 3>& t = *motion;
+    if (t[2] != 0) {
+      const P2 ctr{Rational(-t[1] / t[2]).get_d(), Rational(t[0] / t[2]).get_d()};
+      c.dot(ctr, 7, "fill=\"white\" stroke=\"" + std::string(kMotion) + "\" stroke-width=\"3\"");
+      c.text(ctr, t[2] > 0 ? "\u21ba rotation centre" : "\u21bb rotation centre", "fill=\"" + std::string(kMotion) + "\"");
+    } else {
+      const P2 d = unit({t[0].get_d(), t[1].get_d()});
+      const P2 from = c.centre();
+      const double L = 0.3 * c.world_radius();
+      c.arrow(from, {from.x + L * d.x, from.y + L * d.y}, kMotion, 4);
+      c.text({from.x + L * d.x, from.y + L * d.y}, "translation", "fill=\"" + std::string(kMotion) + "\"");
+    }
+  }
+  c.legend(swatch(kCone, 0.55), "contacts: friction cones; arrows: contact normals");
+  if (s.support) c.legend(swatch(kSupport, 0.5), "support points: discs grow with mu*f (hollow: force unknown)");
+  if (s.load) c.legend(swatch(kLoad, 1), "load");
+  if (motion) c.legend(swatch(kMotion, 1), "the motion of the certificate's twist (" + motion_words(*motion) + ")");
+  c.caption("hold: " + verdict + " (decided by " + a.decided_by + ")");
+  if (a.verdict == Hold_verdict::depends)
+    c.caption("holds with f = " + distribution_text(a.holding->distribution) + "; the motion drawn is the one with f = " +
+              distribution_text(a.failing->distribution));
+  return c.finish();
+}
+
 }  // namespace
 
 int run_render(const Options& o, const std::string& text, const std::string& source) {
-  if (!o.what) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface");
+  if (!o.what) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface|hold");
   const Picture what = *o.what;
   if (o.sides && what != Picture::limit_surface) throw Usage_error("--sides goes with --what limit-surface");
   const Scene s = read_scene(text, o.limits, source);
+  if (what == Picture::hold) {
+    const std::string svg = render_hold(s, answered(answer_hold(text, source, request_of(o))), source);
+    if (!o.output.empty()) write_file(o.output, svg);
+    else std::cout << svg;
+    return kAnswered;
+  }
   if (what == Picture::limit_surface) {
     const std::string svg = render_limit_surface_svg(s, o.sides.value_or(32));
     if (!o.output.empty()) write_file(o.output, svg);

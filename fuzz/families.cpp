@@ -20,6 +20,7 @@ const char* question_name(Question q) {
     case Question::all: return "all";
     case Question::stick_slide: return "stick_slide";
     case Question::stick_slide_over: return "stick_slide_over";
+    case Question::hold: return "hold";
   }
   return "?";
 }

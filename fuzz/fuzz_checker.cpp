@@ -17,6 +17,7 @@
 #include "exact/statics/equilibrium.h"
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
+#include "exact/fixture/hold.h"
 #include "exact/io/scene.h"
 #include "exact/numbers/rational.h"
 #include "exact/sliding/limit_surface.h"
@@ -103,6 +104,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (a.motion != wrenchkit::fl::Motion_twin::undecided &&
         (a.motion == wrenchkit::fl::Motion_twin::slides) != (claim == "slides")) {
       std::cerr << "checker accepted \"" << claim << "\"; the certified float search decides the opposite\n";
+      std::abort();
+    }
+    return 0;
+  }
+  if (property == "\"hold\"") {  // the engine's certified answer, when it decides, must be the claim
+    if (!scene.load) {
+      std::cerr << "checker accepted a hold claim on a scene without load\n";
+      std::abort();
+    }
+    if (scene.support && scene.support->points.size() > 12) return 0;
+    const wrenchkit::Hold_answer a = wrenchkit::decide_hold(scene, wrenchkit::Mode::hybrid);
+    if (a.verdict == wrenchkit::Hold_verdict::undecided) return 0;
+    const std::string_view claim = value_of(cert, "holds");
+    const std::string engine = a.verdict == wrenchkit::Hold_verdict::depends ? "\"depends\"" : wrenchkit::hold_word(a.verdict);
+    if (claim != engine) {
+      std::cerr << "checker accepted hold " << claim << "; the engine certifies " << engine << "\n";
       std::abort();
     }
     return 0;

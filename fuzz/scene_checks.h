@@ -9,7 +9,8 @@
 //   * closure: hybrid (always decided) and a decided float twin agree with exact;
 //   * labels and the force dual agree with closure, the labels' load reading with equilibrium;
 //   * every certificate (closure exact/hybrid, equilibrium in every mode) is accepted by the
-//     independent checker, and float/hybrid equilibrium agrees with exact;
+//     independent checker, and float/hybrid equilibrium agrees with exact; hold's float and hybrid answers agree
+//     and their certificates are accepted (small fixtures);
 //   * hybrid labels are the exact labels; the labels and force-dual twins agree with them within their
 //     stated bounds (testing/twin_agreement.h);
 //   * with a small support: the float twin's true h lies in the exact polygonal bracket, and hybrid and
@@ -27,6 +28,7 @@
 
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
+#include "exact/fixture/hold.h"
 #include "exact/statics/force_dual.h"
 #include "exact/io/input_error.h"
 #include "exact/io/scene.h"
@@ -341,6 +343,21 @@ inline bool check_scene_text(std::string_view text) {
         std::abort();
       }
       if (e.decided) certs.push_back(wrenchkit::certificate_json(e.certificate));
+    }
+  }
+  // hold (exact/fixture/hold.h) on small fixtures: float never contradicts hybrid, every certificate is checked.
+  if (scene.load && (!scene.support || scene.support->points.size() <= 12) && scene.contacts.size() <= 12) {
+    wrenchkit::Hold_verdict verdict[2];
+    int k = 0;
+    for (auto m : {wrenchkit::Mode::hybrid, wrenchkit::Mode::float_only}) {
+      const wrenchkit::Hold_answer a = wrenchkit::decide_hold(scene, m);
+      verdict[k++] = a.verdict;
+      if (a.verdict != wrenchkit::Hold_verdict::undecided) certs.push_back(wrenchkit::hold_certificate(a));
+    }
+    if (verdict[0] != wrenchkit::Hold_verdict::undecided && verdict[1] != wrenchkit::Hold_verdict::undecided &&
+        verdict[0] != verdict[1]) {
+      std::cerr << "hold: float contradicts hybrid\n" << printed;
+      std::abort();
     }
   }
   for (const std::string& cert : certs) {

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/io/to_float.h"
@@ -46,12 +47,15 @@ const std::vector<double> kEpsilons = {1e-2,  1e-4,  1e-6,  1e-8,  1e-10, 1e-12,
 constexpr int kSides = 16;  // polygonal bounds of the exact stick/slide route (1/λ − 1 ≈ 2 %)
 
 // What a row measures: the family's verdict (closure / equilibrium), its moment labels, or stick/slide.
-enum class Measure { verdict, labels, motion, motion_over };
+enum class Measure { verdict, labels, motion, motion_over, hold };
 const char* check_name(Measure c) {
   return c == Measure::verdict ? "verdict" : c == Measure::labels ? "labels" : c == Measure::motion ? "stick/slide"
-                                                                                               : "stick/slide over F";
+                                           : c == Measure::motion_over ? "stick/slide over F" : "hold";
 }
-bool is_motion(Question q) { return q == Question::stick_slide || q == Question::stick_slide_over; }
+// The questions without moment labels (a support's, or the support's and the contacts' together).
+bool is_motion(Question q) {
+  return q == Question::stick_slide || q == Question::stick_slide_over || q == Question::hold;
+}
 
 struct Row {
   std::string family;
@@ -93,6 +97,7 @@ long cases_for(const Family& f, long cases) {
   if (n == "many_contacts") return std::max(1L, cases / 25);
   if (n == "collinear_support") return std::max(1L, cases / 20);
   if (n == "unknown_support") return std::max(1L, cases / 20);
+  if (n == "fixture_pin") return std::max(1L, cases / 10);
   return cases;
 }
 
@@ -254,6 +259,49 @@ void run_motion_over_case(const families::Case& k, std::uint64_t seed, long inde
   if (wrong(twin, hybrid, why_twin)) ++row.twin_wrong, report_wrong("over F twin", k, seed, index, why_twin);
   if (wrong(hybrid, exact, why_hybrid)) ++row.hybrid_wrong, report_wrong("over F hybrid", k, seed, index, why_hybrid);
   if (wrong(exact, hybrid, why_exact)) ++row.exact_wrong, report_wrong("over F exact", k, seed, index, why_exact);
+}
+
+// hold (fixture_pin): exact, twin (--mode float) and hybrid through the pipeline (every certificate checked);
+// naive: the push's magnitude against μW in doubles read from the text (the closed form, guessed). The truth is
+// known by construction: holds iff not `above`.
+void run_hold_case(const families::Case& k, std::uint64_t seed, long index, Row& row) {
+  const Scene scene = read_scene(k.text, Input_limits{});
+  const auto answer_in = [&](Mode mode, std::string& why) {
+    Request request;
+    request.mode = mode;
+    const Hold_item item = answer_hold(scene, k.text, request);
+    if (item.status == Status::answered) return item.answer.verdict;
+    if (item.status != Status::undecided) why = item.message;
+    return Hold_verdict::undecided;
+  };
+  std::string why_exact, why_twin, why_hybrid;
+  Hold_verdict exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });
+  Hold_verdict twin = timed(row.t_twin, [&] { return answer_in(Mode::float_only, why_twin); });
+  Hold_verdict hybrid = timed(row.t_hybrid, [&] { return answer_in(Mode::hybrid, why_hybrid); });
+  const bool naive_holds = timed(row.t_naive, [&] {
+    double mw = 0, mu = 0;
+    const Support& s = *scene.support;
+    mu = Rational(*s.mu).get_d();
+    for (const Support_point& p : s.points) mw += mu * Rational(*p.force).get_d();
+    const double fx = Rational(scene.load->force.x).get_d(), fy = Rational(scene.load->force.y).get_d();
+    return std::sqrt(fx * fx + fy * fy) <= mw;
+  });
+  const auto flip = [](Hold_verdict v) { return v == Hold_verdict::holds ? Hold_verdict::fails : Hold_verdict::holds; };
+  if (twin != Hold_verdict::undecided && fault("twin")) twin = flip(twin);
+  if (hybrid != Hold_verdict::undecided && fault("hybrid")) hybrid = flip(hybrid);
+  if (exact != Hold_verdict::undecided && fault("exact")) exact = flip(exact);
+  const Hold_verdict truth = k.above ? Hold_verdict::fails : Hold_verdict::holds;
+  const auto wrong = [&](Hold_verdict v, const std::string& why) {
+    return !why.empty() || (v != Hold_verdict::undecided && v != truth);
+  };
+  ++row.cases;
+  row.naive_wrong += naive_holds != (truth == Hold_verdict::holds);
+  row.twin_undecided += twin == Hold_verdict::undecided;
+  row.hybrid_undecided += hybrid == Hold_verdict::undecided;
+  row.exact_undecided += exact == Hold_verdict::undecided;
+  if (wrong(twin, why_twin)) ++row.twin_wrong, report_wrong("hold twin", k, seed, index, why_twin);
+  if (wrong(hybrid, why_hybrid)) ++row.hybrid_wrong, report_wrong("hold hybrid", k, seed, index, why_hybrid);
+  if (wrong(exact, why_exact)) ++row.exact_wrong, report_wrong("hold exact", k, seed, index, why_exact);
 }
 
 std::string pct(long n, long d) {
@@ -422,6 +470,7 @@ Summary summarize(const std::vector<Row>& rows, const std::string& family, Measu
 std::vector<Measure> checks_of(const Family& f) {
   if (f.question == Question::stick_slide) return {Measure::motion};
   if (f.question == Question::stick_slide_over) return {Measure::motion_over};
+  if (f.question == Question::hold) return {Measure::hold};
   return {Measure::verdict, Measure::labels};
 }
 
@@ -651,12 +700,14 @@ int main(int argc, char** argv) {
       verdict.eps = labels.eps = eps;
       verdict.check = fam.question == Question::stick_slide        ? Measure::motion
                       : fam.question == Question::stick_slide_over ? Measure::motion_over
+                      : fam.question == Question::hold             ? Measure::hold
                                                                    : Measure::verdict;
       labels.check = Measure::labels;
       for (long c = 0; c < n; ++c) {
         const families::Case k = families::make_case(fam, eps, rng);
         if (fam.question == Question::stick_slide) run_motion_case(k, seed, c, verdict);
         else if (fam.question == Question::stick_slide_over) run_motion_over_case(k, seed, c, verdict);
+        else if (fam.question == Question::hold) run_hold_case(k, seed, c, verdict);
         else run_contact_case(k, seed, c, verdict, labels);
       }
       rows.push_back(verdict);

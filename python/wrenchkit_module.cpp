@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/mode.h"
+#include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/labels_answer.h"
 #include "exact/pipeline/pipeline.h"
 #include "exact/pipeline/reference.h"
@@ -215,6 +216,67 @@ py::dict equilibrium(const Py_scene& s, const std::string& mode) {
   d["mode"] = mode;
   d["decided_by"] = a.decided_by();
   d["certificate"] = equilibrium_certificate(a.certificate);
+  d["certificate_json"] = r.certificate;
+  return d;
+}
+
+// The motion of a failing twist: {"twist", "kind": "rotation", "center", "sense"} or {"twist", "kind":
+// "translation", "direction"} (the velocity's direction), as `wrenchkit hold --json` writes it.
+py::dict motion_dict(const std::array<Rational, 3>& t) {
+  py::dict d;
+  d["twist"] = triple(t[0], t[1], t[2]);
+  if (t[2] != 0) {
+    d["kind"] = "rotation";
+    d["center"] = py::make_tuple(fraction(Rational(-t[1] / t[2])), fraction(Rational(t[0] / t[2])));
+    d["sense"] = t[2] > 0 ? "counter-clockwise" : "clockwise";
+  } else {
+    const std::array<Integer, 2> v = primitive(t[0], t[1]);
+    d["kind"] = "translation";
+    d["direction"] = py::make_tuple(fraction(Rational(v[0])), fraction(Rational(v[1])));
+  }
+  d["text"] = motion_words(t);
+  return d;
+}
+
+py::list distribution_list(const std::vector<Rational>& f) {
+  py::list l;
+  for (const Rational& x : f) l.append(fraction(x));
+  return l;
+}
+
+// [HD-1] Can the contacts and the support's friction hold the body against the load? The same answer as
+// `wrenchkit hold --json`, with Fractions.
+py::dict hold(const Py_scene& s, const std::string& mode) {
+  const Hold_item r = answer_hold(s.scene, s.text, request_of(mode));
+  raise_unless_answered(r.status, r.message);
+  const Hold_answer& a = r.answer;
+  py::dict d;
+  if (a.verdict == Hold_verdict::holds || a.verdict == Hold_verdict::fails) d["holds"] = a.verdict == Hold_verdict::holds;
+  else d["holds"] = hold_word(a.verdict);
+  d["load"] = triple(a.load.fx, a.load.fy, a.load.m);
+  d["generators"] = a.generators;
+  d["support"] = !a.has_support ? "none" : a.unknown ? "unknown" : "known";
+  d["mode"] = mode;
+  d["decided_by"] = a.decided_by;
+  if (a.unknown) {
+    py::list ext, per;
+    for (const auto& f : a.extreme) ext.append(distribution_list(f));
+    for (const Hold_verdict v : a.per_vertex) per.append(hold_word(v));
+    d["extreme_distributions"] = ext;
+    d["per_extreme_distribution"] = per;
+  }
+  if (a.holding) {
+    d["contact_forces"] = combination_list(a.holding->combination);
+    py::list g;
+    for (const Vec2& f : a.holding->forces) g.append(point(f));
+    d["support_forces"] = g;
+    if (a.unknown) d["holding_distribution"] = distribution_list(a.holding->distribution);
+  }
+  if (a.failing && a.verdict != Hold_verdict::holds) {
+    d["motion"] = motion_dict(a.failing->twist);
+    if (a.verdict == Hold_verdict::depends) d["failing_distribution"] = distribution_list(a.failing->distribution);
+  }
+  if (a.verdict == Hold_verdict::undecided) d["undecided_why"] = a.undecided_why;
   d["certificate_json"] = r.certificate;
   return d;
 }
@@ -594,6 +656,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("read", &read_text, py::arg("text"), py::arg("source"), py::arg("limits"));
   m.def("closure", &closure);
   m.def("equilibrium", &equilibrium);
+  m.def("hold", &hold);
   m.def("labels", &labels);
   m.def("dual", &dual);
   m.def("limit_surface", &limit_surface);

@@ -770,8 +770,91 @@ const std::vector<Family>& report_only_families() {
        "twist (the one with the largest power: U's boundary, the smallest, or any): the answers left possible are "
        "known by construction",
        Question::stick_slide_over, true, true},
+      {"fixture_pin",
+       "hold: a frictionless pin pushing through the centre of friction of a symmetric support (2–4 pairs of points, "
+       "exact rational normal), the push μW·(1 ± ε): holds iff below (a force through the centre of friction is in "
+       "the closed limit surface iff it is at most μW)",
+       Question::hold, true, true},
   };
   return f;
+}
+
+// Family "fixture_pin" (hold, issue 16). A support symmetric about its centre of friction c: 2–4 pairs of points
+// c ± d_j with equal forces (integers 1–5) and one μ (1/2, 1, 1/3, 3/4), sometimes a point at c; a frictionless pin
+// at c − s·n̂ with the rational unit normal n̂ = ((1 − t²), 2t)/(1 + t²); the load κ n̂ at c, on the pin's line. The
+// pin's wrench and the load are parallel, so −w_L ∈ W ⊕ LS ⇔ κ n̂ through c ∈ LS, and a force through the centre of
+// friction is in the (closed) limit surface iff κ ≤ μW (the translation load μW n̂ through c is on it, with the
+// rational witness μ f_i n̂ at every point). κ = μW·(1 ± 10^-k): holds iff below (`above`: it does not hold).
+Family_scene fixture_pin(const Family& fam, double eps, Rng& r) {
+  const int k = decimal_exponent(eps);
+  Family_scene out;
+  out.family = fam.name;
+  out.epsilon = eps;
+  out.known = true;
+  out.above = r.coin();
+  static const char* mus[] = {"1/2", "1", "1/3", "3/4"};
+  const int which = r.integer(0, 3);
+  const Rational mu = which == 0 ? Rational(1, 2) : which == 1 ? Rational(1) : which == 2 ? Rational(1, 3) : Rational(3, 4);
+  const Rational cx = short_decimal(r, -2000, 2000, 3), cy = short_decimal(r, -2000, 2000, 3);
+  std::string points;
+  Rational w = 0;
+  const int pairs = r.integer(2, 4);
+  for (int j = 0; j < pairs; ++j) {
+    const Rational dx = short_decimal(r, -1500, 1500, 3), dy = short_decimal(r, -1500, 1500, 3);
+    const int f = r.integer(1, 5);
+    w += 2 * f;
+    for (const int s : {1, -1})
+      points += std::string(points.empty() ? "" : ", ") + "{\"at\": [" + exact_text(cx + s * dx) + ", " +
+                exact_text(cy + s * dy) + "], \"force\": " + std::to_string(f) + "}";
+  }
+  if (r.coin()) {
+    const int f = r.integer(1, 5);
+    w += f;
+    points += ", {\"at\": [" + exact_text(cx) + ", " + exact_text(cy) + "], \"force\": " + std::to_string(f) + "}";
+  }
+  const Rational t = short_decimal(r, -999, 999, 3), d = 1 + t * t;
+  const Rational nx = (1 - t * t) / d, ny = 2 * t / d, s = short_decimal(r, 500, 3000, 3);
+  const Rational tenth(Integer(1), power_of_ten(k));
+  const Rational kappa = mu * w * (out.above ? Rational(1 + tenth) : Rational(1 - tenth));
+  out.text = "{\"wrenchkit\": 1, \"name\": \"fixture_pin\", \"contacts\": [{\"at\": [" + exact_text(cx - s * nx) + ", " +
+             exact_text(cy - s * ny) + "], \"normal\": [" + exact_text(nx) + ", " + exact_text(ny) +
+             "]}], \"support\": {\"mu\": \"" + mus[which] + "\", \"points\": [" + points +
+             "]}, \"load\": {\"force\": [" + exact_text(kappa * nx) + ", " + exact_text(kappa * ny) + "], \"at\": [" +
+             exact_text(cx) + ", " + exact_text(cy) + "]}}";
+  return out;
+}
+
+std::string fixture_text(Rng& r, int contacts, int points, double load) {
+  const auto d3 = [](double v) {  // 3 decimals (printf rounds correctly: the same text everywhere)
+    char b[32];
+    std::snprintf(b, sizeof b, "%.3f", v);
+    return std::string(b);
+  };
+  // A direction on the unit circle by the rational parametrisation (no libm): (1 − t², 2t)/(1 + t²), either sign.
+  const auto direction = [&r](double& x, double& y) {
+    const double t = r.uniform(-1, 1), sign = r.coin() ? 1 : -1;
+    x = sign * (1 - t * t) / (1 + t * t), y = sign * 2 * t / (1 + t * t);
+  };
+  std::string s = "{\"wrenchkit\": 1, \"contacts\": [";
+  for (int c = 0; c < contacts; ++c) {
+    double x = 0, y = 0;
+    direction(x, y);
+    s += std::string(c ? ", " : "") + "{\"at\": [" + d3(1.5 * x) + ", " + d3(1.5 * y) + "], \"normal\": [" +
+         d3(-x + r.uniform(-0.3, 0.3)) + ", " + d3(-y + r.uniform(-0.3, 0.3)) + "], \"mu\": " +
+         d3(r.uniform(0.1, 0.6)) + "}";
+  }
+  s += "], \"support\": {\"points\": [";
+  double rho = 0;
+  for (int i = 0; i < points; ++i) {
+    const std::string f = d3(r.uniform(0.1, 1)), mu = d3(r.uniform(0.2, 0.8));
+    rho += std::strtod(f.c_str(), nullptr) * std::strtod(mu.c_str(), nullptr);
+    s += std::string(i ? ", " : "") + "{\"at\": [" + d3(r.uniform(-1, 1)) + ", " + d3(r.uniform(-1, 1)) +
+         "], \"force\": " + f + ", \"mu\": " + mu + "}";
+  }
+  double x = 0, y = 0;
+  direction(x, y);
+  return s + "]}, \"load\": {\"force\": [" + d3(load * rho * x) + ", " + d3(load * rho * y) + "], \"at\": [" +
+         d3(r.uniform(-1, 1)) + ", " + d3(r.uniform(-1, 1)) + "]}}";
 }
 
 const Family* find_family(std::string_view name) {
@@ -793,6 +876,7 @@ Family_scene make_scene(const Family& family, double epsilon, Rng& rng) {
   const std::string name = family.name;
   if (name == "collinear_support") return collinear_support(family, epsilon, rng);
   if (name == "unknown_support") return unknown_support(family, epsilon, rng);
+  if (name == "fixture_pin") return fixture_pin(family, epsilon, rng);
   if (name == "long_rational" || name == "rational_rotation" || name == "huge_scale" || name == "tiny_scale" ||
       name == "beyond_double" || name == "many_contacts")
     return exact_family(family, epsilon, rng);

@@ -55,7 +55,9 @@ struct Gravity_spec {
 // stick or slide on the support's (true) limit surface (exact/sliding/sliding.h decide_motion)?
 // stick_slide_over: the support's distribution is unknown: does the load stick for every admissible
 // distribution, slide for every one, or does it depend (exact/sliding/unknown_motion.h)?
-enum class Question { force_closure, form_closure, equilibrium, all, stick_slide, stick_slide_over };
+// hold: can the contacts and the support's friction hold the body against the load (exact/fixture/hold.h)? A
+// `known` hold scene holds iff not `above`.
+enum class Question { force_closure, form_closure, equilibrium, all, stick_slide, stick_slide_over, hold };
 
 // stick_slide_over: the answers a scene's construction leaves possible (a bit set).
 enum Motion_answer : unsigned { answer_sticks = 1, answer_slides = 2, answer_depends = 4 };
@@ -81,7 +83,9 @@ const std::vector<Family>& families();
 // them yet — see docs/stability.md), "many_contacts" (10^3–10^4 contacts, too large for the corpus and
 // its O(k³) brute-force test) and "collinear_support" (a stick/slide question, which the corpus format
 // does not carry), "unknown_support" (stick/slide over every admissible distribution: random supports of
-// 4–8 points, the four-legged table and the dinner plate, loads 10^-k from the thresholds).
+// 4–8 points, the four-legged table and the dinner plate, loads 10^-k from the thresholds), "fixture_pin"
+// (hold: a frictionless pin pushing through the centre of friction of a symmetric support, the push
+// μW·(1 ± 10^-k): holds iff below).
 const std::vector<Family>& report_only_families();
 const Family* find_family(std::string_view name);  // either list; nullptr when unknown
 
@@ -129,6 +133,12 @@ Family_scene make_scene(const Family& family, double epsilon, Rng& rng);
 // One scene from a seed: make_scene(family, ε, Rng(seed)). Throws std::invalid_argument for an
 // unknown family.
 Family_scene make_scene(std::string_view family, double epsilon, std::uint64_t seed);
+
+// A generic fixture for hold's benchmarks (not near-degenerate): `points` known support points in [−1, 1]²
+// (3 decimals, forces in [0.1, 1], μ in [0.2, 0.8]), `contacts` frictional contacts on the circle of radius 1.5
+// pushing roughly inward (μ in [0.1, 0.6]), and a force at a random point of the square whose magnitude is `load`
+// times the support's Σ μ_i f_i, in a random direction: about half of the scenes hold at load = 1.
+std::string fixture_text(Rng& rng, int contacts, int points, double load);
 
 // Decimal text with 17 significant digits: read back to the same double by strtod (the engine reads
 // the decimal exactly, which is within half an ulp of 10^-17 relative of the double).

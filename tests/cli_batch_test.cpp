@@ -86,7 +86,7 @@ struct Case {
 
 TEST(CliBatch, EveryCommandAnswersEachLineAsItsSingleCommandDoes) {
   const std::vector<std::string> top = golden("tests/golden"), eq = golden("tests/golden/equilibrium"),
-                                  ls = golden("tests/golden/limit_surface");
+                                  ls = golden("tests/golden/limit_surface"), ex = golden("proofs/examples");
   const auto some = [](const std::vector<std::string>& v, std::size_t n) {
     return std::vector<std::string>(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(std::min(n, v.size())));
   };
@@ -106,6 +106,9 @@ TEST(CliBatch, EveryCommandAnswersEachLineAsItsSingleCommandDoes) {
       {"limit-surface --tolerance 1/10 --list", ls},
       {"sliding --twist 3,4,0", ls},
       {"sliding --sides 16 --twist -1,0,1", ls},
+      {"hold", ex},
+      {"hold --mode float", ex},
+      {"hold --mode exact", some(ex, 12)},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.command);
@@ -165,6 +168,7 @@ TEST(CliBatch, UsageErrorsStopBeforeAnyLine) {
                            "batch reuleaux --center 1", "batch reuleaux --sense cw", "batch sliding --twist 0,0,0",
                            "batch sliding --sides 7", "batch limit-surface --off x.off", "batch limit-surface --sides 3",
                            "batch limit-surface --sides 8 --tolerance 0.1", "batch equilibrium --resultant 1,0,0",
+                           "batch hold --certificate c.json", "batch hold --sides 8",
                            "batch closure --jobs 0", "batch closure --mode fast"}) {
     const Cli_result r = run(args, input);
     EXPECT_EQ(r.code, 2) << args;
@@ -173,7 +177,7 @@ TEST(CliBatch, UsageErrorsStopBeforeAnyLine) {
   }
   const Cli_result help = run("batch --help");
   EXPECT_EQ(help.code, 0);
-  for (const char* c : {"closure", "equilibrium", "labels", "dual", "reuleaux", "limit-surface", "sliding", "analyze"})
+  for (const char* c : {"closure", "equilibrium", "labels", "dual", "reuleaux", "limit-surface", "sliding", "hold", "analyze"})
     EXPECT_NE(help.out.find(c), std::string::npos) << c;
   // An option that cannot apply to one scene (too many candidate normals) is that line's error.
   const std::string dir = test::source_dir() + "/tests/golden/limit_surface/";

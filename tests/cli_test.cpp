@@ -192,7 +192,7 @@ TEST(Cli, EveryCommandOfTheTableHasHelpAndRefusesAnUnknownMode) {
   for (const char* c : {"closure", "check", "render", "batch", "reference", "compare", "demo", "limit-surface"})
     EXPECT_NE(std::find(commands.begin(), commands.end(), c), commands.end()) << c;
   const std::vector<std::string> per_scene = batch_commands_of_help();
-  EXPECT_EQ(per_scene.size(), 8u);
+  EXPECT_EQ(per_scene.size(), 9u);  // hold joined (issue 16)
   std::vector<std::string> lines;  // every command line, batch with each of its commands
   for (const std::string& c : commands) {
     const Cli_result h = run(c + " --help");
@@ -378,6 +378,65 @@ TEST(Cli, EquilibriumAnswersWithACheckedCertificate) {
   EXPECT_EQ(fl2.code, 0) << fl2.err;
   EXPECT_NE(fl2.out.find("\"decided_by\": \"float\""), std::string::npos) << fl2.out;
   EXPECT_EQ(run("equilibrium --help").code, 0);
+}
+
+TEST(Cli, HoldAnswersWithACheckedCertificateAndTheMotion) {
+  const std::string dir = test::source_dir() + "/proofs/examples/";
+  const std::string cert = (scratch() / "hold.json").string();
+  fs::remove(cert);
+  // Held: the pin and the right legs' friction, on their circles.
+  const Cli_result yes = run("hold --json --certificate '" + cert + "' '" + dir + "fixture_pin_push.scene.json'");
+  ASSERT_EQ(yes.code, 0) << yes.err;
+  EXPECT_NE(yes.out.find("\"holds\": true"), std::string::npos) << yes.out;
+  EXPECT_NE(yes.out.find("\"certificate_checked\": true"), std::string::npos) << yes.out;
+  EXPECT_EQ(run("check '" + dir + "fixture_pin_push.scene.json' '" + cert + "'").code, 0);
+  // The same certificate does not hold the lifted part.
+  EXPECT_EQ(run("check '" + dir + "fixture_pin_lift.scene.json' '" + cert + "'").code, 1);
+  // Not held: the motion, as a rotation centre, in text and JSON.
+  const Cli_result no = run("hold '" + dir + "fixture_pin_lift.scene.json'");
+  ASSERT_EQ(no.code, 0) << no.err;
+  EXPECT_NE(no.out.find("holds: no"), std::string::npos) << no.out;
+  EXPECT_NE(no.out.find("rotation about (-1, 0)"), std::string::npos) << no.out;
+  const Cli_result nj = run("hold --json --mode exact '" + dir + "fixture_pin_lift.scene.json'");
+  ASSERT_EQ(nj.code, 0) << nj.err;
+  EXPECT_NE(nj.out.find("\"holds\": false"), std::string::npos) << nj.out;
+  EXPECT_NE(nj.out.find("\"kind\": \"rotation\""), std::string::npos) << nj.out;
+  EXPECT_NE(nj.out.find("\"sense\": \"counter-clockwise\""), std::string::npos) << nj.out;
+  // Every distribution: depends, with both witnesses; float has no LP over F and exits 3.
+  const Cli_result dep = run("hold --json '" + dir + "table_pinned_pushed.scene.json'");
+  ASSERT_EQ(dep.code, 0) << dep.err;
+  EXPECT_NE(dep.out.find("\"holds\": \"depends\""), std::string::npos) << dep.out;
+  EXPECT_NE(dep.out.find("\"witnesses\": {\"holds\": {\"distribution\""), std::string::npos) << dep.out;
+  const Cli_result fl = run("hold --mode float '" + dir + "table_pinned_pushed.scene.json'");
+  EXPECT_EQ(fl.code, 3) << fl.out << fl.err;
+  EXPECT_EQ(fl.out, "");
+  // No load: bad input, nothing written.
+  const std::string none_cert = (scratch() / "none.json").string();
+  fs::remove(none_cert);
+  const Cli_result none = run("hold --certificate '" + none_cert + "' '" + golden("square_crossed_couples") + "'");
+  EXPECT_EQ(none.code, 2);
+  EXPECT_NE(none.err.find("load: the scene has no load (hold needs one)"), std::string::npos) << none.err;
+  EXPECT_FALSE(fs::exists(none_cert));
+  // The picture.
+  const std::string svg = (scratch() / "hold.svg").string();
+  ASSERT_EQ(run("render '" + dir + "fixture_pin_lift.scene.json' --what hold -o '" + svg + "'").code, 0);
+  const std::string picture = test::read_text(svg);
+  EXPECT_NE(picture.find("rotation centre"), std::string::npos);
+  EXPECT_NE(picture.find("hold: does not hold"), std::string::npos);
+  EXPECT_EQ(run("hold --help").code, 0);
+}
+
+TEST(Cli, AnalyzeAnswersHoldWithContactsASupportAndALoad) {
+  const std::string dir = test::source_dir() + "/proofs/examples/";
+  const Cli_result j = run("analyze --json '" + dir + "fixture_pin_lift.scene.json'");
+  ASSERT_EQ(j.code, 0) << j.err;
+  EXPECT_NE(j.out.find("\"equilibrium\": {"), std::string::npos) << j.out;
+  EXPECT_NE(j.out.find("\"hold\": {\"command\": \"hold\""), std::string::npos) << j.out;
+  const Cli_result t = run("analyze '" + dir + "fixture_pin_push.scene.json'");
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_NE(t.out.find("balanced: no"), std::string::npos) << t.out;  // the pin alone cannot
+  EXPECT_NE(t.out.find("the load on the support: slides"), std::string::npos) << t.out;  // the legs alone cannot
+  EXPECT_NE(t.out.find("holds: yes"), std::string::npos) << t.out;  // together they do
 }
 
 TEST(Cli, AnalyzeComputesWhatTheSceneCallsFor) {

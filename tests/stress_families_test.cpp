@@ -4,6 +4,8 @@
 // tool's own failure path (a wrong certified answer ⇒ exit 1) is proven by the CTest stress_report_fault.
 #include <gtest/gtest.h>
 
+#include "exact/pipeline/hold_answer.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -92,11 +94,32 @@ TEST(StressFamilies, CorpusAndReportLists) {
   EXPECT_THROW(stress::make_scene("collinear_support", 0, 1), std::invalid_argument);
 }
 
+// fixture_pin (hold): holds iff below, for every ε, through the pipeline (certificates checked) in hybrid and exact.
+TEST(StressFamilies, FixturePinHoldsIffBelow) {
+  std::set<bool> sides;
+  for (double eps : {1e-2, 1e-13, 1e-40})
+    for (int seed = 1; seed <= 6; ++seed) {
+      const auto s = stress::make_scene("fixture_pin", eps, static_cast<std::uint64_t>(seed));
+      ASSERT_TRUE(s.known);
+      sides.insert(s.above);
+      for (const Mode m : {Mode::hybrid, Mode::exact}) {
+        Request r;
+        r.mode = m;
+        const Hold_item h = answer_hold(s.text, "fixture_pin", r);
+        ASSERT_EQ(h.status, Status::answered) << h.message << "\n" << s.text;
+        EXPECT_EQ(h.answer.verdict, s.above ? Hold_verdict::fails : Hold_verdict::holds)
+            << eps << " " << mode_name(m) << " " << h.answer.undecided_why << "\n" << s.text;
+      }
+    }
+  EXPECT_EQ(sides.size(), 2u);
+}
+
 // The exact families: the answer is the side for EVERY ε, through the dual cone and through the O(k³)
 // brute force (which shares no code with it).
 TEST(StressFamilies, KnownFamiliesLandOnTheirSideForEveryEpsilon) {
   for (const stress::Family& f : every_family()) {
-    if (!f.known || f.question == stress::Question::stick_slide || f.question == stress::Question::stick_slide_over)
+    if (!f.known || f.question == stress::Question::stick_slide || f.question == stress::Question::stick_slide_over ||
+        f.question == stress::Question::hold)
       continue;
     const bool large = is(f, {"many_contacts"});
     std::set<bool> sides;

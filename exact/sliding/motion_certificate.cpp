@@ -30,32 +30,54 @@ std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<R
   return std::nullopt;
 }
 
-namespace {
-
 // The cheap witness first (SL-4). In double: Newton's method on the smoothed dual
-//   φ(λ) = Σ ρ_i H(|v_i(λ)|) − λ·p/σ,   H(t) = t²/2 for t ≤ 1, t − 1/2 beyond (ρ_i = μ_i f_i),
-// whose gradient Σ ρ_i A_i v_i/max(|v_i|, 1) − p/σ vanishes where the forces ρ_i v_i/max(|v_i|, 1), each in its
-// disc, sum to p/σ (A_i g = (g, r_i × g), v_i(λ) = A_iᵀλ). φ has a minimiser when p/σ is inside the limit
-// surface and none when it is outside; σ = 1 − 2^-j for j = 1, 2, … (the first that converges leaves a slack
+//   φ(λ) = Σ ρ_i H(|v_i(λ)|) + Σ_j P(λ·ĉ_j) − λ·p/σ,   H(t) = t²/2 for t ≤ 1, t − 1/2 beyond (ρ_i = μ_i f_i),
+//   P(s) = s²/2 for s > 0, 0 below (the cone's wrenches c_j, scaled to ĉ_j; none for stick/slide),
+// whose gradient Σ ρ_i A_i v_i/max(|v_i|, 1) + Σ_j max(λ·ĉ_j, 0) ĉ_j − p/σ vanishes where the forces
+// ρ_i v_i/max(|v_i|, 1), each in its disc, and the non-negative multiples max(λ·ĉ_j, 0) of the cone's wrenches sum
+// to p/σ (A_i g = (g, r_i × g), v_i(λ) = A_iᵀλ). φ has a minimiser when p/σ is inside the limit surface (plus the
+// cone) and none when it is outside; σ = 1 − 2^-j for j = 1, 2, … (the first that converges leaves a slack
 // ≥ half the load's own). Still points (rotation centres) are handled by the smoothing. Then one exact round:
-// rational weights w_i = σ ρ_i/max(|v_i(λ)|, 1), L solves Σ w_i A_i A_iᵀ L = p exactly, g_i = w_i v_i(L), so
-// Σ A_i g_i = p exactly, and each disc is checked exactly (|g_i|² < ρ_i²). Nothing when no σ verifies (then
-// the LP decides). O(k) per Newton step.
-std::optional<Stick_witness> weighted_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p) {
+// rational weights w_i = σ ρ_i/max(|v_i(λ)|, 1) and cone weights (the doubles, exactly), L solves
+// Σ w_i A_i A_iᵀ L = p − Σ_j λ_j c_j exactly, g_i = w_i v_i(L), so Σ A_i g_i + Σ λ_j c_j = p exactly, and each disc
+// is checked exactly (|g_i|² < ρ_i²). Nothing when no σ verifies (then the LP decides). O(k + cone) per Newton step.
+std::optional<Support_witness> smoothed_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
+                                                const std::vector<Vec3q>& cone, bool probe,
+                                                std::array<double, 3>* escape, bool short_numbers) {
+  // short_numbers: the exact round's weights rounded to 12 + j significant bits for σ = 1 − 2^-j (the slack
+  // 2^-j absorbs the change), and cone weights below 2^-(12+j) of the forces' scale dropped: shorter rationals.
+  const auto rounded = [&](double v, int j) {
+    if (!short_numbers || !(v > 0)) return v;
+    int e = 0;
+    const double m = std::frexp(v, &e);
+    return std::ldexp(std::nearbyint(std::ldexp(m, 12 + j)), e - 12 - j);
+  };
   const std::size_t k = s.points.size();
   std::vector<double> x(k), y(k), rho(k);
   std::vector<Rational> rq(k);
   std::size_t carrying = 0;
+  double rho_sum = 0;
   for (std::size_t i = 0; i < k; ++i) {
     const Support_point& pt = s.points[i];
     rq[i] = (pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0))) * f[i];
     x[i] = pt.at.x.get_d(), y[i] = pt.at.y.get_d(), rho[i] = rq[i].get_d();
     carrying += rq[i] > 0;
+    rho_sum += rho[i];
   }
   if (carrying < 2) return std::nullopt;
   const double pd[3] = {p[0].get_d(), p[1].get_d(), p[2].get_d()};
   for (double v : pd)
     if (!std::isfinite(v)) return std::nullopt;
+  // The cone's wrenches scaled to length Σρ_i (their weights then compare with the forces), with the scale kept.
+  std::vector<std::array<double, 3>> c;
+  std::vector<double> c_scale;
+  for (const Vec3q& w : cone) {
+    const double d[3] = {w[0].get_d(), w[1].get_d(), w[2].get_d()};
+    const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (!(n > 0) || !std::isfinite(n) || !(rho_sum > 0) || !std::isfinite(rho_sum)) return std::nullopt;
+    c_scale.push_back(rho_sum / n);
+    c.push_back({d[0] * c_scale.back(), d[1] * c_scale.back(), d[2] * c_scale.back()});
+  }
   const auto det3 = [](const double m[3][3]) {
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
@@ -77,6 +99,10 @@ std::optional<Stick_witness> weighted_witness(const Support& s, const std::vecto
       if (rho[i] == 0) continue;
       const double t = std::hypot(l[0] - l[2] * y[i], l[1] + l[2] * x[i]);
       v += rho[i] * (t <= 1 ? t * t / 2 : t - 0.5);
+    }
+    for (const auto& cj : c) {
+      const double d = l[0] * cj[0] + l[1] * cj[1] + l[2] * cj[2];
+      if (d > 0) v += d * d / 2;
     }
     return v;
   };
@@ -103,8 +129,18 @@ std::optional<Stick_witness> weighted_witness(const Support& s, const std::vecto
             h[r][c] += rho[i] * (a[r][0] * (b[0][0] * a[c][0] + b[0][1] * a[c][1]) +
                                  a[r][1] * (b[1][0] * a[c][0] + b[1][1] * a[c][1]));
       }
+      double scale = pnorm;  // the gradient's terms' size: the load's, and the cone's forces (rounding cancels them)
+      for (const auto& cj : c) {  // the cone's penalty: gradient max(λ·ĉ, 0) ĉ, Hessian ĉĉᵀ where active
+        const double d = l[0] * cj[0] + l[1] * cj[1] + l[2] * cj[2];
+        if (!(d > 0)) continue;
+        for (std::size_t r = 0; r < 3; ++r) {
+          g[r] += d * cj[r];
+          scale += std::fabs(d * cj[r]);
+          for (std::size_t cc = 0; cc < 3; ++cc) h[r][cc] += cj[r] * cj[cc];
+        }
+      }
       const double gn = std::fabs(g[0]) + std::fabs(g[1]) + std::fabs(g[2]);
-      if (gn <= 1e-14 * pnorm) return true;
+      if (gn <= 1e-14 * scale) return true;
       double step[3];
       if (!solve3(h, g, step)) return false;
       double t = 1, f0 = phi(l, sigma), trial[3];
@@ -112,12 +148,21 @@ std::optional<Stick_witness> weighted_witness(const Support& s, const std::vecto
         for (int c = 0; c < 3; ++c) trial[c] = l[c] - t * step[c];
         if (phi(trial, sigma) <= f0 || t < 1e-12) break;
       }
-      if (t < 1e-12) return gn <= 1e-9 * pnorm;  // no more progress: accept only a small gradient
+      if (t < 1e-12) return gn <= 1e-9 * scale;  // no more progress: accept only a small gradient
       for (int c = 0; c < 3; ++c) l[c] = trial[c];
       if (!(std::fabs(l[0]) + std::fabs(l[1]) + std::fabs(l[2]) < 1e150)) return false;  // unbounded: outside
     }
     return false;
   };
+  // probe: first whether p itself (σ → 1) is inside at all. If not, no σ below can verify; the last iterate λ is
+  // the escape: φ decreases along it without bound, so λ·p > h_f(λ) and λ·c_j ≤ 0 to first order.
+  if (probe) {
+    double l[3];
+    if (!minimise(1 - std::ldexp(1.0, -40), l)) {
+      if (escape) *escape = {l[0], l[1], l[2]};
+      return std::nullopt;
+    }
+  }
   for (int j = 1; j <= 50; ++j) {
     const double sigma = 1 - std::ldexp(1.0, -j);
     double l[3];
@@ -128,7 +173,7 @@ std::optional<Stick_witness> weighted_witness(const Support& s, const std::vecto
     for (std::size_t i = 0; i < k; ++i) {
       if (rq[i] == 0) continue;
       const double t = std::hypot(l[0] - l[2] * y[i], l[1] + l[2] * x[i]);
-      const double wi = sigma * rho[i] / std::max(t, 1.0);
+      const double wi = rounded(sigma * rho[i] / std::max(t, 1.0), j);
       if (!std::isfinite(wi) || !(wi > 0)) break;
       w[i] = Rational(wi);
       const Vec2& r = s.points[i].at;
@@ -143,17 +188,28 @@ std::optional<Stick_witness> weighted_witness(const Support& s, const std::vecto
                          M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
                          M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
     if (det == 0) continue;
+    // The cone's weights σ·max(λ·ĉ_j, 0) on ĉ_j = scale_j c_j, exactly as doubles; the forces carry the rest.
+    Support_witness out{std::vector<Vec2>(k), std::vector<Rational>(cone.size())};
+    Vec3q rest = p;
+    for (std::size_t jj = 0; jj < cone.size(); ++jj) {
+      const double d = l[0] * c[jj][0] + l[1] * c[jj][1] + l[2] * c[jj][2];  // the weight on ĉ_jj, |ĉ_jj| = Σρ_i
+      const double lambda =
+          d > 0 && !(short_numbers && sigma * d < std::ldexp(1.0, -12 - j)) ? rounded(sigma * d * c_scale[jj], j) : 0;
+      if (!std::isfinite(lambda)) continue;
+      out.weights[jj] = Rational(lambda);
+      if (lambda > 0)
+        for (std::size_t r = 0; r < 3; ++r) rest[r] -= out.weights[jj] * cone[jj][r];
+    }
     Rational L[3];
-    for (int c = 0; c < 3; ++c) {
+    for (int col = 0; col < 3; ++col) {
       Rational mc[3][3];
       for (int r = 0; r < 3; ++r)
-        for (int cc = 0; cc < 3; ++cc) mc[r][cc] = cc == c ? p[static_cast<std::size_t>(r)] : M[r][cc];
-      L[c] = (mc[0][0] * (mc[1][1] * mc[2][2] - mc[1][2] * mc[2][1]) -
-              mc[0][1] * (mc[1][0] * mc[2][2] - mc[1][2] * mc[2][0]) +
-              mc[0][2] * (mc[1][0] * mc[2][1] - mc[1][1] * mc[2][0])) /
-             det;
+        for (int cc = 0; cc < 3; ++cc) mc[r][cc] = cc == col ? rest[static_cast<std::size_t>(r)] : M[r][cc];
+      L[col] = (mc[0][0] * (mc[1][1] * mc[2][2] - mc[1][2] * mc[2][1]) -
+                mc[0][1] * (mc[1][0] * mc[2][2] - mc[1][2] * mc[2][0]) +
+                mc[0][2] * (mc[1][0] * mc[2][1] - mc[1][1] * mc[2][0])) /
+               det;
     }
-    Stick_witness out{f, std::vector<Vec2>(k)};
     bool inside = true;
     for (std::size_t i = 0; i < k && inside; ++i) {
       if (rq[i] == 0) continue;
@@ -166,23 +222,21 @@ std::optional<Stick_witness> weighted_witness(const Support& s, const std::vecto
   return std::nullopt;
 }
 
-}  // namespace
-
 std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admissible& a, const Vec3q& p, int sides,
                                                    const std::vector<Rational>& f) {
-  if (auto w = weighted_witness(s, f, p)) return w;
+  if (auto w = smoothed_witness(s, f, p, {}, false, nullptr, false)) return Stick_witness{f, std::move(w->forces)};
   for (int n = sides; n <= 256 && s.points.size() * static_cast<std::size_t>(n) <= kMaxStickWitnessColumns; n *= 2)
     if (auto w = stick_witness(s, a, p, n, &f)) return w;
   return std::nullopt;
 }
 
-namespace {
-
-void write_forces(Json_writer& w, const std::vector<Vec2>& g) {
+void write_support_forces(Json_writer& w, const std::vector<Vec2>& g) {
   w.array();
   for (const Vec2& f : g) w.array().rational(f.x).rational(f.y).end_array();
   w.end_array();
 }
+
+namespace {
 
 // The certificate's object, opened, with its first members: the load and the motion.
 Json_writer head(const Vec3q& p, const char* motion) {
@@ -194,7 +248,7 @@ Json_writer head(const Vec3q& p, const char* motion) {
 
 void write_stick(Json_writer& w, const Stick_witness& s) {
   w.object().key("distribution").rationals(s.distribution);
-  write_forces(w.key("support_forces"), s.forces);
+  write_support_forces(w.key("support_forces"), s.forces);
   w.end_object();
 }
 
@@ -202,7 +256,7 @@ void write_stick(Json_writer& w, const Stick_witness& s) {
 
 std::string sticks_certificate(const Vec3q& p, const Stick_witness& s) {
   Json_writer w = head(p, "sticks");
-  write_forces(w.key("support_forces"), s.forces);
+  write_support_forces(w.key("support_forces"), s.forces);
   return w.end_object().take();
 }
 

@@ -5,6 +5,7 @@
 // pipeline before an answer is given.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +13,8 @@
 #include "exact/sliding/unknown_motion.h"
 
 namespace wrenchkit {
+
+class Json_writer;
 
 struct Slide_witness {
   std::vector<Rational> distribution;
@@ -27,12 +30,32 @@ std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q);
 std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
                                            const Vec3q& q);
 
+// Support forces and non-negative multiples of the `cone`'s wrenches c_j that sum to p exactly:
+// Σ_i (g_i, r_i × g_i) + Σ_j weights_j c_j = p with g_i·g_i < (μ_i f_i)² (g_i = 0 where μ_i f_i = 0). With an empty
+// cone, a stick witness (friction at two distinct points is required, as for it); with the contacts' wrench
+// generators, the support's part and the contacts' part of a hold witness (exact/fixture/hold.h). Found by
+// Newton's method in double on a smoothed dual, then made exact by one rational 3×3 solve and checked exactly
+// (SL-4); nothing when it does not verify. `probe`: first whether p itself is reachable (a Newton run at σ → 1);
+// when not, nothing, and `escape` (if given) gets the run's last dual iterate λ, along which the smoothed dual
+// decreases without bound: λ·p > h_f(λ) and λ·c_j ≤ 0 to first order (a candidate separating twist).
+// `short_numbers`: the exact round's weights rounded to a few more bits than the slack needs (shorter certificates).
+struct Support_witness {
+  std::vector<Vec2> forces;       // g_i, one per support point
+  std::vector<Rational> weights;  // one per cone wrench, ≥ 0
+};
+std::optional<Support_witness> smoothed_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
+                                                const std::vector<Vec3q>& cone, bool probe,
+                                                std::array<double, 3>* escape, bool short_numbers);
+
 // A stick witness for the distribution f: the smoothed Newton witness (forces along one twist's velocities, an
 // exact last round), else the exact LP on inscribed N-gons, N = sides, 2·sides, … up to 256 sides, as long as
 // the LP stays within kMaxStickWitnessColumns columns (support points × sides; the exact simplex grows fast).
 constexpr std::size_t kMaxStickWitnessColumns = 2048;
 std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admissible& a, const Vec3q& p, int sides,
                                                    const std::vector<Rational>& f);
+
+// The certificates' block of support forces: [[gx, gy], …], one pair per support point (motion and hold alike).
+void write_support_forces(Json_writer& w, const std::vector<Vec2>& g);
 
 // The certificates, as JSON text (format 1).
 std::string sticks_certificate(const Vec3q& p, const Stick_witness& w);                   // every force given

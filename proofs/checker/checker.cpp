@@ -888,13 +888,16 @@ struct Term {
 };
 using Pair = std::array<Q, 2>;
 // A stick witness {"distribution", "support_forces"} or a slide witness {"distribution", "twist",
-// "speed_bounds"} (§6.2).
+// "speed_bounds"} (§6.2); a hold witness {"distribution", "combination", "support_forces"} and a fail witness
+// (a slide witness's keys) of property "hold" (§7).
 struct Witness {
   std::string path;
   std::vector<Q> distribution;
   std::vector<Pair> forces;  // support_forces
   Q twist[3];
   std::vector<Q> speeds;  // speed_bounds
+  bool has_combination = false;
+  std::vector<Term> combination;
 };
 struct Certificate {
   std::set<std::string> keys;  // the keys present
@@ -902,7 +905,9 @@ struct Certificate {
   Reading reading = Reading::friction;
   bool equilibrium = false;  // property "equilibrium" (§3.3), read with friction
   bool motion = false;       // property "motion" (§6)
+  bool hold = false;         // property "hold" (§7), read with friction
   bool holds = false;
+  bool depends = false;      // "holds": "depends" (property "hold" only)
   std::vector<Term> combination;
   std::vector<Ref> independent;
   Q twist[3], where[2];  // where: reading.point or reading.direction
@@ -914,6 +919,7 @@ struct Certificate {
   std::vector<Q> speed_bounds;
   std::vector<Witness> vertices;
   Witness sticking, sliding;
+  Witness holding, failing;  // property "hold", "holds": "depends"
 };
 
 Q read_rational(Reader& r, std::string* text = nullptr) {
@@ -984,7 +990,8 @@ std::vector<Pair> read_pairs(Reader& r) {
 }
 
 // A stick witness {"distribution", "support_forces"} or (slide) a slide witness {"distribution",
-// "twist", "speed_bounds"}: exactly these keys.
+// "twist", "speed_bounds"}: exactly these keys; a stick witness may also hold "combination" (a hold witness,
+// §7: which keys a property allows is checked once the property is known).
 Witness read_witness(Reader& r, bool slide) {
   Witness w;
   w.path = r.path();
@@ -1000,6 +1007,11 @@ Witness read_witness(Reader& r, bool slide) {
       w.distribution = read_rationals(r);
     } else if (key == "support_forces" && !slide) {
       w.forces = read_pairs(r);
+    } else if (key == "combination" && !slide) {
+      if (r.peek() != Kind::array) r.fail("expected an array of {\"contact\", \"edge\", \"weight\"}");
+      r.begin_array();
+      while (r.next_item()) w.combination.push_back(read_term(r, true));
+      w.has_combination = true;
     } else if (key == "twist" && slide) {
       read_fixed(r, 3, "an array of three rationals [vx, vy, w]", [&](std::size_t k) { w.twist[k] = read_rational(r); });
     } else if (key == "speed_bounds" && slide) {
@@ -1053,21 +1065,27 @@ Certificate read_certificate(Reader& r) {
       if (r.peek() != Kind::number || r.number() != "1") r.fail("expected the integer 1");
     } else if (key == "property") {
       const std::string p = r.peek() == Kind::string ? r.string() : "";
-      if (p != "force_closure" && p != "form_closure" && p != "equilibrium" && p != "motion")
-        r.fail("expected \"force_closure\", \"form_closure\", \"equilibrium\" or \"motion\"");
+      if (p != "force_closure" && p != "form_closure" && p != "equilibrium" && p != "motion" && p != "hold")
+        r.fail("expected \"force_closure\", \"form_closure\", \"equilibrium\", \"motion\" or \"hold\"");
       c.property = p;
       c.reading = p == "form_closure" ? Reading::frictionless : Reading::friction;
       c.equilibrium = p == "equilibrium";
       c.motion = p == "motion";
+      c.hold = p == "hold";
     } else if (key == "holds") {
-      if (r.peek() != Kind::boolean) r.fail("expected true or false");
-      c.holds = r.boolean();
+      if (r.peek() == Kind::string) {  // "depends": property "hold" only (checked once the property is known)
+        if (r.string() != "depends") r.fail("expected true or false (or \"depends\" for property \"hold\")");
+        c.depends = true;
+      } else {
+        if (r.peek() != Kind::boolean) r.fail("expected true or false");
+        c.holds = r.boolean();
+      }
     } else if (key == "combination") {
       if (r.peek() != Kind::array)
         r.fail(c.equilibrium ? "expected an array of {\"contact\", \"edge\", \"weight\"}" : non_empty);
       r.begin_array();
       while (r.next_item()) c.combination.push_back(read_term(r, true));
-      if (c.combination.empty() && c.keys.count("property") && !c.equilibrium) r.fail(non_empty);
+      if (c.combination.empty() && c.keys.count("property") && !c.equilibrium && !c.hold) r.fail(non_empty);
       empty_combination = c.combination.empty();
     } else if (key == "independent") {
       read_fixed(r, 3, "an array of three {\"contact\", \"edge\"}",
@@ -1097,11 +1115,15 @@ Certificate read_certificate(Reader& r) {
       c.sticking = read_witness(r, false);
     } else if (key == "sliding") {
       c.sliding = read_witness(r, true);
+    } else if (key == "holding") {
+      c.holding = read_witness(r, false);
+    } else if (key == "failing") {
+      c.failing = read_witness(r, true);
     } else {
       r.fail("unknown key " + quote(key), true);
     }
   }
-  if (empty_combination && !c.equilibrium) throw Failure{"combination: " + non_empty};
+  if (empty_combination && !c.equilibrium && !c.hold) throw Failure{"combination: " + non_empty};
   return c;
 }
 
@@ -1121,8 +1143,11 @@ void check_keys(const Certificate& c) {
       throw Failure{"key \"independent\" is not allowed when \"property\" is \"equilibrium\""};
   };
   need("wrenchkit_certificate"), need("property");
-  if (c.motion) return;  // check_motion() decides, knowing the scene's support
-  for (const char* key : {"load", "motion", "support_forces", "speed_bounds", "dual", "vertices", "sticking", "sliding"})
+  if (c.depends && !c.hold)
+    throw Failure{"holds: \"depends\" is only a claim of property \"hold\" (expected true or false)"};
+  if (c.motion || c.hold) return;  // check_motion() and check_hold() decide, knowing the scene's support
+  for (const char* key : {"load", "motion", "support_forces", "speed_bounds", "dual", "vertices", "sticking", "sliding",
+                          "holding", "failing"})
     if (c.keys.count(key))
       throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is " + quote(c.property)};
   need("holds");
@@ -1170,47 +1195,71 @@ const Int_wrench& resolve(const Ref& ref, const std::vector<Contact>& contacts, 
 // §3.3, theory [EQ-1], when `load` is w_ext: (1)-(3) as above and (4') sum_k l_k g_k + w_ext = 0, so
 // -w_ext = sum_k l_k g_k is in W: the contact forces l_k (force of g_k) balance the load. There is no
 // (5), and the combination may be empty (then w_ext must be zero).
-void check_positive(const Certificate& c, const std::vector<Contact>& contacts, const Limits& lim,
-                    const Wrench* load) {
+// Rules (1)-(3) of §3.1 for the terms of a combination: each names a generator of the scene under the reading,
+// no generator appears twice, every weight is strictly positive. Returns the weighted generators
+// weight_k g_k as integer wrenches; `seen` gets each generator's path (for rule 5).
+using Seen = std::map<std::pair<std::size_t, std::string>, std::string>;
+std::vector<Int_wrench> weighted_terms(const std::vector<Term>& combination, const std::vector<Contact>& contacts,
+                                       Reading reading, const Limits& lim, Generator_cache& cache, Seen& seen) {
   // (2) no generator appears twice in combination. Checked on the references before (1), so that
   // (1) recomputes each generator at most once.
-  std::map<std::pair<std::size_t, std::string>, std::string> seen;
-  for (const Term& t : c.combination) {
+  for (const Term& t : combination) {
     const auto [it, fresh] = seen.emplace(std::make_pair(t.ref.contact, t.ref.edge), t.ref.path);
     if (!fresh)
       throw Failure{t.ref.path + ": " + name(t.ref.contact, t.ref.edge) + " appears twice (also at " + it->second +
                     ")"};
   }
   // (1) every reference names a generator of the scene under the reading
-  std::vector<Int_wrench> terms, independent;  // terms: first weight_k g_k, then w_ext if any
-  Generator_cache cache;
-  for (const Term& t : c.combination) {
-    const Int_wrench& g = resolve(t.ref, contacts, c.reading, lim, cache);
+  std::vector<Int_wrench> terms;
+  for (const Term& t : combination) {
+    const Int_wrench& g = resolve(t.ref, contacts, reading, lim, cache);
     // weight = a/b, b > 0 (a canonical mpq): weight * g = (a * g.v) / (b * g.d)
     const Z& a = t.weight.get_num();
     terms.push_back({{Z(a * g.v[0]), Z(a * g.v[1]), Z(a * g.v[2])}, Z(t.weight.get_den() * g.d)});
   }
-  for (const Ref& ref : c.independent) independent.push_back(resolve(ref, contacts, c.reading, lim, cache));
   // (3) every weight is strictly positive
-  for (const Term& t : c.combination)
+  for (const Term& t : combination)
     if (sgn(t.weight) <= 0)
       throw Failure{t.ref.path + ".weight: " + quote(t.weight_text) + " is not strictly positive"};
-  // (4) sum_k weight_k g_k (+ w_ext) = (0, 0, 0) exactly: the numerator of the sum over the product of
-  // the (positive) denominators is zero. Added as a balanced tree: with k weights of n digits whose
-  // denominators differ, that is about log k rounds of work on k n digits, where a running sum would
-  // take k rounds.
-  if (load) terms.push_back(integer_form(load->fx, load->fy, load->m));
+  return terms;
+}
+
+// The sum of integer wrenches (not empty), added as a balanced tree: with k weights of n digits whose
+// denominators differ, that is about log k rounds of work on k n digits, where a running sum would take k rounds.
+Int_wrench tree_sum(std::vector<Int_wrench> terms) {
   while (terms.size() > 1) {
     std::vector<Int_wrench> half;
     for (std::size_t k = 0; k + 1 < terms.size(); k += 2) half.push_back(sum(terms[k], terms[k + 1]));
     if (terms.size() % 2 == 1) half.push_back(std::move(terms.back()));
     terms.swap(half);
   }
-  const Int_wrench& total = terms.front();  // not empty: combination is not, or there is a load
+  return terms.front();
+}
+
+std::string show(const Int_wrench& w) {
+  return "(" + show(value(w.v[0], w.d)) + ", " + show(value(w.v[1], w.d)) + ", " + show(value(w.v[2], w.d)) + ")";
+}
+
+// §3.1, theory [FC-2]. With S the generators of `combination`: (3) and (4) give, for every g_j in S,
+// -g_j = sum_{k != j} (l_k / l_j) g_k in pos(S), so pos(S) is a linear subspace; (5) makes it
+// 3-dimensional, so W contains pos(S) = R^3.
+// §3.3, theory [EQ-1], when `load` is w_ext: (1)-(3) as above and (4') sum_k l_k g_k + w_ext = 0, so
+// -w_ext = sum_k l_k g_k is in W: the contact forces l_k (force of g_k) balance the load. There is no
+// (5), and the combination may be empty (then w_ext must be zero).
+void check_positive(const Certificate& c, const std::vector<Contact>& contacts, const Limits& lim,
+                    const Wrench* load) {
+  Generator_cache cache;
+  Seen seen;
+  std::vector<Int_wrench> terms = weighted_terms(c.combination, contacts, c.reading, lim, cache, seen);
+  std::vector<Int_wrench> independent;
+  for (const Ref& ref : c.independent) independent.push_back(resolve(ref, contacts, c.reading, lim, cache));
+  // (4) sum_k weight_k g_k (+ w_ext) = (0, 0, 0) exactly: the numerator of the sum over the product of
+  // the (positive) denominators is zero.
+  if (load) terms.push_back(integer_form(load->fx, load->fy, load->m));
+  const Int_wrench total = tree_sum(std::move(terms));  // not empty: combination is not, or there is a load
   if (total.v[0] != 0 || total.v[1] != 0 || total.v[2] != 0)
     throw Failure{std::string("combination: the weighted sum of the generators ") + (load ? "plus the load " : "") +
-                  "is (" + show(value(total.v[0], total.d)) + ", " + show(value(total.v[1], total.d)) + ", " +
-                  show(value(total.v[2], total.d)) + "), not (0, 0, 0)"};
+                  "is " + show(total) + ", not (0, 0, 0)"};
   if (load) return;
   // (5) the three independent generators are in combination, and their determinant is not zero
   for (const Ref& ref : c.independent)
@@ -1220,35 +1269,26 @@ void check_positive(const Certificate& c, const std::vector<Contact>& contacts, 
     throw Failure{"independent: the three generators are linearly dependent (determinant 0)"};
 }
 
-// §3.2, theory [FC-3]. Every x in W is sum mu_g g with mu >= 0, so <t, x> >= 0, while <t, -t> < 0:
-// the wrench -t is not in W, and W != R^3.
-// §3.3, theory [EQ-1], when `load` is w_ext: also <t, w_ext> > 0, so <t, -w_ext> < 0 <= <t, x> for every
-// x in W: -w_ext is not in W, and no admissible contact forces balance the load.
-void check_negative(const Certificate& c, const std::vector<Contact>& contacts, const Limits& lim,
-                    const Wrench* load) {
-  const Q(&t)[3] = c.twist;
-  // (1) the twist is not zero
-  if (t[0] == 0 && t[1] == 0 && t[2] == 0) throw Failure{"twist: the zero twist proves nothing"};
-  // (2) <t, g> >= 0 for every generator g of the scene under the reading. The power is linear in t,
-  // so its sign is that of <T, g> for T = L t, L > 0 the lcm of t's denominators: an integer twist,
-  // which spares the big gcds of adding fractions when t has long denominators.
-  // With g = v / d (d > 0), the sign is that of <T, v>, all in integers: <t, g> = <T, v> / (L d).
+// Rule (2) of §3.2: <t, g> >= 0 for every generator g of the scene under the reading (the motion t is allowed by
+// every contact). The power is linear in t, so its sign is that of <T, g> for T = L t, L > 0 the lcm of t's
+// denominators: an integer twist, which spares the big gcds of adding fractions when t has long denominators.
+// With g = v / d (d > 0), the sign is that of <T, v>, all in integers: <t, g> = <T, v> / (L d).
+void allowed_by_every_contact(const Q (&t)[3], const std::vector<Contact>& contacts, Reading reading,
+                              const Limits& lim, const std::string& prefix) {
   mpz_class L = 1;
   for (const Q& x : t) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), x.get_den_mpz_t());
   const Z T[3] = {Z(t[0].get_num() * (L / t[0].get_den())), Z(t[1].get_num() * (L / t[1].get_den())),
                   Z(t[2].get_num() * (L / t[2].get_den()))};
   for (std::size_t i = 0; i < contacts.size(); ++i)
-    for (const Generator& g : generators(contacts[i], c.reading, lim)) {
+    for (const Generator& g : generators(contacts[i], reading, lim)) {
       const Z p = power(T, g.w);
-      if (sgn(p) < 0) throw Failure{"twist: power " + show(value(p, Z(L * g.w.d))) + " against " + name(i, g.edge)};
+      if (sgn(p) < 0)
+        throw Failure{prefix + "twist: power " + show(value(p, Z(L * g.w.d))) + " against " + name(i, g.edge)};
     }
-  // (2') equilibrium: <t, w_ext> > 0
-  if (load) {
-    const Int_wrench w = integer_form(load->fx, load->fy, load->m);
-    const Z p = power(T, w);
-    if (sgn(p) <= 0) throw Failure{"twist: power against the load is " + show(value(p, Z(L * w.d))) + ", not > 0"};
-  }
-  // (3) the reading, if present, is P(t) = (-vy, vx, w) on the two-sided plane
+}
+
+// Rule (3) of §3.2: the reading, if present, is P(t) = (-vy, vx, w) on the two-sided plane.
+void check_reading(const Certificate& c, const Q (&t)[3]) {
   if (!c.keys.count("reading")) return;
   const Q &vx = t[0], &vy = t[1], &w = t[2];
   const std::string label = w > 0 ? "+" : w < 0 ? "-" : "infinity";
@@ -1267,6 +1307,26 @@ void check_negative(const Certificate& c, const std::vector<Contact>& contacts, 
   }
 }
 
+// §3.2, theory [FC-3]. Every x in W is sum mu_g g with mu >= 0, so <t, x> >= 0, while <t, -t> < 0:
+// the wrench -t is not in W, and W != R^3.
+// §3.3, theory [EQ-1], when `load` is w_ext: also <t, w_ext> > 0, so <t, -w_ext> < 0 <= <t, x> for every
+// x in W: -w_ext is not in W, and no admissible contact forces balance the load.
+void check_negative(const Certificate& c, const std::vector<Contact>& contacts, const Limits& lim,
+                    const Wrench* load) {
+  const Q(&t)[3] = c.twist;
+  // (1) the twist is not zero
+  if (t[0] == 0 && t[1] == 0 && t[2] == 0) throw Failure{"twist: the zero twist proves nothing"};
+  // (2) <t, g> >= 0 for every generator g of the scene under the reading
+  allowed_by_every_contact(t, contacts, c.reading, lim, "");
+  // (2') equilibrium: <t, w_ext> > 0
+  if (load) {
+    const Q p = t[0] * load->fx + t[1] * load->fy + t[2] * load->m;
+    if (sgn(p) <= 0) throw Failure{"twist: power against the load is " + show(p) + ", not > 0"};
+  }
+  // (3) the reading, if present, is P(t) = (-vy, vx, w) on the two-sided plane
+  check_reading(c, t);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Sliding certificates (certificate-format.md §6; docs/theory-sliding.md §2-§3; proofs/notes/SL-1)
 
@@ -1279,39 +1339,13 @@ std::string show_list(const std::vector<Q>& v) {
 }
 std::string point_name(std::size_t i) { return "support.points[" + std::to_string(i) + "]"; }
 
-class Motion_check {
+// The support's blocks of the sliding (§6) and hold (§7) certificates, checked the same way for both: a
+// distribution in F, support forces in their friction discs and their wrench, a bound on the frictional power
+// of a twist (rational speed bounds; for every distribution, with the LP dual over F), and the vertices of F.
+class Support_blocks {
  public:
-  Motion_check(const Certificate& c, const Support& s, const Limits& lim) : c_(c), s_(s), lim_(lim) {}
+  Support_blocks(const Support& s, const Limits& lim) : s_(s), lim_(lim) {}
 
-  void run() {
-    const bool known = s_.unknown == 0;
-    if (c_.claim == "depends" && known)
-      throw Failure{"motion: \"depends\" needs a support with an unknown distribution (every force is given)"};
-    std::set<std::string> allowed;
-    if (c_.claim == "sticks") allowed = known ? std::set<std::string>{"support_forces"} : std::set<std::string>{"vertices"};
-    if (c_.claim == "slides")
-      allowed = known ? std::set<std::string>{"twist", "speed_bounds"} : std::set<std::string>{"twist", "speed_bounds", "dual"};
-    if (c_.claim == "depends") allowed = {"sticking", "sliding"};
-    const char* const keys[] = {"support_forces", "twist", "speed_bounds", "dual", "vertices", "sticking", "sliding"};
-    for (const char* key : keys)
-      if (!allowed.count(key) && c_.keys.count(key))
-        throw Failure{std::string("key \"") + key + "\" is not allowed when \"motion\" is " + quote(c_.claim) +
-                      (known ? " and every support force is given" : " and some support force is unknown")};
-    for (const char* key : keys)
-      if (allowed.count(key) && !c_.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
-    if (c_.claim == "sticks" && known) return stick(given(), c_.support_forces, "support_forces");
-    if (c_.claim == "slides" && known) return slide(given(), c_.twist, c_.speed_bounds, "", nullptr);
-    if (c_.claim == "slides") return slide(given(), c_.twist, c_.speed_bounds, "", c_.dual);
-    if (c_.claim == "depends") {
-      in_f(c_.sticking.distribution, c_.sticking.path + ".distribution");
-      stick(c_.sticking.distribution, c_.sticking.forces, c_.sticking.path + ".support_forces");
-      in_f(c_.sliding.distribution, c_.sliding.path + ".distribution");
-      return slide(c_.sliding.distribution, c_.sliding.twist, c_.sliding.speeds, c_.sliding.path + ".", nullptr);
-    }
-    sticks_for_every();
-  }
-
- private:
   // The scene's forces (0 where unknown).
   std::vector<Q> given() const {
     std::vector<Q> f;
@@ -1344,46 +1378,44 @@ class Motion_check {
                     std::to_string(s_.points.size()) + " points"};
   }
 
-  // Sticks under f: p in the INTERIOR of LS(f) (a load on the limit surface slides, docs/theory.md §11):
-  // |g_i|^2 < (mu_i f_i)^2 where mu_i f_i > 0, g_i = 0 where it is 0, sum (g_i, r_i x g_i) = p, and LS(f)
-  // is three-dimensional (two distinct points with mu_i f_i > 0), so the sum of the discs' relative
-  // interiors is its interior (SL-1).
-  void stick(const std::vector<Q>& f, const std::vector<Pair>& g, const std::string& path) const {
+  // Support forces g_i under f, each in its friction disc, and their wrench sum (g_i, r_i x g_i).
+  // `strict` (a stick, §6): p in the INTERIOR of LS(f) (a load on the limit surface slides, docs/theory.md §11):
+  // |g_i|^2 < (mu_i f_i)^2 where mu_i f_i > 0, g_i = 0 where it is 0, and LS(f) is three-dimensional (two distinct
+  // points with mu_i f_i > 0), so the sum of the discs' relative interiors is its interior (SL-1). Not strict (a
+  // hold, §7): |g_i|^2 <= (mu_i f_i)^2, the closed discs (so g_i = 0 where mu_i f_i = 0), any number of points.
+  std::array<Q, 3> support_sum(const std::vector<Q>& f, const std::vector<Pair>& g, const std::string& path,
+                               bool strict) const {
     size(g.size(), path);
-    Q sum[3] = {0, 0, 0};
+    std::array<Q, 3> sum{0, 0, 0};
     bool two = false, one = false;
     Q ax, ay;
     for (std::size_t i = 0; i < g.size(); ++i) {
       const Point_values v = values(s_.points[i], lim_);
       const Q lhs = g[i][0] * g[i][0] + g[i][1] * g[i][1], bound = v.mu * f[i];
-      if (sgn(bound) == 0 ? sgn(lhs) != 0 : !(lhs < bound * bound))
-        throw Failure{path + "[" + std::to_string(i) + "]: |g|^2 = " + show(lhs) + " is not less than (mu f)^2 = " +
-                      show(Q(bound * bound)) + (sgn(bound) == 0 ? " (no friction there: g must be 0)" : "")};
+      const bool inside = strict ? (sgn(bound) == 0 ? sgn(lhs) == 0 : lhs < bound * bound) : lhs <= bound * bound;
+      if (!inside)
+        throw Failure{path + "[" + std::to_string(i) + "]: |g|^2 = " + show(lhs) + " is not " +
+                      (strict ? "less than" : "at most") + " (mu f)^2 = " + show(Q(bound * bound)) +
+                      (sgn(bound) == 0 ? " (no friction there: g must be 0)" : "")};
       if (sgn(bound) > 0) {
         if (one && (v.x != ax || v.y != ay)) two = true;
         if (!one) one = true, ax = v.x, ay = v.y;
       }
       sum[0] += g[i][0], sum[1] += g[i][1], sum[2] += v.x * g[i][1] - v.y * g[i][0];
     }
-    if (!two)
+    if (strict && !two)
       throw Failure{path + ": friction acts at fewer than two distinct points, so the limit surface is flat and no "
                            "load is inside it"};
-    if (sum[0] != c_.load[0] || sum[1] != c_.load[1] || sum[2] != c_.load[2])
-      throw Failure{path + ": the support forces give the load (" + show(sum[0]) + ", " + show(sum[1]) + ", " +
-                    show(sum[2]) + "), not (" + show(c_.load[0]) + ", " + show(c_.load[1]) + ", " +
-                    show(c_.load[2]) + ")"};
+    return sum;
   }
 
-  // Slides: p not in the interior of LS(f) (on or past the limit surface): q != 0, u_i >= 0,
-  // u_i^2 >= |v_i(q)|^2 and q.p >= a bound on the frictional
-  // power h_f(q) = sum mu_i f_i |v_i(q)|: sum mu_i f_i u_i for the distribution f, or, with a dual
-  // (every f in F), sum_known mu_i f_i u_i + y0 W' + yx M'x + yy M'y where mu_i u_i <= y0 + y.r_i for
-  // every unknown i.
-  void slide(const std::vector<Q>& f, const Q (&q)[3], const std::vector<Q>& u, const std::string& prefix,
-             const Q* dual) const {
+  // A bound on the frictional power h_f(q) = sum mu_i f_i |v_i(q)| from the rational speed bounds u_i >= 0,
+  // u_i^2 >= |v_i(q)|^2: sum mu_i f_i u_i for the distribution f, or, with a dual (every f in F),
+  // sum_known mu_i f_i u_i + y0 W' + yx M'x + yy M'y where mu_i u_i <= y0 + y.r_i for every unknown i.
+  Q friction_bound(const std::vector<Q>& f, const Q (&q)[3], const std::vector<Q>& u, const std::string& prefix,
+                   const Q* dual) const {
     const std::string path = prefix + "speed_bounds";
     size(u.size(), path);
-    if (sgn(q[0]) == 0 && sgn(q[1]) == 0 && sgn(q[2]) == 0) throw Failure{prefix + "twist: the zero twist"};
     Q bound = 0;
     for (std::size_t i = 0; i < u.size(); ++i) {
       const Point_values v = values(s_.points[i], lim_);
@@ -1401,26 +1433,21 @@ class Motion_check {
       }
     }
     if (dual) bound += dual[0] * s_.rest_weight + dual[1] * s_.rest_moment[0] + dual[2] * s_.rest_moment[1];
-    const Q power = q[0] * c_.load[0] + q[1] * c_.load[1] + q[2] * c_.load[2];
-    if (power < bound)
-      throw Failure{prefix + "twist: power q.p = " + show(power) + " is less than " +
-                    (dual ? "the dual bound " : "sum mu_i f_i u_i = ") + show(bound)};
+    return bound;
   }
 
-  // Sticks for every f in F: every witness is in F and sticks, and every vertex of F is the
-  // distribution of a witness. The vertices are the basic feasible solutions of the three rows
-  // (1, x_i, y_i) over the unknown forces (SL-1 §3): a vertex's support S (its positive unknown
-  // forces) has linearly independent columns, so |S| <= 3 and the vertex is the unique solution on S.
-  void sticks_for_every() const {
-    // Each witness is checked; its unknown support (when at most 3 points) names the vertex it can be.
+  // Every vertex of F is one of `distributions` (each already checked to be in F). The vertices are the basic
+  // feasible solutions of the three rows (1, x_i, y_i) over the unknown forces (SL-1 §3): a vertex's support S
+  // (its positive unknown forces) has linearly independent columns, so |S| <= 3 and the vertex is the unique
+  // solution on S. `what` names the list in messages ("vertices").
+  void vertices_covered(const std::vector<const std::vector<Q>*>& distributions, const std::string& what) const {
+    // Each distribution's unknown support (when at most 3 points) names the vertex it can be.
     std::map<std::vector<std::size_t>, std::size_t> by_support;
-    for (std::size_t w = 0; w < c_.vertices.size(); ++w) {
-      const Witness& v = c_.vertices[w];
-      in_f(v.distribution, v.path + ".distribution");
-      stick(v.distribution, v.forces, v.path + ".support_forces");
+    for (std::size_t w = 0; w < distributions.size(); ++w) {
+      const std::vector<Q>& d = *distributions[w];
       std::vector<std::size_t> support;
-      for (std::size_t i = 0; i < v.distribution.size() && support.size() <= 3; ++i)
-        if (!s_.points[i].known && sgn(v.distribution[i]) > 0) support.push_back(i);
+      for (std::size_t i = 0; i < d.size() && support.size() <= 3; ++i)
+        if (!s_.points[i].known && sgn(d[i]) > 0) support.push_back(i);
       if (support.size() <= 3) by_support.emplace(support, w);
     }
     std::vector<std::size_t> unknown;  // indices of the points without a given force
@@ -1430,7 +1457,7 @@ class Motion_check {
     const unsigned long long bases =  // no overflow: n is at most max_contacts, capped here at 10^6
         n > 1000000 ? ULLONG_MAX : n + n * (n - 1) / 2 + n * (n - 1) * (n - 2) / 6;
     if (bases > lim_.max_vertex_bases)
-      throw Failure{"vertices: too large to check: " + std::to_string(n) + " points without a given force give " +
+      throw Failure{what + ": too large to check: " + std::to_string(n) + " points without a given force give " +
                     std::to_string(bases) + " candidate bases (limit " + std::to_string(lim_.max_vertex_bases) + ")"};
     const std::vector<Q> base = given();
     // A vertex with unknown support S and values x_S: it must be some witness's distribution.
@@ -1438,8 +1465,8 @@ class Motion_check {
       std::vector<Q> f = base;
       for (std::size_t k = 0; k < S.size(); ++k) f[S[k]] = x[k];
       const auto at = by_support.find(S);
-      if (at == by_support.end() || c_.vertices[at->second].distribution != f)
-        throw Failure{"vertices: the vertex " + show_list(f) + " of the admissible distributions has no witness"};
+      if (at == by_support.end() || *distributions[at->second] != f)
+        throw Failure{what + ": the vertex " + show_list(f) + " of the admissible distributions has no witness"};
     };
     if (s_.rest_weight == 0) return covered({}, {});  // F = {given forces, 0 elsewhere}: one vertex
     // Integer columns a_i = D_i (1, x_i, y_i) and b = B (W', M'): positive scalings, so the signs of
@@ -1496,22 +1523,201 @@ class Motion_check {
         }
   }
 
+
   static Z dot3(const std::array<Z, 3>& u, const std::array<Z, 3>& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
 
-  const Certificate& c_;
+ private:
   const Support& s_;
   const Limits& lim_;
+};
+
+class Motion_check {
+ public:
+  Motion_check(const Certificate& c, const Support& s, const Limits& lim) : c_(c), b_(s, lim), s_(s) {}
+
+  void run() {
+    const bool known = s_.unknown == 0;
+    if (c_.claim == "depends" && known)
+      throw Failure{"motion: \"depends\" needs a support with an unknown distribution (every force is given)"};
+    std::set<std::string> allowed;
+    if (c_.claim == "sticks") allowed = known ? std::set<std::string>{"support_forces"} : std::set<std::string>{"vertices"};
+    if (c_.claim == "slides")
+      allowed = known ? std::set<std::string>{"twist", "speed_bounds"} : std::set<std::string>{"twist", "speed_bounds", "dual"};
+    if (c_.claim == "depends") allowed = {"sticking", "sliding"};
+    const char* const keys[] = {"support_forces", "twist", "speed_bounds", "dual", "vertices", "sticking", "sliding"};
+    for (const char* key : keys)
+      if (!allowed.count(key) && c_.keys.count(key))
+        throw Failure{std::string("key \"") + key + "\" is not allowed when \"motion\" is " + quote(c_.claim) +
+                      (known ? " and every support force is given" : " and some support force is unknown")};
+    for (const char* key : keys)
+      if (allowed.count(key) && !c_.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
+    if (c_.claim == "sticks" && known) return stick(b_.given(), c_.support_forces, "support_forces");
+    if (c_.claim == "slides" && known) return slide(b_.given(), c_.twist, c_.speed_bounds, "", nullptr);
+    if (c_.claim == "slides") return slide(b_.given(), c_.twist, c_.speed_bounds, "", c_.dual);
+    if (c_.claim == "depends") {
+      b_.in_f(c_.sticking.distribution, c_.sticking.path + ".distribution");
+      stick(c_.sticking.distribution, c_.sticking.forces, c_.sticking.path + ".support_forces");
+      b_.in_f(c_.sliding.distribution, c_.sliding.path + ".distribution");
+      return slide(c_.sliding.distribution, c_.sliding.twist, c_.sliding.speeds, c_.sliding.path + ".", nullptr);
+    }
+    sticks_for_every();
+  }
+
+ private:
+  // Sticks under f: the support forces strictly inside their discs carry the load p exactly (SL-1).
+  void stick(const std::vector<Q>& f, const std::vector<Pair>& g, const std::string& path) const {
+    const std::array<Q, 3> sum = b_.support_sum(f, g, path, true);
+    if (sum[0] != c_.load[0] || sum[1] != c_.load[1] || sum[2] != c_.load[2])
+      throw Failure{path + ": the support forces give the load (" + show(sum[0]) + ", " + show(sum[1]) + ", " +
+                    show(sum[2]) + "), not (" + show(c_.load[0]) + ", " + show(c_.load[1]) + ", " +
+                    show(c_.load[2]) + ")"};
+  }
+
+  // Slides: p not in the interior of LS(f) (on or past the limit surface): q != 0 and q.p >= the bound on the
+  // frictional power h_f(q).
+  void slide(const std::vector<Q>& f, const Q (&q)[3], const std::vector<Q>& u, const std::string& prefix,
+             const Q* dual) const {
+    b_.size(u.size(), prefix + "speed_bounds");
+    if (sgn(q[0]) == 0 && sgn(q[1]) == 0 && sgn(q[2]) == 0) throw Failure{prefix + "twist: the zero twist"};
+    const Q bound = b_.friction_bound(f, q, u, prefix, dual);
+    const Q power = q[0] * c_.load[0] + q[1] * c_.load[1] + q[2] * c_.load[2];
+    if (power < bound)
+      throw Failure{prefix + "twist: power q.p = " + show(power) + " is less than " +
+                    (dual ? "the dual bound " : "sum mu_i f_i u_i = ") + show(bound)};
+  }
+
+  // Sticks for every f in F: every witness is in F and sticks, and every vertex of F is the distribution of a
+  // witness.
+  void sticks_for_every() const {
+    std::vector<const std::vector<Q>*> distributions;
+    for (const Witness& v : c_.vertices) {
+      b_.in_f(v.distribution, v.path + ".distribution");
+      stick(v.distribution, v.forces, v.path + ".support_forces");
+      distributions.push_back(&v.distribution);
+    }
+    b_.vertices_covered(distributions, "vertices");
+  }
+
+  const Certificate& c_;
+  Support_blocks b_;
+  const Support& s_;
 };
 
 // Property "motion" (§6).
 void check_motion(const Certificate& c, const Scene& scene, const Limits& lim) {
   for (const char* key : {"load", "motion"})
     if (!c.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
-  for (const char* key : {"holds", "combination", "independent", "reading"})
+  for (const char* key : {"holds", "combination", "independent", "reading", "holding", "failing"})
     if (c.keys.count(key)) throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is \"motion\""};
+  for (const Witness* w : {&c.sticking})
+    if (w->has_combination) throw Failure{w->path + ": unknown key \"combination\""};
+  for (const Witness& w : c.vertices)
+    if (w.has_combination) throw Failure{w.path + ": unknown key \"combination\""};
   if (!scene.support.present) throw Failure{"property: \"motion\" needs a scene with a support"};
   Motion_check(c, scene.support, lim).run();
 }
+
+// Property "hold" (§7; docs/theory-sliding.md §5; proofs/notes/HD-1): the contacts (the friction generators)
+// together with the support's friction hold the body against the scene's load w_L, i.e. -w_L is in W + LS(f).
+// Holds: contact weights (as §3.3) and support forces in their CLOSED discs with sum lambda_k g_k +
+// sum (g_i, r_i x g_i) + w_L = 0. Does not hold: a twist t with <t, g> >= 0 for every generator and
+// t.w_L > the bound on the frictional power of t (strict). A scene without a support: hold is equilibrium.
+class Hold_check {
+ public:
+  Hold_check(const Certificate& c, const Scene& scene, const Limits& lim)
+      : c_(c), scene_(scene), lim_(lim), b_(scene.support, lim) {}
+
+  void run() {
+    if (!scene_.has_load) throw Failure{"property: \"hold\" needs a scene with a load"};
+    for (const char* key : {"load", "motion", "independent", "sticking", "sliding"})
+      if (c_.keys.count(key)) throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is \"hold\""};
+    if (!c_.keys.count("holds")) throw Failure{"missing required key \"holds\""};
+    const bool support = scene_.support.present, known = !support || scene_.support.unknown == 0;
+    const std::string claim = c_.depends ? "\"depends\"" : c_.holds ? "true" : "false";
+    if (c_.depends && known)
+      throw Failure{"holds: \"depends\" needs a support with an unknown distribution (" +
+                    std::string(support ? "every force is given" : "the scene has no support") + ")"};
+    std::set<std::string> allowed, optional;
+    if (c_.depends) {
+      allowed = {"holding", "failing"};
+    } else if (c_.holds) {
+      allowed = known ? std::set<std::string>{"combination"} : std::set<std::string>{"vertices"};
+      if (known && support) allowed.insert("support_forces");
+    } else {
+      allowed = {"twist"};
+      optional = {"reading"};
+      if (support) allowed.insert("speed_bounds");
+      if (!known) allowed.insert("dual");
+    }
+    const char* const keys[] = {"combination", "support_forces", "twist",   "reading", "speed_bounds",
+                                "dual",        "vertices",       "holding", "failing"};
+    const std::string where = !support ? " and the scene has no support"
+                              : known  ? " and every support force is given"
+                                       : " and some support force is unknown";
+    for (const char* key : keys)
+      if (!allowed.count(key) && !optional.count(key) && c_.keys.count(key))
+        throw Failure{std::string("key \"") + key + "\" is not allowed when \"holds\" is " + claim + where};
+    for (const char* key : keys)
+      if (allowed.count(key) && !c_.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
+    const std::vector<Q> f = support ? b_.given() : std::vector<Q>();
+    if (c_.depends) {
+      if (!c_.holding.has_combination) throw Failure{c_.holding.path + ": missing required key \"combination\""};
+      b_.in_f(c_.holding.distribution, c_.holding.path + ".distribution");
+      hold(c_.holding.distribution, c_.holding.combination, c_.holding.forces, c_.holding.path + ".");
+      b_.in_f(c_.failing.distribution, c_.failing.path + ".distribution");
+      return fail(c_.failing.distribution, c_.failing.twist, c_.failing.speeds, c_.failing.path + ".", nullptr);
+    }
+    if (!c_.holds) {
+      fail(f, c_.twist, c_.speed_bounds, "", known ? nullptr : c_.dual);
+      return check_reading(c_, c_.twist);
+    }
+    if (known) return hold(f, c_.combination, c_.support_forces, "");
+    // Holds for every f in F: a hold witness at every vertex of F (W is a convex cone and LS is linear in f).
+    std::vector<const std::vector<Q>*> distributions;
+    for (const Witness& v : c_.vertices) {
+      if (!v.has_combination) throw Failure{v.path + ": missing required key \"combination\""};
+      b_.in_f(v.distribution, v.path + ".distribution");
+      hold(v.distribution, v.combination, v.forces, v.path + ".");
+      distributions.push_back(&v.distribution);
+    }
+    b_.vertices_covered(distributions, "vertices");
+  }
+
+ private:
+  // Contact weights and support forces (closed discs) that cancel the load exactly.
+  void hold(const std::vector<Q>& f, const std::vector<Term>& combination, const std::vector<Pair>& g,
+            const std::string& prefix) const {
+    Generator_cache cache;
+    Seen seen;
+    std::vector<Int_wrench> terms = weighted_terms(combination, scene_.contacts, Reading::friction, lim_, cache, seen);
+    if (scene_.support.present) {
+      const std::array<Q, 3> sum = b_.support_sum(f, g, prefix + "support_forces", false);
+      terms.push_back(integer_form(sum[0], sum[1], sum[2]));
+    }
+    terms.push_back(integer_form(scene_.load.fx, scene_.load.fy, scene_.load.m));
+    const Int_wrench total = tree_sum(std::move(terms));
+    if (total.v[0] != 0 || total.v[1] != 0 || total.v[2] != 0)
+      throw Failure{prefix + "combination: the contact forces" +
+                    std::string(scene_.support.present ? ", the support forces" : "") + " and the load sum to " +
+                    show(total) + ", not (0, 0, 0)"};
+  }
+
+  // A motion every contact allows that the load drives harder than the support's friction can resist.
+  void fail(const std::vector<Q>& f, const Q (&t)[3], const std::vector<Q>& u, const std::string& prefix,
+            const Q* dual) const {
+    allowed_by_every_contact(t, scene_.contacts, Reading::friction, lim_, prefix);
+    const Q bound = scene_.support.present ? b_.friction_bound(f, t, u, prefix, dual) : Q(0);
+    const Q power = t[0] * scene_.load.fx + t[1] * scene_.load.fy + t[2] * scene_.load.m;
+    if (!(power > bound))
+      throw Failure{prefix + "twist: power against the load t.w_L = " + show(power) + " is not more than " +
+                    (!scene_.support.present ? std::string("0") : (dual ? "the dual bound " : "sum mu_i f_i u_i = ") + show(bound))};
+  }
+
+  const Certificate& c_;
+  const Scene& scene_;
+  const Limits& lim_;
+  Support_blocks b_;
+};
 
 // The certificate against an already read scene.
 Result check_certificate(const Scene& scene, std::string_view certificate_json, const Limits& limits) {
@@ -1525,6 +1731,10 @@ Result check_certificate(const Scene& scene, std::string_view certificate_json, 
     check_keys(c);
     if (c.motion) {
       check_motion(c, scene, limits);
+      return {Outcome::accepted, "accepted"};
+    }
+    if (c.hold) {
+      Hold_check(c, scene, limits).run();
       return {Outcome::accepted, "accepted"};
     }
     if (c.equilibrium && !scene.has_load) throw Failure{"property: \"equilibrium\" needs a scene with a load"};

@@ -17,6 +17,11 @@
 //     distribution or for every admissible distribution F (a stick witness for every vertex of F,
 //     which the checker enumerates itself; an LP dual bound for slides), or "depends" (one admissible
 //     distribution sticks, another slides). An empty F is a bad scene, with the reason.
+//   * property "hold" (certificate-format.md §7, proofs/notes/HD-1), about the scene's contacts and support
+//     against its load: true (positive weights on friction generators and support forces in their closed
+//     discs that cancel the load), false (a twist every generator allows whose power against the load beats
+//     the rational bound on the support's frictional power, strictly), or "depends" (one admissible
+//     distribution holds, another fails); for every admissible distribution as for "motion".
 // Every generator, and the load, is recomputed from the scene text; the certificate supplies only
 // indices and rationals. All arithmetic is exact (GMP rationals); there is no floating point.
 //

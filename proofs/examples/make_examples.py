@@ -26,6 +26,15 @@ CORNER_MU_1_2 = [
     {"at": [0, 1], "normal": [1, 0], "mu": "5e-1", "name": "wall, top"},
 ]
 
+# The fixtures of section 7 (shared parts).
+LEGS = [[1, 1], [-1, 1], [-1, -1], [1, -1]]
+PIN = [{"at": [-1, 0], "normal": [1, 0], "name": "pin"}]
+SQUARE_BODY = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "com": [0, 0]}
+FIXTURE = {"wrenchkit": 1, "body": SQUARE_BODY, "contacts": PIN,
+           "support": {"mu": "1/2", "points": [{"at": at, "force": "1/4"} for at in LEGS]}}
+TABLE_PINNED = {"wrenchkit": 1, "body": SQUARE_BODY, "contacts": PIN,
+                "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": at} for at in LEGS]}}
+
 SCENES = {
     "block_corner_mu0": {
         "wrenchkit": 1,
@@ -123,6 +132,21 @@ SCENES = {
         "name": "barbell, forces 1/2 at (0,-1) and (0,1), mu = 1/2 (a known distribution)",
         "support": {"mu": "1/2", "points": [{"at": [0, -1], "force": "1/2"}, {"at": [0, 1], "force": 0.5}]},
     },
+    # Fixtures on a support (certificate-format.md section 7): a square part on four legs (+-1,+-1), each
+    # carrying 1/4 with mu = 1/2 (friction discs of radius 1/8), against a frictionless pin at (-1,0) pushing
+    # along +x (generator (1,0,0)), under three loads; and the four-legged table with the same pin, every leg
+    # force unknown, under three more.
+    "fixture_pin_push": dict(FIXTURE, name="part on four legs and a pin, pushed by (-1, 1/4) at (1,0): held", load={"force": [-1, "1/4"], "at": [1, 0]}),
+    "fixture_pin_lift": dict(FIXTURE, name="part on four legs and a pin, pushed by (0, 1) at (1,0): it turns about "
+                             "the pin", load={"force": [0, 1], "at": [1, 0]}),
+    "fixture_pin_pull": dict(FIXTURE, name="part on four legs and a pin, pulled by (1/2, 0) at the centre: friction "
+                             "just holds it", load={"force": ["1/2", 0], "at": [0, 0]}),
+    "table_pinned_nudged": dict(TABLE_PINNED, name="four-legged table with a pin at (-1,0), every leg force "
+                                "unknown, load (1/2, 0, 0): held by every distribution", load={"wrench": ["1/2", 0, 0]}),
+    "table_pinned_shoved": dict(TABLE_PINNED, name="the pinned table under (3/2, 0, 0): moves under every "
+                                "distribution", load={"wrench": ["3/2", 0, 0]}),
+    "table_pinned_pushed": dict(TABLE_PINNED, name="the pinned table under (1/2, 1/2, 9/10): depends on the "
+                                "distribution", load={"wrench": ["1/2", "1/2", "9/10"]}),
 }
 
 # ----------------------------------------------------------------------------------------------
@@ -160,6 +184,14 @@ def motion(claim, load, **rest):
     """A sliding certificate (certificate-format.md section 6): load p = (fx, fy, m) as rationals."""
     return dict({"wrenchkit_certificate": 1, "property": "motion", "load": [str(F(v)) for v in load],
                  "motion": claim}, **rest)
+
+
+def hold(claim, **rest):
+    return dict({"wrenchkit_certificate": 1, "property": "hold", "holds": claim}, **rest)
+
+
+def hold_witness(distribution, combination, forces):
+    return {"distribution": distribution, "combination": combination, "support_forces": forces}
 
 
 def stick_witness(distribution, forces):
@@ -346,6 +378,61 @@ CERTS = [
      motion("sticks", [F(1, 2), 0, 0], support_forces=[["1/4", "0"], ["1/4", "0"]])),
     ("barbell_known", "depends_on_known", 'invalid:depends known|motion: "depends" needs a support with an unknown distribution',
      dict(motion("depends", [F(1, 2), F(1, 2), F(9, 10)]), sticking=TABLE_DEPENDS["sticking"], sliding=TABLE_DEPENDS["sliding"])),
+    # Fixtures (section 7). The push (-1, 1/4) at (1,0) is w_L = (-1, 1/4, 1/4): the pin takes -1 along x, and
+    # the two right legs each give (0, -1/8), on their circles (|g| = mu f = 1/8): held (a hold is closed).
+    ("fixture_pin_push", "holds", "valid",
+     hold(True, combination=comb((0, "normal", "1")), support_forces=[["0", "-1/8"], ["0", "0"], ["0", "0"], ["0", "-1/8"]])),
+    ("fixture_pin_push", "force_outside_disc", "invalid:disc|support_forces[0]: |g|^2 = 1/16 is not at most (mu f)^2 = 1/64",
+     hold(True, combination=comb((0, "normal", "1")), support_forces=[["0", "-1/4"], ["0", "0"], ["0", "0"], ["0", "0"]])),
+    ("fixture_pin_push", "unbalanced", "invalid:sum|combination: the contact forces, the support forces and the load sum to (-1/2, 0, 0), not (0, 0, 0)",
+     hold(True, combination=comb((0, "normal", "1/2")), support_forces=[["0", "-1/8"], ["0", "0"], ["0", "0"], ["0", "-1/8"]])),
+    ("fixture_pin_push", "depends_on_known", 'invalid:depends known|holds: "depends" needs a support with an unknown distribution',
+     hold("depends", holding=hold_witness(["1/4"] * 4, [], [["0", "0"]] * 4),
+          failing={"distribution": ["1/4"] * 4, "twist": ["0", "1", "1"], "speed_bounds": ["9/4", "1", "1", "9/4"]})),
+    # The lift (0, 1) at (1,0) is w_L = (0, 1, 1): the counter-clockwise rotation about the pin, twist (0, 1, 1),
+    # keeps the pin's power 0; its speeds at the legs are sqrt(5), 1, 1, sqrt(5) <= 9/4, so friction resists at
+    # most (1/8)(9/4 + 1 + 1 + 9/4) = 13/16 < t.w_L = 2.
+    ("fixture_pin_lift", "moves", "valid",
+     hold(False, twist=["0", "1", "1"], reading={"label": "+", "point": ["-1", "0"]}, speed_bounds=["9/4", "1", "1", "9/4"])),
+    ("fixture_pin_lift", "into_the_pin", "invalid:power|twist: power -1 against contacts[0] edge normal",
+     hold(False, twist=["-1", "0", "0"], speed_bounds=["1", "1", "1", "1"])),
+    ("fixture_pin_lift", "speed_bound_too_small", "invalid:speed|speed_bounds[0]: u^2 = 4 is less than |v_i(q)|^2 = 5",
+     hold(False, twist=["0", "1", "1"], speed_bounds=["2", "1", "1", "9/4"])),
+    ("fixture_pin_lift", "support_forces_on_failure", 'invalid:keys|key "support_forces" is not allowed when "holds" is false',
+     hold(False, twist=["0", "1", "1"], speed_bounds=["9/4", "1", "1", "9/4"], support_forces=[["0", "0"]] * 4)),
+    # The pull (1/2, 0) at the centre: away from the pin; the four legs just hold it, each (-1/8, 0) on its circle.
+    # The translation (1, 0, 0) meets exactly the friction bound 4 (1/8) 1 = 1/2 = t.w_L: a stick/slide certificate
+    # would call that "slides"; a hold needs more power than the bound, so it proves nothing here.
+    ("fixture_pin_pull", "holds_on_the_boundary", "valid",
+     hold(True, combination=[], support_forces=[["-1/8", "0"]] * 4)),
+    ("fixture_pin_pull", "power_equals_bound", "invalid:power|twist: power against the load t.w_L = 1/2 is not more than sum mu_i f_i u_i = 1/2",
+     hold(False, twist=["1", "0", "0"], speed_bounds=["1", "1", "1", "1"])),
+    # No support: hold is equilibrium (section 3.3): the floor's two cone edges carry the block's weight.
+    ("block_corner_mu_1_2_gravity", "hold_without_support", "valid", None),
+    ("block_corner_mu_1_2_gravity", "hold_with_support_forces", 'invalid:keys|key "support_forces" is not allowed when "holds" is true and the scene has no support',
+     None),
+    # The pinned table, every leg force unknown: F's vertices are the diagonal barbells (1/2, 0, 1/2, 0) and
+    # (0, 1/2, 0, 1/2). (1/2, 0, 0): each holds it with the forces (-1/4, 0) at its two legs.
+    ("table_pinned_nudged", "holds_for_every", "valid",
+     hold(True, vertices=[hold_witness(["1/2", "0", "1/2", "0"], [], [["-1/4", "0"], ["0", "0"], ["-1/4", "0"], ["0", "0"]]),
+                          hold_witness(["0", "1/2", "0", "1/2"], [], [["0", "0"], ["-1/4", "0"], ["0", "0"], ["-1/4", "0"]])])),
+    ("table_pinned_nudged", "missing_vertex", "invalid:vertex|vertices: the vertex (0, 1/2, 0, 1/2) of the admissible distributions has no witness",
+     hold(True, vertices=[hold_witness(["1/2", "0", "1/2", "0"], [], [["-1/4", "0"], ["0", "0"], ["-1/4", "0"], ["0", "0"]])])),
+    # (3/2, 0, 0): the translation (1, 0, 0) leaves the pin (power 1 >= 0); every speed is 1 and mu_i u_i = 1 <= y0 = 1,
+    # so friction resists at most y0 W = 1 < 3/2 under every distribution.
+    ("table_pinned_shoved", "fails_for_every", "valid",
+     hold(False, twist=["1", "0", "0"], speed_bounds=["1", "1", "1", "1"], dual=["1", "0", "0"])),
+    ("table_pinned_shoved", "fails_without_dual", 'invalid:keys|missing required key "dual"',
+     hold(False, twist=["1", "0", "0"], speed_bounds=["1", "1", "1", "1"])),
+    # (1/2, 1/2, 9/10): held by the diagonal (1,1)-(-1,-1) (the stick witness of section 6.3, negated: forces on
+    # the body), not by the other: the rotation (1, 1, 1) about (-1, 1) leaves the pin (power 1), t.w_L = 19/10 and
+    # friction resists at most (1/2)(0 + 17/6) = 17/12.
+    ("table_pinned_pushed", "depends", "valid",
+     hold("depends", holding=hold_witness(["1/2", "0", "1/2", "0"], [], [["-1/40", "-19/40"], ["0", "0"], ["-19/40", "-1/40"], ["0", "0"]]),
+          failing={"distribution": ["0", "1/2", "0", "1/2"], "twist": ["1", "1", "1"], "speed_bounds": ["2", "0", "2", "17/6"]})),
+    ("table_pinned_pushed", "holding_outside_F", "invalid:F|holding.distribution: the forces sum to 1/2, not the weight 1",
+     hold("depends", holding=hold_witness(["1/4", "0", "1/4", "0"], [], [["-1/40", "-19/40"], ["0", "0"], ["-19/40", "-1/40"], ["0", "0"]]),
+          failing={"distribution": ["0", "1/2", "0", "1/2"], "twist": ["1", "1", "1"], "speed_bounds": ["2", "0", "2", "17/6"]})),
     ("barbell_known", "vertices_on_known", 'invalid:keys|key "vertices" is not allowed when "motion" is "sticks" and every support force is given',
      motion("sticks", [F(1, 4), 0, 0], vertices=[stick_witness(["1/2", "1/2"], [["1/8", "0"], ["1/8", "0"]])])),
 ]
@@ -353,7 +440,7 @@ CERTS = [
 # ----------------------------------------------------------------------------------------------
 # An independent exact checker (Python fractions)
 
-PROPERTIES = ("force_closure", "form_closure", "equilibrium", "motion")
+PROPERTIES = ("force_closure", "form_closure", "equilibrium", "motion", "hold")
 SCENE_NUMBER = re.compile(r"[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?|[+-]?\d+/\d+")
 RATIONAL = re.compile(r"-?(0|[1-9][0-9]*)(/[1-9][0-9]*)?")
 
@@ -431,6 +518,25 @@ def gauss_solve(columns, b):
     if any(A[r][n] != 0 for r in range(n, 3)):
         return None
     return [A[r][n] for r in range(n)]
+
+
+def vertices_of_F(pts, given, W, c):
+    """The vertices of F by brute force: every set S of at most three unknown points whose columns (1, x, y) are
+    independent and give a strictly positive solution of the three rows (and the given forces alone when the rest
+    is zero)."""
+    unknown = [i for i, q in enumerate(pts) if q[3] is None]
+    b = [W - sum(given)] + [W * c[k] - sum(f * q[k] for f, q in zip(given, pts)) for k in range(2)]
+    out = []
+    for size in range(0, 4):
+        for S in itertools.combinations(unknown, size):
+            x = [] if size == 0 else gauss_solve([(F(1), pts[i][0], pts[i][1]) for i in S], b)
+            if (size == 0 and any(b)) or x is None or any(v <= 0 for v in x):
+                continue
+            f = list(given)
+            for i, v in zip(S, x):
+                f[i] = v
+            out.append(f)
+    return out
 
 
 def verify_motion(scene, cert):
@@ -519,36 +625,116 @@ def verify_motion(scene, cert):
         if not sticks(f, w["support_forces"]):
             return "stick"
         wit.append(f)
-    unknown = [i for i, q in enumerate(pts) if q[3] is None]
-    b = [W - sum(given)] + [W * c[k] - sum(f * q[k] for f, q in zip(given, pts)) for k in range(2)]
-    for size in range(0, 4):
-        for S in itertools.combinations(unknown, size):
-            if size == 0:
-                if any(b):
-                    continue
-                x = []
-            else:
-                x = gauss_solve([(F(1), pts[i][0], pts[i][1]) for i in S], b)
-                if x is None or any(v <= 0 for v in x):
-                    continue
-            f = list(given)
-            for i, v in zip(S, x):
-                f[i] = v
-            if f not in wit:
-                return "vertex"
-    return None
+    return None if all(f in wit for f in vertices_of_F(pts, given, W, c)) else "vertex"
+
+
+def verify_hold(scene, cert):
+    """verify() for property "hold" (section 7): None if valid, else a short reason. Independent of verify_motion:
+    closed discs, contact weights, strict power, the vertices of F by brute force."""
+    load = load_wrench(scene)
+    if load is None:
+        return "no load"
+    gens = [generators(c, True) for c in scene.get("contacts", [])]
+    sup = scene.get("support")
+    pts = [] if sup is None else [
+        (number(q["at"][0]), number(q["at"][1]), number(q.get("mu", sup.get("mu"))),
+         None if "force" not in q else number(q["force"])) for q in sup["points"]]
+    known = all(f is not None for *_, f in pts)
+    claim = cert["holds"]
+    if claim == "depends" and known:
+        return "depends known"
+    base = {"wrenchkit_certificate", "property", "holds"}
+    if claim is True:
+        want = ({"combination"} | ({"support_forces"} if sup else set())) if known else {"vertices"}
+    elif claim is False:
+        want = {"twist"} | ({"speed_bounds"} if sup else set()) | (set() if known else {"dual"})
+    else:
+        want = {"holding", "failing"}
+    if set(cert) - {"reading"} != base | want or ("reading" in cert and claim is not False):
+        return "keys"
+    given = [f or F(0) for *_, f in pts]
+    if sup is not None and not known:
+        W, c = number(sup["weight"]), [number(v) for v in sup.get("pressure_center", scene.get("body", {}).get("com"))]
+    else:
+        W, c = sum(given), None
+
+    def in_F(f):
+        return (len(f) == len(pts) and all(v >= 0 for v in f) and all(q[3] is None or q[3] == v for q, v in zip(pts, f))
+                and sum(f) == W and all(sum(v * q[k] for v, q in zip(f, pts)) == W * c[k] for k in range(2)))
+
+    def holds(f, combination, forces):
+        names = [(t["contact"], t["edge"]) for t in combination]
+        if len(set(names)) != len(names):
+            return "duplicate"
+        total = list(load)
+        for t in combination:
+            i, e, w = t["contact"], t["edge"], rational(t["weight"])
+            if not (type(i) is int and 0 <= i < len(gens)) or e not in gens[i]:
+                return "reference"
+            if w <= 0:
+                return "weight"
+            total = [a + w * g for a, g in zip(total, gens[i][e])]
+        g = [[rational(a) for a in gi] for gi in forces]
+        if len(g) != len(pts):
+            return "disc"
+        for (a, b), q, fi in zip(g, pts, f):
+            if a * a + b * b > (q[2] * fi) ** 2:  # the closed disc
+                return "disc"
+            total = [total[0] + a, total[1] + b, total[2] + q[0] * b - q[1] * a]
+        return None if total == [0, 0, 0] else "sum"
+
+    def fails(f, twist, u, dual):
+        t = [rational(v) for v in twist]
+        for g in (g for cc in gens for g in cc.values()):
+            if sum(a * b for a, b in zip(t, g)) < 0:
+                return "power"
+        u = [rational(v) for v in u]
+        if len(u) != len(pts) or any(v < 0 or v * v < (t[0] - t[2] * y) ** 2 + (t[1] + t[2] * x) ** 2
+                                     for v, (x, y, *_) in zip(u, pts)):
+            return "speed"
+        if dual is None:
+            bound = sum(q[2] * fi * v for q, fi, v in zip(pts, f, u))
+        else:
+            y = [rational(v) for v in dual]
+            if any(q[3] is None and q[2] * v > y[0] + y[1] * q[0] + y[2] * q[1] for q, v in zip(pts, u)):
+                return "dual"
+            bound = (sum(q[2] * fi * v for q, fi, v in zip(pts, given, u) if q[3] is not None) + y[0] * (W - sum(given))
+                     + sum(y[1 + k] * (W * c[k] - sum(fi * q[k] for fi, q in zip(given, pts))) for k in range(2)))
+        return None if sum(a * b for a, b in zip(t, load)) > bound else "power"
+
+    if claim is True and known:
+        return holds(given, cert["combination"], cert.get("support_forces", []))
+    if claim is False:
+        return fails(given, cert["twist"], cert.get("speed_bounds", []), None if known else cert["dual"])
+    if claim == "depends":
+        h, fl = cert["holding"], cert["failing"]
+        f1, f2 = [rational(v) for v in h["distribution"]], [rational(v) for v in fl["distribution"]]
+        if not in_F(f1) or not in_F(f2):
+            return "F"
+        return holds(f1, h["combination"], h["support_forces"]) or fails(f2, fl["twist"], fl["speed_bounds"], None)
+    wit = []
+    for w in cert["vertices"]:
+        f = [rational(v) for v in w["distribution"]]
+        if not in_F(f):
+            return "F"
+        reason = holds(f, w["combination"], w["support_forces"])
+        if reason:
+            return reason
+        wit.append(f)
+    return None if all(f in wit for f in vertices_of_F(pts, given, W, c)) else "vertex"
 
 
 def verify(scene, cert):
     """Returns None if cert proves its claim for scene, else a short reason."""
     keys = set(cert)
     allowed = {"wrenchkit_certificate", "property", "holds", "combination", "independent", "twist", "reading",
-               "load", "motion", "support_forces", "speed_bounds", "dual", "vertices", "sticking", "sliding"}
+               "load", "motion", "support_forces", "speed_bounds", "dual", "vertices", "sticking", "sliding",
+               "holding", "failing"}
     if keys - allowed:
         return "unknown key"
-    if cert.get("wrenchkit_certificate") == 1 and cert.get("property") == "motion":
+    if cert.get("wrenchkit_certificate") == 1 and cert.get("property") in ("motion", "hold"):
         try:
-            return verify_motion(scene, cert)
+            return (verify_motion if cert["property"] == "motion" else verify_hold)(scene, cert)
         except (ValueError, KeyError, TypeError) as e:
             return f"malformed: {e}"
     if cert.get("wrenchkit_certificate") != 1 or cert.get("property") not in PROPERTIES:
@@ -702,6 +888,10 @@ def computed(scene_name, desc):
         terms = balancing_weights(gravity, accept=lambda x: len(x) == 3 and 0 not in x and min(x) < 0)
         k, bad = next((k, u) for k, u in enumerate(terms) if F(u["weight"]) < 0)
         return f'invalid:weight|combination[{k}].weight: "{bad["weight"]}" is not strictly positive', equilibrium_true(terms)
+    if (scene_name, desc) == (gravity, "hold_without_support"):  # equilibrium's weights, as a hold
+        return "valid", hold(True, combination=balancing_weights(gravity, lambda i, e: i in (0, 1)))
+    if (scene_name, desc) == (gravity, "hold_with_support_forces"):
+        return None, hold(True, combination=balancing_weights(gravity, lambda i, e: i in (0, 1)), support_forces=[])
     if (scene_name, desc) == ("block_corner_mu_1_2_push", "equilibrium"):  # the wall alone
         return "valid", equilibrium_true(balancing_weights("block_corner_mu_1_2_push", lambda i, e: i in (2, 3)))
     if (scene_name, desc) == ("block_corner_mu_1_2_pull", "push_weights"):

@@ -57,6 +57,40 @@ def test_every_equilibrium_golden(scene_file):
     assert wrenchkit.check(path, r["certificate"])["accepted"]
 
 
+EXAMPLES = SOURCE / "proofs" / "examples"
+
+
+@pytest.mark.parametrize("name,holds", [("fixture_pin_push", True), ("fixture_pin_lift", False),
+                                        ("fixture_pin_pull", True), ("table_pinned_nudged", True),
+                                        ("table_pinned_shoved", False), ("table_pinned_pushed", "depends")])
+def test_hold_of_the_worked_fixtures(name, holds):
+    path = EXAMPLES / f"{name}.scene.json"
+    for mode in ("hybrid", "exact"):
+        r = wrenchkit.hold(path, mode=mode)
+        assert r["holds"] == holds
+        assert wrenchkit.check(path, r["certificate"])["accepted"]
+        assert wrenchkit.check(path, r["certificate_json"])["accepted"]
+    if holds is False:
+        assert r["motion"]["kind"] in ("rotation", "translation")
+
+
+def test_hold_reads_the_motion_and_agrees_with_the_command():
+    r = wrenchkit.hold(EXAMPLES / "fixture_pin_lift.scene.json", mode="exact")
+    assert r["motion"]["kind"] == "rotation" and r["motion"]["center"] == (Fraction(-1), Fraction(0))
+    assert r["motion"]["sense"] == "counter-clockwise"
+    scene = json.loads((EXAMPLES / "fixture_pin_push.scene.json").read_text())
+    held = wrenchkit.hold(scene)
+    assert held["holds"] is True and len(held["support_forces"]) == 4
+    with pytest.raises(wrenchkit.UndecidedError):
+        wrenchkit.hold(EXAMPLES / "table_pinned_pushed.scene.json", mode="float")
+    with pytest.raises(wrenchkit.InputError, match="load: the scene has no load"):
+        wrenchkit.hold({"contacts": [{"at": [0, 0], "normal": [0, 1]}]})
+    if CLI:
+        out = subprocess.run([CLI, "hold", "--json", str(EXAMPLES / "fixture_pin_lift.scene.json")],
+                             capture_output=True, text=True, check=True).stdout
+        assert json.loads(out)["certificate"] == wrenchkit.hold(EXAMPLES / "fixture_pin_lift.scene.json")["certificate"]
+
+
 def ladder(mu):
     return {"body": {"com": ["-1/2", "7/2"]},
             "contacts": [{"at": [0, 0], "normal": [0, 1], "mu": mu}, {"at": [-4, 3], "normal": [1, 0], "mu": mu}],

@@ -50,7 +50,7 @@ from . import _core  # noqa: E402  (the exception classes above are handed to th
 
 _core._set_exceptions(InputError, InternalError, UndecidedError)
 
-__all__ = ["Scene", "closure", "force_closure", "form_closure", "equilibrium", "labels", "dual",
+__all__ = ["Scene", "closure", "force_closure", "form_closure", "equilibrium", "hold", "labels", "dual",
            "limit_surface", "sliding", "check", "reference", "batch", "closure_arrays", "equilibrium_arrays",
            "stick_slide_arrays", "DECIDED_BY", "MOTION", "MOTION_DECIDED_BY", "InputError", "UndecidedError",
            "InternalError"]
@@ -198,6 +198,20 @@ def form_closure(scene):
 def equilibrium(scene, mode="hybrid"):
     """Can the contacts balance the scene's load? {"balanced", "load": (fx, fy, m), "certificate", ...}."""
     return _core.equilibrium(_scene(scene), mode)
+
+
+def hold(scene, mode="hybrid"):
+    """Fixtures on a support (docs/fixtures.md): can the contacts together with the support's friction hold the
+    body against the scene's in-plane load? {"holds": True | False | "depends" | "undecided", "load": (fx, fy, m),
+    "decided_by", "support": "none" | "known" | "unknown", "contact_forces" and "support_forces" (when held),
+    "motion": {"twist", "kind": "rotation" | "translation", "center" / "direction", "sense", "text"} (when not),
+    "certificate": dict, "certificate_json": str, ...}. The certificate was accepted by the independent checker.
+    "undecided" (hybrid, exact: with "undecided_why") only within the resolution of the exact LPs of a load that
+    friction can just carry; mode="float" raises UndecidedError where its float witnesses decide nothing.
+    """
+    r = _core.hold(_scene(scene), mode)
+    r["certificate"] = _json.loads(r["certificate_json"]) if r["certificate_json"] else None
+    return r
 
 
 def labels(scene, reading="friction", mode="hybrid"):

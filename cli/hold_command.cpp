@@ -1,0 +1,151 @@
+// wrenchkit hold: can the contacts, together with the support's friction, hold the body against the scene's load
+// (docs/fixtures.md, exact/fixture/hold.h)? With a checked certificate either way.
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "cli/common.h"
+#include "exact/io/json_writer.h"
+#include "exact/pipeline/hold_answer.h"
+
+namespace wrenchkit::cli {
+
+namespace {
+
+const char* support_kind(const Hold_answer& a) { return !a.has_support ? "none" : a.unknown ? "unknown" : "known"; }
+
+// The motion a failing twist describes: {"twist", "kind": "rotation", "center", "sense"} or
+// {"twist", "kind": "translation", "direction"} (the velocity's direction), and the words.
+void write_motion(Json_writer& w, const std::array<Rational, 3>& t) {
+  w.object().key("twist").rationals(t);
+  if (t[2] != 0) {
+    w.member("kind", "rotation").key("center").array().rational(Rational(-t[1] / t[2])).rational(Rational(t[0] / t[2]));
+    w.end_array().member("sense", t[2] > 0 ? "counter-clockwise" : "clockwise");
+  } else {
+    const std::array<Integer, 2> d = primitive(t[0], t[1]);
+    w.member("kind", "translation").key("direction").array().rational(d[0]).rational(d[1]).end_array();
+  }
+  w.member("text", motion_words(t)).end_object();
+}
+
+void write_contact_forces(Json_writer& w, const Hold_witness& h) {
+  write_combination(w.key("contact_forces"), h.combination);
+}
+
+}  // namespace
+
+void write_hold(Json_writer& w, const Hold_item& r) {
+  const Hold_answer& a = r.answer;
+  w.member("command", "hold").member("name", r.scene.name).member("mode", mode_name(r.mode));
+  w.key("holds");
+  if (a.verdict == Hold_verdict::holds || a.verdict == Hold_verdict::fails) w.boolean(a.verdict == Hold_verdict::holds);
+  else w.string(hold_word(a.verdict));
+  w.member("decided_by", a.decided_by);
+  w.key("load").array().rational(a.load.fx).rational(a.load.fy).rational(a.load.m).end_array();
+  w.member("generators", a.generators).member("support", support_kind(a));
+  if (a.rounds) w.member("lp_rounds", a.rounds);
+  if (a.unknown) {
+    w.key("extreme_distributions").array();
+    for (const auto& f : a.extreme) w.rationals(f);
+    w.end_array().key("per_extreme_distribution").array();
+    for (const Hold_verdict v : a.per_vertex) w.string(hold_word(v));
+    w.end_array();
+  }
+  switch (a.verdict) {
+    case Hold_verdict::holds:
+      if (a.holding) {
+        write_contact_forces(w, *a.holding);
+        if (a.has_support) write_support_forces(w.key("support_forces"), a.holding->forces);
+      }
+      break;
+    case Hold_verdict::fails:
+      write_motion(w.key("motion"), a.failing->twist);
+      break;
+    case Hold_verdict::depends:
+      w.key("witnesses").object().key("holds").object().key("distribution").rationals(a.holding->distribution);
+      w.end_object().key("fails").object().key("distribution").rationals(a.failing->distribution);
+      write_motion(w.key("motion"), a.failing->twist);
+      w.end_object().end_object();
+      break;
+    case Hold_verdict::undecided:
+      w.member("undecided_why", a.undecided_why);
+      break;
+  }
+  if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
+}
+
+namespace {
+
+std::string forces_text(const Hold_witness& h, bool support) {
+  std::ostringstream s;
+  if (h.combination.empty()) s << "no contact force";
+  else s << "contact forces";
+  for (const auto& [ref, weight] : h.combination)
+    s << " " << human_number(weight) << "·c" << ref.contact << "." << edge_name(ref.edge);
+  if (support) {
+    std::size_t carrying = 0;
+    for (const Vec2& g : h.forces) carrying += g.x != 0 || g.y != 0;
+    s << "; support friction at " << carrying << " of " << h.forces.size() << " point(s)";
+  }
+  return s.str();
+}
+
+}  // namespace
+
+std::string hold_human(const Hold_item& r) {
+  const Hold_answer& a = r.answer;
+  std::ostringstream s;
+  s << "load: the wrench " << vec_text({a.load.fx, a.load.fy, a.load.m}) << " on the body (force, moment about the origin)\n"
+    << "contacts: " << a.generators << " friction generator(s); support: ";
+  if (!a.has_support) s << "none (hold is equilibrium)";
+  else if (!a.unknown) s << r.scene.support->points.size() << " point(s), every force given";
+  else
+    s << r.scene.support->points.size() << " point(s), forces not all given: " << a.extreme.size()
+      << " extreme admissible distribution(s)";
+  s << "\n";
+  switch (a.verdict) {
+    case Hold_verdict::holds:
+      s << "holds: yes — the contacts and the support's friction can balance the load";
+      if (a.unknown) s << " under every admissible distribution (every extreme one holds)";
+      s << "\n";
+      if (a.holding) s << "  " << forces_text(*a.holding, a.has_support) << " cancel the load exactly\n";
+      break;
+    case Hold_verdict::fails:
+      s << "holds: no — the body moves: " << motion_words(a.failing->twist) << " (twist "
+        << vec_text(a.failing->twist) << ")";
+      if (a.unknown) s << " under every admissible distribution";
+      s << "\n  every contact allows it, and the load drives it harder than the support's friction can resist\n";
+      break;
+    case Hold_verdict::depends:
+      s << "holds: depends on the distribution — it holds with f = " << distribution_text(a.holding->distribution)
+        << " and fails with f = " << distribution_text(a.failing->distribution) << " (then "
+        << motion_words(a.failing->twist) << ")\n";
+      break;
+    case Hold_verdict::undecided:
+      s << "holds: undecided — " << a.undecided_why << "\n";
+      break;
+  }
+  s << "decided by: " << a.decided_by << " (" << mode_name(r.mode) << " mode)\n";
+  if (!r.certificate.empty()) s << "certificate accepted by the independent checker (exact arithmetic)\n";
+  return s.str();
+}
+
+Scene_answer prepare_hold_json(const Options& o) {
+  return [request = request_of(o)](Json_writer& w, const std::string& text, const std::string& source) {
+    write_hold(w, answered(answer_hold(text, source, request)));
+  };
+}
+
+int run_hold(const Options& o, const std::string& scene_text, const std::string& source) {
+  const Hold_item r = answered(answer_hold(scene_text, source, request_of(o)));
+  if (!o.certificate_file.empty()) {
+    if (r.certificate.empty())
+      throw Failure(Status::undecided, cli_message(Status::undecided, "hold is undecided: no certificate to write (" +
+                                                                          r.answer.undecided_why + ")"));
+    write_file(o.certificate_file, r.certificate + "\n");
+  }
+  return write_answer(o, [&](Json_writer& w) { write_hold(w, r); },
+                      [&] { return scene_line(r.scene.name, source) + hold_human(r); });
+}
+
+}  // namespace wrenchkit::cli

@@ -1,0 +1,460 @@
+// [HD-1] hold: contacts and the support's friction against the load (docs/theory-sliding.md §5). Oracles: the
+// special cases (no support = equilibrium; no contacts = stick/slide except on the limit surface; a single
+// frictionless pin pushing = the pushed object's closed limit surface), the four-legged table and the dinner
+// plate over every distribution, and an independent brute force — LPs in double on inscribed and circumscribed
+// 256-gons written here — on random fixtures (3–8 support points, 1–2 frictional contacts) with loads 10^-3
+// relative from their threshold; every certificate accepted by the independent checker, tampered ones rejected.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "exact/fixture/hold.h"
+#include "exact/io/input_error.h"
+#include "exact/io/scene.h"
+#include "exact/pipeline/hold_answer.h"
+#include "exact/sliding/sliding.h"
+#include "exact/statics/equilibrium.h"
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+
+const Input_limits kLimits;
+
+std::string num(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", v);
+  return b;
+}
+
+// hold through the pipeline (the independent checker accepts its certificate, or the item says why not).
+Hold_item hold_of(const std::string& text, Mode mode) {
+  Request r;
+  r.mode = mode;
+  return answer_hold(text, "test", r);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The brute force: maximise t subject to  Σ λ_k g_k + Σ_ij λ_ij (u_j, r_i × u_j) + t w_L = 0,
+// Σ_j λ_ij ≤ ρ_i s (s = 1: inscribed N-gons, s = 1/cos(π/N): circumscribed), 0 ≤ t ≤ T, all ≥ 0 — a dense
+// two-phase simplex in long double (Dantzig's rule, Bland's after many pivots). t_in ≤ t* ≤ t_out, where t* is the
+// largest scale of the load that the contacts and the support's friction hold.
+struct Dense_lp {
+  // maximise c·x, A x = b, x ≥ 0; returns the optimum (−inf if infeasible).
+  static long double solve(std::vector<std::vector<long double>> A, std::vector<long double> b,
+                           const std::vector<long double>& c) {
+    const std::size_t m = A.size(), n = c.size();
+    for (std::size_t i = 0; i < m; ++i)
+      if (b[i] < 0) {
+        for (auto& v : A[i]) v = -v;
+        b[i] = -b[i];
+      }
+    // Tableau with m artificials: columns 0..n-1, n..n+m-1, rhs last.
+    const std::size_t N = n + m;
+    std::vector<std::vector<long double>> T(m + 1, std::vector<long double>(N + 1, 0));
+    std::vector<std::size_t> basis(m);
+    for (std::size_t i = 0; i < m; ++i) {
+      for (std::size_t j = 0; j < n; ++j) T[i][j] = A[i][j];
+      T[i][n + i] = 1;
+      T[i][N] = b[i];
+      basis[i] = n + i;
+    }
+    const auto run = [&](const std::vector<long double>& cost, std::size_t columns) {
+      // objective row: reduced costs z_j − c_j
+      for (std::size_t j = 0; j <= N; ++j) T[m][j] = j < N ? -cost[j] : 0;
+      for (std::size_t i = 0; i < m; ++i) {
+        const long double cb = cost[basis[i]];
+        if (cb == 0) continue;
+        for (std::size_t j = 0; j <= N; ++j) T[m][j] += cb * T[i][j];
+      }
+      for (int it = 0; it < 100000; ++it) {
+        std::size_t e = N;
+        long double best = -1e-13L;
+        for (std::size_t j = 0; j < columns; ++j) {
+          if (T[m][j] < best) {
+            best = T[m][j];
+            e = j;
+            if (it > 5000) break;  // Bland: the first improving column
+          }
+        }
+        if (e == N) return true;
+        std::size_t l = m;
+        long double ratio = 0;
+        for (std::size_t i = 0; i < m; ++i)
+          if (T[i][e] > 1e-13L) {
+            const long double r = T[i][N] / T[i][e];
+            if (l == m || r < ratio - 1e-18L || (r <= ratio + 1e-18L && basis[i] < basis[l])) l = i, ratio = r;
+          }
+        if (l == m) return false;  // unbounded
+        const long double p = T[l][e];
+        for (auto& v : T[l]) v /= p;
+        for (std::size_t i = 0; i <= m; ++i) {
+          if (i == l || T[i][e] == 0) continue;
+          const long double f = T[i][e];
+          for (std::size_t j = 0; j <= N; ++j) T[i][j] -= f * T[l][j];
+        }
+        basis[l] = e;
+      }
+      return true;
+    };
+    std::vector<long double> phase1(N, 0);
+    for (std::size_t i = 0; i < m; ++i) phase1[n + i] = -1;
+    run(phase1, N);
+    if (T[m][N] < -1e-9L) return -INFINITY;
+    // drive out artificials at zero level where possible, then phase 2 without them
+    std::vector<long double> phase2(N, 0);
+    for (std::size_t j = 0; j < n; ++j) phase2[j] = c[j];
+    for (std::size_t i = 0; i < m; ++i)
+      if (basis[i] >= n) phase2[basis[i]] = 0;
+    if (!run(phase2, n)) return INFINITY;
+    long double v = 0;
+    for (std::size_t i = 0; i < m; ++i)
+      if (basis[i] < n) v += c[basis[i]] * T[i][N];
+    return v;
+  }
+};
+
+struct Fixture {
+  std::vector<std::array<double, 3>> gens;  // friction generators
+  std::vector<std::array<double, 3>> pts;   // support points x, y, ρ = μ f
+  std::array<double, 3> load;               // w_L
+};
+
+long double gauge_lp(const Fixture& f, int sides, bool outer, double cap) {
+  const std::size_t k = f.pts.size(), m = f.gens.size(), n = static_cast<std::size_t>(sides);
+  const std::size_t cols = m + k * n + k + 2;  // λ_k, λ_ij, s_i, t, s_t
+  std::vector<std::vector<long double>> A(3 + k + 1, std::vector<long double>(cols, 0));
+  std::vector<long double> b(3 + k + 1, 0), c(cols, 0);
+  const long double pi = 3.141592653589793238462643383279502884L;
+  for (std::size_t j = 0; j < m; ++j)
+    for (std::size_t r = 0; r < 3; ++r) A[r][j] = f.gens[j][r];
+  for (std::size_t i = 0; i < k; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      const long double a = 2 * pi * (static_cast<long double>(j) + 0.5L) / static_cast<long double>(n);
+      const long double ux = std::cos(a), uy = std::sin(a);
+      const std::size_t col = m + i * n + j;
+      A[0][col] = ux, A[1][col] = uy, A[2][col] = f.pts[i][0] * uy - f.pts[i][1] * ux;
+      A[3 + i][col] = 1;
+    }
+  const std::size_t t = m + k * n + k;
+  for (std::size_t r = 0; r < 3; ++r) A[r][t] = f.load[r];
+  for (std::size_t i = 0; i < k; ++i) {
+    A[3 + i][m + k * n + i] = 1;
+    b[3 + i] = f.pts[i][2] / (outer ? std::cos(pi / static_cast<long double>(n)) : 1.0L);
+  }
+  A[3 + k][t] = 1, A[3 + k][t + 1] = 1, b[3 + k] = cap;
+  c[t] = 1;
+  return Dense_lp::solve(A, b, c);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Special cases
+
+// No support: hold is equilibrium (theory.md §9), boundary included, on every equilibrium golden scene and on
+// random scenes with loads; every mode, every certificate checked.
+TEST(HoldSpecialCases, NoSupportIsEquilibrium) {
+  int scenes = 0;
+  for (const std::string& file : test::scene_files("tests/golden/equilibrium")) {
+    const std::string text = test::read_text(file);
+    const Scene s = read_scene(text, kLimits);
+    if (!s.load || s.support) continue;
+    const bool balanced = decide_equilibrium(s, Mode::exact).balanced;
+    for (const Mode m : {Mode::exact, Mode::hybrid}) {
+      const Hold_item h = hold_of(text, m);
+      ASSERT_EQ(h.status, Status::answered) << file << ": " << h.message;
+      EXPECT_EQ(h.answer.verdict, balanced ? Hold_verdict::holds : Hold_verdict::fails) << file;
+      EXPECT_TRUE(test::checker_accepts(text, h.certificate)) << file;
+    }
+    ++scenes;
+  }
+  EXPECT_GE(scenes, 10);
+}
+
+std::string known_support(const std::vector<std::array<std::string, 3>>& pts, const std::string& mu) {
+  std::string s = R"("support": {"mu": )" + mu + R"(, "points": [)";
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    s += std::string(i ? ", " : "") + R"({"at": [)" + pts[i][0] + ", " + pts[i][1] + R"(], "force": ")" + pts[i][2] + "\"}";
+  return s + "]}";
+}
+
+// No contacts: hold is "−w_L ∈ LS(f)": where stick/slide decides sticks (interior), hold holds; where hold fails
+// (strictly outside), stick/slide slides. On the limit surface they differ by convention: the barbell's (1/2, 0, 0)
+// slides and holds, with its forces on their circles.
+TEST(HoldSpecialCases, NoContactsIsStickSlideExceptOnTheSurface) {
+  std::mt19937_64 rng(test::seed(20261201));
+  std::uniform_int_distribution<int> coord(-4, 4), force(1, 4);
+  std::uniform_real_distribution<double> dir(-1, 1), scale(0.3, 1.7);
+  int agree = 0;
+  for (int n = 0; n < 60; ++n) {
+    std::vector<std::array<std::string, 3>> pts;
+    const int k = 2 + n % 5;
+    for (int i = 0; i < k; ++i)
+      pts.push_back({std::to_string(coord(rng)), std::to_string(coord(rng)), std::to_string(force(rng))});
+    const std::string load = "[" + num(dir(rng) * scale(rng)) + ", " + num(dir(rng) * scale(rng)) + ", " +
+                             num(dir(rng) * scale(rng) * 2) + "]";
+    const std::string text =
+        R"({"wrenchkit": 1, )" + known_support(pts, "\"1/4\"") + R"(, "load": {"wrench": )" + load + "}}";
+    const Scene s = read_scene(text, kLimits);
+    const Vec3q p = as_vec(load_wrench(s));
+    const Motion_decision m = decide_motion(merge_support(*s.support), p, Mode::hybrid, 16);
+    const Hold_item h = hold_of(text, Mode::hybrid);
+    ASSERT_EQ(h.status, Status::answered) << test::dump_failure(text, "hold_nocontact_" + std::to_string(n));
+    if (h.answer.verdict != Hold_verdict::undecided) {
+      EXPECT_TRUE(test::checker_accepts(text, h.certificate));
+    }
+    if (m.motion == Motion::sticks) {
+      EXPECT_EQ(h.answer.verdict, Hold_verdict::holds) << test::dump_failure(text, "nc");
+    }
+    if (h.answer.verdict == Hold_verdict::fails) {
+      EXPECT_EQ(m.motion, Motion::slides) << test::dump_failure(text, "nc");
+    }
+    agree += (m.motion == Motion::sticks) == (h.answer.verdict == Hold_verdict::holds);
+  }
+  EXPECT_GE(agree, 55);
+  // The barbell: forces 1/2 at (0, ±1), μ = 1/2; (1/2, 0, 0) needs both forces (1/4, 0) on their circles.
+  const std::string barbell = R"({"wrenchkit": 1, "support": {"mu": "1/2", "points": [{"at": [0, -1], "force": "1/2"},
+      {"at": [0, 1], "force": "1/2"}]}, "load": {"wrench": ["1/2", 0, 0]}})";
+  for (const Mode mode : {Mode::exact, Mode::hybrid}) {
+    const Hold_item h = hold_of(barbell, mode);
+    ASSERT_EQ(h.status, Status::answered) << h.message;
+    EXPECT_EQ(h.answer.verdict, Hold_verdict::holds);
+    EXPECT_TRUE(test::checker_accepts(barbell, h.certificate));
+  }
+  const Scene b = read_scene(barbell, kLimits);
+  EXPECT_EQ(decide_motion(merge_support(*b.support), as_vec(load_wrench(b)), Mode::hybrid, 16).motion, Motion::slides);
+}
+
+// A single frictionless pin plus a support: a push κ along the pin's normal through the centre of friction is the
+// pushed object's translation load, κ n̂ through c, which the support carries iff κ ≤ μW (its limit surface is
+// closed; the translation's witness is rational when n̂ is). So hold iff κ ≤ μW, the threshold included.
+TEST(HoldSpecialCases, SinglePinPushThroughTheCentreOfFriction) {
+  // Support: a square's corners and its centre, forces summing to W = 2, centre of friction (0, 0); μ = 1/2.
+  const std::string support =
+      known_support({{{"1", "1", "1/4"}}, {{"-1", "1", "1/4"}}, {{"-1", "-1", "1/4"}}, {{"1", "-1", "1/4"}}, {{"0", "0", "1"}}},
+                    "\"1/2\"");
+  // The pin at (-3/5, -4/5) (on the line through c along n̂ = (3/5, 4/5)), normal n̂.
+  for (const auto& [kappa, holds] : std::vector<std::pair<std::string, bool>>{
+           {"1", true}, {"999/1000", true}, {"1001/1000", false}, {"1/2", true}, {"3", false}}) {
+    // The load κ n̂ on the pin's line, written as a force at the origin (the line passes through it).
+    const Rational k(kappa);
+    const std::string scene = R"({"wrenchkit": 1, "contacts": [{"at": ["-3/5", "-4/5"], "normal": ["3/5", "4/5"]}], )" +
+                              support + R"(, "load": {"force": [")" + to_string(Rational(k * Rational(3, 5))) +
+                              R"(", ")" + to_string(Rational(k * Rational(4, 5))) + R"("], "at": [0, 0]}})";
+    for (const Mode mode : {Mode::hybrid, Mode::exact}) {
+      const Hold_item h = hold_of(scene, mode);
+      ASSERT_EQ(h.status, Status::answered) << h.message;
+      EXPECT_EQ(h.answer.verdict, holds ? Hold_verdict::holds : Hold_verdict::fails) << kappa << " " << mode_name(mode);
+      EXPECT_TRUE(test::checker_accepts(scene, h.certificate)) << kappa;
+    }
+  }
+}
+
+// The four-legged table (theory-sliding.md §6): legs (±1, ±1), μ = 1, W = 1, c = 0, every force unknown; no
+// contacts. |f| < 1 holds for every distribution, > 1 fails for every one; a pure moment < √2 holds, > √2 fails;
+// (1/2, 1/2, 9/10) depends. The dinner plate (8 rim points of radius 5 and the centre, c = centre): a pure moment
+// 0 < m < μWR depends.
+TEST(HoldSpecialCases, TableAndPlateOverEveryDistribution) {
+  const std::string table = R"({"wrenchkit": 1, "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points":
+      [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}, "load": {"wrench": )";
+  const std::vector<std::pair<std::string, Hold_verdict>> cases = {
+      {"[\"0.99\", 0, 0]", Hold_verdict::holds},         {"[\"1.01\", 0, 0]", Hold_verdict::fails},
+      {"[\"0.6\", \"-0.7\", 0]", Hold_verdict::holds},   {"[\"0.6\", \"0.81\", 0]", Hold_verdict::fails},
+      {"[0, 0, \"1.414\"]", Hold_verdict::holds},        {"[0, 0, \"1.415\"]", Hold_verdict::fails},
+      {"[\"0.5\", \"0.5\", \"0.9\"]", Hold_verdict::depends}};
+  for (const auto& [load, want] : cases) {
+    const std::string text = table + load + "}}";
+    for (const Mode mode : {Mode::hybrid, Mode::exact}) {
+      const Hold_item h = hold_of(text, mode);
+      ASSERT_EQ(h.status, Status::answered) << h.message;
+      EXPECT_EQ(h.answer.verdict, want) << load << " " << mode_name(mode) << " " << h.answer.undecided_why;
+      EXPECT_TRUE(test::checker_accepts(text, h.certificate)) << load;
+    }
+  }
+  std::string plate = R"({"wrenchkit": 1, "support": {"mu": "1/2", "weight": 2, "pressure_center": [0, 0], "points": [)";
+  const char* rim[8][2] = {{"5", "0"}, {"3", "4"}, {"0", "5"}, {"-4", "3"}, {"-5", "0"}, {"-3", "-4"}, {"0", "-5"}, {"4", "-3"}};
+  for (const auto& r : rim) plate += std::string(R"({"at": [)") + r[0] + ", " + r[1] + "]}, ";
+  plate += R"({"at": [0, 0]}]}, "load": {"wrench": [0, 0, )";
+  for (const auto& [m, want] : std::vector<std::pair<std::string, Hold_verdict>>{
+           {"\"0.1\"", Hold_verdict::depends}, {"\"4.9\"", Hold_verdict::depends}, {"\"5.1\"", Hold_verdict::fails}}) {
+    const std::string text = plate + m + "]}}";
+    const Hold_item h = hold_of(text, Mode::hybrid);
+    ASSERT_EQ(h.status, Status::answered) << h.message;
+    EXPECT_EQ(h.answer.verdict, want) << m << " " << h.answer.undecided_why;
+    EXPECT_TRUE(test::checker_accepts(text, h.certificate)) << m;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Random fixtures against the brute force
+
+struct Random_fixture {
+  std::string text_without_load;
+  Fixture f;
+  std::array<std::string, 2> at;        // the load's point
+  std::array<double, 2> force;          // its direction (scaled below)
+};
+
+Random_fixture random_fixture(std::mt19937_64& rng, int n) {
+  std::uniform_real_distribution<double> u(-1, 1), pos(0.1, 1), mu(0.2, 0.8), cmu(0.1, 0.6);
+  const auto d3 = [](double v) {  // 3 decimals, exactly as written
+    char b[32];
+    std::snprintf(b, sizeof b, "%.3f", v);
+    return std::string(b);
+  };
+  Random_fixture r;
+  const int k = 3 + n % 6, contacts = 1 + n % 2;
+  std::string s = R"({"wrenchkit": 1, "contacts": [)";
+  for (int c = 0; c < contacts; ++c) {
+    // a contact on the unit circle pushing inward (roughly), with friction
+    const double a = 6.283185307179586 * (u(rng) + 1) / 2;
+    const std::string px = d3(1.5 * std::cos(a)), py = d3(1.5 * std::sin(a)), nx = d3(-std::cos(a) + 0.3 * u(rng)),
+                      ny = d3(-std::sin(a) + 0.3 * u(rng)), m = d3(cmu(rng));
+    s += std::string(c ? ", " : "") + R"({"at": [)" + px + ", " + py + R"(], "normal": [)" + nx + ", " + ny +
+         R"(], "mu": )" + m + "}";
+    const double X = std::stod(px), Y = std::stod(py), NX = std::stod(nx), NY = std::stod(ny), M = std::stod(m);
+    for (const double sgn : {1.0, -1.0}) {
+      const double fx = NX - sgn * M * NY, fy = NY + sgn * M * NX;
+      r.f.gens.push_back({fx, fy, X * fy - Y * fx});
+    }
+  }
+  s += R"(], "support": {"points": [)";
+  for (int i = 0; i < k; ++i) {
+    const std::string x = d3(u(rng)), y = d3(u(rng)), f = d3(pos(rng)), m = d3(mu(rng));
+    s += std::string(i ? ", " : "") + R"({"at": [)" + x + ", " + y + R"(], "force": )" + f + R"(, "mu": )" + m + "}";
+    r.f.pts.push_back({std::stod(x), std::stod(y), std::stod(f) * std::stod(m)});
+  }
+  r.text_without_load = s + "]}, ";
+  r.at = {d3(u(rng)), d3(u(rng))};
+  const double a = 6.283185307179586 * (u(rng) + 1) / 2;
+  r.force = {std::cos(a), std::sin(a)};
+  return r;
+}
+
+// hold against the brute force: the threshold scale t* of the load lies in [t_in, t_out] (256-gons); loads at
+// t_in (1 − 10^-3) hold and at t_out (1 + 10^-3) fail, and hybrid must say so with a certificate the checker
+// accepts; float either agrees or is undecided (never wrong); exact agrees on a subset (it is slower).
+TEST(HoldOracle, RandomFixturesAgainstPolygonalBruteForce) {
+  std::mt19937_64 rng(test::seed(20261202));
+  int compared = 0, float_decided = 0, exact_compared = 0, capped = 0;
+  for (int n = 0; n < 80; ++n) {
+    Random_fixture r = random_fixture(rng, n);
+    const double X = std::stod(r.at[0]), Y = std::stod(r.at[1]);
+    r.f.load = {r.force[0], r.force[1], X * r.force[1] - Y * r.force[0]};
+    const double cap = 1e6;
+    const long double t_in = gauge_lp(r.f, 256, false, cap), t_out = gauge_lp(r.f, 256, true, cap);
+    ASSERT_LE(t_in, t_out * (1 + 1e-9L)) << n;
+    if (t_in >= cap * 0.999) {  // the contacts alone hold every multiple of the load
+      ++capped;
+      continue;
+    }
+    if (!(t_out / t_in - 1 < 1e-4L)) continue;  // only where the 256-gons pin the threshold well below 10^-3
+    for (const bool above : {false, true}) {
+      const double scale = static_cast<double>(above ? t_out * (1 + 1e-3L) : t_in * (1 - 1e-3L));
+      const std::string text = r.text_without_load + R"("load": {"force": [)" + num(scale * r.force[0]) + ", " +
+                               num(scale * r.force[1]) + R"(], "at": [)" + r.at[0] + ", " + r.at[1] + "]}}";
+      const std::string tag = "hold_oracle_" + std::to_string(n) + (above ? "_above" : "_below");
+      const Hold_verdict want = above ? Hold_verdict::fails : Hold_verdict::holds;
+      const Hold_item h = hold_of(text, Mode::hybrid);
+      ASSERT_EQ(h.status, Status::answered) << h.message << " " << test::dump_failure(text, tag);
+      ASSERT_EQ(h.answer.verdict, want) << h.answer.undecided_why << " " << test::dump_failure(text, tag);
+      ASSERT_TRUE(test::checker_accepts(text, h.certificate)) << test::dump_failure(text, tag);
+      const Hold_item fl = hold_of(text, Mode::float_only);
+      if (fl.status == Status::answered) {
+        ++float_decided;
+        EXPECT_EQ(fl.answer.verdict, want) << test::dump_failure(text, tag + "_float");
+      } else {
+        EXPECT_EQ(fl.status, Status::undecided) << fl.message;
+      }
+      if (n % 16 == 0) {
+        const Hold_item ex = hold_of(text, Mode::exact);
+        ASSERT_EQ(ex.status, Status::answered) << ex.message;
+        if (ex.answer.verdict != Hold_verdict::undecided) {
+          EXPECT_EQ(ex.answer.verdict, want) << test::dump_failure(text, tag + "_exact");
+          ++exact_compared;
+        }
+      }
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 100);
+  EXPECT_GE(float_decided, compared / 2);
+  EXPECT_GE(exact_compared, 4);
+  std::printf("hold oracle: %d loads compared (%d decided by float alone, %d by exact), %d scenes held by the "
+              "contacts alone\n", compared, float_decided, exact_compared, capped);
+}
+
+// Tampered certificates of random fixtures are rejected: a support force pushed out of its disc, a contact weight
+// changed, a twist's speed bound lowered below the speed, a failing twist whose power is lowered to the bound.
+TEST(HoldOracle, TamperedCertificatesRejected) {
+  std::mt19937_64 rng(test::seed(20261203));
+  int tampered = 0;
+  for (int n = 0; n < 30; ++n) {
+    Random_fixture r = random_fixture(rng, n);
+    for (const double scale : {0.2, 5.0}) {
+      const std::string text = r.text_without_load + R"("load": {"force": [)" + num(scale * r.force[0]) + ", " +
+                               num(scale * r.force[1]) + R"(], "at": [)" + r.at[0] + ", " + r.at[1] + "]}}";
+      const Hold_item h = hold_of(text, Mode::hybrid);
+      ASSERT_EQ(h.status, Status::answered) << h.message;
+      if (h.answer.verdict == Hold_verdict::undecided) continue;
+      ASSERT_TRUE(test::checker_accepts(text, h.certificate));
+      const Scene s = read_scene(text, kLimits);
+      const std::size_t k = s.support->points.size();
+      std::vector<std::string> bad;
+      if (h.answer.verdict == Hold_verdict::holds) {
+        const Hold_witness& w = *h.answer.holding;
+        // a support force scaled past its disc's radius (nonzero forces only), the others kept
+        for (std::size_t i = 0; i < k; ++i) {
+          if (w.forces[i].x == 0 && w.forces[i].y == 0) continue;
+          Hold_answer t = h.answer;
+          const Rational rho = *s.support->points[i].mu * *s.support->points[i].force;
+          const Rational g2 = w.forces[i].x * w.forces[i].x + w.forces[i].y * w.forces[i].y;
+          const Rational f = rho * rho / g2 + 1;  // f |g| = ρ²/|g| + |g| ≥ 2ρ > ρ: out of the disc
+          t.holding->forces[i] = {w.forces[i].x * f, w.forces[i].y * f};
+          bad.push_back(hold_certificate(t));
+          break;
+        }
+        if (!w.combination.empty()) {
+          Hold_answer t = h.answer;
+          t.holding->combination[0].second *= Rational(3, 2);
+          bad.push_back(hold_certificate(t));
+        }
+      } else {
+        const Fail_witness& w = *h.answer.failing;
+        Hold_answer t = h.answer;
+        t.failing->speed_bounds[0] = 0;
+        const std::array<Rational, 3>& q = w.twist;
+        const Vec2& r0 = s.support->points[0].at;
+        const Rational vx = q[0] - q[2] * r0.y, vy = q[1] + q[2] * r0.x;
+        if (vx != 0 || vy != 0) bad.push_back(hold_certificate(t));
+        Hold_answer neg = h.answer;  // the opposite motion pushes into some contact or is not driven by the load
+        neg.failing->twist = {-q[0], -q[1], -q[2]};
+        bad.push_back(hold_certificate(neg));
+      }
+      for (const std::string& c : bad) {
+        EXPECT_FALSE(test::checker_accepts(text, c)) << c << "\n" << test::dump_failure(text, "hold_tamper");
+        ++tampered;
+      }
+    }
+  }
+  EXPECT_GE(tampered, 30);
+}
+
+// Bad input: no load; too many unknown forces is an Input_error of decide_hold; float mode with an unknown
+// distribution is undecided (no LP over F in the twin).
+TEST(HoldInput, NoLoadAndFloatOverF) {
+  const Hold_item none = hold_of(R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [0, 1]}]})", Mode::hybrid);
+  EXPECT_EQ(none.status, Status::bad_input);
+  EXPECT_EQ(none.message, "load: the scene has no load (hold needs one)");
+  const std::string table = R"({"wrenchkit": 1, "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points":
+      [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}, "load": {"wrench": ["0.5", 0, 0]}})";
+  const Hold_item fl = hold_of(table, Mode::float_only);
+  EXPECT_EQ(fl.status, Status::undecided);
+  EXPECT_NE(fl.message.find("no LP over the admissible distributions"), std::string::npos) << fl.message;
+}
+
+}  // namespace
+}  // namespace wrenchkit
