@@ -148,12 +148,16 @@ inline std::string readers_disagree(std::string_view text, const wrenchkit::Inpu
 // [BUDGET] A valid scene (under `limits`) at the boundary of the scene-wide budget: with each budget set to
 // the scene's own measure it is accepted, with either one less it is refused, by every reader alike
 // (readers_disagree) and by the independent checker alike (bad_scene exactly when the engine refuses).
+// The scene's canonical text (write_scene: what the Python bindings give the checker) measures no more.
 // "" or what broke.
 inline std::string budget_boundary_broken(std::string_view text, const wrenchkit::Input_limits& limits,
                                           wrenchkit::Scene& reused_eager, wrenchkit::Scene& reused_lazy) {
   using namespace wrenchkit;
   const Budget_tally m = measure_scene(text, limits);
   if (!m.within(limits)) return "a valid scene measures over its budget";
+  const Budget_tally c = measure_scene(write_scene(read_scene(text, limits)), limits);
+  if (c.total > m.total || c.longest > m.longest || c.entries != m.entries)
+    return "the canonical text measures more than the scene";
   for (int k = 0; k < 3; ++k) {
     Input_limits l = limits;
     l.max_total_digits = m.total - (k == 1 && m.total > 0 ? 1 : 0);

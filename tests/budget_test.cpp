@@ -95,13 +95,14 @@ TEST(Budget, OverBudgetIsBadInputThatNamesTheBudgetTheMeasureAndTheOption) {
   few.max_contacts = 2;
   EXPECT_EQ(error_of(R"({"wrenchkit": 1, "body": {"outline": [[0,0],[1,0],[1,1]]}})", few),
             "body.outline: has 3 points, more than the limit 2 (--max-contacts)");
-  // The budget comes before the schema (nothing is built for a scene over budget) and after nothing else.
+  // The budget comes before the schema (nothing is built for a scene over budget) and after nothing else; an
+  // absent mu counts as its "0".
   Input_limits tiny;
   tiny.max_total_digits = 3;
   EXPECT_EQ(error_of(R"({"wrenchkit": 1, "extra": 1, "contacts": [{"at": [10, 10], "normal": [0, 1]}]})", tiny),
-            "scene: its numbers have 7 digits in all, more than the budget of 3 (--max-total-digits)");
+            "scene: its numbers have 8 digits in all, more than the budget of 3 (--max-total-digits)");
   EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contacts": [{"at": [10, 10], "normal": [0, 1]}]} x)", tiny),
-            "scene: its numbers have 7 digits in all, more than the budget of 3 (--max-total-digits)");
+            "scene: its numbers have 8 digits in all, more than the budget of 3 (--max-total-digits)");
 }
 
 // Every reader (tree and streaming, eager and lazy, fresh and reused) and the checker accept and refuse

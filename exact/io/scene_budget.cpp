@@ -153,16 +153,26 @@ class Walker {
       count(s_.substr(start, i_ - start), true);
     } else if (c == '{' && is_object(p)) {
       ++i_;
-      if (peek() == '}') return void(++i_);
+      bool mu = false, wrench = false;  // a contact without both: a point contact whose mu is "0"
+      const auto close = [&] {
+        if (p == Place::contact && !mu && !wrench) count("0", true);
+      };
+      if (peek() == '}') {
+        ++i_;
+        return close();
+      }
       for (;;) {
         if (peek() != '"') throw Stop{};
-        const Place m = member(p, string());  // the key view lives until the next string: used at once
+        const std::string_view key = string();
+        mu |= key == "mu";
+        wrench |= key == "wrench";
+        const Place m = member(p, key);  // the key view lives until the next string: used at once
         if (peek() != ':') throw Stop{};
         ++i_;
         value(m);
         const int d = peek();
         ++i_;
-        if (d == '}') return;
+        if (d == '}') return close();
         if (d != ',') throw Stop{};
       }
     } else if (c == '[' && item(p) != Place::other) {

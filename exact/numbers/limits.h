@@ -19,9 +19,10 @@ struct Input_limits {
 };
 
 // [BUDGET] The tally of a scene's budget measures, kept while its numbers are read, in any order:
-//   total   = Σ digits(x) over every number x of the scene (the version, body, contacts, load, support),
-//             digits(x) counted as the digit limit counts them (scene-format.md "Numbers": the larger of the
-//             digits of its text and of its value written out exactly);
+//   total   = Σ digits(x) over every number x of the scene (the version, body, contacts, load, support; a
+//             point contact's absent mu counts as its default "0", so that the canonical text, which writes
+//             it, never measures more), digits(x) counted as the digit limit counts them (scene-format.md
+//             "Numbers": the larger of the digits of its text and of its value written out exactly);
 //   longest = max digits(x);   entries = contacts + support points.
 // Why they bound the work (docs/design.md "Input handling"): an exact number of d digits takes about
 // 0.42·d bytes, so `total` bounds the memory of the scene's rationals and the time to read them (every

@@ -339,6 +339,13 @@ Contact read_contact(Reader& r, const Limits& lim) {
     r.fail("expected \"at\" and \"normal\" (a point contact) or \"wrench\"");
   if (!(keys & kAt)) r.fail("missing required key \"at\"");
   if (!(keys & kNormal)) r.fail("missing required key \"normal\"");
+  if (!(keys & kMu) && Tally::reading) {  // an absent mu counts as its "0" (docs/scene-format.md "Limits")
+    try {
+      Tally::reading->number(1, lim);
+    } catch (const Failure& f) {
+      r.fail(f.message.substr(2));
+    }
+  }
   std::vector<Q> values;
   values.reserve(5);
   for (Q* q : {&at_value[0], &at_value[1], &normal_value[0], &normal_value[1], &mu_value}) values.push_back(std::move(*q));
