@@ -196,5 +196,33 @@ TEST(OrderedMap, KeepsOrderAndPropagatesTheCallersExceptions) {
   }
 }
 
+// [BATCH] A window also closes once its inputs weigh window_bytes: long inputs make it shorter, down to one,
+// and the outputs stay in order.
+TEST(OrderedMap, AWindowClosesAtItsBytes) {
+  struct Worker {};
+  for (const std::size_t len : {std::size_t(10), std::size_t(100)}) {
+    std::vector<std::string> inputs(20, std::string(len, 'x'));
+    inputs[7] = std::string(1000, 'y');  // one long input: a window of its own at most
+    std::size_t k = 0;
+    std::string trace;  // n: an input read, e: an output emitted
+    std::vector<std::size_t> sizes;
+    ordered_map<std::string, std::size_t, Worker>(
+        1, [&](std::string& x) { return k < inputs.size() ? (x = inputs[k++], trace += 'n', true) : false; },
+        [](Worker&, const std::string& x, std::size_t& y, std::size_t) { y = x.size(); },
+        [&](std::size_t index, std::size_t y) {
+          trace += 'e';
+          EXPECT_EQ(index, sizes.size());
+          sizes.push_back(y);
+        },
+        256, 35, [](const std::string& x) { return x.size(); });
+    ASSERT_EQ(sizes.size(), inputs.size());
+    for (std::size_t i = 0; i < inputs.size(); ++i) EXPECT_EQ(sizes[i], inputs[i].size());
+    // len 10: windows of 4 (40 bytes ≥ 35), the long one closing its window; len 100: one input a window.
+    if (len == 10) EXPECT_EQ(trace, "nnnneeeennnneeeennnneeee" "nnnneeeennnneeee");
+    else
+      for (std::size_t i = 0; i + 1 < trace.size(); i += 2) EXPECT_EQ(trace.substr(i, 2), "ne") << trace;
+  }
+}
+
 }  // namespace
 }  // namespace wrenchkit
