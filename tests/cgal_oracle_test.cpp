@@ -263,7 +263,11 @@ TEST(CgalOracle, LabelsAndDualOnEveryGolden) {
 
 // 1 000 random scenes (degenerate-rich integer grids, ≤ 5 contacts), in four parts that CTest runs in parallel;
 // each scene in one reading, friction and frictionless (Reuleaux) in turn.
-void labels_and_dual_on_random_scenes(int part) {
+class CgalOracleRandomLabels : public ::testing::TestWithParam<int> {};
+
+TEST_P(CgalOracleRandomLabels, LabelsAndDualOnRandomScenes) {
+  const int part = GetParam();
+  const Timer t{"labels and dual, random scenes, one part of 4"};
   const int per_part = kRandomScenes / 4;
   const std::uint64_t seed = test::seed(20261117) + static_cast<std::uint64_t>(part);  // WRENCHKIT_SEED + part
   std::mt19937_64 rng(seed);
@@ -273,25 +277,10 @@ void labels_and_dual_on_random_scenes(int part) {
     const Dump_on_failure dump{text, tag};
     SCOPED_TRACE(tag);
     check_labels_and_dual(read_scene(text, Input_limits{}), i % 2 ? Reading::frictionless : Reading::friction);
-    if (::testing::Test::HasFatalFailure()) return;
+    if (HasFatalFailure()) return;
   }
 }
-TEST(CgalOracle, LabelsAndDualOnRandomScenes1) {
-  const Timer t{"labels and dual, random scenes, part 1 of 4"};
-  labels_and_dual_on_random_scenes(1);
-}
-TEST(CgalOracle, LabelsAndDualOnRandomScenes2) {
-  const Timer t{"labels and dual, random scenes, part 2 of 4"};
-  labels_and_dual_on_random_scenes(2);
-}
-TEST(CgalOracle, LabelsAndDualOnRandomScenes3) {
-  const Timer t{"labels and dual, random scenes, part 3 of 4"};
-  labels_and_dual_on_random_scenes(3);
-}
-TEST(CgalOracle, LabelsAndDualOnRandomScenes4) {
-  const Timer t{"labels and dual, random scenes, part 4 of 4"};
-  labels_and_dual_on_random_scenes(4);
-}
+INSTANTIATE_TEST_SUITE_P(Parts, CgalOracleRandomLabels, ::testing::Values(1, 2, 3, 4));
 
 // ---- limit surfaces against convex_hull_3 ----------------------------------------------------------------------
 
