@@ -14,11 +14,12 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-PACKAGES=(g++ cmake ninja-build ccache libgmp-dev libgtest-dev librapidcheck-dev clang libclang-rt-14-dev
+# CGAL (header-only): the mesh files' writers and the CGAL face (exact/cgal/), the tests' oracle, a bench peer.
+PACKAGES=(g++ cmake ninja-build ccache libgmp-dev libcgal-dev libgtest-dev librapidcheck-dev clang libclang-rt-14-dev
           libboost-program-options-dev pybind11-dev python3-dev python3-pytest python3-scipy
           python3-numpy python3-dask python3-distributed python3-build)
 # The benchmark suite and its peers (bench/; built and smoke-tested by `test` so it never rots).
-PACKAGES+=(libbenchmark-dev libqhull-dev libcdd-dev libglpk-dev libcgal-dev)
+PACKAGES+=(libbenchmark-dev libqhull-dev libcdd-dev libglpk-dev)
 
 install_packages() {
   local missing=()

@@ -213,10 +213,16 @@ const Option kLoad{"load", "fx,fy,m",
                    [](Options& o, S n, S v) { o.load = exact_values<3>(o, n, v, "fx,fy,m"); }};
 const Option kList{"list", nullptr, "list every facet (normal, offset, vertex indices) and vertex, exactly",
                    [](Options& o, S, S) { o.list = true; }};
-const Option kOff =
-    file_option<&Options::off_file>("off", "write both polytopes as one coloured OFF mesh (inner blue, outer red)");
+const Option kOff = file_option<&Options::off_file>(
+    "off", "write both polytopes as one OFF mesh with face colours (inner blue, then outer red; CGAL's writer)");
 const Option kObj = file_option<&Options::obj_file>(
-    "obj", "write both polytopes as a Wavefront OBJ with objects \"inner\" and \"outer\"");
+    "obj", "write both polytopes as one Wavefront OBJ mesh (the inner polytope's vertices and faces first)");
+const Option kPly = file_option<&Options::ply_file>(
+    "ply", "write both polytopes as one binary PLY mesh (face colours; face property polytope: 0 inner, 1 outer)");
+const Option kExactCoordinates{"exact-coordinates", nullptr,
+                               "mesh files with exact coordinates where the format has them: OFF as homogeneous "
+                               "integers X Y Z W (4OFF); OBJ and PLY hold doubles (the answer says which)",
+                               [](Options& o, S, S) { o.exact_coordinates = true; }, Option::Role::file};
 const Option kSvg =
     file_option<&Options::svg_file>("svg", "write the picture of 'wrenchkit render --what limit-surface' to FILE");
 
@@ -388,7 +394,9 @@ std::vector<Command> make_table() {
        "polytopes: may be undecided). float: the float twin alone: no polytopes; lambda^2, the polygonal\n"
        "and true powers and loads with certified bounds, the motion by the search (exit 3 if undecided).\n"
        "\n"
-       "Exact rationals are printed in lowest terms; OFF/OBJ coordinates are doubles (for viewing).\n",
+       "Exact rationals are printed in lowest terms. Mesh files (--off, --obj, --ply; CGAL's writers) hold\n"
+       "both polytopes, inner first, with every coordinate as its nearest double; --exact-coordinates\n"
+       "writes OFF exactly (homogeneous integers, 4OFF), and the answer says how each file was written.\n",
        join({{kHelp, kJson, with_help(kMode, "hybrid (default), exact or float: see Modes above"), kSides,
               with_help(kTolerance,
                         "instead of --sides: the smallest N whose certified relative error 1/lambda - 1 is <= EPS "
@@ -397,7 +405,7 @@ std::vector<Command> make_table() {
                         "also the load for this twist on LS_in and LS_out (a point, a segment or a facet), the "
                         "bounds h_in <= h <= h_out, and what the twist is on the true LS"),
               kLoad, with_help(kCertificate, "write the certificate of --load's motion to FILE (checked first)"), kList,
-              kOff, kObj, kSvg},
+              kOff, kObj, kPly, kExactCoordinates, kSvg},
              kLimits}),
        {kScene},
        run_limit_surface,
@@ -493,8 +501,8 @@ std::vector<Command> make_table() {
        "MESSAGE, \"exit_code\": 2} for a bad line (the stream goes on), {\"line\": N, \"undecided\": …,\n"
        "\"exit_code\": 3} when --mode float cannot decide. The command's own options apply to every\n"
        "line (batch sliding --twist 0,0,1, batch labels --resultant 0,1,0, batch limit-surface --sides 8),\n"
-       "except those that write files (--certificate, --off, --obj, --svg); --max-file-size limits each\n"
-       "line. Every certificate is checked by the independent checker, as in the single commands.\n"
+       "except those that write files (--certificate, --off, --obj, --ply, --svg); --max-file-size limits\n"
+       "each line. Every certificate is checked by the independent checker, as in the single commands.\n"
        "Exit code: 0 when every line was answered or reported, 2 for a usage error (before any line is\n"
        "read), 4 if a certificate ever failed its check (a bug), 70 on an internal error.\n",
        {kHelp, kJobs},

@@ -14,7 +14,7 @@ namespace wrenchkit::cli {
 // or throws Usage_error naming `option` ("--sides"); it is called where the command line is parsed,
 // the scene limits first (the exact numbers are read within them), then the others in their order.
 struct Option {
-  enum class Role { ordinary, limit, file };  // limit: --max-*; file: writes a file (not in batch)
+  enum class Role { ordinary, limit, file };  // limit: --max-*; file: writes or shapes a file (not in batch)
   const char* name;                           // Boost's spelling: "sides", "output,o"
   const char* value;                          // the value's name in help ("N", "x,y"); nullptr: a flag
   const char* help;

@@ -54,10 +54,10 @@ struct Options {
   std::optional<int> sides;
   std::optional<Rational> tolerance;
   std::string tolerance_text;
-  // render --what, -o/--output FILE; limit-surface --list, --off, --obj, --svg FILE.
+  // render --what, -o/--output FILE; limit-surface --list, --off, --obj, --ply, --svg FILE, --exact-coordinates.
   std::optional<Picture> what;
-  std::string output, off_file, obj_file, svg_file;
-  bool list = false;
+  std::string output, off_file, obj_file, ply_file, svg_file;
+  bool list = false, exact_coordinates = false;
   // compare: --format jsonl|csv ("" = by the file name), --rtol, --atol, --near (exact, >= 0), --tolerance
   // (the field above).
   std::string format;

@@ -11,6 +11,7 @@
 #include "cli/common.h"
 #include "cli/float_json.h"
 #include "cli/render_limit_surface.h"
+#include "exact/cgal/mesh_io.h"
 #include "exact/io/input_error.h"
 #include "exact/io/json_writer.h"
 #include "exact/pipeline/support_answer.h"
@@ -30,8 +31,18 @@ struct Ls_options {
   std::optional<Rational> tolerance;
   int sets_built = 0;  // direction sets tried to meet the tolerance
   std::optional<Vec3q> twist, load;
-  std::string off_file, obj_file, svg_file;
+  std::string off_file, obj_file, ply_file, svg_file;
+  bool exact_coordinates = false;  // --exact-coordinates: OFF exactly (exact/cgal/mesh_io.h)
   bool list = false;
+  // The mesh files asked for, in option order: --off, --obj, --ply.
+  std::vector<std::pair<Mesh_format, std::string>> meshes() const {
+    std::vector<std::pair<Mesh_format, std::string>> m;
+    if (!off_file.empty()) m.push_back({Mesh_format::off, off_file});
+    if (!obj_file.empty()) m.push_back({Mesh_format::obj, obj_file});
+    if (!ply_file.empty()) m.push_back({Mesh_format::ply, ply_file});
+    return m;
+  }
+  bool exports() const { return !meshes().empty() || !svg_file.empty(); }
 };
 
 std::string tv(const Vec3q& v) { return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")"; }
@@ -65,48 +76,6 @@ void write_polytope(Json_writer& w, const Ls_polytope& P, bool list) {
   w.end_object();
 }
 
-std::string off_text(const Ls_polytope& in, const Ls_polytope& out) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "OFF\n# wrenchkit limit-surface: inner (blue) and outer (red) polygonal limit surfaces, coordinates\n"
-    << "# (fx, fy, m) of loads (theory.md §1.5) as doubles; exact values: wrenchkit limit-surface --list\n";
-  std::size_t faces = 0;
-  for (const Ls_polytope* P : {&in, &out}) faces += P->facets.size();
-  s << in.vertices.size() + out.vertices.size() << " " << faces << " " << in.edges + out.edges << "\n";
-  for (const Ls_polytope* P : {&in, &out})
-    for (const Vec3q& v : P->vertices) s << v[0].get_d() << " " << v[1].get_d() << " " << v[2].get_d() << "\n";
-  for (int k = 0; k < 2; ++k) {
-    const Ls_polytope& P = k == 0 ? in : out;
-    const std::size_t base = k == 0 ? 0 : in.vertices.size();
-    for (const Ls_facet& f : P.facets) {
-      s << f.vertices.size();
-      for (int v : f.vertices) s << " " << base + static_cast<std::size_t>(v);
-      s << (k == 0 ? " 0.2 0.4 0.9 1.0\n" : " 0.9 0.2 0.2 0.35\n");
-    }
-  }
-  return s.str();
-}
-
-std::string obj_text(const Ls_polytope& in, const Ls_polytope& out) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "# wrenchkit limit-surface: inner and outer polygonal limit surfaces; vertices (fx, fy, m) of loads\n"
-    << "# (theory.md §1.5) as doubles; exact values: wrenchkit limit-surface --list\n";
-  std::size_t base = 1;
-  for (int k = 0; k < 2; ++k) {
-    const Ls_polytope& P = k == 0 ? in : out;
-    s << "o " << (k == 0 ? "inner" : "outer") << "\n";
-    for (const Vec3q& v : P.vertices) s << "v " << v[0].get_d() << " " << v[1].get_d() << " " << v[2].get_d() << "\n";
-    for (const Ls_facet& f : P.facets) {
-      s << "f";
-      for (int v : f.vertices) s << " " << base + static_cast<std::size_t>(v);
-      s << "\n";
-    }
-    base += P.vertices.size();
-  }
-  return s.str();
-}
-
 std::string gauge_text(const std::optional<Rational>& g) { return g ? human_number(*g) : std::string("infinite"); }
 void write_gauge(Json_writer& w, const std::optional<Rational>& g) { g ? w.rational(*g) : w.null(); }
 
@@ -128,15 +97,18 @@ Ls_options limit_surface_options(const Options& o) {
   lo.load = o.load;
   lo.off_file = o.off_file;
   lo.obj_file = o.obj_file;
+  lo.ply_file = o.ply_file;
   lo.svg_file = o.svg_file;
+  lo.exact_coordinates = o.exact_coordinates;
   lo.list = o.list;
   lo.mode = o.mode;
+  if (lo.exact_coordinates && lo.meshes().empty())
+    throw Usage_error("--exact-coordinates is about mesh files: give --off, --obj or --ply");
   // The polytopes are built when asked for (--sides, --tolerance, --list, the exports) or when nothing else is
   // asked; a --load or --twist query alone is answered on the true surface, building them only if needed.
-  lo.polytopes = o.sides || o.tolerance || lo.list || !lo.off_file.empty() || !lo.obj_file.empty() ||
-                 !lo.svg_file.empty() || (!lo.load && !lo.twist);
-  if (lo.mode == Mode::float_only && (lo.list || !lo.off_file.empty() || !lo.obj_file.empty() || !lo.svg_file.empty()))
-    throw Usage_error("--list, --off, --obj and --svg show the exact polytopes: not with --mode float");
+  lo.polytopes = o.sides || o.tolerance || lo.list || lo.exports() || (!lo.load && !lo.twist);
+  if (lo.mode == Mode::float_only && (lo.list || lo.exports()))
+    throw Usage_error("--list, --off, --obj, --ply and --svg show the exact polytopes: not with --mode float");
   return lo;
 }
 
@@ -435,6 +407,27 @@ std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item
   return s.str();
 }
 
+// --exact-coordinates says how each mesh file holds its coordinates (exact/cgal/mesh_io.h): JSON "mesh_coordinates"
+// {"off": "…", …} and a text line per file. Without the option the answer is as before (nearest doubles).
+void write_mesh_coordinates(Json_writer& w, const Ls_options& lo) {
+  if (!lo.exact_coordinates) return;
+  w.key("mesh_coordinates").object();
+  for (const auto& [format, file] : lo.meshes()) {
+    std::string key = mesh_format_name(format);
+    for (char& c : key) c = static_cast<char>(c - 'A' + 'a');
+    w.member(key.c_str(), coordinates_note(format, true));
+  }
+  w.end_object();
+}
+
+std::string mesh_coordinates_text(const Ls_options& lo) {
+  if (!lo.exact_coordinates) return "";
+  std::string s;
+  for (const auto& [format, file] : lo.meshes())
+    s += std::string(mesh_format_name(format)) + " " + file + ": coordinates " + coordinates_note(format, true) + "\n";
+  return s;
+}
+
 // The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone, or
 // the exact answer).
 void answer_json(Json_writer& w, const Ls_options& lo, const Support_item& r) {
@@ -455,19 +448,24 @@ Scene_answer prepare_limit_surface_json(const Options& o) {
 int run_limit_surface(const Options& o, const std::string& text, const std::string& source) {
   const Ls_options lo = limit_surface_options(o);
   const Support_item r = compute_limit_surface(lo, o, text, source);
-  if (r.admissible && (lo.list || !lo.off_file.empty() || !lo.obj_file.empty() || !lo.svg_file.empty()))
+  if (r.admissible && (lo.list || lo.exports()))
     throw Input_error(source + ": support: the forces of some points are not given, so there is no one limit surface "
-                      "to list or draw (--list, --off, --obj, --svg need every force)");
+                      "to list or draw (--list, --off, --obj, --ply, --svg need every force)");
   if (!o.certificate_file.empty()) {
     if (r.certificate.empty())
       throw Failure(Status::undecided, cli_message(Status::undecided, "the load's motion is undecided: no certificate to "
                                                                       "write"));
     write_file(o.certificate_file, r.certificate + "\n");
   }
-  if (!lo.off_file.empty()) write_file(lo.off_file, off_text(r.in, r.out));
-  if (!lo.obj_file.empty()) write_file(lo.obj_file, obj_text(r.in, r.out));
+  // Every mesh is made before any file is written (a coordinate beyond the doubles is an error, nothing written).
+  std::vector<std::string> mesh_bytes;
+  for (const auto& [format, file] : lo.meshes()) mesh_bytes.push_back(polytopes_mesh(r.in, r.out, format, lo.exact_coordinates));
+  for (std::size_t i = 0; i < mesh_bytes.size(); ++i) write_file(lo.meshes()[i].second, mesh_bytes[i]);
   if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.sides));
-  return write_answer(o, [&](Json_writer& w) { answer_json(w, lo, r); }, [&] { return answer_text(lo, r, source); });
+  return write_answer(o, [&](Json_writer& w) {
+    answer_json(w, lo, r);
+    write_mesh_coordinates(w, lo);
+  }, [&] { return answer_text(lo, r, source) + mesh_coordinates_text(lo); });
 }
 
 }  // namespace wrenchkit::cli

@@ -1,7 +1,8 @@
 # cmake --install: headers, static libraries, the CLI and wrenchkit-check, the Python package (python/),
 # and the CMake package wrenchkitConfig.cmake so that consumers write
 #   find_package(wrenchkit REQUIRED)  target_link_libraries(app PRIVATE wrenchkit::exact)
-# (docs/cmake-package.md; tests/consumer/ proves it in CTest). Included from the top-level CMakeLists.txt.
+# (docs/cmake-package.md; tests/consumer/ proves it in CTest); find_package(wrenchkit COMPONENTS cgal) adds
+# wrenchkit::cgal, the CGAL face of the exact API. Included from the top-level CMakeLists.txt.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -19,7 +20,7 @@ set_target_properties(wrenchkit_checker PROPERTIES EXPORT_NAME checker)
 set_target_properties(wrenchkit_gmp PROPERTIES EXPORT_NAME gmp)
 # Static libraries that a shared library (a consumer's plugin, the Python module) may link.
 # -fno-semantic-interposition keeps GCC inlining within a library as without -fPIC.
-foreach(t wrenchkit_float wrenchkit_exact wrenchkit_pipeline wrenchkit_checker)
+foreach(t wrenchkit_float wrenchkit_exact wrenchkit_pipeline wrenchkit_checker wrenchkit_cgal wrenchkit_mesh_io)
   set_property(TARGET ${t} PROPERTY POSITION_INDEPENDENT_CODE ON)
   target_compile_options(${t} PRIVATE -fno-semantic-interposition)
 endforeach()
@@ -30,6 +31,14 @@ target_include_directories(wrenchkit_checker INTERFACE "$<INSTALL_INTERFACE:${WR
 install(TARGETS wrenchkit_core wrenchkit_float wrenchkit_exact wrenchkit_pipeline wrenchkit_gmp wrenchkit_checker
   EXPORT wrenchkitTargets
   ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}" COMPONENT development)
+# The CGAL face (exact/cgal/cgal.h) and the mesh writers: their own export set, loaded only by
+# find_package(wrenchkit COMPONENTS cgal) (or when CGAL is found), so the other components never need CGAL.
+set_target_properties(wrenchkit_cgal PROPERTIES EXPORT_NAME cgal)
+set_target_properties(wrenchkit_mesh_io PROPERTIES EXPORT_NAME mesh_io)
+install(TARGETS wrenchkit_cgal wrenchkit_mesh_io EXPORT wrenchkitCGALTargets
+  ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}" COMPONENT development)
+install(EXPORT wrenchkitCGALTargets NAMESPACE wrenchkit:: DESTINATION "${WRENCHKIT_INSTALL_CMAKEDIR}"
+  COMPONENT development)
 install(TARGETS wrenchkit wrenchkit-check RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT runtime)
 # The reference that the CLI's help texts and JSON "convention" strings cite as "theory.md §x".
 install(FILES "${PROJECT_SOURCE_DIR}/docs/theory.md" "${PROJECT_SOURCE_DIR}/docs/theory-sliding.md"

@@ -4,6 +4,7 @@
 #   proofs/ no CGAL, nothing from exact/, core/, float/, cli/
 #   exact/ by parts (below); testing/ no front end
 #   exact/, cli/: no peer library (qhull, cddlib, GLPK) and nothing from bench/
+#   CGAL only in exact/cgal/ (its one opt-in header included by no other header), tests/ and bench/
 #   and no project file pointing at ../shared (the self-contained documentation, below)
 set(failures "")
 function(check_dir dir forbidden_regex what)
@@ -37,6 +38,23 @@ check_dir(testing "\"(cli|python)/" "test scenery does not depend on front ends"
 foreach(front cli python)
   check_dir(${front} "\"float/|\"exact/statics/hybrid_kernel\\.h" "front ends reach the twin only through exact/pipeline/")
 endforeach()
+# CGAL (docs/design.md, "CGAL and Boost") is compiled in exact/cgal/ (the face and the mesh writers), tests/ and
+# bench/ only: no other part of the engine, no front end, no test scenery includes it; the face's one opt-in header
+# (exact/cgal/cgal.h) is included by no other header, and exact/cgal/mesh_io.h (what the command includes) has none.
+foreach(dir exact/numbers exact/io exact/statics exact/sliding exact/pipeline cli python testing)
+  check_dir(${dir} "<CGAL/|\"exact/cgal/cgal\\.h\"" "CGAL only in exact/cgal/, tests/ and bench/")
+endforeach()
+file(GLOB_RECURSE headers "${ROOT}/exact/*.h" "${ROOT}/core/*.h" "${ROOT}/float/*.h" "${ROOT}/proofs/*.h")
+foreach(h IN LISTS headers)
+  if(h MATCHES "/exact/cgal/cgal\\.h$")
+    continue()
+  endif()
+  file(STRINGS "${h}" lines REGEX "^[ \t]*#[ \t]*include.*(<CGAL/|exact/cgal/cgal\\.h)")
+  foreach(line IN LISTS lines)
+    set(failures "${failures}\n  ${h}: ${line}  (CGAL's headers reach a user only through exact/cgal/cgal.h)")
+  endforeach()
+endforeach()
+
 # The benchmarks' peers (qhull, cddlib, GLPK, bench/) are never part of the engine or the command.
 foreach(dir exact cli)
   check_dir(${dir} "<libqhull|<cdd/|<glpk|\"bench/" "peers stay in bench/")

@@ -166,7 +166,7 @@ TEST(CliBatch, UsageErrorsStopBeforeAnyLine) {
                            "batch closure scene.json", "batch closure --certificate c.json",
                            "batch closure --center 1,1", "batch labels --verdict-only", "batch labels --twist 0,0,1",
                            "batch reuleaux --center 1", "batch reuleaux --sense cw", "batch sliding --twist 0,0,0",
-                           "batch sliding --sides 7", "batch limit-surface --off x.off", "batch limit-surface --sides 3",
+                           "batch sliding --sides 7", "batch limit-surface --off x.off", "batch limit-surface --ply x.ply", "batch limit-surface --exact-coordinates", "batch limit-surface --sides 3",
                            "batch limit-surface --sides 8 --tolerance 0.1", "batch equilibrium --resultant 1,0,0",
                            "batch hold --certificate c.json", "batch hold --sides 8",
                            "batch closure --jobs 0", "batch closure --mode fast"}) {

@@ -1,5 +1,5 @@
 // End-to-end tests of `wrenchkit limit-surface` and `wrenchkit sliding` (docs/limit-surface.md):
-// every option, the JSON fields, the exports (OFF/OBJ/SVG well-formed, counts matching), and every
+// every option, the JSON fields, the exports (OFF/OBJ/PLY/SVG well-formed, counts matching), and every
 // bad-input class (exit 2, a message naming the option or field, nothing on stdout).
 #include <gtest/gtest.h>
 
@@ -90,42 +90,49 @@ TEST(CliLimitSurface, ToleranceAndListAndDegenerateScenes) {
   EXPECT_TRUE(has(z.out, "\"motion\": \"slides\""));
 }
 
+// The mesh files are written by CGAL's writers (exact/cgal/mesh_io.h; tests/cgal_face_test.cpp reads every format back
+// with CGAL's reader): here their shape as a viewer sees it and the counts against the JSON answer.
 TEST(CliLimitSurface, ExportsAreWellFormedAndMatchTheCounts) {
   const fs::path d = scratch();
-  const std::string off = (d / "ls.off").string(), obj = (d / "ls.obj").string(), svg = (d / "ls.svg").string();
-  const Cli_result r = run("limit-surface --json --sides 6 --off '" + off + "' --obj '" + obj + "' --svg '" + svg + "' " +
-                           golden("barbell"));
+  const std::string off = (d / "ls.off").string(), obj = (d / "ls.obj").string(), ply = (d / "ls.ply").string(),
+                    svg = (d / "ls.svg").string();
+  const Cli_result r = run("limit-surface --json --sides 6 --off '" + off + "' --obj '" + obj + "' --ply '" + ply +
+                           "' --svg '" + svg + "' " + golden("barbell"));
   ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(has(r.out, "mesh_coordinates"));  // only with --exact-coordinates
   const std::size_t in = r.out.find("\"inner\": "), out = r.out.find("\"outer\": ");
   const long fi = field(r.out, "facets", in), vi = field(r.out, "vertices", in);
   const long fo = field(r.out, "facets", out), vo = field(r.out, "vertices", out);
+  // OFF (COFF: CGAL's keyword when faces carry colours): counts, then vertices, then faces "k i… r g b".
   std::istringstream o(test::read_text(off));
   std::string line;
   std::getline(o, line);
-  EXPECT_EQ(line, "OFF");
-  do std::getline(o, line);
-  while (!line.empty() && line[0] == '#');
-  long nv = 0, nf = 0, ne = 0;
-  std::istringstream(line) >> nv >> nf >> ne;
+  EXPECT_EQ(line, "COFF");
+  long nv = 0, nf = 0;
+  o >> nv >> nf >> line;
   EXPECT_EQ(nv, vi + vo);
   EXPECT_EQ(nf, fi + fo);
-  long vlines = 0, flines = 0;
-  for (long i = 0; i < nv && std::getline(o, line); ++i) ++vlines;
+  double x = 0;
+  for (long i = 0; i < 3 * nv; ++i) ASSERT_TRUE(o >> x) << "vertex coordinate " << i;
+  long flines = 0;
   while (std::getline(o, line)) {
+    if (line.empty()) continue;
     std::istringstream f(line);
-    long k = 0;
+    long k = 0, idx = 0, got = 0;
     f >> k;
-    long idx = 0, got = 0;
     while (got < k && f >> idx) {
       EXPECT_GE(idx, 0);
       EXPECT_LT(idx, nv);
       ++got;
     }
     EXPECT_EQ(got, k);
+    int rgb[3] = {0, 0, 0};
+    EXPECT_TRUE(f >> rgb[0] >> rgb[1] >> rgb[2]) << line;
+    EXPECT_EQ(rgb[2], flines < fi ? 230 : 51) << "inner faces blue first, then outer red";
     ++flines;
   }
-  EXPECT_EQ(vlines, nv);
   EXPECT_EQ(flines, nf);
+  // OBJ: one object, the inner polytope's vertices and faces first.
   const std::string objt = test::read_text(obj);
   long ov = 0, of = 0;
   std::istringstream ob(objt);
@@ -135,12 +142,44 @@ TEST(CliLimitSurface, ExportsAreWellFormedAndMatchTheCounts) {
   }
   EXPECT_EQ(ov, vi + vo);
   EXPECT_EQ(of, fi + fo);
-  EXPECT_TRUE(has(objt, "o inner\n") && has(objt, "o outer\n"));
+  // PLY: binary, with the counts and the face property `polytope` in its header.
+  const std::string plyt = test::read_text(ply);
+  EXPECT_EQ(plyt.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u);
+  EXPECT_TRUE(has(plyt, "element vertex " + std::to_string(vi + vo) + "\n")) << plyt.substr(0, 600);
+  EXPECT_TRUE(has(plyt, "element face " + std::to_string(fi + fo) + "\n"));
+  EXPECT_TRUE(has(plyt, "property uchar polytope\n") && has(plyt, "property double x\n"));
   const std::string s = test::read_text(svg);
   EXPECT_EQ(s.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
   EXPECT_EQ(s.substr(s.size() - 7), "</svg>\n");
   EXPECT_TRUE(has(s, "slice f_y = 0") && has(s, "projection onto (f_x, f_y)") && has(s, "<polygon points="));
   EXPECT_FALSE(fs::exists(off + ".tmp-wrenchkit"));
+}
+
+// --exact-coordinates: OFF holds every vertex exactly (homogeneous integers, 4OFF), OBJ and PLY doubles, and the
+// answer says which (JSON "mesh_coordinates", a text line per file); without a mesh file it is a usage error.
+TEST(CliLimitSurface, ExactCoordinatesAreSaid) {
+  const fs::path d = scratch();
+  const std::string off = (d / "exact.off").string(), ply = (d / "exact.ply").string();
+  const Cli_result j = run("limit-surface --json --sides 6 --exact-coordinates --off '" + off + "' --ply '" + ply + "' " +
+                           golden("barbell"));
+  ASSERT_EQ(j.code, 0) << j.err;
+  EXPECT_TRUE(has(j.out, "\"mesh_coordinates\": {\"off\": \"exact: homogeneous integers X Y Z W (4OFF)\", "
+                         "\"ply\": \"nearest doubles (PLY has no exact numbers)\"}")) << j.out;
+  const std::string text = test::read_text(off);
+  EXPECT_EQ(text.rfind("4OFF\n", 0), 0u);
+  // The barbell's inner vertex (3807/8770, 6561/8770, −3807/8770) (N = 6) is in it exactly.
+  EXPECT_TRUE(has(text, "\n3807 6561 -3807 8770\n")) << text.substr(0, 400);
+  const Cli_result t = run("limit-surface --sides 6 --exact-coordinates --obj '" + (d / "e.obj").string() + "' " +
+                           golden("barbell"));
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_TRUE(has(t.out, "OBJ " + (d / "e.obj").string() + ": coordinates nearest doubles (OBJ has no exact numbers)\n"))
+      << t.out;
+  for (const char* bad : {"limit-surface --exact-coordinates ", "limit-surface --mode float --ply x.ply "}) {
+    const Cli_result r = run(std::string(bad) + golden("barbell"));
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_TRUE(has(r.err, "usage error")) << r.err;
+  }
 }
 
 TEST(CliSliding, CentreOfFrictionAndLoads) {
@@ -198,6 +237,7 @@ TEST(CliLimitSurface, BadInputExitsTwoWithAClearMessageAndNoOutput) {
       {"sliding --sides 9 " + b, "--sides: 9"},
       {"sliding " + golden("no_support"), "support"},
       {"limit-surface --off /nonexistent-dir/x.off " + b, "/nonexistent-dir/x.off"},
+      {"limit-surface --ply /nonexistent-dir/x.ply " + b, "/nonexistent-dir/x.ply"},
   };
   for (const auto& c : cases) {
     const Cli_result r = run(c.args);

@@ -1,7 +1,8 @@
 # CTest driver of the consumer project: cmake -DBUILD=<wrenchkit build> -DSOURCE=<this dir>
 # -DWORK=<scratch dir> -DGENERATOR=<generator> [-DPYTHON=<python3>] -P run.cmake
 # 1. cmake --install BUILD --prefix WORK/prefix
-# 2. configure, build and run tests/consumer against the prefix (wrenchkit::exact, ::checker, ::float)
+# 2. configure, build and run tests/consumer against the prefix (wrenchkit::exact, ::checker, ::float, and
+#    ::cgal: a golden scene's labels and the barbell's limit surface as CGAL objects, checked by CGAL)
 # 3. again with only COMPONENTS float while GMP cannot be found (the float twin needs no GMP)
 # 4. the installed CLI answers, theory.md (which its help cites) is installed, and the installed Python
 #    package imports (when built)
@@ -22,6 +23,7 @@ run(${CMAKE_COMMAND} -S "${SOURCE}" -B "${WORK}/all" -G "${GENERATOR}" -DCMAKE_P
     -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build "${WORK}/all")
 run("${WORK}/all/consumer_exact")
+run("${WORK}/all/consumer_cgal" "${SOURCE}/../golden/two_finger_y9_10_mu1_4.scene.json")
 run("${WORK}/all/consumer_float")
 
 # GMP made unfindable: the system's include and library directories are ignored by find_* (an initial

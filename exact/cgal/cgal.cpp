@@ -1,0 +1,230 @@
+// [CG-1] The CGAL face of the exact API (exact/cgal/cgal.h). The only translation unit of wrenchkit::cgal: CGAL's
+// headers are parsed once for the whole face (docs/design.md, "CGAL and Boost": compile cost).
+#include "exact/cgal/cgal.h"
+
+#include <stdexcept>
+
+#include "exact/statics/generators.h"
+
+namespace wrenchkit::cgal {
+
+FT to_ft(const Rational& q) { return FT(q); }
+Rational to_rational(const FT& x) { return CGAL::exact(x); }
+Point_2 to_point_2(const Vec2& p) { return Point_2(to_ft(p.x), to_ft(p.y)); }
+Vec2 to_vec2(const Point_2& p) { return {to_rational(p.x()), to_rational(p.y())}; }
+Vec2 to_vec2(const Vector_2& v) { return {to_rational(v.x()), to_rational(v.y())}; }
+Point_3 to_point_3(const Vec3q& p) { return Point_3(to_ft(p[0]), to_ft(p[1]), to_ft(p[2])); }
+Vec3q to_vec3q(const Point_3& p) { return {to_rational(p.x()), to_rational(p.y()), to_rational(p.z())}; }
+
+namespace {
+
+Vector_2 to_vector_2(const Vec2& v) { return Vector_2(to_ft(v.x), to_ft(v.y)); }
+
+// The closed half-plane {x : u·x ≥ u·p} (u ≠ 0) as the positive side of a line.
+Line_2 at_least(const Vector_2& u, const Point_2& p) {
+  return Line_2(u.x(), u.y(), -(u.x() * p.x() + u.y() * p.y()));
+}
+
+}  // namespace
+
+bool Region_2::has_on(const Point_2& p) const {
+  for (const Line_2& l : half_planes)
+    if (l.oriented_side(p) == CGAL::ON_NEGATIVE_SIDE) return false;
+  return true;
+}
+
+Region_2 to_cgal(const Region& r) {
+  using S = Region::Shape;
+  Region_2 c;
+  c.shape = r.shape;
+  std::vector<Point_2> v;
+  for (const Vec2& p : r.vertices) v.push_back(to_point_2(p));
+  c.corners = Polygon_2(v.begin(), v.end());
+  for (const Vec2& d : r.directions) c.directions.push_back(to_vector_2(d));
+  const std::vector<Vector_2>& d = c.directions;
+  auto& h = c.half_planes;
+  auto& b = c.boundary;
+  switch (r.shape) {
+    case S::empty:  // x ≥ 1 and x ≤ 0
+      h = {Line_2(1, 0, -1), Line_2(-1, 0, 0)};
+      break;
+    case S::plane:
+      break;
+    case S::point:
+      h = {at_least(Vector_2(1, 0), v[0]), at_least(Vector_2(-1, 0), v[0]), at_least(Vector_2(0, 1), v[0]),
+           at_least(Vector_2(0, -1), v[0])};
+      break;
+    case S::segment:
+      h = {Line_2(v[0], v[1]), Line_2(v[1], v[0]), at_least(v[1] - v[0], v[0]), at_least(v[0] - v[1], v[1])};
+      b = {Segment_2(v[0], v[1])};
+      break;
+    case S::ray:
+      h = {Line_2(v[0], d[0]), Line_2(v[0], -d[0]), at_least(d[0], v[0])};
+      b = {Ray_2(v[0], d[0])};
+      break;
+    case S::line:
+      h = {Line_2(v[0], d[0]), Line_2(v[0], -d[0])};
+      b = {Line_2(v[0], d[0])};
+      break;
+    case S::strip:  // v[0] on the side of −rot90(d), v[1] on the side of rot90(d) (planar_region.cpp)
+      h = {Line_2(v[0], d[0]), Line_2(v[1], -d[0])};
+      b = {h[0], h[1]};
+      break;
+    case S::half_plane:  // directions [d, rot90 d, −d]: the side of rot90(d)
+      h = {Line_2(v[0], d[0])};
+      b = {h[0]};
+      break;
+    case S::wedge:  // apex v[0], directions [lo, hi] with lo × hi > 0
+      h = {Line_2(v[0], d[0]), Line_2(v[0], -d.back())};
+      b = {Ray_2(v[0], d.back()), Ray_2(v[0], d[0])};
+      break;
+    case S::polygon:
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const Point_2& p = v[i];
+        const Point_2& q = v[(i + 1) % v.size()];
+        h.push_back(Line_2(p, q));
+        b.push_back(Segment_2(p, q));
+      }
+      break;
+    case S::unbounded_polygon:  // in along directions.back() to v[0], the chain, out along directions.front()
+      h.push_back(Line_2(v[0], -d.back()));
+      b.push_back(Ray_2(v[0], d.back()));
+      for (std::size_t i = 0; i + 1 < v.size(); ++i) {
+        h.push_back(Line_2(v[i], v[i + 1]));
+        b.push_back(Segment_2(v[i], v[i + 1]));
+      }
+      h.push_back(Line_2(v.back(), d.front()));
+      b.push_back(Ray_2(v.back(), d.front()));
+      break;
+  }
+  return c;
+}
+
+Region to_region(const Region_2& c) {
+  Region r;
+  r.shape = c.shape;
+  for (const Point_2& p : c.corners.vertices()) r.vertices.push_back(to_vec2(p));
+  for (const Vector_2& d : c.directions) r.directions.push_back(to_vec2(d));
+  return r;
+}
+
+Cone_2 to_cgal(const Cone2& k) {
+  Cone_2 c;
+  c.shape = k.shape;
+  for (const Vec2& d : k.extreme) c.extreme.push_back(to_vector_2(d));
+  c.region = to_cgal(region_of({Vec2{0, 0}}, k));
+  return c;
+}
+
+namespace {
+
+Region both_region(const Both_set& b) {
+  Region r;
+  switch (b.kind) {
+    case Both_set::Kind::none: break;
+    case Both_set::Kind::point:
+      r.shape = Region::Shape::point;
+      r.vertices = {b.point};
+      break;
+    case Both_set::Kind::line: {
+      const Vec2 d = primitive2(b.direction.x, b.direction.y);
+      r.shape = Region::Shape::line;
+      r.vertices = {b.point};
+      r.directions = {d, Vec2{-d.x, -d.y}};
+      break;
+    }
+    case Both_set::Kind::plane:
+      r = region_of({Vec2{0, 0}}, cone_hull({Vec2{1, 0}, Vec2{0, 1}, Vec2{-1, 0}, Vec2{0, -1}}));
+      break;
+  }
+  return r;
+}
+
+std::vector<Wrench> wrenches(const Scene& scene, Reading reading) {
+  std::vector<Wrench> w;
+  for (const Generator& g : generators(scene, reading)) w.push_back(g.w);
+  return w;
+}
+
+}  // namespace
+
+Labels_2 to_cgal(const Moment_labels& l) {
+  Labels_2 c;
+  c.plus = to_cgal(l.plus);
+  c.minus = to_cgal(l.minus);
+  c.both = to_cgal(both_region(l.both));
+  c.infinity = to_cgal(l.infinity);
+  c.nothing_labeled = l.nothing_labeled();
+  return c;
+}
+
+Labels_2 moment_labels_2(const Scene& scene, Reading reading, Mode mode) {
+  return to_cgal(moment_labels(scene, reading, mode));
+}
+
+Labels_2 reuleaux_regions_2(const Scene& scene, Mode mode) { return moment_labels_2(scene, Reading::frictionless, mode); }
+
+Force_dual_2 to_cgal(const Force_dual& d) {
+  Force_dual_2 c;
+  c.covers_all = d.covers_all;
+  c.plus_sheet = to_cgal(d.plus_sheet);
+  c.minus_sheet = to_cgal(d.minus_sheet);
+  c.infinity = to_cgal(d.infinity);
+  for (const Dual_point& p : d.generators) c.generators.push_back({p.sheet, to_point_2(p.at)});
+  c.has_reference = d.reference.has_value();
+  if (d.reference) c.reference = to_point_2(*d.reference);
+  c.about_reference = to_cgal(d.about_reference);
+  return c;
+}
+
+Force_dual_2 force_dual_2(const Scene& scene, Reading reading, Mode mode) {
+  const std::vector<Wrench> g = wrenches(scene, reading);
+  return to_cgal(force_dual(moment_labels(g, mode), g));
+}
+
+Surface_mesh to_surface_mesh(const Ls_polytope& P) {
+  Surface_mesh m;
+  std::vector<Surface_mesh::Vertex_index> v;
+  v.reserve(P.vertices.size());
+  for (const Vec3q& p : P.vertices) v.push_back(m.add_vertex(to_point_3(p)));
+  std::vector<Surface_mesh::Vertex_index> cycle;
+  for (const Ls_facet& f : P.facets) {
+    cycle.clear();
+    for (const int i : f.vertices) cycle.push_back(v.at(static_cast<std::size_t>(i)));
+    if (m.add_face(cycle) == Surface_mesh::null_face())
+      throw std::logic_error("to_surface_mesh: a facet does not fit the mesh (not a closed oriented polytope)");
+  }
+  return m;
+}
+
+std::vector<Vec3q> mesh_vertices(const Surface_mesh& m) {
+  std::vector<Vec3q> v;
+  v.reserve(m.number_of_vertices());
+  for (const Surface_mesh::Vertex_index i : m.vertices()) v.push_back(to_vec3q(m.point(i)));
+  return v;
+}
+
+std::vector<std::vector<int>> mesh_faces(const Surface_mesh& m) {
+  std::vector<std::vector<int>> f;
+  f.reserve(m.number_of_faces());
+  for (const Surface_mesh::Face_index k : m.faces()) {
+    std::vector<int> cycle;
+    for (const Surface_mesh::Vertex_index v : CGAL::vertices_around_face(m.halfedge(k), m))
+      cycle.push_back(static_cast<int>(v.idx()));
+    f.push_back(std::move(cycle));
+  }
+  return f;
+}
+
+Limit_surface_meshes limit_surface_meshes(const Scene& scene, int sides) {
+  if (!scene.support) throw std::invalid_argument("limit_surface_meshes: the scene has no support");
+  const Polygonal_ls model(merge_support(*scene.support), make_directions(sides));
+  Limit_surface_meshes r;
+  r.inner = to_surface_mesh(model.build(Side::inner));
+  r.outer = to_surface_mesh(model.build(Side::outer));
+  r.lambda_squared = model.directions().lambda_sq;
+  r.dimension = model.dimension();
+  return r;
+}
+
+}  // namespace wrenchkit::cgal
