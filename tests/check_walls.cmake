@@ -41,7 +41,7 @@ endforeach()
 # CGAL (docs/design.md, "CGAL and Boost") is compiled in exact/cgal/ (the face and the mesh writers), tests/ and
 # bench/ only: no other part of the engine, no front end, no test scenery includes it; the face's one opt-in header
 # (exact/cgal/cgal.h) is included by no other header, and exact/cgal/mesh_io.h (what the command includes) has none.
-foreach(dir exact/numbers exact/io exact/statics exact/sliding exact/pipeline cli python testing)
+foreach(dir exact/numbers exact/io exact/statics exact/sliding exact/fixture exact/pipeline cli python testing)
   check_dir(${dir} "<CGAL/|\"exact/cgal/cgal\\.h\"" "CGAL only in exact/cgal/, tests/ and bench/")
 endforeach()
 file(GLOB_RECURSE headers "${ROOT}/exact/*.h" "${ROOT}/core/*.h" "${ROOT}/float/*.h" "${ROOT}/proofs/*.h")
