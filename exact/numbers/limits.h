@@ -11,7 +11,8 @@ struct Input_limits {
   long max_exponent = 10000;                     // |decimal exponent|
   std::size_t max_file_bytes = 64u << 20;        // 64 MiB
   std::size_t max_depth = 64;                    // JSON nesting
-  std::size_t max_contacts = 100000;             // contacts[] entries
+  std::size_t max_contacts = 100000;             // contacts[] entries (and support.points[])
+  std::size_t max_region_vertices = 4096;        // vertices of all support regions' rings together
 };
 
 }  // namespace wrenchkit

@@ -30,8 +30,6 @@ std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<R
   return std::nullopt;
 }
 
-namespace {
-
 // The cheap witness first (SL-4). In double: Newton's method on the smoothed dual
 //   φ(λ) = Σ ρ_i H(|v_i(λ)|) − λ·p/σ,   H(t) = t²/2 for t ≤ 1, t − 1/2 beyond (ρ_i = μ_i f_i),
 // whose gradient Σ ρ_i A_i v_i/max(|v_i|, 1) − p/σ vanishes where the forces ρ_i v_i/max(|v_i|, 1), each in its
@@ -41,7 +39,8 @@ namespace {
 // rational weights w_i = σ ρ_i/max(|v_i(λ)|, 1), L solves Σ w_i A_i A_iᵀ L = p exactly, g_i = w_i v_i(L), so
 // Σ A_i g_i = p exactly, and each disc is checked exactly (|g_i|² < ρ_i²). Nothing when no σ verifies (then
 // the LP decides). O(k) per Newton step.
-std::optional<Stick_witness> weighted_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p) {
+
+std::optional<Stick_witness> smoothed_stick_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p) {
   const std::size_t k = s.points.size();
   std::vector<double> x(k), y(k), rho(k);
   std::vector<Rational> rq(k);
@@ -166,17 +165,13 @@ std::optional<Stick_witness> weighted_witness(const Support& s, const std::vecto
   return std::nullopt;
 }
 
-}  // namespace
-
 std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admissible& a, const Vec3q& p, int sides,
                                                    const std::vector<Rational>& f) {
-  if (auto w = weighted_witness(s, f, p)) return w;
+  if (auto w = smoothed_stick_witness(s, f, p)) return w;
   for (int n = sides; n <= 256 && s.points.size() * static_cast<std::size_t>(n) <= kMaxStickWitnessColumns; n *= 2)
     if (auto w = stick_witness(s, a, p, n, &f)) return w;
   return std::nullopt;
 }
-
-namespace {
 
 void write_forces(Json_writer& w, const std::vector<Vec2>& g) {
   w.array();
@@ -184,13 +179,16 @@ void write_forces(Json_writer& w, const std::vector<Vec2>& g) {
   w.end_array();
 }
 
-// The certificate's object, opened, with its first members: the load and the motion.
-Json_writer head(const Vec3q& p, const char* motion) {
+Json_writer motion_certificate_head(const Vec3q& p, const char* motion) {
   Json_writer w(512);
   w.object().member("wrenchkit_certificate", 1).member("property", "motion").key("load").rationals(p);
   w.member("motion", motion);
   return w;
 }
+
+namespace {
+
+Json_writer head(const Vec3q& p, const char* motion) { return motion_certificate_head(p, motion); }
 
 void write_stick(Json_writer& w, const Stick_witness& s) {
   w.object().key("distribution").rationals(s.distribution);

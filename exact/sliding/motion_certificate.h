@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "exact/io/json_writer.h"
 #include "exact/sliding/unknown_motion.h"
 
 namespace wrenchkit {
@@ -33,6 +34,16 @@ std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<R
 constexpr std::size_t kMaxStickWitnessColumns = 2048;
 std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admissible& a, const Vec3q& p, int sides,
                                                    const std::vector<Rational>& f);
+
+// The smoothed Newton witness alone (stick_witness_refined's first step; the support's points may be any discrete
+// distribution, e.g. a region's cells as points): forces along one twist's velocities, one exact last round, each
+// disc checked exactly. Nothing when it does not verify.
+std::optional<Stick_witness> smoothed_stick_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p);
+
+// A motion certificate's object, opened, with its first members ("wrenchkit_certificate", "property", "load",
+// "motion"); and an array of [gx, gy] pairs.
+Json_writer motion_certificate_head(const Vec3q& p, const char* motion);
+void write_forces(Json_writer& w, const std::vector<Vec2>& g);
 
 // The certificates, as JSON text (format 1).
 std::string sticks_certificate(const Vec3q& p, const Stick_witness& w);                   // every force given
