@@ -66,6 +66,7 @@ Input_limits limits_of(const py::dict& l) {
   if (l.contains("max_exponent")) x.max_exponent = l["max_exponent"].cast<long>();
   if (l.contains("max_file_size")) x.max_file_bytes = l["max_file_size"].cast<std::size_t>();
   if (l.contains("max_contacts")) x.max_contacts = l["max_contacts"].cast<std::size_t>();
+  if (l.contains("max_region_vertices")) x.max_region_vertices = l["max_region_vertices"].cast<std::size_t>();
   return x;
 }
 

@@ -36,6 +36,7 @@ std::string check_certificates(std::string_view scene_text, const std::vector<st
   limits.max_exponent = request.limits.max_exponent;
   limits.max_depth = request.limits.max_depth;
   limits.max_contacts = request.limits.max_contacts;
+  limits.max_region_vertices = request.limits.max_region_vertices;
   const std::vector<wrenchkit_checker::Result> results = wrenchkit_checker::check_all(scene_text, checked, limits);
   for (std::size_t k = 0; k < results.size(); ++k)
     if (results[k].outcome != wrenchkit_checker::Outcome::accepted)

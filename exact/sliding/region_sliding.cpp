@@ -228,6 +228,38 @@ double fan_power_double(const Support_region& r, double cx, double cy) {
   return K;
 }
 
+double region_power_double(const Support_region& r, const double* q) {
+  if (q[2] == 0) return r.total.get_d() * std::hypot(q[0], q[1]);
+  const double cx = -q[1] / q[2], cy = q[0] / q[2];
+  // The closed form cancels badly for a centre far from the region (its terms grow like the distance squared, the
+  // sum like the distance): there |v| is smooth, and the 7-point rule on the triangles cut in four is accurate.
+  double gx = 0, gy = 0, n = 0, radius = 0;
+  for (const Vec2& v : r.rings[0]) gx += v.x.get_d(), gy += v.y.get_d(), n += 1;
+  gx /= n, gy /= n;
+  for (const Vec2& v : r.rings[0]) radius = std::max(radius, std::hypot(v.x.get_d() - gx, v.y.get_d() - gy));
+  if (std::hypot(cx - gx, cy - gy) <= 8 * radius) return std::fabs(q[2]) * fan_power_double(r, cx, cy);
+  const double p0 = r.pressure[0].get_d(), p1 = r.pressure[1].get_d(), p2 = r.pressure[2].get_d();
+  double h = 0;
+  const auto f = [&](double x, double y) { return std::hypot(q[0] - q[2] * y, q[1] + q[2] * x) * (p0 + p1 * x + p2 * y); };
+  for (const Region_triangle& t : r.triangles) {
+    const double P[3][2] = {{t.a.x.get_d(), t.a.y.get_d()}, {t.b.x.get_d(), t.b.y.get_d()}, {t.c.x.get_d(), t.c.y.get_d()}};
+    const double M[3][2] = {{(P[0][0] + P[1][0]) / 2, (P[0][1] + P[1][1]) / 2},
+                            {(P[1][0] + P[2][0]) / 2, (P[1][1] + P[2][1]) / 2},
+                            {(P[2][0] + P[0][0]) / 2, (P[2][1] + P[0][1]) / 2}};
+    const double (*sub[4][3])[2] = {{&P[0], &M[0], &M[2]}, {&M[0], &P[1], &M[1]}, {&M[2], &M[1], &P[2]}, {&M[0], &M[1], &M[2]}};
+    for (const auto& tri : sub) {
+      const double *a = *tri[0], *b = *tri[1], *c = *tri[2];
+      const double area = std::fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2;
+      double v = 27 * f((a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3);
+      v += 3 * (f(a[0], a[1]) + f(b[0], b[1]) + f(c[0], c[1]));
+      v += 8 * (f((a[0] + b[0]) / 2, (a[1] + b[1]) / 2) + f((b[0] + c[0]) / 2, (b[1] + c[1]) / 2) +
+                f((c[0] + a[0]) / 2, (c[1] + a[1]) / 2));
+      h += area * v / 60;
+    }
+  }
+  return h;
+}
+
 namespace {
 
 // A rational interval scaled by a rational.
@@ -354,58 +386,88 @@ std::vector<Support_point> cell_points(const Support_region& r, const Rational& 
   return out;
 }
 
-Rational speed_bound(const Vec2& at, const Vec3q& q) {
-  const Rational vx = q[0] - q[2] * at.y, vy = q[1] + q[2] * at.x;
-  return sqrt_bracket(vx * vx + vy * vy, 40).second;
-}
 
 }  // namespace
 
 Region_slide_block region_slide_block(const Support_region& r, const Rational& mu, const Vec3q& q,
                                       const std::optional<Rational>& target, std::size_t max_cells) {
-  // Cells as triangles over a growing vertex list; a cell's exact bound Σ_j w_j u_j and, in double, its excess over
-  // Jensen's lower bound F·|v(c_T)| (c_T the pressure centroid), the cell refined first.
+  // The speed bounds share one power-of-two denominator 2^k (u = (⌊√⌊|v|² 4^k⌋⌋ + 1)/2^k ≥ |v|, about 2^-44 of the
+  // largest speed above it), so the exact sum of the cells' bounds keeps small denominators. Refinement runs in
+  // double (each cell's bound Σ_j w_j u_j and its excess over Jensen's lower bound F·|v(c_T)|, c_T the pressure
+  // centroid: the cell with the largest excess is cut into four at its edges' midpoints); the exact bound is
+  // summed once at the end and, should rounding have fooled the doubles, the refinement goes on.
+  const double qd[3] = {q[0].get_d(), q[1].get_d(), q[2].get_d()};
+  const auto speed_d = [&](double x, double y) { return std::hypot(qd[0] - qd[2] * y, qd[1] + qd[2] * x); };
+  double vmax = 0;
+  for (const auto& ring : r.rings)
+    for (const Vec2& v : ring) vmax = std::max(vmax, speed_d(v.x.get_d(), v.y.get_d()));
+  int e = 0;
+  std::frexp(vmax > 0 && std::isfinite(vmax) ? vmax : 1.0, &e);
+  const long k = std::max(0L, 44L - e);  // 2^k: u to about 2^-44 of vmax
+  Integer scale;
+  mpz_ui_pow_ui(scale.get_mpz_t(), 2, static_cast<unsigned long>(k));
+  const Rational step(Integer(1), scale);
   struct Cell {
     std::array<std::size_t, 3> v;
-    Rational bound;
-    double excess = 0;
+    double bound = 0, excess = 0;
     bool alive = true;
   };
   std::vector<Vec2> vertices;
+  std::vector<double> xd, yd;
   std::vector<Rational> u;
+  std::vector<double> ud;
   std::map<std::pair<Rational, Rational>, std::size_t> index;
   const auto vertex = [&](const Vec2& p) {
     const auto [at, fresh] = index.emplace(std::make_pair(p.x, p.y), vertices.size());
     if (fresh) {
       vertices.push_back(p);
-      u.push_back(speed_bound(p, q));
+      xd.push_back(p.x.get_d());
+      yd.push_back(p.y.get_d());
+      const Rational vx = q[0] - q[2] * p.y, vy = q[1] + q[2] * p.x;
+      const Rational s2 = (vx * vx + vy * vy) * scale * scale;  // |v|² 4^k
+      Integer floor_s2 = s2.get_num() / s2.get_den(), root;
+      mpz_sqrt(root.get_mpz_t(), floor_s2.get_mpz_t());
+      u.push_back(Rational(root + 1, scale));
+      u.back().canonicalize();
+      ud.push_back(u.back().get_d());
     }
     return at->second;
   };
-  const double qd[3] = {q[0].get_d(), q[1].get_d(), q[2].get_d()};
+  const double p0 = r.pressure[0].get_d(), p1 = r.pressure[1].get_d(), p2 = r.pressure[2].get_d();
   std::vector<Cell> cells;
   std::priority_queue<std::pair<double, std::size_t>> queue;
-  Rational total;
+  double total = 0;
   const auto add = [&](const std::array<std::size_t, 3>& v) {
-    const Triangle_measures m = triangle_measures({vertices[v[0]], vertices[v[1]], vertices[v[2]]}, r.pressure);
-    Cell c{v, m.vertex_weights[0] * u[v[0]] + m.vertex_weights[1] * u[v[1]] + m.vertex_weights[2] * u[v[2]]};
-    const double cx = Rational(m.moment.x / m.force).get_d(), cy = Rational(m.moment.y / m.force).get_d();
-    c.excess = c.bound.get_d() - m.force.get_d() * std::hypot(qd[0] - qd[2] * cy, qd[1] + qd[2] * cx);
+    const double ax = xd[v[0]], ay = yd[v[0]], bx = xd[v[1]], by = yd[v[1]], cx = xd[v[2]], cy = yd[v[2]];
+    const double area = std::fabs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)) / 2;
+    const double pa = p0 + p1 * ax + p2 * ay, pb = p0 + p1 * bx + p2 * by, pc = p0 + p1 * cx + p2 * cy, all = pa + pb + pc;
+    Cell c{v};
+    c.bound = area * ((pa + all) * ud[v[0]] + (pb + all) * ud[v[1]] + (pc + all) * ud[v[2]]) / 12;
+    // Pressure centroid: (∫ r p)/F with the edge-midpoint rule.
+    const double F = area * all / 3;
+    double gx = (ax + bx + cx) / 3, gy = (ay + by + cy) / 3;
+    if (F > 0) {
+      const double m[3][2] = {{(ax + bx) / 2, (ay + by) / 2}, {(bx + cx) / 2, (by + cy) / 2}, {(cx + ax) / 2, (cy + ay) / 2}};
+      double sx = 0, sy = 0;
+      for (const auto& t : m) {
+        const double pm = p0 + p1 * t[0] + p2 * t[1];
+        sx += t[0] * pm, sy += t[1] * pm;
+      }
+      gx = area * sx / 3 / F, gy = area * sy / 3 / F;
+    }
+    c.excess = c.bound - F * speed_d(gx, gy);
     total += c.bound;
     queue.emplace(c.excess, cells.size());
-    cells.push_back(std::move(c));
+    cells.push_back(c);
   };
   for (const Region_triangle& t : r.triangles) add({vertex(t.a), vertex(t.b), vertex(t.c)});
   std::size_t alive = cells.size();
-  // The cell whose bound exceeds Jensen's lower bound most is cut into four (its edges' midpoints), until the
-  // whole bound meets the target or the budget is spent. A neighbour keeps its uncut edge: the certificate's
-  // tiling check cancels collinear overlapping segments (proofs/notes/RG-1).
-  while (target && alive + 3 <= max_cells && !queue.empty() && mu * total > *target) {
-    const std::size_t k = queue.top().second;
+  const auto split = [&] {
+    const std::size_t c = queue.top().second;
     queue.pop();
-    cells[k].alive = false;
-    total -= cells[k].bound;
-    const std::array<std::size_t, 3> v = cells[k].v;
+    cells[c].alive = false;
+    total -= cells[c].bound;
+    const std::array<std::size_t, 3> v = cells[c].v;
     const Vec2 a = vertices[v[0]], b = vertices[v[1]], d = vertices[v[2]];
     const std::size_t ab = vertex({(a.x + b.x) / 2, (a.y + b.y) / 2}), bd = vertex({(b.x + d.x) / 2, (b.y + d.y) / 2}),
                       da = vertex({(d.x + a.x) / 2, (d.y + a.y) / 2});
@@ -414,13 +476,33 @@ Region_slide_block region_slide_block(const Support_region& r, const Rational& m
     add({da, bd, v[2]});
     add({ab, bd, da});
     alive += 3;
-  }
+  };
+  const double mud = mu.get_d();
+  double aim = target ? target->get_d() : 0;
   Region_slide_block out;
-  out.bound = mu * total;
+  for (;;) {
+    while (target && alive + 3 <= max_cells && !queue.empty() && mud * total > aim) split();
+    // The exact bound of the living cells.
+    std::vector<Rational> terms;
+    out.cells.triangles.clear();
+    for (const Cell& c : cells) {
+      if (!c.alive) continue;
+      out.cells.triangles.push_back(c.v);
+      const Triangle_measures m = triangle_measures({vertices[c.v[0]], vertices[c.v[1]], vertices[c.v[2]]}, r.pressure);
+      terms.push_back(m.vertex_weights[0] * u[c.v[0]] + m.vertex_weights[1] * u[c.v[1]] + m.vertex_weights[2] * u[c.v[2]]);
+    }
+    while (terms.size() > 1) {  // pairwise: the denominators stay small, the sums balanced
+      std::size_t n = 0;
+      for (std::size_t i = 0; i + 1 < terms.size(); i += 2) terms[n++] = terms[i] + terms[i + 1];
+      if (terms.size() % 2) terms[n++] = terms.back();
+      terms.resize(n);
+    }
+    out.bound = mu * (terms.empty() ? Rational(0) : terms[0]);
+    if (!target || out.bound <= *target || alive + 3 > max_cells || queue.empty()) break;
+    aim = std::min(aim, mud * total) * (1 - 1e-9);  // rounding fooled the doubles: aim a little lower
+  }
   out.speed_bounds = std::move(u);
   out.cells.vertices = std::move(vertices);
-  for (const Cell& c : cells)
-    if (c.alive) out.cells.triangles.push_back(c.v);
   return out;
 }
 
@@ -497,14 +579,12 @@ std::optional<std::string> try_slide(const Support& s, const Vec3q& p, const Vec
   double est_sum = 0;
   const double qd[3] = {q[0].get_d(), q[1].get_d(), q[2].get_d()};
   for (const Support_region& r : s.regions) {
-    const double mu = region_mu(s, r).get_d();
-    double h = 0;
-    if (qd[2] == 0) h = mu * r.total.get_d() * std::hypot(qd[0], qd[1]);
-    else h = mu * std::fabs(qd[2]) * fan_power_double(r, -qd[1] / qd[2], qd[0] / qd[2]);
+    const double h = region_mu(s, r).get_d() * region_power_double(r, qd);
     est.push_back(std::isfinite(h) ? std::max(h, 0.0) : 0.0);
     est_sum += est.back();
   }
   const Rational left = power - bound;
+  if (est_sum > left.get_d() * (1 + 1e-9)) return std::nullopt;  // the true power already exceeds q·p: no bound can
   std::vector<Region_slide_block> blocks;
   Rational total = bound;
   cells_out = 0;
@@ -543,11 +623,8 @@ Region_motion decide_region_motion(const Support& s, const Vec3q& p) {
   const auto h = [&](const double* q) {
     double v = 0;
     for (const Point_d& t : pts) v += t.rho * std::hypot(q[0] - q[2] * t.y, q[1] + q[2] * t.x);
-    for (const auto& [r, mu] : regions) {
-      if (mu == 0) continue;
-      if (q[2] == 0) v += mu * r->total.get_d() * std::hypot(q[0], q[1]);
-      else v += mu * std::fabs(q[2]) * fan_power_double(*r, -q[1] / q[2], q[0] / q[2]);
-    }
+    for (const auto& [r, mu] : regions)
+      if (mu != 0) v += mu * region_power_double(*r, q);
     return v;
   };
   const bool zero = p[0] == 0 && p[1] == 0 && p[2] == 0;

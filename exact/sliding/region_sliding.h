@@ -41,6 +41,9 @@ struct Fan_bracket {
 Fan_bracket fan_integrals(const Support_region& r, const Vec2& c, long bits);
 // K in plain double (the same closed form; a proposal, not certified).
 double fan_power_double(const Support_region& r, double cx, double cy);
+// ∫_R |v(r)| p dA for the twist q in plain double (the closed form near the region, a quadrature far from it, where
+// the closed form cancels): the searches' proposal, not certified.
+double region_power_double(const Support_region& r, const double* q);
 
 // The support's exact statics and, with a twist, its power and load (certified brackets).
 struct Region_sliding {

@@ -42,6 +42,7 @@ struct Limits {
   long max_exponent = 10000;       // |exponent| of a scene number
   std::size_t max_depth = 64;      // JSON containers nested in one another
   std::size_t max_contacts = 100000;  // also the limit on support.points
+  std::size_t max_region_vertices = 4096;  // vertices of all support regions' rings together
   // Sliding certificates that claim "sticks" for every admissible distribution (certificate-format.md
   // §6): the checker enumerates the vertices of F itself, over n + C(n,2) + C(n,3) candidate bases for
   // n points without a given force, and rejects a larger certificate as too large to check.
