@@ -14,6 +14,7 @@
 #include "exact/io/scene.h"
 #include "exact/io/scene_writer.h"
 #include "exact/io/streaming_scene_reader.h"
+#include "exact/pipeline/support_answer.h"
 #include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
 #include "proofs/checker/checker.h"
@@ -358,6 +359,145 @@ TEST(RegionPower, InvariantUnderRationalRotationsAndTranslations) {
     EXPECT_EQ(cb.center_of_pressure.x, c * ca.center_of_pressure.x - s * ca.center_of_pressure.y + tx);
     EXPECT_EQ(cb.center_of_pressure.y, s * ca.center_of_pressure.x + c * ca.center_of_pressure.y + ty);
   }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Stick / slide with certificates, through the pipeline (every certificate checked by the independent checker).
+
+Support_item motion_of(const std::string& text, const Vec3q& p, Mode mode = Mode::hybrid) {
+  Request request;
+  request.mode = mode;
+  Support_query q;
+  q.load = p;
+  return answer_support(text, "scene", request, q);
+}
+
+// A small uniform square of half-size h at (x, y) with force f, as a region object.
+std::string leg(const Rational& x, const Rational& y, const Rational& h, const Rational& f) {
+  return "{\"outline\": " + ring({{x - h, y - h}, {x + h, y - h}, {x + h, y + h}, {x - h, y + h}}) +
+         ", \"pressure\": \"uniform\", \"force\": " + num(f) + "}";
+}
+
+TEST(RegionMotion, SquareSticksInsideAndSlidesOutside) {
+  const std::string sq = region_scene(square(1), 1, 1);
+  const double h = (std::sqrt(2.0) + std::asinh(1.0)) / 3;
+  struct Case {
+    Vec3q load;
+    Motion motion;
+  };
+  const std::vector<Case> cases = {
+      {{0, 0, Rational(1, 2)}, Motion::sticks},         {{0, 0, Rational(4, 5)}, Motion::slides},
+      {{Rational(99, 100), 0, 0}, Motion::sticks},      {{Rational(101, 100), 0, 0}, Motion::slides},
+      {{Rational(3, 5), Rational(3, 10), Rational(2, 5)}, Motion::sticks},
+      {{0, 0, Rational(static_cast<long>(std::floor(h * 0.999 * 1e6)), 1000000)}, Motion::sticks},
+      {{0, 0, Rational(static_cast<long>(std::ceil(h * 1.001 * 1e6)), 1000000)}, Motion::slides},
+      {{0, 0, 0}, Motion::sticks},
+  };
+  for (const Case& c : cases)
+    for (Mode mode : {Mode::hybrid, Mode::exact}) {
+      const Support_item r = motion_of(sq, c.load, mode);
+      ASSERT_EQ(r.status, Status::answered) << r.message;
+      EXPECT_EQ(r.motion.motion, c.motion) << to_string(c.load[0]) << "," << to_string(c.load[1]) << "," << to_string(c.load[2]);
+      EXPECT_FALSE(r.certificate.empty());  // checked by the independent checker inside answer_support
+    }
+  // Float: no twin of regions.
+  EXPECT_EQ(motion_of(sq, {0, 0, Rational(1, 2)}, Mode::float_only).status, Status::undecided);
+}
+
+TEST(RegionMotion, TableAndPlateAsSmallRegionsReachTheirPointMassLimits) {
+  // The four-legged table with a known, even distribution (theory-sliding §6): legs at (±1, ±1), 1/4 each, μ = 1;
+  // the pure moment that sticks tends to √2 as the legs shrink, the force to 1.
+  const Rational e(1, 100);
+  std::string legs;
+  for (const auto& [x, y] : std::vector<std::pair<int, int>>{{1, 1}, {-1, 1}, {-1, -1}, {1, -1}})
+    legs += (legs.empty() ? "" : ", ") + leg(x, y, e, Rational(1, 4));
+  const std::string table = "{\"wrenchkit\": 1, \"support\": {\"mu\": 1, \"regions\": [" + legs + "]}}";
+  const Region_sliding a = power(table, {0, 0, 1});
+  EXPECT_NEAR(a.h_lo.get_d(), std::sqrt(2.0), 1e-4);
+  EXPECT_EQ(motion_of(table, {0, 0, Rational(140, 100)}).motion.motion, Motion::sticks);
+  EXPECT_EQ(motion_of(table, {0, 0, Rational(142, 100)}).motion.motion, Motion::slides);
+  EXPECT_EQ(motion_of(table, {Rational(99, 100), 0, 0}).motion.motion, Motion::sticks);
+  EXPECT_EQ(motion_of(table, {Rational(101, 100), 0, 0}).motion.motion, Motion::slides);
+  // The dinner plate carried by its rim: eight small regions at radius 1 (rational points on the circle), 1/8 each;
+  // the pure moment μWR = 1 is the threshold.
+  std::string rim;
+  for (const Vec2& v : inscribed(8, 1)) rim += (rim.empty() ? "" : ", ") + leg(v.x, v.y, e, Rational(1, 8));
+  const std::string plate = "{\"wrenchkit\": 1, \"support\": {\"mu\": 1, \"regions\": [" + rim + "]}}";
+  EXPECT_NEAR(power(plate, {0, 0, 1}).h_lo.get_d(), 1.0, 1e-4);
+  EXPECT_EQ(motion_of(plate, {0, 0, Rational(99, 100)}).motion.motion, Motion::sticks);
+  EXPECT_EQ(motion_of(plate, {0, 0, Rational(101, 100)}).motion.motion, Motion::slides);
+}
+
+TEST(RegionMotion, PointsWithRegionsAndLinearPressure) {
+  // A point (3, 0) with force 1 and the square [-1,1]² pressed by p = 1 + x/2 (W = 4, centre of pressure (1/6, 0)).
+  const std::string text =
+      "{\"wrenchkit\": 1, \"support\": {\"mu\": \"1/2\", \"points\": [{\"at\": [3, 0], \"force\": 1}], \"regions\": "
+      "[{\"outline\": [[-1,-1],[1,-1],[1,1],[-1,1]], \"pressure\": {\"linear\": [1, \"1/2\", 0]}, \"mu\": 1}]}}";
+  const Scene s = read(text);
+  EXPECT_EQ(s.support->regions[0].total, 4);
+  const Region_sliding st = region_sliding(*s.support, std::nullopt, 1);
+  EXPECT_EQ(st.total_force, 5);
+  EXPECT_EQ(st.center_of_pressure.x, (3 + Rational(2, 3)) / 5);  // (1·3 + 4·(1/6))/5
+  EXPECT_EQ(st.mu_f0, Rational(9, 2));
+  for (const auto& [p, m] : std::vector<std::pair<Vec3q, Motion>>{{{4, 0, 0}, Motion::sticks},
+                                                                  {{5, 0, 0}, Motion::slides},
+                                                                  {{0, 1, 2}, Motion::sticks},
+                                                                  {{0, 0, 6}, Motion::slides}}) {
+    const Support_item r = motion_of(text, p);
+    ASSERT_EQ(r.status, Status::answered) << r.message;
+    EXPECT_EQ(r.motion.motion, m) << to_string(p[0]) << "," << to_string(p[1]) << "," << to_string(p[2]);
+  }
+}
+
+TEST(RegionMotion, RandomRegionsNearTheirLimitSurfaceAreCertified) {
+  // Random star regions (some with holes, some linear), random load directions scaled to 10^-2 inside and outside
+  // the limit surface (by the search's gauge): the answer is the side, and every certificate is accepted.
+  std::mt19937_64 rng(test::seed(1202));
+  std::uniform_int_distribution<int> coord(-8, 8);
+  int decided = 0;
+  for (int trial = 0; trial < 16; ++trial) {
+    const std::string text = region_scene(random_star(rng, 4 + trial % 6), 1 + trial % 3, Rational(1, 2));
+    const Scene s = read(text);
+    Vec3q dir{Rational(coord(rng), 4), Rational(coord(rng), 4), Rational(coord(rng), 4)};
+    if (dir[0] == 0 && dir[1] == 0 && dir[2] == 0) dir[2] = 1;
+    const Region_motion probe = decide_region_motion(*s.support, dir);
+    const double g = probe.gauge_estimate;  // dir/g is on the limit surface
+    ASSERT_TRUE(std::isfinite(g) && g > 0) << text;
+    for (const double side : {0.99, 1.01}) {
+      const Rational k(static_cast<long>(std::llround(side / g * 1e9)), 1000000000);
+      const Vec3q p{dir[0] * k, dir[1] * k, dir[2] * k};
+      const Support_item r = motion_of(text, p);
+      ASSERT_EQ(r.status, Status::answered) << r.message << "\n" << text;
+      EXPECT_EQ(r.motion.motion, side < 1 ? Motion::sticks : Motion::slides) << text << " side " << side;
+      decided += r.motion.motion != Motion::undecided;
+    }
+  }
+  EXPECT_EQ(decided, 32);
+}
+
+TEST(RegionMotion, TamperedCertificatesAreRejected) {
+  const std::string sq = region_scene(square(1), 1, 1);
+  const Support_item stick = motion_of(sq, {Rational(1, 2), 0, Rational(1, 4)});
+  ASSERT_EQ(stick.motion.motion, Motion::sticks);
+  const Support_item slide = motion_of(sq, {0, 0, Rational(4, 5)});
+  ASSERT_EQ(slide.motion.motion, Motion::slides);
+  using wrenchkit_checker::Outcome;
+  EXPECT_EQ(wrenchkit_checker::check(sq, stick.certificate).outcome, Outcome::accepted);
+  EXPECT_EQ(wrenchkit_checker::check(sq, slide.certificate).outcome, Outcome::accepted);
+  // Another load, another region, a scaled force: rejected.
+  const auto replace = [](std::string t, const std::string& a, const std::string& b) {
+    const auto at = t.find(a);
+    return at == std::string::npos ? std::string() : t.replace(at, a.size(), b);
+  };
+  EXPECT_EQ(wrenchkit_checker::check(sq, replace(stick.certificate, "\"load\": [\"1/2\"", "\"load\": [\"3/5\"")).outcome,
+            Outcome::rejected);
+  EXPECT_EQ(wrenchkit_checker::check(region_scene(square(1), 1, Rational(1, 2)), stick.certificate).outcome,
+            Outcome::rejected);  // μ 1/2: the discs shrink
+  EXPECT_EQ(wrenchkit_checker::check(region_scene(square(Rational(99, 100)), 1, 1), slide.certificate).outcome,
+            Outcome::rejected);  // another square: the cells no longer tile it
+  EXPECT_EQ(wrenchkit_checker::check(sq, replace(slide.certificate, "\"load\": [\"0\", \"0\", \"4/5\"]",
+                                                 "\"load\": [\"0\", \"0\", \"3/4\"]")).outcome,
+            Outcome::rejected);  // below the power
 }
 
 }  // namespace
