@@ -383,7 +383,8 @@ std::vector<Command> make_table() {
        "Exact rationals are printed in lowest terms; OFF/OBJ coordinates are doubles (for viewing).\n"
        "\n"
        "Support regions (docs/regions.md): their limit surface is strictly convex, so there is no exact\n"
-       "polytope (--sides, --list, --off, --obj, --svg are refused); --twist gives the certified power\n"
+       "polytope (--sides, --list, --off, --obj are refused; --svg draws the support shaded by its\n"
+       "pressure); --twist gives the certified power\n"
        "and load (--tolerance: their relative width, default 1e-6), --load sticks or slides with a\n"
        "certificate (cells of the regions with forces inside their discs, or a twist with speed bounds\n"
        "at the cells' vertices) that the independent checker accepts; float mode answers undecided.\n",

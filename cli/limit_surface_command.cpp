@@ -137,7 +137,7 @@ Ls_options limit_surface_options(const Options& o) {
   // asked; a --load or --twist query alone is answered on the true surface, building them only if needed.
   lo.polytopes = o.sides || o.tolerance || lo.list || !lo.off_file.empty() || !lo.obj_file.empty() ||
                  !lo.svg_file.empty() || (!lo.load && !lo.twist);
-  lo.polytopes_asked = o.sides || lo.list || !lo.off_file.empty() || !lo.obj_file.empty() || !lo.svg_file.empty();
+  lo.polytopes_asked = o.sides || lo.list || !lo.off_file.empty() || !lo.obj_file.empty();  // --svg draws regions too
   lo.region_tolerance = o.tolerance;
   if (lo.mode == Mode::float_only && (lo.list || !lo.off_file.empty() || !lo.obj_file.empty() || !lo.svg_file.empty()))
     throw Usage_error("--list, --off, --obj and --svg show the exact polytopes: not with --mode float");

@@ -216,8 +216,7 @@ void answer_regions(std::string_view source, const Support_query& q, Support_ite
   const Support& s = *r.scene.support;
   if (q.polytopes_asked)
     throw Input_error(std::string(source) + ": support: it has regions, whose limit surface is strictly convex: no exact "
-                                            "polytope to build, list or draw (--sides, --list, --off, --obj, --svg need "
-                                            "support points only)");
+                                            "polytope to build or list (--sides, --list, --off, --obj need support points only)");
   if (!s.known())
     throw Input_error(std::string(source) + ": support: regions together with points whose force is not given are "
                                             "not answered yet (give every point's force)");

@@ -223,14 +223,22 @@ def limit_surface(scene, sides=32, *, tolerance=None, twist=None, load=None, mod
     smallest sides whose certified relative error is at most tolerance. mode: "hybrid" (default: the motion
     by the float twin's certified search on the true surface first, the polygons when it cannot tell) or
     "exact" (the polygons only).
+
+    A support with regions (docs/regions.md) has no polytope: {"regions", "total_force", "center_of_friction",
+    "mu_f0", ...}; twist adds "power_bracket" (certified, relative width <= tolerance, default 1e-6) and
+    "load_box"; load adds "motion" and "certificate_json" (checked by the independent checker).
     """
     tol = None if tolerance is None else _number_text(tolerance, "tolerance")
     return _core.limit_surface(_scene(scene), int(sides), tol, _vec(twist, "twist"), _vec(load, "load"), mode)
 
 
-def sliding(scene, twist=None, sides=64, mode="hybrid"):
-    """Centre of friction and the frictional load for a twist (theory.md section 10), exact bounds."""
-    return _core.sliding(_scene(scene), _vec(twist, "twist"), int(sides), mode)
+def sliding(scene, twist=None, sides=64, mode="hybrid", *, tolerance=None):
+    """Centre of friction and the frictional load for a twist (theory.md section 10), exact bounds.
+
+    With support regions (docs/regions.md): the power and the load are certified brackets whose relative width
+    is at most tolerance (default 1e-6): "power_bracket", "load_box"."""
+    tol = None if tolerance is None else _number_text(tolerance, "tolerance")
+    return _core.sliding(_scene(scene), _vec(twist, "twist"), int(sides), mode, tol)
 
 
 def reference(scenes, out, sides=16):
