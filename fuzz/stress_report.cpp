@@ -51,7 +51,9 @@ const char* check_name(Measure c) {
   return c == Measure::verdict ? "verdict" : c == Measure::labels ? "labels" : c == Measure::motion ? "stick/slide"
                                                                                                : "stick/slide over F";
 }
-bool is_motion(Question q) { return q == Question::stick_slide || q == Question::stick_slide_over; }
+bool is_motion(Question q) {
+  return q == Question::stick_slide || q == Question::stick_slide_over || q == Question::stick_slide_region;
+}
 
 struct Row {
   std::string family;
@@ -93,6 +95,7 @@ long cases_for(const Family& f, long cases) {
   if (n == "many_contacts") return std::max(1L, cases / 25);
   if (n == "collinear_support") return std::max(1L, cases / 20);
   if (n == "unknown_support") return std::max(1L, cases / 20);
+  if (n == "region_support") return std::max(1L, cases / 20);
   return cases;
 }
 
@@ -254,6 +257,44 @@ void run_motion_over_case(const families::Case& k, std::uint64_t seed, long inde
   if (wrong(twin, hybrid, why_twin)) ++row.twin_wrong, report_wrong("over F twin", k, seed, index, why_twin);
   if (wrong(hybrid, exact, why_hybrid)) ++row.hybrid_wrong, report_wrong("over F hybrid", k, seed, index, why_hybrid);
   if (wrong(exact, hybrid, why_exact)) ++row.exact_wrong, report_wrong("over F exact", k, seed, index, why_exact);
+}
+
+// stick/slide on a support with regions (region_support): each mode through the pipeline, the certificate checked
+// by the independent checker there (a rejected one, or any error, is a wrong answer); the truth is the side, by
+// construction. float has no twin of regions (always undecided); naive: the double search without bounds.
+void run_region_case(const families::Case& k, std::uint64_t seed, long index, Row& row) {
+  const Scene scene = read_scene(k.text, Input_limits{});
+  Support_query query;
+  query.question = Support_question::limit_surface;
+  query.load = k.motion_load;
+  query.polytopes = false;
+  const auto answer_in = [&](Mode mode, std::string& why) {
+    Request request;
+    request.mode = mode;
+    const Support_item item = answer_support(scene, k.text, "stress", request, query);
+    if (item.status == Status::answered) return item.motion.motion;
+    if (item.status != Status::undecided) why = item.message;
+    return Motion::undecided;
+  };
+  std::string why_exact, why_twin, why_hybrid;
+  Motion exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });
+  Motion twin = timed(row.t_twin, [&] { return answer_in(Mode::float_only, why_twin); });
+  Motion hybrid = timed(row.t_hybrid, [&] { return answer_in(Mode::hybrid, why_hybrid); });
+  const bool naive = timed(row.t_naive, [&] { return families::naive_region_slides(k); });
+  const auto flip = [](Motion m) { return m == Motion::sticks ? Motion::slides : Motion::sticks; };
+  if (twin != Motion::undecided && fault("twin")) twin = flip(twin);
+  if (hybrid != Motion::undecided && fault("hybrid")) hybrid = flip(hybrid);
+  if (exact != Motion::undecided && fault("exact")) exact = flip(exact);
+  const Motion truth = k.above ? Motion::slides : Motion::sticks;
+  const auto wrong = [&](Motion m, const std::string& why) { return !why.empty() || (m != Motion::undecided && m != truth); };
+  ++row.cases;
+  row.naive_wrong += naive != k.above;
+  row.twin_undecided += twin == Motion::undecided;
+  row.hybrid_undecided += hybrid == Motion::undecided;
+  row.exact_undecided += exact == Motion::undecided;
+  if (wrong(twin, why_twin)) ++row.twin_wrong, report_wrong("region twin", k, seed, index, why_twin);
+  if (wrong(hybrid, why_hybrid)) ++row.hybrid_wrong, report_wrong("region hybrid", k, seed, index, why_hybrid);
+  if (wrong(exact, why_exact)) ++row.exact_wrong, report_wrong("region exact", k, seed, index, why_exact);
 }
 
 std::string pct(long n, long d) {
@@ -420,7 +461,7 @@ Summary summarize(const std::vector<Row>& rows, const std::string& family, Measu
 }
 
 std::vector<Measure> checks_of(const Family& f) {
-  if (f.question == Question::stick_slide) return {Measure::motion};
+  if (f.question == Question::stick_slide || f.question == Question::stick_slide_region) return {Measure::motion};
   if (f.question == Question::stick_slide_over) return {Measure::motion_over};
   return {Measure::verdict, Measure::labels};
 }
@@ -649,7 +690,8 @@ int main(int argc, char** argv) {
       Row verdict, labels;
       verdict.family = labels.family = fam.name;
       verdict.eps = labels.eps = eps;
-      verdict.check = fam.question == Question::stick_slide        ? Measure::motion
+      verdict.check = fam.question == Question::stick_slide || fam.question == Question::stick_slide_region
+                          ? Measure::motion
                       : fam.question == Question::stick_slide_over ? Measure::motion_over
                                                                    : Measure::verdict;
       labels.check = Measure::labels;
@@ -657,6 +699,7 @@ int main(int argc, char** argv) {
         const families::Case k = families::make_case(fam, eps, rng);
         if (fam.question == Question::stick_slide) run_motion_case(k, seed, c, verdict);
         else if (fam.question == Question::stick_slide_over) run_motion_over_case(k, seed, c, verdict);
+        else if (fam.question == Question::stick_slide_region) run_region_case(k, seed, c, verdict);
         else run_contact_case(k, seed, c, verdict, labels);
       }
       rows.push_back(verdict);

@@ -55,7 +55,8 @@ struct Gravity_spec {
 // stick or slide on the support's (true) limit surface (exact/sliding/sliding.h decide_motion)?
 // stick_slide_over: the support's distribution is unknown: does the load stick for every admissible
 // distribution, slide for every one, or does it depend (exact/sliding/unknown_motion.h)?
-enum class Question { force_closure, form_closure, equilibrium, all, stick_slide, stick_slide_over };
+// stick_slide_region: does the load stick or slide on a support with regions (continuous pressure) [RG-1]?
+enum class Question { force_closure, form_closure, equilibrium, all, stick_slide, stick_slide_over, stick_slide_region };
 
 // stick_slide_over: the answers a scene's construction leaves possible (a bit set).
 enum Motion_answer : unsigned { answer_sticks = 1, answer_slides = 2, answer_depends = 4 };

@@ -424,10 +424,18 @@ Region_slide_block region_slide_block(const Support_region& r, const Rational& m
       xd.push_back(p.x.get_d());
       yd.push_back(p.y.get_d());
       const Rational vx = q[0] - q[2] * p.y, vy = q[1] + q[2] * p.x;
-      const Rational s2 = (vx * vx + vy * vy) * scale * scale;  // |v|² 4^k
-      Integer floor_s2 = s2.get_num() / s2.get_den(), root;
-      mpz_sqrt(root.get_mpz_t(), floor_s2.get_mpz_t());
-      u.push_back(Rational(root + 1, scale));
+      const Rational speed2 = vx * vx + vy * vy;
+      if (mpz_perfect_square_p(speed2.get_num_mpz_t()) && mpz_perfect_square_p(speed2.get_den_mpz_t())) {
+        Integer n, d;  // a rational speed is its own bound (a translation with |v| rational: the bound is exact)
+        mpz_sqrt(n.get_mpz_t(), speed2.get_num_mpz_t());
+        mpz_sqrt(d.get_mpz_t(), speed2.get_den_mpz_t());
+        u.push_back(Rational(n, d));
+      } else {
+        const Rational s2 = speed2 * scale * scale;  // |v|² 4^k
+        Integer floor_s2 = s2.get_num() / s2.get_den(), root;
+        mpz_sqrt(root.get_mpz_t(), floor_s2.get_mpz_t());
+        u.push_back(Rational(root + 1, scale));
+      }
       u.back().canonicalize();
       ud.push_back(u.back().get_d());
     }
@@ -436,7 +444,7 @@ Region_slide_block region_slide_block(const Support_region& r, const Rational& m
   const double p0 = r.pressure[0].get_d(), p1 = r.pressure[1].get_d(), p2 = r.pressure[2].get_d();
   std::vector<Cell> cells;
   std::priority_queue<std::pair<double, std::size_t>> queue;
-  double total = 0;
+  double total = 0, lower = 0;  // the bound, and Jensen's lower bound Σ F_T |v(c_T)| ≤ ∫ |v| p (doubles)
   const auto add = [&](const std::array<std::size_t, 3>& v) {
     const double ax = xd[v[0]], ay = yd[v[0]], bx = xd[v[1]], by = yd[v[1]], cx = xd[v[2]], cy = yd[v[2]];
     const double area = std::fabs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)) / 2;
@@ -457,6 +465,7 @@ Region_slide_block region_slide_block(const Support_region& r, const Rational& m
     }
     c.excess = c.bound - F * speed_d(gx, gy);
     total += c.bound;
+    lower += c.bound - c.excess;
     queue.emplace(c.excess, cells.size());
     cells.push_back(c);
   };
@@ -467,6 +476,7 @@ Region_slide_block region_slide_block(const Support_region& r, const Rational& m
     queue.pop();
     cells[c].alive = false;
     total -= cells[c].bound;
+    lower -= cells[c].bound - cells[c].excess;
     const std::array<std::size_t, 3> v = cells[c].v;
     const Vec2 a = vertices[v[0]], b = vertices[v[1]], d = vertices[v[2]];
     const std::size_t ab = vertex({(a.x + b.x) / 2, (a.y + b.y) / 2}), bd = vertex({(b.x + d.x) / 2, (b.y + d.y) / 2}),
@@ -480,8 +490,17 @@ Region_slide_block region_slide_block(const Support_region& r, const Rational& m
   const double mud = mu.get_d();
   double aim = target ? target->get_d() : 0;
   Region_slide_block out;
-  for (;;) {
-    while (target && alive + 3 <= max_cells && !queue.empty() && mud * total > aim) split();
+  for (int round = 0;; ++round) {
+    // Refine while the bound misses the aim — unless Jensen's lower bound of the true integral misses it too: then
+    // no cells can reach it (the load is inside, or too close to the limit surface for doubles).
+    bool hopeless = false;
+    while (target && alive + 3 <= max_cells && !queue.empty() && mud * total > aim) {
+      if (mud * lower > aim * (1 + 1e-12)) {
+        hopeless = true;
+        break;
+      }
+      split();
+    }
     // The exact bound of the living cells.
     std::vector<Rational> terms;
     out.cells.triangles.clear();
@@ -498,8 +517,9 @@ Region_slide_block region_slide_block(const Support_region& r, const Rational& m
       terms.resize(n);
     }
     out.bound = mu * (terms.empty() ? Rational(0) : terms[0]);
-    if (!target || out.bound <= *target || alive + 3 > max_cells || queue.empty()) break;
-    aim = std::min(aim, mud * total) * (1 - 1e-9);  // rounding fooled the doubles: aim a little lower
+    if (!target || out.bound <= *target || hopeless || alive + 3 > max_cells || queue.empty() || round == 3) break;
+    // Rounding fooled the doubles: aim lower (10^-9, 10^-7, 10^-5 of the bound), at most three times.
+    aim = std::min(aim, mud * total) * (1 - 1e-9 * std::pow(100.0, round));
   }
   out.speed_bounds = std::move(u);
   out.cells.vertices = std::move(vertices);
@@ -533,7 +553,10 @@ Rational point_mu(const Support& s, const Support_point& p) { return p.mu ? *p.m
 // Sticks: the regions cut into m² cells per coarse triangle, each cell a support point at its pressure centroid
 // carrying F_k (LS of these points ⊆ the regions' LS: a cell force spread ∝ p has moment c_k × g_k), and the
 // smoothed Newton witness on points and cells together.
-std::optional<std::string> try_stick(const Support& s, const Vec3q& p, int m, std::size_t& cells_out) {
+// (q_hint: the twist minimising the true power on the plane q·p = 1, or null: the cells' power there must exceed 1
+// for p to be inside their limit surface, a cheap necessary condition checked in double before the witness.)
+std::optional<std::string> try_stick(const Support& s, const Vec3q& p, int m, std::size_t& cells_out,
+                                     const double* q_hint) {
   Support aug;
   aug.mu = s.mu;
   aug.points = s.points;
@@ -546,6 +569,15 @@ std::optional<std::string> try_stick(const Support& s, const Vec3q& p, int m, st
       f.push_back(*c.force);
       aug.points.push_back(std::move(c));
     }
+  }
+  if (q_hint) {
+    double h = 0;
+    for (std::size_t i = 0; i < aug.points.size(); ++i) {
+      const Support_point& pt = aug.points[i];
+      h += (pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0))).get_d() * f[i].get_d() *
+           std::hypot(q_hint[0] - q_hint[2] * pt.at.y.get_d(), q_hint[1] + q_hint[2] * pt.at.x.get_d());
+    }
+    if (!(h > 1 + 1e-12)) return std::nullopt;  // p is not (certainly) inside the cells' limit surface
   }
   const std::optional<Stick_witness> w = smoothed_stick_witness(aug, f, p);
   if (!w) return std::nullopt;
@@ -567,7 +599,8 @@ std::optional<std::string> try_stick(const Support& s, const Vec3q& p, int m, st
 
 // Slides: the twist q, the points' rational speed bounds, and each region's slide block refined until the whole
 // bound is at most q·p (its share of the slack proportional to its estimated power).
-std::optional<std::string> try_slide(const Support& s, const Vec3q& p, const Vec3q& q, std::size_t& cells_out) {
+std::optional<std::string> try_slide(const Support& s, const Vec3q& p, const Vec3q& q, std::size_t& cells_out,
+                                     std::size_t max_cells) {
   if (q[0] == 0 && q[1] == 0 && q[2] == 0) return std::nullopt;
   const Rational power = q[0] * p[0] + q[1] * p[1] + q[2] * p[2];
   const std::vector<Rational> u = speed_bounds(s, q);
@@ -593,7 +626,7 @@ std::optional<std::string> try_slide(const Support& s, const Vec3q& p, const Vec
     const Rational mu = region_mu(s, r);
     const Rational share = est_sum > 0 ? Rational(left * Rational(est[k] / est_sum))
                                        : Rational(left / static_cast<long>(s.regions.size()));
-    const std::size_t budget = kMaxRegionCells / std::max<std::size_t>(1, s.regions.size());
+    const std::size_t budget = max_cells / std::max<std::size_t>(1, s.regions.size());
     blocks.push_back(region_slide_block(r, mu, q, share, budget));
     total += blocks.back().bound;
     cells_out += blocks.back().cells.triangles.size();
@@ -630,24 +663,34 @@ Region_motion decide_region_motion(const Support& s, const Vec3q& p) {
   const bool zero = p[0] == 0 && p[1] == 0 && p[2] == 0;
   const Plane_minimum m = zero ? Plane_minimum{} : minimise_on_load_plane(p, h);
   out.gauge_estimate = zero ? 0 : m.found && m.h > 0 ? 1 / m.h : HUGE_VAL;
+  // Within 10^-12 of the limit surface (by the doubles) the witnesses found in double cannot resolve the side: only
+  // the cheap attempts (exact candidates, coarse cells) are made.
+  const bool unresolvable = m.found && std::fabs(m.h - 1) < 1e-12;
   std::vector<Vec3q> twists;
   if (m.found) twists.push_back({Rational(m.q[0]), Rational(m.q[1]), Rational(m.q[2])});
+  if (p[0] != 0 || p[1] != 0) twists.push_back({p[0], p[1], Rational(0)});  // the translation along the force
   if (!zero) twists.push_back(p);
   const auto slide = [&] {
-    for (const Vec3q& q : twists)
-      if (auto c = try_slide(s, p, q, out.cells)) {
-        out.motion = Motion::slides;
-        out.certificate = std::move(*c);
-        out.twist = q;
-        return true;
+    // Every candidate with a small budget first (an exact candidate, such as the translation along the force of a
+    // load on a translation's boundary point, needs few cells), then the search's twist with the whole budget.
+    for (const std::size_t budget : {std::size_t(500), unresolvable ? std::size_t(500) : kMaxRegionCells})
+      for (const Vec3q& q : twists) {
+        if (auto c = try_slide(s, p, q, out.cells, budget)) {
+          out.motion = Motion::slides;
+          out.certificate = std::move(*c);
+          out.twist = q;
+          return true;
+        }
+        if (budget == kMaxRegionCells) break;
       }
     return false;
   };
   const auto stick = [&] {
     std::size_t coarse = 0;
     for (const Support_region& r : s.regions) coarse += r.triangles.size();
-    for (int level = 1; coarse * static_cast<std::size_t>(level * level) <= kMaxRegionStickCells; level *= 2)
-      if (auto c = try_stick(s, p, level, out.cells)) {
+    for (int level = 1; coarse * static_cast<std::size_t>(level * level) <= kMaxRegionStickCells && (level <= 2 || !unresolvable);
+         level *= 2)
+      if (auto c = try_stick(s, p, level, out.cells, m.found ? m.q.data() : nullptr)) {
         out.motion = Motion::sticks;
         out.certificate = std::move(*c);
         return true;
@@ -660,9 +703,10 @@ Region_motion decide_region_motion(const Support& s, const Vec3q& p) {
   char buf[320];
   if (m.found)
     std::snprintf(buf, sizeof buf,
-                  "the load is within about %.2g (relative) of the limit surface (the estimate of its gauge is %.17g): no "
-                  "certificate with at most %zu cells",
-                  std::fabs(out.gauge_estimate - 1), out.gauge_estimate, kMaxRegionCells);
+                  "the load is within about %.2g (relative) of the limit surface (the estimate of its gauge is %.17g): %s",
+                  std::fabs(out.gauge_estimate - 1), out.gauge_estimate,
+                  unresolvable ? "beyond the resolution of the double-precision search that proposes the witnesses"
+                               : "no certificate with the cells allowed (20000 for slides, 5000 for sticks)");
   else
     std::snprintf(buf, sizeof buf, "no certificate with at most %zu cells", kMaxRegionCells);
   out.undecided_why = buf;
