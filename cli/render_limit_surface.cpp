@@ -55,9 +55,8 @@ std::string render_regions_svg(const Scene& scene) {
   const Region_sliding st = region_sliding(s, std::nullopt, 1);
   Svg_panels pic("wrenchkit limit surface",
                  "Limit surface of " + (scene.name.empty() ? std::string("the support") : scene.name),
-                 std::to_string(s.points.size()) + " point(s) and " + std::to_string(s.regions.size()) +
-                     " region(s) with a continuous pressure: strictly convex, no polytope. Loads (f_x, f_y, m): the "
-                     "wrench the slider applies to the support (theory.md 1.5); m about the origin");
+                 std::to_string(s.points.size()) + " point(s), " + std::to_string(s.regions.size()) +
+                     " region(s): strictly convex, no polytope; loads: what the slider applies to the support (theory.md 1.5)");
   const int sup = pic.panel("the support: pressure and centre of friction", "x", "y");
   double pmax = 0;
   for (const Support_region& g : s.regions)

@@ -107,7 +107,7 @@ class Scene:
     Scene(data) where data is a dict (or list-free mapping) in the JSON scene format with Python
     numbers (int, str, Fraction, Decimal, float: see the module docstring), a JSON text (a str that
     starts with "{"), or a path to a JSON scene file (str or os.PathLike). "wrenchkit": 1 may be
-    omitted from a dict. limits: max_digits, max_exponent, max_file_size, max_contacts (as the CLI's
+    omitted from a dict. limits: max_digits, max_exponent, max_file_size, max_contacts, max_region_vertices (as the CLI's
     --max-* options). Raises InputError with the command line's message.
     """
 
