@@ -66,6 +66,19 @@ std::string thv(const Vec3q& v) {
 void write_xy(Json_writer& w, const Vec2& p) { w.array().rational(p.x).rational(p.y).end_array(); }
 std::string point_text(const Vec2& p) { return "(" + human_number(p.x) + ", " + human_number(p.y) + ")"; }
 
+// "twist", "motion", and the translation's exact load or the rotation's centre (Sliding_answer and Region_sliding
+// alike).
+template <class Answer>
+void write_twist_motion(Json_writer& w, const Answer& a) {
+  w.key("twist").rationals(a.twist).member("motion", a.translation ? "translation" : "rotation");
+  if (a.translation) {
+    w.key("load_direction").rationals(a.load_direction).member("speed_squared", a.speed_squared).key("load");
+    a.load ? w.rationals(*a.load) : w.null();
+  } else {
+    write_xy(w.key("rotation_center"), a.rotation_center);
+  }
+}
+
 }  // namespace
 
 void write_region_statics(Json_writer& w, const Support_item& r) {
@@ -87,14 +100,8 @@ void write_region_statics(Json_writer& w, const Support_item& r) {
 void write_region_twist(Json_writer& w, const Support_item& r, const Rational& tolerance) {
   const Region_sliding& a = *r.regions;
   if (!a.has_twist) return;
-  w.key("twist").rationals(a.twist).member("motion", a.translation ? "translation" : "rotation");
-  if (a.translation) {
-    w.key("load_direction").rationals(a.load_direction).member("speed_squared", a.speed_squared).key("load");
-    a.load ? w.rationals(*a.load) : w.null();
-  } else {
-    write_xy(w.key("rotation_center"), a.rotation_center);
-    w.member("rotation_about_a_support_point", a.center_on_point);
-  }
+  write_twist_motion(w, a);
+  if (!a.translation) w.member("rotation_about_a_support_point", a.center_on_point);
   w.key("power").object().member("lower", a.h_lo).member("upper", a.h_hi).member("tolerance", tolerance);
   w.member("tolerance_met", a.met).member("precision_bits", a.bits).end_object();
   w.key("load_box").object().key("lower").rationals(a.load_lo).key("upper").rationals(a.load_hi).end_object();
@@ -266,13 +273,7 @@ void write_sliding(Json_writer& w, const Sliding_options& so, const Support_item
   write_pair(w.key("friction_centroid"), a.friction_centroid.x, a.friction_centroid.y);
   w.member("mu_f0", a.mu_f0);
   if (!a.has_twist) return;
-  w.key("twist").rationals(a.twist).member("motion", a.translation ? "translation" : "rotation");
-  if (a.translation) {
-    w.key("load_direction").rationals(a.load_direction).member("speed_squared", a.speed_squared).key("load");
-    a.load ? w.rationals(*a.load) : w.null();
-  } else {
-    write_pair(w.key("rotation_center"), a.rotation_center.x, a.rotation_center.y);
-  }
+  write_twist_motion(w, a);
   w.key("true_surface").object().member("kind", kinds[static_cast<int>(a.cls.kind)]).member("text", a.cls.text);
   if (a.cls.support_point >= 0) {
     const Ls_point& p = r.model->support().points[static_cast<std::size_t>(a.cls.support_point)];

@@ -205,6 +205,17 @@ void run_motion_case(const families::Case& k, std::uint64_t seed, long index, Ro
   if (exact.decided && exact.holds != truth) ++row.exact_wrong, report_wrong("stick/slide exact", k, seed, index, "");
 }
 
+// A support question through the pipeline in `mode`; `why` gets the message of any ending but answered or undecided
+// (an error, or a certificate the checker rejected: a wrong answer).
+Support_item pipeline_answer(const Scene& scene, const std::string& text, const Support_query& query, Mode mode,
+                             std::string& why) {
+  Request request;
+  request.mode = mode;
+  Support_item item = answer_support(scene, text, "stress", request, query);
+  if (item.status != Status::answered && item.status != Status::undecided) why = item.message;
+  return item;
+}
+
 // stick/slide over every admissible distribution (unknown_support): each mode through the pipeline (the same
 // answer_support as the CLI), the certificate checked by the independent checker there (a rejected one is a
 // wrong answer). Right = one of the answers the construction leaves possible, and the same as the other mode
@@ -218,12 +229,8 @@ void run_motion_over_case(const families::Case& k, std::uint64_t seed, long inde
   query.load = k.motion_load;
   query.polytopes = false;
   const auto answer_in = [&](Mode mode, std::string& why) {
-    Request request;
-    request.mode = mode;
-    const Support_item item = answer_support(scene, k.text, "stress", request, query);
-    if (item.status == Status::answered && item.motion_over) return item.motion_over->motion;
-    if (item.status != Status::undecided) why = item.message;
-    return Motion_over::undecided;
+    const Support_item item = pipeline_answer(scene, k.text, query, mode, why);
+    return item.status == Status::answered && item.motion_over ? item.motion_over->motion : Motion_over::undecided;
   };
   std::string why_exact, why_twin, why_hybrid;
   Motion_over exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });
@@ -269,12 +276,8 @@ void run_region_case(const families::Case& k, std::uint64_t seed, long index, Ro
   query.load = k.motion_load;
   query.polytopes = false;
   const auto answer_in = [&](Mode mode, std::string& why) {
-    Request request;
-    request.mode = mode;
-    const Support_item item = answer_support(scene, k.text, "stress", request, query);
-    if (item.status == Status::answered) return item.motion.motion;
-    if (item.status != Status::undecided) why = item.message;
-    return Motion::undecided;
+    const Support_item item = pipeline_answer(scene, k.text, query, mode, why);
+    return item.status == Status::answered ? item.motion.motion : Motion::undecided;
   };
   std::string why_exact, why_twin, why_hybrid;
   Motion exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });
@@ -501,7 +504,9 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << cases_for(*families::find("collinear_support"), cases)
      << " for collinear_support (each runs a search and builds polytopes), "
      << cases_for(*families::find("unknown_support"), cases)
-     << " for unknown_support (each decides every extreme distribution, with certificates, in three modes).\n\n"
+     << " for unknown_support (each decides every extreme distribution, with certificates, in three modes) and "
+     << cases_for(*families::find("region_support"), cases)
+     << " for region_support (certificates over cells of the region, in three modes).\n\n"
      << "* **naive**: what tolerance-free float code does with the same text: the numbers read by strtod (a fraction\n"
      << "  p/q as strtod(p)/strtod(q)), raw double signs in the same algorithms (fl::Naive_kernel through\n"
      << "  core/dual_cone.h for closure and equilibrium, fl::moment_labels_naive for labels). For stick/slide, naive\n"
@@ -557,6 +562,11 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << "  cases (a test), rarely down to 10^-14, mostly below (its stick witnesses are computed in double, then made\n"
      << "  exact; its polygon LP then runs to 256 sides, which is what makes those cases slow). The twin\n"
      << "  alone has no LP over the distributions and abstains; exact mode decides far from the thresholds only.\n"
+     << "* **Support regions** (region_support): hybrid and exact (the same certificate search) answer with a\n"
+     << "  certificate the checker accepts or say undecided: every case above the limit surface is decided at every ε\n"
+     << "  (the translation along the load's force gives an exact slide bound), the ones below down to about 10^-10\n"
+     << "  (the stick witness is found in double, then made exact); the float twin has no model of regions and always\n"
+     << "  abstains. The naive double search (no bounds) is wrong from about 10^-15.\n"
      << "\n| family | what |\n|---|---|\n";
   for (const Family& f : fams) {
     std::string what = f.what;  // a table cell: escape the bars of |x|
@@ -592,6 +602,10 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << "  power bound of all extreme distributions (found by brute force, not by the engine), q·p exceeds every\n"
      << "  one's: it slides for every distribution. Right = an answer left possible, the same in exact and hybrid,\n"
      << "  and a certificate the checker accepts.\n"
+     << "* region_support: the translation q = (v̂, 0) with |v̂| = 1 rational moves every point with speed 1, so\n"
+     << "  h(q) = μf0 exactly and its load p* = μf0 (v̂, c_f × v̂) (c_f the friction centroid) is ∂h(q), on the limit\n"
+     << "  surface. Below, p*·(1 − 10^-k) is inside (0 is interior, the set convex): sticks; above, q·p = (1 + 10^-k) μf0 >\n"
+     << "  h(q): slides.\n"
      << "* Labels: nothing is labeled ⇔ force closure (theory.md §5.5), and a load is balanced ⇔ −w ∈ W, read on the\n"
      << "  exact labels' cone; both are compared with the (cross-checked) truth of the verdict.\n\n"
      << "## Totals of this run\n\n"

@@ -500,28 +500,23 @@ std::optional<Rational> positive_tolerance(const std::optional<std::string>& tol
 py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::string>& tolerance,
                        const std::optional<std::vector<std::string>>& twist,
                        const std::optional<std::vector<std::string>>& load, const std::string& mode) {
-  if (s.scene.support && !s.scene.support->regions.empty()) {  // regions: tolerance is the power's width
-    Support_query q;
+  Support_query q;
+  if (twist) q.twist = nonzero_twist(*twist);
+  if (load) q.load = vec3(*load, "load");
+  const bool regions = s.scene.support && !s.scene.support->regions.empty();
+  if (regions) {  // no polytopes: tolerance is the power's relative width
     q.tolerance = positive_tolerance(tolerance);
-    if (twist) q.twist = nonzero_twist(*twist);
-    if (load) q.load = vec3(*load, "load");
-    const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "limit_surface"), q);
-    raise_unless_answered(r.status, r.message);
-    return regions_dict(r, mode, q);
-  }
-  if (tolerance) {
+  } else if (tolerance) {
     const Rational e = number(*tolerance, "tolerance");
     if (e <= 0) throw Input_error("tolerance: \"" + *tolerance + "\" must be > 0");
     sides = smallest_sides(e, kMaxSides);
     if (sides == 0)
       throw Input_error("tolerance: " + *tolerance + " needs more than " + std::to_string(kMaxSides) + " sides");
   }
-  Support_query q;
-  q.sides = checked_sides(sides);
-  if (twist) q.twist = nonzero_twist(*twist);
-  if (load) q.load = vec3(*load, "load");
+  if (!regions) q.sides = checked_sides(sides);
   const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "limit_surface"), q);
   raise_unless_answered(r.status, r.message);
+  if (r.regions) return regions_dict(r, mode, q);
   if (r.admissible) return unknown_distribution(r, mode, q);
   const Sliding_answer& sa = r.sliding;
   py::dict d;
