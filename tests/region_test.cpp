@@ -188,8 +188,19 @@ TEST(RegionReading, BadRegionsNameTheRegionAndTheReason) {
 
 TEST(RegionReading, CollinearVerticesAreFine) {
   // A vertex in the middle of an edge, and a hole touching nothing.
-  const Scene s = read(region_scene({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}}, 1, 1, {{{1, 1}, {Rational(3, 2), 1}, {1, Rational(3, 2)}}}));
+  const std::string text = region_scene({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}}, 1, 1, {{{1, 1}, {Rational(3, 2), 1}, {1, Rational(3, 2)}}});
+  const Scene s = read(text);
   EXPECT_EQ(s.support->regions[0].area, Rational(4) - Rational(1, 8));
+  // The checker reads the same regions as valid (a certificate of nothing is rejected, the scene is not bad), and
+  // the one-pass reader reads them without deferring.
+  for (const std::string& t : {text, region_scene(square(1), 1, 1, {square(Rational(1, 2))}),
+                               std::string("{\"wrenchkit\": 1, \"support\": {\"mu\": 1, \"regions\": [{\"outline\": "
+                                           "[[0,0],[3,0],[3,3],[2,3],[2,1],[1,1],[1,3],[0,3]], \"pressure\": {\"linear\": "
+                                           "[1, 0, \"1/3\"]}}]}}")}) {
+    EXPECT_EQ(wrenchkit_checker::check(t, "{}").outcome, wrenchkit_checker::Outcome::rejected) << t;
+    Scene into;
+    EXPECT_TRUE(read_scene_into(into, t, kLimits, "scene", false)) << t;
+  }
 }
 
 // ---------------------------------------------------------------------------------------------------------------
