@@ -69,12 +69,6 @@ class Ival {
     mpfr_sub(r.hi_, a.hi_, b.lo_, MPFR_RNDU);
     return r;
   }
-  friend Ival operator-(const Ival& a) {
-    Ival r(a.bits());
-    mpfr_neg(r.lo_, a.hi_, MPFR_RNDD);
-    mpfr_neg(r.hi_, a.lo_, MPFR_RNDU);
-    return r;
-  }
   friend Ival operator*(const Ival& a, const Ival& b) {
     Ival r(a.bits());
     mpfr_t t;
