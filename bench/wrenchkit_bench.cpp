@@ -35,6 +35,7 @@
 #include "exact/statics/closure.h"
 #include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/support_answer.h"
+#include "exact/sliding/region_sliding.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/statics/moment_labels.h"
 #include "testing/stress_families.h"
@@ -478,6 +479,59 @@ void register_hold() {
         ->Unit(benchmark::kMicrosecond);
 }
 
+// Support regions [RG-1] [RG-2] (issue 16's targets): a uniform 20-vertex polygon (its vertices on a wobbly circle,
+// 6-decimal coordinates). regions/power: the certified power and load of one rotation to relative width 1e-6 (twists
+// cycled over centres inside, on the rim and outside); regions/motion: stick / slide with the certificate, checked
+// by the independent checker (loads cycled over sticking and sliding ones, ~0.5 and ~1.5 of the limit surface).
+std::string region_text(int n) {
+  std::string pts;
+  for (int i = 0; i < n; ++i) {
+    const double a = 6.283185307179586 * i / n, r = 1 + 0.15 * std::sin(3 * a);
+    char b[96];
+    std::snprintf(b, sizeof b, "%s[\"%.6f\", \"%.6f\"]", i ? ", " : "", r * std::cos(a), r * std::sin(a));
+    pts += b;
+  }
+  return "{\"wrenchkit\": 1, \"support\": {\"mu\": \"1/2\", \"regions\": [{\"outline\": [" + pts +
+         "], \"pressure\": \"uniform\", \"force\": 2}]}}";
+}
+
+void register_regions() {
+  const int n = 20;
+  benchmark::RegisterBenchmark(("regions/power/" + std::to_string(n) + "/tolerance_1e-6").c_str(), [n](benchmark::State& st) {
+    const Scene scene = read_scene(region_text(n), Input_limits{});
+    const std::vector<Vec3q> twists = {{Rational(1, 5), Rational(-1, 10), 1}, {0, -1, 1}, {3, -4, 1}, {0, 0, 1}};
+    std::size_t i = 0, met = 0;
+    for (auto _ : st) {
+      const Region_sliding a = region_sliding(*scene.support, twists[i++ % twists.size()], Rational(1, 1000000));
+      met += a.met;
+      benchmark::DoNotOptimize(a.h_hi);
+    }
+    st.counters["decided"] = double(met);
+  })->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark(("regions/motion/" + std::to_string(n) + "/hybrid_certified").c_str(), [n](benchmark::State& st) {
+    const std::string text = region_text(n);
+    const Scene scene = read_scene(text, Input_limits{});
+    // μW = 1: forces 1/2 and 3/2; the pure moment ~0.67 at the limit (a disc of radius ~1): 1/3 and 1.
+    const std::vector<Vec3q> loads = {{Rational(1, 2), 0, 0}, {Rational(3, 2), 0, 0}, {0, 0, Rational(1, 3)},
+                                      {0, 0, 1}, {Rational(3, 10), Rational(1, 5), Rational(1, 5)}};
+    Request request;
+    std::size_t i = 0, certified = 0, decided = 0;
+    for (auto _ : st) {
+      Support_query q;
+      q.load = loads[i++ % loads.size()];
+      const Support_item r = answer_support(scene, text, "bench", request, q);
+      if (r.status != Status::answered) {
+        std::fprintf(stderr, "regions bench: %s\n", r.message.c_str());
+        g_failed = true;
+      }
+      decided += r.motion.motion != Motion::undecided;
+      certified += !r.certificate.empty();
+    }
+    st.counters["decided"] = double(decided);
+    st.counters["certified"] = double(certified);
+  })->Unit(benchmark::kMillisecond);
+}
+
 int main(int argc, char** argv) {
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
@@ -493,6 +547,7 @@ int main(int argc, char** argv) {
   register_limit_surface();
   register_sliding();
   register_hold();
+  register_regions();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   if (g_failed) std::fprintf(stderr, "wrenchkit_bench: a certified method was wrong (see above)\n");

@@ -8,6 +8,7 @@
 #include "cli/common.h"
 #include "exact/io/json_writer.h"
 #include "exact/io/support_check.h"
+#include "exact/pipeline/support_answer.h"
 #include "exact/statics/planar_region.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/sliding/limit_surface.h"
@@ -76,6 +77,41 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
   return std::nullopt;
 }
 
+// A support with regions [RG-1]: the exact statics and, with a force or wrench load, its motion with the certificate
+// the pipeline checked (answer_support). Empty (with `why`) when the pipeline does not answer (float mode).
+std::optional<Ls_summary> region_summary(const Options& o, const Scene& scene, const std::string& text,
+                                         const std::string& source, std::string& why) {
+  Support_query q;
+  const bool load = scene.load && scene.load->kind != Load::Kind::gravity;
+  if (load) q.load = as_vec(load_wrench(scene));
+  const Support_item r = answer_support(scene, text, source, request_of(o), q);
+  if (r.status != Status::answered) {
+    why = r.message;
+    return std::nullopt;
+  }
+  const Region_sliding& st = *r.regions;
+  Ls_summary out;
+  Json_writer j;
+  j.object().member("regions", scene.support->regions.size()).member("total_force", st.total_force);
+  j.key("center_of_friction").array().rational(st.center_of_pressure.x).rational(st.center_of_pressure.y).end_array();
+  j.member("mu_f0", st.mu_f0).member("strictly_convex", true);
+  out.human = "limit surface: " + std::to_string(scene.support->regions.size()) +
+              " region(s) with a continuous pressure (strictly convex, no polytope); total force " +
+              to_string(st.total_force) + ", centre of friction (" + to_string(st.center_of_pressure.x) + ", " +
+              to_string(st.center_of_pressure.y) + ") — 'wrenchkit sliding' and 'limit-surface' for twists and loads\n";
+  if (load) {
+    const Region_motion& m = *r.region_motion;
+    j.key("load_motion").object().key("load").rationals(*q.load).member("motion", motion_name(m.motion));
+    j.member("decided_by", r.motion.decided_by).member("certificate_checked", !r.certificate.empty()).end_object();
+    out.human += "the load on the support: " + std::string(motion_name(m.motion)) +
+                 (m.motion == Motion::undecided ? " (" + m.undecided_why + ")"
+                                                : " (a certificate over the regions' cells, accepted by the checker)") +
+                 "\n";
+  }
+  out.json = j.end_object().take();
+  return out;
+}
+
 // analyze: everything the scene's contents call for, and nothing else — closure of its contacts
 // (always: no contacts is an answer too), equilibrium when it has a load, a summary of the limit
 // surface when it has a support. What cannot be computed within analyze's budget is listed under
@@ -102,7 +138,8 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
                                           "admissible distribution)"});
   } else if (a.scene.support) {
     std::string why;
-    a.limit_surface = limit_surface_summary(o, tolerance, a.scene, why);
+    a.limit_surface = a.scene.support->regions.empty() ? limit_surface_summary(o, tolerance, a.scene, why)
+                                                       : region_summary(o, a.scene, scene_text, source, why);
     if (!a.limit_surface) a.skipped.push_back({"limit_surface", why});
     else if (a.scene.load && a.scene.load->kind == Load::Kind::gravity)
       a.skipped.push_back({"load_motion", "gravity acts across a horizontal support, not in its plane: give the load "

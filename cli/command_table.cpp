@@ -152,6 +152,8 @@ const std::vector<Option> kLimits = {
      [](Options& o, S n, S v) { o.limits.max_file_bytes = count_value(n, v); }, Role::limit},
     {"max-contacts", "N", "most contacts, support points, outline points (default 100000)",
      [](Options& o, S n, S v) { o.limits.max_contacts = count_value(n, v); }, Role::limit},
+    {"max-region-vertices", "N", "most vertices of all support regions together (default 4096)",
+     [](Options& o, S n, S v) { o.limits.max_region_vertices = count_value(n, v); }, Role::limit},
     {"max-total-digits", "N", "budget: the digits of all the scene's numbers together (default 20000000)",
      [](Options& o, S n, S v) { o.limits.max_total_digits = count_value(n, v); }, Role::limit},
     {"max-digits-times-contacts", "N",
@@ -396,7 +398,14 @@ std::vector<Command> make_table() {
        "\n"
        "Exact rationals are printed in lowest terms. Mesh files (--off, --obj, --ply; CGAL's writers) hold\n"
        "both polytopes, inner first, with every coordinate as its nearest double; --exact-coordinates\n"
-       "writes OFF exactly (homogeneous integers, 4OFF), and the answer says how each file was written.\n",
+       "writes OFF exactly (homogeneous integers, 4OFF), and the answer says how each file was written.\n"
+       "\n"
+       "Support regions (docs/regions.md): their limit surface is strictly convex, so there is no exact\n"
+       "polytope (--sides, --list, --off, --obj, --ply are refused; --svg draws the support shaded by its\n"
+       "pressure); --twist gives the certified power\n"
+       "and load (--tolerance: their relative width, default 1e-6), --load sticks or slides with a\n"
+       "certificate (cells of the regions with forces inside their discs, or a twist with speed bounds\n"
+       "at the cells' vertices) that the independent checker accepts; float mode answers undecided.\n",
        join({{kHelp, kJson, with_help(kMode, "hybrid (default), exact or float: see Modes above"), kSides,
               with_help(kTolerance,
                         "instead of --sides: the smallest N whose certified relative error 1/lambda - 1 is <= EPS "
@@ -429,9 +438,17 @@ std::vector<Command> make_table() {
        "Modes: hybrid (default): the exact answer above, plus the TRUE power and load from the float\n"
        "twin with certified bounds (\"true_power\", \"true_load\"). exact: exact arithmetic only.\n"
        "float: the float twin alone: centre of friction, polygonal and true power, true load, each\n"
-       "with a certified bound (no exact polygons).\n",
+       "with a certified bound (no exact polygons).\n"
+       "\n"
+       "Support regions (polygons with holes and a continuous pressure, docs/regions.md): the total\n"
+       "force and the centre of friction exactly; for a rotation the power and the load are certified\n"
+       "brackets (closed forms in interval arithmetic) whose relative width meets --tolerance (default\n"
+       "1e-6); translations are exact as for points. exact and hybrid answer alike; float has no twin\n"
+       "of regions (exit 3).\n",
        join({{kHelp, kJson, with_help(kMode, "hybrid (default), exact or float: see Modes above"), kTwist,
-              with_help(kSides, "sides of the polygons for the bounds (even, 4..4096, default 64)")},
+              with_help(kSides, "sides of the polygons for the bounds (even, 4..4096, default 64; points only)"),
+              with_help(kTolerance, "support regions: the relative width of the power's certified bracket (EPS > 0, "
+                                    "exact: 1e-6 (the default), 1/1000)")},
              kLimits}),
        {kScene},
        run_sliding,

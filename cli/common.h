@@ -107,12 +107,20 @@ Request request_of(const Options& o);
 // text for people (each made only when needed); returns kAnswered.
 int write_answer(const Options& o, const std::function<void(Json_writer&)>& json,
                  const std::function<std::string()>& text);
-// The writer of a support's answer by what the pipeline answered: an unknown distribution, the twin alone
-// (--mode float), or the exact answer (sliding and limit-surface alike).
+// The writer of a support's answer by what the pipeline answered: a support with regions, an unknown
+// distribution, the twin alone (--mode float), or the exact answer (sliding and limit-surface alike).
 template <class F>
-F by_answer(const Support_item& r, Mode mode, F unknown, F twin, F exact) {
-  return r.admissible ? unknown : mode == Mode::float_only ? twin : exact;
+F by_answer(const Support_item& r, Mode mode, F unknown, F twin, F exact, F regions) {
+  return r.regions ? regions : r.admissible ? unknown : mode == Mode::float_only ? twin : exact;
 }
+
+// sliding_command.cpp: a support with regions [RG-1] (sliding and limit-surface alike): its exact statics ("support",
+// "total_force", "center_of_friction", "friction_centroid", "mu_f0") and, with a twist, its certified power and
+// load ("twist", "motion", "power", "load_box", …), as JSON members and as text lines.
+void write_region_statics(Json_writer& w, const Support_item& r);
+void write_region_twist(Json_writer& w, const Support_item& r, const Rational& tolerance);
+std::string region_statics_text(const Support_item& r, const std::string& source);
+std::string region_twist_text(const Support_item& r);
 
 // sliding_command.cpp: a distribution and a support with unknown forces as text (the first lines of the answer).
 std::string distribution_text(const std::vector<Rational>& f);

@@ -43,6 +43,8 @@ struct Ls_options {
     return m;
   }
   bool exports() const { return !meshes().empty() || !svg_file.empty(); }
+  bool polytopes_asked = false;  // by name: --sides, --list, the exports (refused for regions)
+  std::optional<Rational> region_tolerance;  // --tolerance for a support with regions: the power's width
 };
 
 std::string tv(const Vec3q& v) { return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")"; }
@@ -107,6 +109,8 @@ Ls_options limit_surface_options(const Options& o) {
   // The polytopes are built when asked for (--sides, --tolerance, --list, the exports) or when nothing else is
   // asked; a --load or --twist query alone is answered on the true surface, building them only if needed.
   lo.polytopes = o.sides || o.tolerance || lo.list || lo.exports() || (!lo.load && !lo.twist);
+  lo.polytopes_asked = o.sides || lo.list || !lo.meshes().empty();  // --svg draws regions too
+  lo.region_tolerance = o.tolerance;
   if (lo.mode == Mode::float_only && (lo.list || lo.exports()))
     throw Usage_error("--list, --off, --obj, --ply and --svg show the exact polytopes: not with --mode float");
   return lo;
@@ -152,6 +156,8 @@ Support_item compute_limit_surface(const Ls_options& lo, const Options& o, const
   q.twist = lo.twist;
   q.load = lo.load;
   q.polytopes = lo.polytopes;
+  q.polytopes_asked = lo.polytopes_asked;
+  q.tolerance = lo.region_tolerance;
   return answered(answer_support(text, source, request_of(o), q));
 }
 
@@ -428,15 +434,55 @@ std::string mesh_coordinates_text(const Ls_options& lo) {
   return s;
 }
 
+// A support with regions [RG-1]: the exact statics, the twist's certified power and load, the load's motion with
+// its certificate; no polytope (the limit surface is strictly convex).
+void write_limit_surface_regions(Json_writer& w, const Ls_options& lo, const Support_item& r) {
+  w.member("command", "limit-surface").member("name", r.scene.name).member("mode", mode_name(lo.mode));
+  w.member("convention", kConvention);
+  write_region_statics(w, r);
+  w.member("polytopes", false).member("strictly_convex", true);
+  write_region_twist(w, r, lo.region_tolerance ? *lo.region_tolerance : Rational(1, 1000000));
+  if (!lo.load) return;
+  const Region_motion& m = *r.region_motion;
+  w.key("load").rationals(*lo.load).member("motion", motion_name(m.motion));
+  w.member("motion_decided_by", r.motion.decided_by).member("certificate_cells", m.cells);
+  w.key("gauge_estimate").raw(std::isfinite(m.gauge_estimate) ? float_number(m.gauge_estimate) : "null");
+  if (m.twist) w.key("slide_twist").rationals(*m.twist);
+  if (!m.undecided_why.empty()) w.member("undecided_why", m.undecided_why);
+  write_certificate_members(w, r);
+}
+
+std::string limit_surface_regions_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
+  std::ostringstream s;
+  s << region_statics_text(r, source)
+    << "limit surface: strictly convex (a continuous pressure): no exact polytope; queries are certified\n"
+    << region_twist_text(r);
+  if (lo.load) {
+    const Region_motion& m = *r.region_motion;
+    s << "load " << tv(*lo.load) << ": " << motion_name(m.motion);
+    if (m.motion == Motion::sticks)
+      s << " (forces on " << m.cells << " cells of the regions, each strictly inside its friction disc)\n";
+    else if (m.motion == Motion::slides)
+      s << " (the twist " << tv(*m.twist) << " with speed bounds at the vertices of " << m.cells
+        << " cells: its power bound is at most q.p)\n";
+    else
+      s << ": " << m.undecided_why << "\n";
+    s << certificate_line(r);
+  }
+  s << "convention: " << kConvention << "\n";
+  return s.str();
+}
+
 // The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone, or
 // the exact answer).
 void answer_json(Json_writer& w, const Ls_options& lo, const Support_item& r) {
-  by_answer(r, lo.mode, &write_limit_surface_unknown, &write_limit_surface_float, &write_limit_surface)(w, lo, r);
+  by_answer(r, lo.mode, &write_limit_surface_unknown, &write_limit_surface_float, &write_limit_surface,
+            &write_limit_surface_regions)(w, lo, r);
 }
 
 std::string answer_text(const Ls_options& lo, const Support_item& r, const std::string& source) {
-  return by_answer(r, lo.mode, &limit_surface_unknown_human, &limit_surface_float_human, &limit_surface_human)(lo, r,
-                                                                                                              source);
+  return by_answer(r, lo.mode, &limit_surface_unknown_human, &limit_surface_float_human, &limit_surface_human,
+                   &limit_surface_regions_human)(lo, r, source);
 }
 
 }  // namespace

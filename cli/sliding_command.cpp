@@ -1,5 +1,6 @@
 // wrenchkit sliding: centre of friction and the frictional load of the scene's support for a twist
 // (theory.md §10, §11.5) [LS-4]. Exact for translations; exact bounds for rotations.
+#include <cstdio>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -62,6 +63,93 @@ namespace {
 std::string thv(const Vec3q& v) {
   return "(" + human_number(v[0]) + ", " + human_number(v[1]) + ", " + human_number(v[2]) + ")";
 }
+void write_xy(Json_writer& w, const Vec2& p) { w.array().rational(p.x).rational(p.y).end_array(); }
+std::string point_text(const Vec2& p) { return "(" + human_number(p.x) + ", " + human_number(p.y) + ")"; }
+
+// "twist", "motion", and the translation's exact load or the rotation's centre (Sliding_answer and Region_sliding
+// alike).
+template <class Answer>
+void write_twist_motion(Json_writer& w, const Answer& a) {
+  w.key("twist").rationals(a.twist).member("motion", a.translation ? "translation" : "rotation");
+  if (a.translation) {
+    w.key("load_direction").rationals(a.load_direction).member("speed_squared", a.speed_squared).key("load");
+    a.load ? w.rationals(*a.load) : w.null();
+  } else {
+    write_xy(w.key("rotation_center"), a.rotation_center);
+  }
+}
+
+}  // namespace
+
+void write_region_statics(Json_writer& w, const Support_item& r) {
+  const Support& s = *r.scene.support;
+  const Region_sliding& a = *r.regions;
+  w.key("support").object().member("points", s.points.size()).key("regions").array();
+  for (const Support_region& g : s.regions) {
+    w.object().member("area", g.area).member("force", g.total).member("mu", region_mu(s, g));
+    write_xy(w.key("center_of_pressure"), {g.moment.x / g.total, g.moment.y / g.total});
+    w.member("pressure", g.uniform ? "uniform" : "linear").key("pressure_coefficients").rationals(g.pressure);
+    w.key("second_moments").rationals(g.second).member("triangles", g.triangles.size()).end_object();
+  }
+  w.end_array().end_object().member("total_force", a.total_force);
+  write_xy(w.key("center_of_friction"), a.center_of_pressure);
+  write_xy(w.key("friction_centroid"), a.friction_centroid);
+  w.member("mu_f0", a.mu_f0);
+}
+
+void write_region_twist(Json_writer& w, const Support_item& r, const Rational& tolerance) {
+  const Region_sliding& a = *r.regions;
+  if (!a.has_twist) return;
+  write_twist_motion(w, a);
+  if (!a.translation) w.member("rotation_about_a_support_point", a.center_on_point);
+  w.key("power").object().member("lower", a.h_lo).member("upper", a.h_hi).member("tolerance", tolerance);
+  w.member("tolerance_met", a.met).member("precision_bits", a.bits).end_object();
+  w.key("load_box").object().key("lower").rationals(a.load_lo).key("upper").rationals(a.load_hi).end_object();
+}
+
+std::string region_statics_text(const Support_item& r, const std::string& source) {
+  const Support& s = *r.scene.support;
+  const Region_sliding& a = *r.regions;
+  std::ostringstream o;
+  o << scene_line(r.scene.name, source) << "support: " << s.points.size() << " point(s) and " << s.regions.size()
+    << " region(s) with a continuous pressure\n";
+  for (std::size_t k = 0; k < s.regions.size(); ++k) {
+    const Support_region& g = s.regions[k];
+    o << "  region " << k << ": area " << human_number(g.area) << ", force " << human_number(g.total) << ", mu "
+      << human_number(region_mu(s, g)) << ", centre of pressure " << point_text({g.moment.x / g.total, g.moment.y / g.total})
+      << " (" << (g.uniform ? "uniform" : "linear") << " pressure, " << g.triangles.size() << " triangles)\n";
+  }
+  o << "total normal force " << human_number(a.total_force) << ", centre of friction " << point_text(a.center_of_pressure)
+    << " (exact)\nmu*f0 = " << human_number(a.mu_f0) << ", friction centroid " << point_text(a.friction_centroid) << "\n";
+  return o.str();
+}
+
+std::string region_twist_text(const Support_item& r) {
+  const Region_sliding& a = *r.regions;
+  if (!a.has_twist) return "";
+  std::ostringstream o;
+  o << "twist " << thv(a.twist) << ": ";
+  if (a.translation) {
+    o << "a translation: the load is the force mu*f0 along v through the friction centroid\n";
+    if (a.load) o << "  load: " << thv(*a.load) << " (exact)\n";
+    else
+      o << "  load: (mu*f0/|v|) * " << thv(a.load_direction) << " with |v|^2 = " << human_number(a.speed_squared)
+        << " (exact)\n";
+  } else {
+    o << "rotation about " << point_text(a.rotation_center)
+      << (a.center_on_point ? " (a support point: its disc is a facet, inside the load box)" : "") << "\n";
+  }
+  char lo[32], hi[32];
+  std::snprintf(lo, sizeof lo, "%.10g", a.h_lo.get_d());
+  std::snprintf(hi, sizeof hi, "%.10g", a.h_hi.get_d());
+  o << "  power h in [" << lo << ", " << hi << "] (certified: exact rational ends in --json"
+    << (a.met ? "" : "; the tolerance was not met at the largest precision") << ")\n"
+    << "  load box: " << thv(a.load_lo) << " .. " << thv(a.load_hi) << "\n";
+  return o.str();
+}
+
+namespace {
+
 void write_pair(Json_writer& w, const Rational& x, const Rational& y) { w.array().rational(x).rational(y).end_array(); }
 void write_face(Json_writer& w, const Ls_face& f) {
   w.object().member("dimension", f.dimension).key("vertices").array();
@@ -69,18 +157,27 @@ void write_face(Json_writer& w, const Ls_face& f) {
   w.end_array().end_object();
 }
 
-// The options (validated where they were parsed): --twist (not zero) and --sides (default 64).
+const char* kConvention =
+    "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
+    "the friction wrench on the slider is its negative";
+
+// The options (validated where they were parsed): --twist (not zero), --sides (default 64), --tolerance (the
+// relative width of a region's power bracket, default 10^-6).
 struct Sliding_options {
   std::optional<Vec3q> twist;
   int sides = 64;
   Mode mode = Mode::hybrid;
+  Rational tolerance{1, 1000000};
+  bool sides_given = false;
 };
 
 Sliding_options sliding_options(const Options& o) {
   Sliding_options so;
   so.sides = o.sides.value_or(64);
+  so.sides_given = o.sides.has_value();
   so.twist = o.twist;
   so.mode = o.mode;
+  if (o.tolerance) so.tolerance = *o.tolerance;
   return so;
 }
 
@@ -90,7 +187,21 @@ Support_item compute(const Sliding_options& so, const Options& o, const std::str
   q.question = Support_question::sliding;
   q.sides = so.sides;
   q.twist = so.twist;
+  q.tolerance = so.tolerance;
+  q.polytopes_asked = so.sides_given;
   return answered(answer_support(text, source, request_of(o), q));
+}
+
+// A support with regions [RG-1]: the exact statics, and the twist's certified power and load.
+void write_sliding_regions(Json_writer& w, const Sliding_options& so, const Support_item& r) {
+  w.member("command", "sliding").member("name", r.scene.name).member("mode", mode_name(so.mode));
+  w.member("convention", kConvention);
+  write_region_statics(w, r);
+  write_region_twist(w, r, so.tolerance);
+}
+
+std::string sliding_regions_human(const Sliding_options&, const Support_item& r, const std::string& source) {
+  return region_statics_text(r, source) + region_twist_text(r) + "convention: " + kConvention + "\n";
 }
 
 // The float twin's values for the twist (hybrid: added to the exact answer).
@@ -130,9 +241,6 @@ std::string sliding_float_human(const Sliding_options& so, const Support_item& r
   return s.str();
 }
 
-const char* kConvention =
-    "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
-    "the friction wrench on the slider is its negative";
 
 void write_sliding_unknown(Json_writer& w, const Sliding_options& so, const Support_item& r) {
   w.member("command", "sliding").member("name", r.scene.name).member("mode", mode_name(r.mode));
@@ -165,13 +273,7 @@ void write_sliding(Json_writer& w, const Sliding_options& so, const Support_item
   write_pair(w.key("friction_centroid"), a.friction_centroid.x, a.friction_centroid.y);
   w.member("mu_f0", a.mu_f0);
   if (!a.has_twist) return;
-  w.key("twist").rationals(a.twist).member("motion", a.translation ? "translation" : "rotation");
-  if (a.translation) {
-    w.key("load_direction").rationals(a.load_direction).member("speed_squared", a.speed_squared).key("load");
-    a.load ? w.rationals(*a.load) : w.null();
-  } else {
-    write_pair(w.key("rotation_center"), a.rotation_center.x, a.rotation_center.y);
-  }
+  write_twist_motion(w, a);
   w.key("true_surface").object().member("kind", kinds[static_cast<int>(a.cls.kind)]).member("text", a.cls.text);
   if (a.cls.support_point >= 0) {
     const Ls_point& p = r.model->support().points[static_cast<std::size_t>(a.cls.support_point)];
@@ -219,11 +321,12 @@ std::string sliding_human(const Sliding_options& so, const Support_item& r, cons
 // The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone,
 // or the exact answer).
 void answer_json(Json_writer& w, const Sliding_options& so, const Support_item& r) {
-  by_answer(r, so.mode, &write_sliding_unknown, &write_sliding_float, &write_sliding)(w, so, r);
+  by_answer(r, so.mode, &write_sliding_unknown, &write_sliding_float, &write_sliding, &write_sliding_regions)(w, so, r);
 }
 
 std::string answer_text(const Sliding_options& so, const Support_item& r, const std::string& source) {
-  return by_answer(r, so.mode, &sliding_unknown_human, &sliding_float_human, &sliding_human)(so, r, source);
+  return by_answer(r, so.mode, &sliding_unknown_human, &sliding_float_human, &sliding_human, &sliding_regions_human)(
+      so, r, source);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "fuzz/families.h"
 
+#include "exact/sliding/region_sliding.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +23,7 @@ const char* question_name(Question q) {
     case Question::stick_slide: return "stick_slide";
     case Question::stick_slide_over: return "stick_slide_over";
     case Question::hold: return "hold";
+    case Question::stick_slide_region: return "stick_slide_region";
   }
   return "?";
 }
@@ -98,7 +101,8 @@ Case make_case(const Family& f, double eps, stress::Rng& rng) {
   c.untransformed = std::move(fs.untransformed);
   c.support = std::move(fs.support);
   c.allowed = fs.allowed;
-  if (f.question == Question::stick_slide || f.question == Question::stick_slide_over) {
+  if (f.question == Question::stick_slide || f.question == Question::stick_slide_over ||
+      f.question == Question::stick_slide_region) {
     for (std::size_t i = 0; i < 3; ++i) {
       std::string why;
       const std::string& t = fs.load_text[i];
@@ -108,7 +112,8 @@ Case make_case(const Family& f, double eps, stress::Rng& rng) {
     }
     c.motion_load_naive = fs.load;
   }
-  c.expected = c.known || f.question == Question::stick_slide_over ? c.above : decide(read_scene(c.text, Input_limits{}), f.question, Mode::exact).holds;
+  c.expected = c.known || f.question == Question::stick_slide_over || f.question == Question::stick_slide_region
+                   ? c.above : decide(read_scene(c.text, Input_limits{}), f.question, Mode::exact).holds;
   return c;
 }
 
@@ -163,6 +168,22 @@ double naive_gap(const std::vector<stress::Support_spec>& s, const std::array<do
 }
 
 }  // namespace
+
+bool naive_region_slides(const Case& c) {
+  const Scene scene = read_scene(c.text, Input_limits{});
+  const Support& s = *scene.support;
+  const auto h = [&](const double* q) {
+    double v = 0;
+    for (const Support_point& p : s.points)
+      v += (p.mu ? *p.mu : *s.mu).get_d() * p.force->get_d() *
+           std::hypot(q[0] - q[2] * p.at.y.get_d(), q[1] + q[2] * p.at.x.get_d());
+    for (const Support_region& r : s.regions) v += region_mu(s, r).get_d() * region_power_double(r, q);
+    return v;
+  };
+  const Vec3q p{Rational(c.motion_load_naive[0]), Rational(c.motion_load_naive[1]), Rational(c.motion_load_naive[2])};
+  const Plane_minimum m = minimise_on_load_plane(p, h);
+  return m.found && m.h <= 1;
+}
 
 bool naive_slides(const Case& c) {
   const std::array<double, 3>& p = c.motion_load_naive;

@@ -21,6 +21,7 @@
 #include "exact/io/scene.h"
 #include "exact/numbers/rational.h"
 #include "exact/sliding/limit_surface.h"
+#include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
 #include "float/limit_surface_twin.h"
 #include "proofs/checker/checker.h"
@@ -56,12 +57,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   cl.max_digits = 200;
   cl.max_exponent = 200;
   cl.max_contacts = 64;
+  cl.max_region_vertices = 64;
   const auto r = wrenchkit_checker::check(scene_text, cert, cl);
   if (r.outcome != wrenchkit_checker::Outcome::accepted) return 0;
   wrenchkit::Input_limits limits;
   limits.max_digits = cl.max_digits;
   limits.max_exponent = cl.max_exponent;
   limits.max_contacts = cl.max_contacts;
+  limits.max_region_vertices = cl.max_region_vertices;
   wrenchkit::Scene scene;
   try {
     scene = wrenchkit::read_scene(scene_text, limits, "fuzz");
@@ -92,6 +95,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (!q) std::abort();  // the checker accepted it as a rational
       p[k] = wrenchkit::to_bounded(*q);
     }
+    if (!scene.support->regions.empty()) {  // regions: the engine's certified decision is the oracle
+      wrenchkit::Vec3q exact_p;
+      for (std::size_t k = 0; k < 3; ++k) {
+        std::string why;
+        wrenchkit::Input_limits unlimited;
+        unlimited.max_digits = 200000;
+        unlimited.max_exponent = 200000;
+        exact_p[k] = *wrenchkit::parse_rational(c.find("load")->items[k].text, false, unlimited, why);
+      }
+      const wrenchkit::Region_motion m = wrenchkit::decide_region_motion(*scene.support, exact_p);
+      if (m.motion != wrenchkit::Motion::undecided && (m.motion == wrenchkit::Motion::slides) != (claim == "slides")) {
+        std::cerr << "checker accepted \"" << claim << "\" on a support with regions; the engine certifies the opposite\n";
+        std::abort();
+      }
+      return 0;
+    }
     const wrenchkit::Ls_support merged = wrenchkit::merge_support(*scene.support);
     if (merged.points.size() < 2) {  // coincident points merged, rho = 0 dropped: LS is flat (or {0})
       if (claim != "slides") {
@@ -113,7 +132,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::cerr << "checker accepted a hold claim on a scene without load\n";
       std::abort();
     }
-    if (scene.support && scene.support->points.size() > 12) return 0;
+    if (scene.support && (scene.support->points.size() > 12 || !scene.support->regions.empty())) return 0;
     const wrenchkit::Hold_answer a = wrenchkit::decide_hold(scene, wrenchkit::Mode::hybrid);
     if (a.verdict == wrenchkit::Hold_verdict::undecided) return 0;
     const std::string_view claim = value_of(cert, "holds");

@@ -2,10 +2,12 @@
 // and near-degenerate configurations where floating point goes wrong (theory.md §5.6, §8.5, §9):
 // grid contacts (parallel, concurrent, coincident), two-finger grasps at Nguyen's threshold ± ε,
 // normals concurrent up to ε, the ladder at μ* = 1/7 ± ε under gravity, pure wrench generators,
-// everything scaled by 10^k, and small supports (coincident, collinear points) under loads. ε = ±10^-j with j up to 60. Every promise of fuzz/scene_checks.h must
+// everything scaled by 10^k, small supports (coincident, collinear points) under loads, and support regions
+// (rectangles with holes, triangles, uniform and linear pressures, with a point) under loads. ε = ±10^-j with j up to 60. Every promise of fuzz/scene_checks.h must
 // hold on every scene (float-vs-exact differential, engine → checker, round trip, labels vs closure).
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 
 #include "fuzz/scene_checks.h"
@@ -46,7 +48,7 @@ std::string num(long p, long q = 1) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Bytes b{data, size};
-  const int family = b.next(7);
+  const int family = b.next(8);
   std::string contacts, load;
   const auto point = [&](const std::string& x, const std::string& y, const std::string& nx, const std::string& ny,
                          const std::string& mu) {
@@ -107,6 +109,39 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       load = ", \"support\": {\"mu\": " + std::string(mus[1 + b.next(5)]) + ", \"points\": [" + pts +
              "]}, \"load\": {\"wrench\": [" + frac(b.small(0, 3), 2, b) + ", " + num(b.small(-3, 3)) + ", " +
              frac(b.small(0, 5), 3, b) + "]}";
+      point("0", "0", "1", "0", "0");
+      break;
+    }
+    case 7: {  // support regions [RG-1]: a rectangle or a triangle on a grid, maybe a hole, a uniform or linear
+               // pressure, maybe a point; a load whose motion must come with a certificate the checker accepts
+      const int x0 = b.small(-4, 2), y0 = b.small(-4, 2), w = b.small(1, 4), h = b.small(1, 4);
+      std::string outline, holes;
+      if (b.next(2)) {
+        outline = "[[" + num(x0) + ", " + num(y0) + "], [" + num(x0 + w) + ", " + num(y0) + "], [" + num(x0 + w) + ", " +
+                  num(y0 + h) + "], [" + num(x0) + ", " + num(y0 + h) + "]]";
+        if (w >= 2 && h >= 2 && b.next(2))  // a hole strictly inside, written either way round
+          holes = b.next(2) ? ", \"holes\": [[[" + num(2 * x0 + 1, 2) + ", " + num(2 * y0 + 1, 2) + "], [" + num(2 * x0 + 3, 2) + ", " +
+                                  num(2 * y0 + 1, 2) + "], [" + num(2 * x0 + 3, 2) + ", " + num(2 * y0 + 3, 2) + "]]]"
+                            : ", \"holes\": [[[" + num(2 * x0 + 3, 2) + ", " + num(2 * y0 + 3, 2) + "], [" + num(2 * x0 + 3, 2) + ", " +
+                                  num(2 * y0 + 1, 2) + "], [" + num(2 * x0 + 1, 2) + ", " + num(2 * y0 + 1, 2) + "]]]";
+      } else {  // a triangle, either orientation; a flat one becomes a right triangle
+        const int x1 = b.small(-4, 4), y1 = b.small(-4, 4), x2 = b.small(-4, 4), y2 = b.small(-4, 4);
+        const bool flat = (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0) == 0;
+        outline = flat ? "[[" + num(x0) + ", " + num(y0) + "], [" + num(x0 + w) + ", " + num(y0) + "], [" + num(x0) + ", " +
+                             num(y0 + h) + "]]"
+                       : "[[" + num(x0) + ", " + num(y0) + "], [" + num(x1) + ", " + num(y1) + "], [" + num(x2) + ", " +
+                             num(y2) + "]]";
+      }
+      const int gx = b.small(-2, 2), gy = b.small(-2, 2);
+      const std::string pressure = b.next(2) ? "\"pressure\": \"uniform\", \"force\": " + frac(b.small(1, 4), 1, b)
+                                             : "\"pressure\": {\"linear\": [" + num(12 * (std::abs(gx) + std::abs(gy)) + b.small(1, 3)) +
+                                                   ", " + num(gx) + ", " + num(gy) + "]}";
+      std::string pts;
+      if (b.next(2)) pts = "\"points\": [{\"at\": [" + num(b.small(-4, 4)) + ", " + num(b.small(-4, 4)) + "], \"force\": " +
+                           num(b.small(0, 2)) + "}], ";
+      load = ", \"support\": {\"mu\": " + std::string(mus[1 + b.next(5)]) + ", " + pts + "\"regions\": [{\"outline\": " +
+             outline + holes + ", " + pressure + "}]}, \"load\": {\"wrench\": [" + frac(b.small(0, 6), 2, b) + ", " +
+             num(b.small(-3, 3)) + ", " + frac(b.small(0, 9), 3, b) + "]}";
       point("0", "0", "1", "0", "0");
       break;
     }

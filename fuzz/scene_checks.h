@@ -14,7 +14,9 @@
 //   * hybrid labels are the exact labels; the labels and force-dual twins agree with them within their
 //     stated bounds (testing/twin_agreement.h);
 //   * with a small support: the float twin's true h lies in the exact polygonal bracket, and hybrid and
-//     float stick/slide never contradict the exact polygons.
+//     float stick/slide never contradict the exact polygons;
+//   * with support regions: the power brackets are sound, and a load's motion comes with a certificate the
+//     independent checker accepts.
 #pragma once
 
 #include <cstddef>
@@ -35,6 +37,7 @@
 #include "exact/io/scene_budget.h"
 #include "exact/io/scene_writer.h"
 #include "exact/pipeline/pipeline.h"
+#include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
 #include "exact/sliding/unknown_motion.h"
 #include "exact/io/streaming_scene_reader.h"
@@ -97,6 +100,32 @@ inline std::string scene_difference(const wrenchkit::Scene& a, const wrenchkit::
       if (!same_vec(x.points[i].at, y.points[i].at) || !same_optional(x.points[i].force, y.points[i].force, same_q) ||
           !same_optional(x.points[i].mu, y.points[i].mu, same_q))
         return false;
+    // Regions: as written, and everything settled from them (rings, triangles, pressure, measures).
+    const auto same_ring = [&](const std::vector<Vec2>& r, const std::vector<Vec2>& t) {
+      if (r.size() != t.size()) return false;
+      for (std::size_t i = 0; i < r.size(); ++i)
+        if (!same_vec(r[i], t[i])) return false;
+      return true;
+    };
+    const auto same_rings = [&](const std::vector<std::vector<Vec2>>& r, const std::vector<std::vector<Vec2>>& t) {
+      if (r.size() != t.size()) return false;
+      for (std::size_t i = 0; i < r.size(); ++i)
+        if (!same_ring(r[i], t[i])) return false;
+      return true;
+    };
+    if (x.regions.size() != y.regions.size()) return false;
+    for (std::size_t k = 0; k < x.regions.size(); ++k) {
+      const Support_region &r = x.regions[k], &t = y.regions[k];
+      if (!same_ring(r.outline, t.outline) || !same_rings(r.holes, t.holes) || r.uniform != t.uniform ||
+          r.force != t.force || r.linear != t.linear || !same_optional(r.mu, t.mu, same_q) ||
+          !same_rings(r.rings, t.rings) || r.pressure != t.pressure || r.area != t.area || r.total != t.total ||
+          !same_vec(r.moment, t.moment) || r.second != t.second || r.triangles.size() != t.triangles.size())
+        return false;
+      for (std::size_t i = 0; i < r.triangles.size(); ++i)
+        if (!same_vec(r.triangles[i].a, t.triangles[i].a) || !same_vec(r.triangles[i].b, t.triangles[i].b) ||
+            !same_vec(r.triangles[i].c, t.triangles[i].c))
+          return false;
+    }
     return true;
   };
   if (!same_optional(a.support, b.support, same_support)) return "support";
@@ -193,6 +222,7 @@ inline bool check_scene_text(std::string_view text) {
   limits.max_digits = 200;  // keep big-number work small per input
   limits.max_exponent = 200;
   limits.max_contacts = 64;
+  limits.max_region_vertices = 64;
   static wrenchkit::Scene reused_eager, reused_lazy;  // the previous input's scenes: reuse is checked too
   if (const std::string d = readers_disagree(text, limits, reused_eager, reused_lazy); !d.empty()) {
     std::cerr << "the scene readers disagree: " << d << "\n";
@@ -230,6 +260,7 @@ inline bool check_scene_text(std::string_view text) {
     std::cerr << "printed scene rejected: " << e.what() << "\n" << printed << "\n";
     std::abort();
   }
+  std::string region_certificate;  // a support with regions and a load: its motion's certificate
   // A float answer, when the twin decides, is the exact one; hybrid always decides.
   for (auto p : {wrenchkit::Property::force_closure, wrenchkit::Property::form_closure}) {
     const bool exact = wrenchkit::decide_closure(scene, p, wrenchkit::Mode::exact, false).holds;
@@ -282,7 +313,23 @@ inline bool check_scene_text(std::string_view text) {
       }
     }
   }
-  if (scene.support && scene.support->points.size() <= 4) {
+  if (scene.support && !scene.support->regions.empty() && scene.support->known()) {
+    // Support regions [RG-1] [RG-2]: certified power brackets that hold the double closed form (near the region),
+    // and a load's motion only with a certificate the checker accepts (below).
+    const wrenchkit::Vec3q twists[] = {{0, 0, 1}, {1, 0, 0}, {wrenchkit::Rational(1, 3), -2, -1}};
+    for (const auto& q : twists) {
+      const auto a = wrenchkit::region_sliding(*scene.support, q, wrenchkit::Rational(1, 1000));
+      if (a.h_lo > a.h_hi || a.h_lo < 0) {
+        std::cerr << "region power bracket is empty or negative\n" << printed;
+        std::abort();
+      }
+    }
+    if (scene.load) {
+      const auto m = wrenchkit::decide_region_motion(*scene.support, wrenchkit::as_vec(wrenchkit::load_wrench(scene)));
+      if (m.motion != wrenchkit::Motion::undecided) region_certificate = m.certificate;
+    }
+  }
+  if (scene.support && scene.support->regions.empty() && scene.support->points.size() <= 4) {
     // An unknown distribution: its first extreme distribution here, and sticks/slides/depends over all of them
     // in hybrid never contradicts exact (below).
     const wrenchkit::Admissible adm = wrenchkit::admissible_set(scene);
@@ -329,7 +376,9 @@ inline bool check_scene_text(std::string_view text) {
   cl.max_digits = limits.max_digits;
   cl.max_exponent = limits.max_exponent;
   cl.max_contacts = limits.max_contacts;
+  cl.max_region_vertices = limits.max_region_vertices;
   std::vector<std::string> certs;
+  if (!region_certificate.empty()) certs.push_back(region_certificate);
   for (auto p : {wrenchkit::Property::force_closure, wrenchkit::Property::form_closure})
     for (auto m : {wrenchkit::Mode::exact, wrenchkit::Mode::hybrid})
       certs.push_back(wrenchkit::certificate_json(wrenchkit::decide_closure(scene, p, m).certificate));
@@ -346,7 +395,9 @@ inline bool check_scene_text(std::string_view text) {
     }
   }
   // hold (exact/fixture/hold.h) on small fixtures: float never contradicts hybrid, every certificate is checked.
-  if (scene.load && (!scene.support || scene.support->points.size() <= 12) && scene.contacts.size() <= 12) {
+  // (hold over support regions is refused by the engine: not built yet)
+  if (scene.load && (!scene.support || (scene.support->points.size() <= 12 && scene.support->regions.empty())) &&
+      scene.contacts.size() <= 12) {
     wrenchkit::Hold_verdict verdict[2];
     int k = 0;
     for (auto m : {wrenchkit::Mode::hybrid, wrenchkit::Mode::float_only}) {

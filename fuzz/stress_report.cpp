@@ -54,7 +54,8 @@ const char* check_name(Measure c) {
 }
 // The questions without moment labels (a support's, or the support's and the contacts' together).
 bool is_motion(Question q) {
-  return q == Question::stick_slide || q == Question::stick_slide_over || q == Question::hold;
+  return q == Question::stick_slide || q == Question::stick_slide_over || q == Question::hold ||
+         q == Question::stick_slide_region;
 }
 
 struct Row {
@@ -98,6 +99,7 @@ long cases_for(const Family& f, long cases) {
   if (n == "collinear_support") return std::max(1L, cases / 20);
   if (n == "unknown_support") return std::max(1L, cases / 20);
   if (n == "fixture_pin") return std::max(1L, cases / 10);
+  if (n == "region_support") return std::max(1L, cases / 20);
   return cases;
 }
 
@@ -207,6 +209,17 @@ void run_motion_case(const families::Case& k, std::uint64_t seed, long index, Ro
   if (exact.decided && exact.holds != truth) ++row.exact_wrong, report_wrong("stick/slide exact", k, seed, index, "");
 }
 
+// A support question through the pipeline in `mode`; `why` gets the message of any ending but answered or undecided
+// (an error, or a certificate the checker rejected: a wrong answer).
+Support_item pipeline_answer(const Scene& scene, const std::string& text, const Support_query& query, Mode mode,
+                             std::string& why) {
+  Request request;
+  request.mode = mode;
+  Support_item item = answer_support(scene, text, "stress", request, query);
+  if (item.status != Status::answered && item.status != Status::undecided) why = item.message;
+  return item;
+}
+
 // stick/slide over every admissible distribution (unknown_support): each mode through the pipeline (the same
 // answer_support as the CLI), the certificate checked by the independent checker there (a rejected one is a
 // wrong answer). Right = one of the answers the construction leaves possible, and the same as the other mode
@@ -220,12 +233,8 @@ void run_motion_over_case(const families::Case& k, std::uint64_t seed, long inde
   query.load = k.motion_load;
   query.polytopes = false;
   const auto answer_in = [&](Mode mode, std::string& why) {
-    Request request;
-    request.mode = mode;
-    const Support_item item = answer_support(scene, k.text, "stress", request, query);
-    if (item.status == Status::answered && item.motion_over) return item.motion_over->motion;
-    if (item.status != Status::undecided) why = item.message;
-    return Motion_over::undecided;
+    const Support_item item = pipeline_answer(scene, k.text, query, mode, why);
+    return item.status == Status::answered && item.motion_over ? item.motion_over->motion : Motion_over::undecided;
   };
   std::string why_exact, why_twin, why_hybrid;
   Motion_over exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });
@@ -302,6 +311,40 @@ void run_hold_case(const families::Case& k, std::uint64_t seed, long index, Row&
   if (wrong(twin, why_twin)) ++row.twin_wrong, report_wrong("hold twin", k, seed, index, why_twin);
   if (wrong(hybrid, why_hybrid)) ++row.hybrid_wrong, report_wrong("hold hybrid", k, seed, index, why_hybrid);
   if (wrong(exact, why_exact)) ++row.exact_wrong, report_wrong("hold exact", k, seed, index, why_exact);
+}
+
+// stick/slide on a support with regions (region_support): each mode through the pipeline, the certificate checked
+// by the independent checker there (a rejected one, or any error, is a wrong answer); the truth is the side, by
+// construction. float has no twin of regions (always undecided); naive: the double search without bounds.
+void run_region_case(const families::Case& k, std::uint64_t seed, long index, Row& row) {
+  const Scene scene = read_scene(k.text, Input_limits{});
+  Support_query query;
+  query.question = Support_question::limit_surface;
+  query.load = k.motion_load;
+  query.polytopes = false;
+  const auto answer_in = [&](Mode mode, std::string& why) {
+    const Support_item item = pipeline_answer(scene, k.text, query, mode, why);
+    return item.status == Status::answered ? item.motion.motion : Motion::undecided;
+  };
+  std::string why_exact, why_twin, why_hybrid;
+  Motion exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });
+  Motion twin = timed(row.t_twin, [&] { return answer_in(Mode::float_only, why_twin); });
+  Motion hybrid = timed(row.t_hybrid, [&] { return answer_in(Mode::hybrid, why_hybrid); });
+  const bool naive = timed(row.t_naive, [&] { return families::naive_region_slides(k); });
+  const auto flip = [](Motion m) { return m == Motion::sticks ? Motion::slides : Motion::sticks; };
+  if (twin != Motion::undecided && fault("twin")) twin = flip(twin);
+  if (hybrid != Motion::undecided && fault("hybrid")) hybrid = flip(hybrid);
+  if (exact != Motion::undecided && fault("exact")) exact = flip(exact);
+  const Motion truth = k.above ? Motion::slides : Motion::sticks;
+  const auto wrong = [&](Motion m, const std::string& why) { return !why.empty() || (m != Motion::undecided && m != truth); };
+  ++row.cases;
+  row.naive_wrong += naive != k.above;
+  row.twin_undecided += twin == Motion::undecided;
+  row.hybrid_undecided += hybrid == Motion::undecided;
+  row.exact_undecided += exact == Motion::undecided;
+  if (wrong(twin, why_twin)) ++row.twin_wrong, report_wrong("region twin", k, seed, index, why_twin);
+  if (wrong(hybrid, why_hybrid)) ++row.hybrid_wrong, report_wrong("region hybrid", k, seed, index, why_hybrid);
+  if (wrong(exact, why_exact)) ++row.exact_wrong, report_wrong("region exact", k, seed, index, why_exact);
 }
 
 std::string pct(long n, long d) {
@@ -468,7 +511,7 @@ Summary summarize(const std::vector<Row>& rows, const std::string& family, Measu
 }
 
 std::vector<Measure> checks_of(const Family& f) {
-  if (f.question == Question::stick_slide) return {Measure::motion};
+  if (f.question == Question::stick_slide || f.question == Question::stick_slide_region) return {Measure::motion};
   if (f.question == Question::stick_slide_over) return {Measure::motion_over};
   if (f.question == Question::hold) return {Measure::hold};
   return {Measure::verdict, Measure::labels};
@@ -509,7 +552,9 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << cases_for(*families::find("collinear_support"), cases)
      << " for collinear_support (each runs a search and builds polytopes), "
      << cases_for(*families::find("unknown_support"), cases)
-     << " for unknown_support (each decides every extreme distribution, with certificates, in three modes).\n\n"
+     << " for unknown_support (each decides every extreme distribution, with certificates, in three modes) and "
+     << cases_for(*families::find("region_support"), cases)
+     << " for region_support (certificates over cells of the region, in three modes).\n\n"
      << "* **naive**: what tolerance-free float code does with the same text: the numbers read by strtod (a fraction\n"
      << "  p/q as strtod(p)/strtod(q)), raw double signs in the same algorithms (fl::Naive_kernel through\n"
      << "  core/dual_cone.h for closure and equilibrium, fl::moment_labels_naive for labels). For stick/slide, naive\n"
@@ -565,6 +610,11 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << "  cases (a test), rarely down to 10^-14, mostly below (its stick witnesses are computed in double, then made\n"
      << "  exact; its polygon LP then runs to 256 sides, which is what makes those cases slow). The twin\n"
      << "  alone has no LP over the distributions and abstains; exact mode decides far from the thresholds only.\n"
+     << "* **Support regions** (region_support): hybrid and exact (the same certificate search) answer with a\n"
+     << "  certificate the checker accepts or say undecided: every case above the limit surface is decided at every ε\n"
+     << "  (the translation along the load's force gives an exact slide bound), the ones below down to about 10^-10\n"
+     << "  (the stick witness is found in double, then made exact); the float twin has no model of regions and always\n"
+     << "  abstains. The naive double search (no bounds) is wrong from about 10^-15.\n"
      << "\n| family | what |\n|---|---|\n";
   for (const Family& f : fams) {
     std::string what = f.what;  // a table cell: escape the bars of |x|
@@ -600,6 +650,10 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << "  power bound of all extreme distributions (found by brute force, not by the engine), q·p exceeds every\n"
      << "  one's: it slides for every distribution. Right = an answer left possible, the same in exact and hybrid,\n"
      << "  and a certificate the checker accepts.\n"
+     << "* region_support: the translation q = (v̂, 0) with |v̂| = 1 rational moves every point with speed 1, so\n"
+     << "  h(q) = μf0 exactly and its load p* = μf0 (v̂, c_f × v̂) (c_f the friction centroid) is ∂h(q), on the limit\n"
+     << "  surface. Below, p*·(1 − 10^-k) is inside (0 is interior, the set convex): sticks; above, q·p = (1 + 10^-k) μf0 >\n"
+     << "  h(q): slides.\n"
      << "* Labels: nothing is labeled ⇔ force closure (theory.md §5.5), and a load is balanced ⇔ −w ∈ W, read on the\n"
      << "  exact labels' cone; both are compared with the (cross-checked) truth of the verdict.\n\n"
      << "## Totals of this run\n\n"
@@ -698,7 +752,8 @@ int main(int argc, char** argv) {
       Row verdict, labels;
       verdict.family = labels.family = fam.name;
       verdict.eps = labels.eps = eps;
-      verdict.check = fam.question == Question::stick_slide        ? Measure::motion
+      verdict.check = fam.question == Question::stick_slide || fam.question == Question::stick_slide_region
+                          ? Measure::motion
                       : fam.question == Question::stick_slide_over ? Measure::motion_over
                       : fam.question == Question::hold             ? Measure::hold
                                                                    : Measure::verdict;
@@ -708,6 +763,7 @@ int main(int argc, char** argv) {
         if (fam.question == Question::stick_slide) run_motion_case(k, seed, c, verdict);
         else if (fam.question == Question::stick_slide_over) run_motion_over_case(k, seed, c, verdict);
         else if (fam.question == Question::hold) run_hold_case(k, seed, c, verdict);
+        else if (fam.question == Question::stick_slide_region) run_region_case(k, seed, c, verdict);
         else run_contact_case(k, seed, c, verdict, labels);
       }
       rows.push_back(verdict);

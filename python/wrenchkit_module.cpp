@@ -71,6 +71,7 @@ Input_limits limits_of(const py::dict& l) {
   if (l.contains("max_total_digits")) x.max_total_digits = l["max_total_digits"].cast<std::size_t>();
   if (l.contains("max_digits_times_contacts"))
     x.max_digits_times_contacts = l["max_digits_times_contacts"].cast<std::size_t>();
+  if (l.contains("max_region_vertices")) x.max_region_vertices = l["max_region_vertices"].cast<std::size_t>();
   return x;
 }
 
@@ -506,22 +507,83 @@ void polygonal_twist_fields(py::dict& d, const Sliding_answer& a) {
   d["outer_load"] = face(a.outer_face);
 }
 
+// A support with regions [RG-1] (limit_surface and sliding alike): the exact statics, the twist's certified power
+// and load, the load's motion with its (checked) certificate.
+py::dict regions_dict(const Support_item& r, const std::string& mode, const Support_query& q) {
+  const Support& sup = *r.scene.support;
+  const Region_sliding& a = *r.regions;
+  py::dict d;
+  d["mode"] = mode;
+  py::list regions;
+  for (const Support_region& g : sup.regions) {
+    py::dict x;
+    x["area"] = fraction(g.area);
+    x["force"] = fraction(g.total);
+    x["mu"] = fraction(region_mu(sup, g));
+    x["center_of_pressure"] = point({g.moment.x / g.total, g.moment.y / g.total});
+    x["pressure"] = g.uniform ? "uniform" : "linear";
+    x["pressure_coefficients"] = triple(g.pressure[0], g.pressure[1], g.pressure[2]);
+    x["second_moments"] = triple(g.second[0], g.second[1], g.second[2]);
+    regions.append(x);
+  }
+  d["regions"] = regions;
+  d["total_force"] = fraction(a.total_force);
+  d["center_of_friction"] = point(a.center_of_pressure);
+  d["friction_centroid"] = point(a.friction_centroid);
+  d["mu_f0"] = fraction(a.mu_f0);
+  if (a.has_twist) {
+    d["twist"] = triple(a.twist[0], a.twist[1], a.twist[2]);
+    d["motion"] = a.translation ? "translation" : "rotation";
+    if (a.translation) {
+      d["load_direction"] = triple(a.load_direction[0], a.load_direction[1], a.load_direction[2]);
+      d["speed_squared"] = fraction(a.speed_squared);
+      d["load"] = a.load ? py::object(triple((*a.load)[0], (*a.load)[1], (*a.load)[2])) : py::object(py::none());
+    } else {
+      d["rotation_center"] = point(a.rotation_center);
+    }
+    d["power_bracket"] = py::make_tuple(fraction(a.h_lo), fraction(a.h_hi));
+    d["tolerance_met"] = a.met;
+    d["load_box"] = py::make_tuple(triple(a.load_lo[0], a.load_lo[1], a.load_lo[2]),
+                                   triple(a.load_hi[0], a.load_hi[1], a.load_hi[2]));
+  }
+  if (r.region_motion) {
+    const Region_motion& m = *r.region_motion;
+    d["load"] = triple((*q.load)[0], (*q.load)[1], (*q.load)[2]);
+    d["motion"] = motion_name(m.motion);
+    d["motion_decided_by"] = r.motion.decided_by;
+    d["certificate_json"] = r.certificate;
+    if (!m.undecided_why.empty()) d["undecided_why"] = m.undecided_why;
+  }
+  return d;
+}
+
+std::optional<Rational> positive_tolerance(const std::optional<std::string>& tolerance) {
+  if (!tolerance) return std::nullopt;
+  const Rational e = number(*tolerance, "tolerance");
+  if (e <= 0) throw Input_error("tolerance: \"" + *tolerance + "\" must be > 0");
+  return e;
+}
+
 py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::string>& tolerance,
                        const std::optional<std::vector<std::string>>& twist,
                        const std::optional<std::vector<std::string>>& load, const std::string& mode) {
-  if (tolerance) {
+  Support_query q;
+  if (twist) q.twist = nonzero_twist(*twist);
+  if (load) q.load = vec3(*load, "load");
+  const bool regions = s.scene.support && !s.scene.support->regions.empty();
+  if (regions) {  // no polytopes: tolerance is the power's relative width
+    q.tolerance = positive_tolerance(tolerance);
+  } else if (tolerance) {
     const Rational e = number(*tolerance, "tolerance");
     if (e <= 0) throw Input_error("tolerance: \"" + *tolerance + "\" must be > 0");
     sides = smallest_sides(e, kMaxSides);
     if (sides == 0)
       throw Input_error("tolerance: " + *tolerance + " needs more than " + std::to_string(kMaxSides) + " sides");
   }
-  Support_query q;
-  q.sides = checked_sides(sides);
-  if (twist) q.twist = nonzero_twist(*twist);
-  if (load) q.load = vec3(*load, "load");
+  if (!regions) q.sides = checked_sides(sides);
   const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "limit_surface", s.limits), q);
   raise_unless_answered(r.status, r.message);
+  if (r.regions) return regions_dict(r, mode, q);
   if (r.admissible) return unknown_distribution(r, mode, q);
   const Sliding_answer& sa = r.sliding;
   py::dict d;
@@ -550,13 +612,15 @@ py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::st
 }
 
 py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>>& twist, int sides,
-                 const std::string& mode) {
+                 const std::string& mode, const std::optional<std::string>& tolerance) {
   Support_query q;
   q.question = Support_question::sliding;
   q.sides = checked_sides(sides);
+  q.tolerance = positive_tolerance(tolerance);
   if (twist) q.twist = nonzero_twist(*twist);
   const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "sliding", s.limits), q);
   raise_unless_answered(r.status, r.message);
+  if (r.regions) return regions_dict(r, mode, q);
   if (r.admissible) return unknown_distribution(r, mode, q);
   py::dict d;
   d["mode"] = mode;

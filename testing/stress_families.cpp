@@ -9,7 +9,9 @@
 
 #include "exact/io/json.h"
 #include "exact/io/json_writer.h"
+#include "exact/io/scene.h"
 #include "exact/numbers/rational.h"
+#include "exact/sliding/region_sliding.h"
 
 namespace wrenchkit::stress {
 
@@ -478,6 +480,87 @@ Family_scene collinear_support(const Family& f, double eps, Rng& r) {
   return out;
 }
 
+// ---- region_support: stick/slide on a support region [RG-1] -----------------------------------------------
+
+// Family "region_support". A support region — a rectangle or a triangle on a short-decimal grid, sometimes with a
+// triangular hole (the outline's shape shrunk by 1/4 about its centroid: strictly inside a convex outline), a
+// uniform or a linear pressure — sometimes with a support point, and the translation along a Pythagorean
+// direction v̂ = (a, b)/c. Its load p* = μf0 (v̂, c_f × v̂) through the friction centroid c_f is exactly on the
+// limit surface (p* = ∂h(v̂), and the region makes the surface strictly convex). The load is p*(1 ± ε): above,
+// q = (v̂, 0) has q·p = (1 + ε) μf0 > h(q) = μf0: it slides; below, (1 − ε)p* is inside (0 is interior and the
+// set convex): it sticks. Known by construction for every ε; the naive guess searches h in double.
+Family_scene region_support(const Family& fam, double eps, Rng& r) {
+  const int k = decimal_exponent(eps);
+  for (;;) {
+    Family_scene out;
+    out.family = fam.name;
+    out.epsilon = eps;
+    out.known = true;
+    out.above = r.coin();
+    std::vector<std::pair<Rational, Rational>> poly;
+    const Rational x0 = short_decimal(r, -2000, 1000, 3), y0 = short_decimal(r, -2000, 1000, 3);
+    if (r.coin()) {
+      const Rational w = short_decimal(r, 100, 3000, 3), h = short_decimal(r, 100, 3000, 3);
+      poly = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
+    } else {
+      for (int i = 0; i < 3; ++i) poly.push_back({short_decimal(r, -2000, 2000, 3), short_decimal(r, -2000, 2000, 3)});
+      const auto& [a, b] = poly[0];
+      const Rational cross = (poly[1].first - a) * (poly[2].second - b) - (poly[1].second - b) * (poly[2].first - a);
+      if (cross == 0) continue;
+    }
+    Rational gx = 0, gy = 0;
+    for (const auto& [x, y] : poly) gx += x, gy += y;
+    gx /= static_cast<long>(poly.size()), gy /= static_cast<long>(poly.size());
+    Json_writer w(1024);
+    w.object().member("wrenchkit", 1).member("name", "region_support").key("support").object();
+    static const char* mus[] = {"1/2", "1", "1/3", "3/4"};
+    w.key("mu").raw(json::quote(mus[r.integer(0, 3)]));
+    if (r.integer(0, 2) == 0) {
+      w.key("points").array().object().key("at").array();
+      w.raw(exact_text(short_decimal(r, -3000, 3000, 3))).raw(exact_text(short_decimal(r, -3000, 3000, 3)));
+      w.end_array().key("force").raw(exact_text(Rational(r.integer(1, 4)))).end_object().end_array();
+    }
+    w.key("regions").array().object().key("outline").array();
+    for (const auto& [x, y] : poly) w.array().raw(exact_text(x)).raw(exact_text(y)).end_array();
+    w.end_array();
+    if (r.coin()) {
+      w.key("holes").array().array();
+      for (std::size_t i = 0; i < 3; ++i) {
+        const auto& [x, y] = poly[i];
+        w.array().raw(exact_text(gx + (x - gx) / 4)).raw(exact_text(gy + (y - gy) / 4)).end_array();
+      }
+      w.end_array().end_array();
+    }
+    if (r.coin()) {
+      w.member("pressure", "uniform").key("force").raw(exact_text(short_decimal(r, 100, 5000, 3)));
+    } else {  // p = c0 + c1 x + c2 y, positive on the outline (|x|, |y| ≤ 5)
+      const Rational c1 = short_decimal(r, -1000, 1000, 3), c2 = short_decimal(r, -1000, 1000, 3);
+      const Rational c0 = 5 * (abs(c1) + abs(c2)) + short_decimal(r, 100, 2000, 3);
+      w.key("pressure").object().key("linear").array().raw(exact_text(c0)).raw(exact_text(c1)).raw(exact_text(c2));
+      w.end_array().end_object();
+    }
+    w.end_object().end_array().end_object().end_object();
+    out.text = w.take();
+    const Scene scene = read_scene(out.text, Input_limits{}, "region_support");
+    const Region_sliding st = region_sliding(*scene.support, std::nullopt, 1);
+    static const int triples[][3] = {{3, 4, 5}, {5, 12, 13}, {8, 15, 17}, {7, 24, 25}, {1, 0, 1}, {0, 1, 1}};
+    const auto& t = triples[r.integer(0, 5)];
+    Rational vx(t[0], t[2]), vy(t[1], t[2]);
+    if (r.coin()) std::swap(vx, vy);
+    if (r.coin()) vx = -vx;
+    if (r.coin()) vy = -vy;
+    const Rational& cx = st.friction_centroid.x;
+    const Rational& cy = st.friction_centroid.y;
+    const Rational s = 1 + (out.above ? Rational(1) : Rational(-1)) * ten_to(-k);
+    const Rational p[3] = {st.mu_f0 * vx * s, st.mu_f0 * vy * s, st.mu_f0 * (cx * vy - cy * vx) * s};
+    for (int i = 0; i < 3; ++i) {
+      out.load_text[static_cast<std::size_t>(i)] = exact_text(p[i]);
+      out.load[static_cast<std::size_t>(i)] = naive_double(out.load_text[static_cast<std::size_t>(i)]);
+    }
+    return out;
+  }
+}
+
 // ---- unknown_support: stick/slide over every admissible distribution ---------------------------------------
 
 struct Leg {
@@ -775,6 +858,10 @@ const std::vector<Family>& report_only_families() {
        "exact rational normal), the push μW·(1 ± ε): holds iff below (a force through the centre of friction is in "
        "the closed limit surface iff it is at most μW)",
        Question::hold, true, true},
+      {"region_support",
+       "a support region (rectangle or triangle, maybe a hole, uniform or linear pressure, maybe a point); load "
+       "p*·(1 ± ε) with p* the exact boundary load of a translation along a Pythagorean direction: slides iff above",
+       Question::stick_slide_region, true, true},
   };
   return f;
 }
@@ -877,6 +964,7 @@ Family_scene make_scene(const Family& family, double epsilon, Rng& rng) {
   if (name == "collinear_support") return collinear_support(family, epsilon, rng);
   if (name == "unknown_support") return unknown_support(family, epsilon, rng);
   if (name == "fixture_pin") return fixture_pin(family, epsilon, rng);
+  if (name == "region_support") return region_support(family, epsilon, rng);
   if (name == "long_rational" || name == "rational_rotation" || name == "huge_scale" || name == "tiny_scale" ||
       name == "beyond_double" || name == "many_contacts")
     return exact_family(family, epsilon, rng);

@@ -57,7 +57,9 @@ struct Gravity_spec {
 // distribution, slide for every one, or does it depend (exact/sliding/unknown_motion.h)?
 // hold: can the contacts and the support's friction hold the body against the load (exact/fixture/hold.h)? A
 // `known` hold scene holds iff not `above`.
-enum class Question { force_closure, form_closure, equilibrium, all, stick_slide, stick_slide_over, hold };
+// stick_slide_region: does the load stick or slide on a support with regions (continuous pressure) [RG-1]?
+enum class Question { force_closure, form_closure, equilibrium, all, stick_slide, stick_slide_over, hold,
+                      stick_slide_region };
 
 // stick_slide_over: the answers a scene's construction leaves possible (a bit set).
 enum Motion_answer : unsigned { answer_sticks = 1, answer_slides = 2, answer_depends = 4 };

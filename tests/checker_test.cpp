@@ -810,8 +810,8 @@ const std::string table_points = R"("points": [{"at": [1, 1]}, {"at": [-1, 1]}, 
 
 TEST(CheckerSupport, BadSupports) {
   auto bad = [](const std::string& support, const std::string& com = "") { return scene_error(with_support(support, com)); };
-  EXPECT_EQ(bad(R"({"mu": 1, "points": []})"), "support.points: empty (a support needs at least one point)");
-  EXPECT_EQ(bad(R"({"mu": 1})"), R"(support: missing required key "points")");
+  EXPECT_EQ(bad(R"({"mu": 1, "points": []})"), "support.points: empty (a support needs at least one point or region)");
+  EXPECT_EQ(bad(R"({"mu": 1})"), R"(support: missing required key "points" (a support needs points or regions))");
   EXPECT_EQ(bad(R"({"mu": 1, "points": [{"at": [0, 0], "force": 1}], "extra": 1})"), R"(support: unknown key "extra")");
   EXPECT_EQ(bad(R"({"mu": 1, "points": [{"at": [0, 0], "force": 1, "name": "x"}]})"),
             R"(support.points[0]: unknown key "name")");

@@ -3,12 +3,14 @@
 // bad-input class (exit 2, a message naming the option or field, nothing on stdout).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "exact/numbers/rational.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {
@@ -315,100 +317,80 @@ TEST(CliSlidingModes, TruePowerInsideTheExactBracket) {
   }
 }
 
-}  // namespace
-}  // namespace wrenchkit
+// Support regions [RG-1] [RG-2] (docs/regions.md): the command line end to end.
+const std::string kSquareRegion =
+    R"({"wrenchkit": 1, "name": "uniform square", "support": {"mu": 1, "regions": [{"outline": [[-1,-1],[1,-1],[1,1],[-1,1]], "pressure": "uniform", "force": 1}]}})";
 
-namespace wrenchkit {
-namespace {
-
-// analyze: --tolerance picks the fewest sides meeting it; a force load on a support gets its motion;
-// a gravity load's motion on a horizontal support is listed as skipped, not computed.
-TEST(CliAnalyzeSupport, ToleranceAndTheLoadsMotion) {
-  const auto write = [](const std::string& name, const std::string& text) {
-    const fs::path p = scratch() / name;
-    std::ofstream(p) << text;
-    return "'" + p.string() + "'";
-  };
-  const std::string pushed = write("pushed.json", R"({"wrenchkit": 1, "load": {"force": ["0.9", 0], "at": [0, "-1/2"]},
-    "support": {"mu": "1/2", "points": [{"at": [0, -1], "force": 1}, {"at": [0, 1], "force": 1}]}})");
-  const Cli_result a = run("analyze --json --tolerance 0.01 " + pushed);
-  ASSERT_EQ(a.code, 0) << a.err;
-  EXPECT_TRUE(has(a.out, "\"sides\": 24")) << a.out;  // the smallest N with 1/λ − 1 ≤ 1/100 (LS-1)
-  EXPECT_TRUE(has(a.out, "\"load_motion\": {\"load\": [\"9/10\", \"0\", \"9/20\"], \"motion\": \"slides\"")) << a.out;
-  const Cli_result light = run("analyze --json " + write("light.json", R"({"wrenchkit": 1, "load": {"force": ["0.1", 0], "at": [0, 0]},
-    "support": {"mu": "1/2", "points": [{"at": [0, -1], "force": 1}, {"at": [0, 1], "force": 1}]}})"));
-  EXPECT_TRUE(has(light.out, "\"motion\": \"sticks\"")) << light.out;
-  const Cli_result heavy = run("analyze --json " + write("gravity.json", R"({"wrenchkit": 1, "body": {"com": [0, 0]},
-    "load": {"gravity": 1}, "support": {"mu": "1/2", "points": [{"at": [0, -1], "force": 1}]}})"));
-  EXPECT_TRUE(has(heavy.out, "{\"what\": \"load_motion\"")) << heavy.out;
-  EXPECT_FALSE(has(heavy.out, "\"load_motion\": {")) << heavy.out;
-  EXPECT_EQ(run("analyze --tolerance 0 " + pushed).code, 2);
-  EXPECT_EQ(run("analyze --tolerance abc " + pushed).code, 2);
-  const Cli_result none = run("analyze --json --tolerance 0.1 '" + test::source_dir() + "/tests/golden/single_force.scene.json'");
-  EXPECT_TRUE(has(none.out, "the scene has no support")) << none.out;
-}
-
-}  // namespace
-// Unknown forces (docs/theory-sliding.md §1–§2): sliding answers the power over every admissible distribution
-// (the four-legged table: rotation about a leg ranges over [√2, 2]); float mode has no LP over F (exit 3);
-// limit-surface --load sticks / slides / depends; an empty F is bad input with the reason.
-TEST(CliSliding, UnknownDistributionsOfTheTable) {
-  const std::string table = R"({"wrenchkit": 1, "name": "table", "support": {"mu": 1, "weight": 1,
-      "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}})";
-  const Cli_result r = run("sliding --json --twist 1,-1,1 -", table);
+TEST(CliRegions, SlidingBracketsTheSquaresPowerToTheTolerance) {
+  // theory-sliding.md §6: h(0, 0, 1) = (√2 + asinh 1)/3 ≈ 0.7651957165, bracketed to 1e-6 relative, exact centre.
+  const Cli_result r = run("sliding --json --twist 0,0,1 -", kSquareRegion);
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_TRUE(has(r.out, "\"distribution\": \"unknown\", \"unknown_points\": [0, 1, 2, 3], \"weight\": \"1\"")) << r.out;
-  EXPECT_TRUE(has(r.out, "\"extreme_distributions\": [[\"1/2\", \"0\", \"1/2\", \"0\"], [\"0\", \"1/2\", \"0\", \"1/2\"]]"))
-      << r.out;
-  EXPECT_TRUE(has(r.out, "\"min_distribution\": [\"1/2\", \"0\", \"1/2\", \"0\"], \"max_distribution\": [\"0\", "
-                         "\"1/2\", \"0\", \"1/2\"]"))
-      << r.out;
-  const Cli_result b = run("batch sliding --twist 1,-1,1", table.substr(0, 0) + R"({"wrenchkit": 1, "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, -1]}]}})" "\n");
-  ASSERT_EQ(b.code, 0) << b.err;
-  EXPECT_TRUE(has(b.out, "{\"line\": 1, \"command\": \"sliding\"")) << b.out;
-  const Cli_result f = run("sliding --mode float --twist 0,0,1 -", table);
-  EXPECT_EQ(f.code, 3);
-  EXPECT_TRUE(has(f.err, "no LP over the admissible distributions")) << f.err;
+  EXPECT_TRUE(has(r.out, "\"center_of_friction\": [\"0\", \"0\"]")) << r.out;
+  EXPECT_TRUE(has(r.out, "\"tolerance\": \"1/1000000\", \"tolerance_met\": true")) << r.out;
+  const auto lower = r.out.find("\"lower\": \""), upper = r.out.find("\"upper\": \"");
+  ASSERT_NE(lower, std::string::npos);
+  const auto value = [&](std::size_t at) {
+    const std::size_t b = r.out.find('"', at + 9) + 1;
+    Rational q(r.out.substr(b, r.out.find('"', b) - b));
+    q.canonicalize();
+    return q.get_d();
+  };
+  const double truth = (std::sqrt(2.0) + std::asinh(1.0)) / 3;
+  EXPECT_LE(value(lower), truth * (1 + 1e-15));  // the double truth is itself within an ulp
+  EXPECT_GE(value(upper), truth * (1 - 1e-15));
+  EXPECT_LE(value(upper) - value(lower), 1e-6 * truth);
+  const Cli_result t = run("sliding --twist 0,0,1 -", kSquareRegion);
+  EXPECT_TRUE(has(t.out, "power h in [0.7651957165, 0.7651957165]")) << t.out;
+  EXPECT_EQ(run("sliding --mode exact --json --twist 0,0,1 -", kSquareRegion).code, 0);
+  // --tolerance: a coarser bracket is allowed, and is still a bracket.
+  const Cli_result c = run("sliding --json --twist 0,0,1 --tolerance 1/10 -", kSquareRegion);
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_TRUE(has(c.out, "\"tolerance\": \"1/10\"")) << c.out;
+}
+
+TEST(CliRegions, LoadsWithCertificatesAndRefusals) {
+  const fs::path d = scratch();
+  const std::string scene = (d / "square.json").string(), cert = (d / "square.cert.json").string();
+  std::ofstream(scene) << kSquareRegion;
+  const Cli_result s = run("limit-surface --json --load 0,0,1/2 --certificate '" + cert + "' '" + scene + "'");
+  ASSERT_EQ(s.code, 0) << s.err;
+  EXPECT_TRUE(has(s.out, "\"motion\": \"sticks\"")) << s.out;
+  EXPECT_TRUE(has(s.out, "\"certificate_checked\": true"));
+  EXPECT_TRUE(has(s.out, "\"polytopes\": false, \"strictly_convex\": true"));
+  EXPECT_EQ(run("check '" + scene + "' '" + cert + "'").code, 0);
+  const Cli_result l = run("limit-surface --load 0,0,4/5 -", kSquareRegion);
+  ASSERT_EQ(l.code, 0) << l.err;
+  EXPECT_TRUE(has(l.out, "slides (the twist")) << l.out;
+  // Float has no twin of regions: undecided (exit 3), nothing on stdout.
+  const Cli_result f = run("limit-surface --mode float --load 0,0,1/2 -", kSquareRegion);
+  EXPECT_EQ(f.code, 3) << f.out;
   EXPECT_TRUE(f.out.empty());
-  // limit-surface --load: sticks / slides / depends over every admissible distribution (the table's three cases).
-  const Cli_result d = run("limit-surface --json --load 0.5,0.5,0.9 -", table);
-  ASSERT_EQ(d.code, 0) << d.err;
-  EXPECT_TRUE(has(d.out, "\"motion\": \"depends\", \"motion_decided_by\": \"vertices\", \"per_extreme_distribution\": "
-                         "[\"sticks\", \"slides\"], \"witnesses\": {\"sticks\": {\"distribution\": [\"1/2\", \"0\", "
-                         "\"1/2\", \"0\"]}, \"slides\": {\"distribution\": [\"0\", \"1/2\", \"0\", \"1/2\"]}}"))
-      << d.out;
-  EXPECT_TRUE(has(run("limit-surface --json --load 0.5,0,0 -", table).out, "\"motion\": \"sticks\""));
-  const Cli_result sl = run("limit-surface --json --load 0,0,1.5 -", table);
-  EXPECT_TRUE(has(sl.out, "\"motion\": \"slides\", \"motion_decided_by\": \"twist\"")) << sl.out;
-  EXPECT_TRUE(has(sl.out, "\"separating_twist\": [")) << sl.out;
-  const Cli_result l = run("limit-surface --list --load 0.5,0.5,0.9 -", table);
-  EXPECT_EQ(l.code, 2);
-  EXPECT_TRUE(has(l.err, "no one limit surface to list or draw")) << l.err;
-  EXPECT_TRUE(l.out.empty());
-  std::string tipped = table;
-  tipped.replace(tipped.find("[0, 0]"), 6, "[2, 0]");
-  const Cli_result e = run("sliding --twist 0,0,1 -", tipped);
-  EXPECT_EQ(e.code, 2);
-  EXPECT_TRUE(has(e.err, "outside the convex hull of the points whose force is not given")) << e.err;
+  // No exact polytope: --sides, --list are bad input naming the reason; --svg draws the support.
+  for (const std::string opt : {"--sides 8", "--list"}) {
+    const Cli_result b = run("limit-surface " + opt + " -", kSquareRegion);
+    EXPECT_EQ(b.code, 2) << opt;
+    EXPECT_TRUE(has(b.err, "strictly convex")) << b.err;
+    EXPECT_TRUE(b.out.empty());
+  }
+  const std::string svg = (d / "square.svg").string();
+  ASSERT_EQ(run("limit-surface --svg '" + svg + "' -", kSquareRegion).code, 0);
+  EXPECT_TRUE(has(test::read_text(svg), "centre of friction"));
+  ASSERT_EQ(run("render --what limit-surface -o '" + svg + "' -", kSquareRegion).code, 0);
+  EXPECT_TRUE(has(test::read_text(svg), "</svg>"));
+  // A bad region: exit 2 naming it.
+  const Cli_result b = run("sliding -", R"({"wrenchkit": 1, "support": {"mu": 1, "regions": [{"outline": [[0,0],[1,0],[1,1],[0,1]], "pressure": {"linear": [-1, 0, 0]}}]}})");
+  EXPECT_EQ(b.code, 2);
+  EXPECT_TRUE(has(b.err, "support.regions[0].pressure: p = -1 < 0 at outline[0] (0, 0)")) << b.err;
+  // analyze: the summary and the load's motion with its checked certificate.
+  const Cli_result a = run("analyze -", R"({"wrenchkit": 1, "support": {"mu": 1, "regions": [{"outline": [[-1,-1],[1,-1],[1,1],[-1,1]], "pressure": "uniform", "force": 1}]}, "load": {"wrench": [0, 0, 0.9]}})");
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_TRUE(has(a.out, "the load on the support: slides")) << a.out;
+  // batch: a line per scene, the same bytes as the single command's --json.
+  const Cli_result one = run("sliding --json --twist 1,2,3 -", kSquareRegion);
+  const Cli_result many = run("batch sliding --twist 1,2,3", kSquareRegion + "\n" + kSquareRegion + "\n");
+  ASSERT_EQ(many.code, 0) << many.err;
+  EXPECT_TRUE(has(many.out, "{\"line\": 2, " + one.out.substr(1, one.out.size() - 2))) << many.out;
 }
 
-// Gravity with a support: a centre of mass away from the support's centre of pressure is reported (text and
-// JSON), not refused; at the centre, nothing is said.
-TEST(CliAnalyze, GravityAwayFromTheCentreOfPressureIsReported) {
-  const std::string off = R"({"wrenchkit": 1, "body": {"com": [1, 0]}, "load": {"gravity": 1},
-      "support": {"mu": 1, "points": [{"at": [0, 1], "force": "1/2"}, {"at": [0, -1], "force": "1/2"}]}})";
-  const Cli_result t = run("analyze -", off);
-  ASSERT_EQ(t.code, 0) << t.err;
-  EXPECT_TRUE(has(t.out, "warning: the weight acts at body.com (1, 0) but the support's centre of pressure is (0, 0)"))
-      << t.out;
-  const Cli_result j = run("analyze --json -", off);
-  EXPECT_TRUE(has(j.out, "\"warnings\": [{\"what\": \"gravity_off_pressure_center\", \"com\": [\"1\", \"0\"], "
-                         "\"pressure_center\": [\"0\", \"0\"]}]"))
-      << j.out;
-  std::string on = off;
-  on.replace(on.find("[1, 0]"), 6, "[0, 0]");
-  const Cli_result k = run("analyze --json -", on);
-  EXPECT_FALSE(has(k.out, "warnings")) << k.out;
-}
-
+}  // namespace
 }  // namespace wrenchkit

@@ -14,7 +14,6 @@
 #include "exact/io/to_float.h"
 #include "testing/twin_agreement.h"
 #include "float/limit_surface_twin.h"
-#include "float/pressure.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {
@@ -242,64 +241,6 @@ TEST(LimitSurfaceTwin, HybridMotionNeverContradictsExact) {
   std::printf("[ stats    ] motion: exact (N = 8) decided %d of 80, hybrid %d (%d by the float search)\n", exact_decided,
               hybrid_decided, by_float);
   EXPECT_GT(hybrid_decided, exact_decided);
-}
-
-}  // namespace
-}  // namespace wrenchkit
-
-namespace wrenchkit {
-namespace {
-
-fl::Bounded3 B3(double a, double b, double c) {
-  return {fl::Bounded::exact(a), fl::Bounded::exact(b), fl::Bounded::exact(c)};
-}
-bool brackets(const fl::Bounded& b, double exact) { return fl::lower(b) <= exact && exact <= fl::upper(b); }
-
-TEST(PressureTwin, ClosedFormsOfTheory14_1AreBracketed) {
-  // Uniform square of side 1 about its centre, μ f0 = 1: max moment (√2 + ln(1 + √2))/6.
-  const double square = (std::sqrt(2.0) + std::log(1 + std::sqrt(2.0))) / 6;
-  // Uniform rectangle [−2, 2] × [−1, 1]: 1.186466832 (theory.md §14.1).
-  const double a = 2, b = 1, d = std::sqrt(a * a + b * b);
-  const double rect = (2 * a * b * d + a * a * a * std::log((b + d) / a) + b * b * b * std::log((a + d) / b)) / (6 * a * b);
-  EXPECT_NEAR(rect, 1.186466832, 1e-9);
-  double previous_width = 1e9;
-  for (int m : {4, 16, 64}) {
-    const fl::Pressure_cells sq = fl::discretize(fl::uniform_pressure({{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}}, 1, 1), m);
-    const fl::Bounded h = fl::support_function(sq, B3(0, 0, 1));
-    EXPECT_TRUE(brackets(h, square)) << "m = " << m << ": " << h.v << " ± " << h.e;
-    EXPECT_LT(h.e, previous_width);  // narrows with m
-    previous_width = h.e;
-    const fl::Pressure_cells re = fl::discretize(fl::uniform_pressure({{-2, -1}, {2, -1}, {2, 1}, {-2, 1}}, 0.5, 2), m);
-    EXPECT_TRUE(brackets(fl::support_function(re, B3(0, 0, 1)), rect)) << "m = " << m;
-    // Any translation: μ f0 |v| through the centre of friction, whatever the pressure.
-    EXPECT_TRUE(brackets(fl::support_function(re, B3(3, -4, 0)), 5)) << "m = " << m;
-  }
-  EXPECT_LT(previous_width, 0.02);  // O(1/m): 2·64² cells
-}
-
-TEST(PressureTwin, LinearPressureNonConvexOutlineAndBadRegions) {
-  // p = 1 + x on the unit square: f0 = 3/2, centre of friction (5/9, 1/2).
-  fl::Pressure_polygon lin{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 1, 1, 1, 0};
-  const fl::Pressure_cells c = fl::discretize(lin, 32);
-  EXPECT_TRUE(brackets(c.total_force, 1.5));
-  const fl::Point2 cof = fl::center_of_friction(c.points);
-  EXPECT_NEAR(cof.x.v, 5.0 / 9, 1e-3);
-  EXPECT_NEAR(cof.y.v, 0.5, 1e-3);  // the centroid rule is second order for r·p(r)
-  // An L-shaped (non-convex) outline, clockwise: coarse and fine brackets both hold the true value.
-  const std::vector<std::array<double, 2>> L = {{0, 0}, {0, 2}, {1, 2}, {1, 1}, {2, 1}, {2, 0}};
-  const fl::Pressure_cells coarse = fl::discretize(fl::uniform_pressure(L, 1, 1), 4);
-  const fl::Pressure_cells fine = fl::discretize(fl::uniform_pressure(L, 1, 1), 64);
-  EXPECT_TRUE(brackets(coarse.total_force, 1));
-  for (const fl::Bounded3& q : {B3(0, 0, 1), B3(1, -2, 0.5), B3(0.3, 0.2, -2)}) {
-    const fl::Bounded hc = fl::support_function(coarse, q), hf = fl::support_function(fine, q);
-    EXPECT_LE(fl::lower(hc), fl::upper(hf));
-    EXPECT_LE(fl::lower(hf), fl::upper(hc));
-    EXPECT_LT(hf.e, hc.e);
-  }
-  EXPECT_THROW(fl::discretize(fl::uniform_pressure({{0, 0}, {1, 1}, {1, 0}, {0, 1}}, 1, 1), 4), std::invalid_argument);  // a bow tie
-  EXPECT_THROW(fl::discretize(fl::uniform_pressure({{0, 0}, {1, 1}, {2, 2}}, 1, 1), 4), std::invalid_argument);  // no area
-  EXPECT_THROW(fl::discretize({{{0, 0}, {1, 0}, {0, 1}}, 1, -0.5, 1, 0}, 4), std::invalid_argument);  // p < 0 at (0, 0)
-  EXPECT_THROW(fl::discretize(lin, 0), std::invalid_argument);
 }
 
 }  // namespace

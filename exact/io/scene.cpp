@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "exact/io/input_error.h"
+#include "exact/io/region.h"
 #include "exact/io/json.h"
 #include "exact/io/scene_budget.h"
 
@@ -147,9 +148,10 @@ class Reader {
     return {number(v.items[0], path + "[0]", approx2), number(v.items[1], path + "[1]", approx2 ? approx2 + 1 : nullptr)};
   }
 
-  Wrench wrench3(const Value& v, const std::string& path, fl::Bounded* approx3 = nullptr) const {
+  Wrench wrench3(const Value& v, const std::string& path, fl::Bounded* approx3 = nullptr,
+                 const char* names = "[fx, fy, m]") const {
     if (v.type != Type::array || v.items.size() != 3)
-      fail(path, std::string("expected an array of 3 numbers [fx, fy, m], got ") +
+      fail(path, std::string("expected an array of 3 numbers ") + names + ", got " +
                      (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
                                             : std::string(json::type_name(v.type))));
     return {number(v.items[0], path + "[0]", approx3), number(v.items[1], path + "[1]", approx3 ? approx3 + 1 : nullptr),
@@ -278,7 +280,7 @@ class Reader {
 
   Support support(const Value& v) const {
     expect(v, Type::object, "support", "an object");
-    keys(v, "support", {"mu", "points", "weight", "pressure_center"});
+    keys(v, "support", {"mu", "points", "regions", "weight", "pressure_center"});
     Support s;
     if (const Value* mu = v.find("mu")) s.mu = nonnegative(*mu, "support.mu");
     if (const Value* w = v.find("weight")) {
@@ -286,17 +288,29 @@ class Reader {
       if (*s.weight <= 0) fail("support.weight", display(*w) + " is not positive (a total normal force must be > 0)");
     }
     if (const Value* c = v.find("pressure_center")) s.pressure_center = vec2(*c, "support.pressure_center");
-    const Value& pts = required(v, "support", "points");
-    expect(pts, Type::array, "support.points", "an array");
-    if (pts.items.empty()) fail("support.points", "empty (a support needs at least one point)");
-    if (pts.items.size() > limits_.max_contacts)
+    const Value* regions = v.find("regions");
+    if (regions) {
+      expect(*regions, Type::array, "support.regions", "an array");
+      s.regions.reserve(regions->items.size());
+      std::size_t vertices = 0;
+      for (std::size_t i = 0; i < regions->items.size(); ++i)
+        s.regions.push_back(
+            region(regions->items[i], "support.regions[" + std::to_string(i) + "]", s.mu.has_value(), vertices));
+    }
+    const Value* pts = v.find("points");
+    if (!pts && s.regions.empty()) fail("support", "missing key \"points\" (a support needs points or regions)");
+    if (pts) expect(*pts, Type::array, "support.points", "an array");
+    if (pts && pts->items.empty() && s.regions.empty())
+      fail("support.points", "empty (a support needs at least one point or region)");
+    if (pts && pts->items.size() > limits_.max_contacts)
       fail("support.points", "has more entries than the limit " +
                                  std::to_string(limits_.max_contacts) + " (--max-contacts)");
-    bool any_force = false, all_given = true;
-    s.points.reserve(pts.items.size());
-    for (std::size_t i = 0; i < pts.items.size(); ++i) {
+    bool any_force = !s.regions.empty(), all_given = true;
+    const std::size_t n = pts ? pts->items.size() : 0;
+    s.points.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
       const std::string path = "support.points[" + std::to_string(i) + "]";
-      const Value& p = pts.items[i];
+      const Value& p = pts->items[i];
       expect(p, Type::object, path, "an object");
       keys(p, path, {"at", "force", "mu"});
       Support_point sp;
@@ -310,6 +324,56 @@ class Reader {
     }
     if (all_given && !any_force) fail("support.points", "all forces are zero");
     return s;
+  }
+
+  // {"outline": [[x, y], …], "holes"?: [[[x, y], …], …], "pressure": "uniform", "force": F, "mu"?} or
+  // {"outline", "holes"?, "pressure": {"linear": [a, b, c]}, "mu"?} (docs/scene-format.md, "Support regions"); its
+  // geometry is checked and settled by settle_region (exact/io/region.h), as the streaming reader does.
+  Support_region region(const Value& v, const std::string& path, bool support_mu, std::size_t& vertices) const {
+    expect(v, Type::object, path, "an object");
+    keys(v, path, {"outline", "holes", "pressure", "force", "mu"});
+    Support_region r;
+    r.outline = ring(required(v, path, "outline"), path + ".outline", vertices);
+    if (const Value* h = v.find("holes")) {
+      expect(*h, Type::array, path + ".holes", "an array of rings");
+      for (std::size_t j = 0; j < h->items.size(); ++j)
+        r.holes.push_back(ring(h->items[j], path + ".holes[" + std::to_string(j) + "]", vertices));
+    }
+    const Value& p = required(v, path, "pressure");
+    const std::string pp = path + ".pressure";
+    if (p.type == Type::string) {
+      if (p.text != "uniform") fail(pp, display(p) + " is not \"uniform\" (or {\"linear\": [a, b, c]})");
+      const Value* f = v.find("force");
+      if (!f) fail(path, "missing key \"force\" (a uniform pressure needs the region's force)");
+      r.uniform = true;
+      r.force = number(*f, path + ".force");
+    } else if (p.type == Type::object) {
+      keys(p, pp, {"linear"});
+      const Wrench w = wrench3(required(p, pp, "linear"), pp + ".linear", nullptr, "[a, b, c]");
+      if (v.find("force"))
+        fail(path + ".force", "not allowed with a linear pressure (the region's force is the pressure's integral)");
+      r.uniform = false;
+      r.linear = {w.fx, w.fy, w.m};
+    } else {
+      fail(pp, std::string("expected \"uniform\" or {\"linear\": [a, b, c]}, got ") + json::type_name(p.type));
+    }
+    if (const Value* mu = v.find("mu")) r.mu = nonnegative(*mu, path + ".mu");
+    if (!r.mu && !support_mu) fail(path, "missing key \"mu\" (and support.mu gives no default)");
+    settle_region(r, path);
+    return r;
+  }
+
+  // A ring of points, counted with the regions' other rings against --max-region-vertices.
+  std::vector<Vec2> ring(const Value& v, const std::string& path, std::size_t& vertices) const {
+    expect(v, Type::array, path, "an array of points");
+    vertices += v.items.size();
+    if (vertices > limits_.max_region_vertices)
+      fail(path, "the support's regions have more than " + std::to_string(limits_.max_region_vertices) +
+                     " vertices in all (--max-region-vertices)");
+    std::vector<Vec2> out;
+    out.reserve(v.items.size());
+    for (std::size_t i = 0; i < v.items.size(); ++i) out.push_back(vec2(v.items[i], path + "[" + std::to_string(i) + "]"));
+    return out;
   }
 };
 

@@ -68,11 +68,36 @@ struct Support_point {
   std::optional<Rational> mu;     // own coefficient, else support.mu
 };
 
+// A support region (docs/scene-format.md, "Support regions"; docs/regions.md) [RG-1]: a polygon with holes
+// pressing on the support with the linear pressure p(x, y) = a + b·x + c·y ≥ 0 (uniform: b = c = 0). The model
+// is plain exact rationals; CGAL checks and triangulates it once, when the scene is read (exact/io/region.h).
+struct Region_triangle {
+  Vec2 a, b, c;  // counter-clockwise, nonzero area
+};
+struct Support_region {
+  // As written (the canonical scene writer writes these back).
+  std::vector<Vec2> outline;
+  std::vector<std::vector<Vec2>> holes;
+  bool uniform = true;               // "pressure": "uniform" with "force", else {"linear": [a, b, c]}
+  Rational force;                    // uniform: the given force F > 0 (linear: its integral, below)
+  std::array<Rational, 3> linear;    // linear: the written (a, b, c)
+  std::optional<Rational> mu;        // own coefficient, else support.mu
+  // Settled when the scene is read (settle_region, exact/io/region.h), exact:
+  std::vector<std::vector<Vec2>> rings;     // outline counter-clockwise, then each hole clockwise
+  std::vector<Region_triangle> triangles;   // a triangulation of the region (vertices: the rings' vertices)
+  std::array<Rational, 3> pressure;         // p = pressure[0] + pressure[1]·x + pressure[2]·y (uniform: F/area)
+  Rational area;                            // > 0
+  Rational total;                           // W_R = ∫ p dA > 0 (= force when uniform)
+  Vec2 moment;                              // ∫ r p dA (the centre of pressure is moment / total)
+  std::array<Rational, 3> second;           // ∫ x² p, ∫ x y p, ∫ y² p
+};
+
 // A support: its points, and when a force is unknown the total normal force W and the centre of pressure c
 // (pressure_center, else body.com) that fix the admissible distributions (exact/io/support_check.h).
 struct Support {
   std::optional<Rational> mu;
-  std::vector<Support_point> points;
+  std::vector<Support_point> points;     // may be empty when there are regions
+  std::vector<Support_region> regions;   // their pressure is always known
   std::optional<Rational> weight;        // W > 0; required when a force is unknown
   std::optional<Vec2> pressure_center;   // c
   // Every point's force is given: one distribution.

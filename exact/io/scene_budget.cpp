@@ -22,14 +22,18 @@ enum class Place {
   contacts,  // an array of contacts (entries)
   contact,   // {"at", "normal", "mu", "wrench"}
   load,      // {"force", "at", "wrench", "gravity"}
-  support,   // {"mu", "weight", "pressure_center", "points"}
+  support,   // {"mu", "weight", "pressure_center", "points", "regions"}
   points,    // an array of support points (entries)
   point,     // {"at", "force", "mu"}
+  regions,   // an array of support regions (not entries: their rings are bounded by --max-region-vertices)
+  region,    // {"outline", "holes", "pressure", "force", "mu"}
+  holes,     // an array of rings (each as an outline)
+  pressure,  // {"linear": [a, b, c]} (the string "uniform" holds no number)
 };
 
 bool is_object(Place p) {
   return p == Place::root || p == Place::body || p == Place::contact || p == Place::load || p == Place::support ||
-         p == Place::point;
+         p == Place::point || p == Place::region || p == Place::pressure;
 }
 
 Place member(Place object, std::string_view key) {
@@ -54,9 +58,17 @@ Place member(Place object, std::string_view key) {
       return key == "mu" || key == "weight" ? Place::number
              : key == "pressure_center"     ? Place::numbers
              : key == "points"              ? Place::points
+             : key == "regions"             ? Place::regions
                                             : Place::other;
     case Place::point:
       return key == "at" ? Place::numbers : key == "force" || key == "mu" ? Place::number : Place::other;
+    case Place::region:
+      return key == "outline"                 ? Place::outline
+             : key == "holes"                 ? Place::holes
+             : key == "pressure"              ? Place::pressure
+             : key == "force" || key == "mu" ? Place::number
+                                              : Place::other;
+    case Place::pressure: return key == "linear" ? Place::numbers : Place::other;
     default: return Place::other;
   }
 }
@@ -67,6 +79,8 @@ Place item(Place array) {
     case Place::outline: return Place::numbers;
     case Place::contacts: return Place::contact;
     case Place::points: return Place::point;
+    case Place::regions: return Place::region;
+    case Place::holes: return Place::outline;
     default: return Place::other;
   }
 }

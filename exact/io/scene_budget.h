@@ -12,7 +12,7 @@
 namespace wrenchkit {
 
 // The budget measures of a scene text: every number at a place where the scene format has a number (the
-// version, body.outline and body.com, contacts, load, support), counted by number_digits when it is a valid
+// version, body.outline and body.com, contacts, load, support points and regions), counted by number_digits when it is a valid
 // number within the per-number limits (an invalid one is the schema's error, counted 0 here); every entry of
 // contacts[] and support.points[]. Builds no number and no JSON tree: one pass, memory O(1) beyond a decoded
 // string. Tolerant: it walks any JSON text (unknown keys, wrong types, every other value skipped) and on text

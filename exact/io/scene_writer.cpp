@@ -58,15 +58,43 @@ std::string write_scene(const Scene& s) {
     if (s.support->mu) o += "\"mu\": " + q(*s.support->mu) + ", ";
     if (s.support->weight) o += "\"weight\": " + q(*s.support->weight) + ", ";
     if (s.support->pressure_center) o += "\"pressure_center\": " + pt(*s.support->pressure_center) + ", ";
-    o += "\"points\": [";
-    for (std::size_t i = 0; i < s.support->points.size(); ++i) {
-      const Support_point& p = s.support->points[i];
-      o += (i ? ", " : "") + std::string("{\"at\": ") + pt(p.at);
-      if (p.force) o += ", \"force\": " + q(*p.force);
-      if (p.mu) o += ", \"mu\": " + q(*p.mu);
-      o += "}";
+    std::string sep;
+    if (!s.support->points.empty() || s.support->regions.empty()) {
+      o += "\"points\": [";
+      for (std::size_t i = 0; i < s.support->points.size(); ++i) {
+        const Support_point& p = s.support->points[i];
+        o += (i ? ", " : "") + std::string("{\"at\": ") + pt(p.at);
+        if (p.force) o += ", \"force\": " + q(*p.force);
+        if (p.mu) o += ", \"mu\": " + q(*p.mu);
+        o += "}";
+      }
+      o += "]";
+      sep = ", ";
     }
-    o += "]}";
+    if (!s.support->regions.empty()) {
+      // As written: the outline and holes in their own order and orientation, the pressure in its own form.
+      const auto ring = [&](const std::vector<Vec2>& r) {
+        std::string t = "[";
+        for (std::size_t i = 0; i < r.size(); ++i) t += (i ? ", " : "") + pt(r[i]);
+        return t + "]";
+      };
+      o += sep + "\"regions\": [";
+      for (std::size_t k = 0; k < s.support->regions.size(); ++k) {
+        const Support_region& r = s.support->regions[k];
+        o += (k ? ",\n   " : "\n   ") + std::string("{\"outline\": ") + ring(r.outline);
+        if (!r.holes.empty()) {
+          o += ", \"holes\": [";
+          for (std::size_t j = 0; j < r.holes.size(); ++j) o += (j ? ", " : "") + ring(r.holes[j]);
+          o += "]";
+        }
+        if (r.uniform) o += ", \"pressure\": \"uniform\", \"force\": " + q(r.force);
+        else o += ", \"pressure\": {\"linear\": [" + q(r.linear[0]) + ", " + q(r.linear[1]) + ", " + q(r.linear[2]) + "]}";
+        if (r.mu) o += ", \"mu\": " + q(*r.mu);
+        o += "}";
+      }
+      o += "]";
+    }
+    o += "}";
   }
   return o + "}\n";
 }

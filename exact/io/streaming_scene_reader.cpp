@@ -7,6 +7,7 @@
 
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
+#include "exact/io/region.h"
 #include "exact/numbers/rational.h"
 
 namespace wrenchkit {
@@ -368,15 +369,17 @@ class Stream {
     }
   }
 
-  // {"mu"?, "weight"?, "pressure_center"?, "points": [{"at", "force"?, "mu"?}, …]} (scene.cpp's support()).
+  // {"mu"?, "weight"?, "pressure_center"?, "points"?: [{"at", "force"?, "mu"?}, …], "regions"?: […]} (scene.cpp's
+  // support()).
   void support(Support& s) {
-    enum : unsigned { kMu = 1, kPoints = 2, kWeight = 4, kCenter = 8 };
+    enum : unsigned { kMu = 1, kPoints = 2, kWeight = 4, kCenter = 8, kRegions = 16 };
     unsigned seen = 0;
-    std::size_t points = 0;
+    std::size_t points = 0, regions = 0, region_vertices = 0;
     bool any_force = false, any_without_mu = false, all_given = true;
     object(1, [&](std::string_view key) {
       const unsigned bit = key == "mu"                ? kMu
                            : key == "points"          ? kPoints
+                           : key == "regions"         ? kRegions
                            : key == "weight"          ? kWeight
                            : key == "pressure_center" ? kCenter
                                                       : 0u;
@@ -394,6 +397,13 @@ class Stream {
       }
       if (bit == kCenter) {
         vec2(s.pressure_center ? *s.pressure_center : s.pressure_center.emplace(), 2);
+        return;
+      }
+      if (bit == kRegions) {
+        array(2, [&](std::size_t k) {
+          region(slot(s.regions, k), region_vertices, any_without_mu);
+          regions = k + 1;
+        });
         return;
       }
       array(2, [&](std::size_t k) {
@@ -420,7 +430,9 @@ class Stream {
         all_given &= p.force.has_value();
       });
     });
-    if (!(seen & kPoints) || points == 0 || (all_given && !any_force)) defer();
+    if (!(seen & kRegions)) regions = 0;
+    if ((!(seen & kPoints) || points == 0) && regions == 0) defer();
+    if (all_given && !any_force && regions == 0) defer();
     if (!(seen & kMu)) {
       if (any_without_mu) defer();
       s.mu.reset();
@@ -428,6 +440,79 @@ class Stream {
     if (!(seen & kWeight)) s.weight.reset();
     if (!(seen & kCenter)) s.pressure_center.reset();
     s.points.resize(points);
+    s.regions.resize(regions);
+    for (std::size_t k = 0; k < regions; ++k) settle_region(s.regions[k], "support.regions[" + std::to_string(k) + "]");
+  }
+
+  // A ring [[x, y], …] into `out` (reused), counting its vertices against the regions' limit.
+  void ring(std::vector<Vec2>& out, std::size_t level, std::size_t& vertices) {
+    std::size_t n = 0;
+    array(level, [&](std::size_t k) {
+      if (++vertices > limits_.max_region_vertices) defer();
+      vec2(slot(out, k), level + 1);
+      n = k + 1;
+    });
+    out.resize(n);
+  }
+
+  // {"outline", "holes"?, "pressure": "uniform" | {"linear": [a, b, c]}, "force"?, "mu"?} (scene.cpp's region());
+  // settled by settle_region once the whole support is read (support.mu may follow).
+  void region(Support_region& r, std::size_t& vertices, bool& any_without_mu) {
+    enum : unsigned { kOutline = 1, kHoles = 2, kPressure = 4, kForce = 8, kMu = 16 };
+    unsigned seen = 0;
+    std::size_t holes = 0;
+    bool uniform = false, linear = false;
+    object(3, [&](std::string_view key) {
+      const unsigned bit = key == "outline"    ? kOutline
+                           : key == "holes"    ? kHoles
+                           : key == "pressure" ? kPressure
+                           : key == "force"    ? kForce
+                           : key == "mu"       ? kMu
+                                               : 0u;
+      if (bit == 0 || (seen & bit)) defer();
+      seen |= bit;
+      switch (bit) {
+        case kOutline: ring(r.outline, 4, vertices); break;
+        case kHoles:
+          array(4, [&](std::size_t k) {
+            ring(slot(r.holes, k), 5, vertices);
+            holes = k + 1;
+          });
+          break;
+        case kPressure:
+          if (peek() == '"') {
+            if (string_value() != "uniform") defer();
+            uniform = true;
+          } else {
+            bool has_linear = false;
+            object(4, [&](std::string_view k) {
+              if (k != "linear" || has_linear) defer();
+              has_linear = true;
+              Wrench w;
+              wrench3(w, 5);
+              r.linear = {std::move(w.fx), std::move(w.fy), std::move(w.m)};
+            });
+            if (!has_linear) defer();
+            linear = true;
+          }
+          break;
+        case kForce: exact(r.force); break;
+        case kMu: nonnegative(r.mu ? *r.mu : r.mu.emplace()); break;
+      }
+    });
+    if (!(seen & kOutline) || !(seen & kPressure)) defer();
+    if (uniform && !(seen & kForce)) defer();
+    if (linear && (seen & kForce)) defer();
+    if (!(seen & kHoles)) holes = 0;
+    r.holes.resize(holes);
+    r.uniform = uniform;
+    if (linear) zero(r.force);
+    if (uniform)
+      for (Rational& q : r.linear) zero(q);
+    if (!(seen & kMu)) {
+      r.mu.reset();
+      any_without_mu = true;
+    }
   }
 };
 

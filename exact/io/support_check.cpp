@@ -57,6 +57,11 @@ std::optional<std::pair<Vec2, Vec2>> gravity_off_pressure_center(const Scene& sc
       c.x += *p.force * p.at.x;
       c.y += *p.force * p.at.y;
     }
+    for (const Support_region& r : s.regions) {
+      w += r.total;
+      c.x += r.moment.x;
+      c.y += r.moment.y;
+    }
     c = {c.x / w, c.y / w};
   } else {
     return std::nullopt;  // c is body.com itself
@@ -81,9 +86,16 @@ std::string support_inadmissible(const Scene& scene) {
     moment.x += *p.force * p.at.x;
     moment.y += *p.force * p.at.y;
   }
+  // A region's pressure is known: its force W_R and moment ∫ r p dA count as given.
+  for (const Support_region& r : s.regions) {
+    given += r.total;
+    moment.x += r.moment.x;
+    moment.y += r.moment.y;
+  }
   if (unknown.empty()) {
     if (s.weight && *s.weight != given)
-      return "support.weight: " + to_string(*s.weight) + " is not the sum of the given forces, " + to_string(given) +
+      return "support.weight: " + to_string(*s.weight) + " is not the sum of the given forces" +
+             (s.regions.empty() ? "" : " and the regions' forces") + ", " + to_string(given) +
              ": no admissible distribution";
     if (s.pressure_center && (s.pressure_center->x * given != moment.x || s.pressure_center->y * given != moment.y))
       return "support.pressure_center: " + point_text(*s.pressure_center) +

@@ -1,6 +1,8 @@
 // The admissible distributions of a support (docs/theory-sliding.md §1): whether any exists, and why not.
 //
-//   F = { f ≥ 0 : f_i = the given force where given, Σ f_i = W, Σ f_i r_i = W c }
+//   F = { f ≥ 0 : f_i = the given force where given, Σ f_i + Σ_R W_R = W, Σ f_i r_i + Σ_R ∫_R r p dA = W c }
+//
+// (support regions, exact/io/region.h, have a known pressure: their force W_R and moment count as given ones.)
 //
 // W is support.weight and c support.pressure_center (default body.com) when a force is unknown; when every
 // force is given they constrain only if written (and must agree). With W' = W − Σ_given f_i and

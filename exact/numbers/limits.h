@@ -13,6 +13,7 @@ struct Input_limits {
   std::size_t max_file_bytes = 64u << 20;        // 64 MiB
   std::size_t max_depth = 64;                    // JSON nesting
   std::size_t max_contacts = 100000;             // contacts[] entries; also support.points and body.outline
+  std::size_t max_region_vertices = 4096;        // vertices of all support regions' rings together
   // [BUDGET] The scene-wide budget on exact arithmetic (docs/scene-format.md "Limits"; Budget_tally below):
   std::size_t max_total_digits = 20000000;       // the digits of all the scene's numbers together
   std::size_t max_digits_times_contacts = 10000000;  // longest number's digits × (contacts + support points)

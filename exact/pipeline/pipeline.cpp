@@ -25,6 +25,7 @@ wrenchkit_checker::Limits checker_limits(const Input_limits& l) {
   c.max_exponent = l.max_exponent;
   c.max_depth = l.max_depth;
   c.max_contacts = l.max_contacts;
+  c.max_region_vertices = l.max_region_vertices;
   c.max_total_digits = l.max_total_digits;
   c.max_digits_times_contacts = l.max_digits_times_contacts;
   return c;

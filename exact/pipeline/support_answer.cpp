@@ -219,12 +219,34 @@ void certify_over(const Support_query& q, Support_item& r) {
   }
 }
 
+// [RG-1] [RG-2] A support with regions: the statics exactly, the twist's power and load as certified brackets,
+// the load's motion by a certificate (checked by check_motion).
+void answer_regions(std::string_view source, const Support_query& q, Support_item& r) {
+  const Support& s = *r.scene.support;
+  if (q.polytopes_asked)
+    throw Input_error(std::string(source) + ": support: it has regions, whose limit surface is strictly convex: no exact "
+                                            "polytope to build or list (--sides, --list, --off, --obj need support points only)");
+  if (!s.known())
+    throw Input_error(std::string(source) + ": support: regions together with points whose force is not given are "
+                                            "not answered yet (give every point's force)");
+  if (r.mode == Mode::float_only)
+    throw Undecided_error("the float twin has no model of support regions (their power and certificates are exact "
+                          "and interval arithmetic): use --mode hybrid or exact");
+  r.regions = region_sliding(s, q.twist, q.tolerance ? *q.tolerance : Rational(1, 1000000));
+  if (q.question != Support_question::limit_surface || !q.load) return;
+  r.region_motion = decide_region_motion(s, *q.load);
+  r.motion.motion = r.region_motion->motion;
+  r.motion.decided_by = r.region_motion->motion == Motion::undecided ? "none" : "certificate";
+  r.certificate = r.region_motion->certificate;
+}
+
 void answer(std::string_view source, const Request& request, const Support_query& q, Support_item& r) {
   r.mode = request.mode;
   const bool ls = q.question == Support_question::limit_surface;
   if (!r.scene.support)
     throw Input_error(std::string(source) + ": support: the scene has no \"support\" (" +
                       (ls ? "limit-surface" : "sliding") + " needs one)");
+  if (!r.scene.support->regions.empty()) return answer_regions(source, q, r);
   if (!r.scene.support->known()) {
     answer_unknown(source, q, r);
     if (r.motion_over) certify_over(q, r);

@@ -21,6 +21,7 @@
 #include "exact/sliding/distribution.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/motion_certificate.h"
+#include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
 #include "exact/sliding/unknown_motion.h"
 #include "float/limit_surface_twin.h"
@@ -35,6 +36,11 @@ struct Support_query {
   std::optional<Vec3q> twist;    // the load for this twist (not zero)
   std::optional<Vec3q> load;     // limit-surface: does it stick or slide?
   bool polytopes = true;         // limit-surface: build the exact polytopes (else only if nothing else decides)
+  // The polytopes, or their listing or pictures, were asked for by name (--sides, --list, the exports): a support
+  // with regions has no exact polytope (its limit surface is strictly convex) and refuses them.
+  bool polytopes_asked = false;
+  // Support regions: the relative width the power's bracket must meet (default 10^-6).
+  std::optional<Rational> tolerance;
 };
 
 struct Support_item {
@@ -72,6 +78,11 @@ struct Support_item {
   // within the inscribed 1024-gons' resolution of the limit surface) is undecided, with `uncertified` saying so.
   std::string certificate;
   std::string uncertified;
+  // A support with regions [RG-1] [RG-2] (exact/sliding/region_sliding.h), every mode but float (which has no twin
+  // of regions and answers undecided): the exact statics, the power and load of --twist as certified brackets, and
+  // the motion of --load decided by its certificate (in `certificate`, checked like every other).
+  std::optional<Region_sliding> regions;
+  std::optional<Region_motion> region_motion;
 };
 
 // Reads `text` (eagerly) and answers; never throws. A scene without a support is bad input; so is a
@@ -82,6 +93,9 @@ struct Support_item {
 // depend on the distribution and are not built.
 Support_item answer_support(std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query);
+// A support with regions: answered by exact/sliding/region_sliding.h in exact and hybrid alike (the doubles there only
+// propose witnesses), undecided in float; refused (bad input) with points whose force is not given, and with the
+// polytopes asked for by name.
 // The same for a scene already read.
 // `text`: a text of the scene for the checker (its own text, or write_scene(scene)).
 Support_item answer_support(const Scene& scene, std::string_view text, std::string_view source, const Request& request,

@@ -48,6 +48,11 @@ Admissible admissible_set(const Scene& scene) {
     moment.x += *p.force * p.at.x;
     moment.y += *p.force * p.at.y;
   }
+  for (const Support_region& r : s.regions) {  // known pressure: its force and moment count as given
+    sum += r.total;
+    moment.x += r.moment.x;
+    moment.y += r.moment.y;
+  }
   if (a.unknown.empty()) return a;
   const std::optional<Vec2> c = pressure_center_of(scene);
   if (!s.weight || !c) throw std::invalid_argument("admissible_set: a scene read_scene would refuse");

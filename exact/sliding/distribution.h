@@ -1,6 +1,9 @@
 // [SL-1] The admissible distributions of a support (docs/theory-sliding.md §1):
 //
-//   F = { f ≥ 0 : f_i = the given force where given, Σ f_i = W, Σ f_i r_i = W c }
+//   F = { f ≥ 0 : f_i = the given force where given, Σ f_i + Σ_R W_R = W, Σ f_i r_i + Σ_R ∫_R r p = W c }
+//
+// (support regions have a known pressure: W' and M' below subtract their forces and moments with the given ones;
+// their friction itself is the regions' path, exact/sliding/region_sliding.h)
 //
 // a polytope cut by three equality rows in the unknown forces. read_scene has checked that F is not empty
 // (exact/io/support_check.h). Everything here is exact.
@@ -17,8 +20,8 @@ namespace wrenchkit {
 struct Admissible {
   std::vector<std::size_t> unknown;  // the points whose force is not given, in input order
   std::vector<Rational> given;       // per point: its given force, 0 where unknown
-  Rational rest;                     // W' = W − Σ given
-  Vec2 rest_moment;                  // M' = W c − Σ given f_i r_i
+  Rational rest;                     // W' = W − Σ given − Σ_R W_R
+  Vec2 rest_moment;                  // M' = W c − Σ given f_i r_i − Σ_R ∫_R r p dA
   bool known() const { return unknown.empty(); }
   // The distribution with `forces` (one per unknown point, in order) put in place.
   std::vector<Rational> with(const std::vector<Rational>& forces) const;

@@ -236,15 +236,22 @@ void write_support_forces(Json_writer& w, const std::vector<Vec2>& g) {
   w.end_array();
 }
 
-namespace {
+std::optional<Stick_witness> smoothed_stick_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p) {
+  if (auto w = smoothed_witness(s, f, p, {}, false, nullptr, false)) return Stick_witness{f, std::move(w->forces)};
+  return std::nullopt;
+}
 
 // The certificate's object, opened, with its first members: the load and the motion.
-Json_writer head(const Vec3q& p, const char* motion) {
+Json_writer motion_certificate_head(const Vec3q& p, const char* motion) {
   Json_writer w(512);
   w.object().member("wrenchkit_certificate", 1).member("property", "motion").key("load").rationals(p);
   w.member("motion", motion);
   return w;
 }
+
+namespace {
+
+Json_writer head(const Vec3q& p, const char* motion) { return motion_certificate_head(p, motion); }
 
 void write_stick(Json_writer& w, const Stick_witness& s) {
   w.object().key("distribution").rationals(s.distribution);

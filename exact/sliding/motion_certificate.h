@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "exact/io/json_writer.h"
 #include "exact/sliding/unknown_motion.h"
 
 namespace wrenchkit {
@@ -56,6 +57,15 @@ std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admis
 
 // The certificates' block of support forces: [[gx, gy], …], one pair per support point (motion and hold alike).
 void write_support_forces(Json_writer& w, const std::vector<Vec2>& g);
+
+// The smoothed Newton witness alone (stick_witness_refined's first step; the support's points may be any discrete
+// distribution, e.g. a region's cells as points): forces along one twist's velocities, one exact last round, each
+// disc checked exactly. Nothing when it does not verify.
+std::optional<Stick_witness> smoothed_stick_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p);
+
+// A motion certificate's object, opened, with its first members ("wrenchkit_certificate", "property", "load",
+// "motion").
+Json_writer motion_certificate_head(const Vec3q& p, const char* motion);
 
 // The certificates, as JSON text (format 1).
 std::string sticks_certificate(const Vec3q& p, const Stick_witness& w);                   // every force given

@@ -1,6 +1,7 @@
 // Planar sliding quantities [LS-4]; derivation in proofs/notes/LS-3-queries.md.
 #include "exact/sliding/sliding.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace wrenchkit {
@@ -99,25 +100,93 @@ Sliding_answer compute_sliding(const Polygonal_ls& model, const std::optional<Ve
   a.inner_face = model.face(Side::inner, t);
   a.outer_face = model.face(Side::outer, t);
   for (int c = 0; c < 3; ++c) a.load_lo[c] = a.load_hi[c] = 0;
-  for (const Ls_point& p : s.points) {
-    const Rational vx = t[0] - t[2] * p.at.y, vy = t[1] + t[2] * p.at.x;
-    const Rational s2 = vx * vx + vy * vy;
-    if (s2 == 0) continue;  // the facet's own point: its disc, reported separately
-    const auto [lo, hi] = sqrt_bracket(s2);
-    a.h_lo += p.rho * lo;
-    a.h_hi += p.rho * hi;
-    const Vec3q comp = {p.rho * vx, p.rho * vy, p.rho * (p.at.x * vy - p.at.y * vx)};
-    for (int c = 0; c < 3; ++c) {
-      if (comp[c] >= 0) {
-        a.load_lo[c] += comp[c] / hi;
-        a.load_hi[c] += comp[c] / lo;
-      } else {
-        a.load_lo[c] += comp[c] / lo;
-        a.load_hi[c] += comp[c] / hi;
-      }
+  // The facet's own point (v = 0): its disc, reported separately (the box holds the facet's centre).
+  for (const Ls_point& p : s.points) add_point_bracket(p.at, p.rho, t, 80, a.h_lo, a.h_hi, a.load_lo, a.load_hi, false);
+  return a;
+}
+
+void add_point_bracket(const Vec2& at, const Rational& rho, const Vec3q& q, int bits, Rational& h_lo, Rational& h_hi,
+                       Vec3q& box_lo, Vec3q& box_hi, bool facet_box) {
+  if (rho == 0) return;
+  const Rational vx = q[0] - q[2] * at.y, vy = q[1] + q[2] * at.x;
+  const Rational s2 = vx * vx + vy * vy;
+  if (s2 == 0) {
+    if (!facet_box) return;
+    // g = ρ u, |u| ≤ 1: each force component within ±ρ, the moment x g_y − y g_x within ±ρ(|x| + |y|).
+    const Rational m = rho * (abs(at.x) + abs(at.y));
+    box_lo[0] -= rho, box_hi[0] += rho, box_lo[1] -= rho, box_hi[1] += rho, box_lo[2] -= m, box_hi[2] += m;
+    return;
+  }
+  const auto [lo, hi] = sqrt_bracket(s2, bits);
+  h_lo += rho * lo;
+  h_hi += rho * hi;
+  const Vec3q comp = {rho * vx, rho * vy, rho * (at.x * vy - at.y * vx)};
+  for (int c = 0; c < 3; ++c) {
+    if (comp[c] >= 0) {
+      box_lo[c] += comp[c] / hi;
+      box_hi[c] += comp[c] / lo;
+    } else {
+      box_lo[c] += comp[c] / lo;
+      box_hi[c] += comp[c] / hi;
     }
   }
-  return a;
+}
+
+Plane_minimum minimise_on_load_plane(const Vec3q& p, const std::function<double(const double*)>& h, const Vec3q* start,
+                                     double stop_below) {
+  Plane_minimum out;
+  const double pd[3] = {p[0].get_d(), p[1].get_d(), p[2].get_d()};
+  const double pn = pd[0] * pd[0] + pd[1] * pd[1] + pd[2] * pd[2];
+  if (!(pn > 0) || !std::isfinite(pn)) return out;
+  // An orthonormal basis (e1, e2) of p⊥ and q0 = p/|p|² (q0·p = 1).
+  const double q0[3] = {pd[0] / pn, pd[1] / pn, pd[2] / pn};
+  double e1[3];
+  {
+    const int a = std::fabs(pd[0]) <= std::fabs(pd[1]) && std::fabs(pd[0]) <= std::fabs(pd[2]) ? 0
+                  : std::fabs(pd[1]) <= std::fabs(pd[2])                                      ? 1
+                                                                                              : 2;
+    double t[3] = {0, 0, 0};
+    t[a] = 1;
+    const double d = t[0] * pd[0] + t[1] * pd[1] + t[2] * pd[2];
+    for (int c = 0; c < 3; ++c) e1[c] = t[c] - d * pd[c] / pn;
+    const double n = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+    for (double& c : e1) c /= n;
+  }
+  const double sp = std::sqrt(pn);
+  const double e2[3] = {(pd[1] * e1[2] - pd[2] * e1[1]) / sp, (pd[2] * e1[0] - pd[0] * e1[2]) / sp,
+                        (pd[0] * e1[1] - pd[1] * e1[0]) / sp};
+  const auto twist = [&](double a, double b, double* q) {
+    for (int c = 0; c < 3; ++c) q[c] = q0[c] + a * e1[c] + b * e2[c];
+  };
+  const auto at = [&](double a, double b) {
+    double q[3];
+    twist(a, b, q);
+    return h(q);
+  };
+  double a = 0, b = 0;
+  if (start) {  // the start twist scaled onto the plane, when it points along p
+    const double sq[3] = {(*start)[0].get_d(), (*start)[1].get_d(), (*start)[2].get_d()};
+    const double d = sq[0] * pd[0] + sq[1] * pd[1] + sq[2] * pd[2];
+    if (d > 0 && std::isfinite(d)) {
+      a = (sq[0] * e1[0] + sq[1] * e1[1] + sq[2] * e1[2]) / d;
+      b = (sq[0] * e2[0] + sq[1] * e2[1] + sq[2] * e2[2]) / d;
+    }
+  }
+  double best = at(a, b), step = std::max(1.0, std::hypot(a, b)) / std::sqrt(pn), turn = 0;
+  if (!std::isfinite(best)) return out;
+  for (int it = 0; it < 4000 && best >= stop_below && step > 1e-13 / std::sqrt(pn); ++it) {
+    bool moved = false;
+    for (int d = 0; d < 8 && !moved; ++d) {
+      const double angle = turn + d * 0.7853981633974483;
+      const double na = a + step * std::cos(angle), nb = b + step * std::sin(angle), v = at(na, nb);
+      if (v < best) a = na, b = nb, best = v, moved = true;
+    }
+    if (!moved) step /= 2, turn += 0.39269908169744964 * 0.61803398875;
+  }
+  out.found = true;
+  out.h = best;
+  twist(a, b, out.q.data());
+  return out;
 }
 
 std::vector<fl::Support_point_twin> twin_support(const Ls_support& s) {

@@ -12,6 +12,8 @@
 //   containing the true load (or the facet's centre), from rational brackets of each |v_i| (§11.5).
 #pragma once
 
+#include <array>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -23,6 +25,25 @@ namespace wrenchkit {
 
 // Bracket of √s for a rational s ≥ 0: lo ≤ √s ≤ hi, hi − lo ≤ 2^-bits·max(1, √s) (exact rationals).
 std::pair<Rational, Rational> sqrt_bracket(const Rational& s, int bits = 80);
+
+// The twist minimising a convex, positively homogeneous power h (in double) on the plane q·p = 1: min h < 1 iff p
+// lies outside the set whose support function is h, and the minimiser is then the twist with the largest margin
+// (min h = 1/gauge(p)). A compass search in two variables (eight directions, turned a little at every halving of
+// the step) from `start` scaled onto the plane (else p/|p|²), stopped once h < stop_below. Proposes twists only:
+// every caller checks what it keeps exactly. found = false when p = 0 or the doubles overflow.
+struct Plane_minimum {
+  bool found = false;
+  std::array<double, 3> q{};
+  double h = 0;
+};
+Plane_minimum minimise_on_load_plane(const Vec3q& p, const std::function<double(const double*)>& h,
+                                     const Vec3q* start = nullptr, double stop_below = 0);
+
+// The bracket of one support point's power ρ|v(q)| and of its load ρ(v̂, r × v̂) (theory.md §11.5), added to
+// h_lo/h_hi and to the box lo/hi (sqrt brackets of |v|² at `bits`); a point with v = 0 (the rotation centre) adds
+// its whole facet: every load ρ(g, r × g), |g| ≤ 1, inside the box when `facet_box`, nothing otherwise.
+void add_point_bracket(const Vec2& at, const Rational& rho, const Vec3q& q, int bits, Rational& h_lo, Rational& h_hi,
+                       Vec3q& lo, Vec3q& hi, bool facet_box);
 
 // What a twist is on the TRUE limit surface (theory.md §11.4): the load is a facet (rotation about a
 // support point), a non-smooth point (collinear support, rotation centre on its line, or a

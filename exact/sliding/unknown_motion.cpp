@@ -149,13 +149,10 @@ bool flat(const Support& s, const std::vector<Rational>& f) {
 
 // A twist that may separate p from U = ∪_F LS(f) (all in double; the caller checks it exactly): slides for every
 // distribution iff q·p > h_U(q) = max_v h_{f_v}(q) for some q. On the plane q·p = 1 that is min max_v h_{f_v}(q) < 1,
-// a convex problem in two variables: a compass search (eight directions, turned a little at every halving of the
-// step) from the start twist. Nothing when p = 0 or the doubles overflow.
+// a convex problem in two variables (minimise_on_load_plane, sliding.h), stopped as soon as h_U < 1. Nothing when
+// p = 0 or the doubles overflow.
 std::optional<Vec3q> union_search(const Support& s, const std::vector<std::vector<Rational>>& v, const Vec3q& p,
                                   const Vec3q* start) {
-  const double pd[3] = {p[0].get_d(), p[1].get_d(), p[2].get_d()};
-  const double pn = pd[0] * pd[0] + pd[1] * pd[1] + pd[2] * pd[2];
-  if (!(pn > 0) || !std::isfinite(pn)) return std::nullopt;
   const std::size_t k = s.points.size();
   std::vector<double> x(k), y(k);
   std::vector<std::vector<double>> rho(v.size(), std::vector<double>(k));
@@ -164,29 +161,7 @@ std::optional<Vec3q> union_search(const Support& s, const std::vector<std::vecto
     const Rational mu = mu_of(s, s.points[i]);
     for (std::size_t j = 0; j < v.size(); ++j) rho[j][i] = Rational(mu * v[j][i]).get_d();
   }
-  // An orthonormal basis (e1, e2) of p⊥ and q0 = p/|p|² (q0·p = 1).
-  const double q0[3] = {pd[0] / pn, pd[1] / pn, pd[2] / pn};
-  double e1[3];
-  {
-    const int a = std::fabs(pd[0]) <= std::fabs(pd[1]) && std::fabs(pd[0]) <= std::fabs(pd[2]) ? 0
-                  : std::fabs(pd[1]) <= std::fabs(pd[2])                                      ? 1
-                                                                                              : 2;
-    double t[3] = {0, 0, 0};
-    t[a] = 1;
-    const double d = t[0] * pd[0] + t[1] * pd[1] + t[2] * pd[2];
-    for (int c = 0; c < 3; ++c) e1[c] = t[c] - d * pd[c] / pn;
-    const double n = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
-    for (double& c : e1) c /= n;
-  }
-  const double sp = std::sqrt(pn);
-  const double e2[3] = {(pd[1] * e1[2] - pd[2] * e1[1]) / sp, (pd[2] * e1[0] - pd[0] * e1[2]) / sp,
-                        (pd[0] * e1[1] - pd[1] * e1[0]) / sp};
-  const auto twist = [&](double a, double b, double* q) {
-    for (int c = 0; c < 3; ++c) q[c] = q0[c] + a * e1[c] + b * e2[c];
-  };
-  const auto h_union = [&](double a, double b) {
-    double q[3];
-    twist(a, b, q);
+  const auto h_union = [&](const double* q) {
     double best = 0;
     for (const auto& r : rho) {
       double h = 0;
@@ -196,30 +171,9 @@ std::optional<Vec3q> union_search(const Support& s, const std::vector<std::vecto
     }
     return best;
   };
-  double a = 0, b = 0;
-  if (start) {  // the start twist scaled onto the plane, when it points along p
-    const double sq[3] = {(*start)[0].get_d(), (*start)[1].get_d(), (*start)[2].get_d()};
-    const double d = sq[0] * pd[0] + sq[1] * pd[1] + sq[2] * pd[2];
-    if (d > 0 && std::isfinite(d)) {
-      a = (sq[0] * e1[0] + sq[1] * e1[1] + sq[2] * e1[2]) / d;
-      b = (sq[0] * e2[0] + sq[1] * e2[1] + sq[2] * e2[2]) / d;
-    }
-  }
-  double best = h_union(a, b), step = std::max(1.0, std::hypot(a, b)) / std::sqrt(pn), turn = 0;
-  if (!std::isfinite(best)) return std::nullopt;
-  for (int it = 0; it < 4000 && best >= 1 && step > 1e-13 / std::sqrt(pn); ++it) {
-    bool moved = false;
-    for (int d = 0; d < 8 && !moved; ++d) {
-      const double angle = turn + d * 0.7853981633974483;
-      const double na = a + step * std::cos(angle), nb = b + step * std::sin(angle), h = h_union(na, nb);
-      if (h < best) a = na, b = nb, best = h, moved = true;
-    }
-    if (!moved) step /= 2, turn += 0.39269908169744964 * 0.61803398875;
-  }
-  if (!(best < 1)) return std::nullopt;
-  double q[3];
-  twist(a, b, q);
-  return Vec3q{Rational(q[0]), Rational(q[1]), Rational(q[2])};
+  const Plane_minimum m = minimise_on_load_plane(p, h_union, start, 1.0);
+  if (!m.found || !(m.h < 1)) return std::nullopt;
+  return Vec3q{Rational(m.q[0]), Rational(m.q[1]), Rational(m.q[2])};
 }
 
 Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Vec3q& p, Mode mode, int sides) {

@@ -456,6 +456,245 @@ Load read_load(Reader& r, const Limits& lim) {
   return load;
 }
 
+// A support region (docs/scene-format.md "Support regions"; proofs/notes/RG-1-regions.md): a polygon with
+// holes and the pressure p = c0 + c1 x + c2 y >= 0. Checked here by the checker's own exact geometry (no CGAL):
+// every ring simple (no repeated vertex, non-adjacent edges apart, adjacent ones meeting only at their common
+// vertex), holes strictly inside the outline and apart from each other and from it, p >= 0 at the outline's
+// vertices, a positive total force. The rings are oriented (outline counter-clockwise, holes clockwise) and the
+// force W_R and moment M_R = integral of r p are computed exactly, by fan triangles from the origin.
+struct P2 {
+  Q x, y;
+};
+struct Region {
+  std::string path;
+  std::vector<std::vector<P2>> rings;  // as read; oriented by settle_region
+  bool uniform = true, has_mu = false;
+  Q force, linear[3], mu;
+  Q c[3];          // the pressure's coefficients
+  Q W, M[2];       // integral of p, of r p
+};
+
+int orient(const P2& a, const P2& b, const P2& c) {
+  return sgn(Q((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)));
+}
+// p on the closed segment ab, given the three are collinear.
+bool on_segment(const P2& p, const P2& a, const P2& b) {
+  return (p.x - a.x) * (p.x - b.x) <= 0 && (p.y - a.y) * (p.y - b.y) <= 0;
+}
+// Do the closed segments ab and cd share a point?
+bool segments_meet(const P2& a, const P2& b, const P2& c, const P2& d) {
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return (o1 == 0 && on_segment(c, a, b)) || (o2 == 0 && on_segment(d, a, b)) || (o3 == 0 && on_segment(a, c, d)) ||
+         (o4 == 0 && on_segment(b, c, d));
+}
+Q pressure(const Q (&c)[3], const P2& r) { return c[0] + c[1] * r.x + c[2] * r.y; }
+Q twice_area(const std::vector<P2>& ring) {
+  Q a = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const P2 &p = ring[i], &q = ring[(i + 1) % ring.size()];
+    a += p.x * q.y - p.y * q.x;
+  }
+  return a;
+}
+// Strictly inside a simple ring, for a point on none of its edges: the parity of the crossings of the ray to +x.
+bool inside(const std::vector<P2>& ring, const P2& p) {
+  bool in = false;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const P2 &a = ring[i], &b = ring[(i + 1) % ring.size()];
+    if (a.y <= p.y && p.y < b.y && orient(a, b, p) > 0) in = !in;  // upward, p to its left
+    if (b.y <= p.y && p.y < a.y && orient(a, b, p) < 0) in = !in;  // downward, p to its right
+  }
+  return in;
+}
+// A sum of many rationals added pairwise (a balanced tree: one gcd with the growing denominator per level, not
+// per term).
+Q tree_sum(std::vector<Q> t) {
+  if (t.empty()) return 0;
+  while (t.size() > 1) {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i + 1 < t.size(); i += 2) t[k++] = t[i] + t[i + 1];
+    if (t.size() % 2) t[k++] = t.back();
+    t.resize(k);
+  }
+  return t[0];
+}
+
+// Every ring simple and the rings apart. Edges are swept in order of their smallest x, each compared with the
+// edges that start before it ends (O(n log n) for ordinary polygons, O(n^2) at worst; n is at most
+// max_region_vertices).
+void check_rings(const Region& g) {
+  struct Edge {
+    std::size_t ring, i;
+    Q lo, hi;
+  };
+  std::vector<Edge> edges;
+  for (std::size_t k = 0; k < g.rings.size(); ++k) {
+    const auto& r = g.rings[k];
+    const std::string at = g.path + (k == 0 ? std::string(".outline") : ".holes[" + std::to_string(k - 1) + "]");
+    if (r.size() < 3) throw Failure{at + ": has " + std::to_string(r.size()) + " vertices (a polygon needs at least 3)"};
+    std::vector<const P2*> sorted;
+    for (const P2& v : r) sorted.push_back(&v);
+    std::sort(sorted.begin(), sorted.end(), [](const P2* a, const P2* b) { return a->x < b->x || (a->x == b->x && a->y < b->y); });
+    for (std::size_t i = 1; i < sorted.size(); ++i)
+      if (sorted[i]->x == sorted[i - 1]->x && sorted[i]->y == sorted[i - 1]->y)
+        throw Failure{at + ": is not a simple polygon (a vertex is repeated)"};
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const P2 &a = r[i], &b = r[(i + 1) % r.size()];
+      edges.push_back({k, i, a.x < b.x ? a.x : b.x, a.x < b.x ? b.x : a.x});
+    }
+  }
+  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.lo < b.lo; });
+  const auto ring_name = [&](std::size_t k) {
+    return k == 0 ? std::string("the outline") : "holes[" + std::to_string(k - 1) + "]";
+  };
+  for (std::size_t u = 0; u < edges.size(); ++u)
+    for (std::size_t w = u + 1; w < edges.size() && edges[w].lo <= edges[u].hi; ++w) {
+      const Edge &e = edges[u], &f = edges[w];
+      const auto& re = g.rings[e.ring];
+      const auto& rf = g.rings[f.ring];
+      const P2 &a = re[e.i], &b = re[(e.i + 1) % re.size()], &c = rf[f.i], &d = rf[(f.i + 1) % rf.size()];
+      if (e.ring != f.ring) {
+        if (segments_meet(a, b, c, d)) {
+          const std::size_t hi = std::max(e.ring, f.ring), lo = std::min(e.ring, f.ring);
+          throw Failure{g.path + ".holes[" + std::to_string(hi - 1) + "]: meets " + ring_name(lo) +
+                        (lo == 0 ? " (a hole must lie strictly inside it)" : " (holes must be disjoint)")};
+        }
+        continue;
+      }
+      const std::size_t n = re.size();
+      const std::string at = g.path + (e.ring == 0 ? std::string(".outline") : ".holes[" + std::to_string(e.ring - 1) + "]");
+      const bool next = (e.i + 1) % n == f.i, prev = (f.i + 1) % n == e.i;
+      if (next || prev) {  // adjacent: they meet at the shared vertex only (no fold back along one line)
+        const P2& shared = next ? b : a;
+        const P2& x = next ? a : b;            // e's other end
+        const P2& y = next ? d : c;            // f's other end
+        if (orient(x, shared, y) == 0 && (x.x - shared.x) * (y.x - shared.x) + (x.y - shared.y) * (y.y - shared.y) > 0)
+          throw Failure{at + ": is not a simple polygon (two of its edges cross, touch or overlap)"};
+        if (!(next && prev)) continue;  // a triangle: every pair is adjacent both ways; checked above
+        continue;
+      }
+      if (segments_meet(a, b, c, d)) throw Failure{at + ": is not a simple polygon (two of its edges cross, touch or overlap)"};
+    }
+  for (std::size_t k = 1; k < g.rings.size(); ++k) {
+    const std::string at = g.path + ".holes[" + std::to_string(k - 1) + "]";
+    if (!inside(g.rings[0], g.rings[k][0])) throw Failure{at + ": is not inside the outline (a hole must lie strictly inside it)"};
+    for (std::size_t j = 1; j < g.rings.size(); ++j)
+      if (j != k && inside(g.rings[j], g.rings[k][0]))
+        throw Failure{at + ": lies inside holes[" + std::to_string(j - 1) + "] (holes must be disjoint)"};
+  }
+}
+
+// Validates the region and settles it: rings oriented, pressure coefficients, W and M (fan triangles (0, a, b)
+// of the oriented boundary, whose signed integrals sum to the region's; degree <= 2, so the edge-midpoint rule
+// is exact on each).
+void settle_region(Region& g) {
+  check_rings(g);
+  Q area2 = 0;
+  for (std::size_t k = 0; k < g.rings.size(); ++k) {
+    const Q a = twice_area(g.rings[k]);
+    if (sgn(a) == 0) throw Failure{g.path + ".outline: has zero area"};  // not reached for a simple ring
+    if ((sgn(a) > 0) != (k == 0)) std::reverse(g.rings[k].begin(), g.rings[k].end());
+    area2 += k == 0 ? abs(a) : Q(-abs(a));
+  }
+  if (g.uniform) {
+    if (sgn(g.force) <= 0) throw Failure{g.path + ".force: " + show(g.force) + " is not positive (a region's force must be > 0)"};
+    g.c[0] = 2 * g.force / area2, g.c[1] = 0, g.c[2] = 0;
+  } else {
+    for (int k = 0; k < 3; ++k) g.c[k] = g.linear[k];
+    for (std::size_t i = 0; i < g.rings[0].size(); ++i)
+      if (sgn(pressure(g.c, g.rings[0][i])) < 0)
+        throw Failure{g.path + ".pressure: p = " + show(pressure(g.c, g.rings[0][i])) + " < 0 at a vertex of the outline " +
+                      show(g.rings[0][i].x, g.rings[0][i].y) + " (a pressure must be >= 0 on the region)"};
+  }
+  std::vector<Q> w, mx, my;
+  for (const auto& ring : g.rings)
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const P2 &a = ring[i], &b = ring[(i + 1) % ring.size()];
+      const Q area = (a.x * b.y - a.y * b.x) / 2;  // signed
+      if (sgn(area) == 0) continue;
+      const P2 ma{a.x / 2, a.y / 2}, mb{b.x / 2, b.y / 2}, mab{(a.x + b.x) / 2, (a.y + b.y) / 2};
+      const Q pa = pressure(g.c, ma), pb = pressure(g.c, mb), pab = pressure(g.c, mab);
+      w.push_back(area * (pa + pb + pab) / 3);
+      mx.push_back(area * (ma.x * pa + mb.x * pb + mab.x * pab) / 3);
+      my.push_back(area * (ma.y * pa + mb.y * pb + mab.y * pab) / 3);
+    }
+  g.W = tree_sum(std::move(w));
+  g.M[0] = tree_sum(std::move(mx));
+  g.M[1] = tree_sum(std::move(my));
+  if (sgn(g.W) <= 0)
+    throw Failure{g.path + ".pressure: the pressure is zero on the whole region (a region's total force must be > 0)"};
+}
+
+// {"outline": ring, "holes"?: [ring, ...], "pressure": "uniform" | {"linear": [a, b, c]}, "force"?: F, "mu"?: mu}
+Region read_region(Reader& r, const Limits& lim, std::size_t& vertices) {
+  Region g;
+  g.path = r.path();
+  if (r.peek() != Kind::object) r.fail("expected an object {\"outline\", \"holes\"?, \"pressure\", \"force\"?, \"mu\"?}");
+  r.begin_object();
+  const auto ring = [&](std::vector<P2>& out) {
+    if (r.peek() != Kind::array) r.fail("expected an array of points");
+    r.begin_array();
+    while (r.next_item()) {
+      if (++vertices > lim.max_region_vertices)
+        r.fail("the support's regions have more than " + std::to_string(lim.max_region_vertices) + " vertices in all", true);
+      Q v[2];
+      read_fixed(r, 2, numbers_text(2), [&](std::size_t k) { v[k] = read_number(r, lim); });
+      out.push_back({v[0], v[1]});
+    }
+  };
+  bool has_outline = false, has_pressure = false, has_force = false;
+  std::string key;
+  g.rings.emplace_back();
+  while (r.next_key(key)) {
+    if (key == "outline") {
+      ring(g.rings[0]);
+      has_outline = true;
+    } else if (key == "holes") {
+      if (r.peek() != Kind::array) r.fail("expected an array of rings");
+      r.begin_array();
+      while (r.next_item()) {
+        g.rings.emplace_back();
+        ring(g.rings.back());
+      }
+    } else if (key == "pressure") {
+      has_pressure = true;
+      if (r.peek() == Kind::string) {
+        if (r.string() != "uniform") r.fail("expected \"uniform\" or {\"linear\": [a, b, c]}");
+        g.uniform = true;
+      } else {
+        if (r.peek() != Kind::object) r.fail("expected \"uniform\" or {\"linear\": [a, b, c]}");
+        r.begin_object();
+        bool has_linear = false;
+        std::string k;
+        while (r.next_key(k)) {
+          if (k != "linear") r.fail("unknown key " + quote(k), true);
+          read_fixed(r, 3, numbers_text(3), [&](std::size_t j) { g.linear[j] = read_number(r, lim); });
+          has_linear = true;
+        }
+        if (!has_linear) r.fail("missing required key \"linear\"");
+        g.uniform = false;
+      }
+    } else if (key == "force") {
+      g.force = read_number(r, lim);
+      has_force = true;
+    } else if (key == "mu") {
+      std::string text;
+      g.mu = read_number(r, lim, &text);
+      if (sgn(g.mu) < 0) r.fail(quote(text) + " is negative");
+      g.has_mu = true;
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  if (!has_outline) r.fail("missing required key \"outline\"");
+  if (!has_pressure) r.fail("missing required key \"pressure\"");
+  if (g.uniform && !has_force) r.fail("missing key \"force\" (a uniform pressure needs the region's force)");
+  if (!g.uniform && has_force) throw Failure{g.path + ".force: not allowed with a linear pressure"};
+  if (g.rings.size() > 1) g.rings.shrink_to_fit();
+  return g;
+}
+
 // The scene's support (docs/scene-format.md; the unknown distribution of docs/theory-sliding.md §1).
 // Each point's numbers are kept as text, and as values when they are small, as for contacts.
 struct Support_point {
@@ -475,6 +714,7 @@ Point_values values(const Support_point& p, const Limits& lim) {
 struct Support {
   bool present = false;
   std::vector<Support_point> points;
+  std::vector<Region> regions;  // settled: oriented, with W and M
   std::size_t unknown = 0;  // points without a given force
   bool has_weight = false, has_center = false;
   Q weight, center[2];      // as written (support.weight, support.pressure_center)
@@ -512,6 +752,11 @@ Support read_support(Reader& r, const Limits& lim) {
     } else if (key == "pressure_center") {
       read_vector(r, lim, 2, s.center);
       s.has_center = true;
+    } else if (key == "regions") {
+      if (r.peek() != Kind::array) r.fail("expected an array");
+      r.begin_array();
+      std::size_t vertices = 0;
+      while (r.next_item()) s.regions.push_back(read_region(r, lim, vertices));
     } else if (key == "points") {
       has_points = true;
       if (r.peek() != Kind::array) r.fail("expected an array");
@@ -553,8 +798,8 @@ Support read_support(Reader& r, const Limits& lim) {
       r.fail("unknown key " + quote(key), true);
     }
   }
-  if (!has_points) r.fail("missing required key \"points\"");
-  if (raw.empty()) throw Failure{"support.points: empty (a support needs at least one point)"};
+  if (!has_points && s.regions.empty()) r.fail("missing required key \"points\" (a support needs points or regions)");
+  if (raw.empty() && s.regions.empty()) throw Failure{"support.points: empty (a support needs at least one point or region)"};
   const Q support_mu = has_mu ? scene_number(mu_text, lim, "support.mu") : Q(0);
   bool any_force = false;
   for (Raw& p : raw) {
@@ -572,7 +817,12 @@ Support read_support(Reader& r, const Limits& lim) {
     sp.value = std::move(p.value);
     s.points.push_back(std::move(sp));
   }
-  if (s.unknown == 0 && !any_force) throw Failure{"support.points: all forces are zero"};
+  if (s.unknown == 0 && !any_force && s.regions.empty()) throw Failure{"support.points: all forces are zero"};
+  for (Region& g : s.regions) {
+    if (!g.has_mu && !has_mu) throw Failure{g.path + ": missing key \"mu\" (and support.mu gives no default)"};
+    if (!g.has_mu) g.mu = support_mu;
+    settle_region(g);
+  }
   return s;
 }
 
@@ -587,6 +837,7 @@ void settle_support(Support& s, bool has_com, const Q (&com)[2], const Limits& l
     const Point_values v = values(p, lim);
     sum += v.f, moment[0] += v.f * v.x, moment[1] += v.f * v.y;
   }
+  for (const Region& g : s.regions) sum += g.W, moment[0] += g.M[0], moment[1] += g.M[1];  // a known pressure
   if (s.unknown == 0) {  // a known distribution: weight and pressure_center, if given, must agree
     s.W = s.has_weight ? s.weight : sum;
     if (s.has_weight && s.weight != sum)
@@ -899,6 +1150,16 @@ struct Witness {
   bool has_combination = false;
   std::vector<Term> combination;
 };
+// A region's block (certificate-format.md §6.4): cells (vertices and counter-clockwise index triples) that tile
+// the region, with a force per cell (sticks) or a speed bound per vertex (slides).
+struct Block {
+  std::string path;
+  std::vector<P2> vertices;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<Pair> forces;
+  std::vector<Q> speeds;
+  bool has_forces = false, has_speeds = false;
+};
 struct Certificate {
   std::set<std::string> keys;  // the keys present
   std::string property;
@@ -920,6 +1181,7 @@ struct Certificate {
   std::vector<Witness> vertices;
   Witness sticking, sliding;
   Witness holding, failing;  // property "hold", "holds": "depends"
+  std::vector<Block> regions;
 };
 
 Q read_rational(Reader& r, std::string* text = nullptr) {
@@ -1026,6 +1288,51 @@ Witness read_witness(Reader& r, bool slide) {
   return w;
 }
 
+// {"vertices": [[x, y], ...], "triangles": [[i, j, k], ...], "forces": [[gx, gy], ...]} or with "speed_bounds":
+// [u, ...] instead of "forces" (§6.4); indices are JSON integers without sign, fraction or exponent.
+Block read_block(Reader& r) {
+  Block b;
+  b.path = r.path();
+  if (r.peek() != Kind::object)
+    r.fail("expected an object {\"vertices\", \"triangles\", \"forces\" or \"speed_bounds\"}");
+  r.begin_object();
+  std::set<std::string> keys;
+  std::string key;
+  while (r.next_key(key)) {
+    keys.insert(key);
+    if (key == "vertices") {
+      for (const Pair& v : read_pairs(r)) b.vertices.push_back({v[0], v[1]});
+    } else if (key == "triangles") {
+      if (r.peek() != Kind::array) r.fail("expected an array of [i, j, k] vertex indices");
+      r.begin_array();
+      while (r.next_item()) {
+        b.triangles.emplace_back();
+        read_fixed(r, 3, "an array of three vertex indices [i, j, k]", [&](std::size_t k) {
+          if (r.peek() != Kind::number) r.fail("expected a vertex index (a JSON integer)");
+          const std::string t(r.number());
+          if (t.find_first_not_of("0123456789") != std::string::npos || t.size() > 18)
+            r.fail("expected a vertex index: a JSON integer without sign, fraction or exponent, not " + clip(t));
+          unsigned long long v = 0;
+          for (const char d : t) v = v * 10 + static_cast<unsigned>(d - '0');
+          b.triangles.back()[k] = v < SIZE_MAX ? static_cast<std::size_t>(v) : SIZE_MAX;
+        });
+      }
+    } else if (key == "forces") {
+      b.forces = read_pairs(r);
+      b.has_forces = true;
+    } else if (key == "speed_bounds") {
+      b.speeds = read_rationals(r);
+      b.has_speeds = true;
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  for (const char* k : {"vertices", "triangles"})
+    if (!keys.count(k)) r.fail(std::string("missing required key \"") + k + "\"");
+  if (b.has_forces == b.has_speeds) r.fail("expected exactly one of \"forces\" (sticks) and \"speed_bounds\" (slides)");
+  return b;
+}
+
 // {"label": "+" | "-", "point": [x, y]} or {"label": "infinity", "direction": [dx, dy]}
 void read_reading(Reader& r, Certificate& c) {
   if (r.peek() != Kind::object) r.fail("expected an object {\"label\", \"point\"} or {\"label\", \"direction\"}");
@@ -1119,6 +1426,10 @@ Certificate read_certificate(Reader& r) {
       c.holding = read_witness(r, false);
     } else if (key == "failing") {
       c.failing = read_witness(r, true);
+    } else if (key == "regions") {
+      if (r.peek() != Kind::array) r.fail("expected an array of region blocks (one per support region)");
+      r.begin_array();
+      while (r.next_item()) c.regions.push_back(read_block(r));
     } else {
       r.fail("unknown key " + quote(key), true);
     }
@@ -1147,7 +1458,7 @@ void check_keys(const Certificate& c) {
     throw Failure{"holds: \"depends\" is only a claim of property \"hold\" (expected true or false)"};
   if (c.motion || c.hold) return;  // check_motion() and check_hold() decide, knowing the scene's support
   for (const char* key : {"load", "motion", "support_forces", "speed_bounds", "dual", "vertices", "sticking", "sliding",
-                          "holding", "failing"})
+                          "holding", "failing", "regions"})
     if (c.keys.count(key))
       throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is " + quote(c.property)};
   need("holds");
@@ -1346,6 +1657,132 @@ class Support_blocks {
  public:
   Support_blocks(const Support& s, const Limits& lim) : s_(s), lim_(lim) {}
 
+  // --- Region blocks (certificate-format.md §6.4, proofs/notes/RG-1): the shared checks of a region's part of a
+  // stick or slide witness.
+
+  // The cells of b tile g: every cell counter-clockwise with positive area, and the sum of the cells' oriented
+  // boundaries equals the region's oriented boundary as 1-chains (on each supporting line, the multiplicity of
+  // every piece between endpoints is zero; collinear overlapping segments cancel). Then the cells' indicators
+  // sum to the region's almost everywhere (RG-1 §2).
+  static void check_tiling(const Region& g, const Block& b) {
+    struct Event {
+      int vertical;
+      Q a, b, t;  // the line (y = a x + b, or x = a) and the parameter (x, or y)
+      int delta;
+    };
+    std::vector<Event> events;
+    const auto segment = [&](const P2& p, const P2& q, int w) {
+      if (p.x != q.x) {
+        const Q slope = (q.y - p.y) / (q.x - p.x), icpt = p.y - slope * p.x;
+        const int dir = q.x > p.x ? w : -w;
+        const Q& lo = q.x > p.x ? p.x : q.x;
+        const Q& hi = q.x > p.x ? q.x : p.x;
+        events.push_back({0, slope, icpt, lo, dir});
+        events.push_back({0, slope, icpt, hi, -dir});
+      } else {
+        const int dir = q.y > p.y ? w : -w;
+        const Q& lo = q.y > p.y ? p.y : q.y;
+        const Q& hi = q.y > p.y ? q.y : p.y;
+        events.push_back({1, p.x, Q(0), lo, dir});
+        events.push_back({1, p.x, Q(0), hi, -dir});
+      }
+    };
+    for (std::size_t k = 0; k < b.triangles.size(); ++k) {
+      const auto& t = b.triangles[k];
+      const std::string at = b.path + ".triangles[" + std::to_string(k) + "]";
+      for (const std::size_t v : t)
+        if (v >= b.vertices.size())
+          throw Failure{at + ": vertex index " + (v == SIZE_MAX ? std::string("(huge)") : std::to_string(v)) +
+                        " out of range (" + std::to_string(b.vertices.size()) + " vertices)"};
+      const P2 &p = b.vertices[t[0]], &q = b.vertices[t[1]], &r = b.vertices[t[2]];
+      if (orient(p, q, r) <= 0) throw Failure{at + ": not counter-clockwise with a positive area"};
+      segment(p, q, 1), segment(q, r, 1), segment(r, p, 1);
+    }
+    for (const auto& ring : g.rings)
+      for (std::size_t i = 0; i < ring.size(); ++i) segment(ring[i], ring[(i + 1) % ring.size()], -1);
+    std::sort(events.begin(), events.end(), [](const Event& x, const Event& y) {
+      if (x.vertical != y.vertical) return x.vertical < y.vertical;
+      if (x.a != y.a) return x.a < y.a;
+      if (x.b != y.b) return x.b < y.b;
+      return x.t < y.t;
+    });
+    int sum = 0;
+    for (std::size_t i = 0; i < events.size(); ++i) {
+      sum += events[i].delta;
+      const bool last_at_t = i + 1 == events.size() || events[i + 1].vertical != events[i].vertical ||
+                             events[i + 1].a != events[i].a || events[i + 1].b != events[i].b || events[i + 1].t != events[i].t;
+      if (last_at_t && sum != 0)
+        throw Failure{b.path + ": the cells do not tile " + g.path + " (their boundaries do not add up to the region's "
+                      "boundary: a cell outside it, a gap, an overlap or a hole covered)"};
+    }
+  }
+
+  // A stick block: |g_k|^2 < (mu F_k)^2 (g_k = 0 where mu F_k = 0), F_k = area p(centroid); adds sum_k (g_k, c_k x g_k)
+  // to `sum` (c_k = M_k / F_k the cell's pressure centroid, M_k its integral of r p by the edge-midpoint rule) and
+  // calls friction(c_k) for every cell with mu F_k > 0.
+  // `strict` as support_sum's: a stick (|g_k|^2 < (mu F_k)^2) or a hold (|g_k|^2 <= (mu F_k)^2, closed discs).
+  template <class Friction>
+  static void add_stick_block(const Region& g, const Block& b, std::array<Q, 3>& sum, Friction friction, bool strict) {
+    if (b.forces.size() != b.triangles.size())
+      throw Failure{b.path + ".forces: " + std::to_string(b.forces.size()) + " forces for " +
+                    std::to_string(b.triangles.size()) + " cells"};
+    check_tiling(g, b);
+    for (std::size_t k = 0; k < b.triangles.size(); ++k) {
+      const auto& t = b.triangles[k];
+      const P2 &p = b.vertices[t[0]], &q = b.vertices[t[1]], &r = b.vertices[t[2]];
+      const Q area = Q((q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x)) / 2;
+      const P2 m[3] = {{(p.x + q.x) / 2, (p.y + q.y) / 2}, {(q.x + r.x) / 2, (q.y + r.y) / 2}, {(r.x + p.x) / 2, (r.y + p.y) / 2}};
+      Q F = 0, M[2] = {0, 0};
+      for (const P2& x : m) {
+        const Q pm = pressure(g.c, x);
+        F += pm, M[0] += x.x * pm, M[1] += x.y * pm;
+      }
+      F *= area / 3, M[0] *= area / 3, M[1] *= area / 3;
+      const Pair& f = b.forces[k];
+      const Q lhs = f[0] * f[0] + f[1] * f[1], rho = g.mu * F;
+      const bool inside = strict ? (sgn(rho) == 0 ? sgn(lhs) == 0 : lhs < rho * rho) : lhs <= rho * rho;
+      if (!inside)
+        throw Failure{b.path + ".forces[" + std::to_string(k) + "]: |g|^2 = " + show(lhs) + " is not " +
+                      (strict ? "less than" : "at most") + " (mu F)^2 = " + show(Q(rho * rho)) +
+                      (sgn(rho) == 0 ? " (no friction there: g must be 0)" : "")};
+      if (sgn(rho) == 0) continue;
+      sum[0] += f[0], sum[1] += f[1], sum[2] += (M[0] * f[1] - M[1] * f[0]) / F;
+      friction(Q(M[0] / F), Q(M[1] / F));
+    }
+  }
+
+  // A slide block: u_j >= 0 and u_j^2 >= |v_j(q)|^2 at every vertex; returns mu sum_cells sum_j w_j u_j with
+  // w_j = area (p_j + p_a + p_b + p_c)/12, the integral of the barycentric coordinate j times p (|v| is convex and
+  // p >= 0, so the integral of |v| p over the region is at most this).
+  static Q slide_block_bound(const Region& g, const Block& b, const Q (&q)[3]) {
+    if (b.speeds.size() != b.vertices.size())
+      throw Failure{b.path + ".speed_bounds: " + std::to_string(b.speeds.size()) + " bounds for " +
+                    std::to_string(b.vertices.size()) + " vertices"};
+    check_tiling(g, b);
+    for (std::size_t j = 0; j < b.vertices.size(); ++j) {
+      const P2& v = b.vertices[j];
+      const Q vx = q[0] - q[2] * v.y, vy = q[1] + q[2] * v.x, speed2 = vx * vx + vy * vy;
+      const Q& u = b.speeds[j];
+      if (sgn(u) < 0) throw Failure{b.path + ".speed_bounds[" + std::to_string(j) + "]: " + show(u) + " is negative"};
+      if (u * u < speed2)
+        throw Failure{b.path + ".speed_bounds[" + std::to_string(j) + "]: u^2 = " + show(Q(u * u)) +
+                      " is less than |v(q)|^2 = " + show(speed2)};
+    }
+    std::vector<Q> terms;
+    terms.reserve(b.triangles.size());
+    for (const auto& t : b.triangles) {
+      const P2 &p = b.vertices[t[0]], &q2 = b.vertices[t[1]], &r = b.vertices[t[2]];
+      const Q area = Q((q2.x - p.x) * (r.y - p.y) - (q2.y - p.y) * (r.x - p.x)) / 2;
+      const Q pv[3] = {pressure(g.c, p), pressure(g.c, q2), pressure(g.c, r)};
+      const Q all = pv[0] + pv[1] + pv[2];
+      Q cell = 0;
+      for (int j = 0; j < 3; ++j) cell += (pv[j] + all) * b.speeds[t[static_cast<std::size_t>(j)]];
+      terms.push_back(cell * area / 12);
+    }
+    return g.mu * tree_sum(std::move(terms));
+  }
+
+
   // The scene's forces (0 where unknown).
   std::vector<Q> given() const {
     std::vector<Q> f;
@@ -1383,12 +1820,18 @@ class Support_blocks {
   // |g_i|^2 < (mu_i f_i)^2 where mu_i f_i > 0, g_i = 0 where it is 0, and LS(f) is three-dimensional (two distinct
   // points with mu_i f_i > 0), so the sum of the discs' relative interiors is its interior (SL-1). Not strict (a
   // hold, §7): |g_i|^2 <= (mu_i f_i)^2, the closed discs (so g_i = 0 where mu_i f_i = 0), any number of points.
+  // With `blocks` (one per support region, certificate-format.md §6.4), each region's cells add their forces,
+  // acting at the cells' pressure centroids, inside their discs as the points' are.
   std::array<Q, 3> support_sum(const std::vector<Q>& f, const std::vector<Pair>& g, const std::string& path,
-                               bool strict) const {
+                               bool strict, const std::vector<Block>* blocks = nullptr) const {
     size(g.size(), path);
     std::array<Q, 3> sum{0, 0, 0};
     bool two = false, one = false;
     Q ax, ay;
+    const auto friction_at = [&](const Q& x, const Q& y) {
+      if (one && (x != ax || y != ay)) two = true;
+      if (!one) one = true, ax = x, ay = y;
+    };
     for (std::size_t i = 0; i < g.size(); ++i) {
       const Point_values v = values(s_.points[i], lim_);
       const Q lhs = g[i][0] * g[i][0] + g[i][1] * g[i][1], bound = v.mu * f[i];
@@ -1397,12 +1840,12 @@ class Support_blocks {
         throw Failure{path + "[" + std::to_string(i) + "]: |g|^2 = " + show(lhs) + " is not " +
                       (strict ? "less than" : "at most") + " (mu f)^2 = " + show(Q(bound * bound)) +
                       (sgn(bound) == 0 ? " (no friction there: g must be 0)" : "")};
-      if (sgn(bound) > 0) {
-        if (one && (v.x != ax || v.y != ay)) two = true;
-        if (!one) one = true, ax = v.x, ay = v.y;
-      }
+      if (sgn(bound) > 0) friction_at(v.x, v.y);
       sum[0] += g[i][0], sum[1] += g[i][1], sum[2] += v.x * g[i][1] - v.y * g[i][0];
     }
+    if (blocks)  // each region's cells: forces spread over the cell as p, acting at its pressure centroid
+      for (std::size_t k = 0; k < blocks->size(); ++k)
+        add_stick_block(s_.regions[k], (*blocks)[k], sum, friction_at, strict);
     if (strict && !two)
       throw Failure{path + ": friction acts at fewer than two distinct points, so the limit surface is flat and no "
                            "load is inside it"};
@@ -1412,8 +1855,9 @@ class Support_blocks {
   // A bound on the frictional power h_f(q) = sum mu_i f_i |v_i(q)| from the rational speed bounds u_i >= 0,
   // u_i^2 >= |v_i(q)|^2: sum mu_i f_i u_i for the distribution f, or, with a dual (every f in F),
   // sum_known mu_i f_i u_i + y0 W' + yx M'x + yy M'y where mu_i u_i <= y0 + y.r_i for every unknown i.
+  // With `blocks`, each region's bound mu_R sum_cells sum_j w_j u_j (certificate-format.md §6.4) is added.
   Q friction_bound(const std::vector<Q>& f, const Q (&q)[3], const std::vector<Q>& u, const std::string& prefix,
-                   const Q* dual) const {
+                   const Q* dual, const std::vector<Block>* blocks = nullptr) const {
     const std::string path = prefix + "speed_bounds";
     size(u.size(), path);
     Q bound = 0;
@@ -1433,6 +1877,8 @@ class Support_blocks {
       }
     }
     if (dual) bound += dual[0] * s_.rest_weight + dual[1] * s_.rest_moment[0] + dual[2] * s_.rest_moment[1];
+    if (blocks)  // each region's bound on mu times the integral of |v| p
+      for (std::size_t k = 0; k < blocks->size(); ++k) bound += slide_block_bound(s_.regions[k], (*blocks)[k], q);
     return bound;
   }
 
@@ -1537,6 +1983,9 @@ class Motion_check {
 
   void run() {
     const bool known = s_.unknown == 0;
+    const bool regions = !s_.regions.empty();
+    if (regions && !known)
+      throw Failure{"motion: a support with regions and points whose force is not given has no certificate in format 1"};
     if (c_.claim == "depends" && known)
       throw Failure{"motion: \"depends\" needs a support with an unknown distribution (every force is given)"};
     std::set<std::string> allowed;
@@ -1544,15 +1993,23 @@ class Motion_check {
     if (c_.claim == "slides")
       allowed = known ? std::set<std::string>{"twist", "speed_bounds"} : std::set<std::string>{"twist", "speed_bounds", "dual"};
     if (c_.claim == "depends") allowed = {"sticking", "sliding"};
-    const char* const keys[] = {"support_forces", "twist", "speed_bounds", "dual", "vertices", "sticking", "sliding"};
+    if (regions) allowed.insert("regions");
+    const char* const keys[] = {"support_forces", "twist", "speed_bounds", "dual", "vertices", "sticking", "sliding",
+                                "regions"};
     for (const char* key : keys)
       if (!allowed.count(key) && c_.keys.count(key))
         throw Failure{std::string("key \"") + key + "\" is not allowed when \"motion\" is " + quote(c_.claim) +
-                      (known ? " and every support force is given" : " and some support force is unknown")};
+                      (std::string(key) == "regions" ? " and the support has no regions"
+                       : known                       ? " and every support force is given"
+                                                     : " and some support force is unknown")};
     for (const char* key : keys)
       if (allowed.count(key) && !c_.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
-    if (c_.claim == "sticks" && known) return stick(b_.given(), c_.support_forces, "support_forces");
-    if (c_.claim == "slides" && known) return slide(b_.given(), c_.twist, c_.speed_bounds, "", nullptr);
+    if (regions && c_.regions.size() != s_.regions.size())
+      throw Failure{"regions: " + std::to_string(c_.regions.size()) + " blocks, but the support has " +
+                    std::to_string(s_.regions.size()) + " regions"};
+    const std::vector<Block>* blocks = regions ? &c_.regions : nullptr;
+    if (c_.claim == "sticks" && known) return stick(b_.given(), c_.support_forces, "support_forces", blocks);
+    if (c_.claim == "slides" && known) return slide(b_.given(), c_.twist, c_.speed_bounds, "", nullptr, blocks);
     if (c_.claim == "slides") return slide(b_.given(), c_.twist, c_.speed_bounds, "", c_.dual);
     if (c_.claim == "depends") {
       b_.in_f(c_.sticking.distribution, c_.sticking.path + ".distribution");
@@ -1564,9 +2021,11 @@ class Motion_check {
   }
 
  private:
-  // Sticks under f: the support forces strictly inside their discs carry the load p exactly (SL-1).
-  void stick(const std::vector<Q>& f, const std::vector<Pair>& g, const std::string& path) const {
-    const std::array<Q, 3> sum = b_.support_sum(f, g, path, true);
+  // Sticks under f: the support forces strictly inside their discs (and the regions' cell forces, with `blocks`)
+  // carry the load p exactly (SL-1, RG-1).
+  void stick(const std::vector<Q>& f, const std::vector<Pair>& g, const std::string& path,
+             const std::vector<Block>* blocks = nullptr) const {
+    const std::array<Q, 3> sum = b_.support_sum(f, g, path, true, blocks);
     if (sum[0] != c_.load[0] || sum[1] != c_.load[1] || sum[2] != c_.load[2])
       throw Failure{path + ": the support forces give the load (" + show(sum[0]) + ", " + show(sum[1]) + ", " +
                     show(sum[2]) + "), not (" + show(c_.load[0]) + ", " + show(c_.load[1]) + ", " +
@@ -1574,12 +2033,12 @@ class Motion_check {
   }
 
   // Slides: p not in the interior of LS(f) (on or past the limit surface): q != 0 and q.p >= the bound on the
-  // frictional power h_f(q).
+  // frictional power h_f(q) (the regions' bounds included, with `blocks`).
   void slide(const std::vector<Q>& f, const Q (&q)[3], const std::vector<Q>& u, const std::string& prefix,
-             const Q* dual) const {
+             const Q* dual, const std::vector<Block>* blocks = nullptr) const {
     b_.size(u.size(), prefix + "speed_bounds");
     if (sgn(q[0]) == 0 && sgn(q[1]) == 0 && sgn(q[2]) == 0) throw Failure{prefix + "twist: the zero twist"};
-    const Q bound = b_.friction_bound(f, q, u, prefix, dual);
+    const Q bound = b_.friction_bound(f, q, u, prefix, dual, blocks);
     const Q power = q[0] * c_.load[0] + q[1] * c_.load[1] + q[2] * c_.load[2];
     if (power < bound)
       throw Failure{prefix + "twist: power q.p = " + show(power) + " is less than " +
@@ -1633,6 +2092,9 @@ class Hold_check {
       if (c_.keys.count(key)) throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is \"hold\""};
     if (!c_.keys.count("holds")) throw Failure{"missing required key \"holds\""};
     const bool support = scene_.support.present, known = !support || scene_.support.unknown == 0;
+    const bool regions = support && !scene_.support.regions.empty();
+    if (regions && !known)
+      throw Failure{"holds: a support with regions and points whose force is not given has no certificate in format 1"};
     const std::string claim = c_.depends ? "\"depends\"" : c_.holds ? "true" : "false";
     if (c_.depends && known)
       throw Failure{"holds: \"depends\" needs a support with an unknown distribution (" +
@@ -1649,16 +2111,22 @@ class Hold_check {
       if (support) allowed.insert("speed_bounds");
       if (!known) allowed.insert("dual");
     }
+    if (regions) allowed.insert("regions");
     const char* const keys[] = {"combination", "support_forces", "twist",   "reading", "speed_bounds",
-                                "dual",        "vertices",       "holding", "failing"};
+                                "dual",        "vertices",       "holding", "failing", "regions"};
     const std::string where = !support ? " and the scene has no support"
                               : known  ? " and every support force is given"
                                        : " and some support force is unknown";
     for (const char* key : keys)
       if (!allowed.count(key) && !optional.count(key) && c_.keys.count(key))
-        throw Failure{std::string("key \"") + key + "\" is not allowed when \"holds\" is " + claim + where};
+        throw Failure{std::string("key \"") + key + "\" is not allowed when \"holds\" is " + claim +
+                      (std::string(key) == "regions" ? std::string(" and the support has no regions") : where)};
     for (const char* key : keys)
       if (allowed.count(key) && !c_.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
+    if (regions && c_.regions.size() != scene_.support.regions.size())
+      throw Failure{"regions: " + std::to_string(c_.regions.size()) + " blocks, but the support has " +
+                    std::to_string(scene_.support.regions.size()) + " regions"};
+    blocks_ = regions ? &c_.regions : nullptr;
     const std::vector<Q> f = support ? b_.given() : std::vector<Q>();
     if (c_.depends) {
       if (!c_.holding.has_combination) throw Failure{c_.holding.path + ": missing required key \"combination\""};
@@ -1691,7 +2159,7 @@ class Hold_check {
     Seen seen;
     std::vector<Int_wrench> terms = weighted_terms(combination, scene_.contacts, Reading::friction, lim_, cache, seen);
     if (scene_.support.present) {
-      const std::array<Q, 3> sum = b_.support_sum(f, g, prefix + "support_forces", false);
+      const std::array<Q, 3> sum = b_.support_sum(f, g, prefix + "support_forces", false, blocks_);
       terms.push_back(integer_form(sum[0], sum[1], sum[2]));
     }
     terms.push_back(integer_form(scene_.load.fx, scene_.load.fy, scene_.load.m));
@@ -1706,7 +2174,7 @@ class Hold_check {
   void fail(const std::vector<Q>& f, const Q (&t)[3], const std::vector<Q>& u, const std::string& prefix,
             const Q* dual) const {
     allowed_by_every_contact(t, scene_.contacts, Reading::friction, lim_, prefix);
-    const Q bound = scene_.support.present ? b_.friction_bound(f, t, u, prefix, dual) : Q(0);
+    const Q bound = scene_.support.present ? b_.friction_bound(f, t, u, prefix, dual, blocks_) : Q(0);
     const Q power = t[0] * scene_.load.fx + t[1] * scene_.load.fy + t[2] * scene_.load.m;
     if (!(power > bound))
       throw Failure{prefix + "twist: power against the load t.w_L = " + show(power) + " is not more than " +
@@ -1717,6 +2185,7 @@ class Hold_check {
   const Scene& scene_;
   const Limits& lim_;
   Support_blocks b_;
+  const std::vector<Block>* blocks_ = nullptr;  // the regions' blocks (§6.4), when the support has regions
 };
 
 // The certificate against an already read scene.

@@ -48,6 +48,7 @@ struct Limits {
   long max_exponent = 10000;       // |exponent| of a scene number
   std::size_t max_depth = 64;      // JSON containers nested in one another
   std::size_t max_contacts = 100000;  // also the limit on support.points and on body.outline's points
+  std::size_t max_region_vertices = 4096;  // vertices of all support regions' rings together
   // The scene-wide budget (docs/scene-format.md "Limits"): the digits of all the scene's numbers together
   // (each counted as max_digits counts it), and the longest number's digits times the number of contacts
   // and support points. A scene over either is a bad scene, refused while it is read, before the number

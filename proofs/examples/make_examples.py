@@ -147,6 +147,20 @@ SCENES = {
                                 "distribution", load={"wrench": ["3/2", 0, 0]}),
     "table_pinned_pushed": dict(TABLE_PINNED, name="the pinned table under (1/2, 1/2, 9/10): depends on the "
                                 "distribution", load={"wrench": ["1/2", "1/2", "9/10"]}),
+    # Support regions (certificate-format.md section 6.4): a uniform square, and a square frame (a hole).
+    "square_region": {
+        "wrenchkit": 1,
+        "name": "uniform square [-1,1]^2, W = 1, mu = 1 (theory-sliding.md 6: h(0,0,1) = (sqrt 2 + asinh 1)/3)",
+        "support": {"mu": 1, "regions": [{"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform",
+                                          "force": 1}]},
+    },
+    "square_frame": {
+        "wrenchkit": 1,
+        "name": "the frame [-2,2]^2 minus [-1,1]^2, uniform, W = 1, mu = 1, written clockwise",
+        "support": {"mu": 1, "regions": [{"outline": [[-2, 2], [2, 2], [2, -2], [-2, -2]],
+                                          "holes": [[[-1, -1], [1, -1], [1, 1], [-1, 1]]],
+                                          "pressure": "uniform", "force": 1}]},
+    },
 }
 
 # ----------------------------------------------------------------------------------------------
@@ -200,6 +214,40 @@ def stick_witness(distribution, forces):
 
 def slide_witness(distribution, twist, speeds):
     return {"distribution": distribution, "twist": twist, "speed_bounds": speeds}
+
+
+def block(cells, **rest):
+    """A region's block (certificate-format.md section 6.4): cells = (vertices, triangles) and forces or speed_bounds."""
+    vertices, triangles = cells
+    return dict({"vertices": [[str(F(x)), str(F(y))] for x, y in vertices], "triangles": triangles}, **rest)
+
+
+# The uniform square [-1,1]^2 (W = 1, mu = 1): two cells along the diagonal (pressure centroids (1/3, -1/3) and
+# (-1/3, 1/3), F = 1/2 each), carrying (1/2, 0, 1/4) with forces (7/16, 3/16) and (1/16, -3/16), strictly inside
+# their discs of radius 1/2; four cells around the centre, whose corner speeds for q = (0, 0, 1) are 0 and
+# sqrt 2 <= 17/12, bound the power (sqrt 2 + asinh 1)/3 ~ 0.765 by 4 (2 * 17/12)/12 = 17/18 <= 1 = q.p for (0, 0, 1).
+SQUARE_2 = ([[-1, -1], [1, -1], [1, 1], [-1, 1]], [[0, 1, 2], [0, 2, 3]])
+SQUARE_4 = ([[0, 0], [-1, -1], [1, -1], [1, 1], [-1, 1]], [[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 1]])
+SQUARE_STICKS = motion("sticks", [F(1, 2), 0, F(1, 4)], support_forces=[],
+                       regions=[block(SQUARE_2, forces=[["7/16", "3/16"], ["1/16", "-3/16"]])])
+SQUARE_SLIDES = motion("slides", [0, 0, 1], twist=["0", "0", "1"], speed_bounds=[],
+                       regions=[block(SQUARE_4, speed_bounds=["0", "17/12", "17/12", "17/12", "17/12"])])
+# Hanging vertices: the cell (0,0),(1,1),(-1,1) cut at the midpoint (1/2, 1/2) of an edge its neighbour keeps whole,
+# and the cell (0,0),(-1,-1),(1,-1) cut at (0,-1), the middle of the region's bottom edge.
+SQUARE_SLIDES_HANGING = motion(
+    "slides", [0, 0, 1], twist=["0", "0", "1"], speed_bounds=[],
+    regions=[block(([[0, 0], [-1, -1], [1, -1], [1, 1], [-1, 1], ["1/2", "1/2"], [0, -1]],
+                    [[0, 1, 6], [0, 6, 2], [0, 2, 3], [0, 5, 4], [5, 3, 4], [0, 4, 1]]),
+                   speed_bounds=["0", "17/12", "17/12", "17/12", "17/12", "17/24", "1"])])
+# The frame [-2,2]^2 minus [-1,1]^2 (area 12, W = 1): eight cells, two per side. It carries (1/4, 0, 0) with the
+# force (1/32, 0) on each cell; the translation (1, 0, 0) moves every point with speed 1, so its power is
+# W = 1 exactly and the load (1, 0, 0) is on the limit surface: it slides (u = 1, bound 1 = q.p).
+FRAME_CELLS = ([[-2, -2], [2, -2], [2, 2], [-2, 2], [-1, -1], [1, -1], [1, 1], [-1, 1]],
+               [[0, 1, 5], [0, 5, 4], [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]])
+FRAME_STICKS = motion("sticks", [F(1, 4), 0, 0], support_forces=[],
+                      regions=[block(FRAME_CELLS, forces=[["1/32", "0"]] * 8)])
+FRAME_SLIDES = motion("slides", [1, 0, 0], twist=["1", "0", "0"], speed_bounds=[],
+                      regions=[block(FRAME_CELLS, speed_bounds=["1"] * 8)])
 
 
 # The table (legs (1,1), (-1,1), (-1,-1), (1,-1), mu = W = 1, c = 0): F's vertices are the two diagonal
@@ -435,6 +483,41 @@ CERTS = [
           failing={"distribution": ["0", "1/2", "0", "1/2"], "twist": ["1", "1", "1"], "speed_bounds": ["2", "0", "2", "17/6"]})),
     ("barbell_known", "vertices_on_known", 'invalid:keys|key "vertices" is not allowed when "motion" is "sticks" and every support force is given',
      motion("sticks", [F(1, 4), 0, 0], vertices=[stick_witness(["1/2", "1/2"], [["1/8", "0"], ["1/8", "0"]])])),
+
+    # support regions (certificate-format.md section 6.4)
+    ("square_region", "sticks", "valid", SQUARE_STICKS),
+    ("square_region", "slides", "valid", SQUARE_SLIDES),
+    ("square_region", "slides_hanging_vertices", "valid", SQUARE_SLIDES_HANGING),
+    ("square_frame", "sticks", "valid", FRAME_STICKS),
+    ("square_frame", "slides_on_surface", "valid", FRAME_SLIDES),
+    ("square_region", "force_outside_disc", "invalid:stick|regions[0].forces[0]: |g|^2 = 45/128 is not less than (mu F)^2 = 1/4",
+     dict(SQUARE_STICKS, load=["1/2", "0", "3/8"], regions=[block(SQUARE_2, forces=[["9/16", "3/16"], ["-1/16", "-3/16"]])])),
+    ("square_region", "cell_outside", "invalid:tiling|regions[0]: the cells do not tile support.regions[0]",
+     dict(SQUARE_STICKS, regions=[block(([[-1, -1], [1, -1], [1, 1], [-1, 1], [2, 1]], [[0, 1, 2], [0, 2, 3], [1, 4, 2]]),
+                                        forces=[["7/16", "3/16"], ["1/16", "-3/16"], ["0", "0"]])])),
+    ("square_region", "cell_missing", "invalid:tiling|regions[0]: the cells do not tile support.regions[0]",
+     dict(SQUARE_STICKS, load=["7/16", "3/16", "1/6"], regions=[block(([[-1, -1], [1, -1], [1, 1], [-1, 1]], [[0, 1, 2]]),
+                                                                      forces=[["7/16", "3/16"]])])),
+    ("square_region", "cells_overlap", "invalid:tiling|regions[0]: the cells do not tile support.regions[0]",
+     dict(SQUARE_STICKS, load=["1/2", "0", "1/6"], regions=[block(([[-1, -1], [1, -1], [1, 1], [-1, 1]], [[0, 1, 2], [0, 2, 3], [1, 2, 3]]),
+                                                                  forces=[["1/4", "0"], ["1/4", "0"], ["0", "0"]])])),
+    ("square_region", "clockwise_cell", "invalid:tiling|regions[0].triangles[1]: not counter-clockwise with a positive area",
+     dict(SQUARE_STICKS, regions=[block(([[-1, -1], [1, -1], [1, 1], [-1, 1]], [[0, 1, 2], [0, 3, 2]]),
+                                        forces=[["7/16", "3/16"], ["1/16", "-3/16"]])])),
+    ("square_region", "index_out_of_range", "invalid:tiling|regions[0].triangles[1]: vertex index 4 out of range (4 vertices)",
+     dict(SQUARE_STICKS, regions=[block(([[-1, -1], [1, -1], [1, 1], [-1, 1]], [[0, 1, 2], [0, 2, 4]]),
+                                        forces=[["7/16", "3/16"], ["1/16", "-3/16"]])])),
+    ("square_region", "speed_bound_too_small", "invalid:speed|regions[0].speed_bounds[1]: u^2 = 1 is less than |v(q)|^2 = 2",
+     dict(SQUARE_SLIDES, regions=[block(SQUARE_4, speed_bounds=["0", "1", "17/12", "17/12", "17/12"])])),
+    ("square_region", "power_below_bound", "invalid:power|twist: power q.p = 9/10 is less than sum mu_i f_i u_i = 17/18",
+     dict(SQUARE_SLIDES, load=["0", "0", "9/10"])),
+    ("square_region", "without_blocks", 'invalid:keys|missing required key "regions"',
+     {k: v for k, v in SQUARE_STICKS.items() if k != "regions"}),
+    ("square_frame", "hole_covered", "invalid:tiling|regions[0]: the cells do not tile support.regions[0]",
+     dict(FRAME_SLIDES, regions=[block(([[-2, -2], [2, -2], [2, 2], [-2, 2]], [[0, 1, 2], [0, 2, 3]]),
+                                       speed_bounds=["1", "1", "1", "1"])])),
+    ("barbell_known", "blocks_without_regions", 'invalid:keys|key "regions" is not allowed when "motion" is "sticks" and the support has no regions',
+     motion("sticks", [F(1, 4), 0, 0], support_forces=[["1/8", "0"], ["1/8", "0"]], regions=[])),
 ]
 
 # ----------------------------------------------------------------------------------------------
@@ -539,23 +622,99 @@ def vertices_of_F(pts, given, W, c):
     return out
 
 
+def region(r, sup):
+    """A support region, oriented (outline counter-clockwise, holes clockwise), with its pressure, mu and W
+    (the examples' regions are valid; their validity is the C++ checker's and the readers' business)."""
+    def area2(ring):
+        return sum(a[0] * b[1] - a[1] * b[0] for a, b in zip(ring, ring[1:] + ring[:1]))
+    rings = []
+    for k, ring in enumerate([r["outline"]] + r.get("holes", [])):
+        ring = [(number(x), number(y)) for x, y in ring]
+        if (area2(ring) > 0) != (k == 0):
+            ring = ring[::-1]
+        rings.append(ring)
+    area = sum(area2(ring) for ring in rings) / 2
+    coef = [number(r["force"]) / area, F(0), F(0)] if r["pressure"] == "uniform" else [number(v) for v in r["pressure"]["linear"]]
+    reg = {"rings": rings, "coef": coef, "mu": number(r.get("mu", sup.get("mu")))}
+    # W by the fan triangles (0, a, b) of the oriented boundary, the edge-midpoint rule on each.
+    reg["W"] = sum((a[0] * b[1] - a[1] * b[0]) / 2 / 3 * sum(pressure(reg, m) for m in (
+        (a[0] / 2, a[1] / 2), (b[0] / 2, b[1] / 2), ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)))
+        for ring in rings for a, b in zip(ring, ring[1:] + ring[:1]))
+    return reg
+
+
+def pressure(reg, v):
+    c = reg["coef"]
+    return c[0] + c[1] * v[0] + c[2] * v[1]
+
+
+def cells_of(blk):
+    return [(rational(x), rational(y)) for x, y in blk["vertices"]], blk["triangles"]
+
+
+def cell_measures(reg, tri):
+    """F = integral of p over the cell, and the integral of r p (edge-midpoint rule, exact for degree 2)."""
+    a, b, c = tri
+    area = ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2
+    mids = [((u[0] + v[0]) / 2, (u[1] + v[1]) / 2) for u, v in ((a, b), (b, c), (c, a))]
+    return (area / 3 * sum(pressure(reg, m) for m in mids),
+            (area / 3 * sum(m[0] * pressure(reg, m) for m in mids), area / 3 * sum(m[1] * pressure(reg, m) for m in mids)))
+
+
+def tiles(reg, vs, tris):
+    """The cells tile the region: every cell counter-clockwise with positive area, and on every line the cells'
+    oriented edges minus the region's cancel (a second implementation: unit steps summed on a common grid of the
+    line's end points)."""
+    segments = []
+    for t in tris:
+        if len(t) != 3 or any(type(i) is not int or not 0 <= i < len(vs) for i in t):
+            return False
+        a, b, c = (vs[i] for i in t)
+        if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) <= 0:
+            return False
+        segments += [(a, b, 1), (b, c, 1), (c, a, 1)]
+    for ring in reg["rings"]:
+        segments += [(a, b, -1) for a, b in zip(ring, ring[1:] + ring[:1])]
+    lines = {}
+    for p, q, w in segments:
+        if p[0] != q[0]:
+            s = (q[1] - p[1]) / (q[0] - p[0])
+            key, t0, t1 = ("slope", s, p[1] - s * p[0]), p[0], q[0]
+        else:
+            key, t0, t1 = ("vertical", p[0]), p[1], q[1]
+        lines.setdefault(key, []).append((t0, t1, w))
+    for pieces in lines.values():
+        grid = sorted({t for t0, t1, _ in pieces for t in (t0, t1)})
+        for lo, hi in zip(grid, grid[1:]):
+            mid = (lo + hi) / 2
+            if sum(w if t0 < mid < t1 else -w if t1 < mid < t0 else 0 for t0, t1, w in pieces) != 0:
+                return False
+    return True
+
+
 def verify_motion(scene, cert):
     """verify() for property "motion": None if valid, else a short reason."""
     sup = scene.get("support")
     if sup is None:
         return "no support"
     pts = [(number(q["at"][0]), number(q["at"][1]), number(q.get("mu", sup.get("mu"))),
-            None if "force" not in q else number(q["force"])) for q in sup["points"]]
+            None if "force" not in q else number(q["force"])) for q in sup.get("points", [])]
+    regions = [region(r, sup) for r in sup.get("regions", [])]
     known = all(f is not None for *_, f in pts)
     claim = cert["motion"]
     if claim == "depends" and known:
         return "depends known"
-    if set(cert) != {"wrenchkit_certificate", "property", "load", "motion"} | MOTION_KEYS[(claim, known)]:
+    if regions and not known:
+        return "regions unknown"
+    if set(cert) != {"wrenchkit_certificate", "property", "load", "motion"} | MOTION_KEYS[(claim, known)] | (
+            {"regions"} if regions else set()):
+        return "keys"
+    if regions and len(cert["regions"]) != len(regions):
         return "keys"
     p = [rational(v) for v in cert["load"]]
     given = [f or F(0) for *_, f in pts]
     if known:
-        W, c = sum(given), None
+        W, c = sum(given) + sum(r["W"] for r in regions), None
     else:
         W = number(sup["weight"])
         c = [number(v) for v in sup.get("pressure_center", scene.get("body", {}).get("com"))]
@@ -565,15 +724,26 @@ def verify_motion(scene, cert):
                 and all(q[3] is None or q[3] == v for q, v in zip(pts, f)) and sum(f) == W
                 and all(sum(v * q[k] for v, q in zip(f, pts)) == W * c[k] for k in range(2)))
 
-    def sticks(f, g):  # p in the interior of LS(f): strictly inside the discs, friction at two distinct points
+    def sticks(f, g, blocks=()):  # p in the interior of LS(f): strictly inside the discs, friction at two points
         g = [[rational(a) for a in gi] for gi in g]
         if len(g) != len(pts) or any((a, b) != (0, 0) if q[2] * fi == 0 else a * a + b * b >= (q[2] * fi) ** 2
                                      for (a, b), q, fi in zip(g, pts, f)):
             return False
-        if len({(q[0], q[1]) for q, fi in zip(pts, f) if q[2] * fi > 0}) < 2:
-            return False
+        places = {(q[0], q[1]) for q, fi in zip(pts, f) if q[2] * fi > 0}
         total = [sum(a for a, _ in g), sum(b for _, b in g), sum(q[0] * b - q[1] * a for (a, b), q in zip(g, pts))]
-        return total == p
+        for reg, blk in zip(regions, blocks):  # each cell's force acts at its pressure centroid
+            vs, tris = cells_of(blk)
+            if not tiles(reg, vs, tris) or len(blk["forces"]) != len(tris):
+                return False
+            for t, (a, b) in zip(tris, ([rational(x) for x in gk] for gk in blk["forces"])):
+                Fk, (mx, my) = cell_measures(reg, [vs[i] for i in t])
+                rho = reg["mu"] * Fk
+                if ((a, b) != (0, 0)) if rho == 0 else a * a + b * b >= rho * rho:
+                    return False
+                if rho > 0:
+                    places.add((mx / Fk, my / Fk))
+                    total = [total[0] + a, total[1] + b, total[2] + (mx * b - my * a) / Fk]
+        return len(places) >= 2 and total == p
 
     def speeds(q, u):  # None if fine, else the reason
         if not any(q):
@@ -588,13 +758,29 @@ def verify_motion(scene, cert):
         return q[0] * p[0] + q[1] * p[1] + q[2] * p[2]
 
     if claim == "sticks" and known:
-        return None if sticks(given, cert["support_forces"]) else "stick"
+        if regions and any(not tiles(reg, *cells_of(blk)) for reg, blk in zip(regions, cert["regions"])):
+            return "tiling"
+        return None if sticks(given, cert["support_forces"], cert.get("regions", ())) else "stick"
     if claim == "slides":
         q, u = [rational(v) for v in cert["twist"]], [rational(v) for v in cert["speed_bounds"]]
         if speeds(q, u):
             return speeds(q, u)
         if known:
-            return None if power(q) >= sum(qq[2] * f * v for qq, f, v in zip(pts, given, u)) else "power"
+            bound = sum(qq[2] * f * v for qq, f, v in zip(pts, given, u))
+            for reg, blk in zip(regions, cert.get("regions", ())):  # mu sum_cells sum_j w_j u_j
+                vs, tris = cells_of(blk)
+                if not tiles(reg, vs, tris):
+                    return "tiling"
+                ub = [rational(v) for v in blk["speed_bounds"]]
+                if len(ub) != len(vs) or any(v < 0 or v * v < (q[0] - q[2] * y) ** 2 + (q[1] + q[2] * x) ** 2
+                                             for v, (x, y) in zip(ub, vs)):
+                    return "speed"
+                for t in tris:
+                    a, b, c3 = (vs[i] for i in t)
+                    area = ((b[0] - a[0]) * (c3[1] - a[1]) - (b[1] - a[1]) * (c3[0] - a[0])) / 2
+                    pv = [pressure(reg, v) for v in (a, b, c3)]
+                    bound += reg["mu"] * area * sum((pj + sum(pv)) * ub[i] for pj, i in zip(pv, t)) / 12
+            return None if power(q) >= bound else "power"
         y = [rational(v) for v in cert["dual"]]
         if any(q_[3] is None and q_[2] * v > y[0] + y[1] * q_[0] + y[2] * q_[1] for q_, v in zip(pts, u)):
             return "dual"
@@ -729,7 +915,7 @@ def verify(scene, cert):
     keys = set(cert)
     allowed = {"wrenchkit_certificate", "property", "holds", "combination", "independent", "twist", "reading",
                "load", "motion", "support_forces", "speed_bounds", "dual", "vertices", "sticking", "sliding",
-               "holding", "failing"}
+               "holding", "failing", "regions"}
     if keys - allowed:
         return "unknown key"
     if cert.get("wrenchkit_certificate") == 1 and cert.get("property") in ("motion", "hold"):

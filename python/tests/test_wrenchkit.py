@@ -386,3 +386,33 @@ def test_reference_of_own_scenes_is_the_command_s_corpus(tmp_path):
     with pytest.raises(wrenchkit.InputError, match="bad.jsonl:2: contacts\\[0\\].normal: zero vector"):
         wrenchkit.reference(bad, tmp_path / "nothing")
     assert not (tmp_path / "nothing").exists()
+
+
+SQUARE_REGION = {"support": {"mu": 1, "regions": [{"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]],
+                                                    "pressure": "uniform", "force": 1}]}}
+
+
+def test_support_regions_power_motion_and_bad_regions():
+    # The uniform square [-1,1]^2 (theory-sliding.md section 6): h(0,0,1) = (sqrt 2 + asinh 1)/3, exact centre.
+    import math
+    s = wrenchkit.sliding(SQUARE_REGION, twist=(0, 0, 1))
+    lo, hi = s["power_bracket"]
+    truth = (math.sqrt(2) + math.asinh(1)) / 3
+    # (the float truth is itself within an ulp of the true value)
+    assert isinstance(lo, Fraction) and lo <= truth * (1 + 1e-15) and truth * (1 - 1e-15) <= hi
+    assert (hi - lo) / lo <= Fraction(1, 10**6)
+    assert s["center_of_friction"] == (0, 0) and s["total_force"] == 1
+    assert s["regions"][0]["area"] == 4 and s["regions"][0]["second_moments"] == (Fraction(1, 3), 0, Fraction(1, 3))
+    coarse = wrenchkit.sliding(SQUARE_REGION, twist=(0, 0, 1), tolerance="1/100")
+    assert coarse["power_bracket"][0] <= truth * (1 + 1e-15) and truth * (1 - 1e-15) <= coarse["power_bracket"][1]
+    t = wrenchkit.sliding(SQUARE_REGION, twist=(3, 4, 0))
+    assert t["motion"] == "translation" and t["load"] == (Fraction(3, 5), Fraction(4, 5), 0)
+    stick = wrenchkit.limit_surface(SQUARE_REGION, load=(0, 0, "1/2"))
+    slide = wrenchkit.limit_surface(SQUARE_REGION, load=(0, 0, "4/5"))
+    assert stick["motion"] == "sticks" and slide["motion"] == "slides"
+    assert wrenchkit.check(SQUARE_REGION, slide["certificate_json"])["accepted"]
+    assert wrenchkit.limit_surface(SQUARE_REGION, load=(0, 0, "1/2"), mode="exact")["motion"] == "sticks"
+    bad = {"support": {"mu": 1, "regions": [{"outline": [[0, 0], [1, 1], [1, 0], [0, 1]], "pressure": "uniform",
+                                             "force": 1}]}}
+    with pytest.raises(wrenchkit.InputError, match=r"support\.regions\[0\]\.outline: is not a simple polygon"):
+        wrenchkit.Scene(bad)

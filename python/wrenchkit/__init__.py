@@ -107,9 +107,9 @@ class Scene:
     Scene(data) where data is a dict (or list-free mapping) in the JSON scene format with Python
     numbers (int, str, Fraction, Decimal, float: see the module docstring), a JSON text (a str that
     starts with "{"), or a path to a JSON scene file (str or os.PathLike). "wrenchkit": 1 may be
-    omitted from a dict. limits: max_digits, max_exponent, max_file_size, max_contacts, max_total_digits,
-    max_digits_times_contacts (as the CLI's --max-* options; the scene's questions keep them). Raises
-    InputError with the command line's message.
+    omitted from a dict. limits: max_digits, max_exponent, max_file_size, max_contacts, max_region_vertices,
+    max_total_digits, max_digits_times_contacts (as the CLI's --max-* options; the scene's questions keep them).
+    Raises InputError with the command line's message.
     """
 
     def __init__(self, data, *, limits=None):
@@ -238,14 +238,22 @@ def limit_surface(scene, sides=32, *, tolerance=None, twist=None, load=None, mod
     smallest sides whose certified relative error is at most tolerance. mode: "hybrid" (default: the motion
     by the float twin's certified search on the true surface first, the polygons when it cannot tell) or
     "exact" (the polygons only).
+
+    A support with regions (docs/regions.md) has no polytope: {"regions", "total_force", "center_of_friction",
+    "mu_f0", ...}; twist adds "power_bracket" (certified, relative width <= tolerance, default 1e-6) and
+    "load_box"; load adds "motion" and "certificate_json" (checked by the independent checker).
     """
     tol = None if tolerance is None else _number_text(tolerance, "tolerance")
     return _core.limit_surface(_scene(scene), int(sides), tol, _vec(twist, "twist"), _vec(load, "load"), mode)
 
 
-def sliding(scene, twist=None, sides=64, mode="hybrid"):
-    """Centre of friction and the frictional load for a twist (theory.md section 10), exact bounds."""
-    return _core.sliding(_scene(scene), _vec(twist, "twist"), int(sides), mode)
+def sliding(scene, twist=None, sides=64, mode="hybrid", *, tolerance=None):
+    """Centre of friction and the frictional load for a twist (theory.md section 10), exact bounds.
+
+    With support regions (docs/regions.md): the power and the load are certified brackets whose relative width
+    is at most tolerance (default 1e-6): "power_bracket", "load_box"."""
+    tol = None if tolerance is None else _number_text(tolerance, "tolerance")
+    return _core.sliding(_scene(scene), _vec(twist, "twist"), int(sides), mode, tol)
 
 
 def reference(scenes, out, sides=16):
