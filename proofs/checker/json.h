@@ -33,7 +33,7 @@ class Reader {
  public:
   enum class Kind { null, boolean, number, string, array, object };
 
-  Reader(std::string_view text, std::size_t max_depth) : text_(text), max_depth_(max_depth) { stack_.reserve(8); }
+  Reader(std::string_view text, std::size_t max_depth) : text_(text), max_depth_(max_depth) { stack_.reserve(4); }
 
   Kind peek();  // kind of the next value; a syntax error if there is none
   void begin_object();
@@ -65,7 +65,7 @@ class Reader {
     std::string_view key;   // the current member's key (objects)
     // Keys seen (objects), to reject duplicates: few[0..count) compared one by one while there are at
     // most kFewKeys, then all of them in the hash set `many`.
-    static constexpr std::size_t kFewKeys = 16;
+    static constexpr std::size_t kFewKeys = 8;
     std::string_view few[kFewKeys];
     std::unordered_set<std::string_view> many;
   };
