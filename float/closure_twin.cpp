@@ -57,7 +57,7 @@ bool static_generators(const std::vector<Point_contact>& contacts, Reading readi
   // W(p, F) for F = (fx, fy) with |Fx − fx| ≤ ex, |Fy − fy| ≤ ey: m̂ = fl(fl(ax·fy) − fl(ay·fx)) and
   //   |m − m̂| ≤ u·(|m̂| + |fl(ax·fy)| + |fl(ay·fx)|) + |ax|·ey + |ay|·ex.
   Float_kernel::Column_bounds b;
-  const auto push = [&out, &b, u, inflate, slack](const Point_contact& p, double fx, double ex, double fy, double ey) {
+  const auto push = [&out, &b](const Point_contact& p, double fx, double ex, double fy, double ey) {
     const double p1 = p.ax * fy, p2 = p.ay * fx, m = p1 - p2;
     const double em = (u * (std::fabs(m) + std::fabs(p1) + std::fabs(p2)) + std::fabs(p.ax) * ey + std::fabs(p.ay) * ex) *
                           inflate + slack;
