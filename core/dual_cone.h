@@ -164,8 +164,12 @@ class Dual_cone_builder {
       return false;
     }
     out_.shape = Dual_shape::polygon;
-    out_.edges = (s == Sign::positive) ? std::vector<std::size_t>{a, b, c}
-                                       : std::vector<std::size_t>{a, c, b};
+    // Room for a polygon of a few edges in both edge lists (they are swapped at each cut), so that small
+    // cones grow without reallocating.
+    out_.edges.reserve(8);
+    scratch_.reserve(8);
+    if (s == Sign::positive) out_.edges.assign({a, b, c});
+    else out_.edges.assign({a, c, b});
     return true;
   }
 

@@ -38,6 +38,17 @@ std::vector<Bounded3> generators(const std::vector<Bounded_contact>& contacts, R
 // Throws std::invalid_argument for a zero normal, a negative or non-finite μ.
 std::vector<Bounded_contact> bounded_contacts(const std::vector<Point_contact>& contacts);
 
+// [FL-1 "Static generators"] The generators of plain-double contacts (each double exact), in the order
+// of generators(), computed in plain doubles with a bound on each coordinate's rounding error taken from
+// the formula (a few products of magnitudes with u = 2^-53; no TwoSum, no fma): appended to `out`, with
+// their column bounds for Stage 0 in `columns` (if given), true. False, and `out` unchanged, when a
+// nonzero input's magnitude is outside [2^-64, 2^64] (or not finite): the guard under which every
+// operation rounds relative to its result and Stage 0's guard holds. Inputs validated by the caller.
+// Exact zeros of the generators' determinants are not certified this way (the bounds are not 0): the
+// robot-side calls use these first and the running-error generators only when a predicate is undecided.
+bool static_generators(const std::vector<Point_contact>& contacts, Reading reading, std::vector<Bounded3>& out,
+                       Float_kernel::Column_bounds* columns = nullptr);
+
 enum class Verdict { closed, open, undecided };
 
 // Force closure (friction reading) and first-order form closure (frictionless reading).

@@ -22,6 +22,14 @@ using Bounded3 = std::array<Bounded, 3>;
 class Float_kernel {
  public:
   explicit Float_kernel(std::vector<Bounded3> g) : g_(std::move(g)) { stage0_bounds(); }
+  // Stage 0 from column bounds the caller computed with the generators: M_c ≥ max |x̂_c|, Mu_c ≥ max(|x̂_c| + e_c)
+  // and E_c ≥ max e_c over column c. The caller also guarantees Stage 0's guard (every nonzero |x̂| in
+  // [2^-300, 2^300], e < 2^300, Mu ≤ 2^301): the static generators of float/closure_twin.h do, by their
+  // input range (proofs/notes/FL-1, "Static generators").
+  struct Column_bounds {
+    double M[3] = {0, 0, 0}, Mu[3] = {0, 0, 0}, E[3] = {0, 0, 0};
+  };
+  Float_kernel(std::vector<Bounded3> g, const Column_bounds& b) : g_(std::move(g)) { stage0_from(b.M, b.Mu, b.E); }
   std::size_t size() const { return g_.size(); }
   const std::vector<Bounded3>& generators() const { return g_; }
 
@@ -173,6 +181,9 @@ class Float_kernel {
         Mu[c] = u > Mu[c] ? u : Mu[c];
         E[c] = x[c].e > E[c] ? x[c].e : E[c];
       }
+    stage0_from(M, Mu, E);
+  }
+  void stage0_from(const double (&M)[3], const double (&Mu)[3], const double (&E)[3]) {
     const double in = 6 * (E[0] * Mu[1] * Mu[2] + Mu[0] * E[1] * Mu[2] + Mu[0] * Mu[1] * E[2]);
     const double round = 0x1p-53 * 48 * (M[0] * M[1] * M[2]);
     scene_bound_ = (in + round) * (1 + 0x1p-45) + 0x1p-1000;

@@ -5,6 +5,8 @@
 // (WRENCHKIT_SEED overrides); a failing case prints its seed and dumps its scene.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <random>
 #include <string>
 #include <vector>
@@ -156,6 +158,68 @@ TEST(IntegerCertificates, DecimalScenesAsUsersWriteThem) {
     }
   }
   EXPECT_GT(t.closed, 20);
+}
+
+// [FC-2] Four rows: four_spanning_weights (cofactors, no LP) succeeds exactly when the rows positively
+// span R³ (the rational LP's verdict on −(r_b1 + r_b2 + r_b3) with b an independent triple), and then its
+// weights are the LP's λ = μ + 1_b up to a positive factor — so positive_certificate's coprime weights
+// are the same either way.
+TEST(IntegerCertificates, FourGeneratorsNeedNoLp) {
+  const std::uint64_t seed = test::seed(4444);
+  std::mt19937_64 rng(seed);
+  int spanning = 0, not_spanning = 0;
+  for (int i = 0; i < 400; ++i) {
+    const std::string text =
+        test::scene_json(i % 2 ? test::random_contacts(rng, 3 + i % 4) : test::decimal_contacts(rng, 3 + i % 4));
+    const Scene s = read_scene(text, Input_limits{});
+    const Exact_kernel k(s, Reading::friction, {}, Exact_kernel::With_provenance{});
+    if (k.size() < 4) continue;
+    for (int trial = 0; trial < 10; ++trial) {
+      std::vector<std::size_t> pick(k.size());
+      for (std::size_t j = 0; j < pick.size(); ++j) pick[j] = j;
+      std::shuffle(pick.begin(), pick.end(), rng);
+      const std::size_t rows[4] = {pick[0], pick[1], pick[2], pick[3]};
+      const std::vector<std::size_t> cols(rows, rows + 4);
+      std::vector<std::size_t> b;  // an independent triple of the four, if any
+      for (int x = 0; x < 4 && b.empty(); ++x)
+        for (int y = x + 1; y < 4 && b.empty(); ++y)
+          for (int z = y + 1; z < 4 && b.empty(); ++z)
+            if (k.det_sign(rows[x], rows[y], rows[z]) != Sign::zero) b = {rows[x], rows[y], rows[z]};
+      bool member = false;
+      Cone_membership q;
+      if (!b.empty()) {
+        Wrench target{Rational(0), Rational(0), Rational(0)};
+        for (const Wrench& w : rows_as_wrenches(k, b)) target = {target.fx - w.fx, target.fy - w.fy, target.m - w.m};
+        q = cone_membership(rows_as_wrenches(k, cols), target);
+        member = q.member;
+      }
+      std::array<Integer, 4> lambda;
+      const bool four = four_spanning_weights(k, rows, lambda);
+      std::int64_t probe[3];
+      bool small = true;
+      for (std::size_t r : rows) small = small && k.small_row(r, probe);
+      const std::string where = "seed " + std::to_string(seed) + " case " + std::to_string(i) + ": " + text;
+      if (!small) continue;
+      ASSERT_EQ(four, member) << where;
+      if (!four) {
+        ++not_spanning;
+        continue;
+      }
+      ++spanning;
+      // λ_j ∝ μ_j + [j ∈ b]: the ratios to the first are equal
+      auto oracle = [&](std::size_t j) {
+        Rational v = q.weights[j];
+        if (std::find(b.begin(), b.end(), rows[j]) != b.end()) v += 1;
+        return v;
+      };
+      for (std::size_t j = 0; j < 4; ++j) {
+        ASSERT_GT(lambda[j], 0) << where;
+        ASSERT_EQ(Rational(lambda[j]) * oracle(0), Rational(lambda[0]) * oracle(j)) << where;
+      }
+    }
+  }
+  EXPECT_GT(spanning, 100);
+  EXPECT_GT(not_spanning, 100);
 }
 
 // Equilibrium: the certificate is the rational LP's, weight for weight, in exact mode; every mode's

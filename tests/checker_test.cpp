@@ -797,9 +797,206 @@ TEST(CheckerMutations, NegativeCertificates) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Sliding (certificate-format.md §6): the support in the scene, and property "motion"
+// Fixed width against GMP. Closure certificates are checked in fixed-width integers first and by GMP
+// integers whenever that does not accept them (Limits::fixed_width); the two must agree, message
+// included, on every example, on mutations of examples and scenes, and on random scenes whose numbers
+// have mixed numbers of digits (different denominators) and sizes around and past 64 bits, with valid
+// certificates and invalid ones.
 
 using Q = mpq_class;
+
+Result check_gmp_only(const std::string& scene, const std::string& cert) {
+  Limits l;
+  l.fixed_width = false;
+  return check(scene, cert, l);
+}
+// The fixed-width result; fails the test if GMP alone says otherwise.
+Result expect_same(const std::string& scene, const std::string& cert, const std::string& what) {
+  const Result fixed = check(scene, cert), gmp = check_gmp_only(scene, cert);
+  EXPECT_EQ(fixed.outcome, gmp.outcome) << what << "\nscene: " << scene << "\ncertificate: " << cert;
+  EXPECT_EQ(fixed.message, gmp.message) << what << "\nscene: " << scene << "\ncertificate: " << cert;
+  return fixed;
+}
+
+// text with one random digit replaced by a random digit (the text itself if it has none)
+std::string mutate_digit(std::string text, std::mt19937_64& rng) {
+  std::vector<std::size_t> at;
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] >= '0' && text[i] <= '9') at.push_back(i);
+  if (!at.empty()) text[at[rng() % at.size()]] = static_cast<char>('0' + rng() % 10);
+  return text;
+}
+
+TEST(CheckerFixedWidth, ExamplesAndMutations) {
+  std::mt19937_64 rng(19);
+  int checked = 0, accepted = 0;
+  for (const std::string suffix : {".valid.json", ".invalid.json"})
+    for (const Example& e : load_examples(suffix)) {
+      accepted += expect_same(e.scene, e.cert, e.file).outcome == Outcome::accepted;
+      for (int k = 0; k < 30; ++k) {
+        expect_same(e.scene, mutate_digit(e.cert, rng), e.file + ": a digit of the certificate changed");
+        expect_same(mutate_digit(e.scene, rng), e.cert, e.file + ": a digit of the scene changed");
+        checked += 2;
+      }
+    }
+  EXPECT_GE(checked, 2000);
+  EXPECT_GE(accepted, 20);
+}
+
+// A random decimal with `digits` digits after the point and up to `whole` digits before it, as text and
+// value; sometimes a fraction p/q.
+struct Number {
+  std::string text;
+  Q value;
+};
+Number random_number(std::mt19937_64& rng, int whole, int digits) {
+  std::string t = rng() % 2 ? "-" : "";
+  if (rng() % 5 == 0) {  // a fraction
+    const std::string p = std::to_string(1 + rng() % 1000000), q = std::to_string(1 + rng() % 999983);
+    t += p + "/" + q;
+    Q v(t);
+    v.canonicalize();
+    return {"\"" + t + "\"", v};
+  }
+  unsigned long long bound = 1;
+  for (int k = 0; k < whole; ++k) bound *= 10;
+  t += std::to_string(rng() % bound);  // no leading zero (JSON)
+  std::string frac;
+  for (int k = 0; k < digits; ++k) frac += static_cast<char>('0' + rng() % 10);
+  Q v(mpz_class(t + frac, 10), 1);
+  mpz_class ten;
+  mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(digits));
+  v /= ten;
+  return {t + (digits > 0 ? "." + frac : ""), v};
+}
+
+// the digits of a scene or certificate number for a test scenario: short (6), mixed (1 to 9), long (12 to
+// 20, past 64 bits) or very long (30)
+int digits_for(int scenario, std::mt19937_64& rng) {
+  switch (scenario % 4) {
+    case 0: return 6;
+    case 1: return 1 + static_cast<int>(rng() % 9);
+    case 2: return 12 + static_cast<int>(rng() % 9);
+    default: return 30;
+  }
+}
+
+TEST(CheckerFixedWidth, RandomPositiveCertificates) {
+  // Wrench contacts g1, g2, g3 and g4 = -(a1 g1 + a2 g2 + a3 g3) / a4: the weights a are a valid
+  // combination (when g1, g2, g3 are independent); one weight changed is not.
+  std::mt19937_64 rng(1919);
+  int accepted = 0;
+  for (int scenario = 0; scenario < 400; ++scenario) {
+    const int digits = digits_for(scenario, rng);
+    Number g[3][3];
+    for (auto& w : g)
+      for (auto& x : w) x = random_number(rng, scenario % 2 ? 3 : 1, digits);
+    Q a[4];
+    std::string a_text[4];
+    for (int k = 0; k < 4; ++k) {
+      a_text[k] = std::to_string(1 + rng() % (scenario % 2 ? 1000000000 : 1000)) +
+                  (rng() % 3 == 0 ? "/" + std::to_string(1 + rng() % 9) : "");
+      if (scenario % 4 == 3) a_text[k] = "1234567890123456789012345" + std::to_string(rng() % 100);
+      a[k] = Q(a_text[k]);
+      a[k].canonicalize();
+    }
+    std::string contacts;
+    for (const auto& w : g) contacts += R"({"wrench": [)" + w[0].text + ", " + w[1].text + ", " + w[2].text + "]}, ";
+    Q g4[3];
+    for (int i = 0; i < 3; ++i) g4[i] = -(a[0] * g[0][i].value + a[1] * g[1][i].value + a[2] * g[2][i].value) / a[3];
+    if (g4[0] == 0 && g4[1] == 0 && g4[2] == 0) continue;
+    contacts += R"({"wrench": [")" + g4[0].get_str() + R"(", ")" + g4[1].get_str() + R"(", ")" + g4[2].get_str() + "\"]}";
+    const std::string scene = R"({"wrenchkit": 1, "contacts": [)" + contacts + "]}";
+    auto cert = [&](const std::string (&w)[4]) {
+      std::string c = R"({"wrenchkit_certificate": 1, "property": "force_closure", "holds": true, "combination": [)";
+      for (int k = 0; k < 4; ++k)
+        c += (k ? ", " : "") + std::string(R"({"contact": )") + std::to_string(k) + R"(, "edge": "wrench", "weight": ")" +
+             w[k] + "\"}";
+      return c + R"(], "independent": [{"contact": 0, "edge": "wrench"}, {"contact": 1, "edge": "wrench"}, )"
+                 R"({"contact": 2, "edge": "wrench"}]})";
+    };
+    const std::string what = "scenario " + std::to_string(scenario);
+    accepted += expect_same(scene, cert(a_text), what).outcome == Outcome::accepted;
+    std::string changed[4] = {a_text[0], a_text[1], a_text[2], a_text[3]};
+    changed[rng() % 4] += "1";
+    EXPECT_EQ(expect_same(scene, cert(changed), what + ", a weight changed").outcome, Outcome::rejected);
+  }
+  EXPECT_GE(accepted, 350);
+}
+
+TEST(CheckerFixedWidth, RandomNegativeCertificates) {
+  // Point contacts whose friction edges all have power >= 0 against a random twist (a contact is dropped,
+  // or its normal flipped, to make it so): the twist with its reading is valid; a reading moved, or the
+  // twist negated, is not.
+  std::mt19937_64 rng(2019);
+  int accepted = 0;
+  for (int scenario = 0; scenario < 400; ++scenario) {
+    const int digits = digits_for(scenario, rng);
+    Number t[3];
+    for (auto& x : t) x = random_number(rng, 2, scenario % 4 == 3 ? 25 : 0);
+    if (scenario % 5 == 0) t[2] = {"0", Q(0)};  // a translation: the reading is a direction
+    if (t[0].value == 0 && t[1].value == 0 && t[2].value == 0) continue;
+    std::string contacts;
+    int kept = 0;
+    for (int c = 0; c < 6; ++c) {
+      Number x[5];
+      for (int k = 0; k < 4; ++k) x[k] = random_number(rng, 1, digits);
+      if (x[2].value == 0 && x[3].value == 0) continue;
+      x[4] = random_number(rng, 1, 3);
+      x[4].text = x[4].text[0] == '-' ? x[4].text.substr(1) : x[4].text;  // mu >= 0
+      if (x[4].text[0] == '"') x[4].text = "\"" + x[4].text.substr(x[4].text[1] == '-' ? 2 : 1);
+      x[4].value = abs(x[4].value);
+      // power of the force f at p against t: vx fx + vy fy + w (px fy - py fx)
+      auto power = [&](const Q& fx, const Q& fy) -> Q {
+        return t[0].value * fx + t[1].value * fy + t[2].value * (x[0].value * fy - x[1].value * fx);
+      };
+      const Q &nx = x[2].value, &ny = x[3].value, &mu = x[4].value;
+      const Q left = power(nx - mu * ny, ny + mu * nx), right = power(nx + mu * ny, ny - mu * nx);
+      std::string n0 = x[2].text, n1 = x[3].text;
+      if (left < 0 && right < 0) {
+        auto minus = [](const std::string& text) {  // the number text negated, as written otherwise
+          const std::size_t at = text[0] == '"' ? 1 : 0;
+          return text[at] == '-' ? text.substr(0, at) + text.substr(at + 1) : text.substr(0, at) + "-" + text.substr(at);
+        };
+        n0 = minus(n0), n1 = minus(n1);
+      } else if (left < 0 || right < 0) {
+        continue;
+      }
+      contacts += std::string(kept++ ? ", " : "") + R"({"at": [)" + x[0].text + ", " + x[1].text + R"(], "normal": [)" +
+                  n0 + ", " + n1 + R"(], "mu": )" + x[4].text + "}";
+    }
+    const std::string scene = R"({"wrenchkit": 1, "contacts": [)" + contacts + "]}";
+    const Q &vx = t[0].value, &vy = t[1].value, &w = t[2].value;
+    std::string reading;
+    Q where[2];
+    if (w != 0) {
+      where[0] = -vy / w, where[1] = vx / w;
+      reading = std::string(R"({"label": ")") + (w > 0 ? "+" : "-") + R"(", "point": [")";
+    } else {
+      where[0] = -vy * 3, where[1] = vx * 3;
+      reading = R"({"label": "infinity", "direction": [")";
+    }
+    auto cert = [&](const Q (&tw)[3], const Q (&p)[2]) {
+      return R"({"wrenchkit_certificate": 1, "property": "force_closure", "holds": false, "twist": [")" +
+             tw[0].get_str() + R"(", ")" + tw[1].get_str() + R"(", ")" + tw[2].get_str() + R"("], "reading": )" +
+             reading + p[0].get_str() + R"(", ")" + p[1].get_str() + "\"]}}";
+    };
+    const std::string what = "scenario " + std::to_string(scenario);
+    const Q twist[3] = {t[0].value, t[1].value, t[2].value};
+    accepted += expect_same(scene, cert(twist, where), what).outcome == Outcome::accepted;
+    const Q moved[2] = {where[0] + Q(1, 3), where[1]};
+    const Outcome moved_outcome = expect_same(scene, cert(twist, moved), what + ", the reading moved").outcome;
+    if (w != 0) {  // (a direction may stay parallel)
+      EXPECT_EQ(moved_outcome, Outcome::rejected) << what;
+    }
+    const Q minus[3] = {-twist[0], -twist[1], -twist[2]};
+    expect_same(scene, cert(minus, where), what + ", the twist negated");
+  }
+  EXPECT_GE(accepted, 350);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sliding (certificate-format.md §6): the support in the scene, and property "motion"
 
 // support = {...}: a scene with only this support (and, if com, body.com).
 std::string with_support(const std::string& support, const std::string& com = "") {

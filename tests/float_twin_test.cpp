@@ -4,6 +4,7 @@
 // abstains.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
@@ -146,6 +147,120 @@ TEST(FloatKernel, SceneBoundSignsAreExactAndExtremeMagnitudesDecline) {
     EXPECT_EQ(fl::Float_kernel(g).scene_bound(), Bounded::kInf) << extreme;
     EXPECT_EQ(fl::Float_kernel(g).cross_bound(0), Bounded::kInf) << extreme;
   }
+}
+
+// [FL-1 "Static generators"] The robot-side static generators: every coordinate's bound contains the exact
+// generator of the doubles as given, the column bounds cover every coordinate, Stage 0 from those bounds
+// contains every determinant's error and its signs are the exact ones — at mixed scales 2^-64 … 2^64 with
+// exact zeros, cancelling normals and μ = 0; inputs outside the range are declined; and force/form closure
+// through them equal the exact verdicts (exactly degenerate scenes decided by the running-error fallback).
+TEST(StaticGenerators, BoundsContainTheExactGeneratorsAndSignsAreExactAtMixedScales) {
+  std::mt19937_64 rng(test::seed(1919));
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> scale(-60, 60);
+  auto value = [&](int k) {  // a random double of magnitude in [2^k, 2^(k+1)), sometimes exactly zero
+    if (rng() % 10 == 0) return 0.0;
+    const double u = unit(rng);
+    return std::ldexp(u < 0 ? u - 1 : u + 1, k);
+  };
+  auto in_range = [](const fl::Point_contact& p) {  // the static generators' guard, as documented
+    for (double x : {p.ax, p.ay, p.nx, p.ny, p.mu})
+      if (x != 0 && !(std::fabs(x) >= 0x1p-64 && std::fabs(x) <= 0x1p64)) return false;
+    return true;
+  };
+  int decided = 0, declined = 0;
+  for (int t = 0; t < 3000; ++t) {
+    const int s = t % 3 == 0 ? 0 : scale(rng);  // one scale for the scene, or each number its own
+    std::vector<fl::Point_contact> c(2 + t % 5);
+    for (auto& p : c) {
+      const auto k = [&] { return t % 3 == 1 ? s : scale(rng) / 2; };
+      p = {value(k()), value(k()), value(k()), value(k()), t % 4 == 0 ? 0.0 : std::fabs(value(k() / 2))};
+      ASSERT_TRUE(in_range(p));
+      if (p.nx == 0 && p.ny == 0) p.nx = 1;
+      if (t % 7 == 0) p.ny = -p.mu * p.nx;  // edges close to cancelling
+      if (p.nx == 0 && p.ny == 0) p.nx = 1;
+      if (!in_range(p)) p.ny = 1;  // (a cancelling product may leave the range)
+    }
+    for (Reading reading : {Reading::friction, Reading::frictionless}) {
+      std::vector<fl::Bounded3> g;
+      fl::Float_kernel::Column_bounds columns;
+      ASSERT_TRUE(fl::static_generators(c, reading, g, &columns)) << "case " << t;
+      // The exact generators of the doubles, in the order of the engine.
+      std::vector<std::array<Rational, 3>> q;
+      for (const auto& p : c)
+        point_contact_generators(Rational(p.ax), Rational(p.ay), Rational(p.nx), Rational(p.ny), Rational(p.mu),
+                                 p.mu != 0, reading, [&](Edge, const Rational& fx, const Rational& fy, const Rational& m) {
+                                   q.push_back({fx, fy, m});
+                                 });
+      ASSERT_EQ(q.size(), g.size());
+      for (std::size_t i = 0; i < g.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+          ASSERT_TRUE(contains(g[i][k], q[i][k])) << "case " << t << " generator " << i << " coordinate " << k;
+          ASSERT_LE(std::fabs(g[i][k].v), columns.M[k]);
+          ASSERT_LE(g[i][k].e, columns.E[k]);
+          ASSERT_LE(abs(q[i][k]), Rational(columns.Mu[k]));
+        }
+      const fl::Float_kernel kernel(g, columns);
+      ASSERT_LT(kernel.scene_bound(), Bounded::kInf) << "case " << t;
+      for (std::size_t i = 0; i < g.size(); ++i)
+        for (std::size_t j = i + 1; j < g.size(); ++j)
+          for (std::size_t l = j + 1; l < g.size(); ++l) {
+            const auto &x = q[i], &y = q[j], &z = q[l];
+            const Rational exact = x[0] * (y[1] * z[2] - y[2] * z[1]) - x[1] * (y[0] * z[2] - y[2] * z[0]) +
+                                   x[2] * (y[0] * z[1] - y[1] * z[0]);
+            const Sign sign = kernel.det_sign(i, j, l);
+            if (sign == Sign::uncertain) continue;
+            ++decided;
+            ASSERT_EQ(sign, sign_of(sgn(exact))) << "case " << t << " triple " << i << " " << j << " " << l;
+          }
+    }
+    fl::Point_contact out_of_range = c[0];
+    out_of_range.ax = t % 2 ? 0x1p70 : 0x1p-70;
+    std::vector<fl::Bounded3> none;
+    EXPECT_FALSE(fl::static_generators({out_of_range}, Reading::friction, none));
+    EXPECT_TRUE(none.empty());
+    ++declined;
+  }
+  EXPECT_GT(decided, 10000);
+}
+
+TEST(StaticGenerators, RobotSideVerdictsEqualExactOnesIncludingDegenerateScenes) {
+  std::mt19937_64 rng(test::seed(2019));
+  int checked = 0;
+  for (int t = 0; t < 1500; ++t) {
+    // Half: random decimals-as-doubles at a random scale; half: small integers (exactly degenerate
+    // configurations are common, and only the running-error fallback certifies their zeros).
+    const double scale = std::ldexp(1.0, static_cast<int>(rng() % 41) - 20);
+    std::vector<fl::Point_contact> c(3 + t % 4);
+    for (auto& p : c) {
+      auto v = [&] {
+        return t % 2 ? static_cast<double>(static_cast<int>(rng() % 5) - 2)
+                     : scale * (static_cast<double>(rng() % 2000001) / 1e6 - 1);
+      };
+      p = {v(), v(), v(), v(), t % 2 ? static_cast<double>(rng() % 3) / 2 : static_cast<double>(rng() % 600) / 1000};
+      if (p.nx == 0 && p.ny == 0) p.nx = 1;
+    }
+    Scene scene;
+    for (const auto& p : c) {
+      Contact x;
+      x.at = {Rational(p.ax), Rational(p.ay)};
+      x.normal = {Rational(p.nx), Rational(p.ny)};
+      x.mu = Rational(p.mu);
+      scene.contacts.push_back(x);
+    }
+    const fl::Verdict force = fl::force_closure(c), form = fl::form_closure(c);
+    const bool exact_force = decide_closure(scene, Property::force_closure, Mode::exact, false).holds;
+    const bool exact_form = decide_closure(scene, Property::form_closure, Mode::exact, false).holds;
+    if (force != fl::Verdict::undecided) {
+      ASSERT_EQ(force == fl::Verdict::closed, exact_force) << "case " << t;
+      ++checked;
+    }
+    if (form != fl::Verdict::undecided) {
+      ASSERT_EQ(form == fl::Verdict::closed, exact_form) << "case " << t;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 2800);
 }
 
 // [FL-5] Quotients and square roots: the bound contains the exact value (checked exactly: for √,

@@ -1,6 +1,7 @@
 #include "exact/io/streaming_scene_reader.h"
 #include "exact/io/support_check.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -19,7 +20,12 @@ struct Defer {};
 // Element k of v, reusing what is there (k ≤ v.size(): elements are visited in order).
 template <class T>
 T& slot(std::vector<T>& v, std::size_t k) {
-  if (k == v.size()) v.emplace_back();
+  if (k == v.size()) {
+    // A reallocation copies every element (Rational's move may allocate, so it is not noexcept and the
+    // vector copies): room for 8 at once, then doubling.
+    if (v.size() == v.capacity()) v.reserve(std::max<std::size_t>(8, 2 * v.capacity()));
+    v.emplace_back();
+  }
   return v[k];
 }
 

@@ -222,8 +222,18 @@ bool parse_impl(std::string_view s, bool json_number, const Input_limits& limits
       mpz_set_ui(mpq_numref(q.get_mpq_t()), m * p);
       mpz_set_ui(mpq_denref(q.get_mpq_t()), 1);
     } else {
-      mpq_set_ui(q.get_mpq_t(), m, p);
-      q.canonicalize();
+      // Lowest terms without a gcd: p = 10^k = 2^k·5^k, so gcd(m, p) = 2^a·5^b with a, b ≤ k.
+      const long k = -scale;
+      unsigned long num = m, den = p;
+      if (num == 0) {
+        den = 1;
+      } else {
+        const long twos = std::min<long>(__builtin_ctzl(num), k);
+        num >>= twos, den >>= twos;
+        for (long fives = 0; fives < k && num % 5 == 0; ++fives) num /= 5, den /= 5;
+      }
+      mpz_set_ui(mpq_numref(q.get_mpq_t()), num);
+      mpz_set_ui(mpq_denref(q.get_mpq_t()), den);
     }
   } else {
     std::string mantissa;

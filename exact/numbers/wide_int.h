@@ -69,12 +69,17 @@ inline i128 minor2(std::int64_t b1, std::int64_t b2, std::int64_t c1, std::int64
   return static_cast<i128>(b1) * c2 - static_cast<i128>(b2) * c1;
 }
 
-// sign det[a; b; c] for |entries| ≤ kMax62.
-inline int det3_sign(const std::int64_t a[3], const std::int64_t b[3], const std::int64_t c[3]) {
+// det[a; b; c] for |entries| ≤ kMax62 (|·| < 2^189).
+inline Int192 det3(const std::int64_t a[3], const std::int64_t b[3], const std::int64_t c[3]) {
   const Int192 t0 = mul(a[0], minor2(b[1], b[2], c[1], c[2]));
   const Int192 t1 = mul(-a[1], minor2(b[0], b[2], c[0], c[2]));
   const Int192 t2 = mul(a[2], minor2(b[0], b[1], c[0], c[1]));
-  return sign(add(add(t0, t1), t2));
+  return add(add(t0, t1), t2);
+}
+
+// sign det[a; b; c] for |entries| ≤ kMax62.
+inline int det3_sign(const std::int64_t a[3], const std::int64_t b[3], const std::int64_t c[3]) {
+  return sign(det3(a, b, c));
 }
 
 // sign det[a; b; c] for |entries| < 2^40: every term and the sum fit __int128 (< 6·2^120).

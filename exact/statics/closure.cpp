@@ -84,15 +84,26 @@ void positive_certificate(const Exact_kernel& k, std::vector<std::size_t> H, Clo
     if (found == 3) break;
   }
   if (found != 3) throw std::logic_error("positive_certificate: the closing generators do not span R³");
-  const Integer_cone_membership lp = cone_membership(k, H, {b[0], b[1], b[2]});
-  if (!lp.member) throw std::logic_error("positive_certificate: exact LP found no combination");
-  // Λ_h = denominator·[h ∈ b] + numerator_h (= denominator·λ_h), then w_h = Λ_h·s_h with s_h = sn/sd.
+  // Λ_h > 0 on the support, Σ Λ_h·r_h = 0: for four generators the cofactors (no LP; the same weights once
+  // scaled to coprime integers), else Λ_h = denominator·[h ∈ b] + numerator_h (= denominator·λ_h).
+  std::vector<Integer> Lambda(H.size());
+  std::array<Integer, 4> four;
+  if (H.size() == 4 && four_spanning_weights(k, {H[0], H[1], H[2], H[3]}, four)) {
+    for (std::size_t i = 0; i < 4; ++i) Lambda[i].swap(four[i]);
+  } else {
+    Integer_cone_membership lp = cone_membership(k, H, {b[0], b[1], b[2]});
+    if (!lp.member) throw std::logic_error("positive_certificate: exact LP found no combination");
+    for (std::size_t i = 0; i < H.size(); ++i) {
+      Lambda[i].swap(lp.numerators[i]);
+      if (H[i] == b[0] || H[i] == b[1] || H[i] == b[2]) Lambda[i] += lp.denominator;
+    }
+  }
+  // w_h = Λ_h·s_h with s_h = sn/sd.
   std::vector<std::pair<std::size_t, Integer>> w;  // (generator, numerator of w_h), over the lcm below
   std::vector<Integer> den;
   Integer l = 1, sn, sd;
   for (std::size_t i = 0; i < H.size(); ++i) {
-    Integer lam = lp.numerators[i];
-    if (H[i] == b[0] || H[i] == b[1] || H[i] == b[2]) lam += lp.denominator;
+    const Integer& lam = Lambda[i];
     if (lam == 0) continue;
     k.scale(H[i], sn, sd);
     w.push_back({H[i], Integer(lam * sn)});
@@ -105,11 +116,12 @@ void positive_certificate(const Exact_kernel& k, std::vector<std::size_t> H, Clo
       mpz_divexact(sd.get_mpz_t(), l.get_mpz_t(), den[i].get_mpz_t());
       w[i].second *= sd;
     }
-    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), w[i].second.get_mpz_t());
+    if (g != 1) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), w[i].second.get_mpz_t());  // (once 1, it stays 1)
   }
+  cert.combination.reserve(w.size());
   for (auto& [h, x] : w) {
-    mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
-    cert.combination.push_back({{k.contact(h), k.edge(h)}, Rational(x)});
+    if (g != 1) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
+    cert.combination.emplace_back(Generator_ref{k.contact(h), k.edge(h)}, Rational(x));
   }
   for (int i = 0; i < 3; ++i) cert.independent[i] = {k.contact(b[i]), k.edge(b[i])};
 }

@@ -305,4 +305,23 @@ Integer_cone_membership cone_membership(const Exact_kernel& k, const std::vector
   return phase1<Gmp_width>(G, X);
 }
 
+bool four_spanning_weights(const Exact_kernel& k, const std::size_t (&rows)[4], std::array<Integer, 4>& lambda) {
+  std::int64_t r[4][3];
+  for (int i = 0; i < 4; ++i)
+    if (!k.small_row(rows[i], r[i])) return false;
+  Int192 d[4];
+  for (int i = 0; i < 4; ++i) {  // λ_i = (−1)^i det of the other three rows, each < 2^189
+    const std::int64_t* m[3];
+    for (int j = 0, t = 0; j < 4; ++j)
+      if (j != i) m[t++] = r[j];
+    const Int192 det = wide::det3(m[0], m[1], m[2]);
+    d[i] = i % 2 ? Fixed_width::neg(det) : det;
+  }
+  const int s = Fixed_width::sign(d[0]);
+  for (const Int192& x : d)
+    if (Fixed_width::sign(x) != s || s == 0) return false;  // not positively spanning
+  for (int i = 0; i < 4; ++i) lambda[static_cast<std::size_t>(i)] = Fixed_width::integer(s > 0 ? d[i] : Fixed_width::neg(d[i]));
+  return true;
+}
+
 }  // namespace wrenchkit

@@ -47,4 +47,12 @@ struct Integer_cone_membership {
 Integer_cone_membership cone_membership(const Exact_kernel& kernel, const std::vector<std::size_t>& columns,
                                         const std::vector<std::size_t>& negated, bool fixed_width = true);
 
+// [FC-2] [FC-5] Four rows that positively span R³ have one combination Σ λ_i·row_i = 0 up to scale (the
+// null space of four vectors of rank 3 is a line): λ_i = (−1)^i·det(the other three rows) — the expansion
+// of a 4×4 determinant with a repeated column — and, as some combination is strictly positive, all λ_i
+// have one sign, made positive here. So the positive certificate of four generators needs no LP: scaled
+// to coprime integers it is the LP's (tests/certificate_lp_test.cpp). Fixed width only (rows at most
+// 2^62 − 1, so every λ_i < 2^189); false otherwise, or when the signs differ (not positively spanning).
+bool four_spanning_weights(const Exact_kernel& kernel, const std::size_t (&rows)[4], std::array<Integer, 4>& lambda);
+
 }  // namespace wrenchkit

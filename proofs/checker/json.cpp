@@ -63,10 +63,12 @@ Reader::Kind Reader::peek() {
 void Reader::open(char c, bool object) {
   space();
   if (pos_ >= text_.size() || text_[pos_] != c) syntax(std::string("expected '") + c + "'");
-  if (stack_.size() >= max_depth_) syntax("nested deeper than " + std::to_string(max_depth_) + " levels");
+  if (depth_ >= max_depth_) syntax("nested deeper than " + std::to_string(max_depth_) + " levels");
   ++pos_;
-  stack_.emplace_back();
-  stack_.back().object = object;
+  if (depth_ == stack_.size()) stack_.emplace_back();
+  Frame& f = stack_[depth_++];
+  f.object = object, f.inside = false, f.count = 0;
+  if (!f.many.empty()) f.many.clear();
 }
 
 void Reader::begin_object() { open('{', true); }
@@ -74,12 +76,12 @@ void Reader::begin_array() { open('[', false); }
 
 // Moves to the next member or element of the innermost container; false (container closed) at c.
 bool Reader::close(char c, const char* after) {
-  Frame& f = stack_.back();
+  Frame& f = top();
   f.inside = false;
   space();
   const bool comma = f.count > 0 && eat(',');
   if (!comma && eat(c)) {  // the closing bracket, not after a comma
-    stack_.pop_back();
+    --depth_;
     return false;
   }
   if (f.count > 0 && !comma) syntax(std::string("expected ',' or '") + c + "' after " + after);
@@ -87,14 +89,22 @@ bool Reader::close(char c, const char* after) {
   return true;
 }
 
-bool Reader::next_key(std::string& key) {
+bool Reader::next_key(std::string_view& key) {
   if (!close('}', "an object member")) return false;
-  Frame& f = stack_.back();
+  Frame& f = top();
   if (pos_ >= text_.size() || text_[pos_] != '"') syntax("expected a string as object key");
-  key = read_string();
+  key = read_string_view();
   space();
   if (!eat(':')) syntax("expected ':' after an object key");
-  if (!f.keys.insert(key).second) fail("duplicate key " + quote(key));
+  bool duplicate = false;
+  if (f.count < Frame::kFewKeys) {
+    for (std::size_t k = 0; k < f.count && !duplicate; ++k) duplicate = f.few[k] == key;
+    if (!duplicate) f.few[f.count] = key;
+  } else {
+    if (f.many.empty()) f.many.insert(f.few, f.few + Frame::kFewKeys);
+    duplicate = !f.many.insert(key).second;
+  }
+  if (duplicate) fail("duplicate key " + quote(key));
   f.key = key;
   f.inside = true, ++f.count;
   return true;
@@ -102,14 +112,41 @@ bool Reader::next_key(std::string& key) {
 
 bool Reader::next_item() {
   if (!close(']', "an array element")) return false;
-  stack_.back().inside = true, ++stack_.back().count;
+  top().inside = true, ++top().count;
   return true;
 }
 
 std::string Reader::string() {
   space();
   if (pos_ >= text_.size() || text_[pos_] != '"') syntax("expected a string");
-  return read_string();
+  std::string out;
+  read_string(out);
+  return out;
+}
+
+std::string_view Reader::string_view() {
+  space();
+  if (pos_ >= text_.size() || text_[pos_] != '"') syntax("expected a string");
+  return read_string_view();
+}
+
+std::string_view Reader::read_string_view() {
+  const std::size_t begin = pos_ + 1;
+  std::size_t end = begin;  // plain ASCII up to the closing quote: the text itself
+  while (end < text_.size()) {
+    const unsigned char d = static_cast<unsigned char>(text_[end]);
+    if (d < 0x20 || d >= 0x80 || d == '"' || d == '\\') break;
+    ++end;
+  }
+  if (end < text_.size() && text_[end] == '"') {
+    pos_ = end + 1;
+    return text_.substr(begin, end - begin);
+  }
+  read_string(scratch_);  // validated and decoded
+  // Without an escape the decoded string is the text between the quotes (UTF-8 is copied as is).
+  if (pos_ - 1 - begin == scratch_.size()) return text_.substr(begin, scratch_.size());
+  decoded_.push_back(scratch_);
+  return decoded_.back();
 }
 
 // The length of the well-formed UTF-8 sequence at pos_ (Unicode Table 3-7), or 0.
@@ -139,13 +176,24 @@ unsigned Reader::hex4() {
   return v;
 }
 
-std::string Reader::read_string() {
+void Reader::read_string(std::string& out) {
   ++pos_;  // the opening quote, checked by the caller
-  std::string out;
+  out.clear();
   for (;;) {
     if (pos_ >= text_.size()) syntax("unterminated string");
     const unsigned char c = static_cast<unsigned char>(text_[pos_]);
-    if (c == '"') return ++pos_, out;
+    if (c == '"') return void(++pos_);
+    if (c >= 0x20 && c < 0x80 && c != '\\') {  // a run of plain ASCII, copied at once
+      std::size_t end = pos_ + 1;
+      while (end < text_.size()) {
+        const unsigned char d = static_cast<unsigned char>(text_[end]);
+        if (d < 0x20 || d >= 0x80 || d == '"' || d == '\\') break;
+        ++end;
+      }
+      out.append(text_.data() + pos_, end - pos_);
+      pos_ = end;
+      continue;
+    }
     if (c < 0x20) syntax("unescaped control character in a string");
     if (c >= 0x80) {
       const std::size_t n = utf8_sequence();
@@ -216,13 +264,13 @@ bool Reader::boolean() {
 
 // Iterative, so that the depth limit, not the call stack, bounds nesting.
 void Reader::skip() {
-  const std::size_t base = stack_.size();
-  std::string key;
+  const std::size_t base = depth_;
+  std::string_view key;
   for (;;) {
     switch (peek()) {
       case Kind::object: begin_object(); break;
       case Kind::array: begin_array(); break;
-      case Kind::string: read_string(); break;
+      case Kind::string: read_string(scratch_); break;
       case Kind::number: number(); break;
       case Kind::boolean: boolean(); break;
       case Kind::null:
@@ -231,8 +279,8 @@ void Reader::skip() {
         break;
     }
     for (;;) {  // close finished containers until the next value to read, or the end of this one
-      if (stack_.size() == base) return;
-      if (stack_.back().object ? next_key(key) : next_item()) break;
+      if (depth_ == base) return;
+      if (top().object ? next_key(key) : next_item()) break;
     }
   }
 }
@@ -244,17 +292,18 @@ void Reader::finish() {
 
 std::string Reader::path(bool container) const {
   std::string p;
-  const std::size_t n = stack_.size() - (container && !stack_.empty() ? 1 : 0);
+  const std::size_t n = depth_ - (container && depth_ > 0 ? 1 : 0);
   for (std::size_t i = 0; i < n && stack_[i].inside; ++i) {
     const Frame& f = stack_[i];
     if (!f.object) {
       p += "[" + std::to_string(f.count - 1) + "]";
       continue;
     }
-    bool plain = !f.key.empty();
-    for (const char c : f.key)
+    const std::string_view key = f.key;
+    bool plain = !key.empty();
+    for (const char c : key)
       plain = plain && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_');
-    p += plain ? (p.empty() ? "" : ".") + f.key : "[" + quote(f.key) + "]";
+    p += plain ? (p.empty() ? "" : ".") + std::string(key) : "[" + quote(key) + "]";
   }
   return p;
 }
