@@ -1704,3 +1704,20 @@ TEST(CheckerFuzz, RandomMutationsNeverCrash) {
 }
 
 }  // namespace
+
+// A hold witness's combination terms are named by their full path (the witness's, then "combination[k]") in a
+// rejection, as the top-level combination's are: the reader keeps each term's place, not its path text.
+TEST(CheckerHoldProperties, WitnessTermsNameTheirPath) {
+  const std::string pushed = slurp(examples / "table_pinned_pushed.scene.json");
+  const std::string nudged = slurp(examples / "table_pinned_nudged.scene.json");
+  const std::string far = R"("combination": [{"contact": 99, "edge": "left", "weight": "1"}])";
+  auto with_far_term = [&](std::string cert) {
+    const std::size_t at = cert.find(R"("combination": [])");
+    EXPECT_NE(at, std::string::npos);
+    return cert.replace(at, std::string(R"("combination": [])").size(), far);
+  };
+  EXPECT_EQ(rejection(pushed, with_far_term(slurp(examples / "table_pinned_pushed.depends.valid.json"))),
+            "holding.combination[0].contact: index 99 is out of range (the scene has 1 contacts)");
+  EXPECT_EQ(rejection(nudged, with_far_term(slurp(examples / "table_pinned_nudged.holds_for_every.valid.json"))),
+            "vertices[0].combination[0].contact: index 99 is out of range (the scene has 1 contacts)");
+}

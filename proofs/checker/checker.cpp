@@ -1505,9 +1505,9 @@ struct Certificate {
   std::vector<Ref> independent;
   std::string_view twist[3] = {"0", "0", "0"}, where[2] = {"0", "0"};  // texts; where: reading.point or .direction
   std::string_view label;  // reading.label
-  // property "motion"
+  // property "motion" (and, in motion_members, the support's blocks that "hold" shares with it)
   std::string_view claim;  // "sticks", "slides" or "depends"
-  std::unique_ptr<Motion_part> motion_members;
+  std::unique_ptr<Motion_part> motion_members;  // allocated by m() when a member is read; see members()
   Motion_part& m() {
     if (!motion_members) motion_members = std::make_unique<Motion_part>();
     return *motion_members;
