@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "exact/io/input_error.h"
+#include "exact/io/region.h"
 #include "exact/statics/generators.h"
 
 namespace wrenchkit::cgal {
@@ -224,6 +226,82 @@ Limit_surface_meshes limit_surface_meshes(const Scene& scene, int sides) {
   r.outer = to_surface_mesh(model.build(Side::outer));
   r.lambda_squared = model.directions().lambda_sq;
   r.dimension = model.dimension();
+  return r;
+}
+
+namespace {
+
+Polygon_2 ring_2(const std::vector<Vec2>& ring) {
+  Polygon_2 p;
+  for (const Vec2& v : ring) p.push_back(to_point_2(v));
+  return p;
+}
+
+std::vector<Vec2> ring_of(const Polygon_2& p) {
+  std::vector<Vec2> r;
+  r.reserve(p.size());
+  for (const Point_2& v : p.vertices()) r.push_back(to_vec2(v));
+  return r;
+}
+
+}  // namespace
+
+Support_region_2 to_cgal(const Support_region& region, const std::string& path) {
+  const Support_region* r = &region;
+  Support_region settled;
+  if (region.rings.empty()) {  // built in code: settle a copy (the rings are oriented there)
+    settled = region;
+    settle_region(settled, path);
+    r = &settled;
+  }
+  Support_region_2 c;
+  c.polygon = Polygon_with_holes_2(ring_2(r->rings.front()));
+  for (std::size_t k = 1; k < r->rings.size(); ++k) c.polygon.add_hole(ring_2(r->rings[k]));
+  c.uniform = r->uniform;
+  if (r->uniform) {
+    c.force = to_ft(r->force);
+  } else {
+    for (int k = 0; k < 3; ++k) c.linear[static_cast<std::size_t>(k)] = to_ft(r->linear[static_cast<std::size_t>(k)]);
+  }
+  if (r->mu) c.mu = to_ft(*r->mu);
+  return c;
+}
+
+std::vector<Support_region_2> support_regions_2(const Support& s) {
+  std::vector<Support_region_2> c;
+  c.reserve(s.regions.size());
+  for (std::size_t i = 0; i < s.regions.size(); ++i)
+    c.push_back(to_cgal(s.regions[i], "support.regions[" + std::to_string(i) + "]"));
+  return c;
+}
+
+std::vector<Support_region_2> support_regions_2(const Scene& scene) {
+  return scene.support ? support_regions_2(*scene.support) : std::vector<Support_region_2>{};
+}
+
+Support_region to_support_region(const Support_region_2& c, const std::string& path) {
+  Support_region r;
+  r.outline = ring_of(c.polygon.outer_boundary());
+  for (const Polygon_2& h : c.polygon.holes()) r.holes.push_back(ring_of(h));
+  r.uniform = c.uniform;
+  if (c.uniform) {
+    r.force = to_rational(c.force);
+  } else {
+    for (std::size_t k = 0; k < 3; ++k) r.linear[k] = to_rational(c.linear[k]);
+  }
+  if (c.mu) {
+    r.mu = to_rational(*c.mu);
+    if (*r.mu < 0) throw Input_error(path + ".mu: " + to_string(*r.mu) + " is negative (must be >= 0)");
+  }
+  settle_region(r, path);
+  return r;
+}
+
+std::vector<Support_region> to_support_regions(const std::vector<Support_region_2>& c) {
+  std::vector<Support_region> r;
+  r.reserve(c.size());
+  for (std::size_t i = 0; i < c.size(); ++i)
+    r.push_back(to_support_region(c[i], "support.regions[" + std::to_string(i) + "]"));
   return r;
 }
 

@@ -13,14 +13,21 @@
 //     Nef_polyhedron_2(line, INCLUDED) takes). Why not Nef_polyhedron_2 itself: docs/design.md.
 //   * A polygonal limit surface LS_in/LS_out (theory.md §12) is a CGAL::Surface_mesh with exact points, one face
 //     per facet (a convex polygon, counter-clockwise seen from outside).
+//   * A support region [RG-1] (docs/regions.md) is a Polygon_with_holes_2 (outline counter-clockwise, holes
+//     clockwise) with its pressure and coefficient beside it; back, it is validated and settled by the scene
+//     reader's own settle_region (exact/io/region.h): a bad polygon is the same Input_error.
 // Cost: conversions are linear in the size of the answer; the answers themselves are the engine's.
 #pragma once
 
+#include <array>
+#include <optional>
+#include <string>
 #include <variant>
 #include <vector>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/Surface_mesh.h>
 
 #include "exact/io/scene.h"
@@ -38,6 +45,7 @@ using Segment_2 = Kernel::Segment_2;
 using Ray_2 = Kernel::Ray_2;
 using Line_2 = Kernel::Line_2;
 using Polygon_2 = CGAL::Polygon_2<Kernel>;
+using Polygon_with_holes_2 = CGAL::Polygon_with_holes_2<Kernel>;
 using Point_3 = Kernel::Point_3;
 using Surface_mesh = CGAL::Surface_mesh<Point_3>;
 
@@ -138,5 +146,36 @@ struct Limit_surface_meshes {
   int dimension = 3;
 };
 Limit_surface_meshes limit_surface_meshes(const Scene& scene, int sides);
+
+// [RG-1] A support region (Support_region, exact/io/scene.h; docs/regions.md) as CGAL objects: the polygon with
+// holes, and beside it its pressure and coefficient as written (nothing settled: back, settle_region recomputes
+// area, W_R and the moments exactly).
+//   polygon   the outer boundary counter-clockwise, each hole clockwise (what CGAL's polygon-with-holes functions
+//             expect, e.g. the Boolean set operations); to_cgal gives the region's settled rings
+//   uniform   true: the pressure is uniform, F/area, with F = force > 0; false: p(x, y) = a + b·x + c·y with
+//             (a, b, c) = linear, ≥ 0 on the region
+//   mu        its own coefficient, else the support's
+struct Support_region_2 {
+  Polygon_with_holes_2 polygon;
+  bool uniform = true;
+  FT force;
+  std::array<FT, 3> linear;
+  std::optional<FT> mu;
+};
+// Forward: a settled region (read_scene settles every region) gives its rings; one built in code and not settled
+// yet is settled first (Input_error naming `path`, as below).
+Support_region_2 to_cgal(const Support_region& r, const std::string& path = "region");
+// Every region of the support, in order (none when the scene has no support).
+std::vector<Support_region_2> support_regions_2(const Support& s);
+std::vector<Support_region_2> support_regions_2(const Scene& scene);
+// Back, exactly (rationals out): the region as input (outline = the outer boundary, holes = the holes, as the
+// polygon has them; the pressure and mu), validated and settled by settle_region like a region of a scene, so a
+// bad polygon (fewer than 3 vertices, not simple, a hole that meets the outline or another hole or lies outside,
+// a negative pressure at a vertex, a force ≤ 0) throws the scene reader's Input_error, named by `path`
+// (e.g. "region.holes[0]: is not inside the outline …"); a negative mu: "`path`.mu: … is negative". No input
+// limits are applied (--max-region-vertices is the command's).
+Support_region to_support_region(const Support_region_2& r, const std::string& path = "region");
+// A whole support's regions, named "support.regions[i]" as the scene reader names them.
+std::vector<Support_region> to_support_regions(const std::vector<Support_region_2>& r);
 
 }  // namespace wrenchkit::cgal

@@ -1,6 +1,6 @@
 // The CGAL face of the installed wrenchkit (wrenchkit::cgal, exact/cgal/cgal.h): computes the moment labels of a
-// golden scene and the limit surface of the barbell, receives them as CGAL objects and checks them with CGAL's own
-// functions. Exit 0 on success. Argument: the golden scene tests/golden/two_finger_y9_10_mu1_4.scene.json.
+// golden scene, a support region and the limit surface of the barbell, receives them as CGAL objects and checks
+// them with CGAL's own functions. Exit 0 on success. Argument: the golden scene tests/golden/two_finger_y9_10_mu1_4.scene.json.
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/convex_hull_3.h>
@@ -41,6 +41,22 @@ int main(int argc, char** argv) {
     return fail("(1/2, 7/10) is not inside R+");
   if (!labels.minus.empty()) return fail("R- is not empty");
   if (!labels.plus.has_on(cgal::Point_2(0, cgal::FT(Rational(1, 2))))) return fail("the finger (0, 1/2) is not in R+");
+
+  // A support region, a 4 × 4 square with a 1 × 2 hole, as a CGAL::Polygon_with_holes_2: CGAL's own areas (the
+  // hole clockwise, so negative) give the engine's exact area 14, and the polygon comes back as the same region.
+  const Scene foot = read_scene(
+      R"({"wrenchkit": 1, "support": {"mu": "1/2", "regions": [{"outline": [[0, 0], [4, 0], [4, 4], [0, 4]],
+          "holes": [[[1, 1], [2, 1], [2, 3], [1, 3]]], "pressure": "uniform", "force": 7}]}})",
+      Input_limits{});
+  const cgal::Support_region_2 region = cgal::support_regions_2(foot).at(0);
+  if (region.polygon.outer_boundary().orientation() != CGAL::COUNTERCLOCKWISE ||
+      region.polygon.holes_begin()->orientation() != CGAL::CLOCKWISE)
+    return fail("the region's outline is not counter-clockwise with a clockwise hole");
+  if (region.polygon.outer_boundary().area() + region.polygon.holes_begin()->area() != cgal::FT(14) ||
+      foot.support->regions[0].area != 14)
+    return fail("the region's area is not 14");
+  if (cgal::to_support_region(region).moment.x != foot.support->regions[0].moment.x)
+    return fail("the region does not come back from CGAL as itself");
 
   // The barbell (theory.md §14.2), N = 8: both polytopes as exact Surface_meshes, strongly convex, and the inner
   // one's volume equal to that of CGAL's own hull of every sum of the two summand polygons' vertices.
