@@ -363,8 +363,6 @@ Vec3q region_stick_wrench(const Support_region& r, const Region_stick_block& b) 
   return sum;
 }
 
-namespace {
-
 std::vector<Support_point> cell_points(const Support_region& r, const Rational& mu, const Region_cells& cells) {
   std::vector<Support_point> out;
   out.reserve(cells.triangles.size());
@@ -379,9 +377,6 @@ std::vector<Support_point> cell_points(const Support_region& r, const Rational& 
   }
   return out;
 }
-
-
-}  // namespace
 
 Region_slide_block region_slide_block(const Support_region& r, const Rational& mu, const Vec3q& q,
                                       const std::optional<Rational>& target, std::size_t max_cells) {

@@ -85,6 +85,9 @@ Vec3q region_stick_wrench(const Support_region& r, const Region_stick_block& b);
 // bound is at most `target` (when given) or the cells reach max_cells. Exact.
 Region_slide_block region_slide_block(const Support_region& r, const Rational& mu, const Vec3q& q,
                                       const std::optional<Rational>& target, std::size_t max_cells);
+// [RG-1] The cells of a region as support points: each at its pressure centroid, carrying its force F_k with the
+// region's μ. Their limit surface is inside the region's (a cell force spread ∝ p has moment c_k × g_k).
+std::vector<Support_point> cell_points(const Support_region& r, const Rational& mu, const Region_cells& cells);
 void write_region_stick_block(Json_writer& w, const Region_stick_block& b);
 void write_region_slide_block(Json_writer& w, const Region_slide_block& b);
 
