@@ -84,7 +84,7 @@ std::string forces_text(const Hold_witness& h, bool support) {
   else s << "contact forces";
   for (const auto& [ref, weight] : h.combination)
     s << " " << human_number(weight) << "·c" << ref.contact << "." << edge_name(ref.edge);
-  if (support) {
+  if (support && !h.forces.empty()) {
     std::size_t carrying = 0;
     for (const Vec2& g : h.forces) carrying += g.x != 0 || g.y != 0;
     s << "; support friction at " << carrying << " of " << h.forces.size() << " point(s)";

@@ -724,6 +724,22 @@ def tiles(reg, vs, tris):
     return True
 
 
+def slide_block_bound(reg, blk, q):
+    """A slide block's bound mu sum_cells sum_j w_j u_j at the twist q, or None if a speed bound is too small."""
+    vs, tris = cells_of(blk)
+    ub = [rational(v) for v in blk["speed_bounds"]]
+    if len(ub) != len(vs) or any(v < 0 or v * v < (q[0] - q[2] * y) ** 2 + (q[1] + q[2] * x) ** 2
+                                 for v, (x, y) in zip(ub, vs)):
+        return None
+    bound = F(0)
+    for tri in tris:
+        a, b, c3 = (vs[i] for i in tri)
+        area = ((b[0] - a[0]) * (c3[1] - a[1]) - (b[1] - a[1]) * (c3[0] - a[0])) / 2
+        pv = [pressure(reg, v) for v in (a, b, c3)]
+        bound += reg["mu"] * area * sum((pj + sum(pv)) * ub[i] for pj, i in zip(pv, tri)) / 12
+    return bound
+
+
 def verify_motion(scene, cert):
     """verify() for property "motion": None if valid, else a short reason."""
     sup = scene.get("support")
@@ -800,18 +816,12 @@ def verify_motion(scene, cert):
         if known:
             bound = sum(qq[2] * f * v for qq, f, v in zip(pts, given, u))
             for reg, blk in zip(regions, cert.get("regions", ())):  # mu sum_cells sum_j w_j u_j
-                vs, tris = cells_of(blk)
-                if not tiles(reg, vs, tris):
+                if not tiles(reg, *cells_of(blk)):
                     return "tiling"
-                ub = [rational(v) for v in blk["speed_bounds"]]
-                if len(ub) != len(vs) or any(v < 0 or v * v < (q[0] - q[2] * y) ** 2 + (q[1] + q[2] * x) ** 2
-                                             for v, (x, y) in zip(ub, vs)):
+                b = slide_block_bound(reg, blk, q)
+                if b is None:
                     return "speed"
-                for t in tris:
-                    a, b, c3 = (vs[i] for i in t)
-                    area = ((b[0] - a[0]) * (c3[1] - a[1]) - (b[1] - a[1]) * (c3[0] - a[0])) / 2
-                    pv = [pressure(reg, v) for v in (a, b, c3)]
-                    bound += reg["mu"] * area * sum((pj + sum(pv)) * ub[i] for pj, i in zip(pv, t)) / 12
+                bound += b
             return None if power(q) >= bound else "power"
         y = [rational(v) for v in cert["dual"]]
         if any(q_[3] is None and q_[2] * v > y[0] + y[1] * q_[0] + y[2] * q_[1] for q_, v in zip(pts, u)):
@@ -930,16 +940,10 @@ def verify_hold(scene, cert):
         if dual is None:
             bound = sum(q[2] * fi * v for q, fi, v in zip(pts, f, u))
             for reg, blk in zip(regions, cert.get("regions", ())):  # mu sum_cells sum_j w_j u_j >= mu int |v| p
-                vs, tris = cells_of(blk)
-                ub = [rational(v) for v in blk["speed_bounds"]]
-                if len(ub) != len(vs) or any(v < 0 or v * v < (t[0] - t[2] * y) ** 2 + (t[1] + t[2] * x) ** 2
-                                             for v, (x, y) in zip(ub, vs)):
+                b = slide_block_bound(reg, blk, t)
+                if b is None:
                     return "speed"
-                for tri in tris:
-                    a, b, c3 = (vs[i] for i in tri)
-                    area = ((b[0] - a[0]) * (c3[1] - a[1]) - (b[1] - a[1]) * (c3[0] - a[0])) / 2
-                    pv = [pressure(reg, v) for v in (a, b, c3)]
-                    bound += reg["mu"] * area * sum((pj + sum(pv)) * ub[i] for pj, i in zip(pv, tri)) / 12
+                bound += b
         else:
             y = [rational(v) for v in dual]
             if any(q[3] is None and q[2] * v > y[0] + y[1] * q[0] + y[2] * q[1] for q, v in zip(pts, u)):
