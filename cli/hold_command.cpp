@@ -44,6 +44,8 @@ void write_hold(Json_writer& w, const Hold_item& r) {
   w.key("load").array().rational(a.load.fx).rational(a.load.fy).rational(a.load.m).end_array();
   w.member("generators", a.generators).member("support", support_kind(a));
   if (a.rounds) w.member("lp_rounds", a.rounds);
+  if (a.has_support && !r.scene.support->regions.empty())
+    w.member("regions", r.scene.support->regions.size()).member("region_cells", a.cells);
   if (a.unknown) {
     w.key("extreme_distributions").array();
     for (const auto& f : a.extreme) w.rationals(f);
@@ -82,7 +84,7 @@ std::string forces_text(const Hold_witness& h, bool support) {
   else s << "contact forces";
   for (const auto& [ref, weight] : h.combination)
     s << " " << human_number(weight) << "·c" << ref.contact << "." << edge_name(ref.edge);
-  if (support) {
+  if (support && !h.forces.empty()) {
     std::size_t carrying = 0;
     for (const Vec2& g : h.forces) carrying += g.x != 0 || g.y != 0;
     s << "; support friction at " << carrying << " of " << h.forces.size() << " point(s)";
@@ -98,7 +100,10 @@ std::string hold_human(const Hold_item& r) {
   s << "load: the wrench " << vec_text({a.load.fx, a.load.fy, a.load.m}) << " on the body (force, moment about the origin)\n"
     << "contacts: " << a.generators << " friction generator(s); support: ";
   if (!a.has_support) s << "none (hold is equilibrium)";
-  else if (!a.unknown) s << r.scene.support->points.size() << " point(s), every force given";
+  else if (!a.unknown) {
+    s << r.scene.support->points.size() << " point(s), every force given";
+    if (!r.scene.support->regions.empty()) s << ", and " << r.scene.support->regions.size() << " region(s)";
+  }
   else
     s << r.scene.support->points.size() << " point(s), forces not all given: " << a.extreme.size()
       << " extreme admissible distribution(s)";
@@ -109,12 +114,16 @@ std::string hold_human(const Hold_item& r) {
       if (a.unknown) s << " under every admissible distribution (every extreme one holds)";
       s << "\n";
       if (a.holding) s << "  " << forces_text(*a.holding, a.has_support) << " cancel the load exactly\n";
+      if (!a.region_holding.empty())
+        s << "  with the regions' friction as forces on " << a.cells << " cells, each in its disc at the cell's pressure centroid\n";
       break;
     case Hold_verdict::fails:
       s << "holds: no — the body moves: " << motion_words(a.failing->twist) << " (twist "
         << vec_text(a.failing->twist) << ")";
       if (a.unknown) s << " under every admissible distribution";
       s << "\n  every contact allows it, and the load drives it harder than the support's friction can resist\n";
+      if (!a.region_failing.empty())
+        s << "  (the regions' friction bounded by speed bounds at the vertices of " << a.cells << " cells)\n";
       break;
     case Hold_verdict::depends:
       s << "holds: depends on the distribution — it holds with f = " << distribution_text(a.holding->distribution)

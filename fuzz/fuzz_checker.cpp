@@ -18,6 +18,7 @@
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
 #include "exact/fixture/hold.h"
+#include "fuzz/hold_scope.h"
 #include "exact/io/scene.h"
 #include "exact/numbers/rational.h"
 #include "exact/sliding/limit_surface.h"
@@ -132,7 +133,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::cerr << "checker accepted a hold claim on a scene without load\n";
       std::abort();
     }
-    if (scene.support && (scene.support->points.size() > 12 || !scene.support->regions.empty())) return 0;
+    if (scene.support && (scene.support->points.size() > 12 || !small_regions_for_hold(*scene.support))) return 0;
     const wrenchkit::Hold_answer a = wrenchkit::decide_hold(scene, wrenchkit::Mode::hybrid);
     if (a.verdict == wrenchkit::Hold_verdict::undecided) return 0;
     const std::string_view claim = value_of(cert, "holds");

@@ -31,6 +31,7 @@
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/fixture/hold.h"
+#include "fuzz/hold_scope.h"
 #include "exact/statics/force_dual.h"
 #include "exact/io/input_error.h"
 #include "exact/io/scene.h"
@@ -395,8 +396,8 @@ inline bool check_scene_text(std::string_view text) {
     }
   }
   // hold (exact/fixture/hold.h) on small fixtures: float never contradicts hybrid, every certificate is checked.
-  // (hold over support regions is refused by the engine: not built yet)
-  if (scene.load && (!scene.support || (scene.support->points.size() <= 12 && scene.support->regions.empty())) &&
+  // (over support regions: every point force given, few coarse triangles — the cells run the exact LP)
+  if (scene.load && (!scene.support || (scene.support->points.size() <= 12 && small_regions_for_hold(*scene.support))) &&
       scene.contacts.size() <= 12) {
     wrenchkit::Hold_verdict verdict[2];
     int k = 0;

@@ -259,6 +259,10 @@ py::dict hold(const Py_scene& s, const std::string& mode) {
   d["support"] = !a.has_support ? "none" : a.unknown ? "unknown" : "known";
   d["mode"] = mode;
   d["decided_by"] = a.decided_by;
+  if (a.has_support && !s.scene.support->regions.empty()) {
+    d["regions"] = s.scene.support->regions.size();
+    d["region_cells"] = a.cells;
+  }
   if (a.unknown) {
     py::list ext, per;
     for (const auto& f : a.extreme) ext.append(distribution_list(f));

@@ -443,6 +443,102 @@ TEST(HoldOracle, TamperedCertificatesRejected) {
   EXPECT_GE(tampered, 30);
 }
 
+// ---------------------------------------------------------------------------------------------
+// [HD-1] [RG-1] Hold over support regions. The square [-1, 1]² pressed uniformly with W = 1, μ = 1/2 (μW = 1/2; its
+// largest pure moment μ ∫|r| p dA = (√2 + asinh 1)/6 ≈ 0.3826).
+std::string square_scene(const std::string& contacts, const std::string& points, const std::string& load) {
+  return R"({"wrenchkit": 1, )" + contacts + R"("support": {"mu": "1/2", "points": [)" + points +
+         R"(], "regions": [{"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 1}]}, "load": )" +
+         load + "}";
+}
+
+TEST(HoldRegions, GoldenSquare) {
+  const std::string pin = R"("contacts": [{"at": [-1, 0], "normal": [1, 0]}], )";
+  struct Case {
+    std::string scene;
+    Hold_verdict verdict;
+  };
+  const std::vector<Case> cases = {
+      // a pure force through the centre: held iff |f| ≤ μW = 1/2 (a translation's exact slide bound)
+      {square_scene("", "", R"({"force": ["2/5", 0], "at": [0, 0]})"), Hold_verdict::holds},
+      {square_scene("", "", R"({"force": ["3/5", 0], "at": [0, 0]})"), Hold_verdict::fails},
+      // a pin at (-1, 0) pushing +x, the load (-1, 0) at height 1/4 (moment 1/4 < 0.3826 left to the support), at
+      // height 1 (moment 1: the body turns)
+      {square_scene(pin, "", R"({"force": [-1, 0], "at": [0, "1/4"]})"), Hold_verdict::holds},
+      {square_scene(pin, "", R"({"force": [-1, 0], "at": [0, 1]})"), Hold_verdict::fails},
+      // points and the region: a point (3, 0) carrying 1 (μW = 1 in all; friction centroid (3/2, 0))
+      {square_scene("", R"({"at": [3, 0], "force": 1})", R"({"force": ["-4/5", 0], "at": [0, 0]})"), Hold_verdict::holds},
+      {square_scene("", R"({"at": [3, 0], "force": 1})", R"({"force": ["-6/5", 0], "at": [0, 0]})"), Hold_verdict::fails},
+  };
+  for (const Case& c : cases)
+    for (const Mode mode : {Mode::hybrid, Mode::exact}) {
+      const Hold_item h = hold_of(c.scene, mode);
+      ASSERT_EQ(h.status, Status::answered) << h.message << "\n" << c.scene;
+      EXPECT_EQ(h.answer.verdict, c.verdict) << mode_name(mode) << " " << c.scene << "\n" << h.answer.undecided_why;
+      EXPECT_NE(h.certificate.find("\"regions\""), std::string::npos);
+      EXPECT_GT(h.answer.cells, 0u);
+      EXPECT_TRUE(test::checker_accepts(c.scene, h.certificate)) << c.scene;
+    }
+}
+
+// An independent oracle: the region sampled as a 6 × 6 grid of point masses at the cells' centres (a quadrature
+// of its friction, O(h²) off), decided by the discrete hold; loads scaled 0.85 and 1.15 about a random direction:
+// where the grid holds the larger load, the region holds the load; where the grid fails the smaller, it fails.
+TEST(HoldRegions, AgainstAFineGridOfPoints) {
+  std::mt19937_64 rng(test::seed(20261126));
+  std::uniform_real_distribution<double> dir(-1, 1);
+  const std::string grid_pts = [] {
+    std::string s;
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j)
+        s += std::string(s.empty() ? "" : ", ") + R"({"at": [")" + std::to_string(2 * i - 5) + "/6\", \"" +
+             std::to_string(2 * j - 5) + R"(/6"], "force": "1/36"})";
+    return s;
+  }();
+  const auto at_scale = [](double fx, double fy, double m, double k) {
+    return "{\"wrench\": [" + num(fx * k) + ", " + num(fy * k) + ", " + num(m * k) + "]}";
+  };
+  int decided = 0, compared = 0;
+  for (int n = 0; n < 16; ++n) {
+    const double fx = dir(rng) * 0.5, fy = dir(rng) * 0.5, m = dir(rng) * 0.4;
+    const std::string contacts =
+        n % 2 ? R"("contacts": [{"at": [-1, 0], "normal": [1, 0]}], )" : std::string();
+    const std::string text = square_scene(contacts, "", at_scale(fx, fy, m, 1));
+    const Hold_item h = hold_of(text, Mode::hybrid);
+    ASSERT_EQ(h.status, Status::answered) << h.message << test::dump_failure(text, "hold_region_grid");
+    if (h.answer.verdict == Hold_verdict::undecided) continue;
+    ++decided;
+    ASSERT_TRUE(test::checker_accepts(text, h.certificate)) << test::dump_failure(text, "hold_region_grid");
+    const auto grid = [&](double k) {
+      return hold_of(R"({"wrenchkit": 1, )" + contacts + R"("support": {"mu": "1/2", "points": [)" + grid_pts +
+                         R"(]}, "load": )" + at_scale(fx, fy, m, k) + "}",
+                     Mode::hybrid).answer.verdict;
+    };
+    if (grid(1.15) == Hold_verdict::holds) {
+      ++compared;
+      EXPECT_EQ(h.answer.verdict, Hold_verdict::holds) << test::dump_failure(text, "hold_region_grid");
+    } else if (grid(0.85) == Hold_verdict::fails) {
+      ++compared;
+      EXPECT_EQ(h.answer.verdict, Hold_verdict::fails) << test::dump_failure(text, "hold_region_grid");
+    }
+  }
+  EXPECT_GE(decided, 12);
+  EXPECT_GE(compared, 8);
+}
+
+// Regions with an unknown point force: an Input_error naming the support; float mode: undecided with the reason.
+TEST(HoldRegions, UnknownForcesAndFloat) {
+  const std::string unknown = R"({"wrenchkit": 1, "support": {"mu": "1/2", "weight": 2, "pressure_center": ["3/2", 0],
+      "points": [{"at": [3, 0]}], "regions": [{"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform",
+      "force": 1}]}, "load": {"wrench": ["1/10", 0, 0]}})";
+  const Hold_item u = hold_of(unknown, Mode::hybrid);
+  EXPECT_EQ(u.status, Status::bad_input);
+  EXPECT_NE(u.message.find("regions together with points whose force is not given"), std::string::npos) << u.message;
+  const Hold_item fl = hold_of(square_scene("", "", R"({"wrench": ["1/10", 0, 0]})"), Mode::float_only);
+  EXPECT_EQ(fl.status, Status::undecided);
+  EXPECT_NE(fl.message.find("no twin of support regions"), std::string::npos) << fl.message;
+}
+
 // Bad input: no load; too many unknown forces is an Input_error of decide_hold; float mode with an unknown
 // distribution is undecided (no LP over F in the twin).
 TEST(HoldInput, NoLoadAndFloatOverF) {

@@ -363,8 +363,6 @@ Vec3q region_stick_wrench(const Support_region& r, const Region_stick_block& b) 
   return sum;
 }
 
-namespace {
-
 std::vector<Support_point> cell_points(const Support_region& r, const Rational& mu, const Region_cells& cells) {
   std::vector<Support_point> out;
   out.reserve(cells.triangles.size());
@@ -379,9 +377,6 @@ std::vector<Support_point> cell_points(const Support_region& r, const Rational& 
   }
   return out;
 }
-
-
-}  // namespace
 
 Region_slide_block region_slide_block(const Support_region& r, const Rational& mu, const Vec3q& q,
                                       const std::optional<Rational>& target, std::size_t max_cells) {
@@ -537,6 +532,28 @@ void write_region_slide_block(Json_writer& w, const Region_slide_block& b) {
   w.end_array().key("speed_bounds").rationals(b.speed_bounds).end_object();
 }
 
+Region_slide_blocks region_slide_blocks(const Support& s, const Vec3q& q, const Rational& slack, std::size_t max_cells) {
+  Region_slide_blocks out;
+  std::vector<double> est;
+  const double qd[3] = {q[0].get_d(), q[1].get_d(), q[2].get_d()};
+  for (const Support_region& r : s.regions) {
+    const double h = region_mu(s, r).get_d() * region_power_double(r, qd);
+    est.push_back(std::isfinite(h) ? std::max(h, 0.0) : 0.0);
+    out.estimate += est.back();
+  }
+  if (out.estimate > slack.get_d() * (1 + 1e-9)) return out;
+  for (std::size_t k = 0; k < s.regions.size(); ++k) {
+    const Support_region& r = s.regions[k];
+    const Rational share = out.estimate > 0 ? Rational(slack * Rational(est[k] / out.estimate))
+                                            : Rational(slack / static_cast<long>(s.regions.size()));
+    out.blocks.push_back(region_slide_block(r, region_mu(s, r), q, share, max_cells / std::max<std::size_t>(1, s.regions.size())));
+    out.bound += out.blocks.back().bound;
+    out.cells += out.blocks.back().cells.triangles.size();
+  }
+  out.ok = true;
+  return out;
+}
+
 // ---------------------------------------------------------------------------------------------------------------
 // Stick / slide.
 
@@ -601,30 +618,11 @@ std::optional<std::string> try_slide(const Support& s, const Vec3q& p, const Vec
   Rational bound;
   for (std::size_t i = 0; i < s.points.size(); ++i) bound += point_mu(s, s.points[i]) * *s.points[i].force * u[i];
   if (bound > power) return std::nullopt;
-  // Each region's estimated power and its share of what is left.
-  std::vector<double> est;
-  double est_sum = 0;
-  const double qd[3] = {q[0].get_d(), q[1].get_d(), q[2].get_d()};
-  for (const Support_region& r : s.regions) {
-    const double h = region_mu(s, r).get_d() * region_power_double(r, qd);
-    est.push_back(std::isfinite(h) ? std::max(h, 0.0) : 0.0);
-    est_sum += est.back();
-  }
-  const Rational left = power - bound;
-  if (est_sum > left.get_d() * (1 + 1e-9)) return std::nullopt;  // the true power already exceeds q·p: no bound can
-  std::vector<Region_slide_block> blocks;
-  Rational total = bound;
-  cells_out = 0;
-  for (std::size_t k = 0; k < s.regions.size(); ++k) {
-    const Support_region& r = s.regions[k];
-    const Rational mu = region_mu(s, r);
-    const Rational share = est_sum > 0 ? Rational(left * Rational(est[k] / est_sum))
-                                       : Rational(left / static_cast<long>(s.regions.size()));
-    const std::size_t budget = max_cells / std::max<std::size_t>(1, s.regions.size());
-    blocks.push_back(region_slide_block(r, mu, q, share, budget));
-    total += blocks.back().bound;
-    cells_out += blocks.back().cells.triangles.size();
-  }
+  const Region_slide_blocks r = region_slide_blocks(s, q, Rational(power - bound), max_cells);
+  if (!r.ok) return std::nullopt;
+  const std::vector<Region_slide_block>& blocks = r.blocks;
+  const Rational total = bound + r.bound;
+  cells_out = r.cells;
   if (total > power) return std::nullopt;
   Json_writer j = motion_certificate_head(p, "slides");
   j.key("twist").rationals(q).key("speed_bounds").rationals(u).key("regions").array();

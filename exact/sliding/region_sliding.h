@@ -85,6 +85,20 @@ Vec3q region_stick_wrench(const Support_region& r, const Region_stick_block& b);
 // bound is at most `target` (when given) or the cells reach max_cells. Exact.
 Region_slide_block region_slide_block(const Support_region& r, const Rational& mu, const Vec3q& q,
                                       const std::optional<Rational>& target, std::size_t max_cells);
+// [RG-1] The cells of a region as support points: each at its pressure centroid, carrying its force F_k with the
+// region's μ. Their limit surface is inside the region's (a cell force spread ∝ p has moment c_k × g_k).
+std::vector<Support_point> cell_points(const Support_region& r, const Rational& mu, const Region_cells& cells);
+// Slide blocks for every region of s at the twist q whose bounds add up to at most `slack`, each region's target
+// its share of it ∝ its power estimated in double (max_cells shared among the regions). `ok` false (no blocks) when
+// that estimate already exceeds the slack: no bound can fit.
+struct Region_slide_blocks {
+  bool ok = false;
+  std::vector<Region_slide_block> blocks;
+  Rational bound;          // Σ_R the blocks' bounds
+  std::size_t cells = 0;
+  double estimate = 0;     // Σ_R μ_R ∫_R |v| p in double
+};
+Region_slide_blocks region_slide_blocks(const Support& s, const Vec3q& q, const Rational& slack, std::size_t max_cells);
 void write_region_stick_block(Json_writer& w, const Region_stick_block& b);
 void write_region_slide_block(Json_writer& w, const Region_slide_block& b);
 

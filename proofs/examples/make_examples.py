@@ -35,6 +35,8 @@ FIXTURE = {"wrenchkit": 1, "body": SQUARE_BODY, "contacts": PIN,
 TABLE_PINNED = {"wrenchkit": 1, "body": SQUARE_BODY, "contacts": PIN,
                 "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": at} for at in LEGS]}}
 
+SQUARE_REGION = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 1}
+
 SCENES = {
     "block_corner_mu0": {
         "wrenchkit": 1,
@@ -154,6 +156,15 @@ SCENES = {
         "support": {"mu": 1, "regions": [{"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform",
                                           "force": 1}]},
     },
+    # Hold over a region (section 7.4): the uniform square [-1,1]^2 (W = 1, mu = 1) under the pinned part.
+    "square_region_pin_push": {"wrenchkit": 1, "name": "part on a uniform square region, pin at (-1,0), pushed by "
+                               "(-1, 0) at (0, 1/4): the pin and the region's friction hold it", "body": SQUARE_BODY,
+                               "contacts": PIN, "support": {"mu": 1, "regions": [SQUARE_REGION]},
+                               "load": {"force": [-1, 0], "at": [0, "1/4"]}},
+    "square_region_pin_turn": {"wrenchkit": 1, "name": "the same part pushed by (-1, 0) at (0, 1): it turns about "
+                               "the centre", "body": SQUARE_BODY, "contacts": PIN,
+                               "support": {"mu": 1, "regions": [SQUARE_REGION]},
+                               "load": {"force": [-1, 0], "at": [0, 1]}},
     "square_frame": {
         "wrenchkit": 1,
         "name": "the frame [-2,2]^2 minus [-1,1]^2, uniform, W = 1, mu = 1, written clockwise",
@@ -516,6 +527,27 @@ CERTS = [
     ("square_frame", "hole_covered", "invalid:tiling|regions[0]: the cells do not tile support.regions[0]",
      dict(FRAME_SLIDES, regions=[block(([[-2, -2], [2, -2], [2, 2], [-2, 2]], [[0, 1, 2], [0, 2, 3]]),
                                        speed_bounds=["1", "1", "1", "1"])])),
+    # hold over a region (section 7.4): the pin takes (1, 0); the cells' forces (-3/16, -3/16) at (1/3, -1/3) and
+    # (3/16, 3/16) at (-1/3, 1/3) (inside their closed discs of radius 1/2) give the moment -1/4 the load leaves.
+    ("square_region_pin_push", "holds", "valid",
+     hold(True, combination=comb((0, "normal", "1")), support_forces=[],
+          regions=[block(SQUARE_2, forces=[["-3/16", "-3/16"], ["3/16", "3/16"]])])),
+    ("square_region_pin_push", "force_outside_disc", "invalid:disc|regions[0].forces[0]: |g|^2 = 45/64 is not at most (mu F)^2 = 1/4",
+     hold(True, combination=comb((0, "normal", "1")), support_forces=[],
+          regions=[block(SQUARE_2, forces=[["-3/4", "3/8"], ["3/4", "-3/8"]])])),
+    ("square_region_pin_push", "without_blocks", 'invalid:keys|missing required key "regions"',
+     hold(True, combination=comb((0, "normal", "1")), support_forces=[])),
+    # the rotation (0, 0, 1) about the centre: the pin allows it, the region's friction is at most 17/18 (SQUARE_4's
+    # bound) < 1 = its power against the load at (0, 1); against the load at (0, 1/4) it is 1/4: no proof.
+    ("square_region_pin_turn", "fails", "valid",
+     hold(False, twist=["0", "0", "1"], speed_bounds=[],
+          regions=[block(SQUARE_4, speed_bounds=["0", "17/12", "17/12", "17/12", "17/12"])])),
+    ("square_region_pin_turn", "speed_bound_too_small", "invalid:speed|regions[0].speed_bounds[1]: u^2 = 1 is less than |v(q)|^2 = 2",
+     hold(False, twist=["0", "0", "1"], speed_bounds=[],
+          regions=[block(SQUARE_4, speed_bounds=["0", "1", "17/12", "17/12", "17/12"])])),
+    ("square_region_pin_push", "slide_bound_too_low", "invalid:power|twist: power against the load t.w_L = 1/4 is not more than",
+     hold(False, twist=["0", "0", "1"], speed_bounds=[],
+          regions=[block(SQUARE_4, speed_bounds=["0", "17/12", "17/12", "17/12", "17/12"])])),
     ("barbell_known", "blocks_without_regions", 'invalid:keys|key "regions" is not allowed when "motion" is "sticks" and the support has no regions',
      motion("sticks", [F(1, 4), 0, 0], support_forces=[["1/8", "0"], ["1/8", "0"]], regions=[])),
 ]
@@ -692,6 +724,22 @@ def tiles(reg, vs, tris):
     return True
 
 
+def slide_block_bound(reg, blk, q):
+    """A slide block's bound mu sum_cells sum_j w_j u_j at the twist q, or None if a speed bound is too small."""
+    vs, tris = cells_of(blk)
+    ub = [rational(v) for v in blk["speed_bounds"]]
+    if len(ub) != len(vs) or any(v < 0 or v * v < (q[0] - q[2] * y) ** 2 + (q[1] + q[2] * x) ** 2
+                                 for v, (x, y) in zip(ub, vs)):
+        return None
+    bound = F(0)
+    for tri in tris:
+        a, b, c3 = (vs[i] for i in tri)
+        area = ((b[0] - a[0]) * (c3[1] - a[1]) - (b[1] - a[1]) * (c3[0] - a[0])) / 2
+        pv = [pressure(reg, v) for v in (a, b, c3)]
+        bound += reg["mu"] * area * sum((pj + sum(pv)) * ub[i] for pj, i in zip(pv, tri)) / 12
+    return bound
+
+
 def verify_motion(scene, cert):
     """verify() for property "motion": None if valid, else a short reason."""
     sup = scene.get("support")
@@ -768,18 +816,12 @@ def verify_motion(scene, cert):
         if known:
             bound = sum(qq[2] * f * v for qq, f, v in zip(pts, given, u))
             for reg, blk in zip(regions, cert.get("regions", ())):  # mu sum_cells sum_j w_j u_j
-                vs, tris = cells_of(blk)
-                if not tiles(reg, vs, tris):
+                if not tiles(reg, *cells_of(blk)):
                     return "tiling"
-                ub = [rational(v) for v in blk["speed_bounds"]]
-                if len(ub) != len(vs) or any(v < 0 or v * v < (q[0] - q[2] * y) ** 2 + (q[1] + q[2] * x) ** 2
-                                             for v, (x, y) in zip(ub, vs)):
+                b = slide_block_bound(reg, blk, q)
+                if b is None:
                     return "speed"
-                for t in tris:
-                    a, b, c3 = (vs[i] for i in t)
-                    area = ((b[0] - a[0]) * (c3[1] - a[1]) - (b[1] - a[1]) * (c3[0] - a[0])) / 2
-                    pv = [pressure(reg, v) for v in (a, b, c3)]
-                    bound += reg["mu"] * area * sum((pj + sum(pv)) * ub[i] for pj, i in zip(pv, t)) / 12
+                bound += b
             return None if power(q) >= bound else "power"
         y = [rational(v) for v in cert["dual"]]
         if any(q_[3] is None and q_[2] * v > y[0] + y[1] * q_[0] + y[2] * q_[1] for q_, v in zip(pts, u)):
@@ -824,12 +866,15 @@ def verify_hold(scene, cert):
     sup = scene.get("support")
     pts = [] if sup is None else [
         (number(q["at"][0]), number(q["at"][1]), number(q.get("mu", sup.get("mu"))),
-         None if "force" not in q else number(q["force"])) for q in sup["points"]]
+         None if "force" not in q else number(q["force"])) for q in sup.get("points", [])]
     known = all(f is not None for *_, f in pts)
+    regions = [] if sup is None else [region(r, sup) for r in sup.get("regions", [])]
     claim = cert["holds"]
     if claim == "depends" and known:
         return "depends known"
-    base = {"wrenchkit_certificate", "property", "holds"}
+    if regions and not known:
+        return "regions unknown"
+    base = {"wrenchkit_certificate", "property", "holds"} | ({"regions"} if regions else set())
     if claim is True:
         want = ({"combination"} | ({"support_forces"} if sup else set())) if known else {"vertices"}
     elif claim is False:
@@ -838,6 +883,11 @@ def verify_hold(scene, cert):
         want = {"holding", "failing"}
     if set(cert) - {"reading"} != base | want or ("reading" in cert and claim is not False):
         return "keys"
+    if regions and len(cert["regions"]) != len(regions):
+        return "keys"
+    for reg, blk in zip(regions, cert.get("regions", ())):
+        if not tiles(reg, *cells_of(blk)):
+            return "tiling"
     given = [f or F(0) for *_, f in pts]
     if sup is not None and not known:
         W, c = number(sup["weight"]), [number(v) for v in sup.get("pressure_center", scene.get("body", {}).get("com"))]
@@ -867,6 +917,15 @@ def verify_hold(scene, cert):
             if a * a + b * b > (q[2] * fi) ** 2:  # the closed disc
                 return "disc"
             total = [total[0] + a, total[1] + b, total[2] + q[0] * b - q[1] * a]
+        for reg, blk in zip(regions, cert.get("regions", ())):  # cell forces in closed discs, at pressure centroids
+            vs, tris = cells_of(blk)
+            if len(blk["forces"]) != len(tris):
+                return "disc"
+            for t, (a, b) in zip(tris, ([rational(x) for x in gk] for gk in blk["forces"])):
+                Fk, (mx, my) = cell_measures(reg, [vs[i] for i in t])
+                if a * a + b * b > (reg["mu"] * Fk) ** 2:
+                    return "disc"
+                total = [total[0] + a, total[1] + b, total[2] + (mx * b - my * a) / Fk]
         return None if total == [0, 0, 0] else "sum"
 
     def fails(f, twist, u, dual):
@@ -880,6 +939,11 @@ def verify_hold(scene, cert):
             return "speed"
         if dual is None:
             bound = sum(q[2] * fi * v for q, fi, v in zip(pts, f, u))
+            for reg, blk in zip(regions, cert.get("regions", ())):  # mu sum_cells sum_j w_j u_j >= mu int |v| p
+                b = slide_block_bound(reg, blk, t)
+                if b is None:
+                    return "speed"
+                bound += b
         else:
             y = [rational(v) for v in dual]
             if any(q[3] is None and q[2] * v > y[0] + y[1] * q[0] + y[2] * q[1] for q, v in zip(pts, u)):

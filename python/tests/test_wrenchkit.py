@@ -62,7 +62,8 @@ EXAMPLES = SOURCE / "proofs" / "examples"
 
 @pytest.mark.parametrize("name,holds", [("fixture_pin_push", True), ("fixture_pin_lift", False),
                                         ("fixture_pin_pull", True), ("table_pinned_nudged", True),
-                                        ("table_pinned_shoved", False), ("table_pinned_pushed", "depends")])
+                                        ("table_pinned_shoved", False), ("table_pinned_pushed", "depends"),
+                                        ("square_region_pin_push", True), ("square_region_pin_turn", False)])
 def test_hold_of_the_worked_fixtures(name, holds):
     path = EXAMPLES / f"{name}.scene.json"
     for mode in ("hybrid", "exact"):
@@ -72,6 +73,8 @@ def test_hold_of_the_worked_fixtures(name, holds):
         assert wrenchkit.check(path, r["certificate_json"])["accepted"]
     if holds is False:
         assert r["motion"]["kind"] in ("rotation", "translation")
+    if name.startswith("square_region"):  # hold over a support region: the certificate carries its cells
+        assert r["regions"] == 1 and r["region_cells"] > 0 and '"regions"' in r["certificate_json"]
 
 
 def test_hold_reads_the_motion_and_agrees_with_the_command():
