@@ -174,16 +174,41 @@ TEST_F(Corpus, SameBytesOnEveryRun) {
 TEST_F(Corpus, HoldsEveryKindOfScene) {
   std::map<std::string, int> families;
   int with_load = 0, with_support = 0;
+  std::map<std::string, int> holds, motions, distributions;  // the certified answers of this round's questions
   for (const json::Value& v : lines_) {
     ++families[v.find("family")->text];
     with_load += v.find("equilibrium") != nullptr;
     with_support += v.find("limit_surface") != nullptr;
+    if (const json::Value* h = v.find("hold")) {
+      EXPECT_NE(v.find("equilibrium"), nullptr) << v.find("id")->text;  // hold needs a load
+      ++holds[h->type == json::Type::null ? "null" : json::text_of(*h)];
+      // Written only with its certificate, which the checker accepted (EveryCertificateIs…).
+      EXPECT_EQ(h->type != json::Type::null, v.find("certificates")->find("hold") != nullptr) << v.find("id")->text;
+      EXPECT_EQ(h->type == json::Type::null, v.find("hold_uncertified") != nullptr) << v.find("id")->text;
+    } else {
+      EXPECT_EQ(v.find("equilibrium"), nullptr) << v.find("id")->text;
+    }
+    if (const json::Value* ls = v.find("limit_surface"); ls && ls->type == json::Type::object) {
+      const json::Value* d = ls->find("distribution");
+      const std::string dist = d ? d->text : "known";
+      ++distributions[dist];
+      if (const json::Value* m = v.find("motion"); m && m->type == json::Type::string) ++motions[dist + " " + m->text];
+    }
   }
   for (const char* f : {"golden", "friction_threshold", "cone_edge", "nearly_concurrent", "nearly_parallel", "huge_offset",
-                        "ladder_equilibrium", "random_generic", "random_grid", "long_rational", "rational_rotation"})
+                        "ladder_equilibrium", "random_generic", "random_grid", "long_rational", "rational_rotation",
+                        "unknown_support", "region_support", "fixture_pin", "random_fixture"})
     EXPECT_GT(families[f], 0) << f;
   EXPECT_GT(with_load, 50);
   EXPECT_GT(with_support, 20);
+  // Issue 20: hold either way (and "depends" over unknown distributions), regions and unknown distributions with
+  // certified motions either way.
+  for (const char* h : {"true", "false", "\"depends\""}) EXPECT_GT(holds[h], 0) << h;
+  EXPECT_GT(distributions["unknown"], 0);
+  EXPECT_GT(distributions["regions"], 0);
+  for (const char* m : {"regions sticks", "regions slides", "unknown sticks", "unknown slides", "known sticks",
+                        "known slides"})
+    EXPECT_GT(motions[m], 0) << m;
 }
 
 TEST_F(Corpus, EveryCertificateIsAcceptedByTheIndependentChecker) {
@@ -237,11 +262,21 @@ TEST_F(Corpus, GoldenAndFamilyFieldsAreAsDocumented) {
     } else if (family.rfind("random", 0) != 0) {
       EXPECT_EQ(v.find("epsilon")->text, b.find("epsilon")->text);
     }
-    if (const json::Value* ls = v.find("limit_surface")) {
+    if (const json::Value* ls = v.find("limit_surface"); ls && ls->type == json::Type::object) {
+      const json::Value* d = ls->find("distribution");
       for (const json::Value& t : ls->find("twists")->items) {
+        if (d && d->text == "unknown") {  // the power's range over the admissible distributions
+          EXPECT_LE(Rational(t.find("power_range")->items[0].text), Rational(t.find("power_range")->items[1].text));
+          continue;
+        }
         const Rational lo(t.find("power_bracket")->items[0].text), hi(t.find("power_bracket")->items[1].text);
-        const Rational in(t.find("h_inner")->text), out(t.find("h_outer")->text);
         EXPECT_LE(lo, hi);
+        if (d) {  // regions: a certified bracket of relative width at most 10^-15
+          EXPECT_EQ(d->text, "regions");
+          EXPECT_LE(hi - lo, Rational(1, 1000000) * Rational(1, 1000000000) * abs(hi)) << v.find("id")->text;
+          continue;
+        }
+        const Rational in(t.find("h_inner")->text), out(t.find("h_outer")->text);
         EXPECT_LE(in, hi);  // h_in ≤ h ≤ h_out
         EXPECT_GE(out, lo);
       }
@@ -259,7 +294,11 @@ TEST_F(Corpus, CompareAgreesWithItsOwnVerdicts) {
   std::string jsonl;
   for (const json::Value& v : lines_) {
     jsonl += "{\"id\": " + json::quote(v.find("id")->text) + ", \"force_closure\": " + json::text_of(*v.find("force_closure"));
-    if (const json::Value* ls = v.find("limit_surface")) {
+    for (const char* f : {"hold", "motion"})  // this round's answers, as the corpus writes them (null: no answer)
+      if (const json::Value* x = v.find(f)) jsonl += std::string(", \"") + f + "\": " + json::text_of(*x);
+    const json::Value* ls = v.find("limit_surface");
+    const json::Value* d = ls ? ls->find("distribution") : nullptr;
+    if (ls && ls->type == json::Type::object && !(d && d->text == "unknown")) {
       jsonl += ", \"center_of_friction\": " + json::text_of(*ls->find("center_of_friction")) + ", \"power\": [";
       const auto& tw = ls->find("twists")->items;
       for (std::size_t i = 0; i < tw.size(); ++i)
