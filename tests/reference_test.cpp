@@ -452,6 +452,48 @@ TEST_F(Corpus, ComparePowerShowsTwistBracketAndRelativeErrorAndIncompleteIsNoAns
   EXPECT_EQ(r.code, 0) << r.out;
 }
 
+// hold as a CSV column (true/false/depends, the corpus' own answers) agrees; each flipped hold is counted unsafe
+// (falsely holds) or lost (falsely fails or depends) with no boundary measure over a support.
+TEST_F(Corpus, CompareReadsHoldAndSplitsUnsafeFromLost) {
+  std::string csv = "id,hold\n", flipped = csv;
+  std::size_t holds = 0, fails = 0, depends = 0;
+  std::string a_hold, a_fail;  // a certified true and a certified false over a support
+  for (const json::Value& v : lines_) {
+    const json::Value* h = v.find("hold");
+    if (!h || h->type == json::Type::null) continue;
+    const std::string id = v.find("id")->text;
+    const std::string word = h->type == json::Type::string ? h->text : h->boolean ? "true" : "false";
+    (word == "true" ? holds : word == "false" ? fails : depends) += 1;
+    csv += id + "," + word + "\n";
+    if (v.find("limit_surface") && word == "true" && a_hold.empty()) a_hold = id;
+    if (v.find("limit_surface") && word == "false" && a_fail.empty()) a_fail = id;
+  }
+  ASSERT_GT(holds, 0u);
+  ASSERT_GT(fails, 0u);
+  ASSERT_GT(depends, 0u);
+  ASSERT_FALSE(a_hold.empty() || a_fail.empty());
+  const fs::path f = scratch() / "holds.csv";
+  std::ofstream(f) << csv;
+  Cli_result r = run("compare --json '" + dir_ + "' '" + f.string() + "'");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  const std::string n = std::to_string(holds + fails + depends);
+  EXPECT_NE(r.out.find("\"hold\": {\"compared\": " + n + ", \"agree\": " + n + ","), std::string::npos) << r.out;
+  // JSON lines, as a peer writes them: 0 where it holds (lost), 1 where it fails (unsafe).
+  r = run("compare --json '" + dir_ + "' -",
+          "{\"id\": \"" + a_hold + "\", \"hold\": 0}\n{\"id\": \"" + a_fail + "\", \"hold\": 1}\n");
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  const json::Value rep = json::parse(r.out, Input_limits{}, "report");
+  const json::Value& t = *rep.find("fields")->find("hold");
+  EXPECT_EQ(t.find("unsafe")->text, "1");
+  EXPECT_EQ(t.find("lost")->text, "1");
+  for (const json::Value& d : rep.find("disagreements")->items) {
+    const std::string id = d.find("id")->text;
+    EXPECT_EQ(d.find("kind")->text, id == a_hold ? "falsely fails" : "falsely holds") << id;
+    EXPECT_EQ(d.find("unsafe")->boolean, id == a_fail) << id;
+    EXPECT_FALSE(d.find("boundary_measured")->boolean) << id;
+  }
+}
+
 TEST_F(Corpus, CompareBadInputNamesLineAndField) {
   struct Case {
     std::string name, text, message;
@@ -477,6 +519,10 @@ TEST_F(Corpus, CompareBadInputNamesLineAndField) {
       {"h.csv", "id,force_closure\ngolden.ladder_mu_1_7\n", "h.csv:2: 1 cells, the header has 2"},
       {"i.jsonl", "{\"id\": \"golden.ladder_mu_1_7\", \"equilibrium\": true}\n", "i.jsonl:1: equilibrium: scene \"golden.ladder_mu_1_7\" has no load"},
       {"j.jsonl", "{\"id\": \"golden.limit_surface.barbell\", \"power\": [1, 2]}\n", "j.jsonl:1: power: 2 values, the scene has 5 twists"},
+      {"s.jsonl", "{\"id\": \"golden.ladder_mu_1_7\", \"hold\": true}\n", "s.jsonl:1: hold: scene \"golden.ladder_mu_1_7\" has no load (no hold answer)"},
+      {"t.jsonl", "{\"id\": \"fixture_pin.1e-2.0\", \"hold\": \"maybe\"}\n", "t.jsonl:1: hold: \"maybe\" is not true, false, 1, 0"},
+      {"u.csv", "id,hold\nfixture_pin.1e-2.0,maybe\n", "u.csv:2: hold: \"maybe\" is not true"},
+      {"v.csv", "id,force_closure\nfixture_pin.1e-2.0,depends\n", "v.csv:2: force_closure: \"depends\" is not true"},
   };
   for (const Case& c : cases) {
     const fs::path p = scratch() / c.name;
