@@ -46,6 +46,8 @@ struct Ref {
   std::map<std::string, Field_distance> fields;  // force_closure, form_closure, equilibrium
   bool has_motion = false;               // the line has "motion" (a load on a support)
   std::string motion;                    // sticks, slides, depends; empty: no certified answer
+  bool has_hold = false;                 // the line has "hold" (a load)
+  std::string hold;                      // true, false, depends; empty: no certified answer (or refused)
   const json::Value* labels = nullptr;
   const json::Value* limit_surface = nullptr;
   Field_distance distance_of(const std::string& field) const {
@@ -78,22 +80,28 @@ struct Field_tally {
   std::size_t compared = 0, agree = 0, disagree = 0, no_answer = 0, unsafe = 0, lost = 0;
 };
 
-const char* const kFields[] = {"force_closure", "form_closure", "equilibrium", "motion",
+const char* const kFields[] = {"force_closure", "form_closure", "equilibrium", "hold", "motion",
                                "center_of_friction", "power", "power_range", "labels"};
 bool is_verdict(const std::string& f) { return f == "force_closure" || f == "form_closure" || f == "equilibrium"; }
 
-// The words of a wrong verdict: unsafe (the answer claims closure, balance or sticking that does not
+// The words of a wrong verdict: unsafe (the answer claims closure, balance, holding or sticking that does not
 // hold) or lost (it misses one that does).
 std::pair<std::string, bool> verdict_kind(const std::string& field, bool answer) {
   if (field == "equilibrium") return {answer ? "falsely balanced" : "falsely unbalanced", answer};
   return {answer ? "falsely closed" : "falsely open", answer};
 }
 const char* unsafe_words(const std::string& f) {
-  return f == "equilibrium" ? "falsely balanced" : f == "motion" ? "falsely sticks" : "falsely closed";
+  return f == "equilibrium" ? "falsely balanced" : f == "motion" ? "falsely sticks" : f == "hold" ? "falsely holds"
+                                                                                                 : "falsely closed";
 }
 const char* lost_words(const std::string& f) {
-  return f == "equilibrium" ? "falsely unbalanced" : f == "motion" ? "falsely slides or depends" : "falsely open";
+  return f == "equilibrium" ? "falsely unbalanced"
+         : f == "motion"    ? "falsely slides or depends"
+         : f == "hold"      ? "falsely fails or depends"
+                            : "falsely open";
 }
+// Fields with a safety split (unsafe / lost): the verdicts, motion and hold.
+bool has_split(const std::string& f) { return is_verdict(f) || f == "motion" || f == "hold"; }
 
 Rational exact_number(const json::Value& v, const std::string& where) {
   std::string why;
@@ -178,9 +186,15 @@ Corpus read_corpus(const std::string& path) {
       if (const json::Value* x = v.find(f); x && x->type == json::Type::boolean) r.verdicts[f] = x->boolean;
     r.labels = v.find("labels");
     r.limit_surface = v.find("limit_surface");
+    if (r.limit_surface && r.limit_surface->type != json::Type::object) r.limit_surface = nullptr;  // refused
     if (const json::Value* m = v.find("motion")) {
       r.has_motion = true;
       if (m->type == json::Type::string) r.motion = m->text;
+    }
+    if (const json::Value* h = v.find("hold")) {
+      r.has_hold = true;
+      if (h->type == json::Type::boolean) r.hold = h->boolean ? "true" : "false";
+      else if (h->type == json::Type::string) r.hold = h->text;
     }
     const auto read_distance = [](const json::Value& b, std::optional<double>& d, std::string& nearest, long& zeros) {
       if (const json::Value* x = b.find("distance"); x && x->type == json::Type::number) d = std::stod(x->text);
@@ -198,6 +212,12 @@ Corpus read_corpus(const std::string& path) {
         const json::Value* x = fields ? fields->find(f) : nullptr;
         if (x) read_distance(*x, fd.distance, fd.nearest, fd.exact_zeros);
         else fd.distance = r.distance, fd.nearest = r.nearest, fd.exact_zeros = r.exact_zeros;
+      }
+      // hold's own distance: only without a support, where hold is equilibrium (over a support: none, like motion).
+      if (const json::Value* x = fields ? fields->find("hold") : nullptr) {
+        Field_distance& fd = r.fields["hold"];
+        fd.measured = true;
+        read_distance(*x, fd.distance, fd.nearest, fd.exact_zeros);
       }
     }
     if (!c.index.emplace(r.id, c.refs.size()).second) throw Input_error(where + ": id: \"" + r.id + "\" appears twice");
@@ -232,7 +252,7 @@ std::vector<Answer> read_jsonl_answers(const std::string& path, const std::strin
         continue;
       } else if (std::find(std::begin(kFields), std::end(kFields), k) == std::end(kFields)) {
         throw Input_error(where + ": " + json::quote(k) +
-                          ": unknown field (known: id, force_closure, form_closure, equilibrium, motion, "
+                          ": unknown field (known: id, force_closure, form_closure, equilibrium, hold, motion, "
                           "center_of_friction, power, power_range, labels, error; fields starting with _ are ignored)");
       } else {
         a.fields.emplace_back(k, std::move(x));
@@ -301,9 +321,9 @@ std::vector<Answer> read_csv_answers(const std::string& path, const std::string&
       if (header[0] != "id") throw Input_error(where + ": the header's first column must be id, not \"" + header[0] + "\"");
       for (std::size_t i = 1; i < header.size(); ++i) {
         const std::string& h = header[i];
-        if (h != "force_closure" && h != "form_closure" && h != "equilibrium")
+        if (h != "force_closure" && h != "form_closure" && h != "equilibrium" && h != "hold")
           throw Input_error(where + ": column " + std::to_string(i + 1) + ": \"" + h +
-                            "\" is not one of force_closure, form_closure, equilibrium");
+                            "\" is not one of force_closure, form_closure, equilibrium, hold");
         if (std::count(header.begin(), header.end(), h) > 1) throw Input_error(where + ": column \"" + h + "\" appears twice");
       }
       continue;
@@ -320,6 +340,7 @@ std::vector<Answer> read_csv_answers(const std::string& path, const std::string&
       const std::string& c = cells[i];
       cell.type = json::Type::string, cell.text = c;
       if (const std::optional<bool> b = verdict_value(cell)) v.type = json::Type::boolean, v.boolean = *b;
+      else if (header[i] == "hold" && c == "depends") v = cell;
       else if (!c.empty())
         throw Input_error(where + ": " + header[i] + ": \"" + c + "\" is not true, false (any case), 1, 0 (or 1.0, 0.0) or empty");
       a.fields.emplace_back(header[i], v);
@@ -412,6 +433,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
       const std::string where = a.where + ": " + field;
       const bool applicable = field == "equilibrium"                                  ? ref.verdicts.count(field) != 0
                               : field == "motion"                                     ? ref.has_motion
+                              : field == "hold"                                       ? ref.has_hold
                               : field == "center_of_friction" || field == "power"     ? ref.limit_surface != nullptr
                               : field == "power_range"                                ? ref.limit_surface != nullptr
                                                                                       : true;
@@ -433,6 +455,25 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
           d.reference = r->second ? "true" : "false";
           d.answer = *b ? "true" : "false";
           std::tie(d.kind, d.unsafe) = verdict_kind(field, *b);
+          disagree(std::move(d));
+        }
+      } else if (field == "hold") {
+        // A verdict (true/false, 1/0, …) or "depends" (an unknown distribution: holds for some, fails for others).
+        std::string h;
+        if (v.type == json::Type::string && v.text == "depends") h = "depends";
+        else if (const std::optional<bool> b = verdict_value(v)) h = *b ? "true" : "false";
+        else throw Input_error(where + ": " + json::text_of(v) + " is not " + kVerdictWords + ", \"depends\" or null");
+        if (!ref.has_hold) throw Input_error(where + ": scene \"" + a.id + "\" has no load (no hold answer)");
+        if (ref.hold.empty()) continue;  // the corpus has no certified answer (undecided or refused): nothing to compare
+        count(&Field_tally::compared);
+        if (ref.hold == h) {
+          count(&Field_tally::agree);
+        } else {
+          Disagreement d;
+          d.reference = ref.hold;
+          d.answer = h;
+          d.unsafe = h == "true";  // claims the body is held where it is not for some (or every) distribution
+          d.kind = h == "true" ? "falsely holds" : h == "false" ? "falsely fails" : "falsely depends";
           disagree(std::move(d));
         }
       } else if (field == "motion") {
@@ -587,6 +628,7 @@ std::string distance_text(const Disagreement& d) {
   if (!f.measured)
     s << "no boundary measure for " << d.field
       << (d.field == "motion" ? " (how close the load is to the limit surface is not measured)"
+          : d.field == "hold"   ? " (over a support, how close the load is to holding is not measured)"
                               : " (a value: compared within --rtol/--atol)");
   else if (f.distance)
     s << d.field << " distance " << *f.distance << " (" << f.nearest << ")";
@@ -618,7 +660,7 @@ std::optional<std::string> suggested_tolerance(const std::vector<Disagreement>& 
 void write_tally(Json_writer& w, const std::string& field, const Field_tally& t) {
   w.object().member("compared", t.compared).member("agree", t.agree).member("disagree", t.disagree);
   w.member("no_answer", t.no_answer);
-  if (is_verdict(field) || field == "motion") {
+  if (has_split(field)) {
     w.member("unsafe", t.unsafe).member("lost", t.lost);
     w.member("unsafe_means", unsafe_words(field)).member("lost_means", lost_words(field));
   }
@@ -630,7 +672,7 @@ std::string tally_line(const std::string& f, const Field_tally& t) {
   std::snprintf(line, sizeof line, "  %-19s %6zu compared  %6zu agree  %6zu disagree  %6zu no answer", f.c_str(),
                 t.compared, t.agree, t.disagree, t.no_answer);
   std::string s = line;
-  if ((is_verdict(f) || f == "motion") && t.disagree)
+  if (has_split(f) && t.disagree)
     s += "  (unsafe: " + std::to_string(t.unsafe) + " " + unsafe_words(f) + "; lost: " + std::to_string(t.lost) + " " +
          lost_words(f) + ")";
   return s + "\n";
@@ -764,7 +806,7 @@ int run_compare(const Options& o) {
       s << near_count << " within " << near << (o.tolerance ? " (your documented tolerance)" : "")
         << " of one or exactly degenerate (likely tolerance issues)\n";
       if (unsafe || lost)
-        s << "verdicts: " << unsafe << " unsafe (the answer claims closure, balance or sticking that does not hold), "
+        s << "verdicts: " << unsafe << " unsafe (the answer claims closure, balance, holding or sticking that does not hold), "
           << lost << " lost (it misses one that holds)\n";
       // Per family: the families with disagreements.
       s << "\nby family (those with disagreements):\n";

@@ -30,6 +30,8 @@ const Golden kGoldens[] = {
 };
 
 const int kEpsilonExponents[] = {2, 6, 10, 14, 16, 20, 40};
+// The stress report's families the corpus carries (stress::report_only_families()), in this order.
+const char* const kAppendedFamilies[] = {"unknown_support", "region_support", "fixture_pin"};
 
 std::uint64_t splitmix64(std::uint64_t x) {
   x += 0x9E3779B97F4A7C15ull;
@@ -48,6 +50,15 @@ Entry entry(std::string id, std::string family, std::string source, std::string 
                                       std::move(side), std::move(seed), std::move(text), ""};
   e.expected = std::move(expected);
   return e;
+}
+
+// The stick/slide families hand their load beside the scene (Family_scene::load_text, exact JSON number texts):
+// the corpus writes it into the scene as {"wrench": [fx, fy, m]}, so that motion and hold are the scene's answers.
+std::string with_family_load(const stress::Family_scene& s) {
+  if (s.load_text[0].empty() || s.text.find("\"load\"") != std::string::npos) return s.text;
+  const std::size_t end = s.text.rfind('}');
+  return s.text.substr(0, end) + ", \"load\": {\"wrench\": [" + s.load_text[0] + ", " + s.load_text[1] + ", " +
+         s.load_text[2] + "]}" + s.text.substr(end);
 }
 
 std::vector<Entry> corpus_entries(const Reference_options& ro) {
@@ -82,6 +93,33 @@ std::vector<Entry> corpus_entries(const Reference_options& ro) {
       out.push_back(entry(std::string(f.name) + "." + num, f.name, "", "", "", std::to_string(seed),
                      stress::make_scene(f.name, 0, seed).text, ""));
     }
+  }
+  // Issue 20: this round's answers — stick/slide over unknown distributions, support regions, hold — by the
+  // stress report's families (testing/stress_families.h), appended so every earlier scene keeps its id, seed and
+  // bytes; then generic fixtures (contacts, a known support, a load near the support's friction): hold either way.
+  family_index = static_cast<int>(stress::families().size());
+  for (const char* name : kAppendedFamilies) {
+    ++family_index;
+    for (int k : kEpsilonExponents)
+      for (int c = 0; c < ro.cases; ++c) {
+        const std::uint64_t seed =
+            splitmix64(ro.seed ^ splitmix64(static_cast<std::uint64_t>(family_index * 100000 + k * 1000 + c)));
+        const stress::Family_scene s = stress::make_scene(name, std::stod("1e-" + std::to_string(k)), seed);
+        out.push_back(entry(std::string(name) + ".1e-" + std::to_string(k) + "." + std::to_string(c), name, "",
+                            "1e-" + std::to_string(k), s.above ? "above" : "below", std::to_string(seed),
+                            with_family_load(s), ""));
+      }
+  }
+  ++family_index;
+  char num[16];
+  for (int c = 0; c < ro.random / 4; ++c) {
+    const std::uint64_t seed = splitmix64(ro.seed ^ splitmix64(static_cast<std::uint64_t>(family_index) << 32 | c));
+    stress::Rng rng(seed);
+    const int contacts = rng.integer(1, 3), points = rng.integer(2, 5);
+    const double load = rng.uniform(0.5, 1.5);
+    std::snprintf(num, sizeof num, "%04d", c);
+    out.push_back(entry(std::string("random_fixture.") + num, "random_fixture", "", "", "", std::to_string(seed),
+                        stress::fixture_text(rng, contacts, points, load), ""));
   }
   return out;
 }

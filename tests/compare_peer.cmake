@@ -3,7 +3,10 @@
 # 1e-3 tolerance and a deliberate orientation bug, writing 0/1 verdicts; two commands, then the report
 # must find both and classify them: the orientation bug unsafe (falsely closed) and far from any
 # boundary, the tolerance's misses lost (falsely open), far by default with the suggestion of
-# --tolerance 1e-3, and near with it.
+# --tolerance 1e-3, and near with it. The fixture scenes (a load on a support: a pin and a known or unknown
+# distribution, a support region) with the peer's absolute 1e-3 force tolerance and its "depends" for any unknown
+# force: hold falsely holds (unsafe), hold falsely depends (lost), the region's motion falsely sticks (unsafe), each
+# with no boundary measure; the reference records the region's hold as refused or answered without failing.
 #   cmake -DCLI=<wrenchkit> -DPYTHON=<python3> -DDIR=<compare_peer> -DWORK=<dir> -P compare_peer.cmake
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -38,17 +41,32 @@ function(expect what actual expected)
   endif()
 endfunction()
 
+# The fixture peer's disagreements: field, kind, unsafe.
+set(fixture_pin_above_5e-4 hold "falsely holds" ON)      # the absolute tolerance holds a push above mu W
+set(fixture_pin_unknown_holds hold "falsely depends" OFF)  # "depends" where every distribution holds
+set(fixture_plate_above_5e-4 motion "falsely sticks" ON)   # the same tolerance on a support region
+
 # Each disagreement by id: kind, unsafe, near_boundary.
 function(check_disagreements json near_margins)
   string(JSON n LENGTH "${json}" disagreements)
-  expect("disagreements" ${n} 4)
+  expect("disagreements" ${n} 7)
   math(EXPR last "${n} - 1")
   foreach(i RANGE ${last})
     string(JSON id GET "${json}" disagreements ${i} id)
     string(JSON kind GET "${json}" disagreements ${i} kind)
     string(JSON unsafe GET "${json}" disagreements ${i} unsafe)
     string(JSON near GET "${json}" disagreements ${i} near_boundary)
-    if(id STREQUAL "same_side")
+    string(JSON field GET "${json}" disagreements ${i} field)
+    string(JSON measured GET "${json}" disagreements ${i} boundary_measured)
+    if(DEFINED fixture_${id})  # field, kind, unsafe; no boundary measure over a support
+      list(GET fixture_${id} 0 want_field)
+      list(GET fixture_${id} 1 want_kind)
+      list(GET fixture_${id} 2 want_unsafe)
+      expect("${id} field" "${field}" "${want_field}")
+      expect("${id} kind" "${kind}" "${want_kind}")
+      expect("${id} unsafe" ${unsafe} ${want_unsafe})
+      expect("${id} measured" ${measured} OFF)
+    elseif(id STREQUAL "same_side")
       expect("${id} kind" "${kind}" "falsely closed")
       expect("${id} unsafe" ${unsafe} ON)
       expect("${id} near" ${near} OFF)
@@ -68,7 +86,57 @@ function(check_disagreements json near_margins)
   expect("errors (the three-finger scene)" ${errors} 1)
   string(JSON fam GET "${json}" families pinch_margin force_closure lost)
   expect("pinch_margin lost" ${fam} 3)
+  foreach(what compared agree unsafe lost)
+    string(JSON hold_${what} GET "${json}" fields hold ${what})
+  endforeach()
+  expect("hold compared (pin_unknown_twist depends: agrees)" ${hold_compared} 6)
+  expect("hold agree" ${hold_agree} 4)
+  expect("hold unsafe" ${hold_unsafe} 1)
+  expect("hold lost" ${hold_lost} 1)
+  string(JSON motion_unsafe GET "${json}" fields motion unsafe)
+  string(JSON motion_agree GET "${json}" fields motion agree)
+  expect("motion unsafe (the region)" ${motion_unsafe} 1)
+  expect("motion agree (the region)" ${motion_agree} 1)
+  string(JSON pin_unsafe GET "${json}" families pin hold unsafe)
+  expect("pin hold unsafe" ${pin_unsafe} 1)
 endfunction()
+
+# A corpus line's answer FIELD (VALUE, unless empty) and its certificate.
+function(expect_certified line field value)
+  string(JSON id GET "${line}" id)
+  string(JSON answer GET "${line}" ${field})
+  if(NOT "${value}" STREQUAL "")
+    expect("${id} ${field}" "${answer}" "${value}")
+  endif()
+  string(JSON type TYPE "${line}" certificates ${field})
+  expect("${id} certificates.${field}" "${type}" "OBJECT")
+endfunction()
+
+# The corpus: hold for every scene with a load (the region's hold certified or, while the engine refuses hold over
+# regions, null with hold_uncertified), regions' motion and power brackets.
+file(READ "${WORK}/corpus/reference.jsonl" corpus)
+string(REPLACE ";" "," corpus "${corpus}")  # a message may hold ';', CMake's list separator
+string(STRIP "${corpus}" corpus)
+string(REPLACE "\n" ";" lines "${corpus}")
+foreach(line IN LISTS lines)
+  string(JSON id GET "${line}" id)
+  if(id MATCHES "^(pin|plate)_" AND NOT id MATCHES "^pinch")
+    string(JSON hold_type TYPE "${line}" hold)
+    if(hold_type STREQUAL "NULL")
+      string(JSON why GET "${line}" hold_uncertified)
+      message(STATUS "${id}: hold not answered: ${why}")
+    endif()
+  endif()
+  if(id MATCHES "^plate")
+    string(JSON dist GET "${line}" limit_surface distribution)
+    expect("${id} limit_surface.distribution" "${dist}" "regions")
+    expect_certified("${line}" motion "")
+  elseif(id STREQUAL "pin_above_5e-4")
+    expect_certified("${line}" hold OFF)
+  elseif(id STREQUAL "pin_unknown_twist")
+    expect_certified("${line}" hold depends)
+  endif()
+endforeach()
 
 compare(text)
 if(NOT text MATCHES "rerun with --tolerance 1e-3" OR NOT text MATCHES "same_side[^\n]*\n    force_closure: falsely closed \\(unsafe\\)")

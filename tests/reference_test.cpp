@@ -174,16 +174,41 @@ TEST_F(Corpus, SameBytesOnEveryRun) {
 TEST_F(Corpus, HoldsEveryKindOfScene) {
   std::map<std::string, int> families;
   int with_load = 0, with_support = 0;
+  std::map<std::string, int> holds, motions, distributions;  // the certified answers of this round's questions
   for (const json::Value& v : lines_) {
     ++families[v.find("family")->text];
     with_load += v.find("equilibrium") != nullptr;
     with_support += v.find("limit_surface") != nullptr;
+    if (const json::Value* h = v.find("hold")) {
+      EXPECT_NE(v.find("equilibrium"), nullptr) << v.find("id")->text;  // hold needs a load
+      ++holds[h->type == json::Type::null ? "null" : json::text_of(*h)];
+      // Written only with its certificate, which the checker accepted (EveryCertificateIs…).
+      EXPECT_EQ(h->type != json::Type::null, v.find("certificates")->find("hold") != nullptr) << v.find("id")->text;
+      EXPECT_EQ(h->type == json::Type::null, v.find("hold_uncertified") != nullptr) << v.find("id")->text;
+    } else {
+      EXPECT_EQ(v.find("equilibrium"), nullptr) << v.find("id")->text;
+    }
+    if (const json::Value* ls = v.find("limit_surface"); ls && ls->type == json::Type::object) {
+      const json::Value* d = ls->find("distribution");
+      const std::string dist = d ? d->text : "known";
+      ++distributions[dist];
+      if (const json::Value* m = v.find("motion"); m && m->type == json::Type::string) ++motions[dist + " " + m->text];
+    }
   }
   for (const char* f : {"golden", "friction_threshold", "cone_edge", "nearly_concurrent", "nearly_parallel", "huge_offset",
-                        "ladder_equilibrium", "random_generic", "random_grid", "long_rational", "rational_rotation"})
+                        "ladder_equilibrium", "random_generic", "random_grid", "long_rational", "rational_rotation",
+                        "unknown_support", "region_support", "fixture_pin", "random_fixture"})
     EXPECT_GT(families[f], 0) << f;
   EXPECT_GT(with_load, 50);
   EXPECT_GT(with_support, 20);
+  // Issue 20: hold either way (and "depends" over unknown distributions), regions and unknown distributions with
+  // certified motions either way.
+  for (const char* h : {"true", "false", "\"depends\""}) EXPECT_GT(holds[h], 0) << h;
+  EXPECT_GT(distributions["unknown"], 0);
+  EXPECT_GT(distributions["regions"], 0);
+  for (const char* m : {"regions sticks", "regions slides", "unknown slides", "unknown depends", "known sticks",
+                        "known slides"})
+    EXPECT_GT(motions[m], 0) << m;
 }
 
 TEST_F(Corpus, EveryCertificateIsAcceptedByTheIndependentChecker) {
@@ -237,11 +262,21 @@ TEST_F(Corpus, GoldenAndFamilyFieldsAreAsDocumented) {
     } else if (family.rfind("random", 0) != 0) {
       EXPECT_EQ(v.find("epsilon")->text, b.find("epsilon")->text);
     }
-    if (const json::Value* ls = v.find("limit_surface")) {
+    if (const json::Value* ls = v.find("limit_surface"); ls && ls->type == json::Type::object) {
+      const json::Value* d = ls->find("distribution");
       for (const json::Value& t : ls->find("twists")->items) {
+        if (d && d->text == "unknown") {  // the power's range over the admissible distributions
+          EXPECT_LE(Rational(t.find("power_range")->items[0].text), Rational(t.find("power_range")->items[1].text));
+          continue;
+        }
         const Rational lo(t.find("power_bracket")->items[0].text), hi(t.find("power_bracket")->items[1].text);
-        const Rational in(t.find("h_inner")->text), out(t.find("h_outer")->text);
         EXPECT_LE(lo, hi);
+        if (d) {  // regions: a certified bracket of relative width at most 10^-15
+          EXPECT_EQ(d->text, "regions");
+          EXPECT_LE(hi - lo, Rational(1, 1000000) * Rational(1, 1000000000) * abs(hi)) << v.find("id")->text;
+          continue;
+        }
+        const Rational in(t.find("h_inner")->text), out(t.find("h_outer")->text);
         EXPECT_LE(in, hi);  // h_in ≤ h ≤ h_out
         EXPECT_GE(out, lo);
       }
@@ -259,7 +294,11 @@ TEST_F(Corpus, CompareAgreesWithItsOwnVerdicts) {
   std::string jsonl;
   for (const json::Value& v : lines_) {
     jsonl += "{\"id\": " + json::quote(v.find("id")->text) + ", \"force_closure\": " + json::text_of(*v.find("force_closure"));
-    if (const json::Value* ls = v.find("limit_surface")) {
+    for (const char* f : {"hold", "motion"})  // this round's answers, as the corpus writes them (null: no answer)
+      if (const json::Value* x = v.find(f)) jsonl += std::string(", \"") + f + "\": " + json::text_of(*x);
+    const json::Value* ls = v.find("limit_surface");
+    const json::Value* d = ls ? ls->find("distribution") : nullptr;
+    if (ls && ls->type == json::Type::object && !(d && d->text == "unknown")) {
       jsonl += ", \"center_of_friction\": " + json::text_of(*ls->find("center_of_friction")) + ", \"power\": [";
       const auto& tw = ls->find("twists")->items;
       for (std::size_t i = 0; i < tw.size(); ++i)
@@ -413,6 +452,48 @@ TEST_F(Corpus, ComparePowerShowsTwistBracketAndRelativeErrorAndIncompleteIsNoAns
   EXPECT_EQ(r.code, 0) << r.out;
 }
 
+// hold as a CSV column (true/false/depends, the corpus' own answers) agrees; each flipped hold is counted unsafe
+// (falsely holds) or lost (falsely fails or depends) with no boundary measure over a support.
+TEST_F(Corpus, CompareReadsHoldAndSplitsUnsafeFromLost) {
+  std::string csv = "id,hold\n", flipped = csv;
+  std::size_t holds = 0, fails = 0, depends = 0;
+  std::string a_hold, a_fail;  // a certified true and a certified false over a support
+  for (const json::Value& v : lines_) {
+    const json::Value* h = v.find("hold");
+    if (!h || h->type == json::Type::null) continue;
+    const std::string id = v.find("id")->text;
+    const std::string word = h->type == json::Type::string ? h->text : h->boolean ? "true" : "false";
+    (word == "true" ? holds : word == "false" ? fails : depends) += 1;
+    csv += id + "," + word + "\n";
+    if (v.find("limit_surface") && word == "true" && a_hold.empty()) a_hold = id;
+    if (v.find("limit_surface") && word == "false" && a_fail.empty()) a_fail = id;
+  }
+  ASSERT_GT(holds, 0u);
+  ASSERT_GT(fails, 0u);
+  ASSERT_GT(depends, 0u);
+  ASSERT_FALSE(a_hold.empty() || a_fail.empty());
+  const fs::path f = scratch() / "holds.csv";
+  std::ofstream(f) << csv;
+  Cli_result r = run("compare --json '" + dir_ + "' '" + f.string() + "'");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  const std::string n = std::to_string(holds + fails + depends);
+  EXPECT_NE(r.out.find("\"hold\": {\"compared\": " + n + ", \"agree\": " + n + ","), std::string::npos) << r.out;
+  // JSON lines, as a peer writes them: 0 where it holds (lost), 1 where it fails (unsafe).
+  r = run("compare --json '" + dir_ + "' -",
+          "{\"id\": \"" + a_hold + "\", \"hold\": 0}\n{\"id\": \"" + a_fail + "\", \"hold\": 1}\n");
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  const json::Value rep = json::parse(r.out, Input_limits{}, "report");
+  const json::Value& t = *rep.find("fields")->find("hold");
+  EXPECT_EQ(t.find("unsafe")->text, "1");
+  EXPECT_EQ(t.find("lost")->text, "1");
+  for (const json::Value& d : rep.find("disagreements")->items) {
+    const std::string id = d.find("id")->text;
+    EXPECT_EQ(d.find("kind")->text, id == a_hold ? "falsely fails" : "falsely holds") << id;
+    EXPECT_EQ(d.find("unsafe")->boolean, id == a_fail) << id;
+    EXPECT_FALSE(d.find("boundary_measured")->boolean) << id;
+  }
+}
+
 TEST_F(Corpus, CompareBadInputNamesLineAndField) {
   struct Case {
     std::string name, text, message;
@@ -438,6 +519,10 @@ TEST_F(Corpus, CompareBadInputNamesLineAndField) {
       {"h.csv", "id,force_closure\ngolden.ladder_mu_1_7\n", "h.csv:2: 1 cells, the header has 2"},
       {"i.jsonl", "{\"id\": \"golden.ladder_mu_1_7\", \"equilibrium\": true}\n", "i.jsonl:1: equilibrium: scene \"golden.ladder_mu_1_7\" has no load"},
       {"j.jsonl", "{\"id\": \"golden.limit_surface.barbell\", \"power\": [1, 2]}\n", "j.jsonl:1: power: 2 values, the scene has 5 twists"},
+      {"s.jsonl", "{\"id\": \"golden.ladder_mu_1_7\", \"hold\": true}\n", "s.jsonl:1: hold: scene \"golden.ladder_mu_1_7\" has no load (no hold answer)"},
+      {"t.jsonl", "{\"id\": \"fixture_pin.1e-2.0\", \"hold\": \"maybe\"}\n", "t.jsonl:1: hold: \"maybe\" is not true, false, 1, 0"},
+      {"u.csv", "id,hold\nfixture_pin.1e-2.0,maybe\n", "u.csv:2: hold: \"maybe\" is not true"},
+      {"v.csv", "id,force_closure\nfixture_pin.1e-2.0,depends\n", "v.csv:2: force_closure: \"depends\" is not true"},
   };
   for (const Case& c : cases) {
     const fs::path p = scratch() / c.name;

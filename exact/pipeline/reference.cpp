@@ -12,6 +12,7 @@
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
 #include "exact/io/scene_writer.h"
+#include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
@@ -68,7 +69,10 @@ void write_field_distance(Json_writer& w, const Predicate_margin& m, const std::
   w.member("exact_zero_determinants", m.exact_zeros).end_object();
 }
 
-void write_boundary(Json_writer& w, const Boundary_distance& b, const std::string& epsilon, bool load) {
+// `hold_measured`: the scene has a load and no support, where hold is equilibrium ([HD-1]: LS = {0}) and has its
+// distance; over a support hold has no boundary measure (like motion).
+void write_boundary(Json_writer& w, const Boundary_distance& b, const std::string& epsilon, bool load,
+                    bool hold_measured) {
   w.object().key("epsilon");
   epsilon.empty() ? w.null() : w.raw(epsilon);
   write_double(w.key("distance"), b.distance);
@@ -83,6 +87,7 @@ void write_boundary(Json_writer& w, const Boundary_distance& b, const std::strin
   write_field_distance(w.key("force_closure"), b.force, b.closure_flip);
   write_field_distance(w.key("form_closure"), b.form, std::nullopt);
   if (load) write_field_distance(w.key("equilibrium"), b.equilibrium, b.equilibrium_flip);
+  if (hold_measured) write_field_distance(w.key("hold"), b.equilibrium, b.equilibrium_flip);
   w.end_object().end_object();
 }
 
@@ -141,6 +146,64 @@ void write_unknown_limit_surface(Json_writer& w, const Scene& scene, std::string
     w.key("power_range").array().rational(r.power->lower).rational(r.power->upper).end_array().end_object();
   }
   w.end_array().end_object();
+}
+
+// A support with regions [RG-1] [RG-2] (docs/regions.md): the exact statics and, for each twist, a certified
+// bracket of the power, through the pipeline (answer_support, `wrenchkit sliding`). No polygons: the regions'
+// limit surface is strictly convex. A question the engine refuses (regions with points whose force is not
+// given) is written as the refusal: returns its message (the caller writes null), else "".
+std::string write_region_limit_surface(Json_writer& w, const Scene& scene, std::string_view text) {
+  Request request;
+  request.mode = Mode::exact;
+  Support_query q;
+  q.question = Support_question::sliding;
+  q.tolerance = Rational("1/1000000000000000");  // the brackets' relative width: 10^-15, within compare's --rtol 1e-9
+  std::vector<Vec3q> twists = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 2, 3}};
+  if (!scene.support->points.empty()) {  // a rotation about the first point: its disc is a facet
+    const Vec2& p = scene.support->points.front().at;
+    if (p.x != 0 || p.y != 0) twists.push_back({p.y, -p.x, 1});
+  }
+  std::vector<Support_item> items;
+  for (const Vec3q& t : twists) {
+    q.twist = t;
+    items.push_back(answer_support(scene, text, "", request, q));
+    if (items.back().status == Status::bad_input) return items.back().message;
+    if (items.back().status != Status::answered || !items.back().regions) throw Input_error(items.back().message);
+  }
+  const Region_sliding& s = *items.front().regions;
+  w.object().member("distribution", "regions").member("total_force", s.total_force);
+  w.key("center_of_friction").array().rational(s.center_of_pressure.x).rational(s.center_of_pressure.y).end_array();
+  w.member("mu_f0", s.mu_f0).key("twists").array();
+  for (std::size_t i = 0; i < twists.size(); ++i) {
+    const Region_sliding& r = *items[i].regions;
+    w.object().key("twist").rationals(twists[i]);
+    w.key("power_bracket").array().rational(r.h_lo).rational(r.h_hi).end_array().end_object();
+  }
+  w.end_array().end_object();
+  return "";
+}
+
+// Can the contacts and the support's friction hold the body against the scene's load (`wrenchkit hold`,
+// exact/fixture/hold.h)? In hybrid mode; only a verdict whose certificate the independent checker accepted is
+// written ("true", "false", "depends"), else null and why: undecided, or a question the engine refuses (then its
+// message; e.g. hold over a support with regions while the engine does not answer it).
+struct Hold_result {
+  std::string verdict, certificate, why;
+  bool check_failed = false;
+};
+Hold_result hold_of(const Scene& scene, std::string_view text) {
+  Request request;
+  request.mode = Mode::hybrid;
+  const Hold_item r = answer_hold(scene, text, request);
+  Hold_result h;
+  h.check_failed = r.status == Status::check_failed;
+  if (r.status != Status::answered) h.why = r.message;
+  else if (r.certificate.empty()) h.why = r.answer.undecided_why.empty() ? "undecided" : r.answer.undecided_why;
+  else {
+    h.verdict = hold_word(r.answer.verdict);
+    h.certificate = r.certificate;
+  }
+  return h;
 }
 
 // Does the body stick on its support under the scene's load (`wrenchkit limit-surface --load`)? In
@@ -290,8 +353,16 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
     w.end_object();
     Motion_result motion;
     if (parsed.support) {
-      if (parsed.support->known()) write_limit_surface(w.key("limit_surface"), parsed, sides);
-      else write_unknown_limit_surface(w.key("limit_surface"), parsed, text, sides);
+      if (!parsed.support->regions.empty()) {
+        Json_writer ls(1024);
+        const std::string refused = write_region_limit_surface(ls, parsed, text);
+        w.key("limit_surface");
+        refused.empty() ? void(w.raw(ls.str())) : void(w.null().member("limit_surface_refused", refused));
+      } else if (parsed.support->known()) {
+        write_limit_surface(w.key("limit_surface"), parsed, sides);
+      } else {
+        write_unknown_limit_surface(w.key("limit_surface"), parsed, text, sides);
+      }
       if (parsed.load) {
         motion = motion_of(parsed, text, sides);
         if (motion.check_failed) {
@@ -303,11 +374,24 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
         if (!motion.why.empty()) w.member("motion_uncertified", motion.why);
       }
     }
+    Hold_result hold;
+    if (parsed.load) {
+      hold = hold_of(parsed, text);
+      if (hold.check_failed) {
+        b.status = Status::check_failed, b.message = hold.why;
+        return;
+      }
+      w.key("hold");
+      if (hold.verdict == "true" || hold.verdict == "false") w.boolean(hold.verdict == "true");
+      else hold.verdict.empty() ? void(w.null()) : void(w.string(hold.verdict));
+      if (!hold.why.empty()) w.member("hold_uncertified", hold.why);
+    }
     w.key("certificates").object().key("force_closure").raw(c.force_certificate);
     w.key("form_closure").raw(c.form_certificate);
     if (eq) w.key("equilibrium").raw(eq->certificate);
     if (!motion.certificate.empty()) w.key("motion").raw(motion.certificate);
-    write_boundary(w.end_object().key("boundary"), bd, e.epsilon, eq.has_value());
+    if (!hold.certificate.empty()) w.key("hold").raw(hold.certificate);
+    write_boundary(w.end_object().key("boundary"), bd, e.epsilon, eq.has_value(), eq && !parsed.support);
     // Every exact number of the answers again as its nearest double (docs/reference-format.md §2).
     const json::Value line = json::parse(w.str() + "}", Input_limits{}, e.id);
     w.key("approx").object();
@@ -321,7 +405,7 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
     }
     w.end_object().end_object();
     b.line = w.end_object().take();
-    b.certificates = (eq ? 3 : 2) + !motion.certificate.empty();
+    b.certificates = (eq ? 3 : 2) + !motion.certificate.empty() + !hold.certificate.empty();
     b.csv = e.id + "," + (c.force.holds ? "true" : "false") + "," + (c.form.holds ? "true" : "false") + "," +
             (eq ? (eq->answer.balanced ? "true" : "false") : "");
   });

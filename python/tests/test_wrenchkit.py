@@ -374,7 +374,8 @@ def test_reference_of_own_scenes_is_the_command_s_corpus(tmp_path):
         + json.dumps({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]}],
                       "load": {"wrench": [-1, 0, 0]}}) + "\n")
     summary = wrenchkit.reference(scenes, tmp_path / "py")
-    assert summary["scenes"] == 2 and summary["certificates_checked"] == 5
+    # 2 (closure) + 3 (closure, equilibrium) + 1 (hold: the scene with a load)
+    assert summary["scenes"] == 2 and summary["certificates_checked"] == 6
     lines = [json.loads(l) for l in (tmp_path / "py" / "reference.jsonl").read_text().splitlines()]
     assert [l["id"] for l in lines] == ["pinch", "line.2"]
     assert lines[0]["force_closure"] is True and lines[1]["equilibrium"] is True

@@ -9,6 +9,17 @@ two deliberate bugs that compare must find and classify.
   from abs(cos), ignoring on which side of the finger the other one is (unsafe: two fingers pushing
   the same way are called closed).
 
+Scenes with a load on a support get a fixture answer instead (`hold`, and `motion` on a support region), as
+a quick fixture check is often written: the load is taken to be a force through the support's centre of
+pressure, the contacts are ignored, and the body is held (sticks) when |F| <= mu W + ATOL. Two more deliberate
+bugs:
+
+* An absolute tolerance ATOL = 1e-3 (in force units) on the friction limit: a push 5e-4 above mu W is called
+  held (unsafe: falsely holds; on a support region, falsely sticks).
+* Any support force not given is answered "depends", without checking whether every admissible distribution
+  holds (lost: falsely depends, where every one does).
+A support region gets no hold answer (null): only its motion.
+
 Reads the user's scenes (JSON lines {"id", "scene"}) and writes one answer per line with 0/1 verdicts
 (NumPy integers when NumPy is installed, as json.dumps(default=int) writes them). Scenes with other than
 two point contacts get "error".
@@ -17,6 +28,7 @@ two point contacts get "error".
 """
 import json
 import math
+from fractions import Fraction
 import sys
 
 try:
@@ -26,6 +38,7 @@ except ImportError:  # the same 0/1 text without NumPy
     verdict = int
 
 TOL = 1e-3
+ATOL = 1e-3
 
 
 def closed(scene):
@@ -44,11 +57,31 @@ def closed(scene):
     return inside(n1, d, mu1) and inside(n2, (-d[0], -d[1]), mu2)
 
 
+def fixture(scene):
+    s = scene["support"]
+    mu = float(Fraction(str(s["mu"])))  # "1/2"
+    if "regions" in s:
+        weight = sum(float(r["force"]) for r in s["regions"])
+    elif all("force" in p for p in s["points"]):
+        weight = sum(float(p["force"]) for p in s["points"])
+    else:
+        return {"hold": "depends"}  # BUG: never checks the admissible distributions
+    load = scene["load"]
+    force = load["force"] if "force" in load else load["wrench"][:2]
+    held = math.hypot(float(force[0]), float(force[1])) <= mu * weight + ATOL  # BUG: absolute tolerance
+    if "regions" in s:
+        return {"hold": None, "motion": "sticks" if held else "slides"}
+    return {"hold": verdict(held)}
+
+
 for line in open(sys.argv[1]):
     if not line.strip():
         continue
     entry = json.loads(line)
     scene = entry["scene"]
+    if "load" in scene and "support" in scene:
+        print(json.dumps(dict({"id": entry["id"]}, **fixture(scene)), default=int))
+        continue
     if len(scene.get("contacts", [])) != 2:
         print(json.dumps({"id": entry["id"], "force_closure": None, "error": "not a two-finger grasp"}))
         continue
