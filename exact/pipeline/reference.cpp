@@ -186,7 +186,7 @@ std::string write_region_limit_surface(Json_writer& w, const Scene& scene, std::
 // Can the contacts and the support's friction hold the body against the scene's load (`wrenchkit hold`,
 // exact/fixture/hold.h)? In hybrid mode; only a verdict whose certificate the independent checker accepted is
 // written ("true", "false", "depends"), else null and why: undecided, or a question the engine refuses (then its
-// message; e.g. hold over a support with regions while the engine does not answer it).
+// message; e.g. a support with regions and a point whose force is not given).
 struct Hold_result {
   std::string verdict, certificate, why;
   bool check_failed = false;
