@@ -1,7 +1,5 @@
 #include "exact/pipeline/hold_answer.h"
 
-#include "exact/io/streaming_scene_reader.h"
-
 namespace wrenchkit {
 
 namespace {
@@ -24,21 +22,11 @@ void decide(std::string_view text, const Request& request, Hold_item& r) {
 }  // namespace
 
 Hold_item answer_hold(std::string_view text, std::string_view source, const Request& request) {
-  Hold_item item;
-  guarded(item, [&] {
-    read_scene_into(item.scene, text, request.limits, source, false);
-    decide(text, request, item);
-  });
-  return item;
+  return answer_into_item<Hold_item>(text, source, request.limits, [&](Hold_item& r) { decide(text, request, r); });
 }
 
 Hold_item answer_hold(const Scene& scene, std::string_view text, const Request& request) {
-  Hold_item item;
-  guarded(item, [&] {
-    item.scene = scene;
-    decide(text, request, item);
-  });
-  return item;
+  return answer_into_item<Hold_item>(scene, [&](Hold_item& r) { decide(text, request, r); });
 }
 
 }  // namespace wrenchkit

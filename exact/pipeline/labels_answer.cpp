@@ -1,6 +1,5 @@
 #include "exact/pipeline/labels_answer.h"
 
-#include "exact/io/streaming_scene_reader.h"
 #include "exact/io/to_float.h"
 #include "exact/statics/equilibrium.h"
 
@@ -95,21 +94,11 @@ void decide_labels(Labels_item& s, const Request& r, const Labels_query& q) {
 }  // namespace
 
 Labels_item answer_labels(std::string_view text, std::string_view source, const Request& r, const Labels_query& q) {
-  Labels_item item;
-  guarded(item, [&] {
-    read_scene_into(item.scene, text, r.limits, source, false);
-    decide_labels(item, r, q);
-  });
-  return item;
+  return answer_into_item<Labels_item>(text, source, r.limits, [&](Labels_item& item) { decide_labels(item, r, q); });
 }
 
 Labels_item answer_labels(const Scene& scene, const Request& r, const Labels_query& q) {
-  Labels_item item;
-  guarded(item, [&] {
-    item.scene = scene;
-    decide_labels(item, r, q);
-  });
-  return item;
+  return answer_into_item<Labels_item>(scene, [&](Labels_item& item) { decide_labels(item, r, q); });
 }
 
 }  // namespace wrenchkit

@@ -26,6 +26,7 @@
 #include "core/mode.h"
 #include "exact/io/input_error.h"
 #include "exact/io/scene.h"
+#include "exact/io/streaming_scene_reader.h"
 #include "exact/numbers/limits.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
@@ -111,6 +112,27 @@ void guarded(Item& item, F&& decide) {
   } catch (const std::exception& e) {
     fail(Status::internal_error, e.what());
   }
+}
+
+// The two entry points of a question whose item keeps its own scene (item.scene: labels, support, hold): from the
+// scene's text, read eagerly into the item, or from a scene already read (copied in); then `decide(item)`, guarded.
+template <class Item, class Decide>
+Item answer_into_item(std::string_view text, std::string_view source, const Input_limits& limits, Decide decide) {
+  Item item;
+  guarded(item, [&] {
+    read_scene_into(item.scene, text, limits, source, false);
+    decide(item);
+  });
+  return item;
+}
+template <class Item, class Decide>
+Item answer_into_item(const Scene& scene, Decide decide) {
+  Item item;
+  guarded(item, [&] {
+    item.scene = scene;
+    decide(item);
+  });
+  return item;
 }
 
 // The independent checker's limits for the request's limits: the same scenes are valid to both.

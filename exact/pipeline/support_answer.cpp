@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "exact/io/streaming_scene_reader.h"
 #include "exact/io/support_check.h"
 #include "exact/io/to_float.h"
 
@@ -271,24 +270,18 @@ void check_motion(std::string_view text, const Request& request, Support_item& r
 
 Support_item answer_support(std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query) {
-  Support_item item;
-  guarded(item, [&] {
-    read_scene_into(item.scene, text, request.limits, source, false);
+  return answer_into_item<Support_item>(text, source, request.limits, [&](Support_item& item) {
     answer(source, request, query, item);
     check_motion(text, request, item);
   });
-  return item;
 }
 
 Support_item answer_support(const Scene& scene, std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query) {
-  Support_item item;
-  guarded(item, [&] {
-    item.scene = scene;
+  return answer_into_item<Support_item>(scene, [&](Support_item& item) {
     answer(source, request, query, item);
     check_motion(text, request, item);
   });
-  return item;
 }
 
 }  // namespace wrenchkit
