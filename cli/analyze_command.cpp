@@ -67,6 +67,7 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
       r.human += "the load on the support: " + std::string(motion_name(m.motion)) +
                  (std::string(m.decided_by) == "float" ? " (the float twin's certified search on the true limit surface)"
                   : std::string(m.decided_by) == "polygons" ? " (the exact polygons)"
+                  : std::string(m.decided_by) == "newton" ? " (Newton's method in multiple precision, checked exactly)"
                                                             : " (within the polygons' resolution: refine --tolerance)") +
                  "\n";
     }

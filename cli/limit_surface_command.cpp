@@ -276,6 +276,8 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
     s << "decided by "
       << (std::string(r.motion.decided_by) == "float" ? "the float twin's certified search on the true surface"
                                                        : std::string(r.motion.decided_by) == "polygons" ? "the polygons"
+                                                       : std::string(r.motion.decided_by) == "newton"
+                                                           ? "Newton's method in multiple precision, checked exactly"
                                                                                                          : "nothing")
       << ")\n";
     if (r.motion.motion == Motion::undecided) s << "  undecided: refine with more --sides or a smaller --tolerance\n";

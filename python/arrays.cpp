@@ -39,7 +39,7 @@ std::int8_t decided_code(const char* d) {
 std::int8_t motion_code(Motion m) { return m == Motion::sticks ? 1 : m == Motion::slides ? 0 : -1; }
 std::int8_t motion_decided_code(const char* d) {
   const std::string_view s(d);
-  return s == "float" ? 0 : s == "polygons" ? 1 : s == "flat" ? 2 : s == "certificate" ? 3 : -1;
+  return s == "float" ? 0 : s == "polygons" ? 1 : s == "flat" ? 2 : s == "certificate" ? 3 : s == "newton" ? 4 : -1;
 }
 
 Request request_for(const std::string& mode, bool certificates) {

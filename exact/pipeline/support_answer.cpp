@@ -114,8 +114,9 @@ std::vector<Vec3q> slide_candidates(const Support& s, const std::vector<Rational
                                     const Motion_decision& d, int sides, const Polygonal_ls::Normal_cone* cone) {
   std::vector<Vec3q> c;
   if (std::string(d.decided_by) == "float") c.push_back(rational_twist(d.witness));
+  if (d.exact_witness) c.push_back(*d.exact_witness);
   std::optional<Polygonal_ls::Normal_cone> built;
-  if (!cone && std::string(d.decided_by) != "float") {
+  if (!cone && std::string(d.decided_by) != "float" && !d.exact_witness) {
     const Polygonal_ls model(merge_support(s, &f), make_directions(sides));
     if (model.candidate_count() > kMaxCandidates) return c;
     const Ls_polytope out = model.build(Side::outer);

@@ -1,17 +1,19 @@
 #include "exact/sliding/motion_certificate.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "exact/io/json_writer.h"
+#include "exact/sliding/precise_motion.h"
 
 namespace wrenchkit {
 
-std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q) {
+std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q, int bits) {
   std::vector<Rational> u;
   u.reserve(s.points.size());
   for (const Support_point& p : s.points) {
     const Rational vx = q[0] - q[2] * p.at.y, vy = q[1] + q[2] * p.at.x;
-    u.push_back(sqrt_bracket(vx * vx + vy * vy).second);
+    u.push_back(sqrt_bracket(vx * vx + vy * vy, bits).second);
   }
   return u;
 }
@@ -19,14 +21,23 @@ std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q) {
 std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
                                            const Vec3q& q) {
   if (q[0] == 0 && q[1] == 0 && q[2] == 0) return std::nullopt;
+  const auto proves = [&](const std::vector<Rational>& u) {
+    Rational bound;
+    for (std::size_t i = 0; i < s.points.size(); ++i) {
+      const Support_point& pt = s.points[i];
+      const Rational mu = pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0));
+      bound += mu * f[i] * u[i];
+    }
+    return q[0] * p[0] + q[1] * p[1] + q[2] * p[2] >= bound;
+  };
   Slide_witness w{f, q, speed_bounds(s, q)};
-  Rational bound;
-  for (std::size_t i = 0; i < s.points.size(); ++i) {
-    const Support_point& pt = s.points[i];
-    const Rational mu = pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0));
-    bound += mu * f[i] * w.speed_bounds[i];
-  }
-  if (q[0] * p[0] + q[1] * p[1] + q[2] * p[2] >= bound) return w;
+  if (proves(w.speed_bounds)) return w;
+  std::size_t b = 0;
+  for (const Rational& c : q)
+    b = std::max(b, mpz_sizeinbase(c.get_num_mpz_t(), 2) + mpz_sizeinbase(c.get_den_mpz_t(), 2));
+  if (b <= 64) return std::nullopt;
+  w.speed_bounds = speed_bounds(s, q, static_cast<int>(2 * b + 64));
+  if (proves(w.speed_bounds)) return w;
   return std::nullopt;
 }
 
@@ -225,6 +236,7 @@ std::optional<Support_witness> smoothed_witness(const Support& s, const std::vec
 std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admissible& a, const Vec3q& p, int sides,
                                                    const std::vector<Rational>& f) {
   if (auto w = smoothed_witness(s, f, p, {}, false, nullptr, false)) return Stick_witness{f, std::move(w->forces)};
+  if (auto w = precise_witness(s, f, p).sticks) return w;
   for (int n = sides; n <= 256 && s.points.size() * static_cast<std::size_t>(n) <= kMaxStickWitnessColumns; n *= 2)
     if (auto w = stick_witness(s, a, p, n, &f)) return w;
   return std::nullopt;
@@ -239,6 +251,20 @@ void write_support_forces(Json_writer& w, const std::vector<Vec2>& g) {
 std::optional<Stick_witness> smoothed_stick_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p) {
   if (auto w = smoothed_witness(s, f, p, {}, false, nullptr, false)) return Stick_witness{f, std::move(w->forces)};
   return std::nullopt;
+}
+
+Precise_witness precise_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p) {
+  std::vector<Rho_point> pts;
+  pts.reserve(s.points.size());
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Support_point& pt = s.points[i];
+    pts.push_back({pt.at, (pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0))) * f[i]});
+  }
+  Precise_motion m = precise_motion(pts, p);
+  Precise_witness w;
+  if (m.motion == Motion::sticks) w.sticks = Stick_witness{f, std::move(m.forces)};
+  if (m.motion == Motion::slides) w.slides = Slide_witness{f, m.twist, std::move(m.speed_bounds)};
+  return w;
 }
 
 // The certificate's object, opened, with its first members: the load and the motion.

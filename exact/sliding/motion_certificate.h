@@ -23,11 +23,12 @@ struct Slide_witness {
   std::vector<Rational> speed_bounds;  // u_i ≥ |v_i(q)|, one per support point
 };
 
-// Rational upper bounds of the speeds |v_i(q)| of every support point (80-bit square-root brackets).
-std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q);
+// Rational upper bounds of the speeds |v_i(q)| of every support point (square-root brackets of `bits` bits).
+std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q, int bits = 80);
 
 // The slide witness of q (≠ 0) for the distribution f when q·p ≥ Σ μ_i f_i u_i (p on or past the limit surface:
-// it slides); nothing otherwise.
+// it slides); nothing otherwise. The speeds are bounded to 80 bits, and when that does not prove it and q has long
+// numbers (the precise Newton's twists, SL-6), to 2·b + 64 bits, b the longest component's bits.
 std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
                                            const Vec3q& q);
 
@@ -49,8 +50,9 @@ std::optional<Support_witness> smoothed_witness(const Support& s, const std::vec
                                                 std::array<double, 3>* escape, bool short_numbers);
 
 // A stick witness for the distribution f: the smoothed Newton witness (forces along one twist's velocities, an
-// exact last round), else the exact LP on inscribed N-gons, N = sides, 2·sides, … up to 256 sides, as long as
-// the LP stays within kMaxStickWitnessColumns columns (support points × sides; the exact simplex grows fast).
+// exact last round), else the precise one (SL-6: Newton in multiple precision, an exact last round), else the
+// exact LP on inscribed N-gons, N = sides, 2·sides, … up to 256 sides, as long as the LP stays within
+// kMaxStickWitnessColumns columns (support points × sides; the exact simplex grows fast).
 constexpr std::size_t kMaxStickWitnessColumns = 2048;
 std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admissible& a, const Vec3q& p, int sides,
                                                    const std::vector<Rational>& f);
@@ -62,6 +64,14 @@ void write_support_forces(Json_writer& w, const std::vector<Vec2>& g);
 // distribution, e.g. a region's cells as points): forces along one twist's velocities, one exact last round, each
 // disc checked exactly. Nothing when it does not verify.
 std::optional<Stick_witness> smoothed_stick_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p);
+
+// [SL-6] The precise witnesses of the distribution f: the support's points with ρ_i = μ_i f_i for precise_motion
+// (exact/sliding/precise_motion.h): a stick witness, or a slide witness (strict: Σ μ_i f_i u_i < q·p), or neither.
+struct Precise_witness {
+  std::optional<Stick_witness> sticks;
+  std::optional<Slide_witness> slides;
+};
+Precise_witness precise_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p);
 
 // A motion certificate's object, opened, with its first members ("wrenchkit_certificate", "property", "load",
 // "motion").

@@ -1,6 +1,8 @@
 // Planar sliding quantities [LS-4]; derivation in proofs/notes/LS-3-queries.md.
 #include "exact/sliding/sliding.h"
 
+#include "exact/sliding/precise_motion.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -212,6 +214,20 @@ Motion_decision search(const Ls_support& support, const Vec3q& p) {
   return d;
 }
 
+// [SL-6] Both abstained (a load within their resolution of the surface): Newton in multiple precision proposes,
+// exact rationals decide.
+void precise_fallback(const Ls_support& support, const Vec3q& p, Motion_decision& d) {
+  if (d.motion != Motion::undecided) return;
+  std::vector<Rho_point> pts;
+  pts.reserve(support.points.size());
+  for (const Ls_point& q : support.points) pts.push_back({q.at, q.rho});
+  const Precise_motion m = precise_motion(pts, p);
+  if (m.motion == Motion::undecided) return;
+  d.motion = m.motion;
+  d.decided_by = "newton";
+  if (m.motion == Motion::slides) d.exact_witness = m.twist;
+}
+
 }  // namespace
 
 Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mode, const Ls_polytope* inner,
@@ -226,12 +242,14 @@ Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mo
     d = search(model.support(), p);
     if (d.motion != Motion::undecided || mode == Mode::float_only) return d;
   }
-  if ((!inner || !outer) && model.candidate_count() > kMaxCandidates) return d;  // too large to build: undecided
-  std::optional<Ls_polytope> built_in, built_out;
-  if (!inner) inner = &built_in.emplace(model.build(Side::inner));
-  if (!outer) outer = &built_out.emplace(model.build(Side::outer));
-  d.motion = classify_load(model.gauge(*inner, Side::inner, p), model.gauge(*outer, Side::outer, p));
-  if (d.motion != Motion::undecided) d.decided_by = "polygons";
+  if ((inner && outer) || model.candidate_count() <= kMaxCandidates) {  // else too large to build
+    std::optional<Ls_polytope> built_in, built_out;
+    if (!inner) inner = &built_in.emplace(model.build(Side::inner));
+    if (!outer) outer = &built_out.emplace(model.build(Side::outer));
+    d.motion = classify_load(model.gauge(*inner, Side::inner, p), model.gauge(*outer, Side::outer, p));
+    if (d.motion != Motion::undecided) d.decided_by = "polygons";
+  }
+  if (mode == Mode::hybrid) precise_fallback(model.support(), p, d);
   return d;
 }
 
@@ -241,7 +259,9 @@ Motion_decision decide_motion(const Ls_support& support, const Vec3q& p, Mode mo
     const Motion_decision d = search(support, p);
     if (d.motion != Motion::undecided || mode == Mode::float_only) return d;
   }
-  return decide_motion(Polygonal_ls(support, make_directions(sides)), p, Mode::exact);
+  Motion_decision d = decide_motion(Polygonal_ls(support, make_directions(sides)), p, Mode::exact);
+  if (mode == Mode::hybrid) precise_fallback(support, p, d);
+  return d;
 }
 
 }  // namespace wrenchkit

@@ -87,6 +87,8 @@ std::vector<fl::Support_point_twin> twin_support(const Ls_support& s);
 //   hybrid — the float twin's certified search on the true LS first [FL-7], the polygons only when it is
 //            undecided (a load within the search's resolution of LS);
 //   float  — the search alone.
+// Hybrid, when both abstain: Newton's method in multiple precision proposes, exact rationals decide [SL-6]
+// (decided_by "newton"; exact_witness holds its twist when it slides).
 // Both are certified, so hybrid never contradicts exact; it decides more often (no N to refine). The
 // polytopes are needed only when the search is undecided: pass them, or nullptr to have them built here.
 struct Motion_decision {
@@ -94,6 +96,7 @@ struct Motion_decision {
   const char* decided_by = "none";  // "float" (the search), "polygons", or "none"
   std::size_t cells = 0;            // twists the search evaluated
   std::array<double, 3> witness{};  // slides by the search: a twist with h(q) ≤ q·p
+  std::optional<Vec3q> exact_witness;  // slides by "newton" (SL-6): a primitive integer twist with h(q) < q·p
 };
 Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& load, Mode mode,
                               const Ls_polytope* inner = nullptr, const Ls_polytope* outer = nullptr);

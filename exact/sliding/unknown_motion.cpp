@@ -196,6 +196,7 @@ Motion_over_f decide_motion_over(const Support& s, const Admissible& a, const Ve
     if (m.motion == Motion::slides && !r.sliding_vertex) r.sliding_vertex = i;
     if (m.motion == Motion::slides && std::string(m.decided_by) == "float")
       twists.push_back({Rational(m.witness[0]), Rational(m.witness[1]), Rational(m.witness[2])});
+    if (m.exact_witness) twists.push_back(*m.exact_witness);
   }
   if (r.sticking_vertex && r.sliding_vertex) {
     r.motion = Motion_over::depends;
