@@ -201,10 +201,14 @@ std::vector<fl::Support_point_twin> twin_support(const Ls_support& s) {
 
 namespace {
 
-// The float twin's certified search on the true surface [FL-7]; undecided when it cannot tell.
-Motion_decision search(const Ls_support& support, const Vec3q& p) {
+// The float twin's certified search on the true surface [FL-7]; undecided when it cannot tell within `cells`.
+// Hybrid gives it a tenth of its budget first: closer loads are decided in milliseconds by SL-6's Newton, and
+// only what Newton cannot settle (a load near a facet, where h has a kink) gets the search's full budget.
+constexpr std::size_t kSearchCells = 200000, kHybridFirstCells = 20000;
+Motion_decision search(const Ls_support& support, const Vec3q& p, std::size_t cells = kSearchCells) {
   Motion_decision d;
-  const fl::Motion_answer f = fl::classify_load(twin_support(support), {to_bounded(p[0]), to_bounded(p[1]), to_bounded(p[2])});
+  const fl::Motion_answer f =
+      fl::classify_load(twin_support(support), {to_bounded(p[0]), to_bounded(p[1]), to_bounded(p[2])}, cells);
   d.cells = f.cells;
   if (f.motion != fl::Motion_twin::undecided) {
     d.motion = f.motion == fl::Motion_twin::sticks ? Motion::sticks : Motion::slides;
@@ -216,13 +220,19 @@ Motion_decision search(const Ls_support& support, const Vec3q& p) {
 
 // [SL-6] Both abstained (a load within their resolution of the surface): Newton in multiple precision proposes,
 // exact rationals decide.
+// Then, if Newton too abstains, the search with its full budget.
 void precise_fallback(const Ls_support& support, const Vec3q& p, Motion_decision& d) {
   if (d.motion != Motion::undecided) return;
   std::vector<Rho_point> pts;
   pts.reserve(support.points.size());
   for (const Ls_point& q : support.points) pts.push_back({q.at, q.rho});
   const Precise_motion m = precise_motion(pts, p);
-  if (m.motion == Motion::undecided) return;
+  if (m.motion == Motion::undecided) {
+    const std::size_t spent = d.cells;
+    d = search(support, p);
+    d.cells += spent;
+    return;
+  }
   d.motion = m.motion;
   d.decided_by = "newton";
   if (m.motion == Motion::slides) d.exact_witness = m.twist;
@@ -239,7 +249,7 @@ Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mo
     return d;
   }
   if (mode != Mode::exact) {
-    d = search(model.support(), p);
+    d = search(model.support(), p, mode == Mode::hybrid ? kHybridFirstCells : kSearchCells);
     if (d.motion != Motion::undecided || mode == Mode::float_only) return d;
   }
   if ((inner && outer) || model.candidate_count() <= kMaxCandidates) {  // else too large to build
@@ -255,11 +265,14 @@ Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mo
 
 Motion_decision decide_motion(const Ls_support& support, const Vec3q& p, Mode mode, int sides) {
   if (support.points.size() < 2) return decide_motion(Polygonal_ls(support, make_directions(sides)), p, mode);
+  std::size_t spent = 0;
   if (mode != Mode::exact) {
-    const Motion_decision d = search(support, p);
+    const Motion_decision d = search(support, p, mode == Mode::hybrid ? kHybridFirstCells : kSearchCells);
     if (d.motion != Motion::undecided || mode == Mode::float_only) return d;
+    spent = d.cells;
   }
   Motion_decision d = decide_motion(Polygonal_ls(support, make_directions(sides)), p, Mode::exact);
+  d.cells = spent;
   if (mode == Mode::hybrid) precise_fallback(support, p, d);
   return d;
 }

@@ -87,8 +87,9 @@ std::vector<fl::Support_point_twin> twin_support(const Ls_support& s);
 //   hybrid — the float twin's certified search on the true LS first [FL-7], the polygons only when it is
 //            undecided (a load within the search's resolution of LS);
 //   float  — the search alone.
-// Hybrid, when both abstain: Newton's method in multiple precision proposes, exact rationals decide [SL-6]
-// (decided_by "newton"; exact_witness holds its twist when it slides).
+// Hybrid gives the search a tenth of its budget (20 000 twists) first; when it and the polygons abstain, Newton's
+// method in multiple precision proposes and exact rationals decide [SL-6] (decided_by "newton"; exact_witness
+// holds its twist when it slides); when Newton abstains too (a load near a facet), the search's full budget.
 // Both are certified, so hybrid never contradicts exact; it decides more often (no N to refine). The
 // polytopes are needed only when the search is undecided: pass them, or nullptr to have them built here.
 struct Motion_decision {
