@@ -2262,8 +2262,13 @@ class Support_blocks {
         throw Failure{at + show(f[i]) + " is not the given force " + show(v.f) + " of " + point_name(i)};
       sum += f[i], moment[0] += f[i] * v.x, moment[1] += f[i] * v.y;
     }
-    for (const Region& g : s_.regions) sum += g.W, moment[0] += g.M[0], moment[1] += g.M[1];  // a known pressure
-    if (sum != s_.W) throw Failure{path + ": the forces sum to " + show(sum) + ", not the weight " + show(s_.W)};
+    Q regions = 0;
+    for (const Region& g : s_.regions) regions += g.W, moment[0] += g.M[0], moment[1] += g.M[1];  // a known pressure
+    sum += regions;
+    if (sum != s_.W)
+      throw Failure{path + ": the forces sum to " + show(sum) +
+                    (s_.regions.empty() ? std::string() : " with the regions' " + show(regions)) + ", not the weight " +
+                    show(s_.W)};
     const Q wc[2] = {s_.W * s_.c[0], s_.W * s_.c[1]};
     if (moment[0] != wc[0] || moment[1] != wc[1])
       throw Failure{path + ": sum f_i r_i is " + show(moment[0], moment[1]) + ", not W c = " + show(wc[0], wc[1]) +
