@@ -650,6 +650,35 @@ TEST(HoldRegions, UnknownForcesAgainstAFineGridOfPoints) {
   EXPECT_GE(compared, 8);
 }
 
+// Beyond the 32 cells of the exact decision: the square's largest pure moment is (√2 + asinh 1)/6 ≈ 0.382598; the
+// cells' inner approximation at 32 cells falls short of 0.379, so hybrid holds it with the smoothed witness on finer
+// cells (certified like any hold: closed discs, exact sum), exact mode leaves it undecided; past the true value the
+// load moves. The mat and legs likewise: the middle leg alone leaves the mat's ≈ 0.19130.
+TEST(HoldRegions, FinerCellsForTheWitness) {
+  for (const char* m : {"0.379", "0.3825"}) {
+    const std::string scene = square_scene("", "", std::string(R"({"wrench": [0, 0, ")") + m + "\"]}");
+    const Hold_item h = hold_of(scene, Mode::hybrid);
+    ASSERT_EQ(h.status, Status::answered) << h.message;
+    EXPECT_EQ(h.answer.verdict, Hold_verdict::holds) << m << " " << h.answer.undecided_why;
+    EXPECT_GT(h.answer.cells, kMaxHoldRegionCells) << m;
+    EXPECT_NE(h.answer.decided_by.find("smoothed witness on"), std::string::npos) << h.answer.decided_by;
+    EXPECT_TRUE(test::checker_accepts(scene, h.certificate));
+    EXPECT_EQ(hold_of(scene, Mode::exact).answer.verdict, Hold_verdict::undecided) << m;
+  }
+  const std::string past = square_scene("", "", R"({"wrench": [0, 0, "0.3827"]})");
+  const Hold_item p = hold_of(past, Mode::hybrid);
+  EXPECT_NE(p.answer.verdict, Hold_verdict::holds);
+  if (p.answer.verdict == Hold_verdict::fails) {
+    EXPECT_TRUE(test::checker_accepts(past, p.certificate));
+  }
+  const std::string legs = mat_and_legs("", R"({"wrench": [0, 0, "0.1905"]})");
+  const Hold_item l = hold_of(legs, Mode::hybrid);
+  ASSERT_EQ(l.status, Status::answered) << l.message;
+  EXPECT_EQ(l.answer.verdict, Hold_verdict::holds) << l.answer.undecided_why;
+  EXPECT_GT(l.answer.cells, kMaxHoldRegionCells);
+  EXPECT_TRUE(test::checker_accepts(legs, l.certificate));
+}
+
 // Bad input: no load; too many unknown forces is an Input_error of decide_hold; float mode with an unknown
 // distribution is undecided (no LP over F in the twin).
 TEST(HoldInput, NoLoadAndFloatOverF) {
