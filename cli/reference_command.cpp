@@ -121,6 +121,24 @@ std::vector<Entry> corpus_entries(const Reference_options& ro) {
     out.push_back(entry(std::string("random_fixture.") + num, "random_fixture", "", "", "", std::to_string(seed),
                         stress::fixture_text(rng, contacts, points, load), ""));
   }
+  // Issue 16 [HD-2]: hold over a support region together with legs whose forces are not given (the mat and legs of
+  // proofs/examples/mat_legs_*, with and without a pin): held by every distribution, by none, and depending on it.
+  // Their stick/slide is still refused (limit_surface_refused: regions with a force not given) — the corpus' one
+  // refused question.
+  const char* const mat_legs = R"("support": {"mu": "1/2", "weight": 5, "pressure_center": [0, 0], "points": [{"at": [-2, 0]}, {"at": [0, 0]}, {"at": [2, 0]}], "regions": [{"outline": [["-1/2", "-1/2"], ["1/2", "-1/2"], ["1/2", "1/2"], ["-1/2", "1/2"]], "pressure": "uniform", "force": 1}]})";
+  const char* const pin = R"("contacts": [{"at": [-3, 0], "normal": [1, 0], "name": "pin"}], )";
+  const struct {
+    const char *id, *contacts, *load;
+  } fixture_regions[] = {
+      {"nudged", "", R"({"wrench": ["9/4", 0, 0]})"},     {"shoved", "", R"({"wrench": [3, 0, 0]})"},
+      {"twisted", "", R"({"wrench": [0, 0, 1]})"},         {"pinned_shoved", pin, R"({"wrench": [-3, 0, 0]})"},
+      {"pinned_twisted", pin, R"({"wrench": [-1, 0, 1]})"}, {"pinned_pulled", pin, R"({"wrench": [3, 0, 0]})"},
+  };
+  for (const auto& f : fixture_regions)
+    out.push_back(entry(std::string("fixture_regions.") + f.id, "fixture_regions", "", "", "", "",
+                        std::string(R"({"wrenchkit": 1, "name": "mat and legs of unknown force", )") + f.contacts +
+                            mat_legs + R"(, "load": )" + f.load + "}",
+                        ""));
   return out;
 }
 

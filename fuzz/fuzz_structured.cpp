@@ -116,7 +116,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                // pressure, maybe a point; a load whose motion must come with a certificate the checker accepts
       const int x0 = b.small(-4, 2), y0 = b.small(-4, 2), w = b.small(1, 4), h = b.small(1, 4);
       std::string outline, holes;
+      mpq_class cx, cy;  // the outline's centroid (the centre of a uniform pressure without a hole)
       if (b.next(2)) {
+        cx = mpq_class(2 * x0 + w, 2), cy = mpq_class(2 * y0 + h, 2);
         outline = "[[" + num(x0) + ", " + num(y0) + "], [" + num(x0 + w) + ", " + num(y0) + "], [" + num(x0 + w) + ", " +
                   num(y0 + h) + "], [" + num(x0) + ", " + num(y0 + h) + "]]";
         if (w >= 2 && h >= 2 && b.next(2))  // a hole strictly inside, written either way round
@@ -127,18 +129,44 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       } else {  // a triangle, either orientation; a flat one becomes a right triangle
         const int x1 = b.small(-4, 4), y1 = b.small(-4, 4), x2 = b.small(-4, 4), y2 = b.small(-4, 4);
         const bool flat = (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0) == 0;
+        cx = flat ? mpq_class(3 * x0 + w, 3) : mpq_class(x0 + x1 + x2, 3);
+        cy = flat ? mpq_class(3 * y0 + h, 3) : mpq_class(y0 + y1 + y2, 3);
         outline = flat ? "[[" + num(x0) + ", " + num(y0) + "], [" + num(x0 + w) + ", " + num(y0) + "], [" + num(x0) + ", " +
                              num(y0 + h) + "]]"
                        : "[[" + num(x0) + ", " + num(y0) + "], [" + num(x1) + ", " + num(y1) + "], [" + num(x2) + ", " +
                              num(y2) + "]]";
       }
       const int gx = b.small(-2, 2), gy = b.small(-2, 2);
-      const std::string pressure = b.next(2) ? "\"pressure\": \"uniform\", \"force\": " + frac(b.small(1, 4), 1, b)
-                                             : "\"pressure\": {\"linear\": [" + num(12 * (std::abs(gx) + std::abs(gy)) + b.small(1, 3)) +
-                                                   ", " + num(gx) + ", " + num(gy) + "]}";
+      const bool uniform = b.next(2), legs = uniform && holes.empty() && b.next(2);
+      const int force = b.small(1, 4);
+      const std::string pressure = uniform ? "\"pressure\": \"uniform\", \"force\": " + (legs ? num(force) : frac(force, 1, b))
+                                           : "\"pressure\": {\"linear\": [" + num(12 * (std::abs(gx) + std::abs(gy)) + b.small(1, 3)) +
+                                                 ", " + num(gx) + ", " + num(gy) + "]}";
       std::string pts;
-      if (b.next(2)) pts = "\"points\": [{\"at\": [" + num(b.small(-4, 4)) + ", " + num(b.small(-4, 4)) + "], \"force\": " +
-                           num(b.small(0, 2)) + "}], ";
+      mpq_class weight = force, moment[2] = {force * cx, force * cy};  // with legs: W and W c
+      if (b.next(2)) {
+        const int px = b.small(-4, 4), py = b.small(-4, 4), f = b.small(0, 2);
+        pts = "{\"at\": [" + num(px) + ", " + num(py) + "], \"force\": " + num(f) + "}";
+        weight += f, moment[0] += f * px, moment[1] += f * py;
+      }
+      // [HD-2] Legs whose forces are not given (a uniform region without a hole: its moment is F times its
+      // centroid): they carry R about a rational point q of their triangle, so F is not empty.
+      std::string extra;
+      if (legs) {
+        static const int at[3][2] = {{-6, -6}, {6, -6}, {0, 6}};
+        const int rest = b.small(1, 3), l[3] = {b.small(1, 3), b.small(1, 3), b.small(1, 3)};
+        for (int i = 0; i < 3; ++i) {
+          pts += std::string(pts.empty() ? "" : ", ") + "{\"at\": [" + num(at[i][0]) + ", " + num(at[i][1]) + "]}";
+          moment[0] += mpq_class(rest * l[i] * at[i][0], l[0] + l[1] + l[2]);
+          moment[1] += mpq_class(rest * l[i] * at[i][1], l[0] + l[1] + l[2]);
+        }
+        weight += rest;
+        moment[0] /= weight, moment[1] /= weight;
+        moment[0].canonicalize(), moment[1].canonicalize();
+        extra = "\"weight\": \"" + weight.get_str() + "\", \"pressure_center\": [\"" + moment[0].get_str() + "\", \"" +
+                moment[1].get_str() + "\"], ";
+      }
+      if (!pts.empty()) pts = extra + "\"points\": [" + pts + "], ";
       load = ", \"support\": {\"mu\": " + std::string(mus[1 + b.next(5)]) + ", " + pts + "\"regions\": [{\"outline\": " +
              outline + holes + ", " + pressure + "}]}, \"load\": {\"wrench\": [" + frac(b.small(0, 6), 2, b) + ", " +
              num(b.small(-3, 3)) + ", " + frac(b.small(0, 9), 3, b) + "]}";

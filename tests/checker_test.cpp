@@ -372,10 +372,10 @@ TEST(CheckerMalformed, KeysAndTypes) {
             R"(missing required key "holds")");
   EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": 1, "holds": false, )" + twist + "}"),
             R"(missing required key "property")");
-  for (const char* version : {"2", "1.0", "1e0", "\"1\"", "true"})
+  for (const char* version : {"3", "0", "2.0", "1.0", "1e0", "\"1\"", "true"})
     EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": )" + std::string(version) +
                                           R"(, "property": "force_closure", "holds": false, )" + twist + "}"),
-              "wrenchkit_certificate: expected the integer 1");
+              "wrenchkit_certificate: expected the integer 1 or 2");
   EXPECT_EQ(
       rejection(block_corner, R"({"wrenchkit_certificate": 1, "property": "closure", "holds": false, )" + twist + "}"),
       R"(property: expected "force_closure", "form_closure", "equilibrium", "motion" or "hold")");

@@ -197,7 +197,7 @@ TEST_F(Corpus, HoldsEveryKindOfScene) {
   }
   for (const char* f : {"golden", "friction_threshold", "cone_edge", "nearly_concurrent", "nearly_parallel", "huge_offset",
                         "ladder_equilibrium", "random_generic", "random_grid", "long_rational", "rational_rotation",
-                        "unknown_support", "region_support", "fixture_pin", "random_fixture"})
+                        "unknown_support", "region_support", "fixture_pin", "random_fixture", "fixture_regions"})
     EXPECT_GT(families[f], 0) << f;
   EXPECT_GT(with_load, 50);
   EXPECT_GT(with_support, 20);
@@ -209,6 +209,20 @@ TEST_F(Corpus, HoldsEveryKindOfScene) {
   for (const char* m : {"regions sticks", "regions slides", "unknown slides", "unknown depends", "known sticks",
                         "known slides"})
     EXPECT_GT(motions[m], 0) << m;
+  // Issue 16 [HD-2]: hold over regions with legs whose forces are not given — every verdict, certified in format 2;
+  // their stick/slide is the corpus' refused question.
+  std::map<std::string, int> region_holds;
+  for (const json::Value& v : lines_) {
+    if (v.find("family")->text != "fixture_regions") continue;
+    const json::Value* h = v.find("hold");
+    ASSERT_NE(h, nullptr);
+    ASSERT_NE(h->type, json::Type::null) << v.find("id")->text;
+    ++region_holds[json::text_of(*h)];
+    EXPECT_EQ(v.find("certificates")->find("hold")->find("wrenchkit_certificate")->text, "2") << v.find("id")->text;
+    EXPECT_EQ(v.find("limit_surface")->type, json::Type::null) << v.find("id")->text;
+    EXPECT_NE(v.find("limit_surface_refused"), nullptr) << v.find("id")->text;
+  }
+  for (const char* h : {"true", "false", "\"depends\""}) EXPECT_GT(region_holds[h], 0) << h;
 }
 
 TEST_F(Corpus, EveryCertificateIsAcceptedByTheIndependentChecker) {

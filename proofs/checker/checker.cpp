@@ -1443,6 +1443,8 @@ struct Witness {
   std::vector<Q> speeds;  // speed_bounds
   bool has_combination = false;
   std::vector<Term> combination;
+  bool has_regions = false;  // format 2 (§7.5): the regions' blocks of this witness's distribution
+  std::vector<struct Block> regions;
 };
 // A region's block (certificate-format.md §6.4): cells (vertices and counter-clockwise index triples) that tile
 // the region, with a force per cell (sticks) or a speed bound per vertex (slides).
@@ -1501,6 +1503,7 @@ struct Certificate {
   bool hold = false;         // property "hold" (§7), read with friction
   bool holds = false;
   bool depends = false;      // "holds": "depends" (property "hold" only)
+  int version = 1;           // "wrenchkit_certificate": 1, or 2 (§7.5: a witness may carry its regions' blocks)
   std::vector<Term> combination;
   std::vector<Ref> independent;
   std::string_view twist[3] = {"0", "0", "0"}, where[2] = {"0", "0"};  // texts; where: reading.point or .direction
@@ -1593,6 +1596,8 @@ std::vector<Pair> read_pairs(Reader& r) {
 // A stick witness {"distribution", "support_forces"} or (slide) a slide witness {"distribution",
 // "twist", "speed_bounds"}: exactly these keys; a stick witness may also hold "combination" (a hold witness,
 // §7: which keys a property allows is checked once the property is known).
+Block read_block(Reader& r);
+
 Witness read_witness(Reader& r, bool slide) {
   Witness w;
   w.path = r.path();
@@ -1620,6 +1625,11 @@ Witness read_witness(Reader& r, bool slide) {
       read_fixed(r, 3, "an array of three rationals [vx, vy, w]", [&](std::size_t k) { w.twist[k] = read_rational(r); });
     } else if (key == "speed_bounds" && slide) {
       w.speeds = read_rationals(r);
+    } else if (key == "regions") {  // allowed by property "hold" in format 2 only (checked with the scene)
+      if (r.peek() != Kind::array) r.fail("expected an array of region blocks (one per support region)");
+      r.begin_array();
+      while (r.next_item()) w.regions.push_back(read_block(r));
+      w.has_regions = true;
     } else {
       r.fail("unknown key " + quote(key), true);
     }
@@ -1711,7 +1721,9 @@ Certificate read_certificate(Reader& r) {
   while (r.next_key(key)) {
     c.keys.insert(key);
     if (key == "wrenchkit_certificate") {
-      if (r.peek() != Kind::number || r.number() != "1") r.fail("expected the integer 1");
+      const std::string_view v = r.peek() == Kind::number ? r.number() : "";
+      if (v != "1" && v != "2") r.fail("expected the integer 1 or 2");
+      c.version = v == "2" ? 2 : 1;
     } else if (key == "property") {
       const std::string_view p = r.peek() == Kind::string ? r.string_view() : "";
       if (p != "force_closure" && p != "form_closure" && p != "equilibrium" && p != "motion" && p != "hold")
@@ -2250,7 +2262,13 @@ class Support_blocks {
         throw Failure{at + show(f[i]) + " is not the given force " + show(v.f) + " of " + point_name(i)};
       sum += f[i], moment[0] += f[i] * v.x, moment[1] += f[i] * v.y;
     }
-    if (sum != s_.W) throw Failure{path + ": the forces sum to " + show(sum) + ", not the weight " + show(s_.W)};
+    Q regions = 0;
+    for (const Region& g : s_.regions) regions += g.W, moment[0] += g.M[0], moment[1] += g.M[1];  // a known pressure
+    sum += regions;
+    if (sum != s_.W)
+      throw Failure{path + ": the forces sum to " + show(sum) +
+                    (s_.regions.empty() ? std::string() : " with the regions' " + show(regions)) + ", not the weight " +
+                    show(s_.W)};
     const Q wc[2] = {s_.W * s_.c[0], s_.W * s_.c[1]};
     if (moment[0] != wc[0] || moment[1] != wc[1])
       throw Failure{path + ": sum f_i r_i is " + show(moment[0], moment[1]) + ", not W c = " + show(wc[0], wc[1]) +
@@ -2526,6 +2544,10 @@ void check_motion(const Certificate& c, const Scene& scene, const Limits& lim) {
       if (w->has_combination) throw Failure{w->path + ": unknown key \"combination\""};
     for (const Witness& w : c.motion_members->vertices)
       if (w.has_combination) throw Failure{w.path + ": unknown key \"combination\""};
+    for (const Witness* w : {&c.motion_members->sticking, &c.motion_members->sliding})
+      if (w->has_regions) throw Failure{w->path + ": unknown key \"regions\""};
+    for (const Witness& w : c.motion_members->vertices)
+      if (w.has_regions) throw Failure{w.path + ": unknown key \"regions\""};
   }
   if (!scene.support) throw Failure{"property: \"motion\" needs a scene with a support"};
   Motion_check(c, *scene.support, lim).run();
@@ -2550,8 +2572,16 @@ class Hold_check {
     if (!c_.keys.count("holds")) throw Failure{"missing required key \"holds\""};
     const bool support = scene_.support.has_value(), known = !support || scene_.support->unknown == 0;
     const bool regions = support && !scene_.support->regions.empty();
-    if (regions && !known)
-      throw Failure{"holds: a support with regions and points whose force is not given has no certificate in format 1"};
+    // Format 2 (§7.5): regions together with a force not given; each witness carries its own regions' blocks
+    // (holds: every vertex witness's stick blocks; depends: the holding one's stick blocks and the failing one's
+    // slide blocks); "holds": false keeps them at the top level, with the dual.
+    const bool per_witness = regions && !known;
+    if (per_witness && c_.version < 2)
+      throw Failure{"holds: a support with regions and points whose force is not given has no certificate in format 1 "
+                    "(format 2, \"wrenchkit_certificate\": 2)"};
+    for (const Witness* w : {&m_.holding, &m_.failing})
+      witness_regions(*w, per_witness);
+    for (const Witness& w : m_.vertices) witness_regions(w, per_witness);
     const std::string claim = c_.depends ? "\"depends\"" : c_.holds ? "true" : "false";
     if (c_.depends && known)
       throw Failure{"holds: \"depends\" needs a support with an unknown distribution (" +
@@ -2568,7 +2598,7 @@ class Hold_check {
       if (support) allowed.insert("speed_bounds");
       if (!known) allowed.insert("dual");
     }
-    if (regions) allowed.insert("regions");
+    if (regions && (known || (!c_.holds && !c_.depends))) allowed.insert("regions");
     const char* const keys[] = {"combination", "support_forces", "twist",   "reading", "speed_bounds",
                                 "dual",        "vertices",       "holding", "failing", "regions"};
     const std::string where = !support ? " and the scene has no support"
@@ -2577,46 +2607,64 @@ class Hold_check {
     for (const char* key : keys)
       if (!allowed.count(key) && !optional.count(key) && c_.keys.count(key))
         throw Failure{std::string("key \"") + key + "\" is not allowed when \"holds\" is " + claim +
-                      (std::string(key) == "regions" ? std::string(" and the support has no regions") : where)};
+                      (std::string(key) == "regions" ? std::string(regions ? " at the top level (format 2: inside each witness)"
+                                                                           : " and the support has no regions")
+                                                      : where)};
     for (const char* key : keys)
       if (allowed.count(key) && !c_.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
-    if (regions && m_.regions.size() != scene_.support->regions.size())
+    const bool top = allowed.count("regions") > 0;  // the regions' blocks at the top level
+    if (top && m_.regions.size() != scene_.support->regions.size())
       throw Failure{"regions: " + std::to_string(m_.regions.size()) + " blocks, but the support has " +
                     std::to_string(scene_.support->regions.size()) + " regions"};
-    blocks_ = regions ? &m_.regions : nullptr;
+    blocks_ = top ? &m_.regions : nullptr;
     const std::vector<Q> f = support ? b_.given() : std::vector<Q>();
     if (c_.depends) {
       if (!m_.holding.has_combination) throw Failure{m_.holding.path + ": missing required key \"combination\""};
       b_.in_f(m_.holding.distribution, m_.holding.path + ".distribution");
-      hold(m_.holding.distribution, m_.holding.combination, m_.holding.forces, m_.holding.path + ".");
+      hold(m_.holding.distribution, m_.holding.combination, m_.holding.forces, m_.holding.path + ".",
+           own_blocks(m_.holding));
       b_.in_f(m_.failing.distribution, m_.failing.path + ".distribution");
-      return fail(m_.failing.distribution, m_.failing.twist, m_.failing.speeds, m_.failing.path + ".", nullptr);
+      return fail(m_.failing.distribution, m_.failing.twist, m_.failing.speeds, m_.failing.path + ".", nullptr,
+                  own_blocks(m_.failing));
     }
     if (!c_.holds) {
-      fail(f, twist_, m_.speed_bounds, "", known ? nullptr : m_.dual);
+      fail(f, twist_, m_.speed_bounds, "", known ? nullptr : m_.dual, blocks_);
       return check_reading(c_, twist_);
     }
-    if (known) return hold(f, c_.combination, m_.support_forces, "");
+    if (known) return hold(f, c_.combination, m_.support_forces, "", blocks_);
     // Holds for every f in F: a hold witness at every vertex of F (W is a convex cone and LS is linear in f).
     std::vector<const std::vector<Q>*> distributions;
     for (const Witness& v : m_.vertices) {
       if (!v.has_combination) throw Failure{v.path + ": missing required key \"combination\""};
       b_.in_f(v.distribution, v.path + ".distribution");
-      hold(v.distribution, v.combination, v.forces, v.path + ".");
+      hold(v.distribution, v.combination, v.forces, v.path + ".", own_blocks(v));
       distributions.push_back(&v.distribution);
     }
     b_.vertices_covered(distributions, "vertices");
   }
 
  private:
+  // A witness's own "regions" (format 2): required, one block per region, where regions meet a force not given;
+  // an unknown key elsewhere.
+  void witness_regions(const Witness& w, bool required) const {
+    if (w.path.empty()) return;  // not present
+    if (!required && w.has_regions) throw Failure{w.path + ": unknown key \"regions\""};
+    if (!required) return;
+    if (!w.has_regions) throw Failure{w.path + ": missing required key \"regions\""};
+    if (w.regions.size() != scene_.support->regions.size())
+      throw Failure{w.path + ".regions: " + std::to_string(w.regions.size()) + " blocks, but the support has " +
+                    std::to_string(scene_.support->regions.size()) + " regions"};
+  }
+  const std::vector<Block>* own_blocks(const Witness& w) const { return w.has_regions ? &w.regions : nullptr; }
+
   // Contact weights and support forces (closed discs) that cancel the load exactly.
   void hold(const std::vector<Q>& f, const std::vector<Term>& combination, const std::vector<Pair>& g,
-            const std::string& prefix) const {
+            const std::string& prefix, const std::vector<Block>* blocks) const {
     Generator_cache cache;
     Seen seen;
     std::vector<Int_wrench> terms = weighted_terms(combination, scene_.contacts, Reading::friction, lim_, cache, seen);
     if (scene_.support.has_value()) {
-      const std::array<Q, 3> sum = b_.support_sum(f, g, prefix + "support_forces", false, blocks_);
+      const std::array<Q, 3> sum = b_.support_sum(f, g, prefix + "support_forces", false, blocks);
       terms.push_back(integer_form(sum[0], sum[1], sum[2]));
     }
     terms.push_back(integer_form(scene_.load->fx, scene_.load->fy, scene_.load->m));
@@ -2629,9 +2677,9 @@ class Hold_check {
 
   // A motion every contact allows that the load drives harder than the support's friction can resist.
   void fail(const std::vector<Q>& f, const Q (&t)[3], const std::vector<Q>& u, const std::string& prefix,
-            const Q* dual) const {
+            const Q* dual, const std::vector<Block>* blocks) const {
     allowed_by_every_contact(t, scene_.contacts, Reading::friction, lim_, prefix);
-    const Q bound = scene_.support.has_value() ? b_.friction_bound(f, t, u, prefix, dual, blocks_) : Q(0);
+    const Q bound = scene_.support.has_value() ? b_.friction_bound(f, t, u, prefix, dual, blocks) : Q(0);
     const Q power = t[0] * scene_.load->fx + t[1] * scene_.load->fy + t[2] * scene_.load->m;
     if (!(power > bound))
       throw Failure{prefix + "twist: power against the load t.w_L = " + show(power) + " is not more than " +

@@ -35,6 +35,10 @@ FIXTURE = {"wrenchkit": 1, "body": SQUARE_BODY, "contacts": PIN,
 TABLE_PINNED = {"wrenchkit": 1, "body": SQUARE_BODY, "contacts": PIN,
                 "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": at} for at in LEGS]}}
 
+MAT_LEGS = {"wrenchkit": 1, "support": {"mu": "1/2", "weight": 5, "pressure_center": [0, 0],
+                                      "points": [{"at": [-2, 0]}, {"at": [0, 0]}, {"at": [2, 0]}],
+                                      "regions": [{"outline": [["-1/2", "-1/2"], ["1/2", "-1/2"], ["1/2", "1/2"],
+                                                               ["-1/2", "1/2"]], "pressure": "uniform", "force": 1}]}}
 SQUARE_REGION = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 1}
 
 SCENES = {
@@ -165,6 +169,14 @@ SCENES = {
                                "the centre", "body": SQUARE_BODY, "contacts": PIN,
                                "support": {"mu": 1, "regions": [SQUARE_REGION]},
                                "load": {"force": [-1, 0], "at": [0, 1]}},
+    # Hold over a region with legs whose forces are not given (section 7.5, format 2): the mat [-1/2,1/2]^2 (uniform,
+    # force 1) and legs (-2,0), (0,0), (2,0) carrying W - 1 = 4 about the origin: F's vertices (0,4,0) and (2,0,2).
+    "mat_legs_nudged": dict(MAT_LEGS, name="mat and three legs of unknown force, pushed by (9/4, 0) through the centre: "
+                            "held by every distribution", load={"wrench": ["9/4", 0, 0]}),
+    "mat_legs_shoved": dict(MAT_LEGS, name="mat and three legs of unknown force, pushed by (3, 0) through the centre: "
+                            "moves under every distribution", load={"wrench": [3, 0, 0]}),
+    "mat_legs_twisted": dict(MAT_LEGS, name="mat and three legs of unknown force, twisted by the moment 1: depends on "
+                             "the distribution", load={"wrench": [0, 0, 1]}),
     "square_frame": {
         "wrenchkit": 1,
         "name": "the frame [-2,2]^2 minus [-1,1]^2, uniform, W = 1, mu = 1, written clockwise",
@@ -215,6 +227,11 @@ def hold(claim, **rest):
     return dict({"wrenchkit_certificate": 1, "property": "hold", "holds": claim}, **rest)
 
 
+def hold2(claim, **rest):
+    """A hold certificate in format 2 (section 7.5: regions together with forces not given)."""
+    return dict({"wrenchkit_certificate": 2, "property": "hold", "holds": claim}, **rest)
+
+
 def hold_witness(distribution, combination, forces):
     return {"distribution": distribution, "combination": combination, "support_forces": forces}
 
@@ -238,6 +255,14 @@ def block(cells, **rest):
 # their discs of radius 1/2; four cells around the centre, whose corner speeds for q = (0, 0, 1) are 0 and
 # sqrt 2 <= 17/12, bound the power (sqrt 2 + asinh 1)/3 ~ 0.765 by 4 (2 * 17/12)/12 = 17/18 <= 1 = q.p for (0, 0, 1).
 SQUARE_2 = ([[-1, -1], [1, -1], [1, 1], [-1, 1]], [[0, 1, 2], [0, 2, 3]])
+MAT_2 = ([["-1/2", "-1/2"], ["1/2", "-1/2"], ["1/2", "1/2"], ["-1/2", "1/2"]], [[0, 1, 2], [0, 2, 3]])
+MAT_4 = ([[0, 0], ["-1/2", "-1/2"], ["1/2", "-1/2"], ["1/2", "1/2"], ["-1/2", "1/2"]], [[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 1]])
+MAT_PUSH = block(MAT_2, forces=[["-1/8", "0"], ["-1/8", "0"]])
+MAT_SLIDE_X = block(MAT_2, speed_bounds=["1", "1", "1", "1"])
+MAT_HOLDING = dict(hold_witness(["2", "0", "2"], [], [["0", "1/4"], ["0", "0"], ["0", "-1/4"]]),
+                   regions=[block(MAT_2, forces=[["0", "0"], ["0", "0"]])])
+MAT_FAILING = dict(slide_witness(["0", "4", "0"], ["0", "0", "1"], ["2", "0", "2"]),
+                   regions=[block(MAT_4, speed_bounds=["0", "17/24", "17/24", "17/24", "17/24"])])
 SQUARE_4 = ([[0, 0], [-1, -1], [1, -1], [1, 1], [-1, 1]], [[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 1]])
 SQUARE_STICKS = motion("sticks", [F(1, 2), 0, F(1, 4)], support_forces=[],
                        regions=[block(SQUARE_2, forces=[["7/16", "3/16"], ["1/16", "-3/16"]])])
@@ -548,6 +573,31 @@ CERTS = [
     ("square_region_pin_push", "slide_bound_too_low", "invalid:power|twist: power against the load t.w_L = 1/4 is not more than",
      hold(False, twist=["0", "0", "1"], speed_bounds=[],
           regions=[block(SQUARE_4, speed_bounds=["0", "17/12", "17/12", "17/12", "17/12"])])),
+    # hold over a region with forces not given (section 7.5, format 2): each witness carries its regions' blocks.
+    # (9/4, 0, 0): at each vertex the legs take 2 (on their circles) and the mat's two cells (-1/8, 0) each (discs of
+    # radius 1/4; centroids (1/6, -1/6), (-1/6, 1/6): no moment).
+    ("mat_legs_nudged", "holds_for_every", "valid",
+     hold2(True, vertices=[dict(hold_witness(["0", "4", "0"], [], [["0", "0"], ["-2", "0"], ["0", "0"]]), regions=[MAT_PUSH]),
+                           dict(hold_witness(["2", "0", "2"], [], [["-1", "0"], ["0", "0"], ["-1", "0"]]), regions=[MAT_PUSH])])),
+    ("mat_legs_nudged", "vertex_without_regions", 'invalid:keys|vertices[1]: missing required key "regions"',
+     hold2(True, vertices=[dict(hold_witness(["0", "4", "0"], [], [["0", "0"], ["-2", "0"], ["0", "0"]]), regions=[MAT_PUSH]),
+                           hold_witness(["2", "0", "2"], [], [["-1", "0"], ["0", "0"], ["-1", "0"]])])),
+    # the translation (1, 0, 0): mu_i u_i = 1/2 <= y0 = 1/2; the legs resist at most y0 W' = 2, the mat 1/2 (speeds 1):
+    # 5/2 < 3. Against (9/4, 0, 0) the same bound is not below the power: without the mat's 1/2 it would be.
+    ("mat_legs_shoved", "fails_for_every", "valid",
+     hold2(False, twist=["1", "0", "0"], speed_bounds=["1", "1", "1"], regions=[MAT_SLIDE_X], dual=["1/2", "0", "0"])),
+    ("mat_legs_nudged", "fails_for_every", "invalid:power|twist: power against the load t.w_L = 9/4 is not more than the dual bound 5/2",
+     hold2(False, twist=["1", "0", "0"], speed_bounds=["1", "1", "1"], regions=[MAT_SLIDE_X], dual=["1/2", "0", "0"])),
+    # the moment 1: the barbell (2, 0, 2) holds it with (0, 1/4) and (0, -1/4) at its legs; under (0, 4, 0) the middle
+    # leg does not move under the rotation (0, 0, 1) and the mat resists at most (1/2)(4 cells)(17/24 + 17/24)/12 = 17/72.
+    ("mat_legs_twisted", "depends", "valid",
+     hold2("depends", holding=MAT_HOLDING, failing=MAT_FAILING)),
+    ("mat_legs_twisted", "format_1", "invalid:regions unknown|holds: a support with regions and points whose force is not given has no certificate in format 1",
+     hold("depends", holding=MAT_HOLDING, failing=MAT_FAILING)),
+    ("mat_legs_twisted", "holding_outside_F", "invalid:F|holding.distribution: the forces sum to 6 with the regions' 1, not the weight 5",
+     hold2("depends", holding=dict(MAT_HOLDING, distribution=["5/2", "0", "5/2"]), failing=MAT_FAILING)),
+    ("mat_legs_twisted", "regions_at_the_top", 'invalid:keys|key "regions" is not allowed when "holds" is "depends" at the top level',
+     hold2("depends", holding=MAT_HOLDING, failing=MAT_FAILING, regions=[block(MAT_2, forces=[["0", "0"], ["0", "0"]])])),
     ("barbell_known", "blocks_without_regions", 'invalid:keys|key "regions" is not allowed when "motion" is "sticks" and the support has no regions',
      motion("sticks", [F(1, 4), 0, 0], support_forces=[["1/8", "0"], ["1/8", "0"]], regions=[])),
 ]
@@ -635,12 +685,13 @@ def gauss_solve(columns, b):
     return [A[r][n] for r in range(n)]
 
 
-def vertices_of_F(pts, given, W, c):
+def vertices_of_F(pts, given, W, c, regions=()):
     """The vertices of F by brute force: every set S of at most three unknown points whose columns (1, x, y) are
     independent and give a strictly positive solution of the three rows (and the given forces alone when the rest
     is zero)."""
     unknown = [i for i, q in enumerate(pts) if q[3] is None]
-    b = [W - sum(given)] + [W * c[k] - sum(f * q[k] for f, q in zip(given, pts)) for k in range(2)]
+    b = ([W - sum(given) - sum(r["W"] for r in regions)]
+         + [W * c[k] - sum(f * q[k] for f, q in zip(given, pts)) - sum(r["M"][k] for r in regions) for k in range(2)])
     out = []
     for size in range(0, 4):
         for S in itertools.combinations(unknown, size):
@@ -669,9 +720,12 @@ def region(r, sup):
     coef = [number(r["force"]) / area, F(0), F(0)] if r["pressure"] == "uniform" else [number(v) for v in r["pressure"]["linear"]]
     reg = {"rings": rings, "coef": coef, "mu": number(r.get("mu", sup.get("mu")))}
     # W by the fan triangles (0, a, b) of the oriented boundary, the edge-midpoint rule on each.
-    reg["W"] = sum((a[0] * b[1] - a[1] * b[0]) / 2 / 3 * sum(pressure(reg, m) for m in (
-        (a[0] / 2, a[1] / 2), (b[0] / 2, b[1] / 2), ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)))
-        for ring in rings for a, b in zip(ring, ring[1:] + ring[:1]))
+    def fan(g):  # the integral of g(r) p(r) over the region, by the fan triangles' edge midpoints (degree <= 2)
+        return sum((a[0] * b[1] - a[1] * b[0]) / 2 / 3 * sum(g(m) * pressure(reg, m) for m in (
+            (a[0] / 2, a[1] / 2), (b[0] / 2, b[1] / 2), ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)))
+            for ring in rings for a, b in zip(ring, ring[1:] + ring[:1]))
+    reg["W"] = fan(lambda m: 1)
+    reg["M"] = (fan(lambda m: m[0]), fan(lambda m: m[1]))
     return reg
 
 
@@ -872,9 +926,17 @@ def verify_hold(scene, cert):
     claim = cert["holds"]
     if claim == "depends" and known:
         return "depends known"
-    if regions and not known:
+    per_witness = bool(regions) and not known  # format 2 (section 7.5): each witness carries its regions' blocks
+    if per_witness and cert["wrenchkit_certificate"] != 2:
         return "regions unknown"
-    base = {"wrenchkit_certificate", "property", "holds"} | ({"regions"} if regions else set())
+    top = regions and (known or claim is False)
+    base = {"wrenchkit_certificate", "property", "holds"} | ({"regions"} if top else set())
+    for w in ([cert["holding"], cert["failing"]] if claim == "depends" else cert.get("vertices", [])):
+        if ("regions" in w) != per_witness or (per_witness and len(w["regions"]) != len(regions)):
+            return "keys"
+        for reg, blk in zip(regions, w.get("regions", ())):
+            if not tiles(reg, *cells_of(blk)):
+                return "tiling"
     if claim is True:
         want = ({"combination"} | ({"support_forces"} if sup else set())) if known else {"vertices"}
     elif claim is False:
@@ -883,12 +945,13 @@ def verify_hold(scene, cert):
         want = {"holding", "failing"}
     if set(cert) - {"reading"} != base | want or ("reading" in cert and claim is not False):
         return "keys"
-    if regions and len(cert["regions"]) != len(regions):
+    if top and len(cert["regions"]) != len(regions):
         return "keys"
     for reg, blk in zip(regions, cert.get("regions", ())):
         if not tiles(reg, *cells_of(blk)):
             return "tiling"
     given = [f or F(0) for *_, f in pts]
+    fixed = (sum(r["W"] for r in regions), [sum(r["M"][k] for r in regions) for k in range(2)])  # a known pressure
     if sup is not None and not known:
         W, c = number(sup["weight"]), [number(v) for v in sup.get("pressure_center", scene.get("body", {}).get("com"))]
     else:
@@ -896,9 +959,10 @@ def verify_hold(scene, cert):
 
     def in_F(f):
         return (len(f) == len(pts) and all(v >= 0 for v in f) and all(q[3] is None or q[3] == v for q, v in zip(pts, f))
-                and sum(f) == W and all(sum(v * q[k] for v, q in zip(f, pts)) == W * c[k] for k in range(2)))
+                and sum(f) + fixed[0] == W
+                and all(sum(v * q[k] for v, q in zip(f, pts)) + fixed[1][k] == W * c[k] for k in range(2)))
 
-    def holds(f, combination, forces):
+    def holds(f, combination, forces, blocks):
         names = [(t["contact"], t["edge"]) for t in combination]
         if len(set(names)) != len(names):
             return "duplicate"
@@ -917,7 +981,7 @@ def verify_hold(scene, cert):
             if a * a + b * b > (q[2] * fi) ** 2:  # the closed disc
                 return "disc"
             total = [total[0] + a, total[1] + b, total[2] + q[0] * b - q[1] * a]
-        for reg, blk in zip(regions, cert.get("regions", ())):  # cell forces in closed discs, at pressure centroids
+        for reg, blk in zip(regions, blocks):  # cell forces in closed discs, at pressure centroids
             vs, tris = cells_of(blk)
             if len(blk["forces"]) != len(tris):
                 return "disc"
@@ -928,7 +992,7 @@ def verify_hold(scene, cert):
                 total = [total[0] + a, total[1] + b, total[2] + (mx * b - my * a) / Fk]
         return None if total == [0, 0, 0] else "sum"
 
-    def fails(f, twist, u, dual):
+    def fails(f, twist, u, dual, blocks):
         t = [rational(v) for v in twist]
         for g in (g for cc in gens for g in cc.values()):
             if sum(a * b for a, b in zip(t, g)) < 0:
@@ -939,39 +1003,42 @@ def verify_hold(scene, cert):
             return "speed"
         if dual is None:
             bound = sum(q[2] * fi * v for q, fi, v in zip(pts, f, u))
-            for reg, blk in zip(regions, cert.get("regions", ())):  # mu sum_cells sum_j w_j u_j >= mu int |v| p
-                b = slide_block_bound(reg, blk, t)
-                if b is None:
-                    return "speed"
-                bound += b
         else:
             y = [rational(v) for v in dual]
             if any(q[3] is None and q[2] * v > y[0] + y[1] * q[0] + y[2] * q[1] for q, v in zip(pts, u)):
                 return "dual"
-            bound = (sum(q[2] * fi * v for q, fi, v in zip(pts, given, u) if q[3] is not None) + y[0] * (W - sum(given))
-                     + sum(y[1 + k] * (W * c[k] - sum(fi * q[k] for fi, q in zip(given, pts))) for k in range(2)))
+            bound = (sum(q[2] * fi * v for q, fi, v in zip(pts, given, u) if q[3] is not None)
+                     + y[0] * (W - sum(given) - fixed[0])
+                     + sum(y[1 + k] * (W * c[k] - sum(fi * q[k] for fi, q in zip(given, pts)) - fixed[1][k]) for k in range(2)))
+        for reg, blk in zip(regions, blocks):  # mu sum_cells sum_j w_j u_j >= mu int |v| p
+            b = slide_block_bound(reg, blk, t)
+            if b is None:
+                return "speed"
+            bound += b
         return None if sum(a * b for a, b in zip(t, load)) > bound else "power"
 
+    top_blocks = cert.get("regions", ())
     if claim is True and known:
-        return holds(given, cert["combination"], cert.get("support_forces", []))
+        return holds(given, cert["combination"], cert.get("support_forces", []), top_blocks)
     if claim is False:
-        return fails(given, cert["twist"], cert.get("speed_bounds", []), None if known else cert["dual"])
+        return fails(given, cert["twist"], cert.get("speed_bounds", []), None if known else cert["dual"], top_blocks)
     if claim == "depends":
         h, fl = cert["holding"], cert["failing"]
         f1, f2 = [rational(v) for v in h["distribution"]], [rational(v) for v in fl["distribution"]]
         if not in_F(f1) or not in_F(f2):
             return "F"
-        return holds(f1, h["combination"], h["support_forces"]) or fails(f2, fl["twist"], fl["speed_bounds"], None)
+        return (holds(f1, h["combination"], h["support_forces"], h.get("regions", ()))
+                or fails(f2, fl["twist"], fl["speed_bounds"], None, fl.get("regions", ())))
     wit = []
     for w in cert["vertices"]:
         f = [rational(v) for v in w["distribution"]]
         if not in_F(f):
             return "F"
-        reason = holds(f, w["combination"], w["support_forces"])
+        reason = holds(f, w["combination"], w["support_forces"], w.get("regions", ()))
         if reason:
             return reason
         wit.append(f)
-    return None if all(f in wit for f in vertices_of_F(pts, given, W, c)) else "vertex"
+    return None if all(f in wit for f in vertices_of_F(pts, given, W, c, regions)) else "vertex"
 
 
 def verify(scene, cert):
@@ -982,7 +1049,8 @@ def verify(scene, cert):
                "holding", "failing", "regions"}
     if keys - allowed:
         return "unknown key"
-    if cert.get("wrenchkit_certificate") == 1 and cert.get("property") in ("motion", "hold"):
+    if (cert.get("wrenchkit_certificate") == 1 and cert.get("property") == "motion") or (
+            cert.get("wrenchkit_certificate") in (1, 2) and cert.get("property") == "hold"):
         try:
             return (verify_motion if cert["property"] == "motion" else verify_hold)(scene, cert)
         except (ValueError, KeyError, TypeError) as e:
