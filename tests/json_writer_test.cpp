@@ -87,6 +87,41 @@ TEST(JsonWriter, RationalsAsToStringInLowestTerms) {
   }
 }
 
+// The 128-bit fast path (numbers below 2^128 written without GMP) against GMP's own text, at the edges of
+// its ranges: 0, powers of ten and of two around 2^64 and 2^128, each ± 1, signed, as numerators and
+// denominators (seeded random factors between them).
+TEST(JsonWriter, RationalsAroundTwoToThe128WrittenAsGmpDoes) {
+  std::vector<Integer> edges = {Integer(0), Integer(1), Integer(9), Integer(10)};
+  for (unsigned e : {18u, 19u, 20u, 38u, 39u, 40u}) {
+    Integer t;
+    mpz_ui_pow_ui(t.get_mpz_t(), 10, e);
+    for (int d = -1; d <= 1; ++d) edges.push_back(Integer(t + d));
+  }
+  for (unsigned e : {63u, 64u, 65u, 127u, 128u, 129u}) {
+    Integer t = 1;
+    t <<= e;
+    for (int d = -1; d <= 1; ++d) edges.push_back(Integer(t + d));
+  }
+  std::mt19937_64 rng(128);
+  for (int k = 0; k < 200; ++k) {
+    Integer r(static_cast<unsigned long>(rng()));
+    r <<= static_cast<unsigned>(rng() % 70);
+    r += static_cast<unsigned long>(rng());
+    edges.push_back(r);
+  }
+  for (const Integer& p : edges)
+    for (const Integer& q : {edges[1], edges[5], edges[edges.size() / 2], edges.back()})
+      for (const int sign : {1, -1}) {
+        if (q == 0) continue;
+        Rational x(Integer(sign * p), q);
+        x.canonicalize();
+        const Integer z(sign * p);
+        Json_writer w;
+        w.array().rational(x).rational(z).end_array();
+        EXPECT_EQ(w.str(), "[\"" + to_string(x) + "\", \"" + z.get_str() + "\"]");
+      }
+}
+
 // json::text_of (the reader's values written back) goes through the same writer: the same bytes.
 TEST(JsonWriter, TextOfAParsedValueKeepsItsNumbersAndTheLayout) {
   const std::string text = "{\"a\": [1, 2.50, -0e3, \"x\\ty\"], \"b\": {\"c\": null, \"d\": true}, \"e\": []}";

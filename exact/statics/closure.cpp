@@ -99,29 +99,32 @@ void positive_certificate(const Exact_kernel& k, std::vector<std::size_t> H, Clo
     }
   }
   // w_h = Λ_h·s_h with s_h = sn/sd.
-  std::vector<std::pair<std::size_t, Integer>> w;  // (generator, numerator of w_h), over the lcm below
-  std::vector<Integer> den;
-  Integer l = 1, sn, sd;
+  // In place (no GMP temporaries): the numerators into Lambda itself, the denominators' lcm only where they
+  // differ (a scene's rows mostly share one).
+  std::vector<Integer> den(H.size());
+  Integer l = 1, sn;
   for (std::size_t i = 0; i < H.size(); ++i) {
-    const Integer& lam = Lambda[i];
-    if (lam == 0) continue;
-    k.scale(H[i], sn, sd);
-    w.push_back({H[i], Integer(lam * sn)});
-    den.push_back(sd);
-    mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), sd.get_mpz_t());
+    if (Lambda[i] == 0) continue;
+    k.scale(H[i], sn, den[i]);
+    mpz_mul(Lambda[i].get_mpz_t(), Lambda[i].get_mpz_t(), sn.get_mpz_t());
+    if (den[i] != l) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), den[i].get_mpz_t());
   }
   Integer g = 0;
-  for (std::size_t i = 0; i < w.size(); ++i) {
+  for (std::size_t i = 0; i < H.size(); ++i) {
+    if (Lambda[i] == 0) continue;
     if (den[i] != l) {
-      mpz_divexact(sd.get_mpz_t(), l.get_mpz_t(), den[i].get_mpz_t());
-      w[i].second *= sd;
+      mpz_divexact(sn.get_mpz_t(), l.get_mpz_t(), den[i].get_mpz_t());
+      mpz_mul(Lambda[i].get_mpz_t(), Lambda[i].get_mpz_t(), sn.get_mpz_t());
     }
-    if (g != 1) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), w[i].second.get_mpz_t());  // (once 1, it stays 1)
+    if (g != 1) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), Lambda[i].get_mpz_t());  // (once 1, it stays 1)
   }
-  cert.combination.reserve(w.size());
-  for (auto& [h, x] : w) {
+  cert.combination.reserve(H.size());
+  for (std::size_t i = 0; i < H.size(); ++i) {
+    Integer& x = Lambda[i];
+    if (x == 0) continue;
     if (g != 1) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
-    cert.combination.emplace_back(Generator_ref{k.contact(h), k.edge(h)}, Rational(x));
+    cert.combination.emplace_back(Generator_ref{k.contact(H[i]), k.edge(H[i])}, Rational());
+    mpz_swap(mpq_numref(cert.combination.back().second.get_mpq_t()), x.get_mpz_t());  // x/1, in lowest terms
   }
   for (int i = 0; i < 3; ++i) cert.independent[i] = {k.contact(b[i]), k.edge(b[i])};
 }

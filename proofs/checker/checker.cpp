@@ -111,25 +111,25 @@ Number_text number_text(std::string_view s, const Limits& lim, const std::string
     digits += i - begin;
     return s.substr(begin, i - begin);
   };
-  auto next = [&](std::string_view one_of) {  // consumes one of these characters, if next
-    return i < s.size() && one_of.find(s[i]) != std::string_view::npos ? (++i, true) : false;
+  auto next = [&](char a, char b) {  // consumes a or b, if next
+    return i < s.size() && (s[i] == a || s[i] == b) ? (++i, true) : false;
   };
   Number_text n;
   n.negative = !s.empty() && s[0] == '-';
-  next("+-");
+  next('+', '-');
   n.whole = run();
   std::string_view exp;
   bool exp_negative = false;
-  n.fraction = !n.whole.empty() && next("/");
+  n.fraction = !n.whole.empty() && next('/', '/');
   if (n.fraction) {
     n.den = run();
     if (n.den.empty()) throw not_a_number();
   } else {
-    if (next(".")) n.frac = run();
+    if (next('.', '.')) n.frac = run();
     if (n.whole.empty() && n.frac.empty()) throw not_a_number();
-    if (next("eE")) {
+    if (next('e', 'E')) {
       exp_negative = i < s.size() && s[i] == '-';
-      next("+-");
+      next('+', '-');
       exp = run();
       if (exp.empty()) throw not_a_number();
     }
@@ -351,11 +351,47 @@ struct Read_number {
   bool zero = true, negative = false, fits = true;
   Small value;
 };
+// A JSON number (its grammar checked by the reader) without an exponent and of at most 18 digits, the usual
+// contact number: what number_text(), is_zero() and small_value() make of it, in one pass; false for any
+// other text and whenever a limit could be in question (then those functions decide, and name it).
+bool short_json_decimal(std::string_view s, const Limits& lim, Read_number& n, std::size_t& counted) {
+  std::size_t i = s[0] == '-' ? 1 : 0, whole = 0, frac = 0;
+  unsigned long long m = 0;
+  for (; i < s.size() && is_digit(s[i]); ++i, ++whole) m = m * 10 + static_cast<unsigned>(s[i] - '0');
+  if (i < s.size() && s[i] == '.')
+    for (++i; i < s.size() && is_digit(s[i]); ++i, ++frac) m = m * 10 + static_cast<unsigned>(s[i] - '0');
+  if (i != s.size() || whole + frac > 18 || lim.max_exponent < 0) return false;  // an exponent, or long
+  // As number_text(): the digits, or the value written out when larger (significant + |scale| + 1).
+  std::size_t significant = 0;
+  for (unsigned long long v = m; v != 0; v /= 10) ++significant;
+  counted = whole + frac;
+  if (significant > 0) counted = std::max(counted, significant + frac + (frac > 0 ? 1 : 0));
+  if (counted > lim.max_digits) return false;
+  n.zero = m == 0;
+  n.negative = s[0] == '-' && !n.zero;
+  n.fits = true;  // as small_value(): m < 10^18 over 10^frac (1 when m is zero)
+  n.value.num = s[0] == '-' ? -static_cast<long long>(m) : static_cast<long long>(m);
+  unsigned long long p = 1;
+  if (m != 0)
+    for (std::size_t j = 0; j < frac; ++j) p *= 10;
+  n.value.den = static_cast<long long>(p);
+  return true;
+}
+
 Read_number read_contact_number(Reader& r, const Limits& lim) {
   const Kind k = r.peek();
   if (k != Kind::number && k != Kind::string) r.fail("expected a number (a JSON number or a number string)");
   Read_number n;
   n.text = k == Kind::number ? r.number() : r.string_view();
+  std::size_t counted = 0;
+  if (k == Kind::number && short_json_decimal(n.text, lim, n, counted)) {
+    try {
+      if (Tally::reading) Tally::reading->number(counted, lim);
+    } catch (const Failure& f) {
+      throw Failure{r.path() + f.message};
+    }
+    return n;
+  }
   Number_text t;
   try {  // the path only for the message, as read_number(); counted in the budget as there
     t = number_text(n.text, lim, "");
@@ -1469,6 +1505,18 @@ class Key_set {
     if (i < 0) throw std::logic_error("Key_set: \"" + std::string(key) + "\" is not a key of the format");
     return (bits_ >> i) & 1u;
   }
+  // The bits of these keys, to test many at once (any()): computed once by the caller, not per certificate.
+  template <std::size_t N>
+  static unsigned mask(const char* const (&keys)[N]) {
+    unsigned m = 0;
+    for (const std::string_view k : keys) {
+      const int i = index(k);
+      if (i < 0) throw std::logic_error("Key_set: \"" + std::string(k) + "\" is not a key of the format");
+      m |= 1u << i;
+    }
+    return m;
+  }
+  bool any(unsigned mask) const { return (bits_ & mask) != 0; }
 
  private:
   static int index(std::string_view key) {
@@ -1812,10 +1860,14 @@ void check_keys(const Certificate& c) {
   if (c.depends && !c.hold)
     throw Failure{"holds: \"depends\" is only a claim of property \"hold\" (expected true or false)"};
   if (c.motion || c.hold) return;  // check_motion() and check_hold() decide, knowing the scene's support
-  for (const char* key : {"load", "motion", "support_forces", "speed_bounds", "dual", "vertices", "sticking", "sliding",
-                          "holding", "failing", "regions"})
-    if (c.keys.count(key))
-      throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is " + quote(c.property)};
+  static const char* const motion_keys[] = {"load",    "motion",   "support_forces", "speed_bounds",
+                                            "dual",    "vertices", "sticking",       "sliding",
+                                            "holding", "failing",  "regions"};
+  static const unsigned motion_mask = Key_set::mask(motion_keys);
+  if (c.keys.any(motion_mask))  // (one test for the usual certificate; the loop names the key)
+    for (const char* key : motion_keys)
+      if (c.keys.count(key))
+        throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is " + quote(c.property)};
   need("holds");
   if (c.holds) {
     need("combination");

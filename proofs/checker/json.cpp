@@ -32,6 +32,20 @@ void Reader::space() {
     ++pos_;
 }
 
+namespace {
+
+// The bytes a string holds as they are (printable ASCII but '"' and '\\'): one table look-up per byte.
+struct Plain_bytes {
+  bool plain[256];
+  constexpr Plain_bytes() : plain() {
+    for (int c = 0x20; c < 0x80; ++c) plain[c] = c != '"' && c != '\\';
+  }
+  bool operator()(char c) const { return plain[static_cast<unsigned char>(c)]; }
+};
+constexpr Plain_bytes is_plain;
+
+}  // namespace
+
 bool Reader::eat(char c) { return pos_ < text_.size() && text_[pos_] == c ? (++pos_, true) : false; }
 
 bool Reader::digits() {
@@ -133,11 +147,7 @@ std::string_view Reader::string_view() {
 std::string_view Reader::read_string_view() {
   const std::size_t begin = pos_ + 1;
   std::size_t end = begin;  // plain ASCII up to the closing quote: the text itself
-  while (end < text_.size()) {
-    const unsigned char d = static_cast<unsigned char>(text_[end]);
-    if (d < 0x20 || d >= 0x80 || d == '"' || d == '\\') break;
-    ++end;
-  }
+  while (end < text_.size() && is_plain(text_[end])) ++end;
   if (end < text_.size() && text_[end] == '"') {
     pos_ = end + 1;
     return text_.substr(begin, end - begin);
@@ -185,11 +195,7 @@ void Reader::read_string(std::string& out) {
     if (c == '"') return void(++pos_);
     if (c >= 0x20 && c < 0x80 && c != '\\') {  // a run of plain ASCII, copied at once
       std::size_t end = pos_ + 1;
-      while (end < text_.size()) {
-        const unsigned char d = static_cast<unsigned char>(text_[end]);
-        if (d < 0x20 || d >= 0x80 || d == '"' || d == '\\') break;
-        ++end;
-      }
+      while (end < text_.size() && is_plain(text_[end])) ++end;
       out.append(text_.data() + pos_, end - pos_);
       pos_ = end;
       continue;
