@@ -391,8 +391,8 @@ TEST(StressFamilies, HybridLabelsFromIntegerRowsAreTheExactOnes) {
   }
   std::printf("[ stats    ] hybrid labels from integer rows: %d of %d family scenes, %d of %d random grasps\n", from_rows,
               cases, random_rows, random_cases);
-  // Both paths are exercised: the rows serve most random grasps and some family scenes; the rest (rank < 3,
-  // W* a single ray, rows beyond 62 bits) take the rational construction.
+  // Both paths are exercised: the rows serve every random grasp and some family scenes; the rest (rows beyond
+  // 62 bits: 17-digit decimals, long fractions, huge scales) take the rational construction.
   EXPECT_GT(random_rows * 10, random_cases * 9);
   EXPECT_GT(from_rows, 0);
   EXPECT_LT(from_rows, cases);

@@ -65,7 +65,7 @@ Moment_labels moment_labels(const Scene& scene, Reading reading, Mode mode) {
   std::optional<std::vector<fl::Bounded3>> twin;
   if (mode == Mode::hybrid) {
     twin = fl::generators(to_bounded(scene), reading);
-    // The rank-3 cones from the scene's integer rows; the rest from the rational generators below.
+    // The cone from the scene's integer rows; rows beyond 62 bits from the rational generators below.
     if (std::optional<Wrench_cone> c = wrench_cone_of_rows(scene, reading, *twin)) return labels_of(std::move(*c));
   }
   std::vector<Wrench> w;

@@ -102,6 +102,11 @@ Vec3 vec_of(const std::array<T, 3>& v) {
   return {rational_of(v[0]), rational_of(v[1]), rational_of(v[2])};
 }
 
+// wrench_cone with W*'s combinatorics already known (`known`, over the same nonzero generators, found with
+// `tally`'s predicates) or computed here (nullptr).
+Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin,
+                    const Dual_cone* known, const Predicate_tally& tally);
+
 }  // namespace
 
 std::optional<Wrench_cone> wrench_cone_of_rows(const Scene& scene, Reading reading,
@@ -120,7 +125,12 @@ std::optional<Wrench_cone> wrench_cone_of_rows(const Scene& scene, Reading readi
   const Dual_cone dc = in_mode(
       Mode::hybrid, [&]() -> const Exact_kernel& { return rows; }, [&] { return fl::Float_kernel(twin); }, lazy,
       tally, [](const auto& k) { return compute_dual_cone(k); });
-  if (dc.rank != 3 || dc.shape == Dual_shape::ray) return std::nullopt;
+  if (dc.rank != 3 || dc.shape == Dual_shape::ray) {  // the rational construction, from the same combinatorics
+    std::vector<Wrench> ws;
+    ws.reserve(g.size());
+    for (Generator& x : generators(scene, reading)) ws.push_back(std::move(x.w));
+    return cone_of(ws, Mode::hybrid, &twin, &dc, tally);
+  }
   c.predicates = tally.predicates;
   c.exact_predicates = tally.exact;
   c.rank = dc.rank;
@@ -168,6 +178,13 @@ std::optional<Wrench_cone> wrench_cone_of_rows(const Scene& scene, Reading readi
 Vec3 J(const Vec3& u) { return {-u[1], u[0], u[2]}; }
 
 Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin) {
+  return cone_of(generators, mode, twin, nullptr, Predicate_tally{});
+}
+
+namespace {
+
+Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin,
+                    const Dual_cone* known, const Predicate_tally& tally) {
   if (mode == Mode::float_only) throw std::invalid_argument("wrench_cone: the float twin is fl::moment_labels");
   if (twin && twin->size() != generators.size()) throw std::invalid_argument("wrench_cone: twin of another size");
   std::vector<Wrench> ws;
@@ -184,7 +201,11 @@ Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode, const 
     if (mode == Mode::hybrid) tw.push_back(twin ? (*twin)[i] : bounded_of(w));
   }
   Wrench_cone c;
-  const Dual_cone dc = dual_cone_of(ws, tw, mode, c);
+  c.predicates = tally.predicates;
+  c.exact_predicates = tally.exact;
+  if (known && ws.size() != generators.size())
+    throw std::logic_error("wrench_cone: known combinatorics over other generators");
+  const Dual_cone dc = known ? *known : dual_cone_of(ws, tw, mode, c);
   c.rank = dc.rank;
   c.shape = dc.shape;
   const Vec3 e[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -269,6 +290,8 @@ Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode, const 
   c.dual_pointed = false;
   return c;
 }
+
+}  // namespace
 
 bool in_cone(const Wrench_cone& c, const Vec3& w) {
   for (const Vec3& t : c.dual)

@@ -52,9 +52,10 @@ Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode = Mode:
 // rational generators): the signs are the twin's (`twin` = fl::generators(to_bounded(scene), reading)), exact
 // where uncertain, so the combinatorics (edges, shape) are the exact ones; the rays g_a × g_b and their
 // primitive forms are built in 128-bit integers (|rows| ≤ 2^62 − 1, so |g_a × g_b| < 2^125), and only the
-// answer's coordinates become rationals. Equal, member by member, to wrench_cone(generators, Mode::hybrid)
-// (tests/labels_twin_test.cpp, tests/stress_families_test.cpp). std::nullopt — the caller takes the rational
-// construction — when a row is zero or beyond 62 bits, the rank is below 3 or W* is a single ray.
+// answer's coordinates become rationals; rank < 3 and a single-ray W* are built from the rational generators
+// with the same combinatorics (no second sign computation). Equal, member by member, to
+// wrench_cone(generators, Mode::hybrid) (tests/stress_families_test.cpp). std::nullopt — the caller takes
+// the rational construction — when a row is zero or beyond 62 bits (before any sign is computed).
 std::optional<Wrench_cone> wrench_cone_of_rows(const Scene& scene, Reading reading,
                                                const std::vector<fl::Bounded3>& twin);
 
