@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "exact/pipeline/hold_answer.h"
+#include "exact/pipeline/labels_answer.h"
 
 #include <cmath>
 #include <cstdio>
@@ -15,6 +16,8 @@
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/statics/generators.h"
+#include "exact/statics/moment_labels.h"
+#include "exact/io/to_float.h"
 #include "testing/stress_families.h"
 #include "fuzz/families.h"
 #include "tests/test_support.h"
@@ -308,6 +311,91 @@ TEST(StressFamilies, UnknownSupportNearTheThresholds) {
   }
   EXPECT_LE(undecided * 100, n) << undecided << " of " << n << " undecided";
   EXPECT_EQ(answers.size(), 3u);
+}
+
+// Hybrid labels with the cone from the scene's integer rows (wrench_cone_of_rows) against the exact
+// construction: the same cone member by member, the same labels byte for byte (an eagerly and a lazily read
+// scene), and the same pipeline answers (labels with a resultant and the load, Reuleaux with a motion) but
+// for mode, decided_by and the predicate counts. Returns whether the rows served; a failure names the case
+// and dumps the scene.
+bool hybrid_labels_match_exact(const std::string& text, const std::string& tag) {
+  const Scene s = read_scene(text, Input_limits{}), lazy = read_scene(text, Input_limits{}, "scene", true);
+  bool from_rows = false;
+  for (Reading r : {Reading::friction, Reading::frictionless}) {
+    const std::optional<Wrench_cone> rows = wrench_cone_of_rows(s, r, fl::generators(to_bounded(s), r));
+    const Moment_labels e = moment_labels(s, r, Mode::exact), h = moment_labels(s, r, Mode::hybrid),
+                        hl = moment_labels(lazy, r, Mode::hybrid);
+    const std::string where = tag + (r == Reading::friction ? " friction" : " frictionless") + ", dumped to ";
+    EXPECT_EQ(labels_json(h), labels_json(e)) << where << test::dump_failure(text, tag);
+    EXPECT_EQ(labels_json(hl), labels_json(e)) << where << test::dump_failure(text, tag);
+    if (rows) {
+      from_rows = true;
+      EXPECT_EQ(rows->rank, e.cone.rank) << where << test::dump_failure(text, tag);
+      EXPECT_TRUE(rows->shape == e.cone.shape && rows->dual == e.cone.dual && rows->primal == e.cone.primal &&
+                  rows->dual_pointed == e.cone.dual_pointed && rows->primal_pointed == e.cone.primal_pointed &&
+                  rows->lineality == e.cone.lineality)
+          << where << test::dump_failure(text, tag);
+    }
+  }
+  for (Labels_question question : {Labels_question::labels, Labels_question::reuleaux}) {
+    Labels_query q;
+    q.question = question;
+    if (question == Labels_question::labels) q.resultant = Vec3{1, -2, Rational(3, 7)};
+    else q.motion = rotation_twist({Rational(1, 3), Rational(-2)}, 1);
+    Request exact, hybrid;
+    exact.mode = Mode::exact;
+    hybrid.mode = Mode::hybrid;
+    const Labels_item a = answer_labels(text, "scene", exact, q), b = answer_labels(text, "scene", hybrid, q);
+    EXPECT_EQ(a.status, b.status) << tag << ": " << a.message << " / " << b.message;
+    if (a.status != Status::answered || b.status != Status::answered) continue;
+    EXPECT_EQ(labels_json(b.labels), labels_json(a.labels)) << tag << ", dumped to " << test::dump_failure(text, tag);
+    EXPECT_EQ(b.labels.cone.rank, a.labels.cone.rank) << tag;
+    EXPECT_EQ(b.resultant_possible, a.resultant_possible) << tag;
+    EXPECT_EQ(b.load_balanced, a.load_balanced) << tag;
+    EXPECT_EQ(b.closed(), a.closed()) << tag;
+    if (a.modes) {
+      EXPECT_TRUE(b.modes && b.modes->modes == a.modes->modes && b.modes->feasible == a.modes->feasible &&
+                  b.modes->marginal == a.modes->marginal)
+          << tag;
+    }
+  }
+  return from_rows;
+}
+
+// Every family of the stress report at every ε of the report (three seeds each), and random grasps as a
+// grasp planner writes them (random_grasp_text, 2–12 contacts); seeds fixed (WRENCHKIT_SEED moves the random
+// ones), printed with each failure.
+TEST(StressFamilies, HybridLabelsFromIntegerRowsAreTheExactOnes) {
+  const double epsilons[] = {1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-13, 1e-14, 1e-15, 1e-16, 1e-20, 1e-30, 1e-40};
+  int cases = 0, from_rows = 0;
+  for (const families::Family& f : families::report()) {
+    if (is(f, {"many_contacts"})) continue;  // 10^3–10^4 contacts: the exact labels take seconds each
+    for (double eps : epsilons)
+      for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        const families::Case c = families::make_case(f, eps, seed);
+        char tag[96];
+        std::snprintf(tag, sizeof tag, "labels_rows_%s_%g_%llu", f.name, eps, static_cast<unsigned long long>(seed));
+        from_rows += hybrid_labels_match_exact(c.text, tag);
+        ++cases;
+        if (HasFailure()) return;
+      }
+  }
+  const std::uint64_t seed = test::seed(19);
+  stress::Rng rng(seed);
+  int random_rows = 0;
+  const int random_cases = 400;
+  for (int i = 0; i < random_cases; ++i) {
+    const std::string text = families::random_grasp_text(2 + i % 11, rng);
+    random_rows += hybrid_labels_match_exact(text, "labels_rows_random_" + std::to_string(seed) + "_" + std::to_string(i));
+    if (HasFailure()) return;
+  }
+  std::printf("[ stats    ] hybrid labels from integer rows: %d of %d family scenes, %d of %d random grasps\n", from_rows,
+              cases, random_rows, random_cases);
+  // Both paths are exercised: the rows serve every random grasp and some family scenes; the rest (rows beyond
+  // 62 bits: 17-digit decimals, long fractions, huge scales) take the rational construction.
+  EXPECT_GT(random_rows * 10, random_cases * 9);
+  EXPECT_GT(from_rows, 0);
+  EXPECT_LT(from_rows, cases);
 }
 
 }  // namespace

@@ -319,4 +319,13 @@ std::array<Integer, 3> primitive(std::array<Integer, 3> v) { return primitive_of
 std::array<Integer, 3> primitive(const std::array<Rational, 3>& v) { return primitive_of(v); }
 std::array<Integer, 2> primitive(const Rational& x, const Rational& y) { return primitive_of(std::array<Rational, 2>{x, y}); }
 
+Integer integer_of(wide::i128 v) {
+  const wide::u128 u = wide::uabs(v);
+  if ((u >> 62) == 0) return Integer(static_cast<long>(v));
+  Integer r = Integer(static_cast<unsigned long>(u >> 64));
+  r <<= 64;
+  r += static_cast<unsigned long>(static_cast<std::uint64_t>(u));
+  return v < 0 ? Integer(-r) : r;
+}
+
 }  // namespace wrenchkit

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "exact/numbers/limits.h"
+#include "exact/numbers/wide_int.h"
 #include "float/bounded.h"
 
 namespace wrenchkit {
@@ -67,6 +68,9 @@ std::optional<double> nearest_double(const Rational& q);
 
 // Lowest terms, "p" or "p/q" (q > 0): the JSON output form of docs/cli.md.
 std::string to_string(const Rational& q);
+
+// A fixed-width integer (exact/numbers/wide_int.h) as a GMP integer, exactly.
+Integer integer_of(wide::i128 v);
 
 // The primitive integer vector positively parallel to v: the positive multiple of v whose entries are
 // coprime integers — the one reduction of every 2-D and 3-D direction of the engine (twists, rays,

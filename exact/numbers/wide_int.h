@@ -64,6 +64,37 @@ inline int sign(const Int192& x) {
   return (x.w[0] | x.w[1] | x.w[2]) ? 1 : 0;
 }
 
+inline u128 uabs(i128 v) { return v < 0 ? 0 - static_cast<u128>(v) : static_cast<u128>(v); }
+
+// gcd(a, b) (binary, Stein); gcd(0, b) = b.
+inline std::uint64_t gcd64(std::uint64_t a, std::uint64_t b) {
+  if (a == 0) return b;
+  if (b == 0) return a;
+  const int shift = __builtin_ctzll(a | b);
+  a >>= __builtin_ctzll(a);
+  do {
+    b >>= __builtin_ctzll(b);
+    if (a > b) {
+      const std::uint64_t t = a;
+      a = b;
+      b = t;
+    }
+    b -= a;
+  } while (b != 0);
+  return a << shift;
+}
+
+// gcd(a, b) in 128 bits: Euclid until both fit 64 bits, then gcd64.
+inline u128 gcd128(u128 a, u128 b) {
+  while ((a >> 64) != 0 || (b >> 64) != 0) {
+    if (b == 0) return a;
+    const u128 t = a % b;
+    a = b;
+    b = t;
+  }
+  return gcd64(static_cast<std::uint64_t>(a), static_cast<std::uint64_t>(b));
+}
+
 // b1·c2 − b2·c1 for |entries| ≤ kMax62.
 inline i128 minor2(std::int64_t b1, std::int64_t b2, std::int64_t c1, std::int64_t c2) {
   return static_cast<i128>(b1) * c2 - static_cast<i128>(b2) * c1;

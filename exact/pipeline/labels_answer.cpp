@@ -41,13 +41,19 @@ Mode_answer twin_contact_modes(const Scene& scene, const Vec3& t) {
 Vec3 negated(const Vec3& w) { return {-w[0], -w[1], -w[2]}; }
 
 void decide_exactly(Labels_item& s, const Labels_query& q) {
-  s.wrenches.reserve(s.generators.size());
-  for (const Generator& g : s.generators) s.wrenches.push_back(g.w);
-  if (s.mode == Mode::hybrid) {
-    const std::vector<fl::Bounded3> twin = fl::generators(to_bounded(s.scene), s.reading);
-    s.labels = moment_labels(s.wrenches, Mode::hybrid, &twin);
+  if (s.mode == Mode::hybrid && q.question != Labels_question::dual) {
+    // No rational generators: the cone from the scene's integer rows when it can (moment_labels.h).
+    s.labels = moment_labels(s.scene, s.reading, Mode::hybrid);
   } else {
-    s.labels = moment_labels(s.wrenches, Mode::exact);
+    s.generators = generators(s.scene, s.reading);
+    s.wrenches.reserve(s.generators.size());
+    for (const Generator& g : s.generators) s.wrenches.push_back(g.w);
+    if (s.mode == Mode::hybrid) {
+      const std::vector<fl::Bounded3> twin = fl::generators(to_bounded(s.scene), s.reading);
+      s.labels = moment_labels(s.wrenches, Mode::hybrid, &twin);
+    } else {
+      s.labels = moment_labels(s.wrenches, Mode::exact);
+    }
   }
   if (q.resultant) s.resultant_possible = in_cone(s.labels.cone, *q.resultant);
   if (q.question == Labels_question::dual) s.dual = force_dual(s.labels, s.wrenches);
@@ -56,6 +62,7 @@ void decide_exactly(Labels_item& s, const Labels_query& q) {
 }
 
 void decide_by_twin(Labels_item& s, const Labels_query& q) {
+  if (q.question == Labels_question::dual) s.generators = generators(s.scene, s.reading);  // their names
   s.twin_generators = fl::generators(to_bounded(s.scene), s.reading);
   const Dual_cone dc = compute_dual_cone(fl::Float_kernel(s.twin_generators));
   s.twin = fl::moment_labels(s.twin_generators, dc);
@@ -84,7 +91,6 @@ void decide_by_twin(Labels_item& s, const Labels_query& q) {
 void decide_labels(Labels_item& s, const Request& r, const Labels_query& q) {
   s.mode = r.mode;
   s.reading = q.question == Labels_question::reuleaux ? Reading::frictionless : Reading::friction;
-  s.generators = generators(s.scene, s.reading);
   // The load is read on the labels of the friction cone only (Reuleaux's reading has no load).
   if (s.scene.load && q.question != Labels_question::reuleaux) s.load = as_vec(load_wrench(s.scene));
   if (s.mode == Mode::float_only) decide_by_twin(s, q);

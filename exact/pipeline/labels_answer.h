@@ -37,6 +37,8 @@ struct Labels_item {
   Scene scene;
   Mode mode = Mode::hybrid;
   Reading reading = Reading::friction;  // frictionless for reuleaux
+  // The exact generators: for the force dual (every mode) and the exact constructions below; empty when
+  // hybrid labels and Reuleaux, whose cone comes from moment_labels(scene, …) (integer rows first).
   std::vector<Generator> generators;
   // exact and hybrid: the exact constructions
   std::vector<Wrench> wrenches;

@@ -48,30 +48,9 @@ using wide::u128;
 
 constexpr std::int64_t kSmall40 = std::int64_t(1) << 40;
 
-u128 uabs(i128 v) { return v < 0 ? 0 - static_cast<u128>(v) : static_cast<u128>(v); }
-
-std::uint64_t gcd64(std::uint64_t a, std::uint64_t b) {  // binary (Stein)
-  if (a == 0) return b;
-  if (b == 0) return a;
-  const int shift = __builtin_ctzll(a | b);
-  a >>= __builtin_ctzll(a);
-  do {
-    b >>= __builtin_ctzll(b);
-    if (a > b) std::swap(a, b);
-    b -= a;
-  } while (b != 0);
-  return a << shift;
-}
-
-u128 gcd128(u128 a, u128 b) {
-  while ((a >> 64) != 0 || (b >> 64) != 0) {  // Euclid until both fit 64 bits
-    if (b == 0) return a;
-    const u128 t = a % b;
-    a = b;
-    b = t;
-  }
-  return gcd64(static_cast<std::uint64_t>(a), static_cast<std::uint64_t>(b));
-}
+using wide::gcd128;
+using wide::gcd64;
+using wide::uabs;
 
 // z as an int64 when |z| ≤ kMax62 (reads the limbs: no library call).
 bool small_z(mpz_srcptr z, std::int64_t& v) {
@@ -107,13 +86,6 @@ bool small_vec2(const Rational& x, const Rational& y, std::int64_t& X, std::int6
   return true;
 }
 
-Integer to_integer(i128 v) {
-  const u128 u = uabs(v);
-  Integer r = Integer(static_cast<unsigned long>(u >> 64));
-  r <<= 64;
-  r += static_cast<unsigned long>(static_cast<std::uint64_t>(u));
-  return v < 0 ? Integer(-r) : r;
-}
 
 // The integer vector e (|entries| < 2^127) as a kernel row: s and its tier
 // (0: < 2^40, 1: ≤ 2^62 − 1), or tier 2 with v. The zero vector stays zero (tier 0). Returns the
@@ -128,7 +100,7 @@ u128 int128_row(i128 e[3], std::int64_t s[3], std::uint8_t& tier, std::array<Int
     divisor = g;
     if (!wide::fits62(e[0]) || !wide::fits62(e[1]) || !wide::fits62(e[2])) {
       tier = 2;
-      for (int c = 0; c < 3; ++c) v[c] = to_integer(e[c]);
+      for (int c = 0; c < 3; ++c) v[c] = integer_of(e[c]);
       return divisor;
     }
   }
@@ -183,7 +155,7 @@ void Exact_kernel::scale(std::size_t i, Integer& num, Integer& den) const {
   num = static_cast<long>(p.f[0]);
   for (int k = 1; k < 3; ++k)
     if (p.f[k] != 1) num *= static_cast<long>(p.f[k]);
-  den = to_integer(static_cast<i128>(p.divisor));  // ≤ 2^125: the gcd of entries below 2^125
+  den = integer_of(static_cast<i128>(p.divisor));  // ≤ 2^125: the gcd of entries below 2^125
 }
 
 void Exact_kernel::push_rational(const Rational in[3], std::size_t contact) {

@@ -43,11 +43,10 @@ Both_set both_of(const Wrench_cone& c) {
   return b;
 }
 
-}  // namespace
-
-Moment_labels moment_labels(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin) {
+// The labels read from a cone (the slices of J(W*) and the ± set).
+Moment_labels labels_of(Wrench_cone cone) {
   Moment_labels l;
-  l.cone = wrench_cone(generators, mode, twin);
+  l.cone = std::move(cone);
   const std::vector<Vec3> p = centres(l.cone.dual);
   l.plus = slice_front(p, l.cone.dual_pointed);
   l.minus = slice_front(negated(p), l.cone.dual_pointed);
@@ -56,12 +55,22 @@ Moment_labels moment_labels(const std::vector<Wrench>& generators, Mode mode, co
   return l;
 }
 
+}  // namespace
+
+Moment_labels moment_labels(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin) {
+  return labels_of(wrench_cone(generators, mode, twin));
+}
+
 Moment_labels moment_labels(const Scene& scene, Reading reading, Mode mode) {
+  std::optional<std::vector<fl::Bounded3>> twin;
+  if (mode == Mode::hybrid) {
+    twin = fl::generators(to_bounded(scene), reading);
+    // The cone from the scene's integer rows; rows beyond 62 bits from the rational generators below.
+    if (std::optional<Wrench_cone> c = wrench_cone_of_rows(scene, reading, *twin)) return labels_of(std::move(*c));
+  }
   std::vector<Wrench> w;
   for (const Generator& g : generators(scene, reading)) w.push_back(g.w);
-  if (mode != Mode::hybrid) return moment_labels(w, mode);
-  const std::vector<fl::Bounded3> twin = fl::generators(to_bounded(scene), reading);
-  return moment_labels(w, mode, &twin);
+  return moment_labels(w, mode, twin ? &*twin : nullptr);
 }
 
 void write_both(Json_writer& w, const Both_set& b) {

@@ -4,6 +4,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "exact/numbers/wide_int.h"
 #include "exact/statics/hybrid_kernel.h"
 #include "exact/statics/planar_region.h"
 
@@ -74,11 +75,116 @@ Dual_cone dual_cone_of(const std::vector<Wrench>& ws, const std::vector<fl::Boun
   return dc;
 }
 
+// Integer rows and rays of the fixed-width construction (wrench_cone_of_rows).
+using Row = std::array<std::int64_t, 3>;
+using Ray = std::array<wide::i128, 3>;
+
+// The primitive form of a nonzero integer vector (entries < 2^127): divided by the gcd of its entries.
+template <class T>
+std::array<T, 3> primitive_int(std::array<T, 3> v) {
+  const wide::u128 d = wide::gcd128(wide::gcd128(wide::uabs(v[0]), wide::uabs(v[1])), wide::uabs(v[2]));
+  for (T& x : v) x = static_cast<T>(static_cast<wide::i128>(x) / static_cast<wide::i128>(d));
+  return v;
+}
+
+// a × b for |entries| ≤ 2^62 − 1: each coordinate a difference of two products < 2^124, so < 2^125.
+Ray cross_int(const Row& a, const Row& b) {
+  return {wide::minor2(a[1], a[2], b[1], b[2]), wide::minor2(a[2], a[0], b[2], b[0]),
+          wide::minor2(a[0], a[1], b[0], b[1])};
+}
+
+Rational rational_of(wide::i128 v) {
+  return wide::fits62(v) ? Rational(static_cast<long>(v)) : Rational(integer_of(v));
+}
+
+template <class T>
+Vec3 vec_of(const std::array<T, 3>& v) {
+  return {rational_of(v[0]), rational_of(v[1]), rational_of(v[2])};
+}
+
+// wrench_cone with W*'s combinatorics already known (`known`, over the same nonzero generators, found with
+// `tally`'s predicates) or computed here (nullptr).
+Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin,
+                    const Dual_cone* known, const Predicate_tally& tally);
+
 }  // namespace
+
+std::optional<Wrench_cone> wrench_cone_of_rows(const Scene& scene, Reading reading,
+                                               const std::vector<fl::Bounded3>& twin) {
+  const Exact_kernel rows(scene, reading);
+  if (rows.size() != twin.size()) throw std::invalid_argument("wrench_cone_of_rows: twin of another size");
+  std::vector<Row> g(rows.size());
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    if (!rows.small_row(i, g[i].data())) return std::nullopt;  // beyond 62 bits: the rationals
+    if (g[i][0] == 0 && g[i][1] == 0 && g[i][2] == 0) return std::nullopt;  // wrench_cone drops zero wrenches
+    g[i] = primitive_int(g[i]);
+  }
+  Wrench_cone c;
+  const Lazy_generators lazy(scene, reading);
+  Predicate_tally tally;
+  const Dual_cone dc = in_mode(
+      Mode::hybrid, [&]() -> const Exact_kernel& { return rows; }, [&] { return fl::Float_kernel(twin); }, lazy,
+      tally, [](const auto& k) { return compute_dual_cone(k); });
+  if (dc.rank != 3 || dc.shape == Dual_shape::ray) {  // the rational construction, from the same combinatorics
+    std::vector<Wrench> ws;
+    ws.reserve(g.size());
+    for (Generator& x : generators(scene, reading)) ws.push_back(std::move(x.w));
+    return cone_of(ws, Mode::hybrid, &twin, &dc, tally);
+  }
+  c.predicates = tally.predicates;
+  c.exact_predicates = tally.exact;
+  c.rank = dc.rank;
+  c.shape = dc.shape;
+  c.dual_pointed = true;
+  const std::vector<std::size_t>& e = dc.edges;
+  switch (dc.shape) {
+    case Dual_shape::polygon:  // as extreme_rays and wrench_cone above, in integers
+      c.dual.reserve(e.size());
+      c.primal.reserve(e.size());
+      for (std::size_t j = 0; j < e.size(); ++j) {
+        c.dual.push_back(vec_of(primitive_int(cross_int(g[e[j]], g[e[(j + 1) % e.size()]]))));
+        c.primal.push_back(vec_of(g[e[j]]));
+      }
+      break;
+    case Dual_shape::arc: {
+      std::vector<Ray> r;
+      for (std::size_t j = 0; j < 4; ++j) {
+        const Ray v = primitive_int(cross_int(g[e[j]], g[e[(j + 1) % 4]]));
+        if (std::find(r.begin(), r.end(), v) == r.end()) r.push_back(v);
+      }
+      if (r.size() != 2) throw std::logic_error("wrench_cone: an arc without two distinct rays");
+      for (const Ray& v : r) c.dual.push_back(vec_of(v));
+      for (std::size_t j : e) c.primal.push_back(vec_of(g[j]));
+      c.primal_pointed = false;
+      break;
+    }
+    case Dual_shape::zero:  // W = R³: ± the unit vectors, in wrench_cone's order (force closure: the common case)
+      c.primal.reserve(6);
+      for (std::size_t k = 0; k < 3; ++k)
+        for (long sense : {1L, -1L}) {
+          Vec3 x{0, 0, 0};
+          x[k] = sense;
+          c.primal.push_back(std::move(x));
+        }
+      c.primal_pointed = false;
+      break;
+    case Dual_shape::ray:
+    case Dual_shape::lineality:
+      return std::nullopt;
+  }
+  return c;
+}
 
 Vec3 J(const Vec3& u) { return {-u[1], u[0], u[2]}; }
 
 Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin) {
+  return cone_of(generators, mode, twin, nullptr, Predicate_tally{});
+}
+
+namespace {
+
+Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin,
+                    const Dual_cone* known, const Predicate_tally& tally) {
   if (mode == Mode::float_only) throw std::invalid_argument("wrench_cone: the float twin is fl::moment_labels");
   if (twin && twin->size() != generators.size()) throw std::invalid_argument("wrench_cone: twin of another size");
   std::vector<Wrench> ws;
@@ -95,7 +201,11 @@ Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode, const 
     if (mode == Mode::hybrid) tw.push_back(twin ? (*twin)[i] : bounded_of(w));
   }
   Wrench_cone c;
-  const Dual_cone dc = dual_cone_of(ws, tw, mode, c);
+  c.predicates = tally.predicates;
+  c.exact_predicates = tally.exact;
+  if (known && ws.size() != generators.size())
+    throw std::logic_error("wrench_cone: known combinatorics over other generators");
+  const Dual_cone dc = known ? *known : dual_cone_of(ws, tw, mode, c);
   c.rank = dc.rank;
   c.shape = dc.shape;
   const Vec3 e[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -180,6 +290,8 @@ Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode, const 
   c.dual_pointed = false;
   return c;
 }
+
+}  // namespace
 
 bool in_cone(const Wrench_cone& c, const Vec3& w) {
   for (const Vec3& t : c.dual)

@@ -16,6 +16,7 @@
 // Exact; O(n log n) expected predicates (rank 3) plus O(K) exact constructions.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/dual_cone.h"
@@ -45,6 +46,18 @@ struct Wrench_cone {
 // The answer is the same in both modes; hybrid decides most signs in floating point.
 Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode = Mode::exact,
                         const std::vector<fl::Bounded3>* twin = nullptr);
+
+// [LB-2] The same cone in hybrid mode from the scene's integer rows (Exact_kernel(scene, reading): positive
+// integer multiples of generators(scene, reading), read from the contacts' numerators and denominators, no
+// rational generators): the signs are the twin's (`twin` = fl::generators(to_bounded(scene), reading)), exact
+// where uncertain, so the combinatorics (edges, shape) are the exact ones; the rays g_a × g_b and their
+// primitive forms are built in 128-bit integers (|rows| ≤ 2^62 − 1, so |g_a × g_b| < 2^125), and only the
+// answer's coordinates become rationals; rank < 3 and a single-ray W* are built from the rational generators
+// with the same combinatorics (no second sign computation). Equal, member by member, to
+// wrench_cone(generators, Mode::hybrid) (tests/stress_families_test.cpp). std::nullopt — the caller takes
+// the rational construction — when a row is zero or beyond 62 bits (before any sign is computed).
+std::optional<Wrench_cone> wrench_cone_of_rows(const Scene& scene, Reading reading,
+                                               const std::vector<fl::Bounded3>& twin);
 
 // w ∈ W ⇔ ⟨t, w⟩ ≥ 0 for every generator t of W* (W = W**). Exact.
 bool in_cone(const Wrench_cone& c, const Vec3& w);
