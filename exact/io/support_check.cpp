@@ -74,6 +74,8 @@ std::optional<std::pair<Vec2, Vec2>> gravity_off_pressure_center(const Scene& sc
 std::string support_inadmissible(const Scene& scene) {
   if (!scene.support) return "";
   const Support& s = *scene.support;
+  // Every force given and neither weight nor pressure_center written: nothing to agree with.
+  if (!s.weight && !s.pressure_center && s.known()) return "";
   Rational given;
   Vec2 moment;
   std::vector<Vec2> unknown;

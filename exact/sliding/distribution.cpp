@@ -44,6 +44,11 @@ Admissible admissible_set(const Scene& scene) {
       continue;
     }
     a.given[i] = *p.force;
+  }
+  if (a.unknown.empty()) return a;  // F = {given}: the rest below is not needed
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Support_point& p = s.points[i];
+    if (!p.force) continue;
     sum += *p.force;
     moment.x += *p.force * p.at.x;
     moment.y += *p.force * p.at.y;
@@ -53,7 +58,6 @@ Admissible admissible_set(const Scene& scene) {
     moment.x += r.moment.x;
     moment.y += r.moment.y;
   }
-  if (a.unknown.empty()) return a;
   const std::optional<Vec2> c = pressure_center_of(scene);
   if (!s.weight || !c) throw std::invalid_argument("admissible_set: a scene read_scene would refuse");
   a.rest = *s.weight - sum;

@@ -48,8 +48,10 @@ std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<R
 // ρ_i v_i/max(|v_i|, 1), each in its disc, and the non-negative multiples max(λ·ĉ_j, 0) of the cone's wrenches sum
 // to p/σ (A_i g = (g, r_i × g), v_i(λ) = A_iᵀλ). φ has a minimiser when p/σ is inside the limit surface (plus the
 // cone) and none when it is outside; σ = 1 − 2^-j for j = 1, 2, … (the first that converges leaves a slack
-// ≥ half the load's own). Still points (rotation centres) are handled by the smoothing. Then one exact round:
-// rational weights w_i = σ ρ_i/max(|v_i(λ)|, 1) and cone weights (the doubles, exactly), L solves
+// ≥ half the load's own); each Newton run starts at the last minimiser found (the probe's, then the previous σ's:
+// a few steps) and stops as soon as two steps leave λ where it was (rounding has the last word: the minimiser when
+// the gradient is within 10^-9 of its terms, which the exact round then verifies, else no minimiser). Still points
+// (rotation centres) are handled by the smoothing. Then one exact round: rational weights w_i = σ ρ_i/max(|v_i(λ)|, 1) and cone weights (the doubles, exactly), L solves
 // Σ w_i A_i A_iᵀ L = p − Σ_j λ_j c_j exactly, g_i = w_i v_i(L), so Σ A_i g_i + Σ λ_j c_j = p exactly, and each disc
 // is checked exactly (|g_i|² < ρ_i²). Nothing when no σ verifies (then the LP decides). O(k + cone) per Newton step.
 std::optional<Support_witness> smoothed_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
@@ -119,7 +121,7 @@ std::optional<Support_witness> smoothed_witness(const Support& s, const std::vec
   };
   // Minimise φ for one σ: the minimiser, or false when Newton does not converge (p/σ outside, or numerics).
   const auto minimise = [&](double sigma, double l[3]) {
-    l[0] = l[1] = l[2] = 0;
+    int still = 0;  // consecutive steps that left λ where it was (to rounding): Newton is done, converged or not
     double pnorm = std::fabs(pd[0]) + std::fabs(pd[1]) + std::fabs(pd[2]);
     for (int it = 0; it < 200; ++it) {
       double g[3] = {-pd[0] / sigma, -pd[1] / sigma, -pd[2] / sigma}, h[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
@@ -160,6 +162,9 @@ std::optional<Support_witness> smoothed_witness(const Support& s, const std::vec
         if (phi(trial, sigma) <= f0 || t < 1e-12) break;
       }
       if (t < 1e-12) return gn <= 1e-9 * scale;  // no more progress: accept only a small gradient
+      const double moved = std::fabs(trial[0] - l[0]) + std::fabs(trial[1] - l[1]) + std::fabs(trial[2] - l[2]);
+      still = moved <= 1e-13 * (std::fabs(l[0]) + std::fabs(l[1]) + std::fabs(l[2])) ? still + 1 : 0;
+      if (still >= 2) return gn <= 1e-9 * scale;  // the same stop
       for (int c = 0; c < 3; ++c) l[c] = trial[c];
       if (!(std::fabs(l[0]) + std::fabs(l[1]) + std::fabs(l[2]) < 1e150)) return false;  // unbounded: outside
     }
@@ -167,17 +172,20 @@ std::optional<Support_witness> smoothed_witness(const Support& s, const std::vec
   };
   // probe: first whether p itself (σ → 1) is inside at all. If not, no σ below can verify; the last iterate λ is
   // the escape: φ decreases along it without bound, so λ·p > h_f(λ) and λ·c_j ≤ 0 to first order.
+  double start[3] = {0, 0, 0};  // each run starts at the last minimiser found (warm: a few Newton steps)
   if (probe) {
-    double l[3];
+    double l[3] = {0, 0, 0};
     if (!minimise(1 - std::ldexp(1.0, -40), l)) {
       if (escape) *escape = {l[0], l[1], l[2]};
       return std::nullopt;
     }
+    std::copy(l, l + 3, start);
   }
   for (int j = 1; j <= 50; ++j) {
     const double sigma = 1 - std::ldexp(1.0, -j);
-    double l[3];
+    double l[3] = {start[0], start[1], start[2]};
     if (!minimise(sigma, l)) continue;
+    std::copy(l, l + 3, start);
     // The exact round with rational weights (the doubles, exactly).
     std::vector<Rational> w(k);
     Rational M[3][3];

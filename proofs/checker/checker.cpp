@@ -857,18 +857,21 @@ Region read_region(Reader& r, const Limits& lim, std::size_t& vertices) {
 
 // The scene's support (docs/scene-format.md; the unknown distribution of docs/theory-sliding.md §1).
 // Each point's numbers are kept as text, and as values when they are small, as for contacts.
-struct Support_point {
-  bool known = false;             // "force" given
-  std::vector<std::string> text;  // x, y, mu (its own or support.mu), force ("" if unknown)
-  std::vector<Q> value;           // the same values, or empty (some number is not small)
-};
 struct Point_values {
   Q x, y, mu, f;  // f = 0 if unknown
 };
-Point_values values(const Support_point& p, const Limits& lim) {
-  if (!p.value.empty()) return {p.value[0], p.value[1], p.value[2], p.value[3]};
+struct Support_point {
+  bool known = false;                // "force" given
+  std::array<std::string, 4> text;   // x, y, mu (its own or support.mu), force ("" if unknown)
+  bool kept = false;                 // the values are small and kept in `value`
+  Point_values value;                // (kept) the same values
+};
+// The point's values: the kept ones (no copy), or read again from their text into `scratch` (valid: read before).
+const Point_values& values(const Support_point& p, const Limits& lim, Point_values& scratch) {
+  if (p.kept) return p.value;
   auto q = [&](std::size_t k) { return p.text[k].empty() ? Q(0) : scene_number(p.text[k], lim, "support"); };
-  return {q(0), q(1), q(2), q(3)};  // valid: read before
+  scratch = {q(0), q(1), q(2), q(3)};
+  return scratch;
 }
 
 struct Support {
@@ -880,7 +883,7 @@ struct Support {
   // The admissible set F = {f >= 0 : f_i = given where given, sum f = W, sum f r = W c} (theory-sliding
   // §1): with unknown forces, W = weight and c = pressure_center or body.com, and the unknown forces
   // must carry rest_weight = W - sum_known f_i with moment rest_moment = W c - sum_known f_i r_i.
-  Q W, c[2], rest_weight, rest_moment[2];
+  Q W, c[2], rest_weight, rest_moment[2];  // (W: not set when every force is given and no weight is written)
 };
 
 // {"mu"?, "weight"?, "pressure_center"?, "points": [{"at": [x, y], "force"?: f, "mu"?: mu}, ...]}
@@ -892,13 +895,12 @@ Support read_support(Reader& r, const Limits& lim) {
   bool has_mu = false, has_points = false;
   std::string mu_text;
   std::string_view key;
-  struct Raw {
-    std::vector<std::string> text;
-    std::vector<Q> value;
+  struct Raw {  // what a point needs until support.mu (which may follow) is known
     bool has_mu = false, positive = false;  // positive: a given force > 0
-    std::string path;
   };
-  std::vector<Raw> raw;  // points, before support.mu (which may follow) is known
+  std::vector<Raw> raw;          // one per point of s.points
+  std::string points_path;       // the points' array ("support.points"): point i is points_path + "[i]"
+  const auto point_path = [&](std::size_t i) { return points_path + "[" + std::to_string(i) + "]"; };
   while (r.next_key(key)) {
     if (key == "mu") {
       if (read_number(r, lim, &mu_text) < 0) r.fail(quote(mu_text) + " is negative");
@@ -925,7 +927,10 @@ Support read_support(Reader& r, const Limits& lim) {
           throw Failure{"support.points: more than " + std::to_string(lim.max_contacts) + " points"};
         if (Tally::reading) Tally::reading->entry("support.points", raw.size(), lim);
         Raw p;
-        p.path = r.path();
+        if (raw.empty()) {  // the first point's path ends in "[0]" (json.cpp Reader::path): the array's is before it
+          points_path = r.path();
+          points_path.resize(points_path.size() - 3);
+        }
         if (r.peek() != Kind::object) r.fail("expected an object {\"at\", \"force\"?, \"mu\"?}");
         r.begin_object();
         std::string_view point_key;
@@ -949,10 +954,15 @@ Support read_support(Reader& r, const Limits& lim) {
           }
         }
         if (!has_at) r.fail("missing required key \"at\"");
-        p.text = {std::move(at[0]), std::move(at[1]), std::move(mu), has_force ? std::move(force) : std::string()};
-        p.value = kept({at_value[0], at_value[1], mu_value, force_value});  // mu 0 until support.mu is known
+        Support_point& sp = s.points.emplace_back();
+        sp.known = has_force;
+        sp.text = {std::move(at[0]), std::move(at[1]), std::move(mu), has_force ? std::move(force) : std::string()};
         p.positive = has_force && force_value > 0;
-        raw.push_back(std::move(p));
+        // the values kept if all are small (mu 0 until support.mu is known)
+        sp.kept = small(at_value[0]) && small(at_value[1]) && small(mu_value) && small(force_value);
+        if (sp.kept)
+          sp.value = {std::move(at_value[0]), std::move(at_value[1]), std::move(mu_value), std::move(force_value)};
+        raw.push_back(p);
       }
     } else {
       r.fail("unknown key " + quote(key), true);
@@ -962,20 +972,17 @@ Support read_support(Reader& r, const Limits& lim) {
   if (raw.empty() && s.regions.empty()) throw Failure{"support.points: empty (a support needs at least one point or region)"};
   const Q support_mu = has_mu ? scene_number(mu_text, lim, "support.mu") : Q(0);
   bool any_force = false;
-  for (Raw& p : raw) {
-    if (!p.has_mu && !has_mu) throw Failure{p.path + ": missing key \"mu\" (and support.mu gives no default)"};
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    const Raw& p = raw[i];
+    Support_point& sp = s.points[i];
+    if (!p.has_mu && !has_mu) throw Failure{point_path(i) + ": missing key \"mu\" (and support.mu gives no default)"};
     if (!p.has_mu) {
-      p.text[2] = mu_text;
-      if (!p.value.empty()) p.value[2] = support_mu;
-      if (!small(support_mu)) p.value.clear();
+      sp.text[2] = mu_text;
+      if (sp.kept) sp.value.mu = support_mu;
+      if (!small(support_mu)) sp.kept = false;
     }
-    Support_point sp;
-    sp.known = !p.text[3].empty();
     any_force = any_force || p.positive;
     s.unknown += sp.known ? 0 : 1;
-    sp.text = std::move(p.text);
-    sp.value = std::move(p.value);
-    s.points.push_back(std::move(sp));
   }
   if (s.unknown == 0 && !any_force && s.regions.empty()) throw Failure{"support.points: all forces are zero"};
   for (Region& g : s.regions) {
@@ -991,10 +998,14 @@ Support read_support(Reader& r, const Limits& lim) {
 // rest_moment / rest_weight lies in the convex hull of the points without a given force (or
 // rest_weight = 0 and rest_moment = 0, when they all carry nothing).
 void settle_support(Support& s, bool has_com, const Q (&com)[2], const Limits& lim) {
+  // Every force given and neither weight nor pressure_center written: nothing to agree with, and W is not needed
+  // (only in_f uses it, for a distribution chosen in F: some force unknown).
+  if (s.unknown == 0 && !s.has_weight && !s.has_center) return;
   Q sum = 0, moment[2] = {0, 0};
   for (const Support_point& p : s.points) {
     if (!p.known) continue;
-    const Point_values v = values(p, lim);
+    Point_values scratch;
+    const Point_values& v = values(p, lim, scratch);
     sum += v.f, moment[0] += v.f * v.x, moment[1] += v.f * v.y;
   }
   for (const Region& g : s.regions) sum += g.W, moment[0] += g.M[0], moment[1] += g.M[1];  // a known pressure
@@ -1036,7 +1047,8 @@ void settle_support(Support& s, bool has_com, const Q (&com)[2], const Limits& l
   Q R[2], L[2];
   for (std::size_t i = 0; i < s.points.size() && !inside; ++i) {
     if (s.points[i].known) continue;
-    const Point_values v = values(s.points[i], lim);
+    Point_values scratch;
+    const Point_values& v = values(s.points[i], lim, scratch);
     const Q d[2] = {s.rest_weight * v.x - s.rest_moment[0], s.rest_weight * v.y - s.rest_moment[1]};
     if (d[0] == 0 && d[1] == 0) {
       inside = true;
@@ -2298,7 +2310,8 @@ class Support_blocks {
   // The scene's forces (0 where unknown).
   std::vector<Q> given() const {
     std::vector<Q> f;
-    for (const Support_point& p : s_.points) f.push_back(values(p, lim_).f);
+    Point_values scratch;
+    for (const Support_point& p : s_.points) f.push_back(values(p, lim_, scratch).f);
     return f;
   }
 
@@ -2307,11 +2320,12 @@ class Support_blocks {
     size(f.size(), path);
     Q sum = 0, moment[2] = {0, 0};
     for (std::size_t i = 0; i < f.size(); ++i) {
-      const Point_values v = values(s_.points[i], lim_);
-      const std::string at = path + "[" + std::to_string(i) + "]: ";
-      if (sgn(f[i]) < 0) throw Failure{at + show(f[i]) + " is negative"};
+      Point_values scratch;
+      const Point_values& v = values(s_.points[i], lim_, scratch);
+      const auto at = [&] { return path + "[" + std::to_string(i) + "]: "; };  // (built only for a failure)
+      if (sgn(f[i]) < 0) throw Failure{at() + show(f[i]) + " is negative"};
       if (s_.points[i].known && f[i] != v.f)
-        throw Failure{at + show(f[i]) + " is not the given force " + show(v.f) + " of " + point_name(i)};
+        throw Failure{at() + show(f[i]) + " is not the given force " + show(v.f) + " of " + point_name(i)};
       sum += f[i], moment[0] += f[i] * v.x, moment[1] += f[i] * v.y;
     }
     Q regions = 0;
@@ -2351,7 +2365,12 @@ class Support_blocks {
       if (!one) one = true, ax = x, ay = y;
     };
     for (std::size_t i = 0; i < g.size(); ++i) {
-      const Point_values v = values(s_.points[i], lim_);
+      Point_values scratch;
+      const Point_values& v = values(s_.points[i], lim_, scratch);
+      if (sgn(g[i][0]) == 0 && sgn(g[i][1]) == 0) {  // g_i = 0: in its disc (mu_i f_i >= 0), adds nothing to the sum
+        if (sgn(v.mu) > 0 && sgn(f[i]) > 0) friction_at(v.x, v.y);
+        continue;
+      }
       const Q lhs = g[i][0] * g[i][0] + g[i][1] * g[i][1], bound = v.mu * f[i];
       const bool inside = strict ? (sgn(bound) == 0 ? sgn(lhs) == 0 : lhs < bound * bound) : lhs <= bound * bound;
       if (!inside)
@@ -2380,12 +2399,13 @@ class Support_blocks {
     size(u.size(), path);
     Q bound = 0;
     for (std::size_t i = 0; i < u.size(); ++i) {
-      const Point_values v = values(s_.points[i], lim_);
-      const std::string at = path + "[" + std::to_string(i) + "]: ";
-      if (sgn(u[i]) < 0) throw Failure{at + show(u[i]) + " is negative"};
+      Point_values scratch;
+      const Point_values& v = values(s_.points[i], lim_, scratch);
+      const auto at = [&] { return path + "[" + std::to_string(i) + "]: "; };  // (built only for a failure)
+      if (sgn(u[i]) < 0) throw Failure{at() + show(u[i]) + " is negative"};
       const Q vx = q[0] - q[2] * v.y, vy = q[1] + q[2] * v.x, speed2 = vx * vx + vy * vy;
       if (u[i] * u[i] < speed2)
-        throw Failure{at + "u^2 = " + show(Q(u[i] * u[i])) + " is less than |v_i(q)|^2 = " + show(speed2)};
+        throw Failure{at() + "u^2 = " + show(Q(u[i] * u[i])) + " is less than |v_i(q)|^2 = " + show(speed2)};
       const Q mu_u = v.mu * u[i];
       if (!dual || s_.points[i].known) {
         bound += mu_u * f[i];
@@ -2438,7 +2458,8 @@ class Support_blocks {
     std::vector<std::array<Z, 3>> a;
     std::vector<Point_values> pt;
     for (const std::size_t i : unknown) {
-      pt.push_back(values(s_.points[i], lim_));
+      Point_values scratch;
+      pt.push_back(values(s_.points[i], lim_, scratch));
       const Q &x = pt.back().x, &y = pt.back().y;
       a.push_back({Z(x.get_den() * y.get_den()), Z(x.get_num() * y.get_den()), Z(y.get_num() * x.get_den())});
     }
