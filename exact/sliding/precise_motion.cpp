@@ -228,6 +228,14 @@ Precise_motion precise_motion(const std::vector<Rho_point>& points, const Vec3q&
   for (int c = 1; c < 3; ++c)
     if (abs(p[c]) < abs(p[axis])) axis = c;
   Big z1(64), z2(64);
+  std::size_t work = 0;
+  bool spent = false;
+  const auto evaluate_counted = [&](const std::vector<Point>& pts, const Big3& q, const Big3& e1, const Big3& e2,
+                                    bool derivatives) {
+    work += pts.size();
+    spent = spent || work > kMaxPreciseMotionWork;
+    return evaluate(pts, q, e1, e2, derivatives);
+  };
   for (const long bits : {128L, 256L, 512L}) {
     std::vector<Point> pts;
     for (const Rho_point& pt : points)
@@ -295,9 +303,9 @@ Precise_motion precise_motion(const std::vector<Rho_point>& points, const Vec3q&
     // Newton with backtracking (Armijo, 1/4). From the fourth iterate on, each one whose h − 1 keeps the last one's
     // binary exponent is tried exactly: near a nearly flat surface (h almost a kink) Newton's decrement says
     // little, and what is needed is only an iterate good to the margin's bits.
-    Eval e = evaluate(pts, at_z(q0, e1, e2, a1, a2), e1, e2, true);
+    Eval e = evaluate_counted(pts, at_z(q0, e1, e2, a1, a2), e1, e2, true);
     long last_exponent = 1L << 30;
-    for (int it = 0; it < 120 && e.smooth && e.h.finite(); ++it) {
+    for (int it = 0; it < 120 && e.smooth && e.h.finite() && !spent; ++it) {
       const long exponent = (e.h - one).exponent();
       if (it >= 3 && exponent == last_exponent && certify(at_z(q0, e1, e2, a1, a2), e.h)) return out;
       last_exponent = exponent;
@@ -307,21 +315,21 @@ Precise_motion precise_motion(const std::vector<Rho_point>& points, const Vec3q&
       const Big dec = (e.g1 * d1 + e.g2 * d2).neg();  // λ² = gᵀH⁻¹g ≥ 0
       if (dec.less(e.h.times_2exp(-(bits - 8)))) break;  // at this precision's level: nothing more to gain
       Big t = one, n1 = a1 + d1, n2 = a2 + d2;
-      for (long k = 0; k < bits / 2; ++k) {
-        const Eval f = evaluate(pts, at_z(q0, e1, e2, n1, n2), e1, e2, false);
+      for (long k = 0; k < bits / 2 && !spent; ++k) {
+        const Eval f = evaluate_counted(pts, at_z(q0, e1, e2, n1, n2), e1, e2, false);
         if (f.h.less(e.h - dec * t.times_2exp(-2))) break;
         t = t.times_2exp(-1);
         n1 = a1 + t * d1;
         n2 = a2 + t * d2;
       }
-      const Eval f = evaluate(pts, at_z(q0, e1, e2, n1, n2), e1, e2, true);
+      const Eval f = evaluate_counted(pts, at_z(q0, e1, e2, n1, n2), e1, e2, true);
       if (!f.h.less(e.h)) break;  // no descent left at this precision
       a1 = n1;
       a2 = n2;
       e = f;
     }
     if (!e.smooth) return out;  // a rotation about a support point: the facet, not Newton's to decide
-    if (certify(at_z(q0, e1, e2, a1, a2), e.h)) return out;
+    if (certify(at_z(q0, e1, e2, a1, a2), e.h) || spent) return out;  // spent: the work bound, undecided
     z1 = a1;
     z2 = a2;
   }

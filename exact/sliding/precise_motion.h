@@ -35,8 +35,10 @@ struct Precise_motion {
   std::vector<Rational> speed_bounds;  // … with u_i ≥ |v_i(twist)|, one per point, and Σ ρ_i u_i < twist·p
 };
 
-// At most this many points (each Newton step costs O(k) multiple-precision operations).
+// At most this many points, and at most kMaxPreciseMotionWork point evaluations of h in all (each costs a few
+// multiple-precision operations): bounded time on any input, about a second at worst.
 constexpr std::size_t kMaxPreciseMotionPoints = 4096;
+constexpr std::size_t kMaxPreciseMotionWork = 2000000;
 
 // Precondition: friction (ρ > 0) at two distinct points at least, else nothing (a flat limit surface).
 Precise_motion precise_motion(const std::vector<Rho_point>& points, const Vec3q& p);
