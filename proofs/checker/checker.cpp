@@ -1673,6 +1673,7 @@ std::vector<Q> read_rationals(Reader& r) {
   if (r.peek() != Kind::array) r.fail("expected an array of rationals");
   r.begin_array();
   std::vector<Q> out;
+  out.reserve(16);  // (a reallocation copies the rationals: room for 16 at once, then doubling)
   while (r.next_item()) out.push_back(read_rational(r));
   return out;
 }
@@ -2346,6 +2347,7 @@ class Support_blocks {
   // The scene's forces (0 where unknown).
   std::vector<Q> given() const {
     std::vector<Q> f;
+    f.reserve(s_.points.size());
     Point_values scratch;
     for (const Support_point& p : s_.points) f.push_back(values(p, lim_, scratch).f);
     return f;
