@@ -22,8 +22,8 @@ template <class T>
 T& slot(std::vector<T>& v, std::size_t k) {
   if (k == v.size()) {
     // A reallocation copies every element (Rational's move may allocate, so it is not noexcept and the
-    // vector copies): room for 8 at once, then doubling.
-    if (v.size() == v.capacity()) v.reserve(std::max<std::size_t>(8, 2 * v.capacity()));
+    // vector copies): room for 16 at once (a fixture's support points), then doubling.
+    if (v.size() == v.capacity()) v.reserve(std::max<std::size_t>(16, 2 * v.capacity()));
     v.emplace_back();
   }
   return v[k];

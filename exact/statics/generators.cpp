@@ -11,6 +11,10 @@ namespace wrenchkit {
 
 Wrench wrench_at(const Vec2& p, const Vec2& f) { return {f.x, f.y, p.x * f.y - p.y * f.x}; }
 
+namespace {
+bool small_generators(const Contact& c, std::size_t i, Reading reading, std::vector<Generator>& out);
+}  // namespace
+
 std::vector<Generator> generators(const Scene& scene, Reading reading) {
   std::vector<Generator> out;
   out.reserve(2 * scene.contacts.size());
@@ -22,6 +26,7 @@ std::vector<Generator> generators(const Scene& scene, Reading reading) {
       out.push_back({i, Edge::wrench, c.wrench});
       continue;
     }
+    if (small_generators(c, i, reading, out)) continue;
     point_contact_generators(c.at.x, c.at.y, c.normal.x, c.normal.y, c.mu, c.mu != 0, reading,
                              [&](Edge e, Rational fx, Rational fy, Rational m) {
                                out.push_back({i, e, Wrench{std::move(fx), std::move(fy), std::move(m)}});
@@ -86,6 +91,60 @@ bool small_vec2(const Rational& x, const Rational& y, std::int64_t& X, std::int6
   return true;
 }
 
+// A rational num/den in lowest terms with |num|, den ≤ 2^62 − 1 (den > 0), for the generators of short numbers:
+// each operation is exact in 128 bits and reduced by its gcd; `ok` turns false (for good) when a result does not
+// fit, and the caller takes the rationals instead. The same values as Rational arithmetic, without allocation.
+struct Frac62 {
+  std::int64_t num = 0, den = 1;
+  bool ok = true;
+};
+Frac62 frac62(i128 num, i128 den, bool ok) {  // den > 0
+  if (!ok) return {0, 1, false};
+  if (num == 0) return {0, 1, true};
+  const u128 g = gcd128(uabs(num), static_cast<u128>(den));
+  num /= static_cast<i128>(g), den /= static_cast<i128>(g);
+  if (!wide::fits62(num) || !wide::fits62(den)) return {0, 1, false};
+  return {static_cast<std::int64_t>(num), static_cast<std::int64_t>(den), true};
+}
+Frac62 operator*(const Frac62& a, const Frac62& b) {
+  return frac62(static_cast<i128>(a.num) * b.num, static_cast<i128>(a.den) * b.den, a.ok && b.ok);
+}
+Frac62 operator+(const Frac62& a, const Frac62& b) {  // |terms| < 2^124: the sum fits
+  return frac62(static_cast<i128>(a.num) * b.den + static_cast<i128>(b.num) * a.den, static_cast<i128>(a.den) * b.den,
+                a.ok && b.ok);
+}
+Frac62 operator-(const Frac62& a, const Frac62& b) { return a + Frac62{-b.num, b.den, b.ok}; }
+
+Rational rational_of(const Frac62& f) {  // already in lowest terms
+  Rational q;
+  mpz_set_si(q.get_num_mpz_t(), f.num);
+  mpz_set_si(q.get_den_mpz_t(), f.den);
+  return q;
+}
+
+// [FC-0] The point contact's generators by point_contact_generators over Frac62 (the one construction) when its
+// numbers are short and every intermediate result fits; false (nothing appended) otherwise.
+bool small_generators(const Contact& c, std::size_t i, Reading reading, std::vector<Generator>& out) {
+  Frac62 v[5];
+  const Rational* q[5] = {&c.at.x, &c.at.y, &c.normal.x, &c.normal.y, &c.mu};
+  for (int k = 0; k < 5; ++k)
+    if (!small_q(*q[k], v[k].num, v[k].den)) return false;
+  Edge edge[2] = {Edge::normal, Edge::normal};
+  Frac62 w[2][3];
+  int n = 0;
+  bool ok = true;
+  point_contact_generators(v[0], v[1], v[2], v[3], v[4], c.mu != 0, reading,
+                           [&](Edge e, const Frac62& fx, const Frac62& fy, const Frac62& m) {
+                             ok = ok && fx.ok && fy.ok && m.ok;
+                             edge[n] = e;
+                             w[n][0] = fx, w[n][1] = fy, w[n][2] = m;
+                             ++n;
+                           });
+  if (!ok) return false;
+  for (int k = 0; k < n; ++k)
+    out.push_back({i, edge[k], Wrench{rational_of(w[k][0]), rational_of(w[k][1]), rational_of(w[k][2])}});
+  return true;
+}
 
 // The integer vector e (|entries| < 2^127) as a kernel row: s and its tier
 // (0: < 2^40, 1: ≤ 2^62 − 1), or tier 2 with v. The zero vector stays zero (tier 0). Returns the

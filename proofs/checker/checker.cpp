@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <deque>
 #include <exception>
 #include <map>
 #include <memory>
@@ -273,6 +274,21 @@ bool small_value(const Number_text& n, Small& out) {
   return true;
 }
 
+// q = a Small's value, in lowest terms (a 64-bit gcd; no text, no temporary).
+void set_small(Q& q, const Small& s) {
+  unsigned long long a = s.num < 0 ? 0ULL - static_cast<unsigned long long>(s.num) : static_cast<unsigned long long>(s.num);
+  unsigned long long b = static_cast<unsigned long long>(s.den), g = a, h = b;
+  while (h != 0) g %= h, std::swap(g, h);  // g = gcd(|num|, den) (den when num is 0)
+  mpz_set_ui(mpq_numref(q.get_mpq_t()), static_cast<unsigned long>(a / g));
+  mpz_set_ui(mpq_denref(q.get_mpq_t()), static_cast<unsigned long>(b / g));
+  if (s.num < 0) mpq_neg(q.get_mpq_t(), q.get_mpq_t());
+}
+Q small_q(const Small& s) {
+  Q q;
+  set_small(q, s);
+  return q;
+}
+
 // A certificate rational (certificate-format.md §2): a JSON string matching
 // -?(0|[1-9][0-9]*)(/[1-9][0-9]*)? of at most certificate_rational_limit characters. The grammar is checked
 // here, in full, before GMP sees the text (mpq_set_str alone would accept "1/0" and more).
@@ -296,8 +312,23 @@ bool rational_grammar(std::string_view s) {
                   std::to_string(certificate_rational_limit) + ")"};
   throw Failure{path + ": " + quote(s) + " is not a rational of the form -?(0|[1-9][0-9]*)(/[1-9][0-9]*)?"};
 }
-// The value of a text that matches the grammar.
+// The value of a text that matches the grammar. Short ones (numerator and denominator of at most 18 digits: most
+// weights and forces) by a 64-bit gcd, without GMP's text conversion; the same value.
 Q rational_value(std::string_view s) {
+  if (s.size() <= 38) {
+    const bool negative = s[0] == '-';
+    const std::size_t slash = s.find('/'), begin = negative ? 1 : 0, end = slash == std::string_view::npos ? s.size() : slash;
+    const std::size_t den_digits = slash == std::string_view::npos ? 0 : s.size() - slash - 1;
+    if (end - begin <= 18 && den_digits <= 18) {
+      unsigned long long num = 0, den = slash == std::string_view::npos ? 1 : 0;
+      for (std::size_t i = begin; i < end; ++i) num = num * 10 + static_cast<unsigned>(s[i] - '0');
+      for (std::size_t i = end + 1; i < s.size(); ++i) den = den * 10 + static_cast<unsigned>(s[i] - '0');
+      Small v;  // |num|, den < 10^18 < 2^63; den > 0 (grammar)
+      v.num = negative ? -static_cast<long long>(num) : static_cast<long long>(num);
+      v.den = static_cast<long long>(den);
+      return small_q(v);
+    }
+  }
   Q q;
   mpq_set_str(q.get_mpq_t(), std::string(s).c_str(), 10);  // cannot fail: grammar checked, denominator not zero
   q.canonicalize();
@@ -875,7 +906,7 @@ const Point_values& values(const Support_point& p, const Limits& lim, Point_valu
 }
 
 struct Support {
-  std::vector<Support_point> points;
+  std::deque<Support_point> points;  // (a deque: no copies of its rationals as it grows)
   std::vector<Region> regions;  // settled: oriented, with W and M
   std::size_t unknown = 0;  // points without a given force
   bool has_weight = false, has_center = false;
@@ -934,20 +965,20 @@ Support read_support(Reader& r, const Limits& lim) {
         if (r.peek() != Kind::object) r.fail("expected an object {\"at\", \"force\"?, \"mu\"?}");
         r.begin_object();
         std::string_view point_key;
-        std::string at[2], mu, force;
-        Q at_value[2], mu_value, force_value;
+        // x, y, mu, force as read (validated and counted; "0" where absent: mu until support.mu is known)
+        Read_number n[4];
         bool has_at = false, has_force = false;
         while (r.next_key(point_key)) {
           if (point_key == "at") {
-            read_fixed(r, 2, numbers_text(2), [&](std::size_t k) { at_value[k] = read_number(r, lim, &at[k]); });
+            read_numbers(r, lim, 2, n);
             has_at = true;
           } else if (point_key == "force") {
-            force_value = read_number(r, lim, &force);
-            if (force_value < 0) r.fail(quote(force) + " is negative");
+            n[3] = read_contact_number(r, lim);
+            if (n[3].negative) r.fail(quote(n[3].text) + " is negative");
             has_force = true;
           } else if (point_key == "mu") {
-            mu_value = read_number(r, lim, &mu);
-            if (mu_value < 0) r.fail(quote(mu) + " is negative");
+            n[2] = read_contact_number(r, lim);
+            if (n[2].negative) r.fail(quote(n[2].text) + " is negative");
             p.has_mu = true;
           } else {
             r.fail("unknown key " + quote(point_key), true);
@@ -956,12 +987,16 @@ Support read_support(Reader& r, const Limits& lim) {
         if (!has_at) r.fail("missing required key \"at\"");
         Support_point& sp = s.points.emplace_back();
         sp.known = has_force;
-        sp.text = {std::move(at[0]), std::move(at[1]), std::move(mu), has_force ? std::move(force) : std::string()};
-        p.positive = has_force && force_value > 0;
-        // the values kept if all are small (mu 0 until support.mu is known)
-        sp.kept = small(at_value[0]) && small(at_value[1]) && small(mu_value) && small(force_value);
-        if (sp.kept)
-          sp.value = {std::move(at_value[0]), std::move(at_value[1]), std::move(mu_value), std::move(force_value)};
+        p.positive = has_force && !n[3].zero && !n[3].negative;
+        // the values kept if all are small (mu 0 until support.mu is known); the texts only when not
+        Q* const value[4] = {&sp.value.x, &sp.value.y, &sp.value.mu, &sp.value.f};
+        for (std::size_t k = 0; k < 4; ++k)
+          if (n[k].fits) set_small(*value[k], n[k].value);
+          else *value[k] = scene_number(n[k].text, lim, "support");  // valid: read before
+        sp.kept = small(sp.value.x) && small(sp.value.y) && small(sp.value.mu) && small(sp.value.f);
+        if (!sp.kept || !p.has_mu)  // (support.mu, read later, may make the point's values not kept)
+          for (std::size_t k = 0; k < 4; ++k)
+            if (k != 2 || p.has_mu) sp.text[k] = std::string(k == 3 && !has_force ? std::string_view() : n[k].text);
         raw.push_back(p);
       }
     } else {
@@ -1638,6 +1673,7 @@ std::vector<Q> read_rationals(Reader& r) {
   if (r.peek() != Kind::array) r.fail("expected an array of rationals");
   r.begin_array();
   std::vector<Q> out;
+  out.reserve(16);  // (a reallocation copies the rationals: room for 16 at once, then doubling)
   while (r.next_item()) out.push_back(read_rational(r));
   return out;
 }
@@ -1646,6 +1682,7 @@ std::vector<Pair> read_pairs(Reader& r) {
   if (r.peek() != Kind::array) r.fail("expected an array of [gx, gy] pairs of rationals");
   r.begin_array();
   std::vector<Pair> out;
+  out.reserve(16);  // (a reallocation copies the rationals: room for 16 at once, then doubling)
   while (r.next_item()) {
     out.emplace_back();
     read_fixed(r, 2, "an array of two rationals [gx, gy]", [&](std::size_t k) { out.back()[k] = read_rational(r); });
@@ -2310,6 +2347,7 @@ class Support_blocks {
   // The scene's forces (0 where unknown).
   std::vector<Q> given() const {
     std::vector<Q> f;
+    f.reserve(s_.points.size());
     Point_values scratch;
     for (const Support_point& p : s_.points) f.push_back(values(p, lim_, scratch).f);
     return f;
@@ -2361,6 +2399,7 @@ class Support_blocks {
     bool two = false, one = false;
     Q ax, ay;
     const auto friction_at = [&](const Q& x, const Q& y) {
+      if (!strict || two) return;  // (only a stick asks for two distinct points)
       if (one && (x != ax || y != ay)) two = true;
       if (!one) one = true, ax = x, ay = y;
     };

@@ -33,7 +33,7 @@ class Reader {
  public:
   enum class Kind { null, boolean, number, string, array, object };
 
-  Reader(std::string_view text, std::size_t max_depth) : text_(text), max_depth_(max_depth) { stack_.reserve(4); }
+  Reader(std::string_view text, std::size_t max_depth) : text_(text), max_depth_(max_depth) { stack_.reserve(8); }  // a scene nests 5 deep
 
   Kind peek();  // kind of the next value; a syntax error if there is none
   void begin_object();
