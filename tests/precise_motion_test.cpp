@@ -136,5 +136,57 @@ TEST(PreciseMotion, HoldOverUnknownDistributionsNearTheSurface) {
   EXPECT_GE(decided, cases * 3 / 4);
 }
 
+// [SL-3] step 4: every extreme distribution of the dinner plate (eight rim points and its centre, every force
+// unknown) slides under these loads, and no twist of the vertices separates the load from the union U of their
+// limit surfaces. The union's minimax (a log barrier in double on min_{q·p=1} max_v h_v(q)) proposes both ways:
+// its minimiser q* (slides for every distribution, checked with the LP over F), or its dual distribution f*, a
+// convex combination of vertices, which holds the load strictly (depends). The depends load was undecided before
+// (the exact LP over F × inscribed 64-gons resolves only 1.2·10^-3 of U's boundary; its margin is 2·10^-6).
+TEST(PreciseMotion, UnionMinimaxDecidesTheDinnerPlate) {
+  const std::string plate =
+      R"({"wrenchkit": 1, "contacts": [], "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [)"
+      R"({"at": [1, 0]}, {"at": [0.6, 0.8]}, {"at": [0, 1]}, {"at": [-0.6, 0.8]}, {"at": [-1, 0]}, )"
+      R"({"at": [-0.6, -0.8]}, {"at": [0, -1]}, {"at": [0.6, -0.8]}, {"at": [0, 0]}]}})";
+  struct Load {
+    const char *x, *y, *m;
+    Motion_over expected;
+  };
+  for (const Load& l : {Load{"-4147752156737/60000000000000", "-1482864524071/20000000000000",
+                             "59732690199553/60000000000000", Motion_over::slides},
+                        Load{"-181775483315155714974009/50000000000000000000000000",
+                             "-121725790733016995157591/25000000000000000000000000",
+                             "-24999481381234365212395539/25000000000000000000000000", Motion_over::depends}}) {
+    Support_query query;
+    query.question = Support_question::limit_surface;
+    query.sides = 16;
+    query.load = Vec3q{q(l.x), q(l.y), q(l.m)};
+    query.polytopes = false;
+    const std::string tag = std::string("union_minimax_") + motion_over_name(l.expected);
+    const Support_item item = answer_support(plate, "test", Request{}, query);
+    ASSERT_EQ(item.status, Status::answered) << item.message << test::dump_failure(plate, tag);
+    ASSERT_TRUE(item.motion_over.has_value());
+    const Motion_over_f& m = *item.motion_over;
+    for (const Motion v : m.per_vertex) EXPECT_EQ(v, Motion::slides) << test::dump_failure(plate, tag);
+    EXPECT_EQ(m.motion, l.expected) << m.undecided_why << test::dump_failure(plate, tag);
+    EXPECT_EQ(m.decided_by, "minimax");
+    EXPECT_TRUE(test::checker_accepts(plate, item.certificate)) << item.certificate;
+    if (l.expected == Motion_over::depends) {
+      // The holding distribution is no vertex: the centre carries none of the weight and the rim all of it, spread.
+      ASSERT_TRUE(m.sticking.has_value());
+      int loaded = 0;
+      for (const Rational& f : m.sticking->distribution) loaded += f > 0;
+      EXPECT_GT(loaded, 3);
+    }
+    // Exact mode has no minimax (doubles only propose in hybrid): it may abstain, never contradict.
+    Request exact;
+    exact.mode = Mode::exact;
+    const Support_item e = answer_support(plate, "test", exact, query);
+    ASSERT_TRUE(e.status == Status::answered || e.status == Status::undecided) << e.message;
+    if (e.motion_over && e.motion_over->motion != Motion_over::undecided) {
+      EXPECT_EQ(e.motion_over->motion, l.expected);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace wrenchkit

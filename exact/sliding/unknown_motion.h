@@ -12,6 +12,9 @@
 //   2. every vertex slides: twists that separate p from all of U — the vertices' sliding twists and their sum,
 //      checked exactly with the speeds bounded above by rationals (u_i² ≥ |v_i(q)|²) and the LP over F:
 //      q·p ≥ max_F Σ μ_i f_i u_i proves slides;
+//      hybrid: the union's minimax min_{q·p=1} max_v h_{f_v}(q) by a log barrier in double (U is convex; proofs/notes/
+//      SL-6 §6): its minimiser is such a twist, or its multipliers give a distribution f* = Σ λ_v f_v of F that holds
+//      p strictly (a stick witness of f*, checked exactly: depends); then a compass search on the same function;
 //   3. else an exact LP over F × (inscribed N-gons) looks for one distribution that sticks (a stick witness:
 //      rational support forces strictly inside the discs summing to p): found: depends;
 //   4. else undecided (the load is within the resolution of U's boundary).
@@ -57,7 +60,7 @@ struct Motion_over_f {
   std::optional<std::size_t> sticking_vertex, sliding_vertex;  // depends: witnesses among the vertices
   std::optional<Stick_witness> sticking;          // depends found by the LP (step 2)
   std::optional<Vec3q> separating_twist;          // slides (step 3)
-  std::string decided_by;                         // "vertices", "lp", "twist" or "none"
+  std::string decided_by;                         // "vertices", "lp", "twist", "minimax" or "none"
   // undecided: why, with the distance from a limit surface within which the load lies (relative, along its ray).
   std::string undecided_why;
 };
