@@ -588,6 +588,31 @@ TEST(RegionMotionOver, MatAndLegsGolden) {
   EXPECT_EQ(motion_of(scene, {2, 0, 0}, Mode::float_only).status, Status::undecided);
 }
 
+// U = ∪_F LS(f) is not convex: legs at (±2, 0) and (0, ±2) whose forces are not given (F's vertices the two barbells)
+// beside a small mat. The load (3/2, 3/2, -2) slides under both barbells, yet the even mixture sticks: step 3 of RG-3
+// §5 (the LP over F on the mat's cells as given points) finds it — depends, decided by "lp".
+TEST(RegionMotionOver, AMixtureSticksWhereNoVertexDoes) {
+  const std::string cross = R"({"wrenchkit": 1, "support": {"mu": "1/2", "weight": 5, "pressure_center": [0, 0],
+      "points": [{"at": [-2, 0]}, {"at": [2, 0]}, {"at": [0, -2]}, {"at": [0, 2]}], "regions": [{"outline":
+      [["-1/4", "-1/4"], ["1/4", "-1/4"], ["1/4", "1/4"], ["-1/4", "1/4"]], "pressure": "uniform", "force": "1/5"}]}})";
+  for (const Mode mode : {Mode::hybrid, Mode::exact}) {
+    const Support_item r = motion_of(cross, {Rational(3, 2), Rational(3, 2), -2}, mode);
+    ASSERT_EQ(r.status, Status::answered) << r.message;
+    ASSERT_TRUE(r.motion_over && r.region_motion_over);
+    EXPECT_EQ(r.motion_over->motion, Motion_over::depends) << r.motion_over->undecided_why;
+    EXPECT_EQ(r.motion_over->decided_by, "lp");
+    EXPECT_EQ(r.motion_over->per_vertex, (std::vector<Motion>(r.vertices.size(), Motion::slides)));
+    ASSERT_TRUE(r.region_motion_over->sticking_distribution);
+    const Scene sc = read(cross);
+    EXPECT_TRUE(admissible_set(sc).contains(*sc.support, *r.region_motion_over->sticking_distribution));
+    // The oracle: that distribution sticks by the known-forces decision, the vertices slide.
+    Support t = *sc.support;
+    for (std::size_t i = 0; i < t.points.size(); ++i) t.points[i].force = (*r.region_motion_over->sticking_distribution)[i];
+    EXPECT_EQ(decide_region_motion(t, {Rational(3, 2), Rational(3, 2), -2}).motion, Motion::sticks);
+    EXPECT_TRUE(test::checker_accepts(cross, r.certificate));
+  }
+}
+
 // The oracle: the known-forces decision over regions at distributions spread over F (its vertices and random convex
 // combinations of them, exact). Sticks for every ⇒ none of them slides; slides for every ⇒ none sticks; a stick and
 // a slide among them ⇒ depends (or undecided). Two supports: the mat and legs, and a linear-pressure triangle beside
