@@ -1,13 +1,9 @@
 #include "exact/sliding/region_motion_over.h"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <utility>
 
 #include "exact/sliding/motion_certificate.h"
-#include "exact/sliding/sliding.h"
 
 namespace wrenchkit {
 
@@ -41,37 +37,6 @@ bool slides_for_every_regions(const Support& s, const Admissible& a, const Vec3q
   r.slide_blocks = std::move(b.blocks);
   r.cells = b.cells;
   return true;
-}
-
-// A twist that may separate p from U = ∪_F LS(f): the minimum on the plane q·p = 1 of h_U(q) = Σ_R μ_R ∫_R |v| p +
-// max_v Σ_i μ_i f_v,i |v_i(q)| (all in double; the caller certifies it exactly), stopped as soon as h_U < 1.
-std::optional<Vec3q> union_search(const Support& s, const std::vector<std::vector<Rational>>& v, const Vec3q& p,
-                                  const Vec3q* start) {
-  const std::size_t k = s.points.size();
-  std::vector<double> x(k), y(k);
-  std::vector<std::vector<double>> rho(v.size(), std::vector<double>(k));
-  for (std::size_t i = 0; i < k; ++i) {
-    x[i] = s.points[i].at.x.get_d(), y[i] = s.points[i].at.y.get_d();
-    const Rational mu = mu_of(s, s.points[i]);
-    for (std::size_t j = 0; j < v.size(); ++j) rho[j][i] = Rational(mu * v[j][i]).get_d();
-  }
-  std::vector<double> mu_r;
-  for (const Support_region& g : s.regions) mu_r.push_back(region_mu(s, g).get_d());
-  const auto h_union = [&](const double* q) {
-    double best = 0;
-    for (const auto& r : rho) {
-      double h = 0;
-      for (std::size_t i = 0; i < k; ++i)
-        if (r[i] != 0) h += r[i] * std::hypot(q[0] - q[2] * y[i], q[1] + q[2] * x[i]);
-      best = std::max(best, h);
-    }
-    for (std::size_t g = 0; g < s.regions.size(); ++g)
-      if (mu_r[g] != 0) best += mu_r[g] * region_power_double(s.regions[g], q);
-    return best;
-  };
-  const Plane_minimum m = minimise_on_load_plane(p, h_union, start, 1.0);
-  if (!m.found || !(m.h < 1)) return std::nullopt;
-  return Vec3q{Rational(m.q[0]), Rational(m.q[1]), Rational(m.q[2])};
 }
 
 // A distribution of F that sticks on the regions' coarse cells as support points with their forces given (each cell
@@ -199,7 +164,16 @@ Region_motion_over decide_region_motion_over(const Support& s, const Admissible&
   }
   for (const Vec3q& q : twists)
     if (slides_for_every_regions(s, a, p, q, 500, r)) return done(Motion_over::slides, "twist");
-  if (const auto q = union_search(s, v, p, twists.empty() ? nullptr : &twists.front()))
+  // The search (unknown_motion.h) with the regions' power, the same for every distribution, added.
+  std::vector<double> mu_r;
+  for (const Support_region& g : s.regions) mu_r.push_back(region_mu(s, g).get_d());
+  const auto regions_power = [&](const double* q) {
+    double h = 0;
+    for (std::size_t g = 0; g < s.regions.size(); ++g)
+      if (mu_r[g] != 0) h += mu_r[g] * region_power_double(s.regions[g], q);
+    return h;
+  };
+  if (const auto q = union_search(s, v, p, twists.empty() ? nullptr : &twists.front(), regions_power))
     if (slides_for_every_regions(s, a, p, *q, kMaxRegionCells, r)) return done(Motion_over::slides, "twist");
   if (stick_over_cells(s, a, p, r)) return done(Motion_over::depends, "lp");
   o.decided_by = "none";
