@@ -107,11 +107,12 @@ Request request_of(const Options& o);
 // text for people (each made only when needed); returns kAnswered.
 int write_answer(const Options& o, const std::function<void(Json_writer&)>& json,
                  const std::function<std::string()>& text);
-// The writer of a support's answer by what the pipeline answered: a support with regions, an unknown
-// distribution, the twin alone (--mode float), or the exact answer (sliding and limit-surface alike).
+// The writer of a support's answer by what the pipeline answered: an unknown distribution (with regions or not: its
+// writers add the regions' statics), a support with regions, the twin alone (--mode float), or the exact answer
+// (sliding and limit-surface alike).
 template <class F>
 F by_answer(const Support_item& r, Mode mode, F unknown, F twin, F exact, F regions) {
-  return r.regions ? regions : r.admissible ? unknown : mode == Mode::float_only ? twin : exact;
+  return r.admissible ? unknown : r.regions ? regions : mode == Mode::float_only ? twin : exact;
 }
 
 // sliding_command.cpp: a support with regions [RG-1] (sliding and limit-surface alike): its exact statics ("support",
@@ -129,6 +130,8 @@ std::string unknown_support_text(const Support_item& r, const std::string& sourc
 // "power": {…}) written into the answer's object, for sliding and limit-surface alike.
 void write_unknown_distribution(Json_writer& w, const Support_item& r);
 void write_power_over(Json_writer& w, const Support_item& r);
+// The regions' part of the power over F ("" without regions or a twist), a text line.
+std::string regions_power_text(const Support_item& r);
 // "scene: NAME" (or the source when the scene has no name), the first line of every text answer.
 std::string scene_line(const std::string& name, const std::string& source);
 

@@ -381,6 +381,7 @@ void write_limit_surface_unknown(Json_writer& w, const Ls_options& lo, const Sup
   }
   if (m.separating_twist) w.key("separating_twist").rationals(*m.separating_twist);
   if (!m.undecided_why.empty()) w.member("undecided_why", m.undecided_why);
+  if (r.region_motion_over) w.member("certificate_cells", r.region_motion_over->cells);  // [RG-3] the regions' blocks
   write_certificate_members(w, r);
 }
 
@@ -390,7 +391,7 @@ std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item
   s << unknown_support_text(r, source);
   if (lo.twist)
     s << "twist " << tv(*lo.twist) << ": the frictional power over every admissible distribution lies in ["
-      << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n";
+      << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n" << regions_power_text(r);
   if (lo.load) {
     const Motion_over_f& m = *r.motion_over;
     s << "load " << tv(*lo.load) << ": ";

@@ -122,9 +122,8 @@ std::vector<Entry> corpus_entries(const Reference_options& ro) {
                         stress::fixture_text(rng, contacts, points, load), ""));
   }
   // Issue 16 [HD-2]: hold over a support region together with legs whose forces are not given (the mat and legs of
-  // proofs/examples/mat_legs_*, with and without a pin): held by every distribution, by none, and depending on it.
-  // Their stick/slide is still refused (limit_surface_refused: regions with a force not given) — the corpus' one
-  // refused question.
+  // proofs/examples/mat_legs_*, with and without a pin): held by every distribution, by none, and depending on it;
+  // their stick/slide [RG-3] sticks, slides and depends over F too (format-2 certificates).
   const char* const mat_legs = R"("support": {"mu": "1/2", "weight": 5, "pressure_center": [0, 0], "points": [{"at": [-2, 0]}, {"at": [0, 0]}, {"at": [2, 0]}], "regions": [{"outline": [["-1/2", "-1/2"], ["1/2", "-1/2"], ["1/2", "1/2"], ["-1/2", "1/2"]], "pressure": "uniform", "force": 1}]})";
   const char* const pin = R"("contacts": [{"at": [-3, 0], "normal": [1, 0], "name": "pin"}], )";
   const struct {

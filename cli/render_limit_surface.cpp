@@ -115,13 +115,10 @@ std::string render_regions_svg(const Scene& scene) {
 
 std::string render_limit_surface_svg(const Scene& scene, int sides) {
   if (!scene.support) throw Input_error("support: the scene has no \"support\" (nothing to draw)");
-  if (!scene.support->regions.empty()) {
-    if (!scene.support->known())
-      throw Input_error("support: regions together with points whose force is not given are not drawn yet");
-    return render_regions_svg(scene);
-  }
+  // Some point's force not given (regions beside them or not): a limit surface per distribution, none to draw.
   if (!scene.support->known())
     throw Input_error("support: the forces of some points are not given, so there is no one limit surface to draw");
+  if (!scene.support->regions.empty()) return render_regions_svg(scene);
   const Polygonal_ls model(merge_support(*scene.support), make_directions(sides));
   if (model.candidate_count() > kMaxCandidates)
     throw Input_error("support: too many points for a picture with " + std::to_string(sides) + " sides");

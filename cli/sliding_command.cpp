@@ -25,6 +25,37 @@ std::string distribution_text(const std::vector<Rational>& f) {
   return s + ")";
 }
 
+namespace {
+
+void write_xy(Json_writer& w, const Vec2& p) { w.array().rational(p.x).rational(p.y).end_array(); }
+std::string point_text(const Vec2& p) { return "(" + human_number(p.x) + ", " + human_number(p.y) + ")"; }
+
+// "support": {"points": n, "regions": [{area, force, mu, centre of pressure, pressure, moments, triangles}, …]}.
+void write_support_regions(Json_writer& w, const Support& s) {
+  w.key("support").object().member("points", s.points.size()).key("regions").array();
+  for (const Support_region& g : s.regions) {
+    w.object().member("area", g.area).member("force", g.total).member("mu", region_mu(s, g));
+    write_xy(w.key("center_of_pressure"), {g.moment.x / g.total, g.moment.y / g.total});
+    w.member("pressure", g.uniform ? "uniform" : "linear").key("pressure_coefficients").rationals(g.pressure);
+    w.key("second_moments").rationals(g.second).member("triangles", g.triangles.size()).end_object();
+  }
+  w.end_array().end_object();
+}
+
+// One line per region: "  region k: area …, force …, mu …, centre of pressure (…) (… pressure, n triangles)".
+std::string region_lines(const Support& s) {
+  std::ostringstream o;
+  for (std::size_t k = 0; k < s.regions.size(); ++k) {
+    const Support_region& g = s.regions[k];
+    o << "  region " << k << ": area " << human_number(g.area) << ", force " << human_number(g.total) << ", mu "
+      << human_number(region_mu(s, g)) << ", centre of pressure " << point_text({g.moment.x / g.total, g.moment.y / g.total})
+      << " (" << (g.uniform ? "uniform" : "linear") << " pressure, " << g.triangles.size() << " triangles)\n";
+  }
+  return o.str();
+}
+
+}  // namespace
+
 std::string unknown_support_text(const Support_item& r, const std::string& source) {
   const Admissible& a = *r.admissible;
   std::string s = scene_line(r.scene.name, source) + "support: " + std::to_string(r.scene.support->points.size()) +
@@ -33,7 +64,11 @@ std::string unknown_support_text(const Support_item& r, const std::string& sourc
                   ", " + human_number(r.pressure_center.y) + ")";
   if (a.unknown.size() <= kMaxEnumeratedUnknowns)
     s += "; " + std::to_string(r.vertices.size()) + " extreme admissible distributions";
-  return s + "\n";
+  s += "\n";
+  if (r.regions)  // [RG-3] regions beside the points: their pressure is known, so they count as given in F
+    s += "  and " + std::to_string(r.scene.support->regions.size()) + " region(s) with a known pressure (given in F):\n" +
+         region_lines(*r.scene.support);
+  return s;
 }
 
 void write_unknown_distribution(Json_writer& w, const Support_item& r) {
@@ -45,17 +80,31 @@ void write_unknown_distribution(Json_writer& w, const Support_item& r) {
   w.key("extreme_distributions");
   if (a.unknown.size() > kMaxEnumeratedUnknowns) {
     w.null();
-    return;
+  } else {
+    w.array();
+    for (const std::vector<Rational>& f : r.vertices) w.rationals(f);
+    w.end_array();
   }
-  w.array();
-  for (const std::vector<Rational>& f : r.vertices) w.rationals(f);
-  w.end_array();
+  if (r.regions) write_support_regions(w, *r.scene.support);  // [RG-3] the regions, given in F
+}
+
+std::string regions_power_text(const Support_item& r) {
+  if (!r.regions || !r.regions->has_twist) return "";
+  char lo[32], hi[32];
+  std::snprintf(lo, sizeof lo, "%.10g", r.regions->h_lo.get_d());
+  std::snprintf(hi, sizeof hi, "%.10g", r.regions->h_hi.get_d());
+  return std::string("  of which the regions' power (every distribution alike) lies in [") + lo + ", " + hi +
+         "] (certified: exact rational ends in --json)\n";
 }
 
 void write_power_over(Json_writer& w, const Support_item& r) {
   w.key("power").object().member("lower", r.power->lower).member("upper", r.power->upper);
   w.key("min_distribution").rationals(r.power->min_distribution);
-  w.key("max_distribution").rationals(r.power->max_distribution).end_object();
+  w.key("max_distribution").rationals(r.power->max_distribution);
+  if (r.regions && r.regions->has_twist)  // [RG-3] the regions' certified bracket, included in lower and upper
+    w.key("regions").object().member("lower", r.regions->h_lo).member("upper", r.regions->h_hi)
+        .member("tolerance_met", r.regions->met).member("precision_bits", r.regions->bits).end_object();
+  w.end_object();
 }
 
 namespace {
@@ -63,9 +112,6 @@ namespace {
 std::string thv(const Vec3q& v) {
   return "(" + human_number(v[0]) + ", " + human_number(v[1]) + ", " + human_number(v[2]) + ")";
 }
-void write_xy(Json_writer& w, const Vec2& p) { w.array().rational(p.x).rational(p.y).end_array(); }
-std::string point_text(const Vec2& p) { return "(" + human_number(p.x) + ", " + human_number(p.y) + ")"; }
-
 // "twist", "motion", and the translation's exact load or the rotation's centre (Sliding_answer and Region_sliding
 // alike).
 template <class Answer>
@@ -82,16 +128,9 @@ void write_twist_motion(Json_writer& w, const Answer& a) {
 }  // namespace
 
 void write_region_statics(Json_writer& w, const Support_item& r) {
-  const Support& s = *r.scene.support;
   const Region_sliding& a = *r.regions;
-  w.key("support").object().member("points", s.points.size()).key("regions").array();
-  for (const Support_region& g : s.regions) {
-    w.object().member("area", g.area).member("force", g.total).member("mu", region_mu(s, g));
-    write_xy(w.key("center_of_pressure"), {g.moment.x / g.total, g.moment.y / g.total});
-    w.member("pressure", g.uniform ? "uniform" : "linear").key("pressure_coefficients").rationals(g.pressure);
-    w.key("second_moments").rationals(g.second).member("triangles", g.triangles.size()).end_object();
-  }
-  w.end_array().end_object().member("total_force", a.total_force);
+  write_support_regions(w, *r.scene.support);
+  w.member("total_force", a.total_force);
   write_xy(w.key("center_of_friction"), a.center_of_pressure);
   write_xy(w.key("friction_centroid"), a.friction_centroid);
   w.member("mu_f0", a.mu_f0);
@@ -112,13 +151,7 @@ std::string region_statics_text(const Support_item& r, const std::string& source
   const Region_sliding& a = *r.regions;
   std::ostringstream o;
   o << scene_line(r.scene.name, source) << "support: " << s.points.size() << " point(s) and " << s.regions.size()
-    << " region(s) with a continuous pressure\n";
-  for (std::size_t k = 0; k < s.regions.size(); ++k) {
-    const Support_region& g = s.regions[k];
-    o << "  region " << k << ": area " << human_number(g.area) << ", force " << human_number(g.total) << ", mu "
-      << human_number(region_mu(s, g)) << ", centre of pressure " << point_text({g.moment.x / g.total, g.moment.y / g.total})
-      << " (" << (g.uniform ? "uniform" : "linear") << " pressure, " << g.triangles.size() << " triangles)\n";
-  }
+    << " region(s) with a continuous pressure\n" << region_lines(s);
   o << "total normal force " << human_number(a.total_force) << ", centre of friction " << point_text(a.center_of_pressure)
     << " (exact)\nmu*f0 = " << human_number(a.mu_f0) << ", friction centroid " << point_text(a.friction_centroid) << "\n";
   return o.str();
@@ -259,7 +292,7 @@ std::string sliding_unknown_human(const Sliding_options& so, const Support_item&
     s << "twist " << thv(*so.twist) << ": the frictional power over every admissible distribution lies in ["
       << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n"
       << "  least at f = " << distribution_text(r.power->min_distribution)
-      << ", most at f = " << distribution_text(r.power->max_distribution) << "\n";
+      << ", most at f = " << distribution_text(r.power->max_distribution) << "\n" << regions_power_text(r);
   s << "convention: " << kConvention << "\n";
   return s.str();
 }

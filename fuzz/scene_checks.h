@@ -15,8 +15,8 @@
 //     stated bounds (testing/twin_agreement.h);
 //   * with a small support: the float twin's true h lies in the exact polygonal bracket, and hybrid and
 //     float stick/slide never contradict the exact polygons;
-//   * with support regions: the power brackets are sound, and a load's motion comes with a certificate the
-//     independent checker accepts.
+//   * with support regions (and legs whose forces are not given, RG-3): the power brackets are sound, and a load's
+//     motion (over F) comes with a certificate the independent checker accepts.
 #pragma once
 
 #include <cstddef>
@@ -38,6 +38,7 @@
 #include "exact/io/scene_budget.h"
 #include "exact/io/scene_writer.h"
 #include "exact/pipeline/pipeline.h"
+#include "exact/sliding/region_motion_over.h"
 #include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
 #include "exact/sliding/unknown_motion.h"
@@ -329,6 +330,15 @@ inline bool check_scene_text(std::string_view text) {
       const auto m = wrenchkit::decide_region_motion(*scene.support, wrenchkit::as_vec(wrenchkit::load_wrench(scene)));
       if (m.motion != wrenchkit::Motion::undecided) region_certificate = m.certificate;
     }
+  }
+  if (scene.support && !scene.support->regions.empty() && !scene.support->known() && scene.load &&
+      scene.support->points.size() <= 4) {
+    // [RG-3] Regions beside legs whose forces are not given: stick/slide over F only with a format-2 certificate the
+    // checker accepts (below).
+    const wrenchkit::Admissible adm = wrenchkit::admissible_set(scene);
+    const auto m = wrenchkit::decide_region_motion_over(*scene.support, adm, wrenchkit::as_vec(wrenchkit::load_wrench(scene)),
+                                                        wrenchkit::vertices(*scene.support, adm));
+    if (m.over.motion != wrenchkit::Motion_over::undecided) region_certificate = m.certificate;
   }
   if (scene.support && scene.support->regions.empty() && scene.support->points.size() <= 4) {
     // An unknown distribution: its first extreme distribution here, and sticks/slides/depends over all of them

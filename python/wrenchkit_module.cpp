@@ -468,6 +468,23 @@ py::tuple distribution(const std::vector<Rational>& f) {
   return py::tuple(l);
 }
 
+// The support's regions: [{area, force, mu, center_of_pressure, pressure, pressure_coefficients, second_moments}, …].
+py::list region_list(const Support& sup) {
+  py::list regions;
+  for (const Support_region& g : sup.regions) {
+    py::dict x;
+    x["area"] = fraction(g.area);
+    x["force"] = fraction(g.total);
+    x["mu"] = fraction(region_mu(sup, g));
+    x["center_of_pressure"] = point({g.moment.x / g.total, g.moment.y / g.total});
+    x["pressure"] = g.uniform ? "uniform" : "linear";
+    x["pressure_coefficients"] = triple(g.pressure[0], g.pressure[1], g.pressure[2]);
+    x["second_moments"] = triple(g.second[0], g.second[1], g.second[2]);
+    regions.append(x);
+  }
+  return regions;
+}
+
 // A support with unknown forces (limit_surface and sliding alike): the admissible set, the power of a twist
 // over it, and whether a load sticks for every distribution, slides for every one, or depends.
 py::dict unknown_distribution(const Support_item& r, const std::string& mode, const Support_query& q) {
@@ -486,6 +503,10 @@ py::dict unknown_distribution(const Support_item& r, const std::string& mode, co
     d["min_distribution"] = distribution(r.power->min_distribution);
     d["max_distribution"] = distribution(r.power->max_distribution);
   }
+  if (r.regions) {  // [RG-3] regions beside points without a force: given in F; their bracket is inside "power"
+    d["regions"] = region_list(*r.scene.support);
+    if (r.regions->has_twist) d["regions_power_bracket"] = py::make_tuple(fraction(r.regions->h_lo), fraction(r.regions->h_hi));
+  }
   if (r.motion_over) {
     const Motion_over_f& m = *r.motion_over;
     d["load"] = triple(*q.load);
@@ -499,6 +520,7 @@ py::dict unknown_distribution(const Support_item& r, const std::string& mode, co
     }
     if (m.separating_twist) d["separating_twist"] = triple(*m.separating_twist);
     if (!m.undecided_why.empty()) d["undecided_why"] = m.undecided_why;
+    if (r.region_motion_over) d["certificate_json"] = r.certificate;  // format 2 (checked)
   }
   return d;
 }
@@ -518,19 +540,7 @@ py::dict regions_dict(const Support_item& r, const std::string& mode, const Supp
   const Region_sliding& a = *r.regions;
   py::dict d;
   d["mode"] = mode;
-  py::list regions;
-  for (const Support_region& g : sup.regions) {
-    py::dict x;
-    x["area"] = fraction(g.area);
-    x["force"] = fraction(g.total);
-    x["mu"] = fraction(region_mu(sup, g));
-    x["center_of_pressure"] = point({g.moment.x / g.total, g.moment.y / g.total});
-    x["pressure"] = g.uniform ? "uniform" : "linear";
-    x["pressure_coefficients"] = triple(g.pressure[0], g.pressure[1], g.pressure[2]);
-    x["second_moments"] = triple(g.second[0], g.second[1], g.second[2]);
-    regions.append(x);
-  }
-  d["regions"] = regions;
+  d["regions"] = region_list(sup);
   d["total_force"] = fraction(a.total_force);
   d["center_of_friction"] = point(a.center_of_pressure);
   d["friction_centroid"] = point(a.friction_centroid);
@@ -587,8 +597,8 @@ py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::st
   if (!regions) q.sides = checked_sides(sides);
   const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "limit_surface", s.limits), q);
   raise_unless_answered(r.status, r.message);
+  if (r.admissible) return unknown_distribution(r, mode, q);  // with regions too (their statics added)
   if (r.regions) return regions_dict(r, mode, q);
-  if (r.admissible) return unknown_distribution(r, mode, q);
   const Sliding_answer& sa = r.sliding;
   py::dict d;
   d["mode"] = mode;
@@ -624,8 +634,8 @@ py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>
   if (twist) q.twist = nonzero_twist(*twist);
   const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "sliding", s.limits), q);
   raise_unless_answered(r.status, r.message);
+  if (r.admissible) return unknown_distribution(r, mode, q);  // with regions too (their statics added)
   if (r.regions) return regions_dict(r, mode, q);
-  if (r.admissible) return unknown_distribution(r, mode, q);
   py::dict d;
   d["mode"] = mode;
   const Sliding_answer& a = r.sliding;

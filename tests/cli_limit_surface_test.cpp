@@ -392,5 +392,51 @@ TEST(CliRegions, LoadsWithCertificatesAndRefusals) {
   EXPECT_TRUE(has(many.out, "{\"line\": 2, " + one.out.substr(1, one.out.size() - 2))) << many.out;
 }
 
+// [RG-3] Regions together with points whose force is not given (the mat and legs of proofs/examples/mat_legs.*).
+TEST(CliRegions, RegionsWithForcesNotGivenEndToEnd) {
+  const std::string mat = R"({"wrenchkit": 1, "name": "mat and legs", "support": {"mu": "1/2", "weight": 5, "pressure_center": [0, 0], "points": [{"at": [-2, 0]}, {"at": [0, 0]}, {"at": [2, 0]}], "regions": [{"outline": [["-1/2", "-1/2"], ["1/2", "-1/2"], ["1/2", "1/2"], ["-1/2", "1/2"]], "pressure": "uniform", "force": 1}]}})";
+  const fs::path d = scratch();
+  const std::string scene = (d / "mat.json").string(), cert = (d / "mat.cert.json").string();
+  std::ofstream(scene) << mat;
+  struct Case {
+    const char* load;
+    const char* motion;
+  };
+  for (const Case& c : {Case{"2,0,0", "sticks"}, Case{"3,0,0", "slides"}, Case{"0,0,1", "depends"}}) {
+    const Cli_result r = run(std::string("limit-surface --json --load ") + c.load + " --certificate '" + cert + "' '" +
+                             scene + "'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(has(r.out, std::string("\"motion\": \"") + c.motion + "\"")) << r.out;
+    EXPECT_TRUE(has(r.out, "\"distribution\": \"unknown\"")) << r.out;
+    EXPECT_TRUE(has(r.out, "\"extreme_distributions\": [[\"0\", \"4\", \"0\"], [\"2\", \"0\", \"2\"]]")) << r.out;
+    EXPECT_TRUE(has(r.out, "\"support\": {\"points\": 3, \"regions\": [{\"area\": \"1\", \"force\": \"1\"")) << r.out;
+    EXPECT_TRUE(has(r.out, "\"certificate_checked\": true")) << r.out;
+    EXPECT_TRUE(has(test::read_text(cert), "\"wrenchkit_certificate\": 2, \"property\": \"motion\""));
+    EXPECT_EQ(run("check '" + scene + "' '" + cert + "'").code, 0) << c.load;
+  }
+  const Cli_result t = run("limit-surface --load 0,0,1 -", mat);
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_TRUE(has(t.out, "depends on the distribution: it sticks with f = (2, 0, 2) and slides with f = (0, 4, 0)")) << t.out;
+  EXPECT_TRUE(has(t.out, "1 region(s) with a known pressure (given in F)")) << t.out;
+  // The power over F: the points' range [0, 4] plus the mat's (√2 + asinh 1)/12 ≈ 0.1913, with its bracket.
+  const Cli_result s = run("sliding --json --twist 0,0,1 -", mat);
+  ASSERT_EQ(s.code, 0) << s.err;
+  EXPECT_TRUE(has(s.out, "\"min_distribution\": [\"0\", \"4\", \"0\"], \"max_distribution\": [\"2\", \"0\", \"2\"], \"regions\": {\"lower\": ")) << s.out;
+  const Cli_result st = run("sliding --twist 0,0,1 -", mat);
+  EXPECT_TRUE(has(st.out, "of which the regions' power (every distribution alike) lies in [0.1912989291, 0.1912989291]")) << st.out;
+  // No one limit surface to draw or list; float has no twin of regions.
+  for (const std::string opt : {"--svg x.svg --load 1,0,0", "--list"}) {
+    const Cli_result b = run("limit-surface " + opt + " -", mat);
+    EXPECT_EQ(b.code, 2) << opt << b.out;
+    EXPECT_TRUE(b.out.empty());
+  }
+  EXPECT_EQ(run("limit-surface --mode float --load 1,0,0 -", mat).code, 3);
+  // batch: the same bytes as the single command's --json.
+  const Cli_result one = run("limit-surface --json --load 0,0,1 -", mat);
+  const Cli_result many = run("batch limit-surface --load 0,0,1", mat + "\n" + mat + "\n");
+  ASSERT_EQ(many.code, 0) << many.err;
+  EXPECT_TRUE(has(many.out, "{\"line\": 2, " + one.out.substr(1, one.out.size() - 2))) << many.out;
+}
+
 }  // namespace
 }  // namespace wrenchkit

@@ -209,9 +209,9 @@ TEST_F(Corpus, HoldsEveryKindOfScene) {
   for (const char* m : {"regions sticks", "regions slides", "unknown slides", "unknown depends", "known sticks",
                         "known slides"})
     EXPECT_GT(motions[m], 0) << m;
-  // Issue 16 [HD-2]: hold over regions with legs whose forces are not given — every verdict, certified in format 2;
-  // their stick/slide is the corpus' refused question.
-  std::map<std::string, int> region_holds;
+  // Issue 16 [HD-2] [RG-3]: hold and stick/slide over regions with legs whose forces are not given — every verdict,
+  // certified in format 2; the limit surface is the power's range over F.
+  std::map<std::string, int> region_holds, region_motions;
   for (const json::Value& v : lines_) {
     if (v.find("family")->text != "fixture_regions") continue;
     const json::Value* h = v.find("hold");
@@ -219,10 +219,17 @@ TEST_F(Corpus, HoldsEveryKindOfScene) {
     ASSERT_NE(h->type, json::Type::null) << v.find("id")->text;
     ++region_holds[json::text_of(*h)];
     EXPECT_EQ(v.find("certificates")->find("hold")->find("wrenchkit_certificate")->text, "2") << v.find("id")->text;
-    EXPECT_EQ(v.find("limit_surface")->type, json::Type::null) << v.find("id")->text;
-    EXPECT_NE(v.find("limit_surface_refused"), nullptr) << v.find("id")->text;
+    ASSERT_EQ(v.find("limit_surface")->type, json::Type::object) << v.find("id")->text;
+    EXPECT_EQ(v.find("limit_surface")->find("distribution")->text, "unknown") << v.find("id")->text;
+    EXPECT_EQ(v.find("limit_surface_refused"), nullptr) << v.find("id")->text;
+    const json::Value* m = v.find("motion");
+    ASSERT_NE(m, nullptr);
+    ASSERT_EQ(m->type, json::Type::string) << v.find("id")->text;
+    ++region_motions[m->text];
+    EXPECT_EQ(v.find("certificates")->find("motion")->find("wrenchkit_certificate")->text, "2") << v.find("id")->text;
   }
   for (const char* h : {"true", "false", "\"depends\""}) EXPECT_GT(region_holds[h], 0) << h;
+  for (const char* m : {"sticks", "slides", "depends"}) EXPECT_GT(region_motions[m], 0) << m;
 }
 
 TEST_F(Corpus, EveryCertificateIsAcceptedByTheIndependentChecker) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -15,6 +16,8 @@
 #include "exact/io/scene_writer.h"
 #include "exact/io/streaming_scene_reader.h"
 #include "exact/pipeline/support_answer.h"
+#include "exact/sliding/distribution.h"
+#include "exact/sliding/region_motion_over.h"
 #include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
 #include "proofs/checker/checker.h"
@@ -509,6 +512,162 @@ TEST(RegionMotion, TamperedCertificatesAreRejected) {
   EXPECT_EQ(wrenchkit_checker::check(sq, replace(slide.certificate, "\"load\": [\"0\", \"0\", \"4/5\"]",
                                                  "\"load\": [\"0\", \"0\", \"3/4\"]")).outcome,
             Outcome::rejected);  // below the power
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// [RG-3] Stick / slide over regions with points whose force is not given (format 2, certificate-format.md §6.5).
+
+// The mat [-1/2, 1/2]² (uniform, force 1) and legs (-2, 0), (0, 0), (2, 0) without forces, W = 5 at the origin,
+// μ = 1/2 (`mu`): W' = 4, F's vertices (0, 4, 0) and (2, 0, 2).
+std::string mat_legs(const std::string& mu = "1/2") {
+  return R"({"wrenchkit": 1, "support": {"mu": ")" + mu + R"(", "weight": 5, "pressure_center": [0, 0],
+      "points": [{"at": [-2, 0]}, {"at": [0, 0]}, {"at": [2, 0]}], "regions": [{"outline": [["-1/2", "-1/2"],
+      ["1/2", "-1/2"], ["1/2", "1/2"], ["-1/2", "1/2"]], "pressure": "uniform", "force": 1}]}})";
+}
+
+TEST(RegionMotionOver, MatAndLegsGolden) {
+  // By hand: at both vertices the friction forces sum to at most μ(4 + 1) = 5/2 (a translation); the pure moment is
+  // carried up to μ ∫|r| p ≈ 0.1913 by the mat alone under (0, 4, 0) (the middle leg sits at the centre) and up to
+  // 4 + 0.1913 under (2, 0, 2).
+  struct Case {
+    Vec3q load;
+    Motion_over motion;
+  };
+  const std::vector<Case> cases = {
+      {{2, 0, 0}, Motion_over::sticks},                  // inside both
+      {{3, 0, 0}, Motion_over::slides},                  // the translation (1, 0, 0): the dual bound 2 + the mat's 1/2
+      {{Rational(5, 2), 0, 0}, Motion_over::slides},     // on every limit surface: slides (the bound met exactly)
+      {{0, 0, Rational(1, 10)}, Motion_over::sticks},    // below the mat's 0.1913
+      {{0, 0, 1}, Motion_over::depends},                 // the barbell sticks, the middle leg slides
+      {{0, 0, 5}, Motion_over::slides},                  // above 4.1913: the rotation about the centre
+      {{1, Rational(1, 2), Rational(1, 2)}, Motion_over::depends},
+  };
+  const std::string scene = mat_legs();
+  for (const Case& c : cases)
+    for (const Mode mode : {Mode::hybrid, Mode::exact}) {
+      const std::string where = mode_name(mode) + std::string(" load ") + to_string(c.load[0]) + "," +
+                                to_string(c.load[1]) + "," + to_string(c.load[2]);
+      const Support_item r = motion_of(scene, c.load, mode);
+      ASSERT_EQ(r.status, Status::answered) << r.message << " " << where;
+      ASSERT_TRUE(r.motion_over && r.region_motion_over && r.admissible) << where;
+      EXPECT_EQ(r.motion_over->motion, c.motion) << where << "\n" << r.motion_over->undecided_why;
+      ASSERT_EQ(r.vertices.size(), 2u);
+      EXPECT_EQ(r.vertices[0], (std::vector<Rational>{0, 4, 0}));
+      EXPECT_EQ(r.vertices[1], (std::vector<Rational>{2, 0, 2}));
+      // Checked inside answer_support; again here, and its header.
+      EXPECT_EQ(r.certificate.rfind(R"({"wrenchkit_certificate": 2, "property": "motion")", 0), 0u) << r.certificate;
+      EXPECT_TRUE(test::checker_accepts(scene, r.certificate)) << where;
+      if (c.motion == Motion_over::depends) {
+        EXPECT_EQ(r.motion_over->per_vertex, (std::vector<Motion>{Motion::slides, Motion::sticks})) << where;
+      }
+      // Format 1 has none; less friction (μ 1/4) breaks sticks, more (μ 1; 3 for depends, whose sticking witness
+      // stays inside larger discs) breaks slides.
+      std::string v1 = r.certificate;
+      v1.replace(v1.find(": 2,"), 4, ": 1,");
+      EXPECT_NE(wrenchkit_checker::check(scene, v1).message.find("no certificate in format 1"), std::string::npos);
+      const std::string other = mat_legs(c.motion == Motion_over::sticks    ? "1/4"
+                                         : c.motion == Motion_over::depends ? "3"
+                                                                            : "1");
+      EXPECT_EQ(wrenchkit_checker::check(other, r.certificate).outcome, wrenchkit_checker::Outcome::rejected) << where;
+    }
+  // The power of a twist over F: the points' range plus the regions' bracket (the rotation about the centre: the
+  // legs give [0, 4] over F, the mat (√2 + asinh 1)/12 ≈ 0.1913).
+  Request request;
+  Support_query q;
+  q.question = Support_question::sliding;
+  q.twist = Vec3q{0, 0, 1};
+  const Support_item p = answer_support(scene, "scene", request, q);
+  ASSERT_EQ(p.status, Status::answered) << p.message;
+  ASSERT_TRUE(p.power && p.regions);
+  const double mat = (std::sqrt(2.0) + std::asinh(1.0)) / 12;
+  EXPECT_NEAR(p.power->lower.get_d(), mat, 1e-6);
+  EXPECT_NEAR(p.power->upper.get_d(), 4 + mat, 1e-6);
+  EXPECT_LE(p.regions->h_lo.get_d(), mat * (1 + 1e-12));
+  EXPECT_GE(p.regions->h_hi.get_d(), mat * (1 - 1e-12));
+  // Float: no twin of regions.
+  EXPECT_EQ(motion_of(scene, {2, 0, 0}, Mode::float_only).status, Status::undecided);
+}
+
+// U = ∪_F LS(f) is not convex: legs at (±2, 0) and (0, ±2) whose forces are not given (F's vertices the two barbells)
+// beside a small mat. The load (3/2, 3/2, -2) slides under both barbells, yet the even mixture sticks: step 3 of RG-3
+// §5 (the LP over F on the mat's cells as given points) finds it — depends, decided by "lp".
+TEST(RegionMotionOver, AMixtureSticksWhereNoVertexDoes) {
+  const std::string cross = R"({"wrenchkit": 1, "support": {"mu": "1/2", "weight": 5, "pressure_center": [0, 0],
+      "points": [{"at": [-2, 0]}, {"at": [2, 0]}, {"at": [0, -2]}, {"at": [0, 2]}], "regions": [{"outline":
+      [["-1/4", "-1/4"], ["1/4", "-1/4"], ["1/4", "1/4"], ["-1/4", "1/4"]], "pressure": "uniform", "force": "1/5"}]}})";
+  for (const Mode mode : {Mode::hybrid, Mode::exact}) {
+    const Support_item r = motion_of(cross, {Rational(3, 2), Rational(3, 2), -2}, mode);
+    ASSERT_EQ(r.status, Status::answered) << r.message;
+    ASSERT_TRUE(r.motion_over && r.region_motion_over);
+    EXPECT_EQ(r.motion_over->motion, Motion_over::depends) << r.motion_over->undecided_why;
+    EXPECT_EQ(r.motion_over->decided_by, "lp");
+    EXPECT_EQ(r.motion_over->per_vertex, (std::vector<Motion>(r.vertices.size(), Motion::slides)));
+    ASSERT_TRUE(r.region_motion_over->sticking_distribution);
+    const Scene sc = read(cross);
+    EXPECT_TRUE(admissible_set(sc).contains(*sc.support, *r.region_motion_over->sticking_distribution));
+    // The oracle: that distribution sticks by the known-forces decision, the vertices slide.
+    Support t = *sc.support;
+    for (std::size_t i = 0; i < t.points.size(); ++i) t.points[i].force = (*r.region_motion_over->sticking_distribution)[i];
+    EXPECT_EQ(decide_region_motion(t, {Rational(3, 2), Rational(3, 2), -2}).motion, Motion::sticks);
+    EXPECT_TRUE(test::checker_accepts(cross, r.certificate));
+  }
+}
+
+// The oracle: the known-forces decision over regions at distributions spread over F (its vertices and random convex
+// combinations of them, exact). Sticks for every ⇒ none of them slides; slides for every ⇒ none sticks; a stick and
+// a slide among them ⇒ depends (or undecided). Two supports: the mat and legs, and a linear-pressure triangle beside
+// four legs (one with its own μ) around an off-centre centre of pressure.
+TEST(RegionMotionOver, AgainstTheKnownForcesDecisionOverF) {
+  const std::string tri = R"({"wrenchkit": 1, "support": {"mu": "1/2", "weight": 4, "pressure_center": ["1/10", "1/5"],
+      "points": [{"at": [-2, -1]}, {"at": [2, -1]}, {"at": [1, 2]}, {"at": [-1, "3/2"], "mu": "3/4"}],
+      "regions": [{"outline": [[-1, -1], [1, -1], [0, 1]], "pressure": {"linear": [1, "1/4", "1/4"]}}]}})";
+  std::mt19937_64 rng(20261127);
+  std::map<Motion_over, int> seen;
+  for (const std::string& scene : {mat_legs(), tri}) {
+    const Scene sc = read(scene);
+    const Support& s = *sc.support;
+    const Admissible a = admissible_set(sc);
+    const std::vector<std::vector<Rational>> v = vertices(s, a);
+    ASSERT_GE(v.size(), 2u);
+    std::vector<std::vector<Rational>> spread = v;
+    for (int k = 0; k < 6; ++k) {
+      std::vector<Rational> f(s.points.size()), w(v.size());
+      Rational total;
+      for (Rational& x : w) total += (x = Rational(static_cast<long>(rng() % 8)));
+      if (total == 0) continue;
+      for (std::size_t j = 0; j < v.size(); ++j)
+        for (std::size_t i = 0; i < f.size(); ++i) f[i] += w[j] / total * v[j][i];
+      ASSERT_TRUE(a.contains(s, f));
+      spread.push_back(f);
+    }
+    for (int k = 0; k < 40; ++k) {
+      const Vec3q dir{Rational(static_cast<long>(rng() % 9) - 4, 4), Rational(static_cast<long>(rng() % 9) - 4, 4),
+                      Rational(static_cast<long>(rng() % 9) - 4, 8)};
+      if (dir[0] == 0 && dir[1] == 0 && dir[2] == 0) continue;
+      const Rational scale(static_cast<long>(1 + rng() % 12), 4);
+      const Vec3q p{dir[0] * scale, dir[1] * scale, dir[2] * scale};
+      const std::string where = "seed 20261127 case " + std::to_string(k) + " load " + to_string(p[0]) + "," +
+                                to_string(p[1]) + "," + to_string(p[2]) + "\n" + scene;
+      const Support_item r = motion_of(scene, p);
+      ASSERT_EQ(r.status, Status::answered) << r.message << "\n" << where;
+      const Motion_over m = r.motion_over->motion;
+      ++seen[m];
+      bool stick = false, slide = false;
+      for (const std::vector<Rational>& f : spread) {
+        Support t = s;
+        for (std::size_t i = 0; i < f.size(); ++i) t.points[i].force = f[i];
+        const Motion g = decide_region_motion(t, p).motion;
+        stick |= g == Motion::sticks;
+        slide |= g == Motion::slides;
+      }
+      EXPECT_FALSE(m == Motion_over::sticks && slide) << where;
+      EXPECT_FALSE(m == Motion_over::slides && stick) << where;
+      EXPECT_TRUE(!(stick && slide) || m == Motion_over::depends || m == Motion_over::undecided) << where;
+      EXPECT_TRUE(m == Motion_over::undecided || !r.certificate.empty()) << where;
+    }
+  }
+  for (const Motion_over m : {Motion_over::sticks, Motion_over::slides, Motion_over::depends})
+    EXPECT_GT(seen[m], 0) << motion_over_name(m);
 }
 
 }  // namespace

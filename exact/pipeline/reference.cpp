@@ -129,8 +129,9 @@ void write_limit_surface(Json_writer& w, const Scene& scene, int sides) {
   w.end_array().end_object();
 }
 
-// An unknown distribution (a point without "force"): for each twist the range of the power over every
-// admissible distribution, through the pipeline (answer_support, `wrenchkit sliding`).
+// An unknown distribution (a point without "force"; regions beside the points count as given, RG-3): for each twist
+// the range of the power over every admissible distribution, through the pipeline (answer_support, `wrenchkit
+// sliding`; with regions, the points' range plus the regions' certified bracket).
 void write_unknown_limit_surface(Json_writer& w, const Scene& scene, std::string_view text, int sides) {
   Request request;
   request.mode = Mode::exact;
@@ -140,6 +141,7 @@ void write_unknown_limit_surface(Json_writer& w, const Scene& scene, std::string
     q.question = Support_question::sliding;
     q.sides = sides;
     q.twist = t;
+    if (!scene.support->regions.empty()) q.tolerance = Rational("1/1000000000000000");  // as the regions' brackets
     const Support_item r = answer_support(scene, text, "", request, q);
     if (r.status != Status::answered || !r.power) throw Input_error(r.message);
     w.object().key("twist").rationals(t);
@@ -353,7 +355,7 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
     w.end_object();
     Motion_result motion;
     if (parsed.support) {
-      if (!parsed.support->regions.empty()) {
+      if (!parsed.support->regions.empty() && parsed.support->known()) {
         Json_writer ls(1024);
         const std::string refused = write_region_limit_surface(ls, parsed, text);
         w.key("limit_surface");

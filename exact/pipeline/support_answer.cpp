@@ -87,6 +87,13 @@ void answer_sliding(const Support_query& q, Support_item& r) {
   r.sliding = compute_sliding(model, q.twist);
 }
 
+// Stick or slide over F enumerates F's vertices: refused beyond kMaxEnumeratedUnknowns unknown forces.
+Input_error too_many_unknowns(std::string_view source, std::size_t n) {
+  return Input_error(std::string(source) + ": support: " + std::to_string(n) +
+                     " forces are not given: stick or slide over every admissible distribution enumerates the "
+                     "extreme ones, at most " + std::to_string(kMaxEnumeratedUnknowns) + " unknown forces");
+}
+
 // Some force not given: the admissible set, its vertices, and the power range of the twist over it.
 void answer_unknown(std::string_view source, const Support_query& q, Support_item& r) {
   const Support& s = *r.scene.support;
@@ -98,10 +105,7 @@ void answer_unknown(std::string_view source, const Support_query& q, Support_ite
   if (r.admissible->unknown.size() <= kMaxEnumeratedUnknowns) r.vertices = vertices(s, *r.admissible);
   if (q.twist) r.power = power_range(s, *r.admissible, *q.twist);
   if (q.question == Support_question::limit_surface && q.load) {
-    if (r.admissible->unknown.size() > kMaxEnumeratedUnknowns)
-      throw Input_error(std::string(source) + ": support: " + std::to_string(r.admissible->unknown.size()) +
-                        " forces are not given: stick or slide over every admissible distribution enumerates the "
-                        "extreme ones, at most " + std::to_string(kMaxEnumeratedUnknowns) + " unknown forces");
+    if (r.admissible->unknown.size() > kMaxEnumeratedUnknowns) throw too_many_unknowns(source, r.admissible->unknown.size());
     r.motion_over = decide_motion_over(s, *r.admissible, *q.load, r.mode, q.sides);
   }
 }
@@ -219,6 +223,30 @@ void certify_over(const Support_query& q, Support_item& r) {
   }
 }
 
+// [RG-3] Regions together with a point force not given: the admissible set (the regions count as given), its
+// vertices, the regions' own statics and bracket, the power over F (the points' range plus the regions' bracket), and
+// the load's motion over F with its format-2 certificate (checked by check_motion).
+void answer_regions_unknown(std::string_view source, const Support_query& q, Support_item& r) {
+  const Support& s = *r.scene.support;
+  r.admissible = admissible_set(r.scene);
+  r.pressure_center = *pressure_center_of(r.scene);
+  Support regions_only = s;
+  regions_only.points.clear();
+  r.regions = region_sliding(regions_only, q.twist, q.tolerance ? *q.tolerance : Rational(1, 1000000));
+  const bool enumerable = r.admissible->unknown.size() <= kMaxEnumeratedUnknowns;
+  if (enumerable) r.vertices = vertices(s, *r.admissible);
+  if (q.twist) {
+    r.power = power_range(s, *r.admissible, *q.twist);
+    r.power->lower += r.regions->h_lo;
+    r.power->upper += r.regions->h_hi;
+  }
+  if (q.question != Support_question::limit_surface || !q.load) return;
+  if (!enumerable) throw too_many_unknowns(source, r.admissible->unknown.size());
+  r.region_motion_over = decide_region_motion_over(s, *r.admissible, *q.load, r.vertices);
+  r.motion_over = r.region_motion_over->over;
+  r.certificate = r.region_motion_over->certificate;
+}
+
 // [RG-1] [RG-2] A support with regions: the statics exactly, the twist's power and load as certified brackets,
 // the load's motion by a certificate (checked by check_motion).
 void answer_regions(std::string_view source, const Support_query& q, Support_item& r) {
@@ -226,12 +254,10 @@ void answer_regions(std::string_view source, const Support_query& q, Support_ite
   if (q.polytopes_asked)
     throw Input_error(std::string(source) + ": support: it has regions, whose limit surface is strictly convex: no exact "
                                             "polytope to build or list (--sides, --list, --off, --obj need support points only)");
-  if (!s.known())
-    throw Input_error(std::string(source) + ": support: regions together with points whose force is not given are "
-                                            "not answered yet (give every point's force)");
   if (r.mode == Mode::float_only)
     throw Undecided_error("the float twin has no model of support regions (their power and certificates are exact "
                           "and interval arithmetic): use --mode hybrid or exact");
+  if (!s.known()) return answer_regions_unknown(source, q, r);
   r.regions = region_sliding(s, q.twist, q.tolerance ? *q.tolerance : Rational(1, 1000000));
   if (q.question != Support_question::limit_surface || !q.load) return;
   r.region_motion = decide_region_motion(s, *q.load);

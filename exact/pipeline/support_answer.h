@@ -21,6 +21,7 @@
 #include "exact/sliding/distribution.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/motion_certificate.h"
+#include "exact/sliding/region_motion_over.h"
 #include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
 #include "exact/sliding/unknown_motion.h"
@@ -83,6 +84,11 @@ struct Support_item {
   // the motion of --load decided by its certificate (in `certificate`, checked like every other).
   std::optional<Region_sliding> regions;
   std::optional<Region_motion> region_motion;
+  // Regions together with a point force not given [RG-3]: `admissible`, `vertices` and `pressure_center` as for an
+  // unknown distribution; `regions` the regions' own statics and bracket (the points dropped); `power` the points'
+  // range over F plus the regions' bracket; `motion_over` the verdict over F (from region_motion_over, whose
+  // format-2 certificate is in `certificate`).
+  std::optional<Region_motion_over> region_motion_over;
 };
 
 // Reads `text` (eagerly) and answers; never throws. A scene without a support is bad input; so is a
@@ -94,8 +100,8 @@ struct Support_item {
 Support_item answer_support(std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query);
 // A support with regions: answered by exact/sliding/region_sliding.h in exact and hybrid alike (the doubles there only
-// propose witnesses), undecided in float; refused (bad input) with points whose force is not given, and with the
-// polytopes asked for by name.
+// propose witnesses), undecided in float; refused (bad input) with the polytopes asked for by name. With points whose
+// force is not given: the unknown distribution's answer over the regions (exact/sliding/region_motion_over.h).
 // The same for a scene already read.
 // `text`: a text of the scene for the checker (its own text, or write_scene(scene)).
 Support_item answer_support(const Scene& scene, std::string_view text, std::string_view source, const Request& request,

@@ -276,9 +276,9 @@ Precise_witness precise_witness(const Support& s, const std::vector<Rational>& f
 }
 
 // The certificate's object, opened, with its first members: the load and the motion.
-Json_writer motion_certificate_head(const Vec3q& p, const char* motion) {
+Json_writer motion_certificate_head(const Vec3q& p, const char* motion, int version) {
   Json_writer w(512);
-  w.object().member("wrenchkit_certificate", 1).member("property", "motion").key("load").rationals(p);
+  w.object().member("wrenchkit_certificate", version).member("property", "motion").key("load").rationals(p);
   w.member("motion", motion);
   return w;
 }

@@ -74,8 +74,8 @@ struct Precise_witness {
 Precise_witness precise_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p);
 
 // A motion certificate's object, opened, with its first members ("wrenchkit_certificate", "property", "load",
-// "motion").
-Json_writer motion_certificate_head(const Vec3q& p, const char* motion);
+// "motion"); `version` 2 only where format 1 has no certificate (regions with a force not given, §6.5).
+Json_writer motion_certificate_head(const Vec3q& p, const char* motion, int version = 1);
 
 // The certificates, as JSON text (format 1).
 std::string sticks_certificate(const Vec3q& p, const Stick_witness& w);                   // every force given

@@ -566,8 +566,7 @@ Rational point_mu(const Support& s, const Support_point& p) { return p.mu ? *p.m
 // smoothed Newton witness on points and cells together.
 // (q_hint: the twist minimising the true power on the plane q·p = 1, or null: the cells' power there must exceed 1
 // for p to be inside their limit surface, a cheap necessary condition checked in double before the witness.)
-std::optional<std::string> try_stick(const Support& s, const Vec3q& p, int m, std::size_t& cells_out,
-                                     const double* q_hint) {
+bool try_stick(const Support& s, const Vec3q& p, int m, Region_motion& out, const double* q_hint) {
   Support aug;
   aug.mu = s.mu;
   aug.points = s.points;
@@ -588,46 +587,49 @@ std::optional<std::string> try_stick(const Support& s, const Vec3q& p, int m, st
       h += (pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0))).get_d() * f[i].get_d() *
            std::hypot(q_hint[0] - q_hint[2] * pt.at.y.get_d(), q_hint[1] + q_hint[2] * pt.at.x.get_d());
     }
-    if (!(h > 1 + 1e-12)) return std::nullopt;  // p is not (certainly) inside the cells' limit surface
+    if (!(h > 1 + 1e-12)) return false;  // p is not (certainly) inside the cells' limit surface
   }
   const std::optional<Stick_witness> w = smoothed_stick_witness(aug, f, p);
-  if (!w) return std::nullopt;
-  Json_writer j = motion_certificate_head(p, "sticks");
-  write_support_forces(j.key("support_forces"), std::vector<Vec2>(w->forces.begin(), w->forces.begin() + static_cast<std::ptrdiff_t>(s.points.size())));
-  j.key("regions").array();
+  if (!w) return false;
+  const auto at = [&w](std::size_t i) { return w->forces.begin() + static_cast<std::ptrdiff_t>(i); };
+  out.support_forces.assign(at(0), at(s.points.size()));
+  out.stick_blocks.clear();
   std::size_t next = s.points.size();
-  cells_out = 0;
+  out.cells = 0;
   for (Region_cells& c : cells) {
     Region_stick_block b{std::move(c), {}};
-    b.forces.assign(w->forces.begin() + static_cast<std::ptrdiff_t>(next),
-                    w->forces.begin() + static_cast<std::ptrdiff_t>(next + b.cells.triangles.size()));
+    b.forces.assign(at(next), at(next + b.cells.triangles.size()));
     next += b.cells.triangles.size();
-    cells_out += b.cells.triangles.size();
-    write_region_stick_block(j, b);
+    out.cells += b.cells.triangles.size();
+    out.stick_blocks.push_back(std::move(b));
   }
-  return j.end_array().end_object().take();
+  return true;
 }
 
 // Slides: the twist q, the points' rational speed bounds, and each region's slide block refined until the whole
 // bound is at most q·p (its share of the slack proportional to its estimated power).
-std::optional<std::string> try_slide(const Support& s, const Vec3q& p, const Vec3q& q, std::size_t& cells_out,
-                                     std::size_t max_cells) {
-  if (q[0] == 0 && q[1] == 0 && q[2] == 0) return std::nullopt;
+bool try_slide(const Support& s, const Vec3q& p, const Vec3q& q, Region_motion& out, std::size_t max_cells) {
+  if (q[0] == 0 && q[1] == 0 && q[2] == 0) return false;
   const Rational power = q[0] * p[0] + q[1] * p[1] + q[2] * p[2];
-  const std::vector<Rational> u = speed_bounds(s, q);
+  std::vector<Rational> u = speed_bounds(s, q);
   Rational bound;
   for (std::size_t i = 0; i < s.points.size(); ++i) bound += point_mu(s, s.points[i]) * *s.points[i].force * u[i];
-  if (bound > power) return std::nullopt;
-  const Region_slide_blocks r = region_slide_blocks(s, q, Rational(power - bound), max_cells);
-  if (!r.ok) return std::nullopt;
-  const std::vector<Region_slide_block>& blocks = r.blocks;
-  const Rational total = bound + r.bound;
-  cells_out = r.cells;
-  if (total > power) return std::nullopt;
-  Json_writer j = motion_certificate_head(p, "slides");
-  j.key("twist").rationals(q).key("speed_bounds").rationals(u).key("regions").array();
-  for (const Region_slide_block& b : blocks) write_region_slide_block(j, b);
-  return j.end_array().end_object().take();
+  if (bound > power) return false;
+  Region_slide_blocks r = region_slide_blocks(s, q, Rational(power - bound), max_cells);
+  if (!r.ok) return false;
+  out.cells = r.cells;
+  if (bound + r.bound > power) return false;
+  out.twist = q;
+  out.speed_bounds = std::move(u);
+  out.slide_blocks = std::move(r.blocks);
+  return true;
+}
+
+// The format-1 certificate of a decided Region_motion (§6.4).
+std::string region_motion_certificate(const Vec3q& p, const Region_motion& m) {
+  Json_writer j = motion_certificate_head(p, motion_name(m.motion));
+  write_region_witness_members(j, m);
+  return j.end_object().take();
 }
 
 }  // namespace
@@ -667,10 +669,9 @@ Region_motion decide_region_motion(const Support& s, const Vec3q& p) {
     // load on a translation's boundary point, needs few cells), then the search's twist with the whole budget.
     for (const std::size_t budget : {std::size_t(500), unresolvable ? std::size_t(500) : kMaxRegionCells})
       for (const Vec3q& q : twists) {
-        if (auto c = try_slide(s, p, q, out.cells, budget)) {
+        if (try_slide(s, p, q, out, budget)) {
           out.motion = Motion::slides;
-          out.certificate = std::move(*c);
-          out.twist = q;
+          out.certificate = region_motion_certificate(p, out);
           return true;
         }
         if (budget == kMaxRegionCells) break;
@@ -682,9 +683,9 @@ Region_motion decide_region_motion(const Support& s, const Vec3q& p) {
     for (const Support_region& r : s.regions) coarse += r.triangles.size();
     for (int level = 1; coarse * static_cast<std::size_t>(level * level) <= kMaxRegionStickCells && (level <= 2 || !unresolvable);
          level *= 2)
-      if (auto c = try_stick(s, p, level, out.cells, m.found ? m.q.data() : nullptr)) {
+      if (try_stick(s, p, level, out, m.found ? m.q.data() : nullptr)) {
         out.motion = Motion::sticks;
-        out.certificate = std::move(*c);
+        out.certificate = region_motion_certificate(p, out);
         return true;
       }
     return false;
@@ -703,6 +704,18 @@ Region_motion decide_region_motion(const Support& s, const Vec3q& p) {
     std::snprintf(buf, sizeof buf, "no certificate with at most %zu cells", kMaxRegionCells);
   out.undecided_why = buf;
   return out;
+}
+
+void write_region_witness_members(Json_writer& w, const Region_motion& m) {
+  if (m.motion == Motion::sticks) {
+    write_support_forces(w.key("support_forces"), m.support_forces);
+    w.key("regions").array();
+    for (const Region_stick_block& b : m.stick_blocks) write_region_stick_block(w, b);
+  } else {
+    w.key("twist").rationals(*m.twist).key("speed_bounds").rationals(m.speed_bounds).key("regions").array();
+    for (const Region_slide_block& b : m.slide_blocks) write_region_slide_block(w, b);
+  }
+  w.end_array();
 }
 
 }  // namespace wrenchkit

@@ -111,9 +111,19 @@ struct Region_motion {
   std::optional<Vec3q> twist;       // slides: the twist of the certificate
   double gauge_estimate = 0;        // 1 / min{h(q) : q·p = 1}, in double (≥ 1 slides, < 1 sticks)
   std::string undecided_why;
+  // The witness the certificate is written from (format 1 here; format 2 writes it inside a witness object, §6.5):
+  std::vector<Vec2> support_forces;              // sticks: one per support point
+  std::vector<Region_stick_block> stick_blocks;  // sticks: one per region
+  std::vector<Rational> speed_bounds;            // slides: one per support point (at `twist`)
+  std::vector<Region_slide_block> slide_blocks;  // slides: one per region
 };
 constexpr std::size_t kMaxRegionCells = 20000;       // slide: the adaptive cells of every region together
 constexpr std::size_t kMaxRegionStickCells = 5000;   // stick: m² cells per coarse triangle, m = 1, 2, 4, …
 Region_motion decide_region_motion(const Support& s, const Vec3q& p);
+
+// The members of a region witness (format 2, certificate-format.md §6.5): "support_forces" and "regions" (stick
+// blocks) of a sticking Region_motion, or "twist", "speed_bounds" and "regions" (slide blocks) of a sliding one,
+// written into an open object.
+void write_region_witness_members(Json_writer& w, const Region_motion& m);
 
 }  // namespace wrenchkit

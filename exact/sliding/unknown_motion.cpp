@@ -148,12 +148,8 @@ bool flat(const Support& s, const std::vector<Rational>& f) {
   return true;
 }
 
-// A twist that may separate p from U = ∪_F LS(f) (all in double; the caller checks it exactly): slides for every
-// distribution iff q·p > h_U(q) = max_v h_{f_v}(q) for some q. On the plane q·p = 1 that is min max_v h_{f_v}(q) < 1,
-// a convex problem in two variables (minimise_on_load_plane, sliding.h), stopped as soon as h_U < 1. Nothing when
-// p = 0 or the doubles overflow.
 std::optional<Vec3q> union_search(const Support& s, const std::vector<std::vector<Rational>>& v, const Vec3q& p,
-                                  const Vec3q* start) {
+                                  const Vec3q* start, const std::function<double(const double*)>& common) {
   const std::size_t k = s.points.size();
   std::vector<double> x(k), y(k);
   std::vector<std::vector<double>> rho(v.size(), std::vector<double>(k));
@@ -170,7 +166,7 @@ std::optional<Vec3q> union_search(const Support& s, const std::vector<std::vecto
         if (r[i] != 0) h += r[i] * std::hypot(q[0] - q[2] * y[i], q[1] + q[2] * x[i]);
       best = std::max(best, h);
     }
-    return best;
+    return common ? best + common(q) : best;
   };
   const Plane_minimum m = minimise_on_load_plane(p, h_union, start, 1.0);
   if (!m.found || !(m.h < 1)) return std::nullopt;

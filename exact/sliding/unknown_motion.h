@@ -20,6 +20,7 @@
 //   4. else undecided (the load is within the resolution of U's boundary).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,6 +50,14 @@ std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a
 // Does q prove that p slides for every distribution of F (q ≠ 0 and q·p ≥ max_F Σ μ_i f_i u_i, u_i the rational
 // upper bounds of the speeds: p is nowhere inside a limit surface of F)? Exact.
 bool slides_for_every(const Support& s, const Admissible& a, const Vec3q& p, const Vec3q& q);
+
+// A twist that may separate p from U = ∪_F LS(f) (all in double; the caller checks it exactly): slides for every
+// distribution iff q·p > h_U(q) = max_v h_{f_v}(q) for some q (v the vertices of F). On the plane q·p = 1 that is
+// min max_v h_{f_v}(q) < 1, a convex problem in two variables (minimise_on_load_plane, sliding.h), stopped as soon as
+// h_U < 1. `common`, if given, adds a power every distribution shares (support regions' [RG-3]). Nothing when p = 0
+// or the doubles overflow.
+std::optional<Vec3q> union_search(const Support& s, const std::vector<std::vector<Rational>>& v, const Vec3q& p,
+                                  const Vec3q* start, const std::function<double(const double*)>& common = nullptr);
 
 enum class Motion_over { sticks, slides, depends, undecided };
 const char* motion_over_name(Motion_over m);

@@ -1722,7 +1722,7 @@ Witness read_witness(Reader& r, bool slide) {
       read_fixed(r, 3, "an array of three rationals [vx, vy, w]", [&](std::size_t k) { w.twist[k] = read_rational(r); });
     } else if (key == "speed_bounds" && slide) {
       w.speeds = read_rationals(r);
-    } else if (key == "regions") {  // allowed by property "hold" in format 2 only (checked with the scene)
+    } else if (key == "regions") {  // format 2 only (§6.5, §7.5: checked with the scene)
       if (r.peek() != Kind::array) r.fail("expected an array of region blocks (one per support region)");
       r.begin_array();
       while (r.next_item()) w.regions.push_back(read_block(r));
@@ -2565,8 +2565,14 @@ class Motion_check {
   void run() {
     const bool known = s_.unknown == 0;
     const bool regions = !s_.regions.empty();
-    if (regions && !known)
+    // Format 2 (§6.5): regions together with a force not given; each witness carries its own regions' blocks
+    // (sticks: every vertex witness's stick blocks; depends: the sticking one's stick blocks and the sliding one's
+    // slide blocks); "slides" keeps them at the top level, with the dual.
+    const bool per_witness = regions && !known;
+    if (per_witness && c_.version < 2)
       throw Failure{"motion: a support with regions and points whose force is not given has no certificate in format 1"};
+    for (const Witness* w : {&m_.sticking, &m_.sliding}) witness_regions(*w, per_witness);
+    for (const Witness& w : m_.vertices) witness_regions(w, per_witness);
     if (c_.claim == "depends" && known)
       throw Failure{"motion: \"depends\" needs a support with an unknown distribution (every force is given)"};
     std::set<std::string> allowed;
@@ -2574,34 +2580,50 @@ class Motion_check {
     if (c_.claim == "slides")
       allowed = known ? std::set<std::string>{"twist", "speed_bounds"} : std::set<std::string>{"twist", "speed_bounds", "dual"};
     if (c_.claim == "depends") allowed = {"sticking", "sliding"};
-    if (regions) allowed.insert("regions");
+    if (regions && (known || c_.claim == "slides")) allowed.insert("regions");
     const char* const keys[] = {"support_forces", "twist", "speed_bounds", "dual", "vertices", "sticking", "sliding",
                                 "regions"};
     for (const char* key : keys)
       if (!allowed.count(key) && c_.keys.count(key))
         throw Failure{std::string("key \"") + key + "\" is not allowed when \"motion\" is " + quote(c_.claim) +
-                      (std::string(key) == "regions" ? " and the support has no regions"
+                      (std::string(key) == "regions" ? (regions ? " at the top level (format 2: inside each witness)"
+                                                                : " and the support has no regions")
                        : known                       ? " and every support force is given"
                                                      : " and some support force is unknown")};
     for (const char* key : keys)
       if (allowed.count(key) && !c_.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
-    if (regions && m_.regions.size() != s_.regions.size())
+    const bool top = allowed.count("regions") > 0;  // the regions' blocks at the top level
+    if (top && m_.regions.size() != s_.regions.size())
       throw Failure{"regions: " + std::to_string(m_.regions.size()) + " blocks, but the support has " +
                     std::to_string(s_.regions.size()) + " regions"};
-    const std::vector<Block>* blocks = regions ? &m_.regions : nullptr;
+    const std::vector<Block>* blocks = top ? &m_.regions : nullptr;
     if (c_.claim == "sticks" && known) return stick(b_.given(), m_.support_forces, "support_forces", blocks);
     if (c_.claim == "slides" && known) return slide(b_.given(), twist_, m_.speed_bounds, "", nullptr, blocks);
-    if (c_.claim == "slides") return slide(b_.given(), twist_, m_.speed_bounds, "", m_.dual);
+    if (c_.claim == "slides") return slide(b_.given(), twist_, m_.speed_bounds, "", m_.dual, blocks);
     if (c_.claim == "depends") {
       b_.in_f(m_.sticking.distribution, m_.sticking.path + ".distribution");
-      stick(m_.sticking.distribution, m_.sticking.forces, m_.sticking.path + ".support_forces");
+      stick(m_.sticking.distribution, m_.sticking.forces, m_.sticking.path + ".support_forces", own_blocks(m_.sticking));
       b_.in_f(m_.sliding.distribution, m_.sliding.path + ".distribution");
-      return slide(m_.sliding.distribution, m_.sliding.twist, m_.sliding.speeds, m_.sliding.path + ".", nullptr);
+      return slide(m_.sliding.distribution, m_.sliding.twist, m_.sliding.speeds, m_.sliding.path + ".", nullptr,
+                   own_blocks(m_.sliding));
     }
     sticks_for_every();
   }
 
  private:
+  // A witness's own "regions" (format 2, §6.5): required, one block per region, where regions meet a force not
+  // given; an unknown key elsewhere.
+  void witness_regions(const Witness& w, bool required) const {
+    if (w.path.empty()) return;  // not present
+    if (!required && w.has_regions) throw Failure{w.path + ": unknown key \"regions\""};
+    if (!required) return;
+    if (!w.has_regions) throw Failure{w.path + ": missing required key \"regions\""};
+    if (w.regions.size() != s_.regions.size())
+      throw Failure{w.path + ".regions: " + std::to_string(w.regions.size()) + " blocks, but the support has " +
+                    std::to_string(s_.regions.size()) + " regions"};
+  }
+  static const std::vector<Block>* own_blocks(const Witness& w) { return w.has_regions ? &w.regions : nullptr; }
+
   // Sticks under f: the support forces strictly inside their discs (and the regions' cell forces, with `blocks`)
   // carry the load p exactly (SL-1, RG-1).
   void stick(const std::vector<Q>& f, const std::vector<Pair>& g, const std::string& path,
@@ -2632,7 +2654,7 @@ class Motion_check {
     std::vector<const std::vector<Q>*> distributions;
     for (const Witness& v : m_.vertices) {
       b_.in_f(v.distribution, v.path + ".distribution");
-      stick(v.distribution, v.forces, v.path + ".support_forces");
+      stick(v.distribution, v.forces, v.path + ".support_forces", own_blocks(v));
       distributions.push_back(&v.distribution);
     }
     b_.vertices_covered(distributions, "vertices");
@@ -2656,10 +2678,6 @@ void check_motion(const Certificate& c, const Scene& scene, const Limits& lim) {
       if (w->has_combination) throw Failure{w->path + ": unknown key \"combination\""};
     for (const Witness& w : c.motion_members->vertices)
       if (w.has_combination) throw Failure{w.path + ": unknown key \"combination\""};
-    for (const Witness* w : {&c.motion_members->sticking, &c.motion_members->sliding})
-      if (w->has_regions) throw Failure{w->path + ": unknown key \"regions\""};
-    for (const Witness& w : c.motion_members->vertices)
-      if (w.has_regions) throw Failure{w.path + ": unknown key \"regions\""};
   }
   if (!scene.support) throw Failure{"property: \"motion\" needs a scene with a support"};
   Motion_check(c, *scene.support, lim).run();

@@ -177,6 +177,9 @@ SCENES = {
                             "moves under every distribution", load={"wrench": [3, 0, 0]}),
     "mat_legs_twisted": dict(MAT_LEGS, name="mat and three legs of unknown force, twisted by the moment 1: depends on "
                              "the distribution", load={"wrench": [0, 0, 1]}),
+    # Stick / slide over the same support (section 6.5, format 2): the load is the certificate's.
+    "mat_legs": dict(MAT_LEGS, name="mat [-1/2,1/2]^2 (uniform, force 1) and legs (-2,0), (0,0), (2,0) without forces, "
+                     "W = 5 at the origin, mu = 1/2: F's vertices (0, 4, 0) and (2, 0, 2)"),
     "square_frame": {
         "wrenchkit": 1,
         "name": "the frame [-2,2]^2 minus [-1,1]^2, uniform, W = 1, mu = 1, written clockwise",
@@ -232,6 +235,11 @@ def hold2(claim, **rest):
     return dict({"wrenchkit_certificate": 2, "property": "hold", "holds": claim}, **rest)
 
 
+def motion2(claim, load, **rest):
+    """A sliding certificate in format 2 (section 6.5: regions together with forces not given)."""
+    return dict(motion(claim, load, **rest), wrenchkit_certificate=2)
+
+
 def hold_witness(distribution, combination, forces):
     return {"distribution": distribution, "combination": combination, "support_forces": forces}
 
@@ -263,6 +271,15 @@ MAT_HOLDING = dict(hold_witness(["2", "0", "2"], [], [["0", "1/4"], ["0", "0"], 
                    regions=[block(MAT_2, forces=[["0", "0"], ["0", "0"]])])
 MAT_FAILING = dict(slide_witness(["0", "4", "0"], ["0", "0", "1"], ["2", "0", "2"]),
                    regions=[block(MAT_4, speed_bounds=["0", "17/24", "17/24", "17/24", "17/24"])])
+# Motion over the mat and legs (section 6.5). (2, 0, 0) sticks at both vertices: the middle leg (7/4, 0) (disc 2) or the
+# outer legs (7/8, 0) each (discs 1), and the mat's two cells (1/8, 0) each (discs 1/4; their moments cancel).
+MAT_STICK_X = block(MAT_2, forces=[["1/8", "0"], ["1/8", "0"]])
+MAT_STICKS = [dict(stick_witness(["0", "4", "0"], [["0", "0"], ["7/4", "0"], ["0", "0"]]), regions=[MAT_STICK_X]),
+              dict(stick_witness(["2", "0", "2"], [["7/8", "0"], ["0", "0"], ["7/8", "0"]]), regions=[MAT_STICK_X])]
+# (0, 0, 1) sticks with (2, 0, 2): (0, -1/4) at (-2, 0) and (0, 1/4) at (2, 0) give the moment 1; slides with (0, 4, 0)
+# under the rotation about the middle leg (the mat resists at most 17/72).
+MAT_STICKING = dict(stick_witness(["2", "0", "2"], [["0", "-1/4"], ["0", "0"], ["0", "1/4"]]),
+                    regions=[block(MAT_2, forces=[["0", "0"], ["0", "0"]])])
 SQUARE_4 = ([[0, 0], [-1, -1], [1, -1], [1, 1], [-1, 1]], [[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 1]])
 SQUARE_STICKS = motion("sticks", [F(1, 2), 0, F(1, 4)], support_forces=[],
                        regions=[block(SQUARE_2, forces=[["7/16", "3/16"], ["1/16", "-3/16"]])])
@@ -596,6 +613,33 @@ CERTS = [
      hold("depends", holding=MAT_HOLDING, failing=MAT_FAILING)),
     ("mat_legs_twisted", "holding_outside_F", "invalid:F|holding.distribution: the forces sum to 6 with the regions' 1, not the weight 5",
      hold2("depends", holding=dict(MAT_HOLDING, distribution=["5/2", "0", "5/2"]), failing=MAT_FAILING)),
+    # motion over the mat and legs (section 6.5, format 2)
+    ("mat_legs", "motion_sticks_for_every", "valid", motion2("sticks", [2, 0, 0], vertices=MAT_STICKS)),
+    ("mat_legs", "motion_vertex_without_regions", 'invalid:keys|vertices[1]: missing required key "regions"',
+     motion2("sticks", [2, 0, 0], vertices=[MAT_STICKS[0], stick_witness(["2", "0", "2"], [["1", "0"], ["0", "0"], ["1", "0"]])])),
+    ("mat_legs", "motion_vertex_missing", "invalid:vertex|vertices: the vertex (2, 0, 2) of the admissible distributions has no witness",
+     motion2("sticks", [2, 0, 0], vertices=MAT_STICKS[:1])),
+    ("mat_legs", "motion_cell_on_its_circle", "invalid:stick|vertices[0].regions[0].forces[0]: |g|^2 = 1/16 is not less than (mu F)^2 = 1/16",
+     motion2("sticks", [2, 0, 0], vertices=[dict(MAT_STICKS[0], support_forces=[["0", "0"], ["3/2", "0"], ["0", "0"]],
+                                                 regions=[block(MAT_2, forces=[["1/4", "0"], ["1/4", "0"]])]), MAT_STICKS[1]])),
+    # (3, 0, 0) slides for every distribution: the translation (1, 0, 0), mu_i u_i = 1/2 <= y0 = 1/2, the legs resist at
+    # most y0 W' = 2 and the mat 1/2; (5/2, 0, 0) meets that bound exactly (on every limit surface: slides); (2, 0, 0) not.
+    ("mat_legs", "motion_slides_for_every", "valid",
+     motion2("slides", [3, 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1", "1"], dual=["1/2", "0", "0"], regions=[MAT_SLIDE_X])),
+    ("mat_legs", "motion_slides_on_the_boundary", "valid",
+     motion2("slides", [F(5, 2), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1", "1"], dual=["1/2", "0", "0"],
+             regions=[MAT_SLIDE_X])),
+    ("mat_legs", "motion_slides_below_the_bound", "invalid:power|twist: power q.p = 2 is less than the dual bound 5/2",
+     motion2("slides", [2, 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1", "1"], dual=["1/2", "0", "0"], regions=[MAT_SLIDE_X])),
+    ("mat_legs", "motion_slides_without_the_mat", 'invalid:keys|missing required key "regions"',
+     motion2("slides", [3, 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1", "1"], dual=["1/2", "0", "0"])),
+    ("mat_legs", "motion_depends", "valid", motion2("depends", [0, 0, 1], sticking=MAT_STICKING, sliding=MAT_FAILING)),
+    ("mat_legs", "motion_format_1", "invalid:regions unknown|motion: a support with regions and points whose force is not given has no certificate in format 1",
+     motion("depends", [0, 0, 1], sticking=MAT_STICKING, sliding=MAT_FAILING)),
+    ("mat_legs", "motion_regions_at_the_top", 'invalid:keys|key "regions" is not allowed when "motion" is "depends" at the top level',
+     motion2("depends", [0, 0, 1], sticking=MAT_STICKING, sliding=MAT_FAILING, regions=[block(MAT_2, forces=[["0", "0"], ["0", "0"]])])),
+    ("mat_legs", "motion_sliding_outside_F", "invalid:F|sliding.distribution: the forces sum to 6 with the regions' 1, not the weight 5",
+     motion2("depends", [0, 0, 1], sticking=MAT_STICKING, sliding=dict(MAT_FAILING, distribution=["0", "5", "0"]))),
     ("mat_legs_twisted", "regions_at_the_top", 'invalid:keys|key "regions" is not allowed when "holds" is "depends" at the top level',
      hold2("depends", holding=MAT_HOLDING, failing=MAT_FAILING, regions=[block(MAT_2, forces=[["0", "0"], ["0", "0"]])])),
     ("barbell_known", "blocks_without_regions", 'invalid:keys|key "regions" is not allowed when "motion" is "sticks" and the support has no regions',
@@ -806,25 +850,45 @@ def verify_motion(scene, cert):
     claim = cert["motion"]
     if claim == "depends" and known:
         return "depends known"
-    if regions and not known:
+    per_witness = bool(regions) and not known  # format 2 (section 6.5): each witness carries its regions' blocks
+    if per_witness and cert["wrenchkit_certificate"] != 2:
         return "regions unknown"
+    top = bool(regions) and (known or claim == "slides")
     if set(cert) != {"wrenchkit_certificate", "property", "load", "motion"} | MOTION_KEYS[(claim, known)] | (
-            {"regions"} if regions else set()):
+            {"regions"} if top else set()):
         return "keys"
-    if regions and len(cert["regions"]) != len(regions):
+    if top and len(cert["regions"]) != len(regions):
         return "keys"
+    for w in ([cert["sticking"], cert["sliding"]] if claim == "depends" else cert.get("vertices", [])):
+        if ("regions" in w) != per_witness or (per_witness and len(w["regions"]) != len(regions)):
+            return "keys"
+        for reg, blk in zip(regions, w.get("regions", ())):
+            if not tiles(reg, *cells_of(blk)):
+                return "tiling"
     p = [rational(v) for v in cert["load"]]
     given = [f or F(0) for *_, f in pts]
+    fixed = (sum(r["W"] for r in regions), [sum(r["M"][k] for r in regions) for k in range(2)])  # a known pressure
     if known:
-        W, c = sum(given) + sum(r["W"] for r in regions), None
+        W, c = sum(given) + fixed[0], None
     else:
         W = number(sup["weight"])
         c = [number(v) for v in sup.get("pressure_center", scene.get("body", {}).get("com"))]
 
     def in_F(f):
         return (len(f) == len(pts) and all(v >= 0 for v in f)
-                and all(q[3] is None or q[3] == v for q, v in zip(pts, f)) and sum(f) == W
-                and all(sum(v * q[k] for v, q in zip(f, pts)) == W * c[k] for k in range(2)))
+                and all(q[3] is None or q[3] == v for q, v in zip(pts, f)) and sum(f) + fixed[0] == W
+                and all(sum(v * q[k] for v, q in zip(f, pts)) + fixed[1][k] == W * c[k] for k in range(2)))
+
+    def region_bound(q, blocks):  # sum_R mu_R sum_cells sum_j w_j u_j, or a reason
+        bound = 0
+        for reg, blk in zip(regions, blocks):
+            if not tiles(reg, *cells_of(blk)):
+                return "tiling"
+            b = slide_block_bound(reg, blk, q)
+            if b is None:
+                return "speed"
+            bound += b
+        return bound
 
     def sticks(f, g, blocks=()):  # p in the interior of LS(f): strictly inside the discs, friction at two points
         g = [[rational(a) for a in gi] for gi in g]
@@ -867,35 +931,34 @@ def verify_motion(scene, cert):
         q, u = [rational(v) for v in cert["twist"]], [rational(v) for v in cert["speed_bounds"]]
         if speeds(q, u):
             return speeds(q, u)
+        rb = region_bound(q, cert.get("regions", ()))  # mu sum_cells sum_j w_j u_j per region
+        if isinstance(rb, str):
+            return rb
         if known:
-            bound = sum(qq[2] * f * v for qq, f, v in zip(pts, given, u))
-            for reg, blk in zip(regions, cert.get("regions", ())):  # mu sum_cells sum_j w_j u_j
-                if not tiles(reg, *cells_of(blk)):
-                    return "tiling"
-                b = slide_block_bound(reg, blk, q)
-                if b is None:
-                    return "speed"
-                bound += b
+            bound = sum(qq[2] * f * v for qq, f, v in zip(pts, given, u)) + rb
             return None if power(q) >= bound else "power"
         y = [rational(v) for v in cert["dual"]]
         if any(q_[3] is None and q_[2] * v > y[0] + y[1] * q_[0] + y[2] * q_[1] for q_, v in zip(pts, u)):
             return "dual"
-        rest_w = W - sum(given)
-        rest_m = [W * c[k] - sum(f * q_[k] for f, q_ in zip(given, pts)) for k in range(2)]
+        rest_w = W - sum(given) - fixed[0]
+        rest_m = [W * c[k] - sum(f * q_[k] for f, q_ in zip(given, pts)) - fixed[1][k] for k in range(2)]
         bound = (sum(q_[2] * f * v for q_, f, v in zip(pts, given, u) if q_[3] is not None)
-                 + y[0] * rest_w + y[1] * rest_m[0] + y[2] * rest_m[1])
+                 + y[0] * rest_w + y[1] * rest_m[0] + y[2] * rest_m[1] + rb)
         return None if power(q) >= bound else "power"
     if claim == "depends":
         st, sl = cert["sticking"], cert["sliding"]
         f1, f2 = [rational(v) for v in st["distribution"]], [rational(v) for v in sl["distribution"]]
         if not in_F(f1) or not in_F(f2):
             return "F"
-        if not sticks(f1, st["support_forces"]):
+        if not sticks(f1, st["support_forces"], st.get("regions", ())):
             return "stick"
         q, u = [rational(v) for v in sl["twist"]], [rational(v) for v in sl["speed_bounds"]]
         if speeds(q, u):
             return speeds(q, u)
-        return None if power(q) >= sum(qq[2] * f * v for qq, f, v in zip(pts, f2, u)) else "power"
+        rb = region_bound(q, sl.get("regions", ()))
+        if isinstance(rb, str):
+            return rb
+        return None if power(q) >= sum(qq[2] * f * v for qq, f, v in zip(pts, f2, u)) + rb else "power"
     # sticks for every distribution: every witness in F and sticking, every vertex of F witnessed.
     # Vertices by brute force: every set S of at most three unknown points whose columns (1, x, y) are
     # independent and give a strictly positive solution of the three rows.
@@ -904,10 +967,10 @@ def verify_motion(scene, cert):
         f = [rational(v) for v in w["distribution"]]
         if not in_F(f):
             return "F"
-        if not sticks(f, w["support_forces"]):
+        if not sticks(f, w["support_forces"], w.get("regions", ())):
             return "stick"
         wit.append(f)
-    return None if all(f in wit for f in vertices_of_F(pts, given, W, c)) else "vertex"
+    return None if all(f in wit for f in vertices_of_F(pts, given, W, c, regions)) else "vertex"
 
 
 def verify_hold(scene, cert):
@@ -1049,8 +1112,7 @@ def verify(scene, cert):
                "holding", "failing", "regions"}
     if keys - allowed:
         return "unknown key"
-    if (cert.get("wrenchkit_certificate") == 1 and cert.get("property") == "motion") or (
-            cert.get("wrenchkit_certificate") in (1, 2) and cert.get("property") == "hold"):
+    if cert.get("wrenchkit_certificate") in (1, 2) and cert.get("property") in ("motion", "hold"):
         try:
             return (verify_motion if cert["property"] == "motion" else verify_hold)(scene, cert)
         except (ValueError, KeyError, TypeError) as e:

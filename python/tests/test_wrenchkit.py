@@ -420,3 +420,26 @@ def test_support_regions_power_motion_and_bad_regions():
                                              "force": 1}]}}
     with pytest.raises(wrenchkit.InputError, match=r"support\.regions\[0\]\.outline: is not a simple polygon"):
         wrenchkit.Scene(bad)
+
+
+MAT_LEGS = {"support": {"mu": "1/2", "weight": 5, "pressure_center": [0, 0],
+                        "points": [{"at": [-2, 0]}, {"at": [0, 0]}, {"at": [2, 0]}],
+                        "regions": [{"outline": [["-1/2", "-1/2"], ["1/2", "-1/2"], ["1/2", "1/2"], ["-1/2", "1/2"]],
+                                     "pressure": "uniform", "force": 1}]}}
+
+
+def test_regions_with_forces_not_given():
+    # [RG-3] The mat and legs (proofs/examples/mat_legs.*): F's vertices (0, 4, 0) and (2, 0, 2).
+    import math
+    for load, motion in (((2, 0, 0), "sticks"), ((3, 0, 0), "slides"), ((0, 0, 1), "depends")):
+        r = wrenchkit.limit_surface(MAT_LEGS, load=load)
+        assert r["distribution"] == "unknown" and r["motion"] == motion
+        assert r["extreme_distributions"] == [(0, 4, 0), (2, 0, 2)]
+        assert r["regions"][0]["force"] == 1
+        assert '"wrenchkit_certificate": 2' in r["certificate_json"]
+        assert wrenchkit.check(MAT_LEGS, r["certificate_json"])["accepted"]
+    s = wrenchkit.sliding(MAT_LEGS, twist=(0, 0, 1))
+    mat = (math.sqrt(2) + math.asinh(1)) / 12
+    lo, hi = s["regions_power_bracket"]
+    assert lo <= mat * (1 + 1e-12) and mat * (1 - 1e-12) <= hi
+    assert abs(float(s["power"][0] - lo)) < 1e-15 and abs(float(s["power"][1] - hi) - 4) < 1e-15
