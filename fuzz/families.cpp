@@ -174,9 +174,13 @@ bool naive_region_slides(const Case& c) {
   const Support& s = *scene.support;
   const auto h = [&](const double* q) {
     double v = 0;
-    for (const Support_point& p : s.points)
-      v += (p.mu ? *p.mu : *s.mu).get_d() * p.force->get_d() *
-           std::hypot(q[0] - q[2] * p.at.y.get_d(), q[1] + q[2] * p.at.x.get_d());
+    if (!c.support.empty()) {  // forces not given: the naive even split (stress::Family_scene::support)
+      for (const stress::Support_spec& x : c.support) v += x.mu * x.force * std::hypot(q[0] - q[2] * x.y, q[1] + q[2] * x.x);
+    } else {
+      for (const Support_point& p : s.points)
+        v += (p.mu ? *p.mu : *s.mu).get_d() * p.force->get_d() *
+             std::hypot(q[0] - q[2] * p.at.y.get_d(), q[1] + q[2] * p.at.x.get_d());
+    }
     for (const Support_region& r : s.regions) v += region_mu(s, r).get_d() * region_power_double(r, q);
     return v;
   };

@@ -89,8 +89,9 @@ Verdict decide_motion(const Case& c, const Scene& scene, Mode mode, int sides);
 // (the centres of an 8×8 grid on each face of the twist cube, then a compass search from the best one,
 // steps halved down to 2^-60); slides iff some f(q) ≤ 0. A guess; for measurements only.
 bool naive_slides(const Case& c);
-// The naive stick/slide of a stick_slide_region case: the double closed form of the regions' power minimised on
-// the plane q·p = 1 without bounds; slides iff the minimum is at most 1. A guess; for measurements only.
+// The naive stick/slide of a case with regions: the double closed form of the regions' power minimised on the plane
+// q·p = 1 without bounds (points whose force is not given at the naive even split); slides iff the minimum is at
+// most 1. A guess; for measurements only.
 bool naive_region_slides(const Case& c);
 
 // The combinatorics of a labeling: shapes and vertex/direction counts of R+, R−, the ± set and R∞.

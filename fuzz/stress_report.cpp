@@ -99,7 +99,7 @@ long cases_for(const Family& f, long cases) {
   if (n == "collinear_support") return std::max(1L, cases / 20);
   if (n == "unknown_support") return std::max(1L, cases / 20);
   if (n == "fixture_pin") return std::max(1L, cases / 10);
-  if (n == "region_support") return std::max(1L, cases / 20);
+  if (n == "region_support" || n == "region_legs") return std::max(1L, cases / 20);
   return cases;
 }
 
@@ -194,7 +194,9 @@ void run_motion_case(const families::Case& k, std::uint64_t seed, long index, Ro
       timed(row.t_twin, [&] { return families::decide_motion(k, scene, Mode::float_only, kSides); });
   families::Verdict hybrid =
       timed(row.t_hybrid, [&] { return families::decide_motion(k, scene, Mode::hybrid, kSides); });
-  const bool naive = timed(row.t_naive, [&] { return families::naive_slides(k); });
+  const bool naive = timed(row.t_naive, [&] {
+    return scene.support->regions.empty() ? families::naive_slides(k) : families::naive_region_slides(k);
+  });
   if (twin.decided && fault("twin")) twin.holds = !twin.holds;
   if (hybrid.decided && fault("hybrid")) hybrid.holds = !hybrid.holds;
   if (exact.decided && fault("exact")) exact.holds = !exact.holds;
@@ -240,7 +242,9 @@ void run_motion_over_case(const families::Case& k, std::uint64_t seed, long inde
   Motion_over exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });
   Motion_over twin = timed(row.t_twin, [&] { return answer_in(Mode::float_only, why_twin); });
   Motion_over hybrid = timed(row.t_hybrid, [&] { return answer_in(Mode::hybrid, why_hybrid); });
-  const bool naive = timed(row.t_naive, [&] { return families::naive_slides(k); });
+  const bool naive = timed(row.t_naive, [&] {
+    return scene.support->regions.empty() ? families::naive_slides(k) : families::naive_region_slides(k);
+  });
   const auto bit = [](Motion_over m) {
     return m == Motion_over::sticks ? stress::answer_sticks : m == Motion_over::slides ? stress::answer_slides
                                                                                          : stress::answer_depends;
@@ -554,7 +558,7 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << cases_for(*families::find("unknown_support"), cases)
      << " for unknown_support (each decides every extreme distribution, with certificates, in three modes) and "
      << cases_for(*families::find("region_support"), cases)
-     << " for region_support (certificates over cells of the region, in three modes).\n\n"
+     << " for region_support and region_legs (certificates over cells of the region, in three modes).\n\n"
      << "* **naive**: what tolerance-free float code does with the same text: the numbers read by strtod (a fraction\n"
      << "  p/q as strtod(p)/strtod(q)), raw double signs in the same algorithms (fl::Naive_kernel through\n"
      << "  core/dual_cone.h for closure and equilibrium, fl::moment_labels_naive for labels). For stick/slide, naive\n"
@@ -616,6 +620,10 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << "  (the translation along the load's force gives an exact slide bound), the ones below down to about 10^-10\n"
      << "  (the stick witness is found in double, then made exact); the float twin has no model of regions and always\n"
      << "  abstains. The naive double search (no bounds) is wrong from about 10^-15.\n"
+     << "* **Regions with legs whose force is not given** (region_legs): every admissible distribution has the same\n"
+     << "  translation boundary load, so the truth is sticks for every one or slides for every one; hybrid and exact\n"
+     << "  decide each extreme distribution over the region's cells and answer with a format-2 certificate\n"
+     << "  (proofs/certificate-format.md §6.5) or say undecided. Naive code takes the even split of the legs' weight.\n"
      << "\n| family | what |\n|---|---|\n";
   for (const Family& f : fams) {
     std::string what = f.what;  // a table cell: escape the bars of |x|
@@ -655,6 +663,9 @@ std::string report_markdown(const std::vector<Row>& rows, const std::vector<Fami
      << "  h(q) = μf0 exactly and its load p* = μf0 (v̂, c_f × v̂) (c_f the friction centroid) is ∂h(q), on the limit\n"
      << "  surface. Below, p*·(1 − 10^-k) is inside (0 is interior, the set convex): sticks; above, q·p = (1 + 10^-k) μf0 >\n"
      << "  h(q): slides.\n"
+     << "* region_legs: the same translation moves every point at speed 1 whatever the distribution, so every f ∈ F has\n"
+     << "  h_f(q) = μW and the friction centroid c (Σ f_i r_i + Σ_R M_R = W c on F): p* is on every limit surface of F.\n"
+     << "  Above: q proves slides for every distribution; below: (1 − 10^-k)p* is inside each: sticks for every one.\n"
      << "* Labels: nothing is labeled ⇔ force closure (theory.md §5.5), and a load is balanced ⇔ −w ∈ W, read on the\n"
      << "  exact labels' cone; both are compared with the (cross-checked) truth of the verdict.\n\n"
      << "## Totals of this run\n\n"

@@ -489,8 +489,16 @@ Family_scene collinear_support(const Family& f, double eps, Rng& r) {
 // limit surface (p* = ∂h(v̂), and the region makes the surface strictly convex). The load is p*(1 ± ε): above,
 // q = (v̂, 0) has q·p = (1 + ε) μf0 > h(q) = μf0: it slides; below, (1 − ε)p* is inside (0 is interior and the
 // set convex): it sticks. Known by construction for every ε; the naive guess searches h in double.
+//
+// Family "region_legs" (regions with points whose force is not given, RG-3): the same region with 1–3 legs whose
+// forces are not given, `weight` W and `pressure_center` c those of one admissible distribution (random forces
+// 1–4 placed the centre), one μ for all. A translation moves every point at speed |v̂| = 1, so every admissible
+// distribution f has h_f(v̂, 0) = μW and the same friction centroid c (Σ f_i r_i + Σ_R M_R = W c for all of F): p*
+// is on every limit surface of F at once. Above, (v̂, 0) proves it slides for every distribution (the LP over F is
+// constant); below, (1 − ε)p* is inside every LS(f): sticks for every one. Known by construction for every ε.
 Family_scene region_support(const Family& fam, double eps, Rng& r) {
   const int k = decimal_exponent(eps);
+  const bool legs = std::string(fam.name) == "region_legs";
   for (;;) {
     Family_scene out;
     out.family = fam.name;
@@ -511,38 +519,79 @@ Family_scene region_support(const Family& fam, double eps, Rng& r) {
     Rational gx = 0, gy = 0;
     for (const auto& [x, y] : poly) gx += x, gy += y;
     gx /= static_cast<long>(poly.size()), gy /= static_cast<long>(poly.size());
-    Json_writer w(1024);
-    w.object().member("wrenchkit", 1).member("name", "region_support").key("support").object();
     static const char* mus[] = {"1/2", "1", "1/3", "3/4"};
-    w.key("mu").raw(json::quote(mus[r.integer(0, 3)]));
-    if (r.integer(0, 2) == 0) {
-      w.key("points").array().object().key("at").array();
-      w.raw(exact_text(short_decimal(r, -3000, 3000, 3))).raw(exact_text(short_decimal(r, -3000, 3000, 3)));
-      w.end_array().key("force").raw(exact_text(Rational(r.integer(1, 4)))).end_object().end_array();
-    }
-    w.key("regions").array().object().key("outline").array();
-    for (const auto& [x, y] : poly) w.array().raw(exact_text(x)).raw(exact_text(y)).end_array();
-    w.end_array();
-    if (r.coin()) {
-      w.key("holes").array().array();
-      for (std::size_t i = 0; i < 3; ++i) {
-        const auto& [x, y] = poly[i];
-        w.array().raw(exact_text(gx + (x - gx) / 4)).raw(exact_text(gy + (y - gy) / 4)).end_array();
+    const char* mu = mus[r.integer(0, 3)];
+    struct Point {
+      Rational x, y, force;
+    };
+    std::vector<Point> points;  // region_support: at most one, its force given; region_legs: 1–3 legs
+    if (legs) {
+      const int n = r.integer(1, 3);
+      for (int i = 0; i < n; ++i) {
+        const Rational x = short_decimal(r, -3000, 3000, 3), y = short_decimal(r, -3000, 3000, 3);
+        points.push_back({x, y, Rational(r.integer(1, 4))});
       }
-      w.end_array().end_array();
+    } else if (r.integer(0, 2) == 0) {
+      const Rational x = short_decimal(r, -3000, 3000, 3), y = short_decimal(r, -3000, 3000, 3);
+      points.push_back({x, y, Rational(r.integer(1, 4))});
     }
-    if (r.coin()) {
-      w.member("pressure", "uniform").key("force").raw(exact_text(short_decimal(r, 100, 5000, 3)));
+    const bool hole = r.coin(), uniform = r.coin();
+    Rational force, c0, c1, c2;
+    if (uniform) {
+      force = short_decimal(r, 100, 5000, 3);
     } else {  // p = c0 + c1 x + c2 y, positive on the outline (|x|, |y| ≤ 5)
-      const Rational c1 = short_decimal(r, -1000, 1000, 3), c2 = short_decimal(r, -1000, 1000, 3);
-      const Rational c0 = 5 * (abs(c1) + abs(c2)) + short_decimal(r, 100, 2000, 3);
-      w.key("pressure").object().key("linear").array().raw(exact_text(c0)).raw(exact_text(c1)).raw(exact_text(c2));
-      w.end_array().end_object();
+      c1 = short_decimal(r, -1000, 1000, 3), c2 = short_decimal(r, -1000, 1000, 3);
+      c0 = 5 * (abs(c1) + abs(c2)) + short_decimal(r, 100, 2000, 3);
     }
-    w.end_object().end_array().end_object().end_object();
-    out.text = w.take();
-    const Scene scene = read_scene(out.text, Input_limits{}, "region_support");
+    // The scene's text: the points' forces given, or (region_legs) not given, with the weight and the centre.
+    const auto write = [&](const Rational* weight, const Vec2* center) {
+      Json_writer w(1024);
+      w.object().member("wrenchkit", 1).member("name", fam.name).key("support").object();
+      w.key("mu").raw(json::quote(mu));
+      if (weight) w.key("weight").raw(exact_text(*weight));
+      if (center) w.key("pressure_center").array().raw(exact_text(center->x)).raw(exact_text(center->y)).end_array();
+      if (!points.empty()) {
+        w.key("points").array();
+        for (const Point& pt : points) {
+          w.object().key("at").array().raw(exact_text(pt.x)).raw(exact_text(pt.y)).end_array();
+          if (!weight) w.key("force").raw(exact_text(pt.force));
+          w.end_object();
+        }
+        w.end_array();
+      }
+      w.key("regions").array().object().key("outline").array();
+      for (const auto& [x, y] : poly) w.array().raw(exact_text(x)).raw(exact_text(y)).end_array();
+      w.end_array();
+      if (hole) {
+        w.key("holes").array().array();
+        for (std::size_t i = 0; i < 3; ++i) {
+          const auto& [x, y] = poly[i];
+          w.array().raw(exact_text(gx + (x - gx) / 4)).raw(exact_text(gy + (y - gy) / 4)).end_array();
+        }
+        w.end_array().end_array();
+      }
+      if (uniform) {
+        w.member("pressure", "uniform").key("force").raw(exact_text(force));
+      } else {
+        w.key("pressure").object().key("linear").array().raw(exact_text(c0)).raw(exact_text(c1)).raw(exact_text(c2));
+        w.end_array().end_object();
+      }
+      w.end_object().end_array().end_object().end_object();
+      return w.take();
+    };
+    out.text = write(nullptr, nullptr);
+    const Scene scene = read_scene(out.text, Input_limits{}, fam.name);
     const Region_sliding st = region_sliding(*scene.support, std::nullopt, 1);
+    if (legs) {
+      // The legs' forces dropped: W and c are every admissible distribution's; the naive reading splits the rest.
+      out.text = write(&st.total_force, &st.center_of_pressure);
+      Rational legs_force = 0;
+      for (const Point& pt : points) legs_force += pt.force;
+      const double split = Rational(legs_force / static_cast<long>(points.size())).get_d();
+      const double mu_d = Rational(mu).get_d();
+      for (const Point& pt : points) out.support.push_back({pt.x.get_d(), pt.y.get_d(), split, mu_d});
+      out.allowed = out.above ? answer_slides : answer_sticks;
+    }
     static const int triples[][3] = {{3, 4, 5}, {5, 12, 13}, {8, 15, 17}, {7, 24, 25}, {1, 0, 1}, {0, 1, 1}};
     const auto& t = triples[r.integer(0, 5)];
     Rational vx(t[0], t[2]), vy(t[1], t[2]);
@@ -862,6 +911,11 @@ const std::vector<Family>& report_only_families() {
        "a support region (rectangle or triangle, maybe a hole, uniform or linear pressure, maybe a point); load "
        "p*·(1 ± ε) with p* the exact boundary load of a translation along a Pythagorean direction: slides iff above",
        Question::stick_slide_region, true, true},
+      {"region_legs",
+       "a support region as region_support with 1–3 legs whose forces are not given (weight and centre of one "
+       "admissible distribution); load p*·(1 ± ε), p* the translation's boundary load, the same for every admissible "
+       "distribution: slides for every one iff above, else sticks for every one",
+       Question::stick_slide_over, true, true},
   };
   return f;
 }
@@ -964,7 +1018,7 @@ Family_scene make_scene(const Family& family, double epsilon, Rng& rng) {
   if (name == "collinear_support") return collinear_support(family, epsilon, rng);
   if (name == "unknown_support") return unknown_support(family, epsilon, rng);
   if (name == "fixture_pin") return fixture_pin(family, epsilon, rng);
-  if (name == "region_support") return region_support(family, epsilon, rng);
+  if (name == "region_support" || name == "region_legs") return region_support(family, epsilon, rng);
   if (name == "long_rational" || name == "rational_rotation" || name == "huge_scale" || name == "tiny_scale" ||
       name == "beyond_double" || name == "many_contacts")
     return exact_family(family, epsilon, rng);

@@ -117,6 +117,39 @@ TEST(StressFamilies, FixturePinHoldsIffBelow) {
   EXPECT_EQ(sides.size(), 2u);
 }
 
+// region_legs (regions with legs whose force is not given, RG-3): every admissible distribution has the same
+// translation boundary load, so the answer is sticks for every one below and slides for every one above —
+// through the pipeline (format-2 certificates, checked there and here) in hybrid and exact; and each extreme
+// distribution alone (the known-forces region decision) lands on the same side, as the construction says.
+TEST(StressFamilies, RegionLegsStickOrSlideForEveryDistributionBySide) {
+  std::set<bool> sides;
+  for (double eps : {1e-2, 1e-6})
+    for (int seed = 1; seed <= 6; ++seed) {
+      const auto s = stress::make_scene("region_legs", eps, static_cast<std::uint64_t>(seed));
+      ASSERT_TRUE(s.known);
+      sides.insert(s.above);
+      const families::Case k = families::make_case(*families::find("region_legs"), eps, static_cast<std::uint64_t>(seed));
+      ASSERT_EQ(k.text, s.text);
+      Support_query q;
+      q.question = Support_question::limit_surface;
+      q.load = k.motion_load;
+      q.polytopes = false;
+      for (const Mode m : {Mode::hybrid, Mode::exact}) {
+        Request r;
+        r.mode = m;
+        const Support_item item = answer_support(s.text, "region_legs", r, q);
+        ASSERT_EQ(item.status, Status::answered) << item.message << test::dump_failure(s.text, "region_legs");
+        ASSERT_TRUE(item.motion_over.has_value());
+        EXPECT_EQ(item.motion_over->motion, s.above ? Motion_over::slides : Motion_over::sticks)
+            << eps << " " << mode_name(m) << " " << item.motion_over->undecided_why << test::dump_failure(s.text, "region_legs");
+        EXPECT_TRUE(test::checker_accepts(s.text, item.certificate)) << test::dump_failure(s.text, "region_legs");
+        for (const Motion v : item.motion_over->per_vertex)
+          EXPECT_EQ(v, s.above ? Motion::slides : Motion::sticks) << test::dump_failure(s.text, "region_legs");
+      }
+    }
+  EXPECT_EQ(sides.size(), 2u);
+}
+
 // The exact families: the answer is the side for EVERY ε, through the dual cone and through the O(k³)
 // brute force (which shares no code with it).
 TEST(StressFamilies, KnownFamiliesLandOnTheirSideForEveryEpsilon) {
