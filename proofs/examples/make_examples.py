@@ -838,6 +838,18 @@ def slide_block_bound(reg, blk, q):
     return bound
 
 
+def witness_blocks(witnesses, regions, per_witness):
+    """Format 2 (sections 6.5 and 7.5): each witness carries one block per region exactly when per_witness, and
+    each block's cells tile its region. The reason it fails ("keys", "tiling"), or None."""
+    for w in witnesses:
+        if ("regions" in w) != per_witness or (per_witness and len(w["regions"]) != len(regions)):
+            return "keys"
+        for reg, blk in zip(regions, w.get("regions", ())):
+            if not tiles(reg, *cells_of(blk)):
+                return "tiling"
+    return None
+
+
 def verify_motion(scene, cert):
     """verify() for property "motion": None if valid, else a short reason."""
     sup = scene.get("support")
@@ -859,12 +871,10 @@ def verify_motion(scene, cert):
         return "keys"
     if top and len(cert["regions"]) != len(regions):
         return "keys"
-    for w in ([cert["sticking"], cert["sliding"]] if claim == "depends" else cert.get("vertices", [])):
-        if ("regions" in w) != per_witness or (per_witness and len(w["regions"]) != len(regions)):
-            return "keys"
-        for reg, blk in zip(regions, w.get("regions", ())):
-            if not tiles(reg, *cells_of(blk)):
-                return "tiling"
+    bad = witness_blocks([cert["sticking"], cert["sliding"]] if claim == "depends" else cert.get("vertices", []),
+                         regions, per_witness)
+    if bad:
+        return bad
     p = [rational(v) for v in cert["load"]]
     given = [f or F(0) for *_, f in pts]
     fixed = (sum(r["W"] for r in regions), [sum(r["M"][k] for r in regions) for k in range(2)])  # a known pressure
@@ -994,12 +1004,10 @@ def verify_hold(scene, cert):
         return "regions unknown"
     top = regions and (known or claim is False)
     base = {"wrenchkit_certificate", "property", "holds"} | ({"regions"} if top else set())
-    for w in ([cert["holding"], cert["failing"]] if claim == "depends" else cert.get("vertices", [])):
-        if ("regions" in w) != per_witness or (per_witness and len(w["regions"]) != len(regions)):
-            return "keys"
-        for reg, blk in zip(regions, w.get("regions", ())):
-            if not tiles(reg, *cells_of(blk)):
-                return "tiling"
+    bad = witness_blocks([cert["holding"], cert["failing"]] if claim == "depends" else cert.get("vertices", []),
+                         regions, per_witness)
+    if bad:
+        return bad
     if claim is True:
         want = ({"combination"} | ({"support_forces"} if sup else set())) if known else {"vertices"}
     elif claim is False:
