@@ -81,7 +81,7 @@ Prepared prepare(const std::string& text, fam::Question q) {
   if (q != fam::Question::equilibrium) {
     const Reading r = q == fam::Question::force_closure ? Reading::friction : Reading::frictionless;
     for (const fl::Bounded3& g : fl::generators(to_bounded(p.scene), r)) p.wd.push_back({g[0].v, g[1].v, g[2].v});
-    for (const Generator& g : generators(p.scene, r)) p.wq.push_back({g.w.fx, g.w.fy, g.w.m});
+    for (const Generator& g : generators(p.scene, r)) p.wq.push_back({g.w[0], g.w[1], g.w[2]});
   }
   return p;
 }

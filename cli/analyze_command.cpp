@@ -60,7 +60,7 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
               std::to_string(out.facets.size()) + " facets; centre of friction (" + to_string(cof.x) + ", " +
               to_string(cof.y) + ") — 'wrenchkit limit-surface' for any N, tolerances and queries\n";
     if (scene.load && scene.load->kind != Load::Kind::gravity) {
-      const Vec3q p = as_vec(load_wrench(scene));
+      const Vec3q p = load_wrench(scene);
       const Motion_decision m = decide_motion(model, p, o.mode, &in, &out);
       j.key("load_motion").object().key("load").rationals(p);
       j.member("motion", motion_name(m.motion)).member("decided_by", m.decided_by).end_object();
@@ -84,7 +84,7 @@ std::optional<Ls_summary> region_summary(const Options& o, const Scene& scene, c
                                          const std::string& source, std::string& why) {
   Support_query q;
   const bool load = scene.load && scene.load->kind != Load::Kind::gravity;
-  if (load) q.load = as_vec(load_wrench(scene));
+  if (load) q.load = load_wrench(scene);
   const Support_item r = answer_support(scene, text, source, request_of(o), q);
   if (r.status != Status::answered) {
     why = r.message;

@@ -11,16 +11,16 @@
 namespace wrenchkit::cli {
 
 void write_equilibrium(Json_writer& w, const Options& o, const Equilibrium_item& r, const char* command) {
-  const Wrench& l = r.answer.load;
+  const Vec3q& l = r.answer.load;
   w.member("command", command).member("name", r.name).member("mode", mode_name(o.mode));
   w.member("decided_by", r.answer.decided_by()).member("balanced", r.answer.balanced);
-  w.key("load").array().rational(l.fx).rational(l.fy).rational(l.m).end_array();
+  w.key("load").array().rational(l[0]).rational(l[1]).rational(l[2]).end_array();
   w.member("generators", r.answer.generators).member("certificate_checked", true).key("certificate").raw(r.certificate);
 }
 
 std::string equilibrium_human(const Equilibrium_item& r) {
   const Equilibrium_answer& a = r.answer;
-  const std::array<Rational, 3> load = {a.load.fx, a.load.fy, a.load.m};
+  const std::array<Rational, 3> load = {a.load[0], a.load[1], a.load[2]};
   std::ostringstream s;
   s << "load: the wrench " << vec_text(load) << " (force, moment about the origin)\n"
     << "balanced: " << (a.balanced ? "yes" : "no") << "\n    certificate: ";

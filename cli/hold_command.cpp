@@ -41,7 +41,7 @@ void write_hold(Json_writer& w, const Hold_item& r) {
   if (a.verdict == Hold_verdict::holds || a.verdict == Hold_verdict::fails) w.boolean(a.verdict == Hold_verdict::holds);
   else w.string(hold_word(a.verdict));
   w.member("decided_by", a.decided_by);
-  w.key("load").array().rational(a.load.fx).rational(a.load.fy).rational(a.load.m).end_array();
+  w.key("load").array().rational(a.load[0]).rational(a.load[1]).rational(a.load[2]).end_array();
   w.member("generators", a.generators).member("support", support_kind(a));
   if (a.rounds) w.member("lp_rounds", a.rounds);
   if (a.has_support && !r.scene.support->regions.empty())
@@ -97,7 +97,7 @@ std::string forces_text(const Hold_witness& h, bool support) {
 std::string hold_human(const Hold_item& r) {
   const Hold_answer& a = r.answer;
   std::ostringstream s;
-  s << "load: the wrench " << vec_text({a.load.fx, a.load.fy, a.load.m}) << " on the body (force, moment about the origin)\n"
+  s << "load: the wrench " << vec_text({a.load[0], a.load[1], a.load[2]}) << " on the body (force, moment about the origin)\n"
     << "contacts: " << a.generators << " friction generator(s); support: ";
   if (!a.has_support) s << "none (hold is equilibrium)";
   else if (!a.unknown) {

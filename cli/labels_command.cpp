@@ -189,7 +189,7 @@ void write_dual_answer(Json_writer& w, const Labels_item& s) {
     w.null();
   }
   if (s.load) {
-    const Vec3& x = *s.load;
+    const Vec3q& x = *s.load;
     write_dual_point(w.key("load").object().key("antipode"), dual_point({-x[0], -x[1], -x[2]}));
     w.member("balanced", *s.load_balanced).end_object();
   }

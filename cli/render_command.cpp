@@ -71,11 +71,11 @@ void draw_scene(Svg_canvas& c, const Scene& s, const std::vector<Generator>& gen
     c.polygon(o, "fill=\"#d8d8d8\" fill-opacity=\"0.55\" stroke=\"#333\" stroke-width=\"2\"");
   }
   for (const Generator& g : gens) {
-    const P2 f = unit({g.w.fx.get_d(), g.w.fy.get_d()});
-    if (g.w.fx == 0 && g.w.fy == 0) continue;
+    const P2 f = unit({g.w[0].get_d(), g.w[1].get_d()});
+    if (g.w[0] == 0 && g.w[1] == 0) continue;
     // A point of the line of action: p with p × f = m, p = m (f_y, −f_x) / |f|².
-    const Rational n2 = g.w.fx * g.w.fx + g.w.fy * g.w.fy;
-    const P2 p{Rational(g.w.m * g.w.fy / n2).get_d(), Rational(-g.w.m * g.w.fx / n2).get_d()};
+    const Rational n2 = g.w[0] * g.w[0] + g.w[1] * g.w[1];
+    const P2 p{Rational(g.w[2] * g.w[1] / n2).get_d(), Rational(-g.w[2] * g.w[0] / n2).get_d()};
     c.full_line(p, f, "stroke=\"#777\" stroke-width=\"1\" stroke-dasharray=\"6 4\"");
   }
   for (std::size_t i = 0; i < s.contacts.size(); ++i) {
@@ -97,16 +97,16 @@ void draw_scene(Svg_canvas& c, const Scene& s, const std::vector<Generator>& gen
     c.dot(to_p2(*s.body.com), 5, "fill=\"white\" stroke=\"#222\" stroke-width=\"1.5\"");
   }
   if (s.load) {
-    const Wrench w = load_wrench(s);
-    if (w.fx == 0 && w.fy == 0) {
-      c.caption("load: a pure moment " + to_string(w.m));
+    const Vec3q w = load_wrench(s);
+    if (w[0] == 0 && w[1] == 0) {
+      c.caption("load: a pure moment " + to_string(w[2]));
     } else {
       P2 at = to_p2(load_point(s));
       if (s.load->kind == Load::Kind::wrench) {
-        const Rational n2 = w.fx * w.fx + w.fy * w.fy;
-        at = {Rational(w.m * w.fy / n2).get_d(), Rational(-w.m * w.fx / n2).get_d()};
+        const Rational n2 = w[0] * w[0] + w[1] * w[1];
+        at = {Rational(w[2] * w[1] / n2).get_d(), Rational(-w[2] * w[0] / n2).get_d()};
       }
-      const P2 f = unit({w.fx.get_d(), w.fy.get_d()});
+      const P2 f = unit({w[0].get_d(), w[1].get_d()});
       c.arrow(at, {at.x + 1.4 * L * f.x, at.y + 1.4 * L * f.y}, kLoad, 3);
       c.text({at.x + 1.4 * L * f.x, at.y + 1.4 * L * f.y}, "load", "fill=\"" + std::string(kLoad) + "\"");
     }
@@ -180,12 +180,12 @@ std::string render_hold(const Scene& s, const Hold_item& h, const std::string& s
   if (s.support) {
     Rational most;
     for (const Support_point& p : s.support->points) {
-      const Rational mu = p.mu ? *p.mu : (s.support->mu ? *s.support->mu : Rational(0));
+      const Rational mu = s.support->mu_of(p);
       if (p.force && mu * *p.force > most) most = mu * *p.force;
     }
     for (std::size_t i = 0; i < s.support->points.size(); ++i) {
       const Support_point& p = s.support->points[i];
-      const Rational mu = p.mu ? *p.mu : (s.support->mu ? *s.support->mu : Rational(0));
+      const Rational mu = s.support->mu_of(p);
       const double r = p.force && most > 0 ? 4 + 8 * std::sqrt(Rational(mu * *p.force / most).get_d()) : 6;
       c.dot(to_p2(p.at), r, p.force ? "fill=\"" + std::string(kSupport) + "\" fill-opacity=\"0.5\" stroke=\"#222\""
                                     : "fill=\"none\" stroke=\"" + std::string(kSupport) + "\" stroke-width=\"2\"");
@@ -237,7 +237,7 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
   }
   const bool frictionless = what == Picture::reuleaux;
   const std::vector<Generator> gens = generators(s, frictionless ? Reading::frictionless : Reading::friction);
-  std::vector<Wrench> ws;
+  std::vector<Vec3q> ws;
   for (const Generator& g : gens) ws.push_back(g.w);
   const Moment_labels l = moment_labels(ws);
   std::string svg;
@@ -266,7 +266,7 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
     for (const Dual_point& p : d.generators)
       if (p.sheet == '+' || p.sheet == '-') b.add(to_p2(p.at));
     if (s.load) {
-      const Vec3 w = as_vec(load_wrench(s));
+      const Vec3q w = load_wrench(s);
       const Dual_point a = dual_point({-w[0], -w[1], -w[2]});
       if (a.sheet == '+' || a.sheet == '-') b.add(to_p2(a.at));
     }
@@ -290,7 +290,7 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
       }
     }
     if (s.load) {
-      const Vec3 w = as_vec(load_wrench(s));
+      const Vec3q w = load_wrench(s);
       const Dual_point a = dual_point({-w[0], -w[1], -w[2]});
       if (a.sheet == '0') {
         c.caption("load: zero");
@@ -308,7 +308,7 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
     c.caption(std::string("covers the whole two-sided plane: ") + (d.covers_all ? "yes (force closure)" : "no"));
     c.caption("a wrench (fx, fy, m) is the point D(w) = (\u2212fy, fx, m): (\u2212fy/m, fx/m) on the sheet of sign m");
     if (s.load) {
-      const Vec3 w = as_vec(load_wrench(s));
+      const Vec3q w = load_wrench(s);
       c.caption(std::string("load balanced: ") + (in_cone(l.cone, {-w[0], -w[1], -w[2]}) ? "yes" : "no"));
     }
     svg = c.finish();

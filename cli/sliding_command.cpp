@@ -34,7 +34,7 @@ std::string point_text(const Vec2& p) { return "(" + human_number(p.x) + ", " + 
 void write_support_regions(Json_writer& w, const Support& s) {
   w.key("support").object().member("points", s.points.size()).key("regions").array();
   for (const Support_region& g : s.regions) {
-    w.object().member("area", g.area).member("force", g.total).member("mu", region_mu(s, g));
+    w.object().member("area", g.area).member("force", g.total).member("mu", s.mu_of(g));
     write_xy(w.key("center_of_pressure"), {g.moment.x / g.total, g.moment.y / g.total});
     w.member("pressure", g.uniform ? "uniform" : "linear").key("pressure_coefficients").rationals(g.pressure);
     w.key("second_moments").rationals(g.second).member("triangles", g.triangles.size()).end_object();
@@ -48,7 +48,7 @@ std::string region_lines(const Support& s) {
   for (std::size_t k = 0; k < s.regions.size(); ++k) {
     const Support_region& g = s.regions[k];
     o << "  region " << k << ": area " << human_number(g.area) << ", force " << human_number(g.total) << ", mu "
-      << human_number(region_mu(s, g)) << ", centre of pressure " << point_text({g.moment.x / g.total, g.moment.y / g.total})
+      << human_number(s.mu_of(g)) << ", centre of pressure " << point_text({g.moment.x / g.total, g.moment.y / g.total})
       << " (" << (g.uniform ? "uniform" : "linear") << " pressure, " << g.triangles.size() << " triangles)\n";
   }
   return o.str();

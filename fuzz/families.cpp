@@ -178,10 +178,10 @@ bool naive_region_slides(const Case& c) {
       for (const stress::Support_spec& x : c.support) v += x.mu * x.force * std::hypot(q[0] - q[2] * x.y, q[1] + q[2] * x.x);
     } else {
       for (const Support_point& p : s.points)
-        v += (p.mu ? *p.mu : *s.mu).get_d() * p.force->get_d() *
+        v += s.mu_of(p).get_d() * p.force->get_d() *
              std::hypot(q[0] - q[2] * p.at.y.get_d(), q[1] + q[2] * p.at.x.get_d());
     }
-    for (const Support_region& r : s.regions) v += region_mu(s, r).get_d() * region_power_double(r, q);
+    for (const Support_region& r : s.regions) v += s.mu_of(r).get_d() * region_power_double(r, q);
     return v;
   };
   const Vec3q p{Rational(c.motion_load_naive[0]), Rational(c.motion_load_naive[1]), Rational(c.motion_load_naive[2])};

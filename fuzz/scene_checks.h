@@ -55,7 +55,7 @@ inline bool same_bounded(const fl::Bounded& a, const fl::Bounded& b) {
   return (a.v == b.v || (a.v != a.v && b.v != b.v)) && (a.e == b.e || (a.e != a.e && b.e != b.e));
 }
 inline bool same_vec(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
-inline bool same_wrench(const Wrench& a, const Wrench& b) { return a.fx == b.fx && a.fy == b.fy && a.m == b.m; }
+inline bool same_wrench(const Vec3q& a, const Vec3q& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
 inline bool same_twin(const fl::Bounded_contact& a, const fl::Bounded_contact& b) {
   return a.is_wrench == b.is_wrench && a.frictional == b.frictional && same_bounded(a.ax, b.ax) &&
          same_bounded(a.ay, b.ay) && same_bounded(a.nx, b.nx) && same_bounded(a.ny, b.ny) &&
@@ -284,7 +284,7 @@ inline bool check_scene_text(std::string_view text) {
   // everything; the load read on the labels agrees with equilibrium.
   for (auto p : {wrenchkit::Property::force_closure, wrenchkit::Property::form_closure}) {
     const auto reading = wrenchkit::reading_of(p);
-    std::vector<wrenchkit::Wrench> w;
+    std::vector<wrenchkit::Vec3q> w;
     for (const auto& g : wrenchkit::generators(scene, reading)) w.push_back(g.w);
     const auto l = wrenchkit::moment_labels(w);
     const auto d = wrenchkit::force_dual(l, w);
@@ -307,7 +307,7 @@ inline bool check_scene_text(std::string_view text) {
       std::abort();
     }
     if (scene.load && reading == wrenchkit::Reading::friction) {
-      const auto x = wrenchkit::as_vec(wrenchkit::load_wrench(scene));
+      const auto x = wrenchkit::load_wrench(scene);
       if (wrenchkit::in_cone(l.cone, {-x[0], -x[1], -x[2]}) !=
           wrenchkit::decide_equilibrium(scene, wrenchkit::Mode::exact, false).balanced) {
         std::cerr << "labels disagree with equilibrium\n" << printed;
@@ -327,7 +327,7 @@ inline bool check_scene_text(std::string_view text) {
       }
     }
     if (scene.load) {
-      const auto m = wrenchkit::decide_region_motion(*scene.support, wrenchkit::as_vec(wrenchkit::load_wrench(scene)));
+      const auto m = wrenchkit::decide_region_motion(*scene.support, wrenchkit::load_wrench(scene));
       if (m.motion != wrenchkit::Motion::undecided) region_certificate = m.certificate;
     }
   }
@@ -336,7 +336,7 @@ inline bool check_scene_text(std::string_view text) {
     // [RG-3] Regions beside legs whose forces are not given: stick/slide over F only with a format-2 certificate the
     // checker accepts (below).
     const wrenchkit::Admissible adm = wrenchkit::admissible_set(scene);
-    const auto m = wrenchkit::decide_region_motion_over(*scene.support, adm, wrenchkit::as_vec(wrenchkit::load_wrench(scene)),
+    const auto m = wrenchkit::decide_region_motion_over(*scene.support, adm, wrenchkit::load_wrench(scene),
                                                         wrenchkit::vertices(*scene.support, adm));
     if (m.over.motion != wrenchkit::Motion_over::undecided) region_certificate = m.certificate;
   }
@@ -349,7 +349,7 @@ inline bool check_scene_text(std::string_view text) {
         wrenchkit::merge_support(*scene.support, scene.support->known() ? nullptr : &extreme.at(0)),
         wrenchkit::make_directions(8));
     if (!scene.support->known() && scene.load) {
-      const auto p = wrenchkit::as_vec(wrenchkit::load_wrench(scene));
+      const auto p = wrenchkit::load_wrench(scene);
       const auto e = wrenchkit::decide_motion_over(*scene.support, adm, p, wrenchkit::Mode::exact, 8);
       const auto h = wrenchkit::decide_motion_over(*scene.support, adm, p, wrenchkit::Mode::hybrid, 8);
       if (e.motion != wrenchkit::Motion_over::undecided && h.motion != wrenchkit::Motion_over::undecided &&
@@ -372,7 +372,7 @@ inline bool check_scene_text(std::string_view text) {
       }
     }
     if (scene.load) {
-      const auto p = wrenchkit::as_vec(wrenchkit::load_wrench(scene));
+      const auto p = wrenchkit::load_wrench(scene);
       const auto e = wrenchkit::decide_motion(model, p, wrenchkit::Mode::exact, &in, &out);
       for (auto m : {wrenchkit::Mode::hybrid, wrenchkit::Mode::float_only}) {
         const auto f = wrenchkit::decide_motion(model, p, m, &in, &out);

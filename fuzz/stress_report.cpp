@@ -176,7 +176,7 @@ void run_contact_case(const families::Case& k, std::uint64_t seed, long index, R
   // The exact labels read back: nothing labeled ⇔ closure (§5.5); the load balanced ⇔ −w ∈ W.
   bool exact_ok;
   if (q == Question::equilibrium) {
-    const Vec3 w = as_vec(load_wrench(scene));
+    const Vec3q w = load_wrench(scene);
     exact_ok = in_cone(le.cone, {-w[0], -w[1], -w[2]}) == truth;
   } else {
     exact_ok = le.nothing_labeled() == truth;

@@ -184,10 +184,10 @@ py::dict equilibrium_arrays(const Doubles& points, const Doubles& normals, const
       [&](Worker& w, std::size_t row, Item& out) {
         in.fill(w.scene, row);
         if (!w.scene.load) w.scene.load.emplace().kind = Load::Kind::wrench;
-        Wrench& x = w.scene.load->wrench;  // mpq_set_d: exact
-        x.fx = l[3 * row];
-        x.fy = l[3 * row + 1];
-        x.m = l[3 * row + 2];
+        Vec3q& x = w.scene.load->wrench;  // mpq_set_d: exact
+        x[0] = l[3 * row];
+        x[1] = l[3 * row + 1];
+        x[2] = l[3 * row + 2];
         if (certificates) out.text = write_scene(w.scene);
         out.item = answer_equilibrium(w.scene, out.text, request);
       },

@@ -52,7 +52,7 @@ py::tuple point(const Vec2& p) { return py::make_tuple(fraction(p.x), fraction(p
 py::tuple triple(const Rational& a, const Rational& b, const Rational& c) {
   return py::make_tuple(fraction(a), fraction(b), fraction(c));
 }
-py::tuple triple(const Vec3& v) { return triple(v[0], v[1], v[2]); }
+py::tuple triple(const Vec3q& v) { return triple(v[0], v[1], v[2]); }
 
 // A scene as read by the engine, with the canonical text the checker is given.
 struct Py_scene {
@@ -212,7 +212,7 @@ py::dict equilibrium(const Py_scene& s, const std::string& mode) {
   const Equilibrium_answer& a = r.answer;
   py::dict d;
   d["balanced"] = a.balanced;
-  d["load"] = triple(a.load.fx, a.load.fy, a.load.m);
+  d["load"] = triple(a.load[0], a.load[1], a.load[2]);
   d["generators"] = a.generators;
   d["mode"] = mode;
   d["decided_by"] = a.decided_by();
@@ -254,7 +254,7 @@ py::dict hold(const Py_scene& s, const std::string& mode) {
   py::dict d;
   if (a.verdict == Hold_verdict::holds || a.verdict == Hold_verdict::fails) d["holds"] = a.verdict == Hold_verdict::holds;
   else d["holds"] = hold_word(a.verdict);
-  d["load"] = triple(a.load.fx, a.load.fy, a.load.m);
+  d["load"] = triple(a.load[0], a.load[1], a.load[2]);
   d["generators"] = a.generators;
   d["support"] = !a.has_support ? "none" : a.unknown ? "unknown" : "known";
   d["mode"] = mode;
@@ -475,7 +475,7 @@ py::list region_list(const Support& sup) {
     py::dict x;
     x["area"] = fraction(g.area);
     x["force"] = fraction(g.total);
-    x["mu"] = fraction(region_mu(sup, g));
+    x["mu"] = fraction(sup.mu_of(g));
     x["center_of_pressure"] = point({g.moment.x / g.total, g.moment.y / g.total});
     x["pressure"] = g.uniform ? "uniform" : "linear";
     x["pressure_coefficients"] = triple(g.pressure[0], g.pressure[1], g.pressure[2]);

@@ -21,8 +21,8 @@ namespace wrenchkit {
 namespace {
 
 // The kernel rows as rationals (columns of the oracle's tableau).
-std::vector<Wrench> rows_as_wrenches(const Exact_kernel& k, const std::vector<std::size_t>& which) {
-  std::vector<Wrench> out;
+std::vector<Vec3q> rows_as_wrenches(const Exact_kernel& k, const std::vector<std::size_t>& which) {
+  std::vector<Vec3q> out;
   for (std::size_t i : which) {
     const auto r = k.row(i);
     out.push_back({Rational(r[0]), Rational(r[1]), Rational(r[2])});
@@ -34,8 +34,8 @@ std::vector<Wrench> rows_as_wrenches(const Exact_kernel& k, const std::vector<st
 // the pivots of FC-4, so membership, weights and twist are equal, in fixed width and in GMP alike.
 ::testing::AssertionResult same_as_rational_lp(const Exact_kernel& k, const std::vector<std::size_t>& columns,
                                                const std::vector<std::size_t>& negated) {
-  Wrench x{Rational(0), Rational(0), Rational(0)};
-  for (const Wrench& w : rows_as_wrenches(k, negated)) x = {x.fx - w.fx, x.fy - w.fy, x.m - w.m};
+  Vec3q x{Rational(0), Rational(0), Rational(0)};
+  for (const Vec3q& w : rows_as_wrenches(k, negated)) x = {x[0] - w[0], x[1] - w[1], x[2] - w[2]};
   const Cone_membership q = cone_membership(rows_as_wrenches(k, columns), x);
   for (bool fixed : {true, false}) {
     const Integer_cone_membership z = cone_membership(k, columns, negated, fixed);
@@ -46,7 +46,7 @@ std::vector<Wrench> rows_as_wrenches(const Exact_kernel& k, const std::vector<st
         if (Rational(z.numerators[j] * q.weights[j].get_den()) != Rational(z.denominator * q.weights[j].get_num()))
           return ::testing::AssertionFailure() << "weight " << j << " differs (fixed " << fixed << ")";
     } else {
-      const Vec3 t = primitive_vec(q.twist);
+      const Vec3q t = primitive_vec(q.twist);
       for (int r = 0; r < 3; ++r)
         if (Rational(z.twist[r]) != t[r]) return ::testing::AssertionFailure() << "twist differs (fixed " << fixed << ")";
     }
@@ -57,11 +57,11 @@ std::vector<Wrench> rows_as_wrenches(const Exact_kernel& k, const std::vector<st
 // The old certificate of equilibrium (FC-4 on the rational generators), as the oracle: the integer
 // LP makes the same pivots on positive multiples of the same columns and target, so the certificate
 // must be the same, weight for weight.
-Equilibrium_certificate rational_lp_certificate(const Scene& s, const Wrench& load) {
+Equilibrium_certificate rational_lp_certificate(const Scene& s, const Vec3q& load) {
   const std::vector<Generator> gens = generators(s, Reading::friction);
-  std::vector<Wrench> ws;
+  std::vector<Vec3q> ws;
   for (const Generator& g : gens) ws.push_back(g.w);
-  const Cone_membership m = cone_membership(ws, Wrench{-load.fx, -load.fy, -load.m});
+  const Cone_membership m = cone_membership(ws, Vec3q{-load[0], -load[1], -load[2]});
   Equilibrium_certificate c;
   c.holds = m.member;
   if (m.member) {
@@ -91,8 +91,8 @@ struct Tally {
       const Dual_cone dc = compute_dual_cone_reference(k);
       if (dc.rank == 3) {
         const std::vector<std::size_t> b = {dc.basis[0], dc.basis[1], dc.basis[2]};
-        Wrench x{Rational(0), Rational(0), Rational(0)};
-        for (const Wrench& w : rows_as_wrenches(k, b)) x = {x.fx - w.fx, x.fy - w.fy, x.m - w.m};
+        Vec3q x{Rational(0), Rational(0), Rational(0)};
+        for (const Vec3q& w : rows_as_wrenches(k, b)) x = {x[0] - w[0], x[1] - w[1], x[2] - w[2]};
         oracle = cone_membership(rows_as_wrenches(k, all), x).member;
         auto same = same_as_rational_lp(k, all, b);
         if (!same) return same << " (" << property_name(p) << ", all generators)";
@@ -188,8 +188,8 @@ TEST(IntegerCertificates, FourGeneratorsNeedNoLp) {
       bool member = false;
       Cone_membership q;
       if (!b.empty()) {
-        Wrench target{Rational(0), Rational(0), Rational(0)};
-        for (const Wrench& w : rows_as_wrenches(k, b)) target = {target.fx - w.fx, target.fy - w.fy, target.m - w.m};
+        Vec3q target{Rational(0), Rational(0), Rational(0)};
+        for (const Vec3q& w : rows_as_wrenches(k, b)) target = {target[0] - w[0], target[1] - w[1], target[2] - w[2]};
         q = cone_membership(rows_as_wrenches(k, cols), target);
         member = q.member;
       }

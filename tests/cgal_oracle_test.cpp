@@ -168,10 +168,10 @@ std::vector<V3> distinct(const std::vector<V3>& D) {
   return out;
 }
 
-V3 dual_of(const Wrench& w) { return {-w.fy, w.fx, w.m}; }  // D(w) = J w (theory.md §6)
+V3 dual_of(const Vec3q& w) { return {-w[1], w[0], w[2]}; }  // D(w) = J w (theory.md §6)
 
-std::vector<Wrench> wrenches(const Scene& s, Reading r) {
-  std::vector<Wrench> w;
+std::vector<Vec3q> wrenches(const Scene& s, Reading r) {
+  std::vector<Vec3q> w;
   for (const Generator& g : generators(s, r)) w.push_back(g.w);
   return w;
 }
@@ -179,13 +179,13 @@ std::vector<Wrench> wrenches(const Scene& s, Reading r) {
 // The labels and the force dual of one scene and reading against Nef_polyhedron_2, and the face's round trip.
 void check_labels_and_dual(const Scene& scene, Reading reading) {
   SCOPED_TRACE(reading == Reading::friction ? "friction" : "frictionless");
-  const std::vector<Wrench> g = wrenches(scene, reading);
+  const std::vector<Vec3q> g = wrenches(scene, reading);
   const Moment_labels l = moment_labels(g);
   const Force_dual fd = force_dual(l, g);
   const Labels_2 c = to_cgal(l);
   const Force_dual_2 cd = to_cgal(fd);
   std::vector<V3> D;
-  for (const Wrench& w : g) D.push_back(dual_of(w));
+  for (const Vec3q& w : g) D.push_back(dual_of(w));
   D = distinct(D);
 
   // Labels: R₊ = {c : ⟨(c, 1), D_i⟩ ≥ 0}, R₋ = {… ≤ 0}, ± = R₊ ∩ R₋, R∞ = {d : ⟨(d, 0), D_i⟩ ≥ 0}.
@@ -205,10 +205,10 @@ void check_labels_and_dual(const Scene& scene, Reading reading) {
   if (cd.has_reference) {  // §6.2: the dual polygon about o is conv{(−fy, fx)/m_o}, by CGAL::convex_hull_2
     std::vector<Point_2> pts, hull;
     const Vec2 o = to_vec2(cd.reference);
-    for (const Wrench& w : g) {
-      const Rational mo = w.m - (o.x * w.fy - o.y * w.fx);
+    for (const Vec3q& w : g) {
+      const Rational mo = w[2] - (o.x * w[1] - o.y * w[0]);
       ASSERT_GT(mo, 0);
-      pts.push_back(to_point_2({-w.fy / mo, w.fx / mo}));
+      pts.push_back(to_point_2({-w[1] / mo, w[0] / mo}));
     }
     CGAL::convex_hull_2(pts.begin(), pts.end(), std::back_inserter(hull));
     const Polygon_2& ours = cd.about_reference.corners;
@@ -446,7 +446,7 @@ TEST(CgalOracle, LimitSurfacesOnRandomSupports) {
 // −w ∈ pos{g_i}: is {λ ≥ 0 : Σ λ_i g_i = −w} feasible? Columns and the right-hand side scaled to integers (a
 // positive scaling of a column or of −w leaves the answer unchanged); solved exactly in Gmpz.
 int lps_solved = 0;  // LPs handed to CGAL's solver (scenes with generators), for the count below
-bool lp_balanced(const std::vector<Wrench>& g, const Wrench& w) {
+bool lp_balanced(const std::vector<Vec3q>& g, const Vec3q& w) {
   const auto integers = [](const V3& v) {
     Integer l = 1;
     for (const Rational& q : v) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), q.get_den_mpz_t());
@@ -454,20 +454,20 @@ bool lp_balanced(const std::vector<Wrench>& g, const Wrench& w) {
     for (int i = 0; i < 3; ++i) z[i] = gmpz(Integer(v[i].get_num() * (l / v[i].get_den())));
     return z;
   };
-  if (g.empty()) return w.fx == 0 && w.fy == 0 && w.m == 0;
+  if (g.empty()) return w[0] == 0 && w[1] == 0 && w[2] == 0;
   CGAL::Quadratic_program<CGAL::Gmpz> lp(CGAL::EQUAL, true, 0, false, 0);
   for (std::size_t j = 0; j < g.size(); ++j) {
-    const auto c = integers({g[j].fx, g[j].fy, g[j].m});
+    const auto c = integers({g[j][0], g[j][1], g[j][2]});
     for (int i = 0; i < 3; ++i) lp.set_a(static_cast<int>(j), i, c[i]);
   }
-  const auto b = integers({-w.fx, -w.fy, -w.m});
+  const auto b = integers({-w[0], -w[1], -w[2]});
   for (int i = 0; i < 3; ++i) lp.set_b(i, b[i]);
   ++lps_solved;
   return !CGAL::solve_linear_program(lp, CGAL::Gmpz()).is_infeasible();
 }
 
 void check_equilibrium(const Scene& s) {
-  const std::vector<Wrench> g = wrenches(s, Reading::friction);
+  const std::vector<Vec3q> g = wrenches(s, Reading::friction);
   const Equilibrium_answer a = decide_equilibrium(s, Mode::exact);
   const bool lp = lp_balanced(g, a.load);
   ASSERT_EQ(a.balanced, lp) << "exact";

@@ -882,7 +882,7 @@ int digits_for(int scenario, std::mt19937_64& rng) {
 }
 
 TEST(CheckerFixedWidth, RandomPositiveCertificates) {
-  // Wrench contacts g1, g2, g3 and g4 = -(a1 g1 + a2 g2 + a3 g3) / a4: the weights a are a valid
+  // Vec3q contacts g1, g2, g3 and g4 = -(a1 g1 + a2 g2 + a3 g3) / a4: the weights a are a valid
   // combination (when g1, g2, g3 are independent); one weight changed is not.
   std::mt19937_64 rng(1919);
   int accepted = 0;

@@ -211,7 +211,7 @@ TEST(ClosureDifferential, AgreesWithBruteForceAndLpOnRandomScenes) {
     const std::string text = scene_json(test::random_contacts(rng, 7));
     const Scene s = read_scene(text, Input_limits{});
     for (Property p : {Property::force_closure, Property::form_closure}) {
-      std::vector<Wrench> ws;
+      std::vector<Vec3q> ws;
       for (const Generator& g : generators(s, reading_of(p))) ws.push_back(g.w);
       const Closure_answer a = decide_closure(s, p);
       const bool brute = test::brute_force_closure(ws);
@@ -220,9 +220,9 @@ TEST(ClosureDifferential, AgreesWithBruteForceAndLpOnRandomScenes) {
       if (test::brute_force_rank(ws) == 3) {
         const Dual_cone dc = compute_dual_cone(Exact_kernel(ws));
         const auto& b = dc.basis;
-        lp = cone_membership(ws, {-(ws[b[0]].fx + ws[b[1]].fx + ws[b[2]].fx),
-                                  -(ws[b[0]].fy + ws[b[1]].fy + ws[b[2]].fy),
-                                  -(ws[b[0]].m + ws[b[1]].m + ws[b[2]].m)})
+        lp = cone_membership(ws, {-(ws[b[0]][0] + ws[b[1]][0] + ws[b[2]][0]),
+                                  -(ws[b[0]][1] + ws[b[1]][1] + ws[b[2]][1]),
+                                  -(ws[b[0]][2] + ws[b[1]][2] + ws[b[2]][2])})
                  .member;
       }
       const bool rank_ok = a.rank == test::brute_force_rank(ws);
@@ -277,7 +277,7 @@ TEST(ClosureCertificates, TamperedCertificatesAreRejected) {
         const auto gens = generators(s, reading_of(p));
         bool some_positive = false;
         for (const Generator& g : gens)
-          some_positive |= c.twist[0] * g.w.fx + c.twist[1] * g.w.fy + c.twist[2] * g.w.m > 0;
+          some_positive |= c.twist[0] * g.w[0] + c.twist[1] * g.w[1] + c.twist[2] * g.w[2] > 0;
         Closure_certificate t = c;
         for (Rational& x : t.twist) x = -x;
         EXPECT_EQ(bool(test::checker_accepts(text, certificate_json(t))), !some_positive);
@@ -344,7 +344,7 @@ TEST(ClosureDifferential, RandomizedConstructionMatchesTheReference) {
     const std::string text = scene_json(test::random_contacts(rng, 12));
     const Scene s = read_scene(text, Input_limits{});
     for (Property p : {Property::force_closure, Property::form_closure}) {
-      std::vector<Wrench> ws;
+      std::vector<Vec3q> ws;
       for (const Generator& g : generators(s, reading_of(p))) ws.push_back(g.w);
       const Exact_kernel k(ws);
       const Dual_cone fast = compute_dual_cone_randomized(k), ref = compute_dual_cone_reference(k);
@@ -354,10 +354,9 @@ TEST(ClosureDifferential, RandomizedConstructionMatchesTheReference) {
         auto rays = [&](const Dual_cone& d) {
           std::vector<std::array<Integer, 3>> out;
           for (std::size_t j = 0; j < d.edges.size(); ++j) {
-            const Wrench& a = ws[d.edges[j]];
-            const Wrench& b = ws[d.edges[(j + 1) % d.edges.size()]];
-            out.push_back(primitive(std::array<Rational, 3>{a.fy * b.m - a.m * b.fy, a.m * b.fx - a.fx * b.m,
-                                                            a.fx * b.fy - a.fy * b.fx}));
+            const Vec3q& a = ws[d.edges[j]];
+            const Vec3q& b = ws[d.edges[(j + 1) % d.edges.size()]];
+            out.push_back(primitive(cross(a, b)));
           }
           std::sort(out.begin(), out.end());
           out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -386,7 +385,7 @@ TEST(ClosureDifferential, LargeScenesUseTheRandomizedPathWithValidCertificates) 
     const std::string text = scene_json(test::random_contacts(rng, 70));
     const Scene s = read_scene(text, Input_limits{});
     for (Property p : {Property::force_closure, Property::form_closure}) {
-      std::vector<Wrench> ws;
+      std::vector<Vec3q> ws;
       for (const Generator& g : generators(s, reading_of(p))) ws.push_back(g.w);
       large += ws.size() > kSmallDualCone;
       const bool ref = compute_dual_cone_reference(Exact_kernel(ws)).force_closure();

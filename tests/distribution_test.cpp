@@ -236,7 +236,7 @@ void expect_witness_holds(const Support& s, const Admissible& a, const Stick_wit
   EXPECT_TRUE(a.contains(s, w.distribution));
   Vec3q sum{};
   for (std::size_t i = 0; i < s.points.size(); ++i) {
-    const Rational mu = s.points[i].mu ? *s.points[i].mu : *s.mu;
+    const Rational mu = s.mu_of(s.points[i]);
     const Vec2& g = w.forces[i];
     EXPECT_LE(g.x * g.x + g.y * g.y, mu * mu * w.distribution[i] * w.distribution[i]);
     sum[0] += g.x;

@@ -200,7 +200,7 @@ TEST(HoldSpecialCases, NoContactsIsStickSlideExceptOnTheSurface) {
     const std::string text =
         R"({"wrenchkit": 1, )" + known_support(pts, "\"1/4\"") + R"(, "load": {"wrench": )" + load + "}}";
     const Scene s = read_scene(text, kLimits);
-    const Vec3q p = as_vec(load_wrench(s));
+    const Vec3q p = load_wrench(s);
     const Motion_decision m = decide_motion(merge_support(*s.support), p, Mode::hybrid, 16);
     const Hold_item h = hold_of(text, Mode::hybrid);
     ASSERT_EQ(h.status, Status::answered) << test::dump_failure(text, "hold_nocontact_" + std::to_string(n));
@@ -226,7 +226,7 @@ TEST(HoldSpecialCases, NoContactsIsStickSlideExceptOnTheSurface) {
     EXPECT_TRUE(test::checker_accepts(barbell, h.certificate));
   }
   const Scene b = read_scene(barbell, kLimits);
-  EXPECT_EQ(decide_motion(merge_support(*b.support), as_vec(load_wrench(b)), Mode::hybrid, 16).motion, Motion::slides);
+  EXPECT_EQ(decide_motion(merge_support(*b.support), load_wrench(b), Mode::hybrid, 16).motion, Motion::slides);
 }
 
 // A single frictionless pin plus a support: a push κ along the pin's normal through the centre of friction is the

@@ -72,38 +72,38 @@ Moment_labels labels_of(const std::string& scene_text, Reading reading = Reading
   return moment_labels(read_scene(scene_text, Input_limits{}), reading);
 }
 
-std::vector<Wrench> wrenches_of(const Scene& s, Reading reading) {
-  std::vector<Wrench> w;
+std::vector<Vec3q> wrenches_of(const Scene& s, Reading reading) {
+  std::vector<Vec3q> w;
   for (const Generator& g : generators(s, reading)) w.push_back(g.w);
   return w;
 }
 
 // Pointwise labels from the definition (theory.md §5.1).
-bool plus_at(const std::vector<Wrench>& g, const Vec2& c) {
-  for (const Wrench& w : g)
-    if (w.m - (c.x * w.fy - c.y * w.fx) < 0) return false;
+bool plus_at(const std::vector<Vec3q>& g, const Vec2& c) {
+  for (const Vec3q& w : g)
+    if (w[2] - (c.x * w[1] - c.y * w[0]) < 0) return false;
   return true;
 }
-bool minus_at(const std::vector<Wrench>& g, const Vec2& c) {
-  for (const Wrench& w : g)
-    if (w.m - (c.x * w.fy - c.y * w.fx) > 0) return false;
+bool minus_at(const std::vector<Vec3q>& g, const Vec2& c) {
+  for (const Vec3q& w : g)
+    if (w[2] - (c.x * w[1] - c.y * w[0]) > 0) return false;
   return true;
 }
-bool infinity_at(const std::vector<Wrench>& g, const Vec2& d) {
-  for (const Wrench& w : g)
-    if (w.fx * d.y - w.fy * d.x < 0) return false;
+bool infinity_at(const std::vector<Vec3q>& g, const Vec2& d) {
+  for (const Vec3q& w : g)
+    if (w[0] * d.y - w[1] * d.x < 0) return false;
   return true;
 }
 
 // Brute-force corners of {c : s·M_c(g_i) ≥ 0 ∀i}: pairwise intersections of lines of force that
 // satisfy every constraint (theory.md §5.4: a vertex is where two lines of force cross).
-std::set<std::pair<Rational, Rational>> brute_corners(const std::vector<Wrench>& g, int s) {
+std::set<std::pair<Rational, Rational>> brute_corners(const std::vector<Vec3q>& g, int s) {
   std::set<std::pair<Rational, Rational>> out;
   for (std::size_t i = 0; i < g.size(); ++i)
     for (std::size_t j = i + 1; j < g.size(); ++j) {
       // M_c(w) = m − c_x f_y + c_y f_x = 0 for both: solve the 2×2 system.
-      const Rational a1 = -g[i].fy, b1 = g[i].fx, c1 = -g[i].m;
-      const Rational a2 = -g[j].fy, b2 = g[j].fx, c2 = -g[j].m;
+      const Rational a1 = -g[i][1], b1 = g[i][0], c1 = -g[i][2];
+      const Rational a2 = -g[j][1], b2 = g[j][0], c2 = -g[j][2];
       const Rational det = a1 * b2 - a2 * b1;
       if (det == 0) continue;
       const Vec2 c{(c1 * b2 - c2 * b1) / det, (a1 * c2 - a2 * c1) / det};
@@ -157,7 +157,7 @@ TEST(LabelsGolden, LadderAtAndBelowThreshold) {  // theory.md §9 leaning square
 }
 
 TEST(LabelsGolden, SingleForce) {  // §5.2, §14.3 case 1
-  const Moment_labels l = moment_labels(std::vector<Wrench>{{1, 0, 0}});
+  const Moment_labels l = moment_labels(std::vector<Vec3q>{{1, 0, 0}});
   EXPECT_TRUE(region_contains(l.plus, P("0", "1")));
   EXPECT_FALSE(region_contains(l.plus, P("0", "-1")));
   EXPECT_TRUE(region_contains(l.minus, P("0", "-1")));
@@ -184,7 +184,7 @@ TEST(LabelsGolden, ConcurrentNormalsTriangle) {  // §8.7 μ = 0 and μ > 0
 }
 
 TEST(LabelsGolden, VerticalWallsOnlyInfinity) {  // §5.5, §14.3 case 4
-  const Moment_labels l = moment_labels(std::vector<Wrench>{{1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, {-1, 0, -1}});
+  const Moment_labels l = moment_labels(std::vector<Vec3q>{{1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, {-1, 0, -1}});
   EXPECT_TRUE(l.plus.empty() && l.minus.empty());
   EXPECT_EQ(l.infinity.shape, Cone2::Shape::line);
   EXPECT_FALSE(l.nothing_labeled());
@@ -235,40 +235,40 @@ TEST(LabelsGolden, FrictionWedgeOfOneContact) {  // §5.2, §14.3 case 10
 
 TEST(LabelsGolden, DegenerateTable) {  // §5.6
   // Parallel forces, same sense: half-planes bounded by the outermost lines; R∞ a half-circle.
-  const Moment_labels par = moment_labels(std::vector<Wrench>{{0, 1, 0}, {0, 1, 2}});  // x = 0 and x = 2
+  const Moment_labels par = moment_labels(std::vector<Vec3q>{{0, 1, 0}, {0, 1, 2}});  // x = 0 and x = 2
   EXPECT_EQ(par.plus.shape, Region::Shape::half_plane);
   EXPECT_TRUE(region_contains(par.plus, P("-1", "7")) && !region_contains(par.plus, P("1", "0")));
   EXPECT_EQ(par.minus.shape, Region::Shape::half_plane);
   EXPECT_TRUE(region_contains(par.minus, P("2", "-9")) && !region_contains(par.minus, P("1", "0")));
   EXPECT_EQ(par.infinity.shape, Cone2::Shape::half_plane);
   // Parallel forces in both senses on different lines: strips, R∞ ⊆ {±e}.
-  const Moment_labels anti = moment_labels(std::vector<Wrench>{{0, 1, 0}, {0, -1, -2}});  // up at x=0, down at x=2
+  const Moment_labels anti = moment_labels(std::vector<Vec3q>{{0, 1, 0}, {0, -1, -2}});  // up at x=0, down at x=2
   EXPECT_EQ(anti.plus.shape, Region::Shape::empty);
   EXPECT_EQ(anti.minus.shape, Region::Shape::strip);
   EXPECT_TRUE(region_contains(anti.minus, P("1", "100")) && !region_contains(anti.minus, P("3", "0")));
   EXPECT_EQ(anti.infinity.shape, Cone2::Shape::line);
   // Opposite forces on one line: the line is ±.
-  const Moment_labels opp = moment_labels(std::vector<Wrench>{{1, 0, 0}, {-1, 0, 0}});
+  const Moment_labels opp = moment_labels(std::vector<Vec3q>{{1, 0, 0}, {-1, 0, 0}});
   EXPECT_EQ(opp.plus.shape, Region::Shape::line);
   EXPECT_EQ(opp.both.kind, Both_set::Kind::line);
   // Pure moments of both signs: no finite label; infinity decides.
-  const Moment_labels pm = moment_labels(std::vector<Wrench>{{0, 0, 1}, {0, 0, -1}, {1, 0, 0}});
+  const Moment_labels pm = moment_labels(std::vector<Vec3q>{{0, 0, 1}, {0, 0, -1}, {1, 0, 0}});
   EXPECT_TRUE(pm.plus.empty() && pm.minus.empty());
   EXPECT_EQ(pm.infinity.shape, Cone2::Shape::half_plane);
   // Empty generator set: everything ±.
-  const Moment_labels none = moment_labels(std::vector<Wrench>{});
+  const Moment_labels none = moment_labels(std::vector<Vec3q>{});
   EXPECT_EQ(none.plus.shape, Region::Shape::plane);
   EXPECT_EQ(none.both.kind, Both_set::Kind::plane);
   EXPECT_EQ(none.infinity.shape, Cone2::Shape::plane);
   // A pure moment alone: every finite point +, R₋ empty, all of infinity.
-  const Moment_labels m = moment_labels(std::vector<Wrench>{{0, 0, 3}});
+  const Moment_labels m = moment_labels(std::vector<Vec3q>{{0, 0, 3}});
   EXPECT_EQ(m.plus.shape, Region::Shape::plane);
   EXPECT_TRUE(m.minus.empty());
   EXPECT_EQ(m.infinity.shape, Cone2::Shape::plane);
 }
 
 TEST(ForceDualGolden, BlockInCornerAboutReferencePoint) {  // theory.md §6.2
-  const std::vector<Wrench> g = {{0, 1, 0}, {0, 1, 1}, {1, 0, 0}, {1, 0, -1}};
+  const std::vector<Vec3q> g = {{0, 1, 0}, {0, 1, 1}, {1, 0, 0}, {1, 0, -1}};
   const Moment_labels l = moment_labels(g);
   const Force_dual d = force_dual(l, g);
   EXPECT_FALSE(d.covers_all);
@@ -305,7 +305,7 @@ TEST(Reuleaux, ContactModes) {  // §7 per-contact modes
   EXPECT_EQ(a.modes[0], Contact_mode::slides);
   EXPECT_EQ(a.modes[1], Contact_mode::slides);
   // Rotation about a centre on the + side: feasible and P(t) is the centre.
-  const Vec3 t = rotation_twist(P("1", "5"), 1);
+  const Vec3q t = rotation_twist(P("1", "5"), 1);
   EXPECT_TRUE(eq({J(t)[0] / J(t)[2], J(t)[1] / J(t)[2]}, P("1", "5")));
 }
 
@@ -324,7 +324,7 @@ void check_labels_against_brute_force(const std::string& text, std::mt19937_64& 
   const Dump_on_failure dump{text, tag};
   const Scene scene = read_scene(text, Input_limits{});
   for (Reading reading : {Reading::friction, Reading::frictionless}) {
-    const std::vector<Wrench> g = wrenches_of(scene, reading);
+    const std::vector<Vec3q> g = wrenches_of(scene, reading);
     const Moment_labels l = moment_labels(g);
     SCOPED_TRACE(tag + (reading == Reading::friction ? " friction" : " frictionless") +
                  "\nplus " + region_json(l.plus) + "\nminus " + region_json(l.minus));
@@ -360,10 +360,10 @@ void check_labels_against_brute_force(const std::string& text, std::mt19937_64& 
     }
     // Directions at infinity: every ±f_i, their perpendiculars and random ones.
     std::vector<Vec2> dirs;
-    for (const Wrench& w : g) {
-      dirs.push_back({w.fx, w.fy});
-      dirs.push_back({-w.fx, -w.fy});
-      dirs.push_back({-w.fy, w.fx});
+    for (const Vec3q& w : g) {
+      dirs.push_back({w[0], w[1]});
+      dirs.push_back({-w[0], -w[1]});
+      dirs.push_back({-w[1], w[0]});
     }
     for (int k = 0; k < 12; ++k) dirs.push_back({coord(rng), coord(rng)});
     for (const Vec2& d : dirs) {
@@ -377,9 +377,9 @@ void check_labels_against_brute_force(const std::string& text, std::mt19937_64& 
     }
     // Membership: labels (W = W**) against Carathéodory, on generators, sums and random wrenches.
     std::vector<std::array<Rational, 3>> ws;
-    for (const Wrench& w : g) ws.push_back({w.fx, w.fy, w.m});
+    for (const Vec3q& w : g) ws.push_back({w[0], w[1], w[2]});
     for (std::size_t i = 0; i + 1 < g.size(); ++i)
-      ws.push_back({g[i].fx - g[i + 1].fx, g[i].fy - g[i + 1].fy, g[i].m - g[i + 1].m});
+      ws.push_back({g[i][0] - g[i + 1][0], g[i][1] - g[i + 1][1], g[i][2] - g[i + 1][2]});
     for (int k = 0; k < 10; ++k) ws.push_back({coord(rng), coord(rng), coord(rng)});
     ws.push_back({0, 0, 1});
     ws.push_back({0, 0, -1});
@@ -397,7 +397,7 @@ void check_labels_against_brute_force(const std::string& text, std::mt19937_64& 
       ASSERT_EQ(in_dual, brute) << "dual " << w[0] << "," << w[1] << "," << w[2];
     }
     if (d.reference) {  // §6.2: every generator has positive moment about the reference point
-      for (const Wrench& w : g) ASSERT_GT(w.m - (d.reference->x * w.fy - d.reference->y * w.fx), 0);
+      for (const Vec3q& w : g) ASSERT_GT(w[2] - (d.reference->x * w[1] - d.reference->y * w[0]), 0);
     }
   }
 }
@@ -422,7 +422,7 @@ TEST(LabelsDifferential, LoadReadingAgreesWithEquilibrium) {
     text.insert(text.rfind('}'), ", " + load);
     const Scene s = read_scene(text, Input_limits{});
     const Moment_labels l = moment_labels(s, Reading::friction);
-    const Vec3 w = as_vec(load_wrench(s));
+    const Vec3q w = load_wrench(s);
     EXPECT_EQ(in_cone(l.cone, {-w[0], -w[1], -w[2]}), decide_equilibrium(s).balanced) << text;
   }
 }
@@ -461,7 +461,7 @@ TEST(LabelsRegression, ArcWithRotatedEdgeCycle) {
   EXPECT_EQ(l.cone.dual.size(), 2u);
   EXPECT_TRUE(region_contains(l.plus, P("0", "-4"))) << region_json(l.plus);
   EXPECT_TRUE(region_contains(l.minus, P("-4", "-4"))) << region_json(l.minus);
-  const Vec3 w = as_vec(load_wrench(s));
+  const Vec3q w = load_wrench(s);
   EXPECT_EQ(in_cone(l.cone, {-w[0], -w[1], -w[2]}), decide_equilibrium(s).balanced);
   std::mt19937_64 rng(3);
   check_labels_against_brute_force(text, rng, "arc_rotated");

@@ -34,7 +34,7 @@ void compare_labels(const std::string& text, Tally& t, const std::string& tag) {
   const Scene s = read_scene(text, Input_limits{});
   for (Reading r : {Reading::friction, Reading::frictionless}) {
     const Moment_labels exact = moment_labels(s, r);
-    std::vector<Wrench> w;
+    std::vector<Vec3q> w;
     for (const Generator& g : generators(s, r)) w.push_back(g.w);
     const Force_dual exact_dual = force_dual(exact, w);
     const std::vector<fl::Bounded3> g = twin_generators(s, r);
@@ -53,7 +53,7 @@ void compare_labels(const std::string& text, Tally& t, const std::string& tag) {
     // Dual points of the generators.
     for (std::size_t i = 0; i < g.size(); ++i) {
       const fl::Dual_point_twin fp = fl::dual_point(g[i]);
-      const Dual_point ep = dual_point(as_vec(w[i]));
+      const Dual_point ep = dual_point(w[i]);
       if (fp.sheet == '?') continue;
       ASSERT_EQ(fp.sheet, ep.sheet) << where << " generator " << i;
       if (fp.sheet == 'i') { ASSERT_TRUE(same_direction(fp.at, ep.at)) << where; }
@@ -71,15 +71,15 @@ void compare_labels(const std::string& text, Tally& t, const std::string& tag) {
       const char fl_label = fl::label_of(g, to_bounded(c.x), to_bounded(c.y));
       if (fl_label == '?') continue;
       bool pos = false, neg = false;
-      for (const Wrench& x : w) {
-        const Rational m = x.m - c.x * x.fy + c.y * x.fx;
+      for (const Vec3q& x : w) {
+        const Rational m = x[2] - c.x * x[1] + c.y * x[0];
         pos |= m > 0;
         neg |= m < 0;
       }
       const char truth = pos && neg ? '0' : (pos ? '+' : (neg ? '-' : 'b'));
       ASSERT_EQ(fl_label, truth) << where << " at (" << c.x << ", " << c.y << ")";
     }
-    for (const Vec3& x : std::vector<Vec3>{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}, {1, 1, Rational(1, 3)}}) {
+    for (const Vec3q& x : std::vector<Vec3q>{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}, {1, 1, Rational(1, 3)}}) {
       const fl::Truth m = fl::in_cone(f, {to_bounded(x[0]), to_bounded(x[1]), to_bounded(x[2])});
       if (m != fl::Truth::uncertain) { ASSERT_EQ(m == fl::Truth::yes, in_cone(exact.cone, x)) << where; }
     }
@@ -153,7 +153,7 @@ TEST(LabelsTwin, EveryWrongSliceIsCaught) {
       if (f.infinity.shape == fl::Arc2::Shape::wedge)
         caught(f, e, file + ": arc reversed", [](fl::Labels_twin& m) { std::swap(m.infinity.extreme[0], m.infinity.extreme[1]); });
       // The force dual's sheets go through the same slicing: a moved corner there is caught too.
-      std::vector<Wrench> w;
+      std::vector<Vec3q> w;
       for (const Generator& x : generators(s, r)) w.push_back(x.w);
       const std::vector<fl::Bounded3> g = twin_generators(s, r);
       fl::Dual_twin d = fl::force_dual(g, compute_dual_cone(fl::Float_kernel(g)));

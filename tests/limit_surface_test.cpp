@@ -41,7 +41,7 @@ std::string describe(const Support& s) {
 Support barbell() { return support_of({{0, -1, rq(1, 2)}, {0, 1, rq(1, 2)}}); }
 
 Rational dot(const Vec3z& q, const Vec3q& x) { return q[0] * x[0] + q[1] * x[1] + q[2] * x[2]; }
-Rational dotq(const Vec3q& q, const Vec3q& x) { return q[0] * x[0] + q[1] * x[1] + q[2] * x[2]; }
+using wrenchkit::dot;  // and the vocabulary's dot of two rational vectors
 
 // The V-rep and H-rep agree: every vertex satisfies every facet, with equality exactly on the facet's
 // own vertices (at least 3, not collinear); normals are distinct; facets come in ± pairs (central symmetry).
@@ -336,11 +336,11 @@ TEST(LimitSurface, InclusionChainOnRandomTwists) {
       // The faces attain the support values, and the H-rep agrees (3-D polytopes).
       for (Side side : {Side::inner, Side::outer}) {
         const Ls_face fc = m.face(side, q);
-        for (const Vec3q& x : fc.vertices) EXPECT_EQ(dotq(q, x), side == Side::inner ? hi : ho);
+        for (const Vec3q& x : fc.vertices) EXPECT_EQ(dot(q, x), side == Side::inner ? hi : ho);
       }
       if (in.dimension == 3) {
         Rational best = 0;
-        for (const Vec3q& x : in.vertices) best = std::max(best, dotq(q, x));
+        for (const Vec3q& x : in.vertices) best = std::max(best, dot(q, x));
         EXPECT_EQ(best, hi);
       }
       // The sqrt bracket of the true power brackets h too.

@@ -32,7 +32,7 @@ std::string with_load(const stress::Family_scene& s) {
 }
 
 Vec3q load_of(const stress::Family_scene& s) {
-  return as_vec(load_wrench(read_scene(with_load(s), Input_limits{})));
+  return load_wrench(read_scene(with_load(s), Input_limits{}));
 }
 
 // 3–6 support points ε off a line, the load p(q)·(1 ± ε) for a rotation q about a point of the line: slides iff

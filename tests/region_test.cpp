@@ -319,7 +319,7 @@ TEST(RegionPower, RandomRegionsAgainstAnIndependentQuadrature) {
       FAIL() << e.what() << "\n" << text;
     }
     const Support_region& r = s.support->regions[0];
-    const Rational mu = region_mu(*s.support, r);
+    const Rational mu = s.support->mu_of(r);
     for (int k = 0; k < 4; ++k) {
       // Rotation centres inside, on a vertex, and outside.
       const Vec2 c = k == 0 ? Vec2{Rational(1, 3), Rational(-1, 5)} : k == 1 ? r.outline[0] : Vec2{Rational(7), Rational(5, 2)};

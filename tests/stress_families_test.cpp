@@ -44,7 +44,7 @@ bool closure(const std::string& text, Property p = Property::force_closure) {
 }
 
 bool brute_closure(const std::string& text, Reading r = Reading::friction) {
-  std::vector<Wrench> w;
+  std::vector<Vec3q> w;
   for (const Generator& g : generators(scene_of(text), r)) w.push_back(g.w);
   return test::brute_force_closure(w);
 }
@@ -373,7 +373,7 @@ bool hybrid_labels_match_exact(const std::string& text, const std::string& tag) 
   for (Labels_question question : {Labels_question::labels, Labels_question::reuleaux}) {
     Labels_query q;
     q.question = question;
-    if (question == Labels_question::labels) q.resultant = Vec3{1, -2, Rational(3, 7)};
+    if (question == Labels_question::labels) q.resultant = Vec3q{1, -2, Rational(3, 7)};
     else q.motion = rotation_twist({Rational(1, 3), Rational(-2)}, 1);
     Request exact, hybrid;
     exact.mode = Mode::exact;

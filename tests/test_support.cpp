@@ -126,26 +126,20 @@ std::string dump_failure(const std::string& scene_text, const std::string& tag) 
 }
 
 namespace {
-using V = std::array<Rational, 3>;
-V vec(const Wrench& w) { return {w.fx, w.fy, w.m}; }
-V cross(const V& a, const V& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Rational dot(const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-bool zero(const V& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
+using V = Vec3q;
 }  // namespace
 
-int brute_force_rank(const std::vector<Wrench>& g) {
+int brute_force_rank(const std::vector<Vec3q>& g) {
   const std::size_t n = g.size();
   int r = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!zero(vec(g[i]))) r = std::max(r, 1);
+    if (!is_zero(g[i])) r = std::max(r, 1);
     for (std::size_t j = i + 1; j < n; ++j) {
-      const V c = cross(vec(g[i]), vec(g[j]));
-      if (zero(c)) continue;
+      const V c = cross(g[i], g[j]);
+      if (is_zero(c)) continue;
       r = std::max(r, 2);
       for (std::size_t k = j + 1; k < n; ++k)
-        if (dot(c, vec(g[k])) != 0) return 3;
+        if (dot(c, g[k]) != 0) return 3;
     }
   }
   return r;
@@ -170,37 +164,33 @@ Cli_result run_cli(const std::string& exe, const std::string& env, const std::st
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
 }
 
-bool brute_force_in_cone(const std::vector<Wrench>& g, const std::array<Rational, 3>& x) {
-  using V = std::array<Rational, 3>;
-  if (x[0] == 0 && x[1] == 0 && x[2] == 0) return true;
-  auto vec = [](const Wrench& a) { return V{a.fx, a.fy, a.m}; };
+bool brute_force_in_cone(const std::vector<Vec3q>& g, const std::array<Rational, 3>& x) {
+  using V = Vec3q;
+  if (is_zero(x)) return true;
   auto det = [](const V& a, const V& b, const V& c) -> Rational {
     return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
   };
-  auto cross = [](const V& a, const V& b) {
-    return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  };
   const std::size_t n = g.size();
   for (std::size_t i = 0; i < n; ++i) {  // x = λ g_i
-    const V a = vec(g[i]);
+    const V a = g[i];
     const V c = cross(a, x);
-    if (c[0] == 0 && c[1] == 0 && c[2] == 0 && a[0] * x[0] + a[1] * x[1] + a[2] * x[2] > 0) return true;
+    if (is_zero(c) && dot(a, x) > 0) return true;
   }
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {  // x = λ g_i + μ g_j in their plane
-      const V a = vec(g[i]), b = vec(g[j]), nrm = cross(a, b);
-      if (nrm[0] == 0 && nrm[1] == 0 && nrm[2] == 0) continue;
-      if (nrm[0] * x[0] + nrm[1] * x[1] + nrm[2] * x[2] != 0) continue;
+      const V a = g[i], b = g[j], nrm = cross(a, b);
+      if (is_zero(nrm)) continue;
+      if (dot(nrm, x) != 0) continue;
       // λ = (x × b)·n / |n|², μ = (a × x)·n / |n|²: signs of the numerators decide.
       const V xb = cross(x, b), ax = cross(a, x);
-      const Rational l = xb[0] * nrm[0] + xb[1] * nrm[1] + xb[2] * nrm[2];
-      const Rational m = ax[0] * nrm[0] + ax[1] * nrm[1] + ax[2] * nrm[2];
+      const Rational l = dot(xb, nrm);
+      const Rational m = dot(ax, nrm);
       if (l >= 0 && m >= 0) return true;
     }
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j)
       for (std::size_t k = j + 1; k < n; ++k) {  // Cramer
-        const V a = vec(g[i]), b = vec(g[j]), c = vec(g[k]);
+        const V a = g[i], b = g[j], c = g[k];
         const Rational d = det(a, b, c);
         if (d == 0) continue;
         const Rational l1 = det(x, b, c) / d, l2 = det(a, x, c) / d, l3 = det(a, b, x) / d;
@@ -209,15 +199,15 @@ bool brute_force_in_cone(const std::vector<Wrench>& g, const std::array<Rational
   return false;
 }
 
-bool brute_force_closure(const std::vector<Wrench>& g) {
+bool brute_force_closure(const std::vector<Vec3q>& g) {
   if (brute_force_rank(g) < 3) return false;
   for (std::size_t i = 0; i < g.size(); ++i)
     for (std::size_t j = i + 1; j < g.size(); ++j) {
-      const V c = cross(vec(g[i]), vec(g[j]));
-      if (zero(c)) continue;
+      const V c = cross(g[i], g[j]);
+      if (is_zero(c)) continue;
       for (int s : {1, -1}) {
         bool all = true;
-        for (const Wrench& w : g) all = all && s * sgn(dot(c, vec(w))) >= 0;
+        for (const Vec3q& w : g) all = all && s * sgn(dot(c, w)) >= 0;
         if (all) return false;
       }
     }

@@ -66,10 +66,10 @@ std::string dump_failure(const std::string& scene_text, const std::string& tag);
 
 // Brute force (theory.md §3 algorithm 2): rank, and force closure ⇔ rank 3 and no candidate ray
 // ±(g_i × g_j) has power ≥ 0 against every generator. O(k³), exact.
-int brute_force_rank(const std::vector<Wrench>& g);
-bool brute_force_closure(const std::vector<Wrench>& g);
+int brute_force_rank(const std::vector<Vec3q>& g);
+bool brute_force_closure(const std::vector<Vec3q>& g);
 // x ∈ pos(g) by Carathéodory: x is a non-negative combination of ≤ 3 generators. O(k³), exact.
-bool brute_force_in_cone(const std::vector<Wrench>& g, const std::array<Rational, 3>& x);
+bool brute_force_in_cone(const std::vector<Vec3q>& g, const std::array<Rational, 3>& x);
 
 // Runs a command line `env exe args` with stdin_text on standard input, in a per-process scratch
 // folder under the system temp dir named after `tag`; returns the exit code and both outputs.

@@ -131,9 +131,9 @@ std::string number(std::mt19937_64& rng) {
   }
 }
 
-Vec3 rationals(const Wrench& w) { return {w.fx, w.fy, w.m}; }
+Vec3q rationals(const Vec3q& w) { return {w[0], w[1], w[2]}; }
 
-int mpq_det_sign(const Vec3& a, const Vec3& b, const Vec3& c) {
+int mpq_det_sign(const Vec3q& a, const Vec3q& b, const Vec3q& c) {
   return sgn(a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]));
 }
 
@@ -162,14 +162,14 @@ TEST(ExactKernelRows, SceneRowsArePositiveMultiplesOfTheGeneratorsAndSignsAgreeW
     ++scenes;
     for (Reading reading : {Reading::friction, Reading::frictionless}) {
       const std::vector<Generator> gens = generators(scene, reading);
-      std::vector<Wrench> ws;
+      std::vector<Vec3q> ws;
       for (const Generator& g : gens) ws.push_back(g.w);
       const Exact_kernel from_scene(scene, reading), from_wrenches(ws);
       ASSERT_EQ(from_scene.size(), gens.size());
       for (std::size_t i = 0; i < gens.size(); ++i) {
         const std::array<Integer, 3> r = from_scene.row(i);
-        const Vec3 g = rationals(gens[i].w);
-        const Vec3 x = cross(g, {Rational(r[0]), Rational(r[1]), Rational(r[2])});
+        const Vec3q g = rationals(gens[i].w);
+        const Vec3q x = cross(g, {Rational(r[0]), Rational(r[1]), Rational(r[2])});
         ASSERT_TRUE(x[0] == 0 && x[1] == 0 && x[2] == 0) << test::dump_failure(text, "kernel_rows");
         ASSERT_GT(g[0] * r[0] + g[1] * r[1] + g[2] * r[2], 0) << test::dump_failure(text, "kernel_rows");
         const Integer top = std::max({abs(r[0]), abs(r[1]), abs(r[2])});
@@ -178,7 +178,7 @@ TEST(ExactKernelRows, SceneRowsArePositiveMultiplesOfTheGeneratorsAndSignsAgreeW
       const std::size_t m = gens.size();
       for (std::size_t i = 0; i < m; ++i)
         for (std::size_t j = 0; j < m; ++j) {
-          const Vec3 x = cross(rationals(gens[i].w), rationals(gens[j].w));
+          const Vec3q x = cross(rationals(gens[i].w), rationals(gens[j].w));
           const Sign parallel = (x[0] == 0 && x[1] == 0 && x[2] == 0) ? Sign::zero : Sign::positive;
           ASSERT_EQ(from_scene.cross_sign(i, j), parallel) << test::dump_failure(text, "kernel_rows");
           ASSERT_EQ(from_wrenches.cross_sign(i, j), parallel) << test::dump_failure(text, "kernel_rows");

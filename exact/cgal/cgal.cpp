@@ -142,8 +142,8 @@ Region both_region(const Both_set& b) {
   return r;
 }
 
-std::vector<Wrench> wrenches(const Scene& scene, Reading reading) {
-  std::vector<Wrench> w;
+std::vector<Vec3q> wrenches(const Scene& scene, Reading reading) {
+  std::vector<Vec3q> w;
   for (const Generator& g : generators(scene, reading)) w.push_back(g.w);
   return w;
 }
@@ -180,7 +180,7 @@ Force_dual_2 to_cgal(const Force_dual& d) {
 }
 
 Force_dual_2 force_dual_2(const Scene& scene, Reading reading, Mode mode) {
-  const std::vector<Wrench> g = wrenches(scene, reading);
+  const std::vector<Vec3q> g = wrenches(scene, reading);
   return to_cgal(force_dual(moment_labels(g, mode), g));
 }
 

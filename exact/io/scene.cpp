@@ -148,7 +148,7 @@ class Reader {
     return {number(v.items[0], path + "[0]", approx2), number(v.items[1], path + "[1]", approx2 ? approx2 + 1 : nullptr)};
   }
 
-  Wrench wrench3(const Value& v, const std::string& path, fl::Bounded* approx3 = nullptr,
+  Vec3q wrench3(const Value& v, const std::string& path, fl::Bounded* approx3 = nullptr,
                  const char* names = "[fx, fy, m]") const {
     if (v.type != Type::array || v.items.size() != 3)
       fail(path, std::string("expected an array of 3 numbers ") + names + ", got " +
@@ -187,7 +187,7 @@ class Reader {
       c.kind = Contact::Kind::wrench;
       fl::Bounded w[3];
       c.wrench = wrench3(*v.find("wrench"), path + ".wrench", w);
-      if (c.wrench.fx == 0 && c.wrench.fy == 0 && c.wrench.m == 0)
+      if (c.wrench[0] == 0 && c.wrench[1] == 0 && c.wrench[2] == 0)
         fail(path + ".wrench", "zero wrench");
       c.twin.is_wrench = true;
       c.twin.fx = w[0];
@@ -349,11 +349,11 @@ class Reader {
       r.force = number(*f, path + ".force");
     } else if (p.type == Type::object) {
       keys(p, pp, {"linear"});
-      const Wrench w = wrench3(required(p, pp, "linear"), pp + ".linear", nullptr, "[a, b, c]");
+      const Vec3q w = wrench3(required(p, pp, "linear"), pp + ".linear", nullptr, "[a, b, c]");
       if (v.find("force"))
         fail(path + ".force", "not allowed with a linear pressure (the region's force is the pressure's integral)");
       r.uniform = false;
-      r.linear = {w.fx, w.fy, w.m};
+      r.linear = w;
     } else {
       fail(pp, std::string("expected \"uniform\" or {\"linear\": [a, b, c]}, got ") + json::type_name(p.type));
     }

@@ -9,18 +9,10 @@
 
 #include "exact/numbers/limits.h"
 #include "exact/numbers/rational.h"
+#include "exact/numbers/vectors.h"
 #include "float/closure_twin.h"
 
 namespace wrenchkit {
-
-struct Vec2 {
-  Rational x, y;
-};
-
-// A planar wrench (fx, fy, m), m about the origin (theory.md §1.2).
-struct Wrench {
-  Rational fx, fy, m;
-};
 
 struct Contact {
   enum class Kind { point, wrench };
@@ -28,7 +20,7 @@ struct Contact {
   Vec2 at;          // point contact: the contact point
   Vec2 normal;      // point contact: inward normal, nonzero, any length
   Rational mu;      // point contact: Coulomb coefficient ≥ 0 (0 = frictionless)
-  Wrench wrench;    // wrench generator: nonzero
+  Vec3q wrench;    // wrench generator: nonzero
   std::string name;
   // The same contact as certified doubles for the float twin [FL-4], computed by read_scene from
   // the digits; `has_twin` false (a scene built in code) means: derive it from the rationals.
@@ -58,7 +50,7 @@ struct Load {
   enum class Kind { force, wrench, gravity };
   Kind kind = Kind::force;
   Vec2 force, at;   // force at a point
-  Wrench wrench;    // a wrench
+  Vec3q wrench;    // a wrench
   Rational weight;  // gravity: weight > 0 at body.com, acting in −y
 };
 
@@ -100,11 +92,20 @@ struct Support {
   std::vector<Support_region> regions;   // their pressure is always known
   std::optional<Rational> weight;        // W > 0; required when a force is unknown
   std::optional<Vec2> pressure_center;   // c
+  // The μ rule (docs/scene-format.md): a point's or a region's own coefficient, else the support's, else 0.
+  const Rational& mu_of(const Support_point& p) const { return effective_mu(p.mu); }
+  const Rational& mu_of(const Support_region& r) const { return effective_mu(r.mu); }
   // Every point's force is given: one distribution.
   bool known() const {
     for (const Support_point& p : points)
       if (!p.force) return false;
     return true;
+  }
+
+ private:
+  const Rational& effective_mu(const std::optional<Rational>& own) const {
+    static const Rational zero;
+    return own ? *own : mu ? *mu : zero;
   }
 };
 

@@ -35,7 +35,7 @@ std::string write_scene(const Scene& s) {
     const Contact& c = built ? *built : s.contacts[i];
     o += i ? ",\n  " : "\n  ";
     if (c.kind == Contact::Kind::wrench)
-      o += "{\"wrench\": [" + q(c.wrench.fx) + ", " + q(c.wrench.fy) + ", " + q(c.wrench.m) + "]";
+      o += "{\"wrench\": [" + q(c.wrench[0]) + ", " + q(c.wrench[1]) + ", " + q(c.wrench[2]) + "]";
     else
       o += "{\"at\": " + pt(c.at) + ", \"normal\": " + pt(c.normal) + ", \"mu\": " + q(c.mu);
     if (!c.name.empty()) o += ", \"name\": " + json::quote(c.name);
@@ -48,7 +48,7 @@ std::string write_scene(const Scene& s) {
     switch (l.kind) {
       case Load::Kind::force: o += "{\"force\": " + pt(l.force) + ", \"at\": " + pt(l.at) + "}"; break;
       case Load::Kind::wrench:
-        o += "{\"wrench\": [" + q(l.wrench.fx) + ", " + q(l.wrench.fy) + ", " + q(l.wrench.m) + "]}";
+        o += "{\"wrench\": [" + q(l.wrench[0]) + ", " + q(l.wrench[1]) + ", " + q(l.wrench[2]) + "]}";
         break;
       case Load::Kind::gravity: o += "{\"gravity\": " + q(l.weight) + "}"; break;
     }

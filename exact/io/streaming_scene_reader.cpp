@@ -36,7 +36,7 @@ void zero(Rational& q) {
 // A reused contact back to the state of a default-constructed one (no allocation).
 void reset(Contact& c) {
   c.kind = Contact::Kind::point;
-  for (Rational* q : {&c.at.x, &c.at.y, &c.normal.x, &c.normal.y, &c.mu, &c.wrench.fx, &c.wrench.fy, &c.wrench.m})
+  for (Rational* q : {&c.at.x, &c.at.y, &c.normal.x, &c.normal.y, &c.mu, &c.wrench[0], &c.wrench[1], &c.wrench[2]})
     zero(*q);
   c.name.clear();
   c.twin = fl::Bounded_contact{};
@@ -214,13 +214,13 @@ class Stream {
   }
 
   // [fx, fy, m]
-  void wrench3(Wrench& w, std::size_t level) {
+  void wrench3(Vec3q& w, std::size_t level) {
     open('[', level);
-    exact(w.fx);
+    exact(w[0]);
     expect(',');
-    exact(w.fy);
+    exact(w[1]);
     expect(',');
-    exact(w.m);
+    exact(w[2]);
     expect(']');
   }
 
@@ -315,7 +315,7 @@ class Stream {
         }
         case kMu: mu_sign = contact_number(c, 4, c.mu, c.twin.mu); break;
         case kWrench: {
-          Rational* q[] = {&c.wrench.fx, &c.wrench.fy, &c.wrench.m};
+          Rational* q[] = {&c.wrench[0], &c.wrench[1], &c.wrench[2]};
           fl::Bounded* b[] = {&c.twin.fx, &c.twin.fy, &c.twin.m};
           zero_wrench = contact_numbers(c, level + 1, 0, q, b, 3);
           break;
@@ -346,7 +346,7 @@ class Stream {
   void load(Load& l) {
     enum : unsigned { kForce = 1, kAt = 2, kWrench = 4, kGravity = 8 };
     unsigned seen = 0;
-    for (Rational* q : {&l.force.x, &l.force.y, &l.at.x, &l.at.y, &l.wrench.fx, &l.wrench.fy, &l.wrench.m, &l.weight})
+    for (Rational* q : {&l.force.x, &l.force.y, &l.at.x, &l.at.y, &l.wrench[0], &l.wrench[1], &l.wrench[2], &l.weight})
       zero(*q);
     object(1, [&](std::string_view key) {
       const unsigned bit = key == "force"     ? kForce
@@ -494,9 +494,9 @@ class Stream {
             object(4, [&](std::string_view k) {
               if (k != "linear" || has_linear) defer();
               has_linear = true;
-              Wrench w;
+              Vec3q w;
               wrench3(w, 5);
-              r.linear = {std::move(w.fx), std::move(w.fy), std::move(w.m)};
+              r.linear = std::move(w);
             });
             if (!has_linear) defer();
             linear = true;

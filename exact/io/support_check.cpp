@@ -6,8 +6,6 @@ namespace wrenchkit {
 
 namespace {
 
-Rational cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
-Rational dot(const Vec2& a, const Vec2& b) { return a.x * b.x + a.y * b.y; }
 
 // Is c in the convex hull of `points` (nonempty)? The minimal wedge [a, b] (counter-clockwise, angle < π)
 // holding every p − c so far; 0 ∈ conv{p − c} exactly when some p − c is zero or no such wedge exists.

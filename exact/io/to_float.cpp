@@ -15,9 +15,9 @@ std::vector<fl::Bounded_contact> to_bounded(const Scene& scene) {
     fl::Bounded_contact b;
     if (c.kind == Contact::Kind::wrench) {
       b.is_wrench = true;
-      b.fx = to_bounded(c.wrench.fx);
-      b.fy = to_bounded(c.wrench.fy);
-      b.m = to_bounded(c.wrench.m);
+      b.fx = to_bounded(c.wrench[0]);
+      b.fy = to_bounded(c.wrench[1]);
+      b.m = to_bounded(c.wrench[2]);
     } else {
       b.ax = to_bounded(c.at.x);
       b.ay = to_bounded(c.at.y);

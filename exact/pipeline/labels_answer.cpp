@@ -7,17 +7,17 @@ namespace wrenchkit {
 
 namespace {
 
-fl::Bounded3 twin_of(const Vec3& w) { return {to_bounded(w[0]), to_bounded(w[1]), to_bounded(w[2])}; }
+fl::Bounded3 twin_of(const Vec3q& w) { return {to_bounded(w[0]), to_bounded(w[1]), to_bounded(w[2])}; }
 
 // A certified membership from the twin, or undecided.
-bool twin_in_cone(const fl::Labels_twin& l, const Vec3& w, const char* what) {
+bool twin_in_cone(const fl::Labels_twin& l, const Vec3q& w, const char* what) {
   const fl::Truth t = fl::in_cone(l, twin_of(w));
   if (t == fl::Truth::uncertain) throw Undecided_error(std::string("the float twin could not decide ") + what);
   return t == fl::Truth::yes;
 }
 
 // Reuleaux's modes from certified signs (moment_labels.h's contact_modes, in floating point).
-Mode_answer twin_contact_modes(const Scene& scene, const Vec3& t) {
+Mode_answer twin_contact_modes(const Scene& scene, const Vec3q& t) {
   Mode_answer a;
   const fl::Bounded3 bt = twin_of(t);
   for (const fl::Bounded_contact& c : to_bounded(scene)) {
@@ -38,7 +38,7 @@ Mode_answer twin_contact_modes(const Scene& scene, const Vec3& t) {
   return a;
 }
 
-Vec3 negated(const Vec3& w) { return {-w[0], -w[1], -w[2]}; }
+Vec3q negated(const Vec3q& w) { return {-w[0], -w[1], -w[2]}; }
 
 void decide_exactly(Labels_item& s, const Labels_query& q) {
   if (s.mode == Mode::hybrid && q.question != Labels_question::dual) {
@@ -92,7 +92,7 @@ void decide_labels(Labels_item& s, const Request& r, const Labels_query& q) {
   s.mode = r.mode;
   s.reading = q.question == Labels_question::reuleaux ? Reading::frictionless : Reading::friction;
   // The load is read on the labels of the friction cone only (Reuleaux's reading has no load).
-  if (s.scene.load && q.question != Labels_question::reuleaux) s.load = as_vec(load_wrench(s.scene));
+  if (s.scene.load && q.question != Labels_question::reuleaux) s.load = load_wrench(s.scene);
   if (s.mode == Mode::float_only) decide_by_twin(s, q);
   else decide_exactly(s, q);
 }

@@ -27,8 +27,8 @@ enum class Labels_question { labels, dual, reuleaux };
 
 struct Labels_query {
   Labels_question question = Labels_question::labels;
-  std::optional<Vec3> resultant;  // labels: is this wrench a possible resultant?
-  std::optional<Vec3> motion;     // reuleaux: the per-contact modes of this twist
+  std::optional<Vec3q> resultant;  // labels: is this wrench a possible resultant?
+  std::optional<Vec3q> motion;     // reuleaux: the per-contact modes of this twist
 };
 
 struct Labels_item {
@@ -41,7 +41,7 @@ struct Labels_item {
   // hybrid labels and Reuleaux, whose cone comes from moment_labels(scene, …) (integer rows first).
   std::vector<Generator> generators;
   // exact and hybrid: the exact constructions
-  std::vector<Wrench> wrenches;
+  std::vector<Vec3q> wrenches;
   Moment_labels labels;
   std::optional<Force_dual> dual;
   // float: the twin's
@@ -52,7 +52,7 @@ struct Labels_item {
   std::optional<fl::Dual_point_twin> twin_antipode;   // of the load
   // the queries, in every mode
   std::optional<bool> resultant_possible;
-  std::optional<Vec3> load;            // the scene's load as a wrench
+  std::optional<Vec3q> load;            // the scene's load as a wrench
   std::optional<bool> load_balanced;   // −load ∈ W (theory.md §5.5)
   std::optional<Mode_answer> modes;    // reuleaux with a motion
   // Nothing labeled, infinity included: force closure (friction), form closure (frictionless).

@@ -222,8 +222,8 @@ Motion_result motion_of(const Scene& scene, std::string_view text, int sides) {
   q.question = Support_question::limit_surface;
   q.sides = sides;
   q.polytopes = false;
-  const Wrench l = load_wrench(scene);
-  q.load = Vec3q{l.fx, l.fy, l.m};
+  const Vec3q l = load_wrench(scene);
+  q.load = Vec3q{l[0], l[1], l[2]};
   const Support_item r = answer_support(scene, text, "", request, q);
   Motion_result m;
   m.check_failed = r.status == Status::check_failed;
@@ -347,9 +347,9 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
     w.member("force_closure", c.force.holds).member("form_closure", c.form.holds);
     w.key("rank").object().member("force", c.force.rank).member("form", c.form.rank).end_object();
     if (eq) {
-      const Wrench& l = eq->answer.load;
+      const Vec3q& l = eq->answer.load;
       w.member("equilibrium", eq->answer.balanced);
-      w.key("load").array().rational(l.fx).rational(l.fy).rational(l.m).end_array();
+      w.key("load").array().rational(l[0]).rational(l[1]).rational(l[2]).end_array();
     }
     write_labels(w.key("labels").object(), labels);
     w.end_object();

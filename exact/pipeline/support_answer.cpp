@@ -133,7 +133,7 @@ std::vector<Vec3q> slide_candidates(const Support& s, const std::vector<Rational
   if (p[0] != 0 || p[1] != 0 || p[2] != 0) c.push_back(p);
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     const Support_point& pt = s.points[i];
-    if ((pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0))) * f[i] == 0) continue;
+    if (s.mu_of(pt) * f[i] == 0) continue;
     c.push_back({pt.at.y, -pt.at.x, Rational(1)});  // v(r) = (vx − w y, vy + w x) = 0
     c.push_back({-pt.at.y, pt.at.x, Rational(-1)});
     break;
@@ -204,7 +204,7 @@ void certify_over(const Support_query& q, Support_item& r) {
     std::vector<Rational> coef(s.points.size());
     for (std::size_t i = 0; i < coef.size(); ++i) {
       const Support_point& pt = s.points[i];
-      coef[i] = (pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0))) * u[i];
+      coef[i] = s.mu_of(pt) * u[i];
     }
     const F_optimum o = maximise_over(s, a, coef);
     if (t[0] * p[0] + t[1] * p[1] + t[2] * p[2] >= o.value) r.certificate = slides_for_every_certificate(p, t, u, o.dual);

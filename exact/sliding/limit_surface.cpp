@@ -21,8 +21,6 @@ Integer lcm_of(const Integer& a, const Integer& b) {
   return r;
 }
 
-bool is_zero(const Vec3z& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
-bool is_zero(const Vec3q& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
 
 Vec3z neg(const Vec3z& v) { return {-v[0], -v[1], -v[2]}; }
 
@@ -108,7 +106,7 @@ Ls_support merge_support(const Support& s, const std::vector<Rational>* distribu
     const Support_point& p = s.points[i];
     if (!distribution && !p.force) throw std::invalid_argument("merge_support: a force is unknown; give a distribution");
     const Rational& force = distribution ? (*distribution)[i] : *p.force;
-    const Rational mu = p.mu ? *p.mu : (s.mu ? *s.mu : Rational(0));
+    const Rational mu = s.mu_of(p);
     r.total_force += force;
     r.weighted_force_sum.x += force * p.at.x;
     r.weighted_force_sum.y += force * p.at.y;

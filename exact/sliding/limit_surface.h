@@ -42,9 +42,6 @@ constexpr std::uint64_t kMaxCandidates = 400000;  // ≈ 1 GB (10 points, N = 12
 // memory bound (Polygonal_ls::table_bytes) exceeds this (docs/scene-format.md "Limits").
 constexpr std::uint64_t kMaxTableBytes = std::uint64_t(512) << 20;  // 512 MiB: ≈ 2 900 integer points at N = 128
 
-using Vec3q = std::array<Rational, 3>;
-using Vec3z = std::array<Integer, 3>;
-
 // The support after merging coincident points and dropping ρ = 0: ρ_i = μ_i f_i > 0.
 struct Ls_point {
   Vec2 at;

@@ -25,7 +25,7 @@ std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<R
     Rational bound;
     for (std::size_t i = 0; i < s.points.size(); ++i) {
       const Support_point& pt = s.points[i];
-      const Rational mu = pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0));
+      const Rational mu = s.mu_of(pt);
       bound += mu * f[i] * u[i];
     }
     return q[0] * p[0] + q[1] * p[1] + q[2] * p[2] >= bound;
@@ -72,7 +72,7 @@ std::optional<Support_witness> smoothed_witness(const Support& s, const std::vec
   double rho_sum = 0;
   for (std::size_t i = 0; i < k; ++i) {
     const Support_point& pt = s.points[i];
-    rq[i] = (pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0))) * f[i];
+    rq[i] = s.mu_of(pt) * f[i];
     x[i] = pt.at.x.get_d(), y[i] = pt.at.y.get_d(), rho[i] = rq[i].get_d();
     carrying += rq[i] > 0;
     rho_sum += rho[i];
@@ -266,7 +266,7 @@ Precise_witness precise_witness(const Support& s, const std::vector<Rational>& f
   pts.reserve(s.points.size());
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     const Support_point& pt = s.points[i];
-    pts.push_back({pt.at, (pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0))) * f[i]});
+    pts.push_back({pt.at, s.mu_of(pt) * f[i]});
   }
   Precise_motion m = precise_motion(pts, p);
   Precise_witness w;

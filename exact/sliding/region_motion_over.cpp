@@ -9,7 +9,6 @@ namespace wrenchkit {
 
 namespace {
 
-Rational mu_of(const Support& s, const Support_point& p) { return p.mu ? *p.mu : (s.mu ? *s.mu : Rational(0)); }
 
 // The support with the points' forces f (a distribution of F): the known-forces question over the regions.
 Support with_forces(const Support& s, const std::vector<Rational>& f) {
@@ -26,7 +25,7 @@ bool slides_for_every_regions(const Support& s, const Admissible& a, const Vec3q
   const Rational power = q[0] * p[0] + q[1] * p[1] + q[2] * p[2];
   std::vector<Rational> u = speed_bounds(s, q);
   std::vector<Rational> coef(s.points.size());
-  for (std::size_t i = 0; i < coef.size(); ++i) coef[i] = mu_of(s, s.points[i]) * u[i];
+  for (std::size_t i = 0; i < coef.size(); ++i) coef[i] = s.mu_of(s.points[i]) * u[i];
   const F_optimum o = maximise_over(s, a, coef);
   if (o.value > power) return false;
   Region_slide_blocks b = region_slide_blocks(s, q, Rational(power - o.value), max_cells);
@@ -50,7 +49,7 @@ bool stick_over_cells(const Support& s, const Admissible& a, const Vec3q& p, Reg
   std::vector<Region_cells> cells;
   for (const Support_region& g : s.regions) {
     cells.push_back(region_cells(g, 1));
-    for (Support_point& c : cell_points(g, region_mu(s, g), cells.back())) {
+    for (Support_point& c : cell_points(g, s.mu_of(g), cells.back())) {
       b.given.push_back(*c.force);
       aug.points.push_back(std::move(c));
     }
@@ -166,7 +165,7 @@ Region_motion_over decide_region_motion_over(const Support& s, const Admissible&
     if (slides_for_every_regions(s, a, p, q, 500, r)) return done(Motion_over::slides, "twist");
   // The search (unknown_motion.h) with the regions' power, the same for every distribution, added.
   std::vector<double> mu_r;
-  for (const Support_region& g : s.regions) mu_r.push_back(region_mu(s, g).get_d());
+  for (const Support_region& g : s.regions) mu_r.push_back(s.mu_of(g).get_d());
   const auto regions_power = [&](const double* q) {
     double h = 0;
     for (std::size_t g = 0; g < s.regions.size(); ++g)

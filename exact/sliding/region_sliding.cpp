@@ -16,11 +16,6 @@
 
 namespace wrenchkit {
 
-Rational region_mu(const Support& s, const Support_region& r) {
-  if (r.mu) return *r.mu;
-  return s.mu ? *s.mu : Rational(0);
-}
-
 namespace {
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -183,7 +178,6 @@ void for_each_edge(const Support_region& r, F f) {
     for (std::size_t i = 0; i < ring.size(); ++i) f(ring[i], ring[(i + 1) % ring.size()]);
 }
 
-Rational cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
 
 }  // namespace
 
@@ -268,14 +262,14 @@ Region_sliding region_sliding(const Support& s, const std::optional<Vec3q>& q, c
   Vec2 moment{0, 0}, rho_r{0, 0};
   for (const Support_point& p : s.points) {
     const Rational& f = *p.force;
-    const Rational rho = (p.mu ? *p.mu : (s.mu ? *s.mu : Rational(0))) * f;
+    const Rational rho = s.mu_of(p) * f;
     a.total_force += f;
     moment.x += f * p.at.x, moment.y += f * p.at.y;
     a.mu_f0 += rho;
     rho_r.x += rho * p.at.x, rho_r.y += rho * p.at.y;
   }
   for (const Support_region& r : s.regions) {
-    const Rational mu = region_mu(s, r);
+    const Rational mu = s.mu_of(r);
     a.total_force += r.total;
     moment.x += r.moment.x, moment.y += r.moment.y;
     a.mu_f0 += mu * r.total;
@@ -318,16 +312,16 @@ Region_sliding region_sliding(const Support& s, const std::optional<Vec3q>& q, c
   const Rational w = abs(t[2]);
   const int sense = t[2] > 0 ? 1 : -1;
   for (const Support_point& p : s.points)
-    if (p.at.x == c.x && p.at.y == c.y && (p.mu ? *p.mu : (s.mu ? *s.mu : Rational(0))) * *p.force > 0)
+    if (p.at.x == c.x && p.at.y == c.y && s.mu_of(p) * *p.force > 0)
       a.center_on_point = true;
   for (long bits = 64;; bits *= 2) {
     Rational h_lo, h_hi;
     Vec3q lo{0, 0, 0}, hi{0, 0, 0};
     for (const Support_point& p : s.points)
-      add_point_bracket(p.at, (p.mu ? *p.mu : (s.mu ? *s.mu : Rational(0))) * *p.force, t, static_cast<int>(bits), h_lo,
+      add_point_bracket(p.at, s.mu_of(p) * *p.force, t, static_cast<int>(bits), h_lo,
                         h_hi, lo, hi, true);
     for (const Support_region& r : s.regions) {
-      const Rational mu = region_mu(s, r);
+      const Rational mu = s.mu_of(r);
       if (mu == 0) continue;
       const Fan_bracket f = fan_integrals(r, c, bits);
       h_lo += mu * w * f.k_lo, h_hi += mu * w * f.k_hi;
@@ -537,7 +531,7 @@ Region_slide_blocks region_slide_blocks(const Support& s, const Vec3q& q, const 
   std::vector<double> est;
   const double qd[3] = {q[0].get_d(), q[1].get_d(), q[2].get_d()};
   for (const Support_region& r : s.regions) {
-    const double h = region_mu(s, r).get_d() * region_power_double(r, qd);
+    const double h = s.mu_of(r).get_d() * region_power_double(r, qd);
     est.push_back(std::isfinite(h) ? std::max(h, 0.0) : 0.0);
     out.estimate += est.back();
   }
@@ -546,7 +540,7 @@ Region_slide_blocks region_slide_blocks(const Support& s, const Vec3q& q, const 
     const Support_region& r = s.regions[k];
     const Rational share = out.estimate > 0 ? Rational(slack * Rational(est[k] / out.estimate))
                                             : Rational(slack / static_cast<long>(s.regions.size()));
-    out.blocks.push_back(region_slide_block(r, region_mu(s, r), q, share, max_cells / std::max<std::size_t>(1, s.regions.size())));
+    out.blocks.push_back(region_slide_block(r, s.mu_of(r), q, share, max_cells / std::max<std::size_t>(1, s.regions.size())));
     out.bound += out.blocks.back().bound;
     out.cells += out.blocks.back().cells.triangles.size();
   }
@@ -559,7 +553,6 @@ Region_slide_blocks region_slide_blocks(const Support& s, const Vec3q& q, const 
 
 namespace {
 
-Rational point_mu(const Support& s, const Support_point& p) { return p.mu ? *p.mu : (s.mu ? *s.mu : Rational(0)); }
 
 // Sticks: the regions cut into m² cells per coarse triangle, each cell a support point at its pressure centroid
 // carrying F_k (LS of these points ⊆ the regions' LS: a cell force spread ∝ p has moment c_k × g_k), and the
@@ -575,7 +568,7 @@ bool try_stick(const Support& s, const Vec3q& p, int m, Region_motion& out, cons
   std::vector<Region_cells> cells;
   for (const Support_region& r : s.regions) {
     cells.push_back(region_cells(r, m));
-    for (Support_point& c : cell_points(r, region_mu(s, r), cells.back())) {
+    for (Support_point& c : cell_points(r, s.mu_of(r), cells.back())) {
       f.push_back(*c.force);
       aug.points.push_back(std::move(c));
     }
@@ -584,7 +577,7 @@ bool try_stick(const Support& s, const Vec3q& p, int m, Region_motion& out, cons
     double h = 0;
     for (std::size_t i = 0; i < aug.points.size(); ++i) {
       const Support_point& pt = aug.points[i];
-      h += (pt.mu ? *pt.mu : (s.mu ? *s.mu : Rational(0))).get_d() * f[i].get_d() *
+      h += s.mu_of(pt).get_d() * f[i].get_d() *
            std::hypot(q_hint[0] - q_hint[2] * pt.at.y.get_d(), q_hint[1] + q_hint[2] * pt.at.x.get_d());
     }
     if (!(h > 1 + 1e-12)) return false;  // p is not (certainly) inside the cells' limit surface
@@ -613,7 +606,7 @@ bool try_slide(const Support& s, const Vec3q& p, const Vec3q& q, Region_motion& 
   const Rational power = q[0] * p[0] + q[1] * p[1] + q[2] * p[2];
   std::vector<Rational> u = speed_bounds(s, q);
   Rational bound;
-  for (std::size_t i = 0; i < s.points.size(); ++i) bound += point_mu(s, s.points[i]) * *s.points[i].force * u[i];
+  for (std::size_t i = 0; i < s.points.size(); ++i) bound += s.mu_of(s.points[i]) * *s.points[i].force * u[i];
   if (bound > power) return false;
   Region_slide_blocks r = region_slide_blocks(s, q, Rational(power - bound), max_cells);
   if (!r.ok) return false;
@@ -644,9 +637,9 @@ Region_motion decide_region_motion(const Support& s, const Vec3q& p) {
   };
   std::vector<Point_d> pts;
   for (const Support_point& pt : s.points)
-    pts.push_back({pt.at.x.get_d(), pt.at.y.get_d(), Rational(point_mu(s, pt) * *pt.force).get_d()});
+    pts.push_back({pt.at.x.get_d(), pt.at.y.get_d(), Rational(s.mu_of(pt) * *pt.force).get_d()});
   std::vector<std::pair<const Support_region*, double>> regions;
-  for (const Support_region& r : s.regions) regions.emplace_back(&r, region_mu(s, r).get_d());
+  for (const Support_region& r : s.regions) regions.emplace_back(&r, s.mu_of(r).get_d());
   const auto h = [&](const double* q) {
     double v = 0;
     for (const Point_d& t : pts) v += t.rho * std::hypot(q[0] - q[2] * t.y, q[1] + q[2] * t.x);

@@ -29,9 +29,6 @@
 
 namespace wrenchkit {
 
-// A region's friction coefficient: its own, else support.mu (the readers require one of them).
-Rational region_mu(const Support& s, const Support_region& r);
-
 // [RG-2] Certified brackets of K = ∫_R |r − c| p dA and J = ∫_R (r − c)/|r − c| p dA at `bits` of MPFR
 // precision (outward rounding throughout); exact rational ends.
 struct Fan_bracket {

@@ -23,7 +23,6 @@ const char* motion_over_name(Motion_over m) {
 
 namespace {
 
-Rational mu_of(const Support& s, const Support_point& p) { return p.mu ? *p.mu : (s.mu ? *s.mu : Rational(0)); }
 
 constexpr double kPi = 3.141592653589793;
 
@@ -51,7 +50,7 @@ std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a
     const Vec2* first = nullptr;
     bool two = false;
     for (std::size_t i = 0; i < k && !two; ++i) {
-      if (mu_of(s, s.points[i]) * f0[i] == 0) continue;
+      if (s.mu_of(s.points[i]) * f0[i] == 0) continue;
       if (first && (first->x != s.points[i].at.x || first->y != s.points[i].at.y)) two = true;
       if (!first) first = &s.points[i].at;
     }
@@ -79,7 +78,7 @@ std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a
     std::vector<Rational> r(cols);
     for (std::size_t j = 0; j < n; ++j) r[i * n + j] = 1;
     r[slack + i] = 1;
-    const Rational mu = mu_of(s, s.points[i]);
+    const Rational mu = s.mu_of(s.points[i]);
     Rational rhs = mu * f0[i];
     if (!free_f && rhs > 0) r[margin] = 1;
     if (free_f)
@@ -131,7 +130,7 @@ bool slides_for_every(const Support& s, const Admissible& a, const Vec3q& p, con
   for (std::size_t i = 0; i < coef.size(); ++i) {
     const Support_point& pt = s.points[i];
     const Rational vx = q[0] - q[2] * pt.at.y, vy = q[1] + q[2] * pt.at.x;
-    coef[i] = mu_of(s, pt) * sqrt_bracket(vx * vx + vy * vy).second;
+    coef[i] = s.mu_of(pt) * sqrt_bracket(vx * vx + vy * vy).second;
   }
   return q[0] * p[0] + q[1] * p[1] + q[2] * p[2] >= maximise_over(s, a, coef).value;
 }
@@ -141,7 +140,7 @@ bool slides_for_every(const Support& s, const Admissible& a, const Vec3q& p, con
 bool flat(const Support& s, const std::vector<Rational>& f) {
   const Vec2* first = nullptr;
   for (std::size_t i = 0; i < s.points.size(); ++i) {
-    if (mu_of(s, s.points[i]) * f[i] == 0) continue;
+    if (s.mu_of(s.points[i]) * f[i] == 0) continue;
     if (first && (first->x != s.points[i].at.x || first->y != s.points[i].at.y)) return false;
     if (!first) first = &s.points[i].at;
   }
@@ -155,7 +154,7 @@ std::optional<Vec3q> union_search(const Support& s, const std::vector<std::vecto
   std::vector<std::vector<double>> rho(v.size(), std::vector<double>(k));
   for (std::size_t i = 0; i < k; ++i) {
     x[i] = s.points[i].at.x.get_d(), y[i] = s.points[i].at.y.get_d();
-    const Rational mu = mu_of(s, s.points[i]);
+    const Rational mu = s.mu_of(s.points[i]);
     for (std::size_t j = 0; j < v.size(); ++j) rho[j][i] = Rational(mu * v[j][i]).get_d();
   }
   const auto h_union = [&](const double* q) {
@@ -202,7 +201,7 @@ Union_minimax union_minimax(const Support& s, const std::vector<std::vector<Rati
   std::vector<std::vector<double>> rho(nv, std::vector<double>(k));
   for (std::size_t i = 0; i < k; ++i) {
     x[i] = s.points[i].at.x.get_d(), y[i] = s.points[i].at.y.get_d();
-    const Rational mu = mu_of(s, s.points[i]);
+    const Rational mu = s.mu_of(s.points[i]);
     for (std::size_t j = 0; j < nv; ++j) rho[j][i] = Rational(mu * v[j][i]).get_d();
   }
   // The plane q = q0 + a e1 + b e2: q0 = p/|p|², e1, e2 an orthonormal basis of p's orthogonal complement.

@@ -30,8 +30,8 @@ Big_double big(const Integer& z) {
 // every determinant it is asked for. Rows beyond `n` (the load) may be named by det_sign.
 class Measuring_kernel {
  public:
-  Measuring_kernel(const std::vector<Vec3>& rows, std::size_t n) : n_(n) {
-    for (const Vec3& r : rows) {
+  Measuring_kernel(const std::vector<Vec3q>& rows, std::size_t n) : n_(n) {
+    for (const Vec3q& r : rows) {
       std::array<Integer, 3> z;
       if (sgn(r[0]) != 0 || sgn(r[1]) != 0 || sgn(r[2]) != 0) z = primitive(r);  // else the zero row
       rows_.push_back(z);
@@ -170,29 +170,29 @@ Frame frame_of(const Scene& scene) {
   if (std::isfinite(rms) && rms > 1e-300 && rms < 1e300) f.L = Rational(rms);
   return f;
 }
-Vec3 in_frame(const Frame& f, const Vec3& w) {
+Vec3q in_frame(const Frame& f, const Vec3q& w) {
   return {w[0], w[1], (w[2] - (f.c.x * w[1] - f.c.y * w[0])) / f.L};
 }
 
-std::vector<Vec3> rows_of(const Scene& scene, Reading reading, const Frame& f) {
-  std::vector<Vec3> rows;
-  for (const Generator& g : generators(scene, reading)) rows.push_back(in_frame(f, as_vec(g.w)));
+std::vector<Vec3q> rows_of(const Scene& scene, Reading reading, const Frame& f) {
+  std::vector<Vec3q> rows;
+  for (const Generator& g : generators(scene, reading)) rows.push_back(in_frame(f, g.w));
   return rows;
 }
 
 }  // namespace
 
-Predicate_margin predicate_margin(const Scene& scene, Reading reading, const Wrench* load) {
+Predicate_margin predicate_margin(const Scene& scene, Reading reading, const Vec3q* load) {
   const Frame f = frame_of(scene);
-  std::vector<Vec3> rows = rows_of(scene, reading, f);
+  std::vector<Vec3q> rows = rows_of(scene, reading, f);
   const std::size_t n = rows.size();
-  if (load) rows.push_back(in_frame(f, as_vec(*load)));
+  if (load) rows.push_back(in_frame(f, *load));
   const Measuring_kernel k(rows, n);
   const Dual_cone dc = compute_dual_cone(k);
   if (!load) return k.margin();
   // Only the load's predicates: a fresh count (the cone's own are in the reading's margin).
   const Measuring_kernel kl(rows, n);
-  if (dc.rank == 3 && !(load->fx == 0 && load->fy == 0 && load->m == 0)) load_balanced(kl, dc, n);
+  if (dc.rank == 3 && !is_zero(*load)) load_balanced(kl, dc, n);
   return kl.margin();
 }
 
@@ -211,7 +211,7 @@ Boundary_distance boundary_distance(const Scene& scene) {
   Boundary_distance b;
   b.force = predicate_margin(scene, Reading::friction);
   b.form = predicate_margin(scene, Reading::frictionless);
-  std::optional<Wrench> load;
+  std::optional<Vec3q> load;
   if (scene.load) {
     load = load_wrench(scene);
     b.equilibrium = predicate_margin(scene, Reading::friction, &*load);

@@ -56,7 +56,7 @@ Boundary_distance boundary_distance(const Scene& scene);
 
 // The margin of one reading's dual-cone decision (and of the load against W* when `load` is given
 // and rank W = 3).
-Predicate_margin predicate_margin(const Scene& scene, Reading reading, const Wrench* load = nullptr);
+Predicate_margin predicate_margin(const Scene& scene, Reading reading, const Vec3q* load = nullptr);
 
 // The scene with every contact's μ multiplied by s ≥ 0 (support friction unchanged).
 Scene scale_friction(const Scene& scene, const Rational& s);

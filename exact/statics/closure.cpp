@@ -135,7 +135,7 @@ Closure_answer decide_closure(const Scene& scene, Property property, Mode mode, 
   a.mode = mode;
   std::optional<Exact_kernel> exact;  // integer rows straight from the contacts (exact mode, certificates)
   const auto make_exact = [&]() -> const Exact_kernel& {
-    if (certify) exact.emplace(scene, reading_of(property), std::vector<Wrench>{}, Exact_kernel::With_provenance{});
+    if (certify) exact.emplace(scene, reading_of(property), std::vector<Vec3q>{}, Exact_kernel::With_provenance{});
     else exact.emplace(scene, reading_of(property));
     return *exact;
   };
@@ -159,7 +159,7 @@ Closure_answer decide_closure(const Scene& scene, Property property, Mode mode, 
   a.certificate.holds = a.holds;
   if (!certify) return a;
   // The certificate from the integer rows of the generators it names, each with its scale [FC-5].
-  if (!exact) exact.emplace(scene, reading_of(property), std::vector<Wrench>{}, Exact_kernel::With_provenance{});
+  if (!exact) exact.emplace(scene, reading_of(property), std::vector<Vec3q>{}, Exact_kernel::With_provenance{});
   const Exact_kernel& k = *exact;
   if (k.size() != a.generators) throw std::logic_error("decide_closure: twin and engine disagree on generators");
   if (a.holds) {

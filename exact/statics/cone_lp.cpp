@@ -9,19 +9,19 @@
 
 namespace wrenchkit {
 
-Cone_membership cone_membership(const std::vector<Wrench>& gens, const Wrench& x) {
+Cone_membership cone_membership(const std::vector<Vec3q>& gens, const Vec3q& x) {
   const std::size_t n = gens.size();
   const std::size_t cols = n + 3;  // originals, then artificials a_0 … a_2
   // Tableau rows r = 0 … 2: [A' | I | b'] with rows negated where x_r < 0 so that b' ≥ 0.
   std::array<std::vector<Rational>, 3> T;
   std::array<Rational, 3> b;
   std::array<int, 3> flip{};
-  const Rational xs[3] = {x.fx, x.fy, x.m};
+  const Rational xs[3] = {x[0], x[1], x[2]};
   for (int r = 0; r < 3; ++r) {
     flip[r] = xs[r] < 0 ? -1 : 1;
     T[r].assign(cols, Rational(0));
     for (std::size_t j = 0; j < n; ++j) {
-      const Rational& v = r == 0 ? gens[j].fx : (r == 1 ? gens[j].fy : gens[j].m);
+      const Rational& v = r == 0 ? gens[j][0] : (r == 1 ? gens[j][1] : gens[j][2]);
       T[r][j] = flip[r] < 0 ? Rational(-v) : v;
     }
     T[r][n + r] = 1;

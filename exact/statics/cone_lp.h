@@ -22,7 +22,7 @@ struct Cone_membership {
 };
 
 // The rational tableau above: the reference the integer version below is tested against.
-Cone_membership cone_membership(const std::vector<Wrench>& gens, const Wrench& x);
+Cone_membership cone_membership(const std::vector<Vec3q>& gens, const Vec3q& x);
 
 // [FC-5] The same phase 1, with the same pivots (Bland's rule), in integers: the revised simplex in
 // Cramer form. Columns are rows `columns` of an exact kernel (positive integer multiples of the

@@ -13,7 +13,7 @@
 
 namespace wrenchkit {
 
-Wrench load_wrench(const Scene& scene) {
+Vec3q load_wrench(const Scene& scene) {
   const Load& l = *scene.load;
   switch (l.kind) {
     case Load::Kind::wrench:
@@ -29,7 +29,7 @@ Wrench load_wrench(const Scene& scene) {
 namespace {
 
 // The kernel of the friction generators and the load (last row), with provenance [FC-5].
-Exact_kernel load_kernel(const Scene& scene, const Wrench& load) {
+Exact_kernel load_kernel(const Scene& scene, const Vec3q& load) {
   return Exact_kernel(scene, Reading::friction, {load}, Exact_kernel::With_provenance{});
 }
 
@@ -64,7 +64,7 @@ fl::Bounded3 load_bounded(const Scene& scene) {
   const Load& l = *scene.load;
   switch (l.kind) {
     case Load::Kind::wrench:
-      return {to_bounded(l.wrench.fx), to_bounded(l.wrench.fy), to_bounded(l.wrench.m)};
+      return {to_bounded(l.wrench[0]), to_bounded(l.wrench[1]), to_bounded(l.wrench[2])};
     case Load::Kind::gravity: {
       const fl::Bounded w = to_bounded(l.weight);
       return {fl::Bounded::exact(0), -w, -(w * to_bounded(scene.body.com->x))};
@@ -83,7 +83,7 @@ Equilibrium_answer decide_equilibrium(const Scene& scene, Mode mode, bool certif
   Equilibrium_answer a;
   a.mode = mode;
   a.load = load_wrench(scene);
-  if (mode != Mode::exact && a.load.fx == 0 && a.load.fy == 0 && a.load.m == 0) {
+  if (mode != Mode::exact && a.load[0] == 0 && a.load[1] == 0 && a.load[2] == 0) {
     a.generators = generator_count(scene, Reading::friction);
     a.balanced = a.certificate.holds = true;  // the zero load needs no force
     return a;

@@ -22,7 +22,7 @@
 namespace wrenchkit {
 
 // The load as a wrench (m about the origin). Precondition: scene.load is set.
-Wrench load_wrench(const Scene& scene);
+Vec3q load_wrench(const Scene& scene);
 
 struct Equilibrium_certificate {
   bool holds = false;
@@ -34,7 +34,7 @@ struct Equilibrium_answer {
   Mode mode = Mode::exact;
   bool decided = true;  // false only in Mode::float_only
   bool balanced = false;
-  Wrench load;
+  Vec3q load;
   std::size_t generators = 0;
   Equilibrium_certificate certificate;  // built exactly, in every mode (when certify)
   std::size_t predicates = 0, exact_predicates = 0;  // signs of the dual-cone path (hybrid, float)

@@ -21,7 +21,7 @@ struct Dual_point {
   char sheet = '+';  // '+', '-', 'i' (at infinity: `at` is a primitive direction), '0' (the zero wrench)
   Vec2 at;
 };
-Dual_point dual_point(const Vec3& w);
+Dual_point dual_point(const Vec3q& w);
 
 struct Force_dual {
   bool covers_all = false;   // W = R³: force closure
@@ -34,7 +34,7 @@ struct Force_dual {
 };
 
 // From the labels (which hold the cone), so that both are computed once.
-Force_dual force_dual(const Moment_labels& labels, const std::vector<Wrench>& generators);
+Force_dual force_dual(const Moment_labels& labels, const std::vector<Vec3q>& generators);
 
 // A dual point as JSON (docs/cli.md, dual): {"sheet": "+"|"-", "point": [x, y]}, {"sheet":
 // "infinity", "direction": [dx, dy]} or {"sheet": "none", "zero": true}, written into `w`.

@@ -9,8 +9,6 @@
 
 namespace wrenchkit {
 
-Wrench wrench_at(const Vec2& p, const Vec2& f) { return {f.x, f.y, p.x * f.y - p.y * f.x}; }
-
 namespace {
 bool small_generators(const Contact& c, std::size_t i, Reading reading, std::vector<Generator>& out);
 }  // namespace
@@ -29,21 +27,10 @@ std::vector<Generator> generators(const Scene& scene, Reading reading) {
     if (small_generators(c, i, reading, out)) continue;
     point_contact_generators(c.at.x, c.at.y, c.normal.x, c.normal.y, c.mu, c.mu != 0, reading,
                              [&](Edge e, Rational fx, Rational fy, Rational m) {
-                               out.push_back({i, e, Wrench{std::move(fx), std::move(fy), std::move(m)}});
+                               out.push_back({i, e, Vec3q{std::move(fx), std::move(fy), std::move(m)}});
                              });
   }
   return out;
-}
-
-Vec3 as_vec(const Wrench& w) { return {w.fx, w.fy, w.m}; }
-
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-Vec3 primitive_vec(const Vec3& v) {
-  const std::array<Integer, 3> z = primitive(v);
-  return {Rational(z[0]), Rational(z[1]), Rational(z[2])};
 }
 
 namespace {
@@ -142,7 +129,7 @@ bool small_generators(const Contact& c, std::size_t i, Reading reading, std::vec
                            });
   if (!ok) return false;
   for (int k = 0; k < n; ++k)
-    out.push_back({i, edge[k], Wrench{rational_of(w[k][0]), rational_of(w[k][1]), rational_of(w[k][2])}});
+    out.push_back({i, edge[k], Vec3q{rational_of(w[k][0]), rational_of(w[k][1]), rational_of(w[k][2])}});
   return true;
 }
 
@@ -251,24 +238,24 @@ void Exact_kernel::push_big(std::array<Integer, 3> v) {
   rows_.push_back(r);
 }
 
-Exact_kernel::Exact_kernel(const std::vector<Wrench>& wrenches) {
+Exact_kernel::Exact_kernel(const std::vector<Vec3q>& wrenches) {
   rows_.reserve(wrenches.size());
-  for (const Wrench& w : wrenches) {
-    const Rational in[3] = {w.fx, w.fy, w.m};
+  for (const Vec3q& w : wrenches) {
+    const Rational in[3] = {w[0], w[1], w[2]};
     push_rational(in, kNoContact);
   }
 }
 
-Exact_kernel::Exact_kernel(const Scene& scene, Reading reading, const std::vector<Wrench>& extra) {
+Exact_kernel::Exact_kernel(const Scene& scene, Reading reading, const std::vector<Vec3q>& extra) {
   build(scene, reading, extra);
 }
 
-Exact_kernel::Exact_kernel(const Scene& scene, Reading reading, const std::vector<Wrench>& extra, With_provenance)
+Exact_kernel::Exact_kernel(const Scene& scene, Reading reading, const std::vector<Vec3q>& extra, With_provenance)
     : record_(true) {
   build(scene, reading, extra);
 }
 
-void Exact_kernel::build(const Scene& scene, Reading reading, const std::vector<Wrench>& extra) {
+void Exact_kernel::build(const Scene& scene, Reading reading, const std::vector<Vec3q>& extra) {
   rows_.reserve(2 * scene.contacts.size() + extra.size());
   if (record_) prov_.reserve(2 * scene.contacts.size() + extra.size());
   for (std::size_t ci = 0; ci < scene.contacts.size(); ++ci) {
@@ -277,7 +264,7 @@ void Exact_kernel::build(const Scene& scene, Reading reading, const std::vector<
     if (original.exact_pending) built = exact_contact(original);
     const Contact& c = built ? *built : original;
     if (c.kind == Contact::Kind::wrench) {
-      const Rational in[3] = {c.wrench.fx, c.wrench.fy, c.wrench.m};
+      const Rational in[3] = {c.wrench[0], c.wrench[1], c.wrench[2]};
       push_rational(in, ci);
       continue;
     }
@@ -325,8 +312,8 @@ void Exact_kernel::build(const Scene& scene, Reading reading, const std::vector<
       emit_big(Edge::right, md * nx + mn * ny, md * ny - mn * nx, &md);
     }
   }
-  for (const Wrench& w : extra) {
-    const Rational in[3] = {w.fx, w.fy, w.m};
+  for (const Vec3q& w : extra) {
+    const Rational in[3] = {w[0], w[1], w[2]};
     push_rational(in, kNoContact);
   }
 }

@@ -16,11 +16,8 @@ namespace wrenchkit {
 struct Generator {
   std::size_t contact = 0;  // index into scene.contacts
   Edge edge = Edge::normal;
-  Wrench w;                 // exact, unscaled: W(p, e) or the wrench given
+  Vec3q w;                 // exact, unscaled: W(p, e) or the wrench given
 };
-
-// W(p, f) = (fx, fy, p × f).
-Wrench wrench_at(const Vec2& p, const Vec2& f);
 
 // The generators of the contact wrench cone, in contact order; per point contact: `normal`
 // (μ = 0 or frictionless reading) or `left` = W(p, n + μ·rot90 n), `right` = W(p, n − μ·rot90 n).
@@ -36,18 +33,18 @@ std::vector<Generator> generators(const Scene& scene, Reading reading);
 // nonzero generators, which scenes guarantee.
 class Exact_kernel {
  public:
-  explicit Exact_kernel(const std::vector<Wrench>& wrenches);
+  explicit Exact_kernel(const std::vector<Vec3q>& wrenches);
   // The rows of generators(scene, reading), in the same order, computed directly in integers from
   // each contact's numerators and denominators when they are small (no rational arithmetic, no
   // allocation), through the rationals otherwise. The same primitive rows either way.
   // `extra`: rows appended after the generators (equilibrium's load).
-  Exact_kernel(const Scene& scene, Reading reading, const std::vector<Wrench>& extra = {});
+  Exact_kernel(const Scene& scene, Reading reading, const std::vector<Vec3q>& extra = {});
   // [FC-5] The same rows, each with its provenance: the contact and edge it comes from (extra rows:
   // contact kNoContact, edge `wrench`) and the positive factor `scale` with row = scale · W, W the
   // UNSCALED generator of proofs/certificate-format.md §1 (or the extra wrench as given). Integer
   // arithmetic; for the certificates, which must weigh the unscaled generators the checker recomputes.
   struct With_provenance {};
-  Exact_kernel(const Scene& scene, Reading reading, const std::vector<Wrench>& extra, With_provenance);
+  Exact_kernel(const Scene& scene, Reading reading, const std::vector<Vec3q>& extra, With_provenance);
   static constexpr std::size_t kNoContact = static_cast<std::size_t>(-1);
   std::size_t size() const { return rows_.size(); }
   Sign cross_sign(std::size_t i, std::size_t j) const;          // zero iff parallel
@@ -82,7 +79,7 @@ class Exact_kernel {
     wide::u128 divisor = 1;
     std::int32_t big = -1;
   };
-  void build(const Scene& scene, Reading reading, const std::vector<Wrench>& extra);
+  void build(const Scene& scene, Reading reading, const std::vector<Vec3q>& extra);
   void push_rational(const Rational in[3], std::size_t contact);
   void push_big(std::array<Integer, 3> v);
   void load(std::size_t i, mpz_ptr out) const;
@@ -99,11 +96,5 @@ class Exact_kernel {
 // The number of generators of generators(scene, reading), without building them.
 std::size_t generator_count(const Scene& scene, Reading reading);
 
-using Vec3 = std::array<Rational, 3>;
-Vec3 as_vec(const Wrench& w);
-Vec3 cross(const Vec3& a, const Vec3& b);
-// primitive(v) of exact/numbers/rational.h (v ≠ 0, else std::logic_error), as rationals: how twists and rays
-// are written in answers and certificates.
-Vec3 primitive_vec(const Vec3& v);
 
 }  // namespace wrenchkit

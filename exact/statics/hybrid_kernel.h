@@ -28,22 +28,22 @@ struct Counting_exact_kernel {
 class Lazy_generators {
  public:
   // `extra`: rows appended after the generators for predicates only (equilibrium's load).
-  Lazy_generators(const Scene& s, Reading r, std::vector<Wrench> extra = {})
+  Lazy_generators(const Scene& s, Reading r, std::vector<Vec3q> extra = {})
       : scene_(&s), reading_(r), extra_(std::move(extra)) {}
   // Wrenches that are already exact (no scene behind them): only wrenches() is available. `ready` is
   // not copied: it must outlive this object.
-  explicit Lazy_generators(const std::vector<Wrench>& ready) : ready_(&ready) {}
+  explicit Lazy_generators(const std::vector<Vec3q>& ready) : ready_(&ready) {}
   const std::vector<Generator>& get() const {
     if (!gens_) {
       if (!scene_) throw std::logic_error("Lazy_generators: no scene behind these wrenches");
       gens_ = std::make_unique<std::vector<Generator>>(generators(*scene_, reading_));
-      ws_ = std::make_unique<std::vector<Wrench>>();
+      ws_ = std::make_unique<std::vector<Vec3q>>();
       for (const Generator& g : *gens_) ws_->push_back(g.w);
-      for (const Wrench& w : extra_) ws_->push_back(w);
+      for (const Vec3q& w : extra_) ws_->push_back(w);
     }
     return *gens_;
   }
-  const std::vector<Wrench>& wrenches() const { return ready_ ? *ready_ : ws_ ? *ws_ : (get(), *ws_); }
+  const std::vector<Vec3q>& wrenches() const { return ready_ ? *ready_ : ws_ ? *ws_ : (get(), *ws_); }
   // The exact kernel of the generators and the extra rows: built from the contacts' integers
   // directly (Exact_kernel(scene, reading, extra): no rational generators) when a scene is behind
   // them, else from the ready wrenches.
@@ -54,11 +54,11 @@ class Lazy_generators {
 
  private:
   const Scene* scene_ = nullptr;
-  const std::vector<Wrench>* ready_ = nullptr;
+  const std::vector<Vec3q>* ready_ = nullptr;
   Reading reading_ = Reading::friction;
-  std::vector<Wrench> extra_;
+  std::vector<Vec3q> extra_;
   mutable std::unique_ptr<std::vector<Generator>> gens_;
-  mutable std::unique_ptr<std::vector<Wrench>> ws_;
+  mutable std::unique_ptr<std::vector<Vec3q>> ws_;
 };
 
 // Per-predicate filtering: the twin's certified sign, else the exact sign (the exact kernel is

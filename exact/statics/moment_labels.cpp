@@ -9,10 +9,10 @@ namespace wrenchkit {
 
 namespace {
 
-std::vector<Vec3> centres(const std::vector<Vec3>& twists) {
-  std::vector<Vec3> p;
+std::vector<Vec3q> centres(const std::vector<Vec3q>& twists) {
+  std::vector<Vec3q> p;
   p.reserve(twists.size());
-  for (const Vec3& t : twists) p.push_back(J(t));
+  for (const Vec3q& t : twists) p.push_back(J(t));
   return p;
 }
 
@@ -22,14 +22,14 @@ Both_set both_of(const Wrench_cone& c) {
   if (c.rank == 0) {
     b.kind = Both_set::Kind::plane;
   } else if (c.rank == 2) {
-    const Vec3 l = J(c.lineality[0]);
+    const Vec3q l = J(c.lineality[0]);
     if (l[2] != 0) {
       b.kind = Both_set::Kind::point;
       b.point = {l[0] / l[2], l[1] / l[2]};
     }
   } else if (c.rank == 1) {
     // The plane {P : a·P = 0}, a = J(g) (g the one generator direction): the line of force of g.
-    const Vec3 a = J(cross(c.lineality[0], c.lineality[1]));
+    const Vec3q a = J(cross(c.lineality[0], c.lineality[1]));
     if (a[0] != 0 || a[1] != 0) {
       b.kind = Both_set::Kind::line;
       b.direction = primitive2(a[1], -a[0]);
@@ -47,7 +47,7 @@ Both_set both_of(const Wrench_cone& c) {
 Moment_labels labels_of(Wrench_cone cone) {
   Moment_labels l;
   l.cone = std::move(cone);
-  const std::vector<Vec3> p = centres(l.cone.dual);
+  const std::vector<Vec3q> p = centres(l.cone.dual);
   l.plus = slice_front(p, l.cone.dual_pointed);
   l.minus = slice_front(negated(p), l.cone.dual_pointed);
   l.infinity = slice_infinity(p, l.cone.dual_pointed);
@@ -57,7 +57,7 @@ Moment_labels labels_of(Wrench_cone cone) {
 
 }  // namespace
 
-Moment_labels moment_labels(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin) {
+Moment_labels moment_labels(const std::vector<Vec3q>& generators, Mode mode, const std::vector<fl::Bounded3>* twin) {
   return labels_of(wrench_cone(generators, mode, twin));
 }
 
@@ -68,7 +68,7 @@ Moment_labels moment_labels(const Scene& scene, Reading reading, Mode mode) {
     // The cone from the scene's integer rows; rows beyond 62 bits from the rational generators below.
     if (std::optional<Wrench_cone> c = wrench_cone_of_rows(scene, reading, *twin)) return labels_of(std::move(*c));
   }
-  std::vector<Wrench> w;
+  std::vector<Vec3q> w;
   for (const Generator& g : generators(scene, reading)) w.push_back(g.w);
   return moment_labels(w, mode, twin ? &*twin : nullptr);
 }
@@ -115,7 +115,7 @@ const char* mode_name(Contact_mode m) {
   return "?";
 }
 
-Mode_answer contact_modes(const Scene& scene, const Vec3& t) {
+Mode_answer contact_modes(const Scene& scene, const Vec3q& t) {
   Mode_answer a;
   for (const Contact& stored : scene.contacts) {
     std::optional<Contact> built;
@@ -124,7 +124,7 @@ Mode_answer contact_modes(const Scene& scene, const Vec3& t) {
     Contact_mode m = Contact_mode::none;
     Rational s;
     if (c.kind == Contact::Kind::wrench) {
-      s = t[0] * c.wrench.fx + t[1] * c.wrench.fy + t[2] * c.wrench.m;
+      s = t[0] * c.wrench[0] + t[1] * c.wrench[1] + t[2] * c.wrench[2];
     } else {
       // v(p) = (v_x − ω p_y, v_y + ω p_x).
       const Rational vx = t[0] - t[2] * c.at.y, vy = t[1] + t[2] * c.at.x;
@@ -140,11 +140,11 @@ Mode_answer contact_modes(const Scene& scene, const Vec3& t) {
   return a;
 }
 
-Vec3 rotation_twist(const Vec2& c, int sense) {
+Vec3q rotation_twist(const Vec2& c, int sense) {
   const Rational w(sense);
   return {w * c.y, -w * c.x, w};
 }
 
-Vec3 translation_twist(const Vec2& d) { return {d.y, -d.x, 0}; }
+Vec3q translation_twist(const Vec2& d) { return {d.y, -d.x, 0}; }
 
 }  // namespace wrenchkit

@@ -38,7 +38,7 @@ struct Moment_labels {
 };
 
 // `mode` exact or hybrid (the same answer; see wrench_cone).
-Moment_labels moment_labels(const std::vector<Wrench>& generators, Mode mode = Mode::exact,
+Moment_labels moment_labels(const std::vector<Vec3q>& generators, Mode mode = Mode::exact,
                             const std::vector<fl::Bounded3>* twin = nullptr);
 Moment_labels moment_labels(const Scene& scene, Reading reading, Mode mode = Mode::exact);
 
@@ -60,11 +60,11 @@ struct Mode_answer {
   bool feasible = true;             // no contact penetrates (and no wrench generator has power < 0)
   bool marginal = false;            // feasible and some contact is kept (slides or sticks)
 };
-Mode_answer contact_modes(const Scene& scene, const Vec3& twist);
+Mode_answer contact_modes(const Scene& scene, const Vec3q& twist);
 
 // The twist of a rotation about c (sense +1 counter-clockwise, −1 clockwise) and of a translation
 // that reaches the point at infinity d: P(t) is then (c, 1), −(c, 1) resp. (d, 0).
-Vec3 rotation_twist(const Vec2& c, int sense);
-Vec3 translation_twist(const Vec2& d);
+Vec3q rotation_twist(const Vec2& c, int sense);
+Vec3q translation_twist(const Vec2& d);
 
 }  // namespace wrenchkit

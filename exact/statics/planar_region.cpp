@@ -9,9 +9,6 @@ namespace wrenchkit {
 
 namespace {
 
-Rational cross2(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
-Rational dot2(const Vec2& a, const Vec2& b) { return a.x * b.x + a.y * b.y; }
-bool is_zero(const Vec2& v) { return v.x == 0 && v.y == 0; }
 bool same(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
 Vec2 neg(const Vec2& v) { return {-v.x, -v.y}; }
 Vec2 rot90(const Vec2& v) { return {-v.y, v.x}; }
@@ -21,7 +18,7 @@ int half_of(const Vec2& v) { return (v.y > 0 || (v.y == 0 && v.x > 0)) ? 0 : 1; 
 bool angle_less(const Vec2& a, const Vec2& b) {
   const int ha = half_of(a), hb = half_of(b);
   if (ha != hb) return ha < hb;
-  return cross2(a, b) > 0;
+  return cross(a, b) > 0;
 }
 
 // Andrew's monotone chain on points sorted by (x, y): the strictly convex lower chain.
@@ -32,7 +29,7 @@ std::vector<std::size_t> lower_chain(const std::vector<Vec2>& pts, const std::ve
     while (h.size() >= 2) {
       const Vec2 a = key(pts[h[h.size() - 2]]), b = key(pts[h.back()]), c = key(pts[i]);
       const Vec2 ab{b.x - a.x, b.y - a.y}, ac{c.x - a.x, c.y - a.y};
-      if (cross2(ab, ac) > 0) break;  // strict left turn: keep b
+      if (cross(ab, ac) > 0) break;  // strict left turn: keep b
       h.pop_back();
     }
     h.push_back(i);
@@ -82,8 +79,8 @@ std::vector<Vec2> pointed_corners(const std::vector<Vec2>& pts, const Cone2& con
   const Vec2 lo = cone.extreme.front(), hi = cone.extreme.back();
   // Ray d: x' = e·p with e = (d_y, −d_x), y' = d·p. Wedge: x' = p × hi, y' = lo × p.
   const auto key = [&](const Vec2& p) -> Vec2 {
-    if (wedge) return {cross2(p, hi), cross2(lo, p)};
-    return {lo.y * p.x - lo.x * p.y, dot2(lo, p)};
+    if (wedge) return {cross(p, hi), cross(lo, p)};
+    return {lo.y * p.x - lo.x * p.y, dot(lo, p)};
   };
   std::vector<std::size_t> order(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i) order[i] = i;
@@ -171,7 +168,7 @@ Cone2 cone_hull(const std::vector<Vec2>& dirs) {
   for (std::size_t j = 0; j < m; ++j) {
     const Vec2& a = u[j];
     const Vec2& b = u[(j + 1) % m];
-    const int s = sgn(cross2(a, b));
+    const int s = sgn(cross(a, b));
     if (s < 0) {  // the one gap wider than a half-turn: the cone is the rest, from b round to a
       c.shape = Cone2::Shape::wedge;
       c.extreme = {b, a};
@@ -199,10 +196,10 @@ bool contains(const Cone2& c, const Vec2& d) {
   switch (c.shape) {
     case Cone2::Shape::zero: return false;
     case Cone2::Shape::plane: return true;
-    case Cone2::Shape::ray: return cross2(c.extreme[0], d) == 0 && dot2(c.extreme[0], d) > 0;
-    case Cone2::Shape::line: return cross2(c.extreme[0], d) == 0;
-    case Cone2::Shape::half_plane: return cross2(c.extreme[0], d) >= 0;
-    case Cone2::Shape::wedge: return cross2(c.extreme[0], d) >= 0 && cross2(d, c.extreme[1]) >= 0;
+    case Cone2::Shape::ray: return cross(c.extreme[0], d) == 0 && dot(c.extreme[0], d) > 0;
+    case Cone2::Shape::line: return cross(c.extreme[0], d) == 0;
+    case Cone2::Shape::half_plane: return cross(c.extreme[0], d) >= 0;
+    case Cone2::Shape::wedge: return cross(c.extreme[0], d) >= 0 && cross(d, c.extreme[1]) >= 0;
   }
   return false;
 }
@@ -223,11 +220,11 @@ Region region_of(std::vector<Vec2> points, const Cone2& cone) {
       const Vec2 d = cone.extreme[0], e = rot90(d);
       std::size_t lo = 0, hi = 0;
       for (std::size_t i = 1; i < points.size(); ++i) {
-        if (dot2(e, points[i]) < dot2(e, points[lo])) lo = i;
-        if (dot2(e, points[i]) > dot2(e, points[hi])) hi = i;
+        if (dot(e, points[i]) < dot(e, points[lo])) lo = i;
+        if (dot(e, points[i]) > dot(e, points[hi])) hi = i;
       }
       r.directions = cone.extreme;
-      if (dot2(e, points[lo]) == dot2(e, points[hi])) {
+      if (dot(e, points[lo]) == dot(e, points[hi])) {
         r.shape = Region::Shape::line;
         r.vertices = {points[lo]};
       } else {
@@ -240,7 +237,7 @@ Region region_of(std::vector<Vec2> points, const Cone2& cone) {
       const Vec2 n = cone.extreme[1];
       std::size_t lo = 0;
       for (std::size_t i = 1; i < points.size(); ++i)
-        if (dot2(n, points[i]) < dot2(n, points[lo])) lo = i;
+        if (dot(n, points[i]) < dot(n, points[lo])) lo = i;
       r.shape = Region::Shape::half_plane;
       r.vertices = {points[lo]};
       r.directions = cone.extreme;
@@ -263,9 +260,9 @@ Region region_of(std::vector<Vec2> points, const Cone2& cone) {
 namespace {
 
 // D of the file comment: (X, Y) parts of the generators on Z = 0 and of the Z = 0 combinations.
-std::vector<Vec2> crossings(const std::vector<Vec3>& g, bool cyclic_pointed) {
+std::vector<Vec2> crossings(const std::vector<Vec3q>& g, bool cyclic_pointed) {
   std::vector<Vec2> d;
-  const auto combine = [&](const Vec3& a, const Vec3& b) {  // Z_a > 0 > Z_b
+  const auto combine = [&](const Vec3q& a, const Vec3q& b) {  // Z_a > 0 > Z_b
     d.push_back({-b[2] * a[0] + a[2] * b[0], -b[2] * a[1] + a[2] * b[1]});
   };
   const std::size_t K = g.size();
@@ -273,15 +270,15 @@ std::vector<Vec2> crossings(const std::vector<Vec3>& g, bool cyclic_pointed) {
     if (g[i][2] == 0) d.push_back({g[i][0], g[i][1]});
   if (cyclic_pointed) {
     for (std::size_t i = 0; i < K && K >= 2; ++i) {
-      const Vec3& a = g[i];
-      const Vec3& b = g[(i + 1) % K];
+      const Vec3q& a = g[i];
+      const Vec3q& b = g[(i + 1) % K];
       if (a[2] > 0 && b[2] < 0) combine(a, b);
       if (a[2] < 0 && b[2] > 0) combine(b, a);
     }
   } else {
-    for (const Vec3& a : g)
+    for (const Vec3q& a : g)
       if (a[2] > 0)
-        for (const Vec3& b : g)
+        for (const Vec3q& b : g)
           if (b[2] < 0) combine(a, b);
   }
   return d;
@@ -289,20 +286,20 @@ std::vector<Vec2> crossings(const std::vector<Vec3>& g, bool cyclic_pointed) {
 
 }  // namespace
 
-Region slice_front(const std::vector<Vec3>& gens, bool cyclic_pointed) {
+Region slice_front(const std::vector<Vec3q>& gens, bool cyclic_pointed) {
   std::vector<Vec2> pts;
-  for (const Vec3& g : gens)
+  for (const Vec3q& g : gens)
     if (g[2] > 0) pts.push_back({g[0] / g[2], g[1] / g[2]});
   if (pts.empty()) return Region{};
   return region_of(std::move(pts), cone_hull(crossings(gens, cyclic_pointed)));
 }
 
-Cone2 slice_infinity(const std::vector<Vec3>& gens, bool cyclic_pointed) {
+Cone2 slice_infinity(const std::vector<Vec3q>& gens, bool cyclic_pointed) {
   return cone_hull(crossings(gens, cyclic_pointed));
 }
 
-std::vector<Vec3> negated(std::vector<Vec3> gens) {
-  for (Vec3& g : gens)
+std::vector<Vec3q> negated(std::vector<Vec3q> gens) {
+  for (Vec3q& g : gens)
     for (Rational& c : g) c = -c;
   return gens;
 }

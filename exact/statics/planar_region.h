@@ -71,9 +71,9 @@ Region region_of(std::vector<Vec2> points, const Cone2& cone);
 
 // Slices of C = pos(gens) (see the file comment). `cyclic_pointed`: gens are the extreme rays of a
 // pointed cone in cyclic order (O(K) crossings); otherwise every pair is combined.
-Region slice_front(const std::vector<Vec3>& gens, bool cyclic_pointed);
-Cone2 slice_infinity(const std::vector<Vec3>& gens, bool cyclic_pointed);
-std::vector<Vec3> negated(std::vector<Vec3> gens);
+Region slice_front(const std::vector<Vec3q>& gens, bool cyclic_pointed);
+Cone2 slice_infinity(const std::vector<Vec3q>& gens, bool cyclic_pointed);
+std::vector<Vec3q> negated(std::vector<Vec3q> gens);
 
 // primitive(x, y) of exact/numbers/rational.h ((x, y) ≠ 0, else std::logic_error), as a rational Vec2.
 Vec2 primitive2(const Rational& x, const Rational& y);

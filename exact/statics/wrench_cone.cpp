@@ -12,14 +12,13 @@ namespace wrenchkit {
 
 namespace {
 
-Rational dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 neg3(const Vec3& a) { return {-a[0], -a[1], -a[2]}; }
-bool zero3(const Vec3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
-Rational det3(const Vec3& a, const Vec3& b, const Vec3& c) { return dot3(a, cross(b, c)); }
+Vec3q neg3(const Vec3q& a) { return {-a[0], -a[1], -a[2]}; }
+bool zero3(const Vec3q& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
+Rational det3(const Vec3q& a, const Vec3q& b, const Vec3q& c) { return dot(a, cross(b, c)); }
 
 // Extreme rays of a rank-3 dual cone, in the cycle's order (the vertices g_{e_j} × g_{e_{j+1}}).
-std::vector<Vec3> extreme_rays(const Dual_cone& dc, const std::vector<Vec3>& g) {
-  std::vector<Vec3> r;
+std::vector<Vec3q> extreme_rays(const Dual_cone& dc, const std::vector<Vec3q>& g) {
+  std::vector<Vec3q> r;
   const std::vector<std::size_t>& e = dc.edges;
   switch (dc.shape) {
     case Dual_shape::polygon:
@@ -29,7 +28,7 @@ std::vector<Vec3> extreme_rays(const Dual_cone& dc, const std::vector<Vec3>& g) 
       // (p, e, q, e') up to a cyclic rotation (a cut of an arc keeps the cycle, not its start): each
       // of the two rays g_p × g_e, g_e × g_q appears at two consecutive pairs. Found by fuzz_structured.
       for (std::size_t j = 0; j < 4; ++j) {
-        const Vec3 v = primitive_vec(cross(g[e[j]], g[e[(j + 1) % 4]]));
+        const Vec3q v = primitive_vec(cross(g[e[j]], g[e[(j + 1) % 4]]));
         if (std::find(r.begin(), r.end(), v) == r.end()) r.push_back(v);
       }
       if (r.size() != 2) throw std::logic_error("wrench_cone: an arc without two distinct rays");
@@ -45,24 +44,24 @@ std::vector<Vec3> extreme_rays(const Dual_cone& dc, const std::vector<Vec3>& g) 
 }
 
 // Two integer vectors spanning the plane orthogonal to a ≠ 0.
-std::pair<Vec3, Vec3> orthogonal_basis(const Vec3& a) {
-  const Vec3 unit[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  for (const Vec3& e : unit) {
-    const Vec3 u = cross(a, e);
+std::pair<Vec3q, Vec3q> orthogonal_basis(const Vec3q& a) {
+  const Vec3q unit[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (const Vec3q& e : unit) {
+    const Vec3q u = cross(a, e);
     if (!zero3(u)) return {primitive_vec(u), primitive_vec(cross(a, u))};
   }
   throw std::logic_error("orthogonal_basis: zero vector");
 }
 
-void push_pm(std::vector<Vec3>& out, const Vec3& v) {
+void push_pm(std::vector<Vec3q>& out, const Vec3q& v) {
   out.push_back(v);
   out.push_back(neg3(v));
 }
 
-fl::Bounded3 bounded_of(const Wrench& w) { return {to_bounded(w.fx), to_bounded(w.fy), to_bounded(w.m)}; }
+fl::Bounded3 bounded_of(const Vec3q& w) { return {to_bounded(w[0]), to_bounded(w[1]), to_bounded(w[2])}; }
 
 // [FC-1] on the wrenches: exact, or hybrid (the twin's certified sign, exact where uncertain).
-Dual_cone dual_cone_of(const std::vector<Wrench>& ws, const std::vector<fl::Bounded3>& twin, Mode mode,
+Dual_cone dual_cone_of(const std::vector<Vec3q>& ws, const std::vector<fl::Bounded3>& twin, Mode mode,
                        Wrench_cone& counts) {
   std::optional<Exact_kernel> exact;
   const Lazy_generators lazy(ws);
@@ -98,13 +97,13 @@ Rational rational_of(wide::i128 v) {
 }
 
 template <class T>
-Vec3 vec_of(const std::array<T, 3>& v) {
+Vec3q vec_of(const std::array<T, 3>& v) {
   return {rational_of(v[0]), rational_of(v[1]), rational_of(v[2])};
 }
 
 // wrench_cone with W*'s combinatorics already known (`known`, over the same nonzero generators, found with
 // `tally`'s predicates) or computed here (nullptr).
-Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin,
+Wrench_cone cone_of(const std::vector<Vec3q>& generators, Mode mode, const std::vector<fl::Bounded3>* twin,
                     const Dual_cone* known, const Predicate_tally& tally);
 
 }  // namespace
@@ -126,7 +125,7 @@ std::optional<Wrench_cone> wrench_cone_of_rows(const Scene& scene, Reading readi
       Mode::hybrid, [&]() -> const Exact_kernel& { return rows; }, [&] { return fl::Float_kernel(twin); }, lazy,
       tally, [](const auto& k) { return compute_dual_cone(k); });
   if (dc.rank != 3 || dc.shape == Dual_shape::ray) {  // the rational construction, from the same combinatorics
-    std::vector<Wrench> ws;
+    std::vector<Vec3q> ws;
     ws.reserve(g.size());
     for (Generator& x : generators(scene, reading)) ws.push_back(std::move(x.w));
     return cone_of(ws, Mode::hybrid, &twin, &dc, tally);
@@ -162,7 +161,7 @@ std::optional<Wrench_cone> wrench_cone_of_rows(const Scene& scene, Reading readi
       c.primal.reserve(6);
       for (std::size_t k = 0; k < 3; ++k)
         for (long sense : {1L, -1L}) {
-          Vec3 x{0, 0, 0};
+          Vec3q x{0, 0, 0};
           x[k] = sense;
           c.primal.push_back(std::move(x));
         }
@@ -175,29 +174,29 @@ std::optional<Wrench_cone> wrench_cone_of_rows(const Scene& scene, Reading readi
   return c;
 }
 
-Vec3 J(const Vec3& u) { return {-u[1], u[0], u[2]}; }
+Vec3q J(const Vec3q& u) { return {-u[1], u[0], u[2]}; }
 
-Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin) {
+Wrench_cone wrench_cone(const std::vector<Vec3q>& generators, Mode mode, const std::vector<fl::Bounded3>* twin) {
   return cone_of(generators, mode, twin, nullptr, Predicate_tally{});
 }
 
 namespace {
 
-Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std::vector<fl::Bounded3>* twin,
+Wrench_cone cone_of(const std::vector<Vec3q>& generators, Mode mode, const std::vector<fl::Bounded3>* twin,
                     const Dual_cone* known, const Predicate_tally& tally) {
   if (mode == Mode::float_only) throw std::invalid_argument("wrench_cone: the float twin is fl::moment_labels");
   if (twin && twin->size() != generators.size()) throw std::invalid_argument("wrench_cone: twin of another size");
-  std::vector<Wrench> ws;
-  std::vector<Vec3> g;
+  std::vector<Vec3q> ws;
+  std::vector<Vec3q> g;
   std::vector<fl::Bounded3> tw;
   ws.reserve(generators.size());
   g.reserve(generators.size());
   if (mode == Mode::hybrid) tw.reserve(generators.size());
   for (std::size_t i = 0; i < generators.size(); ++i) {
-    const Wrench& w = generators[i];
-    if (w.fx == 0 && w.fy == 0 && w.m == 0) continue;
+    const Vec3q& w = generators[i];
+    if (w[0] == 0 && w[1] == 0 && w[2] == 0) continue;
     ws.push_back(w);
-    g.push_back(primitive_vec(as_vec(w)));
+    g.push_back(primitive_vec(w));
     if (mode == Mode::hybrid) tw.push_back(twin ? (*twin)[i] : bounded_of(w));
   }
   Wrench_cone c;
@@ -208,7 +207,7 @@ Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std:
   const Dual_cone dc = known ? *known : dual_cone_of(ws, tw, mode, c);
   c.rank = dc.rank;
   c.shape = dc.shape;
-  const Vec3 e[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const Vec3q e[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   if (dc.rank == 3) {
     c.dual = extreme_rays(dc, g);
     c.dual_pointed = true;
@@ -221,7 +220,7 @@ Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std:
         c.primal_pointed = false;
         break;
       case Dual_shape::ray: {  // W = {w : ⟨r, w⟩ ≥ 0}
-        const Vec3 r = c.dual[0];
+        const Vec3q r = c.dual[0];
         const auto [u, v] = orthogonal_basis(r);
         c.primal = {r};
         push_pm(c.primal, u);
@@ -231,19 +230,19 @@ Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std:
       }
       case Dual_shape::zero:
       case Dual_shape::lineality:
-        for (const Vec3& x : e) push_pm(c.primal, x);
+        for (const Vec3q& x : e) push_pm(c.primal, x);
         c.primal_pointed = false;
         break;
     }
     return c;
   }
   if (dc.rank == 2) {
-    const Vec3 b0 = g[dc.basis[0]], b1 = g[dc.basis[1]];
-    const Vec3 n = primitive_vec(cross(b0, b1));
+    const Vec3q b0 = g[dc.basis[0]], b1 = g[dc.basis[1]];
+    const Vec3q n = primitive_vec(cross(b0, b1));
     c.lineality = {n};
-    std::vector<Wrench> with_n = ws;
-    with_n.push_back(Wrench{n[0], n[1], n[2]});
-    std::vector<Vec3> gn = g;
+    std::vector<Vec3q> with_n = ws;
+    with_n.push_back(Vec3q{n[0], n[1], n[2]});
+    std::vector<Vec3q> gn = g;
     gn.push_back(n);
     if (mode == Mode::hybrid) tw.push_back(bounded_of(with_n.back()));
     const Dual_cone half = dual_cone_of(with_n, tw, mode, c);
@@ -253,7 +252,7 @@ Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std:
     c.dual_pointed = false;
     // W in the plane span{b0, b1}: coordinates (det(g, b1, n), det(b0, g, n)) ∝ (α, β), g = α b0 + β b1.
     std::vector<Vec2> xy;
-    for (const Vec3& x : g) xy.push_back({det3(x, b1, n), det3(b0, x, n)});
+    for (const Vec3q& x : g) xy.push_back({det3(x, b1, n), det3(b0, x, n)});
     const Cone2 k = cone_hull(xy);
     const auto back = [&](const Vec2& d) {
       return primitive_vec({d.x * b0[0] + d.y * b1[0], d.x * b0[1] + d.y * b1[1], d.x * b0[2] + d.y * b1[2]});
@@ -268,9 +267,9 @@ Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std:
     return c;
   }
   if (dc.rank == 1) {
-    const Vec3 a = g[dc.basis[0]];
+    const Vec3q a = g[dc.basis[0]];
     bool same_sense = true;
-    for (const Vec3& x : g) same_sense &= dot3(a, x) > 0;
+    for (const Vec3q& x : g) same_sense &= dot(a, x) > 0;
     const auto [u, v] = orthogonal_basis(a);
     c.lineality = {u, v};
     if (same_sense) c.dual.push_back(a);
@@ -283,7 +282,7 @@ Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std:
     return c;
   }
   // rank 0: W = {0}, W* = R³.
-  for (const Vec3& x : e) {
+  for (const Vec3q& x : e) {
     push_pm(c.dual, x);
     c.lineality.push_back(x);
   }
@@ -293,9 +292,9 @@ Wrench_cone cone_of(const std::vector<Wrench>& generators, Mode mode, const std:
 
 }  // namespace
 
-bool in_cone(const Wrench_cone& c, const Vec3& w) {
-  for (const Vec3& t : c.dual)
-    if (dot3(t, w) < 0) return false;
+bool in_cone(const Wrench_cone& c, const Vec3q& w) {
+  for (const Vec3q& t : c.dual)
+    if (dot(t, w) < 0) return false;
   return true;
 }
 

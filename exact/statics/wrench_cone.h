@@ -29,11 +29,11 @@ namespace wrenchkit {
 struct Wrench_cone {
   int rank = 0;                          // rank of the generators
   Dual_shape shape = Dual_shape::lineality;  // of W* (rank 3), as closure reports it
-  std::vector<Vec3> dual;                // generators of W*, twists (vx, vy, ω)
+  std::vector<Vec3q> dual;                // generators of W*, twists (vx, vy, ω)
   bool dual_pointed = true;              // `dual` = extreme rays of a pointed W*, in cyclic order
-  std::vector<Vec3> primal;              // generators of W, wrenches (fx, fy, m)
+  std::vector<Vec3q> primal;              // generators of W, wrenches (fx, fy, m)
   bool primal_pointed = true;            // `primal` = extreme rays of a pointed W, in cyclic order
-  std::vector<Vec3> lineality;           // a basis of W* ∩ −W* = (span W)^⊥ (3 − rank vectors)
+  std::vector<Vec3q> lineality;           // a basis of W* ∩ −W* = (span W)^⊥ (3 − rank vectors)
   // How the dual cone's signs were decided (hybrid: the float twin first, exact where it was
   // uncertain; the constructions above are exact in every mode).
   std::size_t predicates = 0, exact_predicates = 0;
@@ -44,7 +44,7 @@ struct Wrench_cone {
 // float/labels_twin.h); in hybrid mode `twin` holds the same generators as certified doubles (for a
 // scene: fl::generators(to_bounded(scene), reading)), else they are converted from the rationals.
 // The answer is the same in both modes; hybrid decides most signs in floating point.
-Wrench_cone wrench_cone(const std::vector<Wrench>& generators, Mode mode = Mode::exact,
+Wrench_cone wrench_cone(const std::vector<Vec3q>& generators, Mode mode = Mode::exact,
                         const std::vector<fl::Bounded3>* twin = nullptr);
 
 // [LB-2] The same cone in hybrid mode from the scene's integer rows (Exact_kernel(scene, reading): positive
@@ -60,10 +60,10 @@ std::optional<Wrench_cone> wrench_cone_of_rows(const Scene& scene, Reading readi
                                                const std::vector<fl::Bounded3>& twin);
 
 // w ∈ W ⇔ ⟨t, w⟩ ≥ 0 for every generator t of W* (W = W**). Exact.
-bool in_cone(const Wrench_cone& c, const Vec3& w);
+bool in_cone(const Wrench_cone& c, const Vec3q& w);
 
 // J(u) = (−u_2, u_1, u_3) (theory.md §2.2): a twist as its rotation centre P(t), a wrench as its
 // force-dual point D(w). Orthogonal, det 1.
-Vec3 J(const Vec3& u);
+Vec3q J(const Vec3q& u);
 
 }  // namespace wrenchkit

@@ -1,0 +1,48 @@
+// The engine's small exact vocabulary (theory.md §1): planar points and vectors, and the one 3-vector that is a
+// wrench (fx, fy, m), m about the origin, or a twist (vx, vy, ω); their products, and power. Every name here is the
+// only one of its kind in exact/: a file that needs a dot product or a velocity uses these.
+#pragma once
+
+#include <array>
+
+#include "exact/numbers/rational.h"
+
+namespace wrenchkit {
+
+// A point or a vector of the plane.
+struct Vec2 {
+  Rational x, y;
+};
+
+// A wrench (fx, fy, m) or a twist (vx, vy, ω), exact.
+using Vec3q = std::array<Rational, 3>;
+// Its integer form (primitive rays and twists, the polytopes' normals).
+using Vec3z = std::array<Integer, 3>;
+
+inline Rational dot(const Vec2& a, const Vec2& b) { return a.x * b.x + a.y * b.y; }
+// a × b = ax·by − ay·bx.
+inline Rational cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
+
+// ⟨a, b⟩: the power of a twist against a wrench when one is each.
+inline Rational dot(const Vec3q& a, const Vec3q& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3q cross(const Vec3q& a, const Vec3q& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline bool is_zero(const Vec2& v) { return v.x == 0 && v.y == 0; }
+inline bool is_zero(const Vec3q& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+inline bool is_zero(const Vec3z& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+
+// W(p, f) = (fx, fy, p × f): the wrench of the force f acting at p.
+inline Vec3q wrench_at(const Vec2& p, const Vec2& f) { return {f.x, f.y, cross(p, f)}; }
+
+// v(r) = (vx − ω·y, vy + ω·x): the velocity of the point r under the twist q.
+inline Vec2 velocity(const Vec3q& q, const Vec2& r) { return {q[0] - q[2] * r.y, q[1] + q[2] * r.x}; }
+
+// primitive(v) of exact/numbers/rational.h (v ≠ 0, else std::logic_error), as rationals: how twists and rays are
+// written in answers and certificates.
+inline Vec3q primitive_vec(const Vec3q& v) {
+  const Vec3z z = primitive(v);
+  return {Rational(z[0]), Rational(z[1]), Rational(z[2])};
+}
+
+}  // namespace wrenchkit
