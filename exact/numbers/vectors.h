@@ -37,6 +37,11 @@ inline Vec3q wrench_at(const Vec2& p, const Vec2& f) { return {f.x, f.y, cross(p
 
 // v(r) = (vx − ω·y, vy + ω·x): the velocity of the point r under the twist q.
 inline Vec2 velocity(const Vec3q& q, const Vec2& r) { return {q[0] - q[2] * r.y, q[1] + q[2] * r.x}; }
+// |v(r)|², the square of the point's speed (its speed itself is a square root: the engine brackets it).
+inline Rational speed_squared(const Vec3q& q, const Vec2& r) {
+  const Vec2 v = velocity(q, r);
+  return dot(v, v);
+}
 
 // primitive(v) of exact/numbers/rational.h (v ≠ 0, else std::logic_error), as rationals: how twists and rays are
 // written in answers and certificates.

@@ -207,7 +207,7 @@ void certify_over(const Support_query& q, Support_item& r) {
       coef[i] = s.mu_of(pt) * u[i];
     }
     const F_optimum o = maximise_over(s, a, coef);
-    if (t[0] * p[0] + t[1] * p[1] + t[2] * p[2] >= o.value) r.certificate = slides_for_every_certificate(p, t, u, o.dual);
+    if (dot(t, p) >= o.value) r.certificate = slides_for_every_certificate(p, t, u, o.dual);
   } else if (m.motion == Motion_over::depends) {
     std::optional<Stick_witness> sticking = m.sticking;
     if (!sticking) sticking = stick_witness_refined(s, a, p, sides, r.vertices[*m.sticking_vertex]);

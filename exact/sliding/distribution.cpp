@@ -180,8 +180,7 @@ Power_range power_range(const Support& s, const Admissible& a, const std::array<
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     const Support_point& p = s.points[i];
     const Rational mu = s.mu_of(p);
-    const Rational vx = q[0] - q[2] * p.at.y, vy = q[1] + q[2] * p.at.x;
-    const auto [l, u] = sqrt_bracket(vx * vx + vy * vy);
+    const auto [l, u] = sqrt_bracket(speed_squared(q, p.at));
     lo[i] = -(mu * l);  // the minimum of Σ μ l f is minus the maximum of Σ −μ l f
     hi[i] = mu * u;
   }

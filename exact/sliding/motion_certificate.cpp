@@ -11,10 +11,7 @@ namespace wrenchkit {
 std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q, int bits) {
   std::vector<Rational> u;
   u.reserve(s.points.size());
-  for (const Support_point& p : s.points) {
-    const Rational vx = q[0] - q[2] * p.at.y, vy = q[1] + q[2] * p.at.x;
-    u.push_back(sqrt_bracket(vx * vx + vy * vy, bits).second);
-  }
+  for (const Support_point& p : s.points) u.push_back(sqrt_bracket(speed_squared(q, p.at), bits).second);
   return u;
 }
 
@@ -28,7 +25,7 @@ std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<R
       const Rational mu = s.mu_of(pt);
       bound += mu * f[i] * u[i];
     }
-    return q[0] * p[0] + q[1] * p[1] + q[2] * p[2] >= bound;
+    return dot(q, p) >= bound;
   };
   Slide_witness w{f, q, speed_bounds(s, q)};
   if (proves(w.speed_bounds)) return w;

@@ -108,6 +108,7 @@ struct Eval {
 using Big3 = std::array<Big, 3>;
 
 Big dot(const Big3& a, const Big3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+using wrenchkit::dot;
 
 Big3 at_z(const Big3& q0, const Big3& e1, const Big3& e2, const Big& z1, const Big& z2) {
   return {q0[0] + z1 * e1[0] + z2 * e2[0], q0[1] + z1 * e1[1] + z2 * e2[1], q0[2] + z1 * e1[2] + z2 * e2[2]};
@@ -199,11 +200,10 @@ std::optional<std::vector<Rational>> slide_bounds(const std::vector<Rho_point>& 
   u.reserve(pts.size());
   Rational bound;
   for (const Rho_point& pt : pts) {
-    const Rational vx = q[0] - q[2] * pt.at.y, vy = q[1] + q[2] * pt.at.x;
-    u.push_back(sqrt_bracket(vx * vx + vy * vy, bits).second);
+    u.push_back(sqrt_bracket(speed_squared(q, pt.at), bits).second);
     bound += pt.rho * u.back();
   }
-  if (q[0] * p[0] + q[1] * p[1] + q[2] * p[2] > bound) return u;
+  if (dot(q, p) > bound) return u;
   return std::nullopt;
 }
 

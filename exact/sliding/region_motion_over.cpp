@@ -22,7 +22,7 @@ Support with_forces(const Support& s, const std::vector<Rational>& f) {
 bool slides_for_every_regions(const Support& s, const Admissible& a, const Vec3q& p, const Vec3q& q,
                               std::size_t max_cells, Region_motion_over& r) {
   if (q[0] == 0 && q[1] == 0 && q[2] == 0) return false;
-  const Rational power = q[0] * p[0] + q[1] * p[1] + q[2] * p[2];
+  const Rational power = dot(q, p);
   std::vector<Rational> u = speed_bounds(s, q);
   std::vector<Rational> coef(s.points.size());
   for (std::size_t i = 0; i < coef.size(); ++i) coef[i] = s.mu_of(s.points[i]) * u[i];

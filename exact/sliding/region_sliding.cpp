@@ -406,8 +406,7 @@ Region_slide_block region_slide_block(const Support_region& r, const Rational& m
       vertices.push_back(p);
       xd.push_back(p.x.get_d());
       yd.push_back(p.y.get_d());
-      const Rational vx = q[0] - q[2] * p.y, vy = q[1] + q[2] * p.x;
-      const Rational speed2 = vx * vx + vy * vy;
+      const Rational speed2 = speed_squared(q, p);
       if (mpz_perfect_square_p(speed2.get_num_mpz_t()) && mpz_perfect_square_p(speed2.get_den_mpz_t())) {
         Integer n, d;  // a rational speed is its own bound (a translation with |v| rational: the bound is exact)
         mpz_sqrt(n.get_mpz_t(), speed2.get_num_mpz_t());
@@ -603,7 +602,7 @@ bool try_stick(const Support& s, const Vec3q& p, int m, Region_motion& out, cons
 // bound is at most q·p (its share of the slack proportional to its estimated power).
 bool try_slide(const Support& s, const Vec3q& p, const Vec3q& q, Region_motion& out, std::size_t max_cells) {
   if (q[0] == 0 && q[1] == 0 && q[2] == 0) return false;
-  const Rational power = q[0] * p[0] + q[1] * p[1] + q[2] * p[2];
+  const Rational power = dot(q, p);
   std::vector<Rational> u = speed_bounds(s, q);
   Rational bound;
   for (std::size_t i = 0; i < s.points.size(); ++i) bound += s.mu_of(s.points[i]) * *s.points[i].force * u[i];

@@ -110,8 +110,10 @@ Sliding_answer compute_sliding(const Polygonal_ls& model, const std::optional<Ve
 void add_point_bracket(const Vec2& at, const Rational& rho, const Vec3q& q, int bits, Rational& h_lo, Rational& h_hi,
                        Vec3q& box_lo, Vec3q& box_hi, bool facet_box) {
   if (rho == 0) return;
-  const Rational vx = q[0] - q[2] * at.y, vy = q[1] + q[2] * at.x;
-  const Rational s2 = vx * vx + vy * vy;
+  const Vec2 v = velocity(q, at);
+  const Rational& vx = v.x;
+  const Rational& vy = v.y;
+  const Rational s2 = dot(v, v);
   if (s2 == 0) {
     if (!facet_box) return;
     // g = ρ u, |u| ≤ 1: each force component within ±ρ, the moment x g_y − y g_x within ±ρ(|x| + |y|).

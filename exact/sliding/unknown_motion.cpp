@@ -126,13 +126,9 @@ std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a
 
 bool slides_for_every(const Support& s, const Admissible& a, const Vec3q& p, const Vec3q& q) {
   if (q[0] == 0 && q[1] == 0 && q[2] == 0) return false;
-  std::vector<Rational> coef(s.points.size());  // μ_i times the rational upper bound of |v_i(q)|
-  for (std::size_t i = 0; i < coef.size(); ++i) {
-    const Support_point& pt = s.points[i];
-    const Rational vx = q[0] - q[2] * pt.at.y, vy = q[1] + q[2] * pt.at.x;
-    coef[i] = s.mu_of(pt) * sqrt_bracket(vx * vx + vy * vy).second;
-  }
-  return q[0] * p[0] + q[1] * p[1] + q[2] * p[2] >= maximise_over(s, a, coef).value;
+  std::vector<Rational> coef = speed_bounds(s, q);  // μ_i times the rational upper bound of |v_i(q)|
+  for (std::size_t i = 0; i < coef.size(); ++i) coef[i] *= s.mu_of(s.points[i]);
+  return dot(q, p) >= maximise_over(s, a, coef).value;
 }
 
 // Friction at fewer than two distinct points: LS(f) is flat and has no interior, so every load slides on it (the

@@ -126,11 +126,10 @@ Mode_answer contact_modes(const Scene& scene, const Vec3q& t) {
     if (c.kind == Contact::Kind::wrench) {
       s = t[0] * c.wrench[0] + t[1] * c.wrench[1] + t[2] * c.wrench[2];
     } else {
-      // v(p) = (v_x − ω p_y, v_y + ω p_x).
-      const Rational vx = t[0] - t[2] * c.at.y, vy = t[1] + t[2] * c.at.x;
-      s = vx * c.normal.x + vy * c.normal.y;
+      const Vec2 v = velocity(t, c.at);
+      s = dot(v, c.normal);
       m = s > 0 ? Contact_mode::breaks
-                : s < 0 ? Contact_mode::penetrates : (vx == 0 && vy == 0 ? Contact_mode::sticks : Contact_mode::slides);
+                : s < 0 ? Contact_mode::penetrates : (is_zero(v) ? Contact_mode::sticks : Contact_mode::slides);
     }
     a.feasible &= s >= 0;
     a.marginal |= s == 0;
