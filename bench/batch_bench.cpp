@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "exact/certificates/certificates.h"
 #include "exact/pipeline/batch.h"
 #include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/labels_answer.h"

@@ -426,8 +426,7 @@ void register_sliding() {
           std::fprintf(stderr, "sliding bench: %s\n", r.message.c_str());
           g_failed = true;
         }
-        const bool d = unknown ? r.motion_over && r.motion_over->motion != Motion_over::undecided
-                               : r.motion.motion != Motion::undecided;
+        const bool d = r.motion && r.motion->motion != Motion::undecided;
         decided += d;
         certified += !r.certificate.empty();
       }
@@ -524,7 +523,7 @@ void register_regions() {
         std::fprintf(stderr, "regions bench: %s\n", r.message.c_str());
         g_failed = true;
       }
-      decided += r.motion.motion != Motion::undecided;
+      decided += r.motion && r.motion->motion != Motion::undecided;
       certified += !r.certificate.empty();
     }
     st.counters["decided"] = double(decided);

@@ -8,6 +8,7 @@
 #include "cli/common.h"
 #include "exact/io/json_writer.h"
 #include "exact/io/support_check.h"
+#include "exact/pipeline/answer_json.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/statics/planar_region.h"
 #include "exact/statics/equilibrium.h"
@@ -61,14 +62,17 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
               to_string(cof.y) + ") — 'wrenchkit limit-surface' for any N, tolerances and queries\n";
     if (scene.load && scene.load->kind != Load::Kind::gravity) {
       const Vec3q p = load_wrench(scene);
-      const Motion_decision m = decide_motion(model, p, o.mode, &in, &out);
+      Motion_options mo;
+      mo.sides = n;
+      mo.polygons = {&model, &in, &out};
+      const Motion_answer m = decide_motion(Support_model(scene), p, o.mode, mo);
       j.key("load_motion").object().key("load").rationals(p);
-      j.member("motion", motion_name(m.motion)).member("decided_by", m.decided_by).end_object();
+      j.member("motion", motion_name(m.motion)).member("decided_by", decided_by_name(m.decided_by)).end_object();
       r.human += "the load on the support: " + std::string(motion_name(m.motion)) +
-                 (std::string(m.decided_by) == "float" ? " (the float twin's certified search on the true limit surface)"
-                  : std::string(m.decided_by) == "polygons" ? " (the exact polygons)"
-                  : std::string(m.decided_by) == "newton" ? " (Newton's method in multiple precision, checked exactly)"
-                                                            : " (within the polygons' resolution: refine --tolerance)") +
+                 (m.decided_by == Decided_by::float_search ? " (the float twin's certified search on the true limit surface)"
+                  : m.decided_by == Decided_by::polygons   ? " (the exact polygons)"
+                  : m.decided_by == Decided_by::newton     ? " (Newton's method in multiple precision, checked exactly)"
+                                                           : " (within the polygons' resolution: refine --tolerance)") +
                  "\n";
     }
     r.json = j.end_object().take();
@@ -101,9 +105,9 @@ std::optional<Ls_summary> region_summary(const Options& o, const Scene& scene, c
               to_string(st.total_force) + ", centre of friction (" + to_string(st.center_of_pressure.x) + ", " +
               to_string(st.center_of_pressure.y) + ") — 'wrenchkit sliding' and 'limit-surface' for twists and loads\n";
   if (load) {
-    const Region_motion& m = *r.region_motion;
+    const Motion_answer& m = *r.motion;
     j.key("load_motion").object().key("load").rationals(*q.load).member("motion", motion_name(m.motion));
-    j.member("decided_by", r.motion.decided_by).member("certificate_checked", !r.certificate.empty()).end_object();
+    j.member("decided_by", decided_by_name(m.decided_by)).member("certificate_checked", !r.certificate.empty()).end_object();
     out.human += "the load on the support: " + std::string(motion_name(m.motion)) +
                  (m.motion == Motion::undecided ? " (" + m.undecided_why + ")"
                                                 : " (a certificate over the regions' cells, accepted by the checker)") +

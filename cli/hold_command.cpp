@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/common.h"
+#include "exact/certificates/certificates.h"
 #include "exact/io/json_writer.h"
 #include "exact/pipeline/hold_answer.h"
 
@@ -16,7 +17,7 @@ const char* support_kind(const Hold_answer& a) { return !a.has_support ? "none" 
 
 // The motion a failing twist describes: {"twist", "kind": "rotation", "center", "sense"} or
 // {"twist", "kind": "translation", "direction"} (the velocity's direction), and the words.
-void write_motion(Json_writer& w, const std::array<Rational, 3>& t) {
+void write_motion(Json_writer& w, const Vec3q& t) {
   w.object().key("twist").rationals(t);
   if (t[2] != 0) {
     w.member("kind", "rotation").key("center").array().rational(Rational(-t[1] / t[2])).rational(Rational(t[0] / t[2]));
@@ -40,7 +41,7 @@ void write_hold(Json_writer& w, const Hold_item& r) {
   w.key("holds");
   if (a.verdict == Hold_verdict::holds || a.verdict == Hold_verdict::fails) w.boolean(a.verdict == Hold_verdict::holds);
   else w.string(hold_word(a.verdict));
-  w.member("decided_by", a.decided_by);
+  w.member("decided_by", decided_by_text(a));
   w.key("load").array().rational(a.load[0]).rational(a.load[1]).rational(a.load[2]).end_array();
   w.member("generators", a.generators).member("support", support_kind(a));
   if (a.rounds) w.member("lp_rounds", a.rounds);
@@ -57,14 +58,14 @@ void write_hold(Json_writer& w, const Hold_item& r) {
     case Hold_verdict::holds:
       if (a.holding) {
         write_contact_forces(w, *a.holding);
-        if (a.has_support) write_support_forces(w.key("support_forces"), a.holding->forces);
+        if (a.has_support) write_support_forces(w, a.holding->support.forces);
       }
       break;
     case Hold_verdict::fails:
       write_motion(w.key("motion"), a.failing->twist);
       break;
     case Hold_verdict::depends:
-      w.key("witnesses").object().key("holds").object().key("distribution").rationals(a.holding->distribution);
+      w.key("witnesses").object().key("holds").object().key("distribution").rationals(a.holding->support.distribution);
       w.end_object().key("fails").object().key("distribution").rationals(a.failing->distribution);
       write_motion(w.key("motion"), a.failing->twist);
       w.end_object().end_object();
@@ -84,10 +85,10 @@ std::string forces_text(const Hold_witness& h, bool support) {
   else s << "contact forces";
   for (const auto& [ref, weight] : h.combination)
     s << " " << human_number(weight) << "·c" << ref.contact << "." << edge_name(ref.edge);
-  if (support && !h.forces.empty()) {
+  if (support && !h.support.forces.empty()) {
     std::size_t carrying = 0;
-    for (const Vec2& g : h.forces) carrying += g.x != 0 || g.y != 0;
-    s << "; support friction at " << carrying << " of " << h.forces.size() << " point(s)";
+    for (const Vec2& g : h.support.forces) carrying += !is_zero(g);
+    s << "; support friction at " << carrying << " of " << h.support.forces.size() << " point(s)";
   }
   return s.str();
 }
@@ -114,7 +115,7 @@ std::string hold_human(const Hold_item& r) {
       if (a.unknown) s << " under every admissible distribution (every extreme one holds)";
       s << "\n";
       if (a.holding) s << "  " << forces_text(*a.holding, a.has_support) << " cancel the load exactly\n";
-      if (!a.region_holding.empty())
+      if (a.holding && !a.holding->support.regions.empty())
         s << "  with the regions' friction as forces on " << a.cells << " cells, each in its disc at the cell's pressure centroid\n";
       break;
     case Hold_verdict::fails:
@@ -122,11 +123,11 @@ std::string hold_human(const Hold_item& r) {
         << vec_text(a.failing->twist) << ")";
       if (a.unknown) s << " under every admissible distribution";
       s << "\n  every contact allows it, and the load drives it harder than the support's friction can resist\n";
-      if (!a.region_failing.empty())
+      if (!a.failing->regions.empty())
         s << "  (the regions' friction bounded by speed bounds at the vertices of " << a.cells << " cells)\n";
       break;
     case Hold_verdict::depends:
-      s << "holds: depends on the distribution — it holds with f = " << distribution_text(a.holding->distribution)
+      s << "holds: depends on the distribution — it holds with f = " << distribution_text(a.holding->support.distribution)
         << " and fails with f = " << distribution_text(a.failing->distribution) << " (then "
         << motion_words(a.failing->twist) << ")\n";
       break;
@@ -134,7 +135,7 @@ std::string hold_human(const Hold_item& r) {
       s << "holds: undecided — " << a.undecided_why << "\n";
       break;
   }
-  s << "decided by: " << a.decided_by << " (" << mode_name(r.mode) << " mode)\n";
+  s << "decided by: " << decided_by_text(a) << " (" << mode_name(r.mode) << " mode)\n";
   if (!r.certificate.empty()) s << "certificate accepted by the independent checker (exact arithmetic)\n";
   return s.str();
 }

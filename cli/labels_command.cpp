@@ -10,6 +10,8 @@
 
 #include "cli/common.h"
 #include "cli/float_json.h"
+#include "exact/certificates/certificates.h"
+#include "exact/pipeline/answer_json.h"
 #include "exact/pipeline/labels_answer.h"
 #include "exact/statics/force_dual.h"
 #include "exact/io/json_writer.h"

@@ -129,23 +129,102 @@ void write_true(Json_writer& w, const Support_item& r) {
 // accepted it); "uncertified": "…" when a verdict found no rational witness and is reported undecided.
 void write_certificate_members(Json_writer& w, const Support_item& r) {
   if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
-  else if (!r.uncertified.empty()) w.member("uncertified", r.uncertified);
+  else if (!r.motion->uncertified.empty()) w.member("uncertified", r.motion->uncertified);
 }
 
 std::string certificate_line(const Support_item& r) {
   if (!r.certificate.empty()) return "  certificate accepted by the independent checker (exact arithmetic)\n";
-  if (!r.uncertified.empty()) return "  " + r.uncertified + "\n";
+  if (!r.motion->uncertified.empty()) return "  " + r.motion->uncertified + "\n";
   return "";
 }
 
-void write_motion(Json_writer& w, const Support_item& r) {
-  w.member("motion_decided_by", r.motion.decided_by);
-  if (r.motion.cells) w.member("search_twists", r.motion.cells);
-  if (std::string(r.motion.decided_by) == "float" && r.motion.motion == Motion::slides) {
-    w.key("witness_twist").array();
-    for (const double x : r.motion.witness) w.raw(float_number(x));
+// The load's motion, whatever the support (exact/sliding/motion.h): "load", "motion", "motion_decided_by", and how it
+// was decided — every force given: the float search's twists and its sliding twist (points), the certificate's cells,
+// the gauge's estimate and the sliding twist (regions); some force not given: each extreme distribution's verdict,
+// the witnesses' distributions, the separating twist, why undecided (and the regions' cells).
+void write_motion(Json_writer& w, const Support_item& r, const Vec3q& load) {
+  const Motion_answer& m = *r.motion;
+  w.key("load").rationals(load).member("motion", motion_name(m.motion));
+  w.member("motion_decided_by", decided_by_name(m.decided_by));
+  if (r.admissible) {
+    w.key("per_extreme_distribution").array();
+    for (const Motion v : m.per_vertex) w.string(motion_name(v));
     w.end_array();
+    if (m.motion == Motion::depends) {  // the forces too when the sticking distribution was found over F
+      w.key("witnesses").object().key("sticks").object().key("distribution").rationals(m.sticking->distribution);
+      if (m.decided_by != Decided_by::vertices) {
+        w.key("support_forces").array();
+        for (const Vec2& f : m.sticking->forces) w.array().rational(f.x).rational(f.y).end_array();
+        w.end_array();
+      }
+      w.end_object().key("slides").object().key("distribution").rationals(m.sliding->distribution);
+      w.end_object().end_object();
+    }
+    if (m.motion == Motion::slides) w.key("separating_twist").rationals(m.sliding->twist);
+    if (!m.undecided_why.empty()) w.member("undecided_why", m.undecided_why);
+    if (r.regions) w.member("certificate_cells", m.cells);  // [RG-3] the regions' blocks
+  } else if (r.regions) {
+    w.member("certificate_cells", m.cells);
+    w.key("gauge_estimate").raw(std::isfinite(m.gauge_estimate) ? float_number(m.gauge_estimate) : "null");
+    if (m.motion == Motion::slides) w.key("slide_twist").rationals(m.sliding->twist);
+    if (!m.undecided_why.empty()) w.member("undecided_why", m.undecided_why);
+  } else {
+    if (m.search_twists) w.member("search_twists", m.search_twists);
+    if (m.decided_by == Decided_by::float_search && m.motion == Motion::slides) {
+      w.key("witness_twist").array();
+      for (const double x : m.search_twist) w.raw(float_number(x));
+      w.end_array();
+    }
   }
+}
+
+// The same as text: the verdict's line(s) and the certificate's.
+std::string motion_text(const Support_item& r, const Vec3q& load) {
+  const Motion_answer& m = *r.motion;
+  std::ostringstream s;
+  s << "load " << tv(load) << ": ";
+  if (r.admissible) {
+    switch (m.motion) {
+      case Motion::sticks: s << "sticks for every admissible distribution (every extreme one sticks)\n"; break;
+      case Motion::slides:
+        s << "slides for every admissible distribution (the twist " << tv(m.sliding->twist)
+          << " drives it past every one's limit surface)\n";
+        break;
+      case Motion::depends:
+        s << "depends on the distribution: it sticks with f = " << distribution_text(m.sticking->distribution)
+          << " and slides with f = " << distribution_text(m.sliding->distribution) << "\n";
+        break;
+      case Motion::undecided: s << "undecided: " << m.undecided_why << "\n"; break;
+    }
+  } else if (r.regions) {
+    s << motion_name(m.motion);
+    if (m.motion == Motion::sticks)
+      s << " (forces on " << m.cells << " cells of the regions, each strictly inside its friction disc)\n";
+    else if (m.motion == Motion::slides)
+      s << " (the twist " << tv(m.sliding->twist) << " with speed bounds at the vertices of " << m.cells
+        << " cells: its power bound is at most q.p)\n";
+    else
+      s << ": " << m.undecided_why << "\n";
+  } else if (r.mode == Mode::float_only) {
+    s << motion_name(m.motion) << " (the float twin's certified search on the true surface, " << m.search_twists
+      << " twists)\n";
+    if (m.motion == Motion::slides)
+      s << "  a twist with h(q) <= q.p: (" << float_number(m.search_twist[0]) << ", " << float_number(m.search_twist[1])
+        << ", " << float_number(m.search_twist[2]) << ")\n";
+  } else {
+    s << motion_name(m.motion) << "  (";
+    if (r.polytopes_built)
+      s << "gauge between " << gauge_text(r.gauge_out) << " and " << gauge_text(r.gauge_in)
+        << "; sticks if < 1, slides if >= 1; ";
+    s << "decided by "
+      << (m.decided_by == Decided_by::float_search ? "the float twin's certified search on the true surface"
+          : m.decided_by == Decided_by::polygons   ? "the polygons"
+          : m.decided_by == Decided_by::newton     ? "Newton's method in multiple precision, checked exactly"
+                                                   : "nothing")
+      << ")\n";
+    if (m.motion == Motion::undecided) s << "  undecided: refine with more --sides or a smaller --tolerance\n";
+  }
+  return s.str() + certificate_line(r);
 }
 
 // The scene's answer through the pipeline; a failure unwinds as the CLI's Failure.
@@ -210,16 +289,14 @@ void write_limit_surface(Json_writer& w, const Ls_options& lo, const Support_ite
       for (const Vec3z& g : c.lineality) w.rationals(g);
       w.end_array().end_object();
     };
-    w.key("load").rationals(*lo.load);
-    w.member("motion", motion_name(r.motion.motion));
-    write_motion(w, r);
+    write_motion(w, r, *lo.load);
     if (r.polytopes_built) {
       write_gauge(w.key("gauge").object().key("outer"), r.gauge_out);
       write_gauge(w.key("inner"), r.gauge_in);
       w.end_object();
     }
     write_certificate_members(w, r);
-    if (r.polytopes_built && r.motion.motion != Motion::sticks) {
+    if (r.polytopes_built && r.motion->motion != Motion::sticks) {
       w.key("twist_cone").object();
       cone("outer", r.cone_out);
       cone("inner", r.cone_in);
@@ -269,20 +346,8 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
     if (r.true_power) s << "  true power (float twin, certified): " << bounded_text(*r.true_power) << "\n";
   }
   if (lo.load) {
-    s << "load " << tv(*lo.load) << ": " << motion_name(r.motion.motion) << "  (";
-    if (r.polytopes_built)
-      s << "gauge between " << gauge_text(r.gauge_out) << " and " << gauge_text(r.gauge_in)
-        << "; sticks if < 1, slides if >= 1; ";
-    s << "decided by "
-      << (std::string(r.motion.decided_by) == "float" ? "the float twin's certified search on the true surface"
-                                                       : std::string(r.motion.decided_by) == "polygons" ? "the polygons"
-                                                       : std::string(r.motion.decided_by) == "newton"
-                                                           ? "Newton's method in multiple precision, checked exactly"
-                                                                                                         : "nothing")
-      << ")\n";
-    if (r.motion.motion == Motion::undecided) s << "  undecided: refine with more --sides or a smaller --tolerance\n";
-    s << certificate_line(r);
-    if (r.polytopes_built && r.motion.motion != Motion::sticks) {
+    s << motion_text(r, *lo.load);
+    if (r.polytopes_built && r.motion->motion != Motion::sticks) {
       s << "  twists (outward normals of LS_out at the load's direction):";
       for (const Vec3z& g : r.cone_out.generators) s << " " << tz(g);
       for (const Vec3z& g : r.cone_out.lineality) s << " +-" << tz(g);
@@ -315,9 +380,7 @@ void write_limit_surface_float(Json_writer& w, const Ls_options& lo, const Suppo
     w.end_object();
   }
   if (lo.load) {
-    w.key("load").rationals(*lo.load);
-    w.member("motion", motion_name(r.motion.motion));
-    write_motion(w, r);
+    write_motion(w, r, *lo.load);
     write_certificate_members(w, r);
   }
 }
@@ -338,14 +401,7 @@ std::string limit_surface_float_human(const Ls_options& lo, const Support_item& 
     if (r.true_power) s << "  true power: " << bounded_text(*r.true_power) << "\n";
     if (r.true_load) s << "  true load: " << float_load_text(*r.true_load) << "\n";
   }
-  if (lo.load) {
-    s << "load " << tv(*lo.load) << ": " << motion_name(r.motion.motion)
-      << " (the float twin's certified search on the true surface, " << r.motion.cells << " twists)\n";
-    if (r.motion.motion == Motion::slides)
-      s << "  a twist with h(q) <= q.p: (" << float_number(r.motion.witness[0]) << ", " << float_number(r.motion.witness[1])
-        << ", " << float_number(r.motion.witness[2]) << ")\n";
-    s << certificate_line(r);
-  }
+  if (lo.load) s << motion_text(r, *lo.load);
   s << "decided by: the float twin alone (every sign certified; values with certified bounds)\n";
   return s.str();
 }
@@ -361,57 +417,17 @@ void write_limit_surface_unknown(Json_writer& w, const Ls_options& lo, const Sup
     write_power_over(w, r);
   }
   if (!lo.load) return;
-  const Motion_over_f& m = *r.motion_over;
-  w.key("load").rationals(*lo.load).member("motion", motion_over_name(m.motion));
-  w.member("motion_decided_by", m.decided_by);
-  w.key("per_extreme_distribution").array();
-  for (const Motion v : m.per_vertex) w.string(motion_name(v));
-  w.end_array();
-  if (m.motion == Motion_over::depends) {
-    w.key("witnesses").object().key("sticks").object();
-    if (m.sticking) {
-      w.key("distribution").rationals(m.sticking->distribution).key("support_forces").array();
-      for (const auto& f : m.sticking->forces) w.array().rational(f.x).rational(f.y).end_array();
-      w.end_array();
-    } else {
-      w.key("distribution").rationals(r.vertices[*m.sticking_vertex]);
-    }
-    w.end_object().key("slides").object().key("distribution").rationals(r.vertices[*m.sliding_vertex]);
-    w.end_object().end_object();
-  }
-  if (m.separating_twist) w.key("separating_twist").rationals(*m.separating_twist);
-  if (!m.undecided_why.empty()) w.member("undecided_why", m.undecided_why);
-  if (r.region_motion_over) w.member("certificate_cells", r.region_motion_over->cells);  // [RG-3] the regions' blocks
+  write_motion(w, r, *lo.load);
   write_certificate_members(w, r);
 }
 
 std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
-  const auto dist = distribution_text;
   std::ostringstream s;
   s << unknown_support_text(r, source);
   if (lo.twist)
     s << "twist " << tv(*lo.twist) << ": the frictional power over every admissible distribution lies in ["
       << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n" << regions_power_text(r);
-  if (lo.load) {
-    const Motion_over_f& m = *r.motion_over;
-    s << "load " << tv(*lo.load) << ": ";
-    switch (m.motion) {
-      case Motion_over::sticks: s << "sticks for every admissible distribution (every extreme one sticks)\n"; break;
-      case Motion_over::slides:
-        s << "slides for every admissible distribution (the twist " << tv(*m.separating_twist)
-          << " drives it past every one's limit surface)\n";
-        break;
-      case Motion_over::depends:
-        s << "depends on the distribution: it sticks with f = "
-          << dist(m.sticking ? m.sticking->distribution : r.vertices[*m.sticking_vertex]) << " and slides with f = "
-          << dist(r.vertices[*m.sliding_vertex]) << "\n";
-        break;
-      case Motion_over::undecided:
-        s << "undecided: " << m.undecided_why << "\n";
-        break;
-    }
-    s << certificate_line(r);
-  }
+  if (lo.load) s << motion_text(r, *lo.load);
   s << "convention: " << kConvention << "\n";
   return s.str();
 }
@@ -446,12 +462,7 @@ void write_limit_surface_regions(Json_writer& w, const Ls_options& lo, const Sup
   w.member("polytopes", false).member("strictly_convex", true);
   write_region_twist(w, r, lo.region_tolerance ? *lo.region_tolerance : Rational(1, 1000000));
   if (!lo.load) return;
-  const Region_motion& m = *r.region_motion;
-  w.key("load").rationals(*lo.load).member("motion", motion_name(m.motion));
-  w.member("motion_decided_by", r.motion.decided_by).member("certificate_cells", m.cells);
-  w.key("gauge_estimate").raw(std::isfinite(m.gauge_estimate) ? float_number(m.gauge_estimate) : "null");
-  if (m.twist) w.key("slide_twist").rationals(*m.twist);
-  if (!m.undecided_why.empty()) w.member("undecided_why", m.undecided_why);
+  write_motion(w, r, *lo.load);
   write_certificate_members(w, r);
 }
 
@@ -460,18 +471,7 @@ std::string limit_surface_regions_human(const Ls_options& lo, const Support_item
   s << region_statics_text(r, source)
     << "limit surface: strictly convex (a continuous pressure): no exact polytope; queries are certified\n"
     << region_twist_text(r);
-  if (lo.load) {
-    const Region_motion& m = *r.region_motion;
-    s << "load " << tv(*lo.load) << ": " << motion_name(m.motion);
-    if (m.motion == Motion::sticks)
-      s << " (forces on " << m.cells << " cells of the regions, each strictly inside its friction disc)\n";
-    else if (m.motion == Motion::slides)
-      s << " (the twist " << tv(*m.twist) << " with speed bounds at the vertices of " << m.cells
-        << " cells: its power bound is at most q.p)\n";
-    else
-      s << ": " << m.undecided_why << "\n";
-    s << certificate_line(r);
-  }
+  if (lo.load) s << motion_text(r, *lo.load);
   s << "convention: " << kConvention << "\n";
   return s.str();
 }

@@ -209,9 +209,9 @@ std::string render_hold(const Scene& s, const Hold_item& h, const std::string& s
   if (s.support) c.legend(swatch(kSupport, 0.5), "support points: discs grow with mu*f (hollow: force unknown)");
   if (s.load) c.legend(swatch(kLoad, 1), "load");
   if (motion) c.legend(swatch(kMotion, 1), "the motion of the certificate's twist (" + motion_words(*motion) + ")");
-  c.caption("hold: " + verdict + " (decided by " + a.decided_by + ")");
+  c.caption("hold: " + verdict + " (decided by " + decided_by_text(a) + ")");
   if (a.verdict == Hold_verdict::depends)
-    c.caption("holds with f = " + distribution_text(a.holding->distribution) + "; the motion drawn is the one with f = " +
+    c.caption("holds with f = " + distribution_text(a.holding->support.distribution) + "; the motion drawn is the one with f = " +
               distribution_text(a.failing->distribution));
   return c.finish();
 }

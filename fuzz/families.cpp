@@ -9,6 +9,7 @@
 #include "core/dual_cone.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/sliding/sliding.h"
+#include "exact/sliding/strategies.h"
 #include "float/float_kernel.h"
 #include "float/limit_surface_twin.h"
 
@@ -149,7 +150,7 @@ Verdict decide_motion(const Case& c, const Scene& scene, Mode mode, int sides) {
     return {a.motion != fl::Motion_twin::undecided, a.motion == fl::Motion_twin::slides};
   }
   const Polygonal_ls model(merge_support(*scene.support), make_directions(sides));
-  const Motion_decision d = wrenchkit::decide_motion(model, c.motion_load, mode);
+  const Points_verdict d = points_verdict(model, c.motion_load, mode);
   return {d.motion != Motion::undecided, d.motion == Motion::slides};
 }
 

@@ -82,7 +82,7 @@ std::vector<fl::Bounded3> naive_generators(const Case& c);
 
 // Stick/slide of a stick_slide case (holds = slides) [LS-3] [FL-7]: exact — the polygonal bounds with
 // `sides` directions (undecided when the load is within their gap of the limit surface); hybrid —
-// exact/sliding/sliding.h decide_motion (the certified search, the polygons only when it is undecided); float —
+// points_verdict of exact/sliding/strategies.h (the certified search, the polygons only when it is undecided); float —
 // fl::classify_load alone.
 Verdict decide_motion(const Case& c, const Scene& scene, Mode mode, int sides);
 // The naive stick/slide: minimise f(q) = h(q) − q·p over twists in plain doubles without error bounds

@@ -24,6 +24,7 @@
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
+#include "exact/sliding/strategies.h"
 #include "float/limit_surface_twin.h"
 #include "proofs/checker/checker.h"
 
@@ -105,7 +106,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         unlimited.max_exponent = 200000;
         exact_p[k] = *wrenchkit::parse_rational(c.find("load")->items[k].text, false, unlimited, why);
       }
-      const wrenchkit::Region_motion m = wrenchkit::decide_region_motion(*scene.support, exact_p);
+      const wrenchkit::Motion_answer m = wrenchkit::decide_on_regions(*scene.support, exact_p);
       if (m.motion != wrenchkit::Motion::undecided && (m.motion == wrenchkit::Motion::slides) != (claim == "slides")) {
         std::cerr << "checker accepted \"" << claim << "\" on a support with regions; the engine certifies the opposite\n";
         std::abort();

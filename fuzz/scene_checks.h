@@ -28,6 +28,8 @@
 #include <string_view>
 #include <vector>
 
+#include "exact/certificates/certificates.h"
+#include "exact/pipeline/answer_json.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/fixture/hold.h"
@@ -38,10 +40,10 @@
 #include "exact/io/scene_budget.h"
 #include "exact/io/scene_writer.h"
 #include "exact/pipeline/pipeline.h"
-#include "exact/sliding/region_motion_over.h"
+#include "exact/sliding/motion.h"
 #include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
-#include "exact/sliding/unknown_motion.h"
+#include "exact/sliding/strategies.h"
 #include "exact/io/streaming_scene_reader.h"
 #include "exact/io/to_float.h"
 #include "testing/twin_agreement.h"
@@ -327,18 +329,20 @@ inline bool check_scene_text(std::string_view text) {
       }
     }
     if (scene.load) {
-      const auto m = wrenchkit::decide_region_motion(*scene.support, wrenchkit::load_wrench(scene));
-      if (m.motion != wrenchkit::Motion::undecided) region_certificate = m.certificate;
+      const wrenchkit::Support_model model(scene);
+      const auto p = wrenchkit::load_wrench(scene);
+      const auto m = wrenchkit::decide_motion(model, p, wrenchkit::Mode::hybrid);
+      if (m.motion != wrenchkit::Motion::undecided) region_certificate = wrenchkit::motion_certificate(model, p, m);
     }
   }
   if (scene.support && !scene.support->regions.empty() && !scene.support->known() && scene.load &&
       scene.support->points.size() <= 4) {
     // [RG-3] Regions beside legs whose forces are not given: stick/slide over F only with a format-2 certificate the
     // checker accepts (below).
-    const wrenchkit::Admissible adm = wrenchkit::admissible_set(scene);
-    const auto m = wrenchkit::decide_region_motion_over(*scene.support, adm, wrenchkit::load_wrench(scene),
-                                                        wrenchkit::vertices(*scene.support, adm));
-    if (m.over.motion != wrenchkit::Motion_over::undecided) region_certificate = m.certificate;
+    const wrenchkit::Support_model model(scene);
+    const auto p = wrenchkit::load_wrench(scene);
+    const auto m = wrenchkit::decide_motion(model, p, wrenchkit::Mode::hybrid);
+    if (m.motion != wrenchkit::Motion::undecided) region_certificate = wrenchkit::motion_certificate(model, p, m);
   }
   if (scene.support && scene.support->regions.empty() && scene.support->points.size() <= 4) {
     // An unknown distribution: its first extreme distribution here, and sticks/slides/depends over all of them
@@ -350,9 +354,12 @@ inline bool check_scene_text(std::string_view text) {
         wrenchkit::make_directions(8));
     if (!scene.support->known() && scene.load) {
       const auto p = wrenchkit::load_wrench(scene);
-      const auto e = wrenchkit::decide_motion_over(*scene.support, adm, p, wrenchkit::Mode::exact, 8);
-      const auto h = wrenchkit::decide_motion_over(*scene.support, adm, p, wrenchkit::Mode::hybrid, 8);
-      if (e.motion != wrenchkit::Motion_over::undecided && h.motion != wrenchkit::Motion_over::undecided &&
+      wrenchkit::Motion_options eight;
+      eight.sides = 8;
+      const wrenchkit::Support_model sm(scene);
+      const auto e = wrenchkit::decide_motion(sm, p, wrenchkit::Mode::exact, eight);
+      const auto h = wrenchkit::decide_motion(sm, p, wrenchkit::Mode::hybrid, eight);
+      if (e.motion != wrenchkit::Motion::undecided && h.motion != wrenchkit::Motion::undecided &&
           e.motion != h.motion) {
         std::cerr << "stick/slide over the admissible distributions: hybrid contradicts exact\n" << printed;
         std::abort();
@@ -373,9 +380,9 @@ inline bool check_scene_text(std::string_view text) {
     }
     if (scene.load) {
       const auto p = wrenchkit::load_wrench(scene);
-      const auto e = wrenchkit::decide_motion(model, p, wrenchkit::Mode::exact, &in, &out);
+      const auto e = wrenchkit::points_verdict(model, p, wrenchkit::Mode::exact, &in, &out);
       for (auto m : {wrenchkit::Mode::hybrid, wrenchkit::Mode::float_only}) {
-        const auto f = wrenchkit::decide_motion(model, p, m, &in, &out);
+        const auto f = wrenchkit::points_verdict(model, p, m, &in, &out);
         if (e.motion != wrenchkit::Motion::undecided && f.motion != wrenchkit::Motion::undecided && f.motion != e.motion) {
           std::cerr << "stick/slide: mode " << wrenchkit::mode_name(m) << " contradicts the exact polygons\n" << printed;
           std::abort();

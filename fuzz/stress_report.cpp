@@ -28,6 +28,8 @@
 #include <string>
 #include <vector>
 
+#include "exact/certificates/certificates.h"
+#include "exact/pipeline/answer_json.h"
 #include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/statics/equilibrium.h"
@@ -236,39 +238,39 @@ void run_motion_over_case(const families::Case& k, std::uint64_t seed, long inde
   query.polytopes = false;
   const auto answer_in = [&](Mode mode, std::string& why) {
     const Support_item item = pipeline_answer(scene, k.text, query, mode, why);
-    return item.status == Status::answered && item.motion_over ? item.motion_over->motion : Motion_over::undecided;
+    return item.status == Status::answered && item.motion ? item.motion->motion : Motion::undecided;
   };
   std::string why_exact, why_twin, why_hybrid;
-  Motion_over exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });
-  Motion_over twin = timed(row.t_twin, [&] { return answer_in(Mode::float_only, why_twin); });
-  Motion_over hybrid = timed(row.t_hybrid, [&] { return answer_in(Mode::hybrid, why_hybrid); });
+  Motion exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });
+  Motion twin = timed(row.t_twin, [&] { return answer_in(Mode::float_only, why_twin); });
+  Motion hybrid = timed(row.t_hybrid, [&] { return answer_in(Mode::hybrid, why_hybrid); });
   const bool naive = timed(row.t_naive, [&] {
     return scene.support->regions.empty() ? families::naive_slides(k) : families::naive_region_slides(k);
   });
-  const auto bit = [](Motion_over m) {
-    return m == Motion_over::sticks ? stress::answer_sticks : m == Motion_over::slides ? stress::answer_slides
+  const auto bit = [](Motion m) {
+    return m == Motion::sticks ? stress::answer_sticks : m == Motion::slides ? stress::answer_slides
                                                                                          : stress::answer_depends;
   };
-  const auto flip = [&](Motion_over m) {  // fault injection: an answer the construction rules out, or another one
-    for (Motion_over o : {Motion_over::sticks, Motion_over::slides, Motion_over::depends})
+  const auto flip = [&](Motion m) {  // fault injection: an answer the construction rules out, or another one
+    for (Motion o : {Motion::sticks, Motion::slides, Motion::depends})
       if (o != m && !(k.allowed & bit(o))) return o;
-    return m == Motion_over::sticks ? Motion_over::depends : Motion_over::sticks;
+    return m == Motion::sticks ? Motion::depends : Motion::sticks;
   };
-  if (twin != Motion_over::undecided && fault("twin")) twin = flip(twin);
-  if (hybrid != Motion_over::undecided && fault("hybrid")) hybrid = flip(hybrid);
-  if (exact != Motion_over::undecided && fault("exact")) exact = flip(exact);
-  const auto wrong = [&](Motion_over m, Motion_over other, const std::string& why) {
+  if (twin != Motion::undecided && fault("twin")) twin = flip(twin);
+  if (hybrid != Motion::undecided && fault("hybrid")) hybrid = flip(hybrid);
+  if (exact != Motion::undecided && fault("exact")) exact = flip(exact);
+  const auto wrong = [&](Motion m, Motion other, const std::string& why) {
     if (!why.empty()) return true;  // an error or a rejected certificate
-    if (m == Motion_over::undecided) return false;
-    return !(k.allowed & bit(m)) || (other != Motion_over::undecided && other != m);
+    if (m == Motion::undecided) return false;
+    return !(k.allowed & bit(m)) || (other != Motion::undecided && other != m);
   };
   ++row.cases;
-  const Motion_over truth = exact != Motion_over::undecided ? exact : hybrid;
-  const Motion_over naive_answer = naive ? Motion_over::slides : Motion_over::sticks;
-  row.naive_wrong += !(k.allowed & bit(naive_answer)) || (truth != Motion_over::undecided && truth != naive_answer);
-  row.twin_undecided += twin == Motion_over::undecided;
-  row.hybrid_undecided += hybrid == Motion_over::undecided;
-  row.exact_undecided += exact == Motion_over::undecided;
+  const Motion truth = exact != Motion::undecided ? exact : hybrid;
+  const Motion naive_answer = naive ? Motion::slides : Motion::sticks;
+  row.naive_wrong += !(k.allowed & bit(naive_answer)) || (truth != Motion::undecided && truth != naive_answer);
+  row.twin_undecided += twin == Motion::undecided;
+  row.hybrid_undecided += hybrid == Motion::undecided;
+  row.exact_undecided += exact == Motion::undecided;
   if (wrong(twin, hybrid, why_twin)) ++row.twin_wrong, report_wrong("over F twin", k, seed, index, why_twin);
   if (wrong(hybrid, exact, why_hybrid)) ++row.hybrid_wrong, report_wrong("over F hybrid", k, seed, index, why_hybrid);
   if (wrong(exact, hybrid, why_exact)) ++row.exact_wrong, report_wrong("over F exact", k, seed, index, why_exact);
@@ -328,7 +330,7 @@ void run_region_case(const families::Case& k, std::uint64_t seed, long index, Ro
   query.polytopes = false;
   const auto answer_in = [&](Mode mode, std::string& why) {
     const Support_item item = pipeline_answer(scene, k.text, query, mode, why);
-    return item.status == Status::answered ? item.motion.motion : Motion::undecided;
+    return item.status == Status::answered && item.motion ? item.motion->motion : Motion::undecided;
   };
   std::string why_exact, why_twin, why_hybrid;
   Motion exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });

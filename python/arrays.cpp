@@ -16,6 +16,7 @@
 #include <string>
 
 #include "core/mode.h"
+#include "exact/certificates/certificates.h"
 #include "exact/io/scene.h"
 #include "exact/io/scene_writer.h"
 #include "exact/pipeline/ordered_map.h"
@@ -37,9 +38,15 @@ std::int8_t decided_code(const char* d) {
 }
 // motion and motion_decided_by (wrenchkit.MOTION, wrenchkit.MOTION_DECIDED_BY).
 std::int8_t motion_code(Motion m) { return m == Motion::sticks ? 1 : m == Motion::slides ? 0 : -1; }
-std::int8_t motion_decided_code(const char* d) {
-  const std::string_view s(d);
-  return s == "float" ? 0 : s == "polygons" ? 1 : s == "flat" ? 2 : s == "certificate" ? 3 : s == "newton" ? 4 : -1;
+std::int8_t motion_decided_code(Decided_by d) {
+  switch (d) {
+    case Decided_by::float_search: return 0;
+    case Decided_by::polygons: return 1;
+    case Decided_by::flat: return 2;
+    case Decided_by::certificate: return 3;
+    case Decided_by::newton: return 4;
+    default: return -1;
+  }
 }
 
 Request request_for(const std::string& mode, bool certificates) {
@@ -261,14 +268,14 @@ py::dict stick_slide_arrays(const Doubles& points, const Doubles& forces, const 
         const Support_item& r = o.item;
         expect_answered(r, row);
         const bool ok = r.status == Status::answered;
-        mo[row] = ok ? motion_code(r.motion.motion) : -1;
-        d[row] = ok ? motion_decided_code(r.motion.decided_by) : -1;
+        mo[row] = ok ? motion_code(r.motion->motion) : -1;
+        d[row] = ok ? motion_decided_code(r.motion->decided_by) : -1;
         if (!certificates) return;
         py::gil_scoped_acquire gil;
         py::dict c;
-        c["motion"] = ok ? motion_name(r.motion.motion) : "undecided";
+        c["motion"] = ok ? motion_name(r.motion->motion) : "undecided";
         c["certificate_json"] = ok ? r.certificate : std::string();
-        c["uncertified"] = ok ? r.uncertified : r.message;
+        c["uncertified"] = ok ? r.motion->uncertified : r.message;
         c["scene_json"] = o.text;
         certs.append(c);
       });

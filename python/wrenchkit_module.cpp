@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/mode.h"
+#include "exact/certificates/certificates.h"
 #include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/labels_answer.h"
 #include "exact/pipeline/pipeline.h"
@@ -258,7 +259,7 @@ py::dict hold(const Py_scene& s, const std::string& mode) {
   d["generators"] = a.generators;
   d["support"] = !a.has_support ? "none" : a.unknown ? "unknown" : "known";
   d["mode"] = mode;
-  d["decided_by"] = a.decided_by;
+  d["decided_by"] = decided_by_text(a);
   if (a.has_support && !s.scene.support->regions.empty()) {
     d["regions"] = s.scene.support->regions.size();
     d["region_cells"] = a.cells;
@@ -273,9 +274,9 @@ py::dict hold(const Py_scene& s, const std::string& mode) {
   if (a.holding) {
     d["contact_forces"] = combination_list(a.holding->combination);
     py::list g;
-    for (const Vec2& f : a.holding->forces) g.append(point(f));
+    for (const Vec2& f : a.holding->support.forces) g.append(point(f));
     d["support_forces"] = g;
-    if (a.unknown) d["holding_distribution"] = distribution_list(a.holding->distribution);
+    if (a.unknown) d["holding_distribution"] = distribution_list(a.holding->support.distribution);
   }
   if (a.failing && a.verdict != Hold_verdict::holds) {
     d["motion"] = motion_dict(a.failing->twist);
@@ -507,20 +508,20 @@ py::dict unknown_distribution(const Support_item& r, const std::string& mode, co
     d["regions"] = region_list(*r.scene.support);
     if (r.regions->has_twist) d["regions_power_bracket"] = py::make_tuple(fraction(r.regions->h_lo), fraction(r.regions->h_hi));
   }
-  if (r.motion_over) {
-    const Motion_over_f& m = *r.motion_over;
+  if (r.motion) {
+    const Motion_answer& m = *r.motion;
     d["load"] = triple(*q.load);
-    d["motion"] = motion_over_name(m.motion);
-    d["motion_decided_by"] = m.decided_by;
-    if (m.motion == Motion_over::depends) {
+    d["motion"] = motion_name(m.motion);
+    d["motion_decided_by"] = decided_by_name(m.decided_by);
+    if (m.motion == Motion::depends) {
       py::dict w;
-      w["sticks"] = distribution(m.sticking ? m.sticking->distribution : r.vertices[*m.sticking_vertex]);
-      w["slides"] = distribution(r.vertices[*m.sliding_vertex]);
+      w["sticks"] = distribution(m.sticking->distribution);
+      w["slides"] = distribution(m.sliding->distribution);
       d["witnesses"] = w;
     }
-    if (m.separating_twist) d["separating_twist"] = triple(*m.separating_twist);
+    if (m.motion == Motion::slides) d["separating_twist"] = triple(m.sliding->twist);
     if (!m.undecided_why.empty()) d["undecided_why"] = m.undecided_why;
-    if (r.region_motion_over) d["certificate_json"] = r.certificate;  // format 2 (checked)
+    if (r.regions) d["certificate_json"] = r.certificate;  // format 2 (checked)
   }
   return d;
 }
@@ -560,11 +561,11 @@ py::dict regions_dict(const Support_item& r, const std::string& mode, const Supp
     d["load_box"] = py::make_tuple(triple(a.load_lo[0], a.load_lo[1], a.load_lo[2]),
                                    triple(a.load_hi[0], a.load_hi[1], a.load_hi[2]));
   }
-  if (r.region_motion) {
-    const Region_motion& m = *r.region_motion;
+  if (r.motion) {
+    const Motion_answer& m = *r.motion;
     d["load"] = triple((*q.load)[0], (*q.load)[1], (*q.load)[2]);
     d["motion"] = motion_name(m.motion);
-    d["motion_decided_by"] = r.motion.decided_by;
+    d["motion_decided_by"] = decided_by_name(m.decided_by);
     d["certificate_json"] = r.certificate;
     if (!m.undecided_why.empty()) d["undecided_why"] = m.undecided_why;
   }
@@ -615,8 +616,8 @@ py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::st
   }
   if (q.load) {
     d["load"] = triple(*q.load);
-    d["motion"] = motion_name(r.motion.motion);
-    d["motion_decided_by"] = r.motion.decided_by;
+    d["motion"] = motion_name(r.motion->motion);
+    d["motion_decided_by"] = decided_by_name(r.motion->decided_by);
     py::dict g;
     g["inner"] = r.gauge_in ? fraction(*r.gauge_in) : py::none();
     g["outer"] = r.gauge_out ? fraction(*r.gauge_out) : py::none();

@@ -52,9 +52,9 @@ struct Gravity_spec {
 };
 
 // What a family's scenes are made to test. stick_slide: does the load `Family_scene::load_text`
-// stick or slide on the support's (true) limit surface (exact/sliding/sliding.h decide_motion)?
+// stick or slide on the support's (true) limit surface (exact/sliding/motion.h decide_motion)?
 // stick_slide_over: the support's distribution is unknown: does the load stick for every admissible
-// distribution, slide for every one, or does it depend (exact/sliding/unknown_motion.h)?
+// distribution, slide for every one, or does it depend (exact/sliding/motion.h)?
 // hold: can the contacts and the support's friction hold the body against the load (exact/fixture/hold.h)? A
 // `known` hold scene holds iff not `above`.
 // stick_slide_region: does the load stick or slide on a support with regions (continuous pressure) [RG-1]?

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <utility>
 
+#include "exact/pipeline/answer_json.h"
+
 namespace wrenchkit {
 
 bool within(const fl::Bounded& b, const Rational& x) {

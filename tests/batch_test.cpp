@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "exact/certificates/certificates.h"
 #include "exact/pipeline/batch.h"
 #include "exact/io/input_error.h"
 #include "tests/test_support.h"

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "exact/certificates/certificates.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/cone_lp.h"
 #include "exact/statics/equilibrium.h"

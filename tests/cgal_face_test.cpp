@@ -20,6 +20,7 @@
 #include "exact/io/input_error.h"
 #include "exact/io/region.h"
 #include "exact/io/scene_writer.h"
+#include "exact/pipeline/answer_json.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {

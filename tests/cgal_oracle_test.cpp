@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "exact/cgal/cgal.h"
+#include "exact/pipeline/answer_json.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/statics/generators.h"
 #include "tests/test_support.h"

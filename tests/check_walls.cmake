@@ -25,18 +25,24 @@ endfunction()
 check_dir(core "<gmp|<CGAL/|<boost/|\"(exact|float|proofs|cli)/" "core/ is standard library only")
 check_dir(float "<gmp|<CGAL/|\"(exact|proofs|cli)/" "float/ has no GMP, no CGAL, no exact engine")
 check_dir(proofs "<CGAL/|\"(exact|core|float|cli)/" "proofs/ shares no code with the engine")
-# exact/'s parts (docs/design.md, "Layout"): numbers <- io <- statics, sliding <- fixture <- pipeline; nothing of the engine
-# reaches the front ends (cli/, python/) or the test scenery (testing/).
+# exact/'s parts (docs/design.md, "Layout"): numbers <- io <- statics, sliding <- fixture <- certificates <- pipeline;
+# nothing of the engine reaches the front ends (cli/, python/) or the test scenery (testing/).
 check_dir(exact "\"(cli|python|testing|bench|fuzz|tests)/" "the engine does not depend on front ends or test scenery")
-foreach(part numbers io statics sliding fixture)
+foreach(part numbers io statics sliding fixture certificates)
   check_dir(exact/${part} "\"proofs/" "only exact/pipeline/ calls the independent checker")
 endforeach()
-check_dir(exact/numbers "\"exact/(io|statics|sliding|fixture|pipeline)/" "numbers/ is the bottom of exact/")
-check_dir(exact/io "\"exact/(statics|sliding|fixture|pipeline)/" "io/ sits on numbers/ only")
-check_dir(exact/statics "\"exact/(sliding|fixture|pipeline)/" "statics/ does not know sliding, fixtures or the pipeline")
-check_dir(exact/sliding "\"exact/(statics|fixture|pipeline)/" "sliding/ does not know statics, fixtures or the pipeline")
+check_dir(exact/numbers "\"exact/(io|statics|sliding|fixture|certificates|pipeline)/" "numbers/ is the bottom of exact/")
+check_dir(exact/io "\"exact/(statics|sliding|fixture|certificates|pipeline)/" "io/ sits on numbers/ only")
+check_dir(exact/statics "\"exact/(sliding|fixture|certificates|pipeline)/" "statics/ does not know sliding, fixtures or the pipeline")
+check_dir(exact/sliding "\"exact/(statics|fixture|certificates|pipeline)/" "sliding/ does not know statics, fixtures or the pipeline")
 # fixture/ (hold: contacts and the support's friction together) is the one part above both statics and sliding.
-check_dir(exact/fixture "\"exact/pipeline/" "fixture/ sits on statics/ and sliding/, below the pipeline")
+check_dir(exact/fixture "\"exact/(certificates|pipeline)/" "fixture/ sits on statics/ and sliding/, below the pipeline")
+# The deciders return witnesses; certificates/ writes every certificate from them (one file per section of
+# proofs/certificate-format.md), below the pipeline, which checks them.
+check_dir(exact/certificates "\"exact/pipeline/" "certificates/ sits below the pipeline")
+foreach(part statics sliding fixture)
+  check_dir(exact/${part} "\"exact/io/json_writer\\.h\"" "deciders return witness data; JSON is written by certificates/ and the pipeline")
+endforeach()
 check_dir(testing "\"(cli|python)/" "test scenery does not depend on front ends")
 # The front ends reach the twin only through the pipeline (they write the values it answered with).
 foreach(front cli python)
@@ -48,7 +54,7 @@ endforeach()
 # One engine file reads support regions with CGAL (exact/io/region_cgal.cpp: validity and triangulation, an object
 # library linked privately).
 set(allowed_file exact/io/region_cgal.cpp)
-foreach(dir exact/numbers exact/io exact/statics exact/sliding exact/fixture exact/pipeline cli python testing fuzz)
+foreach(dir exact/numbers exact/io exact/statics exact/sliding exact/fixture exact/certificates exact/pipeline cli python testing fuzz)
   check_dir(${dir} "<CGAL/|\"exact/cgal/cgal\\.h\"" "CGAL only in exact/cgal/, tests/, bench/ and exact/io/region_cgal.cpp")
 endforeach()
 unset(allowed_file)

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "core/dual_cone.h"
+#include "exact/certificates/certificates.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/cone_lp.h"
 #include "exact/io/scene.h"

@@ -12,7 +12,8 @@
 #include "exact/numbers/exact_lp.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/distribution.h"
-#include "exact/sliding/unknown_motion.h"
+#include "exact/sliding/motion.h"
+#include "exact/sliding/strategies.h"
 #include "fuzz/scene_checks.h"
 #include "tests/test_support.h"
 
@@ -250,6 +251,13 @@ Vec3q load(const std::string& fx, const std::string& fy, const std::string& m) {
   return {Rational(fx), Rational(fy), Rational(m)};
 }
 
+// The one decision (exact/sliding/motion.h) at 32 sides.
+Motion_answer decide(const Scene& s, const Vec3q& p, Mode mode) {
+  Motion_options o;
+  o.sides = 32;
+  return decide_motion(Support_model(s), p, mode, o);
+}
+
 // The table (docs/theory-sliding.md §6): |f| < 1 sticks for every distribution, |f| > 1 slides for every one;
 // a pure moment m < √2 sticks, m > √2 slides; (1/2, 1/2, 0.9) depends — on the two diagonals.
 TEST(UnknownMotion, TheTableSticksSlidesAndDepends) {
@@ -257,18 +265,18 @@ TEST(UnknownMotion, TheTableSticksSlidesAndDepends) {
   const Admissible a = admissible_set(s);
   for (const Mode mode : {Mode::hybrid, Mode::exact}) {
     SCOPED_TRACE(mode_name(mode));
-    EXPECT_EQ(decide_motion_over(*s.support, a, load("1/2", "0", "0"), mode, 32).motion, Motion_over::sticks);
-    EXPECT_EQ(decide_motion_over(*s.support, a, load("0", "0", "13/10"), mode, 32).motion, Motion_over::sticks);
-    const Motion_over_f d = decide_motion_over(*s.support, a, load("1/2", "1/2", "9/10"), mode, 32);
-    EXPECT_EQ(d.motion, Motion_over::depends);
+    EXPECT_EQ(decide(s, load("1/2", "0", "0"), mode).motion, Motion::sticks);
+    EXPECT_EQ(decide(s, load("0", "0", "13/10"), mode).motion, Motion::sticks);
+    const Motion_answer d = decide(s, load("1/2", "1/2", "9/10"), mode);
+    EXPECT_EQ(d.motion, Motion::depends);
     EXPECT_EQ(d.per_vertex.size(), 2u);
   }
-  const Motion_over_f sl = decide_motion_over(*s.support, a, load("3/2", "0", "0"), Mode::hybrid, 32);
-  ASSERT_EQ(sl.motion, Motion_over::slides);
-  EXPECT_TRUE(slides_for_every(*s.support, a, load("3/2", "0", "0"), *sl.separating_twist));
-  const Motion_over_f m = decide_motion_over(*s.support, a, load("0", "0", "3/2"), Mode::hybrid, 32);
-  ASSERT_EQ(m.motion, Motion_over::slides);
-  EXPECT_TRUE(slides_for_every(*s.support, a, load("0", "0", "3/2"), *m.separating_twist));
+  const Motion_answer sl = decide(s, load("3/2", "0", "0"), Mode::hybrid);
+  ASSERT_EQ(sl.motion, Motion::slides);
+  EXPECT_TRUE(slides_for_every(*s.support, a, load("3/2", "0", "0"), sl.sliding->twist));
+  const Motion_answer m = decide(s, load("0", "0", "3/2"), Mode::hybrid);
+  ASSERT_EQ(m.motion, Motion::slides);
+  EXPECT_TRUE(slides_for_every(*s.support, a, load("0", "0", "3/2"), m.sliding->twist));
   // The LP finds a distribution that sticks for a load inside U, and its witness holds exactly.
   const auto w = stick_witness(*s.support, a, load("1/2", "1/2", "9/10"), 32);
   ASSERT_TRUE(w);
@@ -286,9 +294,9 @@ TEST(UnknownMotion, TheDinnerPlateDepends) {
   const Admissible a = admissible_set(s);
   EXPECT_EQ(vertices(*s.support, a).size(), 13u);  // the centre, 4 diameters, 8 triangles about it
   for (const char* m : {"1/100", "1/2", "99/100"})
-    EXPECT_EQ(decide_motion_over(*s.support, a, load("0", "0", m), Mode::hybrid, 32).motion, Motion_over::depends) << m;
+    EXPECT_EQ(decide(s, load("0", "0", m), Mode::hybrid).motion, Motion::depends) << m;
   for (const char* m : {"101/100", "2"})
-    EXPECT_EQ(decide_motion_over(*s.support, a, load("0", "0", m), Mode::hybrid, 32).motion, Motion_over::slides) << m;
+    EXPECT_EQ(decide(s, load("0", "0", m), Mode::hybrid).motion, Motion::slides) << m;
   const auto w = stick_witness(*s.support, a, load("0", "0", "1/2"), 32);
   ASSERT_TRUE(w);
   expect_witness_holds(*s.support, a, *w, load("0", "0", "1/2"));
@@ -322,12 +330,12 @@ TEST(UnknownMotion, RandomAnswersAgreeWithTheirWitnesses) {
       return q;
     };
     const Vec3q p = {eighth(), eighth(), eighth()};
-    const Motion_over_f m = decide_motion_over(*s.support, a, p, Mode::hybrid, 32);
+    const Motion_answer m = decide(s, p, Mode::hybrid);
     ++counts[static_cast<int>(m.motion)];
-    if (m.motion == Motion_over::undecided) continue;
+    if (m.motion == Motion::undecided) continue;
     ++decided;
     const auto v = vertices(*s.support, a);
-    if (m.motion == Motion_over::sticks) {
+    if (m.motion == Motion::sticks) {
       for (const auto& f : v) {
         std::optional<Stick_witness> w;
         for (int n : {32, 128})
@@ -335,13 +343,13 @@ TEST(UnknownMotion, RandomAnswersAgreeWithTheirWitnesses) {
         ASSERT_TRUE(w) << text;
         expect_witness_holds(*s.support, a, *w, p);
       }
-    } else if (m.motion == Motion_over::slides) {
-      EXPECT_TRUE(slides_for_every(*s.support, a, p, *m.separating_twist)) << text;
+    } else if (m.motion == Motion::slides) {
+      EXPECT_TRUE(slides_for_every(*s.support, a, p, m.sliding->twist)) << text;
     } else {
-      ASSERT_TRUE(m.sliding_vertex) << text;
-      EXPECT_EQ(m.per_vertex[*m.sliding_vertex], Motion::slides);
-      if (m.sticking) expect_witness_holds(*s.support, a, *m.sticking, p);
-      else EXPECT_EQ(m.per_vertex[*m.sticking_vertex], Motion::sticks);
+      ASSERT_TRUE(m.sticking && m.sliding) << text;
+      expect_witness_holds(*s.support, a, *m.sticking, p);
+      EXPECT_TRUE(a.contains(*s.support, m.sliding->distribution)) << text;
+      EXPECT_TRUE(slide_witness(*s.support, m.sliding->distribution, p, m.sliding->twist)) << text;
     }
   }
   EXPECT_GT(decided, 40);
@@ -386,9 +394,9 @@ TEST(UnknownMotion, NearTheThresholdsWithCertificates) {
       query.polytopes = false;
       const Support_item r = answer_support(scene, text, "near", Request{}, query);
       ASSERT_EQ(r.status, Status::answered) << r.message << "\n" << text;
-      EXPECT_EQ(r.motion.motion, s < 1 ? Motion::sticks : Motion::slides) << text;
-      EXPECT_FALSE(r.certificate.empty()) << r.uncertified << "\n" << text;
-      right += r.motion.motion == (s < 1 ? Motion::sticks : Motion::slides);
+      EXPECT_EQ(r.motion->motion, s < 1 ? Motion::sticks : Motion::slides) << text;
+      EXPECT_FALSE(r.certificate.empty()) << r.motion->uncertified << "\n" << text;
+      right += r.motion->motion == (s < 1 ? Motion::sticks : Motion::slides);
     }
   }
   EXPECT_EQ(right, 80);
@@ -400,15 +408,15 @@ TEST(UnknownMotion, NearTheThresholdsWithCertificates) {
   const struct {
     const char* scene;
     Vec3q load;
-    Motion_over want;
+    Motion want;
   } cases[] = {
-      {kTable, {Rational("999/1000"), 0, 0}, Motion_over::sticks},
-      {kTable, {Rational("1001/1000"), 0, 0}, Motion_over::slides},
-      {kTable, {0, 0, Rational("1413/1000")}, Motion_over::sticks},   // √2 = 1.41421…
-      {kTable, {0, 0, Rational("1415/1000")}, Motion_over::slides},
-      {kTable, {Rational("1/2"), Rational("1/2"), Rational("9/10")}, Motion_over::depends},
-      {plate.c_str(), {0, 0, Rational("999/1000")}, Motion_over::depends},
-      {plate.c_str(), {0, 0, Rational("1001/1000")}, Motion_over::slides},
+      {kTable, {Rational("999/1000"), 0, 0}, Motion::sticks},
+      {kTable, {Rational("1001/1000"), 0, 0}, Motion::slides},
+      {kTable, {0, 0, Rational("1413/1000")}, Motion::sticks},   // √2 = 1.41421…
+      {kTable, {0, 0, Rational("1415/1000")}, Motion::slides},
+      {kTable, {Rational("1/2"), Rational("1/2"), Rational("9/10")}, Motion::depends},
+      {plate.c_str(), {0, 0, Rational("999/1000")}, Motion::depends},
+      {plate.c_str(), {0, 0, Rational("1001/1000")}, Motion::slides},
   };
   for (const auto& x : cases) {
     const Scene scene = read_scene(x.scene, Input_limits{});
@@ -417,9 +425,9 @@ TEST(UnknownMotion, NearTheThresholdsWithCertificates) {
     query.polytopes = false;
     const Support_item r = answer_support(scene, x.scene, "near", Request{}, query);
     ASSERT_EQ(r.status, Status::answered) << r.message;
-    ASSERT_TRUE(r.motion_over);
-    EXPECT_EQ(r.motion_over->motion, x.want) << to_string(x.load[0]) << " " << to_string(x.load[2]);
-    EXPECT_FALSE(r.certificate.empty()) << r.uncertified;
+    ASSERT_TRUE(r.motion);
+    EXPECT_EQ(r.motion->motion, x.want) << to_string(x.load[0]) << " " << to_string(x.load[2]);
+    EXPECT_FALSE(r.certificate.empty()) << r.motion->uncertified;
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "exact/certificates/certificates.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/io/input_error.h"
 #include "tests/test_support.h"

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <random>
 
+#include "exact/certificates/certificates.h"
 #include "exact/statics/closure.h"
 #include "exact/io/to_float.h"
 #include "float/bounded.h"

@@ -6,6 +6,7 @@
 #include <regex>
 
 #include "cli/demo_scene.h"
+#include "exact/certificates/certificates.h"
 #include "exact/statics/closure.h"
 #include "tests/test_support.h"
 

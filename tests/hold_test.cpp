@@ -12,11 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "exact/certificates/certificates.h"
 #include "exact/fixture/hold.h"
 #include "exact/io/input_error.h"
 #include "exact/io/scene.h"
 #include "exact/pipeline/hold_answer.h"
 #include "exact/sliding/sliding.h"
+#include "exact/sliding/strategies.h"
 #include "exact/statics/equilibrium.h"
 #include "proofs/checker/checker.h"
 #include "tests/test_support.h"
@@ -201,7 +203,7 @@ TEST(HoldSpecialCases, NoContactsIsStickSlideExceptOnTheSurface) {
         R"({"wrenchkit": 1, )" + known_support(pts, "\"1/4\"") + R"(, "load": {"wrench": )" + load + "}}";
     const Scene s = read_scene(text, kLimits);
     const Vec3q p = load_wrench(s);
-    const Motion_decision m = decide_motion(merge_support(*s.support), p, Mode::hybrid, 16);
+    const Points_verdict m = points_verdict(merge_support(*s.support), p, Mode::hybrid, 16);
     const Hold_item h = hold_of(text, Mode::hybrid);
     ASSERT_EQ(h.status, Status::answered) << test::dump_failure(text, "hold_nocontact_" + std::to_string(n));
     if (h.answer.verdict != Hold_verdict::undecided) {
@@ -226,7 +228,7 @@ TEST(HoldSpecialCases, NoContactsIsStickSlideExceptOnTheSurface) {
     EXPECT_TRUE(test::checker_accepts(barbell, h.certificate));
   }
   const Scene b = read_scene(barbell, kLimits);
-  EXPECT_EQ(decide_motion(merge_support(*b.support), load_wrench(b), Mode::hybrid, 16).motion, Motion::slides);
+  EXPECT_EQ(points_verdict(merge_support(*b.support), load_wrench(b), Mode::hybrid, 16).motion, Motion::slides);
 }
 
 // A single frictionless pin plus a support: a push κ along the pin's normal through the centre of friction is the
@@ -407,14 +409,14 @@ TEST(HoldOracle, TamperedCertificatesRejected) {
       std::vector<std::string> bad;
       if (h.answer.verdict == Hold_verdict::holds) {
         const Hold_witness& w = *h.answer.holding;
+        const std::vector<Vec2>& g = w.support.forces;
         // a support force scaled past its disc's radius (nonzero forces only), the others kept
         for (std::size_t i = 0; i < k; ++i) {
-          if (w.forces[i].x == 0 && w.forces[i].y == 0) continue;
+          if (is_zero(g[i])) continue;
           Hold_answer t = h.answer;
           const Rational rho = *s.support->points[i].mu * *s.support->points[i].force;
-          const Rational g2 = w.forces[i].x * w.forces[i].x + w.forces[i].y * w.forces[i].y;
-          const Rational f = rho * rho / g2 + 1;  // f |g| = ρ²/|g| + |g| ≥ 2ρ > ρ: out of the disc
-          t.holding->forces[i] = {w.forces[i].x * f, w.forces[i].y * f};
+          const Rational f = rho * rho / dot(g[i], g[i]) + 1;  // f |g| = ρ²/|g| + |g| ≥ 2ρ > ρ: out of the disc
+          t.holding->support.forces[i] = {g[i].x * f, g[i].y * f};
           bad.push_back(hold_certificate(t));
           break;
         }
@@ -424,13 +426,11 @@ TEST(HoldOracle, TamperedCertificatesRejected) {
           bad.push_back(hold_certificate(t));
         }
       } else {
-        const Fail_witness& w = *h.answer.failing;
+        const Slide_witness& w = *h.answer.failing;
         Hold_answer t = h.answer;
         t.failing->speed_bounds[0] = 0;
-        const std::array<Rational, 3>& q = w.twist;
-        const Vec2& r0 = s.support->points[0].at;
-        const Rational vx = q[0] - q[2] * r0.y, vy = q[1] + q[2] * r0.x;
-        if (vx != 0 || vy != 0) bad.push_back(hold_certificate(t));
+        const Vec3q& q = w.twist;
+        if (!is_zero(velocity(q, s.support->points[0].at))) bad.push_back(hold_certificate(t));
         Hold_answer neg = h.answer;  // the opposite motion pushes into some contact or is not driven by the load
         neg.failing->twist = {-q[0], -q[1], -q[2]};
         bad.push_back(hold_certificate(neg));
@@ -563,12 +563,12 @@ TEST(HoldRegions, UnknownForcesGolden) {
       EXPECT_NE(h.certificate.find("\"regions\""), std::string::npos);
       EXPECT_TRUE(test::checker_accepts(scene, h.certificate)) << scene;
       if (c.verdict == Hold_verdict::depends) {
-        EXPECT_EQ(h.answer.holding->distribution, (std::vector<Rational>{2, 0, 2}));
+        EXPECT_EQ(h.answer.holding->support.distribution, (std::vector<Rational>{2, 0, 2}));
         EXPECT_EQ(h.answer.failing->distribution, (std::vector<Rational>{0, 4, 0}));
       }
       if (c.verdict == Hold_verdict::fails) {
-        EXPECT_TRUE(h.answer.dual.has_value());
-        EXPECT_FALSE(h.answer.region_failing.empty());
+        EXPECT_TRUE(h.answer.failing->dual.has_value());
+        EXPECT_FALSE(h.answer.failing->regions.empty());
       }
       // Format 1 has no certificate for it; a witness without its regions' blocks proves nothing.
       std::string v1 = h.certificate;
@@ -577,8 +577,8 @@ TEST(HoldRegions, UnknownForcesGolden) {
       if (c.verdict != Hold_verdict::fails) {
         const std::string stripped = hold_certificate([&] {
           Hold_answer a = h.answer;
-          a.region_holding.clear();
-          for (auto& v : a.vertex_regions) v.clear();
+          if (a.holding) a.holding->support.regions.clear();
+          for (Hold_witness& v : a.vertices) v.support.regions.clear();
           return a;
         }());
         EXPECT_NE(wrenchkit_checker::check(scene, stripped).message.find("missing required key \"regions\""), std::string::npos);
@@ -661,7 +661,7 @@ TEST(HoldRegions, FinerCellsForTheWitness) {
     ASSERT_EQ(h.status, Status::answered) << h.message;
     EXPECT_EQ(h.answer.verdict, Hold_verdict::holds) << m << " " << h.answer.undecided_why;
     EXPECT_GT(h.answer.cells, kMaxHoldRegionCells) << m;
-    EXPECT_NE(h.answer.decided_by.find("smoothed witness on"), std::string::npos) << h.answer.decided_by;
+    EXPECT_NE(decided_by_text(h.answer).find("smoothed witness on"), std::string::npos) << decided_by_text(h.answer);
     EXPECT_TRUE(test::checker_accepts(scene, h.certificate));
     EXPECT_EQ(hold_of(scene, Mode::exact).answer.verdict, Hold_verdict::undecided) << m;
   }

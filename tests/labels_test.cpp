@@ -10,6 +10,7 @@
 #include <random>
 #include <set>
 
+#include "exact/pipeline/answer_json.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/statics/force_dual.h"

@@ -11,6 +11,7 @@
 #include <random>
 #include <sstream>
 
+#include "exact/pipeline/answer_json.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/force_dual.h"
 #include "exact/io/to_float.h"

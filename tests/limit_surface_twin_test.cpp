@@ -11,6 +11,7 @@
 
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
+#include "exact/sliding/strategies.h"
 #include "exact/io/to_float.h"
 #include "testing/twin_agreement.h"
 #include "float/limit_surface_twin.h"
@@ -214,7 +215,8 @@ TEST(LimitSurfaceTwin, StickSlideAgreesWithTheExactPolygons) {
   EXPECT_GT(near_decided * 2, near);  // where the N = 16 polygons (λ ≈ 0.98) cannot tell
 }
 
-// decide_motion: hybrid answers whatever exact answers, the same way, and more (no N to refine).
+// The points' verdict (exact/sliding/strategies.h): hybrid answers whatever exact answers, the same way, and more (no N
+// to refine).
 TEST(LimitSurfaceTwin, HybridMotionNeverContradictsExact) {
   std::mt19937_64 rng(test::seed(33));
   const Directions d = make_directions(8);
@@ -226,15 +228,15 @@ TEST(LimitSurfaceTwin, HybridMotionNeverContradictsExact) {
       const Sliding_answer a = compute_sliding(model, random_twist(rng));
       Vec3q p;
       for (int c = 0; c < 3; ++c) p[c] = scale * (a.load_lo[c] + a.load_hi[c]) / 2;
-      const Motion_decision e = decide_motion(model, p, Mode::exact, &in, &out);
-      const Motion_decision h = decide_motion(model, p, Mode::hybrid, &in, &out);
-      const Motion_decision f = decide_motion(model, p, Mode::float_only);
+      const Points_verdict e = points_verdict(model, p, Mode::exact, &in, &out);
+      const Points_verdict h = points_verdict(model, p, Mode::hybrid, &in, &out);
+      const Points_verdict f = points_verdict(model, p, Mode::float_only);
       exact_decided += e.motion != Motion::undecided;
       hybrid_decided += h.motion != Motion::undecided;
-      by_float += std::string(h.decided_by) == "float";
+      by_float += h.decided_by == Decided_by::float_search;
       if (e.motion != Motion::undecided) { ASSERT_EQ(h.motion, e.motion) << "case " << t; }
       if (f.motion != Motion::undecided) { ASSERT_EQ(f.motion, h.motion) << "case " << t; }
-      ASSERT_EQ(std::string(e.decided_by), e.motion == Motion::undecided ? "none" : "polygons");
+      ASSERT_EQ(e.decided_by, e.motion == Motion::undecided ? Decided_by::none : Decided_by::polygons);
       ASSERT_EQ(h.motion, scale < 1 ? Motion::sticks : Motion::slides) << "case " << t;  // ±3 % of LS
     }
   }

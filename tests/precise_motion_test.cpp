@@ -48,11 +48,11 @@ TEST(PreciseMotion, CollinearSupportNearTheSurfaceIsDecidedWithCheckedCertificat
       query.polytopes = false;
       const Support_item r = answer_support(s.text, "test", Request{}, query);
       ASSERT_EQ(r.status, Status::answered) << r.message << test::dump_failure(s.text, tag);
-      ASSERT_EQ(r.motion.motion, s.above ? Motion::slides : Motion::sticks)
-          << r.uncertified << test::dump_failure(s.text, tag);
+      ASSERT_EQ(r.motion->motion, s.above ? Motion::slides : Motion::sticks)
+          << r.motion->uncertified << test::dump_failure(s.text, tag);
       ASSERT_FALSE(r.certificate.empty()) << test::dump_failure(s.text, tag);
       EXPECT_TRUE(test::checker_accepts(s.text, r.certificate)) << test::dump_failure(s.text, tag);
-      newton += std::string(r.motion.decided_by) == "newton";
+      newton += r.motion->decided_by == Decided_by::newton;
     }
   EXPECT_EQ(newton, 8);  // at 10^-20 and 10^-40 only Newton decides
 }
@@ -102,8 +102,8 @@ TEST(PreciseMotion, RationalRotationLoadNearAndOnTheSurface) {
     query.load = load;
     const Support_item r = answer_support(text, "test", Request{}, query);
     ASSERT_EQ(r.status, Status::answered) << r.message;
-    EXPECT_EQ(r.motion.motion, above ? Motion::slides : Motion::sticks);
-    EXPECT_STREQ(r.motion.decided_by, "newton");
+    EXPECT_EQ(r.motion->motion, above ? Motion::slides : Motion::sticks);
+    EXPECT_EQ(r.motion->decided_by, Decided_by::newton);
     EXPECT_TRUE(test::checker_accepts(text, r.certificate));
     const Hold_item h = answer_hold(text, "test", Request{});
     ASSERT_EQ(h.status, Status::answered) << h.message;
@@ -149,28 +149,28 @@ TEST(PreciseMotion, UnionMinimaxDecidesTheDinnerPlate) {
       R"({"at": [-0.6, -0.8]}, {"at": [0, -1]}, {"at": [0.6, -0.8]}, {"at": [0, 0]}]}})";
   struct Load {
     const char *x, *y, *m;
-    Motion_over expected;
+    Motion expected;
   };
   for (const Load& l : {Load{"-4147752156737/60000000000000", "-1482864524071/20000000000000",
-                             "59732690199553/60000000000000", Motion_over::slides},
+                             "59732690199553/60000000000000", Motion::slides},
                         Load{"-181775483315155714974009/50000000000000000000000000",
                              "-121725790733016995157591/25000000000000000000000000",
-                             "-24999481381234365212395539/25000000000000000000000000", Motion_over::depends}}) {
+                             "-24999481381234365212395539/25000000000000000000000000", Motion::depends}}) {
     Support_query query;
     query.question = Support_question::limit_surface;
     query.sides = 16;
     query.load = Vec3q{q(l.x), q(l.y), q(l.m)};
     query.polytopes = false;
-    const std::string tag = std::string("union_minimax_") + motion_over_name(l.expected);
+    const std::string tag = std::string("union_minimax_") + motion_name(l.expected);
     const Support_item item = answer_support(plate, "test", Request{}, query);
     ASSERT_EQ(item.status, Status::answered) << item.message << test::dump_failure(plate, tag);
-    ASSERT_TRUE(item.motion_over.has_value());
-    const Motion_over_f& m = *item.motion_over;
+    ASSERT_TRUE(item.motion.has_value());
+    const Motion_answer& m = *item.motion;
     for (const Motion v : m.per_vertex) EXPECT_EQ(v, Motion::slides) << test::dump_failure(plate, tag);
     EXPECT_EQ(m.motion, l.expected) << m.undecided_why << test::dump_failure(plate, tag);
-    EXPECT_EQ(m.decided_by, "minimax");
+    EXPECT_EQ(m.decided_by, Decided_by::minimax);
     EXPECT_TRUE(test::checker_accepts(plate, item.certificate)) << item.certificate;
-    if (l.expected == Motion_over::depends) {
+    if (l.expected == Motion::depends) {
       // The holding distribution is no vertex: the centre carries none of the weight and the rim all of it, spread.
       ASSERT_TRUE(m.sticking.has_value());
       int loaded = 0;
@@ -182,8 +182,8 @@ TEST(PreciseMotion, UnionMinimaxDecidesTheDinnerPlate) {
     exact.mode = Mode::exact;
     const Support_item e = answer_support(plate, "test", exact, query);
     ASSERT_TRUE(e.status == Status::answered || e.status == Status::undecided) << e.message;
-    if (e.motion_over && e.motion_over->motion != Motion_over::undecided) {
-      EXPECT_EQ(e.motion_over->motion, l.expected);
+    if (e.motion && e.motion->motion != Motion::undecided) {
+      EXPECT_EQ(e.motion->motion, l.expected);
     }
   }
 }

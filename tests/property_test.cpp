@@ -6,6 +6,7 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include "exact/certificates/certificates.h"
 #include "exact/statics/closure.h"
 #include "tests/test_support.h"
 

@@ -17,7 +17,8 @@
 #include "exact/io/streaming_scene_reader.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/distribution.h"
-#include "exact/sliding/region_motion_over.h"
+#include "exact/sliding/motion.h"
+#include "exact/sliding/strategies.h"
 #include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
 #include "proofs/checker/checker.h"
@@ -411,7 +412,7 @@ TEST(RegionMotion, SquareSticksInsideAndSlidesOutside) {
     for (Mode mode : {Mode::hybrid, Mode::exact}) {
       const Support_item r = motion_of(sq, c.load, mode);
       ASSERT_EQ(r.status, Status::answered) << r.message;
-      EXPECT_EQ(r.motion.motion, c.motion) << to_string(c.load[0]) << "," << to_string(c.load[1]) << "," << to_string(c.load[2]);
+      EXPECT_EQ(r.motion->motion, c.motion) << to_string(c.load[0]) << "," << to_string(c.load[1]) << "," << to_string(c.load[2]);
       EXPECT_FALSE(r.certificate.empty());  // checked by the independent checker inside answer_support
     }
   // Float: no twin of regions.
@@ -428,18 +429,18 @@ TEST(RegionMotion, TableAndPlateAsSmallRegionsReachTheirPointMassLimits) {
   const std::string table = "{\"wrenchkit\": 1, \"support\": {\"mu\": 1, \"regions\": [" + legs + "]}}";
   const Region_sliding a = power(table, {0, 0, 1});
   EXPECT_NEAR(a.h_lo.get_d(), std::sqrt(2.0), 1e-4);
-  EXPECT_EQ(motion_of(table, {0, 0, Rational(140, 100)}).motion.motion, Motion::sticks);
-  EXPECT_EQ(motion_of(table, {0, 0, Rational(142, 100)}).motion.motion, Motion::slides);
-  EXPECT_EQ(motion_of(table, {Rational(99, 100), 0, 0}).motion.motion, Motion::sticks);
-  EXPECT_EQ(motion_of(table, {Rational(101, 100), 0, 0}).motion.motion, Motion::slides);
+  EXPECT_EQ(motion_of(table, {0, 0, Rational(140, 100)}).motion->motion, Motion::sticks);
+  EXPECT_EQ(motion_of(table, {0, 0, Rational(142, 100)}).motion->motion, Motion::slides);
+  EXPECT_EQ(motion_of(table, {Rational(99, 100), 0, 0}).motion->motion, Motion::sticks);
+  EXPECT_EQ(motion_of(table, {Rational(101, 100), 0, 0}).motion->motion, Motion::slides);
   // The dinner plate carried by its rim: eight small regions at radius 1 (rational points on the circle), 1/8 each;
   // the pure moment μWR = 1 is the threshold.
   std::string rim;
   for (const Vec2& v : inscribed(8, 1)) rim += (rim.empty() ? "" : ", ") + leg(v.x, v.y, e, Rational(1, 8));
   const std::string plate = "{\"wrenchkit\": 1, \"support\": {\"mu\": 1, \"regions\": [" + rim + "]}}";
   EXPECT_NEAR(power(plate, {0, 0, 1}).h_lo.get_d(), 1.0, 1e-4);
-  EXPECT_EQ(motion_of(plate, {0, 0, Rational(99, 100)}).motion.motion, Motion::sticks);
-  EXPECT_EQ(motion_of(plate, {0, 0, Rational(101, 100)}).motion.motion, Motion::slides);
+  EXPECT_EQ(motion_of(plate, {0, 0, Rational(99, 100)}).motion->motion, Motion::sticks);
+  EXPECT_EQ(motion_of(plate, {0, 0, Rational(101, 100)}).motion->motion, Motion::slides);
 }
 
 TEST(RegionMotion, PointsWithRegionsAndLinearPressure) {
@@ -459,7 +460,7 @@ TEST(RegionMotion, PointsWithRegionsAndLinearPressure) {
                                                                   {{0, 0, 6}, Motion::slides}}) {
     const Support_item r = motion_of(text, p);
     ASSERT_EQ(r.status, Status::answered) << r.message;
-    EXPECT_EQ(r.motion.motion, m) << to_string(p[0]) << "," << to_string(p[1]) << "," << to_string(p[2]);
+    EXPECT_EQ(r.motion->motion, m) << to_string(p[0]) << "," << to_string(p[1]) << "," << to_string(p[2]);
   }
 }
 
@@ -474,7 +475,7 @@ TEST(RegionMotion, RandomRegionsNearTheirLimitSurfaceAreCertified) {
     const Scene s = read(text);
     Vec3q dir{Rational(coord(rng), 4), Rational(coord(rng), 4), Rational(coord(rng), 4)};
     if (dir[0] == 0 && dir[1] == 0 && dir[2] == 0) dir[2] = 1;
-    const Region_motion probe = decide_region_motion(*s.support, dir);
+    const Motion_answer probe = decide_on_regions(*s.support, dir);
     const double g = probe.gauge_estimate;  // dir/g is on the limit surface
     ASSERT_TRUE(std::isfinite(g) && g > 0) << text;
     for (const double side : {0.99, 1.01}) {
@@ -482,8 +483,8 @@ TEST(RegionMotion, RandomRegionsNearTheirLimitSurfaceAreCertified) {
       const Vec3q p{dir[0] * k, dir[1] * k, dir[2] * k};
       const Support_item r = motion_of(text, p);
       ASSERT_EQ(r.status, Status::answered) << r.message << "\n" << text;
-      EXPECT_EQ(r.motion.motion, side < 1 ? Motion::sticks : Motion::slides) << text << " side " << side;
-      decided += r.motion.motion != Motion::undecided;
+      EXPECT_EQ(r.motion->motion, side < 1 ? Motion::sticks : Motion::slides) << text << " side " << side;
+      decided += r.motion->motion != Motion::undecided;
     }
   }
   EXPECT_EQ(decided, 32);
@@ -492,9 +493,9 @@ TEST(RegionMotion, RandomRegionsNearTheirLimitSurfaceAreCertified) {
 TEST(RegionMotion, TamperedCertificatesAreRejected) {
   const std::string sq = region_scene(square(1), 1, 1);
   const Support_item stick = motion_of(sq, {Rational(1, 2), 0, Rational(1, 4)});
-  ASSERT_EQ(stick.motion.motion, Motion::sticks);
+  ASSERT_EQ(stick.motion->motion, Motion::sticks);
   const Support_item slide = motion_of(sq, {0, 0, Rational(4, 5)});
-  ASSERT_EQ(slide.motion.motion, Motion::slides);
+  ASSERT_EQ(slide.motion->motion, Motion::slides);
   using wrenchkit_checker::Outcome;
   EXPECT_EQ(wrenchkit_checker::check(sq, stick.certificate).outcome, Outcome::accepted);
   EXPECT_EQ(wrenchkit_checker::check(sq, slide.certificate).outcome, Outcome::accepted);
@@ -531,16 +532,16 @@ TEST(RegionMotionOver, MatAndLegsGolden) {
   // 4 + 0.1913 under (2, 0, 2).
   struct Case {
     Vec3q load;
-    Motion_over motion;
+    Motion motion;
   };
   const std::vector<Case> cases = {
-      {{2, 0, 0}, Motion_over::sticks},                  // inside both
-      {{3, 0, 0}, Motion_over::slides},                  // the translation (1, 0, 0): the dual bound 2 + the mat's 1/2
-      {{Rational(5, 2), 0, 0}, Motion_over::slides},     // on every limit surface: slides (the bound met exactly)
-      {{0, 0, Rational(1, 10)}, Motion_over::sticks},    // below the mat's 0.1913
-      {{0, 0, 1}, Motion_over::depends},                 // the barbell sticks, the middle leg slides
-      {{0, 0, 5}, Motion_over::slides},                  // above 4.1913: the rotation about the centre
-      {{1, Rational(1, 2), Rational(1, 2)}, Motion_over::depends},
+      {{2, 0, 0}, Motion::sticks},                  // inside both
+      {{3, 0, 0}, Motion::slides},                  // the translation (1, 0, 0): the dual bound 2 + the mat's 1/2
+      {{Rational(5, 2), 0, 0}, Motion::slides},     // on every limit surface: slides (the bound met exactly)
+      {{0, 0, Rational(1, 10)}, Motion::sticks},    // below the mat's 0.1913
+      {{0, 0, 1}, Motion::depends},                 // the barbell sticks, the middle leg slides
+      {{0, 0, 5}, Motion::slides},                  // above 4.1913: the rotation about the centre
+      {{1, Rational(1, 2), Rational(1, 2)}, Motion::depends},
   };
   const std::string scene = mat_legs();
   for (const Case& c : cases)
@@ -549,24 +550,24 @@ TEST(RegionMotionOver, MatAndLegsGolden) {
                                 to_string(c.load[1]) + "," + to_string(c.load[2]);
       const Support_item r = motion_of(scene, c.load, mode);
       ASSERT_EQ(r.status, Status::answered) << r.message << " " << where;
-      ASSERT_TRUE(r.motion_over && r.region_motion_over && r.admissible) << where;
-      EXPECT_EQ(r.motion_over->motion, c.motion) << where << "\n" << r.motion_over->undecided_why;
+      ASSERT_TRUE(r.motion && r.admissible) << where;
+      EXPECT_EQ(r.motion->motion, c.motion) << where << "\n" << r.motion->undecided_why;
       ASSERT_EQ(r.vertices.size(), 2u);
       EXPECT_EQ(r.vertices[0], (std::vector<Rational>{0, 4, 0}));
       EXPECT_EQ(r.vertices[1], (std::vector<Rational>{2, 0, 2}));
       // Checked inside answer_support; again here, and its header.
       EXPECT_EQ(r.certificate.rfind(R"({"wrenchkit_certificate": 2, "property": "motion")", 0), 0u) << r.certificate;
       EXPECT_TRUE(test::checker_accepts(scene, r.certificate)) << where;
-      if (c.motion == Motion_over::depends) {
-        EXPECT_EQ(r.motion_over->per_vertex, (std::vector<Motion>{Motion::slides, Motion::sticks})) << where;
+      if (c.motion == Motion::depends) {
+        EXPECT_EQ(r.motion->per_vertex, (std::vector<Motion>{Motion::slides, Motion::sticks})) << where;
       }
       // Format 1 has none; less friction (μ 1/4) breaks sticks, more (μ 1; 3 for depends, whose sticking witness
       // stays inside larger discs) breaks slides.
       std::string v1 = r.certificate;
       v1.replace(v1.find(": 2,"), 4, ": 1,");
       EXPECT_NE(wrenchkit_checker::check(scene, v1).message.find("no certificate in format 1"), std::string::npos);
-      const std::string other = mat_legs(c.motion == Motion_over::sticks    ? "1/4"
-                                         : c.motion == Motion_over::depends ? "3"
+      const std::string other = mat_legs(c.motion == Motion::sticks    ? "1/4"
+                                         : c.motion == Motion::depends ? "3"
                                                                             : "1");
       EXPECT_EQ(wrenchkit_checker::check(other, r.certificate).outcome, wrenchkit_checker::Outcome::rejected) << where;
     }
@@ -598,17 +599,17 @@ TEST(RegionMotionOver, AMixtureSticksWhereNoVertexDoes) {
   for (const Mode mode : {Mode::hybrid, Mode::exact}) {
     const Support_item r = motion_of(cross, {Rational(3, 2), Rational(3, 2), -2}, mode);
     ASSERT_EQ(r.status, Status::answered) << r.message;
-    ASSERT_TRUE(r.motion_over && r.region_motion_over);
-    EXPECT_EQ(r.motion_over->motion, Motion_over::depends) << r.motion_over->undecided_why;
-    EXPECT_EQ(r.motion_over->decided_by, "lp");
-    EXPECT_EQ(r.motion_over->per_vertex, (std::vector<Motion>(r.vertices.size(), Motion::slides)));
-    ASSERT_TRUE(r.region_motion_over->sticking_distribution);
+    ASSERT_TRUE(r.motion);
+    EXPECT_EQ(r.motion->motion, Motion::depends) << r.motion->undecided_why;
+    EXPECT_EQ(r.motion->decided_by, Decided_by::lp);
+    EXPECT_EQ(r.motion->per_vertex, (std::vector<Motion>(r.vertices.size(), Motion::slides)));
+    ASSERT_TRUE(r.motion->sticking);
     const Scene sc = read(cross);
-    EXPECT_TRUE(admissible_set(sc).contains(*sc.support, *r.region_motion_over->sticking_distribution));
+    EXPECT_TRUE(admissible_set(sc).contains(*sc.support, r.motion->sticking->distribution));
     // The oracle: that distribution sticks by the known-forces decision, the vertices slide.
     Support t = *sc.support;
-    for (std::size_t i = 0; i < t.points.size(); ++i) t.points[i].force = (*r.region_motion_over->sticking_distribution)[i];
-    EXPECT_EQ(decide_region_motion(t, {Rational(3, 2), Rational(3, 2), -2}).motion, Motion::sticks);
+    for (std::size_t i = 0; i < t.points.size(); ++i) t.points[i].force = r.motion->sticking->distribution[i];
+    EXPECT_EQ(decide_on_regions(t, {Rational(3, 2), Rational(3, 2), -2}).motion, Motion::sticks);
     EXPECT_TRUE(test::checker_accepts(cross, r.certificate));
   }
 }
@@ -622,7 +623,7 @@ TEST(RegionMotionOver, AgainstTheKnownForcesDecisionOverF) {
       "points": [{"at": [-2, -1]}, {"at": [2, -1]}, {"at": [1, 2]}, {"at": [-1, "3/2"], "mu": "3/4"}],
       "regions": [{"outline": [[-1, -1], [1, -1], [0, 1]], "pressure": {"linear": [1, "1/4", "1/4"]}}]}})";
   std::mt19937_64 rng(20261127);
-  std::map<Motion_over, int> seen;
+  std::map<Motion, int> seen;
   for (const std::string& scene : {mat_legs(), tri}) {
     const Scene sc = read(scene);
     const Support& s = *sc.support;
@@ -650,24 +651,24 @@ TEST(RegionMotionOver, AgainstTheKnownForcesDecisionOverF) {
                                 to_string(p[1]) + "," + to_string(p[2]) + "\n" + scene;
       const Support_item r = motion_of(scene, p);
       ASSERT_EQ(r.status, Status::answered) << r.message << "\n" << where;
-      const Motion_over m = r.motion_over->motion;
+      const Motion m = r.motion->motion;
       ++seen[m];
       bool stick = false, slide = false;
       for (const std::vector<Rational>& f : spread) {
         Support t = s;
         for (std::size_t i = 0; i < f.size(); ++i) t.points[i].force = f[i];
-        const Motion g = decide_region_motion(t, p).motion;
+        const Motion g = decide_on_regions(t, p).motion;
         stick |= g == Motion::sticks;
         slide |= g == Motion::slides;
       }
-      EXPECT_FALSE(m == Motion_over::sticks && slide) << where;
-      EXPECT_FALSE(m == Motion_over::slides && stick) << where;
-      EXPECT_TRUE(!(stick && slide) || m == Motion_over::depends || m == Motion_over::undecided) << where;
-      EXPECT_TRUE(m == Motion_over::undecided || !r.certificate.empty()) << where;
+      EXPECT_FALSE(m == Motion::sticks && slide) << where;
+      EXPECT_FALSE(m == Motion::slides && stick) << where;
+      EXPECT_TRUE(!(stick && slide) || m == Motion::depends || m == Motion::undecided) << where;
+      EXPECT_TRUE(m == Motion::undecided || !r.certificate.empty()) << where;
     }
   }
-  for (const Motion_over m : {Motion_over::sticks, Motion_over::slides, Motion_over::depends})
-    EXPECT_GT(seen[m], 0) << motion_over_name(m);
+  for (const Motion m : {Motion::sticks, Motion::slides, Motion::depends})
+    EXPECT_GT(seen[m], 0) << motion_name(m);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // tool's own failure path (a wrong certified answer ⇒ exit 1) is proven by the CTest stress_report_fault.
 #include <gtest/gtest.h>
 
+#include "exact/pipeline/answer_json.h"
 #include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/labels_answer.h"
 
@@ -139,11 +140,11 @@ TEST(StressFamilies, RegionLegsStickOrSlideForEveryDistributionBySide) {
         r.mode = m;
         const Support_item item = answer_support(s.text, "region_legs", r, q);
         ASSERT_EQ(item.status, Status::answered) << item.message << test::dump_failure(s.text, "region_legs");
-        ASSERT_TRUE(item.motion_over.has_value());
-        EXPECT_EQ(item.motion_over->motion, s.above ? Motion_over::slides : Motion_over::sticks)
-            << eps << " " << mode_name(m) << " " << item.motion_over->undecided_why << test::dump_failure(s.text, "region_legs");
+        ASSERT_TRUE(item.motion.has_value());
+        EXPECT_EQ(item.motion->motion, s.above ? Motion::slides : Motion::sticks)
+            << eps << " " << mode_name(m) << " " << item.motion->undecided_why << test::dump_failure(s.text, "region_legs");
         EXPECT_TRUE(test::checker_accepts(s.text, item.certificate)) << test::dump_failure(s.text, "region_legs");
-        for (const Motion v : item.motion_over->per_vertex)
+        for (const Motion v : item.motion->per_vertex)
           EXPECT_EQ(v, s.above ? Motion::slides : Motion::sticks) << test::dump_failure(s.text, "region_legs");
       }
     }
@@ -316,31 +317,29 @@ TEST(StressFamilies, UnknownSupportNearTheThresholds) {
     const std::string where = "seed " + std::to_string(seed) + (s.above ? " above" : " below") + " allowed " +
                               std::to_string(s.allowed) + "\n" + s.text + "\nload " + s.load_text[0] + ", " +
                               s.load_text[1] + ", " + s.load_text[2];
-    if (item.status == Status::undecided || (item.motion_over && item.motion_over->motion == Motion_over::undecided)) {
+    if (item.status == Status::undecided || (item.motion && item.motion->motion == Motion::undecided)) {
       ++undecided;
-      EXPECT_TRUE(!item.uncertified.empty() || (item.motion_over && !item.motion_over->undecided_why.empty()))
+      EXPECT_TRUE(item.motion && (!item.motion->uncertified.empty() || !item.motion->undecided_why.empty()))
           << "an undecided answer says why, with its distance\n" << where;
-      if (std::getenv("WRENCHKIT_TEST_VERBOSE"))
-      {
+      if (std::getenv("WRENCHKIT_TEST_VERBOSE")) {
         std::string per;
-        if (item.motion_over)
-          for (std::size_t v = 0; v < item.motion_over->per_vertex.size(); ++v)
-            per += std::string(" ") + motion_name(item.motion_over->per_vertex[v]) + "/" +
-                   item.motion_over->decisions[v].decided_by;
-        std::fprintf(stderr, "undecided: %s %s (%s)%s\n%s\n", item.message.c_str(), item.uncertified.c_str(),
-                     item.motion_over ? item.motion_over->decided_by.c_str() : "", per.c_str(), where.c_str());
+        if (item.motion)
+          for (const Motion v : item.motion->per_vertex) per += std::string(" ") + motion_name(v);
+        std::fprintf(stderr, "undecided: %s %s (%s)%s\n%s\n", item.message.c_str(),
+                     item.motion ? item.motion->uncertified.c_str() : "",
+                     item.motion ? decided_by_name(item.motion->decided_by) : "", per.c_str(), where.c_str());
       }
       continue;
     }
     ASSERT_EQ(item.status, Status::answered) << item.message << "\n" << where;
-    ASSERT_TRUE(item.motion_over) << where;
-    const Motion_over m = item.motion_over->motion;
-    const unsigned bit = m == Motion_over::sticks   ? stress::answer_sticks
-                         : m == Motion_over::slides ? stress::answer_slides
-                                                    : stress::answer_depends;
-    EXPECT_TRUE(s.allowed & bit) << motion_over_name(m) << " is ruled out by the construction\n" << where;
+    ASSERT_TRUE(item.motion) << where;
+    const Motion m = item.motion->motion;
+    const unsigned bit = m == Motion::sticks   ? stress::answer_sticks
+                         : m == Motion::slides ? stress::answer_slides
+                                               : stress::answer_depends;
+    EXPECT_TRUE(s.allowed & bit) << motion_name(m) << " is ruled out by the construction\n" << where;
     EXPECT_FALSE(item.certificate.empty()) << where;
-    answers.insert(motion_over_name(m));
+    answers.insert(motion_name(m));
   }
   EXPECT_LE(undecided * 100, n) << undecided << " of " << n << " undecided";
   EXPECT_EQ(answers.size(), 3u);

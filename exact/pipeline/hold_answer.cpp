@@ -1,5 +1,7 @@
 #include "exact/pipeline/hold_answer.h"
 
+#include "exact/certificates/certificates.h"
+
 namespace wrenchkit {
 
 namespace {

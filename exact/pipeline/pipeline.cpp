@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "exact/certificates/certificates.h"
 #include "exact/io/streaming_scene_reader.h"
 #include "proofs/checker/checker.h"
 

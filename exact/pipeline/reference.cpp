@@ -12,6 +12,7 @@
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
 #include "exact/io/scene_writer.h"
+#include "exact/pipeline/answer_json.h"
 #include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/limit_surface.h"
@@ -222,15 +223,14 @@ Motion_result motion_of(const Scene& scene, std::string_view text, int sides) {
   q.question = Support_question::limit_surface;
   q.sides = sides;
   q.polytopes = false;
-  const Vec3q l = load_wrench(scene);
-  q.load = Vec3q{l[0], l[1], l[2]};
+  q.load = load_wrench(scene);
   const Support_item r = answer_support(scene, text, "", request, q);
   Motion_result m;
   m.check_failed = r.status == Status::check_failed;
   if (r.status != Status::answered) m.why = r.message;
-  else if (r.certificate.empty()) m.why = r.uncertified.empty() ? "undecided" : r.uncertified;
+  else if (r.certificate.empty()) m.why = r.motion->uncertified.empty() ? "undecided" : r.motion->uncertified;
   else {
-    m.motion = r.motion_over ? motion_over_name(r.motion_over->motion) : motion_name(r.motion.motion);
+    m.motion = motion_name(r.motion->motion);
     m.certificate = r.certificate;
   }
   return m;

@@ -20,11 +20,9 @@
 #include "exact/pipeline/pipeline.h"
 #include "exact/sliding/distribution.h"
 #include "exact/sliding/limit_surface.h"
-#include "exact/sliding/motion_certificate.h"
-#include "exact/sliding/region_motion_over.h"
+#include "exact/sliding/motion.h"
 #include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
-#include "exact/sliding/unknown_motion.h"
 #include "float/limit_surface_twin.h"
 
 namespace wrenchkit {
@@ -54,9 +52,8 @@ struct Support_item {
   Ls_polytope in, out;          // limit-surface, exact and hybrid, when built
   bool polytopes_built = false;
   Sliding_answer sliding;       // exact and hybrid
-  std::optional<Rational> gauge_in, gauge_out;  // with a load
-  Motion_decision motion;                       // with a load
-  Polygonal_ls::Normal_cone cone_in, cone_out;  // with a load that does not certainly stick
+  std::optional<Rational> gauge_in, gauge_out;  // with a load, the polytopes built
+  Polygonal_ls::Normal_cone cone_in, cone_out;  // with a load that does not stick, the polytopes built
   // hybrid and float: the true surface by the twin
   std::vector<fl::Support_point_twin> twin;
   std::optional<fl::Bounded> true_power;    // with a twist
@@ -73,35 +70,28 @@ struct Support_item {
   std::vector<std::vector<Rational>> vertices;
   std::optional<Power_range> power;
   Vec2 pressure_center;
-  std::optional<Motion_over_f> motion_over;  // limit-surface with a load
-  // limit-surface with a load: the certificate of its motion (proofs/certificate-format.md §6), checked by the
-  // independent checker; empty when undecided. A verdict for which no rational witness was found (a load
-  // within the inscribed 1024-gons' resolution of the limit surface) is undecided, with `uncertified` saying so.
-  std::string certificate;
-  std::string uncertified;
   // A support with regions [RG-1] [RG-2] (exact/sliding/region_sliding.h), every mode but float (which has no twin
-  // of regions and answers undecided): the exact statics, the power and load of --twist as certified brackets, and
-  // the motion of --load decided by its certificate (in `certificate`, checked like every other).
+  // of regions and answers undecided): the exact statics and the power and load of --twist as certified brackets;
+  // with a point force not given [RG-3], the regions' own (the points' range over F is in `power`, their bracket added).
   std::optional<Region_sliding> regions;
-  std::optional<Region_motion> region_motion;
-  // Regions together with a point force not given [RG-3]: `admissible`, `vertices` and `pressure_center` as for an
-  // unknown distribution; `regions` the regions' own statics and bracket (the points dropped); `power` the points'
-  // range over F plus the regions' bracket; `motion_over` the verdict over F (from region_motion_over, whose
-  // format-2 certificate is in `certificate`).
-  std::optional<Region_motion_over> region_motion_over;
+  // limit-surface with a load: the load's motion, whatever the support is made of (exact/sliding/motion.h), and the
+  // certificate written from its witnesses (proofs/certificate-format.md §6), checked by the independent checker;
+  // empty when undecided (or a verdict stands uncertified: `motion->uncertified` says why).
+  std::optional<Motion_answer> motion;
+  std::string certificate;
 };
 
 // Reads `text` (eagerly) and answers; never throws. A scene without a support is bad input; so is a
 // limit surface whose candidate normals exceed kMaxCandidates (the polytopes are not built then).
 // An unknown distribution: `sliding` (and `limit-surface --twist`) answers the power range over F and the
 // extreme distributions; `limit-surface --load` whether the load sticks for every admissible distribution,
-// slides for every one, or depends (exact/sliding/unknown_motion.h), with its witnesses. The polytopes
+// slides for every one, or depends (exact/sliding/motion.h), with its witnesses. The polytopes
 // depend on the distribution and are not built.
 Support_item answer_support(std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query);
 // A support with regions: answered by exact/sliding/region_sliding.h in exact and hybrid alike (the doubles there only
 // propose witnesses), undecided in float; refused (bad input) with the polytopes asked for by name. With points whose
-// force is not given: the unknown distribution's answer over the regions (exact/sliding/region_motion_over.h).
+// force is not given: the unknown distribution's answer over the regions.
 // The same for a scene already read.
 // `text`: a text of the scene for the checker (its own text, or write_scene(scene)).
 Support_item answer_support(const Scene& scene, std::string_view text, std::string_view source, const Request& request,

@@ -85,7 +85,13 @@ Vec3q to_rational(const Vec3z& v) { return {Rational(v[0]), Rational(v[1]), Rati
 const char* side_name(Side s) { return s == Side::inner ? "inner" : "outer"; }
 
 const char* motion_name(Motion m) {
-  return m == Motion::sticks ? "sticks" : (m == Motion::slides ? "slides" : "undecided");
+  switch (m) {
+    case Motion::sticks: return "sticks";
+    case Motion::slides: return "slides";
+    case Motion::depends: return "depends";
+    case Motion::undecided: return "undecided";
+  }
+  return "?";
 }
 
 Motion classify_load(const std::optional<Rational>& gi, const std::optional<Rational>& go) {

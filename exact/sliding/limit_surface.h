@@ -167,9 +167,10 @@ class Polygonal_ls {
 Vec3q to_rational(const Vec3z& v);
 
 // [LS-3] The motion for a quasistatic load p: sticks iff p is in the interior of LS (relative
-// interior when flat), slides iff not. Certified from the polytopes: g_in(p) < 1 ⇒ sticks,
-// g_out(p) ≥ 1 ⇒ slides, else undecided (refine n).
-enum class Motion { sticks, slides, undecided };
+// interior when flat), slides iff not; over an unknown distribution also depends (exact/sliding/motion.h).
+// classify_load certifies it from the polytopes: g_in(p) < 1 ⇒ sticks, g_out(p) ≥ 1 ⇒ slides, else undecided
+// (refine n).
+enum class Motion { sticks, slides, depends, undecided };
 const char* motion_name(Motion m);
 Motion classify_load(const std::optional<Rational>& gauge_inner, const std::optional<Rational>& gauge_outer);
 

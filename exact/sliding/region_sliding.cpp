@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "exact/sliding/motion_certificate.h"
+#include "exact/sliding/strategies.h"
 #include "exact/sliding/sliding.h"
 
 namespace wrenchkit {
@@ -508,23 +508,6 @@ Region_slide_block region_slide_block(const Support_region& r, const Rational& m
   return out;
 }
 
-void write_region_stick_block(Json_writer& w, const Region_stick_block& b) {
-  w.object().key("vertices").array();
-  for (const Vec2& v : b.cells.vertices) w.array().rational(v.x).rational(v.y).end_array();
-  w.end_array().key("triangles").array();
-  for (const auto& t : b.cells.triangles) w.array().integer(t[0]).integer(t[1]).integer(t[2]).end_array();
-  write_support_forces(w.end_array().key("forces"), b.forces);
-  w.end_object();
-}
-
-void write_region_slide_block(Json_writer& w, const Region_slide_block& b) {
-  w.object().key("vertices").array();
-  for (const Vec2& v : b.cells.vertices) w.array().rational(v.x).rational(v.y).end_array();
-  w.end_array().key("triangles").array();
-  for (const auto& t : b.cells.triangles) w.array().integer(t[0]).integer(t[1]).integer(t[2]).end_array();
-  w.end_array().key("speed_bounds").rationals(b.speed_bounds).end_object();
-}
-
 Region_slide_blocks region_slide_blocks(const Support& s, const Vec3q& q, const Rational& slack, std::size_t max_cells) {
   Region_slide_blocks out;
   std::vector<double> est;
@@ -558,7 +541,7 @@ namespace {
 // smoothed Newton witness on points and cells together.
 // (q_hint: the twist minimising the true power on the plane q·p = 1, or null: the cells' power there must exceed 1
 // for p to be inside their limit surface, a cheap necessary condition checked in double before the witness.)
-bool try_stick(const Support& s, const Vec3q& p, int m, Region_motion& out, const double* q_hint) {
+bool try_stick(const Support& s, const Vec3q& p, int m, Motion_answer& out, const double* q_hint) {
   Support aug;
   aug.mu = s.mu;
   aug.points = s.points;
@@ -584,8 +567,9 @@ bool try_stick(const Support& s, const Vec3q& p, int m, Region_motion& out, cons
   const std::optional<Stick_witness> w = smoothed_stick_witness(aug, f, p);
   if (!w) return false;
   const auto at = [&w](std::size_t i) { return w->forces.begin() + static_cast<std::ptrdiff_t>(i); };
-  out.support_forces.assign(at(0), at(s.points.size()));
-  out.stick_blocks.clear();
+  Stick_witness& out_w = out.sticking.emplace();
+  out_w.distribution.assign(f.begin(), f.begin() + static_cast<std::ptrdiff_t>(s.points.size()));
+  out_w.forces.assign(at(0), at(s.points.size()));
   std::size_t next = s.points.size();
   out.cells = 0;
   for (Region_cells& c : cells) {
@@ -593,43 +577,38 @@ bool try_stick(const Support& s, const Vec3q& p, int m, Region_motion& out, cons
     b.forces.assign(at(next), at(next + b.cells.triangles.size()));
     next += b.cells.triangles.size();
     out.cells += b.cells.triangles.size();
-    out.stick_blocks.push_back(std::move(b));
+    out_w.regions.push_back(std::move(b));
   }
   return true;
 }
 
 // Slides: the twist q, the points' rational speed bounds, and each region's slide block refined until the whole
 // bound is at most q·p (its share of the slack proportional to its estimated power).
-bool try_slide(const Support& s, const Vec3q& p, const Vec3q& q, Region_motion& out, std::size_t max_cells) {
-  if (q[0] == 0 && q[1] == 0 && q[2] == 0) return false;
+bool try_slide(const Support& s, const Vec3q& p, const Vec3q& q, Motion_answer& out, std::size_t max_cells) {
+  if (is_zero(q)) return false;
   const Rational power = dot(q, p);
   std::vector<Rational> u = speed_bounds(s, q);
+  std::vector<Rational> f;
   Rational bound;
-  for (std::size_t i = 0; i < s.points.size(); ++i) bound += s.mu_of(s.points[i]) * *s.points[i].force * u[i];
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    f.push_back(*s.points[i].force);
+    bound += s.mu_of(s.points[i]) * f.back() * u[i];
+  }
   if (bound > power) return false;
   Region_slide_blocks r = region_slide_blocks(s, q, Rational(power - bound), max_cells);
   if (!r.ok) return false;
   out.cells = r.cells;
   if (bound + r.bound > power) return false;
-  out.twist = q;
-  out.speed_bounds = std::move(u);
-  out.slide_blocks = std::move(r.blocks);
+  out.sliding = Slide_witness{std::move(f), q, std::move(u), std::move(r.blocks), {}};
   return true;
-}
-
-// The format-1 certificate of a decided Region_motion (§6.4).
-std::string region_motion_certificate(const Vec3q& p, const Region_motion& m) {
-  Json_writer j = motion_certificate_head(p, motion_name(m.motion));
-  write_region_witness_members(j, m);
-  return j.end_object().take();
 }
 
 }  // namespace
 
-Region_motion decide_region_motion(const Support& s, const Vec3q& p) {
+Motion_answer decide_on_regions(const Support& s, const Vec3q& p) {
   for (const Support_point& pt : s.points)
-    if (!pt.force) throw std::invalid_argument("decide_region_motion: every point force must be given");
-  Region_motion out;
+    if (!pt.force) throw std::invalid_argument("decide_on_regions: every point force must be given");
+  Motion_answer out;
   // The power in double (points and regions), for the search only.
   struct Point_d {
     double x, y, rho;
@@ -663,7 +642,7 @@ Region_motion decide_region_motion(const Support& s, const Vec3q& p) {
       for (const Vec3q& q : twists) {
         if (try_slide(s, p, q, out, budget)) {
           out.motion = Motion::slides;
-          out.certificate = region_motion_certificate(p, out);
+          out.decided_by = Decided_by::certificate;
           return true;
         }
         if (budget == kMaxRegionCells) break;
@@ -677,7 +656,7 @@ Region_motion decide_region_motion(const Support& s, const Vec3q& p) {
          level *= 2)
       if (try_stick(s, p, level, out, m.found ? m.q.data() : nullptr)) {
         out.motion = Motion::sticks;
-        out.certificate = region_motion_certificate(p, out);
+        out.decided_by = Decided_by::certificate;
         return true;
       }
     return false;
@@ -696,18 +675,6 @@ Region_motion decide_region_motion(const Support& s, const Vec3q& p) {
     std::snprintf(buf, sizeof buf, "no certificate with at most %zu cells", kMaxRegionCells);
   out.undecided_why = buf;
   return out;
-}
-
-void write_region_witness_members(Json_writer& w, const Region_motion& m) {
-  if (m.motion == Motion::sticks) {
-    write_support_forces(w.key("support_forces"), m.support_forces);
-    w.key("regions").array();
-    for (const Region_stick_block& b : m.stick_blocks) write_region_stick_block(w, b);
-  } else {
-    w.key("twist").rationals(*m.twist).key("speed_bounds").rationals(m.speed_bounds).key("regions").array();
-    for (const Region_slide_block& b : m.slide_blocks) write_region_slide_block(w, b);
-  }
-  w.end_array();
 }
 
 }  // namespace wrenchkit

@@ -9,8 +9,8 @@
 //   edge a → b [RG-2] (square roots and asinh), evaluated in MPFR interval arithmetic with directed rounding
 //   and summed with the edges' signs; the precision doubles until the power's relative width meets the
 //   tolerance. Certified brackets, exact rational ends.
-// * Stick / slide (every mode but float, which has no twin of regions): answered only with a certificate the
-//   independent checker accepts (proofs/certificate-format.md §6.4): sticks — rational forces on the cells of
+// * Stick / slide (every mode but float, which has no twin of regions; decide_on_regions of exact/sliding/strategies.h,
+//   behind decide_motion): answered only with witnesses a certificate carries (proofs/certificate-format.md §6.4): sticks — rational forces on the cells of
 //   a triangulation of each region (the cells tile it), strictly inside their discs μ F_k, acting at the cells'
 //   pressure centroids, with the points' forces summing to the load; slides — a twist and rational speed
 //   bounds at the points and at the cells' vertices, whose power bound Σ_points μ f u + Σ_cells Σ_j μ w_j u_j
@@ -23,7 +23,6 @@
 #include <string>
 #include <vector>
 
-#include "exact/io/json_writer.h"
 #include "exact/io/region.h"
 #include "exact/sliding/limit_surface.h"
 
@@ -96,31 +95,5 @@ struct Region_slide_blocks {
   double estimate = 0;     // Σ_R μ_R ∫_R |v| p in double
 };
 Region_slide_blocks region_slide_blocks(const Support& s, const Vec3q& q, const Rational& slack, std::size_t max_cells);
-void write_region_stick_block(Json_writer& w, const Region_stick_block& b);
-void write_region_slide_block(Json_writer& w, const Region_slide_block& b);
-
-// Does the load p stick or slide on the support with regions? Decided by certificates only (see above); the
-// certificate (format 1, §6.4) is returned for the pipeline's independent check.
-struct Region_motion {
-  Motion motion = Motion::undecided;
-  std::string certificate;
-  std::size_t cells = 0;            // cells in the certificate
-  std::optional<Vec3q> twist;       // slides: the twist of the certificate
-  double gauge_estimate = 0;        // 1 / min{h(q) : q·p = 1}, in double (≥ 1 slides, < 1 sticks)
-  std::string undecided_why;
-  // The witness the certificate is written from (format 1 here; format 2 writes it inside a witness object, §6.5):
-  std::vector<Vec2> support_forces;              // sticks: one per support point
-  std::vector<Region_stick_block> stick_blocks;  // sticks: one per region
-  std::vector<Rational> speed_bounds;            // slides: one per support point (at `twist`)
-  std::vector<Region_slide_block> slide_blocks;  // slides: one per region
-};
-constexpr std::size_t kMaxRegionCells = 20000;       // slide: the adaptive cells of every region together
-constexpr std::size_t kMaxRegionStickCells = 5000;   // stick: m² cells per coarse triangle, m = 1, 2, 4, …
-Region_motion decide_region_motion(const Support& s, const Vec3q& p);
-
-// The members of a region witness (format 2, certificate-format.md §6.5): "support_forces" and "regions" (stick
-// blocks) of a sticking Region_motion, or "twist", "speed_bounds" and "regions" (slide blocks) of a sliding one,
-// written into an open object.
-void write_region_witness_members(Json_writer& w, const Region_motion& m);
 
 }  // namespace wrenchkit

@@ -2,6 +2,7 @@
 #include "exact/sliding/sliding.h"
 
 #include "exact/sliding/precise_motion.h"
+#include "exact/sliding/strategies.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -207,14 +208,14 @@ namespace {
 // Hybrid gives it a tenth of its budget first: closer loads are decided in milliseconds by SL-6's Newton, and
 // only what Newton cannot settle (a load near a facet, where h has a kink) gets the search's full budget.
 constexpr std::size_t kSearchCells = 200000, kHybridFirstCells = 20000;
-Motion_decision search(const Ls_support& support, const Vec3q& p, std::size_t cells = kSearchCells) {
-  Motion_decision d;
+Points_verdict search(const Ls_support& support, const Vec3q& p, std::size_t cells = kSearchCells) {
+  Points_verdict d;
   const fl::Motion_answer f =
       fl::classify_load(twin_support(support), {to_bounded(p[0]), to_bounded(p[1]), to_bounded(p[2])}, cells);
   d.cells = f.cells;
   if (f.motion != fl::Motion_twin::undecided) {
     d.motion = f.motion == fl::Motion_twin::sticks ? Motion::sticks : Motion::slides;
-    d.decided_by = "float";
+    d.decided_by = Decided_by::float_search;
     d.witness = f.witness;
   }
   return d;
@@ -223,7 +224,7 @@ Motion_decision search(const Ls_support& support, const Vec3q& p, std::size_t ce
 // [SL-6] Both abstained (a load within their resolution of the surface): Newton in multiple precision proposes,
 // exact rationals decide.
 // Then, if Newton too abstains, the search with its full budget.
-void precise_fallback(const Ls_support& support, const Vec3q& p, Motion_decision& d) {
+void precise_fallback(const Ls_support& support, const Vec3q& p, Points_verdict& d) {
   if (d.motion != Motion::undecided) return;
   std::vector<Rho_point> pts;
   pts.reserve(support.points.size());
@@ -236,18 +237,18 @@ void precise_fallback(const Ls_support& support, const Vec3q& p, Motion_decision
     return;
   }
   d.motion = m.motion;
-  d.decided_by = "newton";
+  d.decided_by = Decided_by::newton;
   if (m.motion == Motion::slides) d.exact_witness = m.twist;
 }
 
 }  // namespace
 
-Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mode, const Ls_polytope* inner,
+Points_verdict points_verdict(const Polygonal_ls& model, const Vec3q& p, Mode mode, const Ls_polytope* inner,
                               const Ls_polytope* outer) {
-  Motion_decision d;
+  Points_verdict d;
   if (model.dimension() < 3) {  // a flat limit surface has no interior: every load slides (SL-1)
     d.motion = Motion::slides;
-    d.decided_by = "flat";
+    d.decided_by = Decided_by::flat;
     return d;
   }
   if (mode != Mode::exact) {
@@ -259,21 +260,21 @@ Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& p, Mode mo
     if (!inner) inner = &built_in.emplace(model.build(Side::inner));
     if (!outer) outer = &built_out.emplace(model.build(Side::outer));
     d.motion = classify_load(model.gauge(*inner, Side::inner, p), model.gauge(*outer, Side::outer, p));
-    if (d.motion != Motion::undecided) d.decided_by = "polygons";
+    if (d.motion != Motion::undecided) d.decided_by = Decided_by::polygons;
   }
   if (mode == Mode::hybrid) precise_fallback(model.support(), p, d);
   return d;
 }
 
-Motion_decision decide_motion(const Ls_support& support, const Vec3q& p, Mode mode, int sides) {
-  if (support.points.size() < 2) return decide_motion(Polygonal_ls(support, make_directions(sides)), p, mode);
+Points_verdict points_verdict(const Ls_support& support, const Vec3q& p, Mode mode, int sides) {
+  if (support.points.size() < 2) return points_verdict(Polygonal_ls(support, make_directions(sides)), p, mode);
   std::size_t spent = 0;
   if (mode != Mode::exact) {
-    const Motion_decision d = search(support, p, mode == Mode::hybrid ? kHybridFirstCells : kSearchCells);
+    const Points_verdict d = search(support, p, mode == Mode::hybrid ? kHybridFirstCells : kSearchCells);
     if (d.motion != Motion::undecided || mode == Mode::float_only) return d;
     spent = d.cells;
   }
-  Motion_decision d = decide_motion(Polygonal_ls(support, make_directions(sides)), p, Mode::exact);
+  Points_verdict d = points_verdict(Polygonal_ls(support, make_directions(sides)), p, Mode::exact);
   d.cells = spent;
   if (mode == Mode::hybrid) precise_fallback(support, p, d);
   return d;

@@ -82,26 +82,4 @@ Sliding_answer compute_sliding(const Polygonal_ls& model, const std::optional<Ve
 // The merged support as the float twin's points (each value with its conversion bound) [FL-4].
 std::vector<fl::Support_point_twin> twin_support(const Ls_support& s);
 
-// Does the load p stick or slide on the TRUE limit surface (interior / not)?
-//   exact  — the polygons [LS-3]: g_in(p) < 1 sticks, g_out(p) ≥ 1 slides, else undecided (refine N);
-//   hybrid — the float twin's certified search on the true LS first [FL-7], the polygons only when it is
-//            undecided (a load within the search's resolution of LS);
-//   float  — the search alone.
-// Hybrid gives the search a tenth of its budget (20 000 twists) first; when it and the polygons abstain, Newton's
-// method in multiple precision proposes and exact rationals decide [SL-6] (decided_by "newton"; exact_witness
-// holds its twist when it slides); when Newton abstains too (a load near a facet), the search's full budget.
-// Both are certified, so hybrid never contradicts exact; it decides more often (no N to refine). The
-// polytopes are needed only when the search is undecided: pass them, or nullptr to have them built here.
-struct Motion_decision {
-  Motion motion = Motion::undecided;
-  const char* decided_by = "none";  // "float" (the search), "polygons", or "none"
-  std::size_t cells = 0;            // twists the search evaluated
-  std::array<double, 3> witness{};  // slides by the search: a twist with h(q) ≤ q·p
-  std::optional<Vec3q> exact_witness;  // slides by "newton" (SL-6): a primitive integer twist with h(q) < q·p
-};
-Motion_decision decide_motion(const Polygonal_ls& model, const Vec3q& load, Mode mode,
-                              const Ls_polytope* inner = nullptr, const Ls_polytope* outer = nullptr);
-// The same from the merged support alone: the polygons (N = sides) are set up only when the search cannot tell.
-Motion_decision decide_motion(const Ls_support& support, const Vec3q& load, Mode mode, int sides);
-
 }  // namespace wrenchkit

@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "exact/statics/cone_lp.h"
-#include "exact/io/json_writer.h"
 #include "exact/statics/hybrid_kernel.h"
 #include "exact/io/to_float.h"
 
@@ -184,37 +183,5 @@ Twist_reading read_twist(const std::array<Rational, 3>& t) {
   }
   return r;
 }
-
-void write_combination(Json_writer& w, const std::vector<std::pair<Generator_ref, Rational>>& terms) {
-  w.array();
-  for (const auto& [ref, weight] : terms)
-    w.object().member("contact", ref.contact).member("edge", edge_name(ref.edge)).member("weight", weight).end_object();
-  w.end_array();
-}
-
-void write_twist(Json_writer& w, const std::array<Rational, 3>& t) {
-  w.key("twist").rationals(t);
-  const Twist_reading r = read_twist(t);
-  w.key("reading").object();
-  if (r.label == 'i') w.member("label", "infinity").key("direction");
-  else w.member("label", std::string_view(&r.label, 1)).key("point");
-  w.rationals(r.point).end_object();
-}
-
-void write_certificate(Json_writer& w, const Closure_certificate& c) {
-  w.object().member("wrenchkit_certificate", 1).member("property", property_name(c.property)).member("holds", c.holds);
-  if (!c.holds) {
-    write_twist(w, c.twist);
-  } else {
-    write_combination(w.key("combination"), c.combination);
-    w.key("independent").array();
-    for (const Generator_ref& g : c.independent)
-      w.object().member("contact", g.contact).member("edge", edge_name(g.edge)).end_object();
-    w.end_array();
-  }
-  w.end_object();
-}
-
-std::string certificate_json(const Closure_certificate& c) { return json_text(write_certificate, c, 512); }
 
 }  // namespace wrenchkit

@@ -26,8 +26,6 @@
 
 namespace wrenchkit {
 
-class Json_writer;
-
 enum class Property { force_closure, form_closure };
 
 const char* property_name(Property p);
@@ -72,16 +70,6 @@ Closure_answer decide_closure(const Scene& scene, Property property, Mode mode =
 // coprime integers). Throws std::logic_error if pos(H) ≠ R³ (a bug of the caller).
 std::array<Rational, 3> twist_of_ray(const Exact_kernel& k, std::size_t a, std::size_t b);
 void positive_certificate(const Exact_kernel& k, std::vector<std::size_t> H, Closure_certificate& cert);
-
-// The certificate as JSON (format version 1), with the twist's reading as a labeled point or a
-// direction at infinity: written into `w` (exact/io/json_writer.h), or as its own text.
-void write_certificate(Json_writer& w, const Closure_certificate& c);
-std::string certificate_json(const Closure_certificate& c);
-
-// Parts shared by the certificate writers: the value `[{"contact": i, "edge": E, "weight": "p/q"}, …]`,
-// and the members `"twist": [vx, vy, w], "reading": {…}` into the object `w` has open.
-void write_combination(Json_writer& w, const std::vector<std::pair<Generator_ref, Rational>>& terms);
-void write_twist(Json_writer& w, const std::array<Rational, 3>& twist);
 
 // The twist read as a point of the two-sided plane, P(t) = (−vy, vx, w) (theory.md §2.2):
 // label '+' or '-' with the rotation centre, or 'i' (infinity) with a primitive direction

@@ -8,7 +8,6 @@
 #include "exact/statics/cone_lp.h"
 #include "exact/statics/hybrid_kernel.h"
 #include "exact/io/input_error.h"
-#include "exact/io/json_writer.h"
 #include "exact/io/to_float.h"
 
 namespace wrenchkit {
@@ -149,14 +148,5 @@ Equilibrium_answer decide_equilibrium(const Scene& scene, Mode mode, bool certif
   }
   return a;
 }
-
-void write_certificate(Json_writer& w, const Equilibrium_certificate& c) {
-  w.object().member("wrenchkit_certificate", 1).member("property", "equilibrium").member("holds", c.holds);
-  if (c.holds) write_combination(w.key("combination"), c.combination);
-  else write_twist(w, c.twist);
-  w.end_object();
-}
-
-std::string certificate_json(const Equilibrium_certificate& c) { return json_text(write_certificate, c, 512); }
 
 }  // namespace wrenchkit

@@ -49,8 +49,4 @@ struct Equilibrium_answer {
 // `certify` false skips the certificate (throughput).
 Equilibrium_answer decide_equilibrium(const Scene& scene, Mode mode = Mode::exact, bool certify = true);
 
-// The certificate as JSON (format version 1, property "equilibrium"): into `w`, or as its own text.
-void write_certificate(Json_writer& w, const Equilibrium_certificate& c);
-std::string certificate_json(const Equilibrium_certificate& c);
-
 }  // namespace wrenchkit

@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-#include "exact/io/json_writer.h"
 
 namespace wrenchkit {
 
@@ -57,14 +56,6 @@ Force_dual force_dual(const Moment_labels& labels, const std::vector<Vec3q>& gen
     f.about_reference = region_of(std::move(pts), Cone2{});
   }
   return f;
-}
-
-void write_dual_point(Json_writer& w, const Dual_point& p) {
-  w.object();
-  if (p.sheet == '0') w.member("sheet", "none").member("zero", true);
-  else if (p.sheet == 'i') write_point(w.member("sheet", "infinity").key("direction"), p.at);
-  else write_point(w.member("sheet", std::string_view(&p.sheet, 1)).key("point"), p.at);
-  w.end_object();
 }
 
 }  // namespace wrenchkit

@@ -36,8 +36,4 @@ struct Force_dual {
 // From the labels (which hold the cone), so that both are computed once.
 Force_dual force_dual(const Moment_labels& labels, const std::vector<Vec3q>& generators);
 
-// A dual point as JSON (docs/cli.md, dual): {"sheet": "+"|"-", "point": [x, y]}, {"sheet":
-// "infinity", "direction": [dx, dy]} or {"sheet": "none", "zero": true}, written into `w`.
-void write_dual_point(Json_writer& w, const Dual_point& p);
-
 }  // namespace wrenchkit

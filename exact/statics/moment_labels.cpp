@@ -2,7 +2,6 @@
 
 #include <optional>
 
-#include "exact/io/json_writer.h"
 #include "exact/io/to_float.h"
 
 namespace wrenchkit {
@@ -72,78 +71,5 @@ Moment_labels moment_labels(const Scene& scene, Reading reading, Mode mode) {
   for (const Generator& g : generators(scene, reading)) w.push_back(g.w);
   return moment_labels(w, mode, twin ? &*twin : nullptr);
 }
-
-void write_both(Json_writer& w, const Both_set& b) {
-  w.array();
-  switch (b.kind) {
-    case Both_set::Kind::none: break;
-    case Both_set::Kind::point: write_point(w.object().key("point"), b.point); break;
-    case Both_set::Kind::line:
-      write_point(w.object().key("line").object().key("through"), b.point);
-      write_point(w.key("direction"), b.direction);
-      w.end_object();
-      break;
-    case Both_set::Kind::plane: w.object().member("plane", true); break;
-  }
-  if (b.kind != Both_set::Kind::none) w.end_object();
-  w.end_array();
-}
-
-void write_labels(Json_writer& w, const Moment_labels& l) {
-  write_region(w.key("plus"), l.plus);
-  write_region(w.key("minus"), l.minus);
-  write_both(w.key("both"), l.both);
-  write_infinity(w.key("infinity"), l.infinity);
-}
-
-std::string labels_json(const Moment_labels& l) {
-  Json_writer w(1024);
-  w.object();
-  write_labels(w, l);
-  w.end_object();
-  return w.take();
-}
-
-const char* mode_name(Contact_mode m) {
-  switch (m) {
-    case Contact_mode::breaks: return "break";
-    case Contact_mode::slides: return "slide";
-    case Contact_mode::sticks: return "stick";
-    case Contact_mode::penetrates: return "penetrate";
-    case Contact_mode::none: return "none";
-  }
-  return "?";
-}
-
-Mode_answer contact_modes(const Scene& scene, const Vec3q& t) {
-  Mode_answer a;
-  for (const Contact& stored : scene.contacts) {
-    std::optional<Contact> built;
-    if (stored.exact_pending) built = exact_contact(stored);
-    const Contact& c = built ? *built : stored;
-    Contact_mode m = Contact_mode::none;
-    Rational s;
-    if (c.kind == Contact::Kind::wrench) {
-      s = t[0] * c.wrench[0] + t[1] * c.wrench[1] + t[2] * c.wrench[2];
-    } else {
-      const Vec2 v = velocity(t, c.at);
-      s = dot(v, c.normal);
-      m = s > 0 ? Contact_mode::breaks
-                : s < 0 ? Contact_mode::penetrates : (is_zero(v) ? Contact_mode::sticks : Contact_mode::slides);
-    }
-    a.feasible &= s >= 0;
-    a.marginal |= s == 0;
-    a.modes.push_back(m);
-  }
-  a.marginal &= a.feasible;
-  return a;
-}
-
-Vec3q rotation_twist(const Vec2& c, int sense) {
-  const Rational w(sense);
-  return {w * c.y, -w * c.x, w};
-}
-
-Vec3q translation_twist(const Vec2& d) { return {d.y, -d.x, 0}; }
 
 }  // namespace wrenchkit

@@ -42,14 +42,6 @@ Moment_labels moment_labels(const std::vector<Vec3q>& generators, Mode mode = Mo
                             const std::vector<fl::Bounded3>* twin = nullptr);
 Moment_labels moment_labels(const Scene& scene, Reading reading, Mode mode = Mode::exact);
 
-// JSON per docs/cli.md (labels): the members "plus": REGION, "minus": REGION, "both": [...],
-// "infinity": [...] written into the object `w` has open (the command adds its own members around
-// them); labels_json: those members alone as one object's text (tests compare answers with it). And
-// the "both" set as a value.
-void write_labels(Json_writer& w, const Moment_labels& l);
-std::string labels_json(const Moment_labels& l);
-void write_both(Json_writer& w, const Both_set& b);
-
 // Reuleaux's per-contact modes for a twist t (theory.md §7): v(p)·n > 0 break, = 0 with v(p) ≠ 0
 // slide, v(p) = 0 stick (the rotation centre is the contact point), < 0 penetrate. A pure wrench
 // generator has no point and no mode ("none"; its power sign is reported instead).

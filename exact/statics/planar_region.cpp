@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "exact/io/json_writer.h"
 
 namespace wrenchkit {
 
@@ -303,52 +302,5 @@ std::vector<Vec3q> negated(std::vector<Vec3q> gens) {
     for (Rational& c : g) c = -c;
   return gens;
 }
-
-void write_point(Json_writer& w, const Vec2& p) { w.array().rational(p.x).rational(p.y).end_array(); }
-
-namespace {
-void write_points(Json_writer& w, const std::vector<Vec2>& v) {
-  w.array();
-  for (const Vec2& p : v) write_point(w, p);
-  w.end_array();
-}
-}  // namespace
-
-void write_region(Json_writer& w, const Region& r) {
-  w.object().member("empty", r.empty()).member("shape", shape_name(r.shape));
-  write_points(w.key("vertices"), r.vertices);
-  write_points(w.key("directions"), r.directions);
-  w.end_object();
-}
-
-void write_infinity(Json_writer& w, const Cone2& c) {
-  const auto arc = [&w](const Vec2& a, const Vec2& b, bool full = false) {
-    write_point(w.object().key("from"), a);
-    write_point(w.key("to"), b);
-    if (full) w.member("full", true);
-    w.end_object();
-  };
-  const auto dir = [&w](const Vec2& a) {
-    write_point(w.object().key("direction"), a);
-    w.end_object();
-  };
-  w.array();
-  switch (c.shape) {
-    case Cone2::Shape::zero: break;
-    case Cone2::Shape::ray: dir(c.extreme[0]); break;
-    case Cone2::Shape::line:
-      dir(c.extreme[0]);
-      dir(c.extreme[1]);
-      break;
-    case Cone2::Shape::wedge: arc(c.extreme[0], c.extreme[1]); break;
-    case Cone2::Shape::half_plane: arc(c.extreme[0], c.extreme[2]); break;
-    case Cone2::Shape::plane: arc(Vec2{1, 0}, Vec2{1, 0}, true); break;
-  }
-  w.end_array();
-}
-
-std::string region_json(const Region& r) { return json_text(write_region, r); }
-std::string infinity_json(const Cone2& c) { return json_text(write_infinity, c); }
-std::string point_json(const Vec2& p) { return json_text(write_point, p, 64); }
 
 }  // namespace wrenchkit

@@ -26,8 +26,6 @@
 
 namespace wrenchkit {
 
-class Json_writer;
-
 // A closed convex cone of directions in R² (an arc of the circle at infinity), by its extreme
 // directions in counter-clockwise order, each a primitive integer vector:
 //   zero        {}                         nothing
@@ -77,16 +75,5 @@ std::vector<Vec3q> negated(std::vector<Vec3q> gens);
 
 // primitive(x, y) of exact/numbers/rational.h ((x, y) ≠ 0, else std::logic_error), as a rational Vec2.
 Vec2 primitive2(const Rational& x, const Rational& y);
-
-// JSON (docs/cli.md, REGION): a REGION {"empty", "shape", "vertices", "directions"}; the labeled points
-// at infinity as [{"from", "to"}] arcs (counter-clockwise; a full circle has "full": true and
-// from = to) or [{"direction"}] single directions; a point [x, y]. Each as a value written into `w`
-// (exact/io/json_writer.h), or as its own text (for messages and tests).
-void write_region(Json_writer& w, const Region& r);
-void write_infinity(Json_writer& w, const Cone2& c);
-void write_point(Json_writer& w, const Vec2& p);
-std::string region_json(const Region& r);
-std::string infinity_json(const Cone2& c);
-std::string point_json(const Vec2& p);
 
 }  // namespace wrenchkit

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "exact/certificates/certificates.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/io/scene.h"

@@ -1,10 +1,10 @@
-#include "exact/sliding/motion_certificate.h"
-
+// [SL-4] [SL-6] The witnesses of one distribution: rational speed bounds and slide witnesses, the smoothed Newton
+// witness of support forces (and a cone's weights), the precise one, and the refined stick witness.
 #include <algorithm>
 #include <cmath>
 
-#include "exact/io/json_writer.h"
 #include "exact/sliding/precise_motion.h"
+#include "exact/sliding/strategies.h"
 
 namespace wrenchkit {
 
@@ -27,7 +27,7 @@ std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<R
     }
     return dot(q, p) >= bound;
   };
-  Slide_witness w{f, q, speed_bounds(s, q)};
+  Slide_witness w{f, q, speed_bounds(s, q), {}, {}};
   if (proves(w.speed_bounds)) return w;
   std::size_t b = 0;
   for (const Rational& c : q)
@@ -238,23 +238,29 @@ std::optional<Support_witness> smoothed_witness(const Support& s, const std::vec
   return std::nullopt;
 }
 
+std::optional<Slide_witness> slides_for_every(const Support& s, const Admissible& a, const Vec3q& p, const Vec3q& q,
+                                              bool strict) {
+  if (is_zero(q)) return std::nullopt;
+  std::vector<Rational> u = speed_bounds(s, q);
+  std::vector<Rational> coef(u.size());  // μ_i times the rational upper bound of |v_i(q)|
+  for (std::size_t i = 0; i < coef.size(); ++i) coef[i] = s.mu_of(s.points[i]) * u[i];
+  const F_optimum o = maximise_over(s, a, coef);
+  const Rational power = dot(q, p);
+  if (strict ? !(power > o.value) : power < o.value) return std::nullopt;
+  return Slide_witness{{}, q, std::move(u), {}, o.dual};
+}
+
 std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admissible& a, const Vec3q& p, int sides,
                                                    const std::vector<Rational>& f) {
-  if (auto w = smoothed_witness(s, f, p, {}, false, nullptr, false)) return Stick_witness{f, std::move(w->forces)};
+  if (auto w = smoothed_stick_witness(s, f, p)) return w;
   if (auto w = precise_witness(s, f, p).sticks) return w;
   for (int n = sides; n <= 256 && s.points.size() * static_cast<std::size_t>(n) <= kMaxStickWitnessColumns; n *= 2)
     if (auto w = stick_witness(s, a, p, n, &f)) return w;
   return std::nullopt;
 }
 
-void write_support_forces(Json_writer& w, const std::vector<Vec2>& g) {
-  w.array();
-  for (const Vec2& f : g) w.array().rational(f.x).rational(f.y).end_array();
-  w.end_array();
-}
-
 std::optional<Stick_witness> smoothed_stick_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p) {
-  if (auto w = smoothed_witness(s, f, p, {}, false, nullptr, false)) return Stick_witness{f, std::move(w->forces)};
+  if (auto w = smoothed_witness(s, f, p, {}, false, nullptr, false)) return Stick_witness{f, std::move(w->forces), {}};
   return std::nullopt;
 }
 
@@ -267,63 +273,9 @@ Precise_witness precise_witness(const Support& s, const std::vector<Rational>& f
   }
   Precise_motion m = precise_motion(pts, p);
   Precise_witness w;
-  if (m.motion == Motion::sticks) w.sticks = Stick_witness{f, std::move(m.forces)};
-  if (m.motion == Motion::slides) w.slides = Slide_witness{f, m.twist, std::move(m.speed_bounds)};
+  if (m.motion == Motion::sticks) w.sticks = Stick_witness{f, std::move(m.forces), {}};
+  if (m.motion == Motion::slides) w.slides = Slide_witness{f, m.twist, std::move(m.speed_bounds), {}, {}};
   return w;
-}
-
-// The certificate's object, opened, with its first members: the load and the motion.
-Json_writer motion_certificate_head(const Vec3q& p, const char* motion, int version) {
-  Json_writer w(512);
-  w.object().member("wrenchkit_certificate", version).member("property", "motion").key("load").rationals(p);
-  w.member("motion", motion);
-  return w;
-}
-
-namespace {
-
-Json_writer head(const Vec3q& p, const char* motion) { return motion_certificate_head(p, motion); }
-
-void write_stick(Json_writer& w, const Stick_witness& s) {
-  w.object().key("distribution").rationals(s.distribution);
-  write_support_forces(w.key("support_forces"), s.forces);
-  w.end_object();
-}
-
-}  // namespace
-
-std::string sticks_certificate(const Vec3q& p, const Stick_witness& s) {
-  Json_writer w = head(p, "sticks");
-  write_support_forces(w.key("support_forces"), s.forces);
-  return w.end_object().take();
-}
-
-std::string slides_certificate(const Vec3q& p, const Slide_witness& s) {
-  Json_writer w = head(p, "slides");
-  w.key("twist").rationals(s.twist).key("speed_bounds").rationals(s.speed_bounds);
-  return w.end_object().take();
-}
-
-std::string sticks_for_every_certificate(const Vec3q& p, const std::vector<Stick_witness>& vertices) {
-  Json_writer w = head(p, "sticks");
-  w.key("vertices").array();
-  for (const Stick_witness& s : vertices) write_stick(w, s);
-  return w.end_array().end_object().take();
-}
-
-std::string slides_for_every_certificate(const Vec3q& p, const Vec3q& twist, const std::vector<Rational>& u,
-                                         const std::array<Rational, 3>& dual) {
-  Json_writer w = head(p, "slides");
-  w.key("twist").rationals(twist).key("speed_bounds").rationals(u).key("dual").rationals(dual);
-  return w.end_object().take();
-}
-
-std::string depends_certificate(const Vec3q& p, const Stick_witness& sticking, const Slide_witness& sliding) {
-  Json_writer w = head(p, "depends");
-  write_stick(w.key("sticking"), sticking);
-  w.key("sliding").object().key("distribution").rationals(sliding.distribution).key("twist").rationals(sliding.twist);
-  w.key("speed_bounds").rationals(sliding.speed_bounds).end_object();
-  return w.end_object().take();
 }
 
 }  // namespace wrenchkit

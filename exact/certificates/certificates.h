@@ -1,0 +1,48 @@
+// Every certificate the engine writes, from the deciders' witness data (proofs/certificate-format.md; the checker of
+// proofs/checker/ reads them back). One file per section of the spec, each readable beside it and beside the checker's
+// file for the same section:
+//
+//   closure.cpp      §3.1–§3.2  force and form closure (combination and independent generators; a twist and its reading)
+//   equilibrium.cpp  §3.3       equilibrium of the load (a combination; a twist the load drives)
+//   motion.cpp       §6         stick / slide / depends on a support (§6.4 regions, §6.5 format 2)
+//   hold.cpp         §7         fixtures on a support (§7.4 regions, §7.5 format 2)
+//   witnesses.cpp    §6.1 §6.4  the parts §6 and §7 share: support forces, stick and slide witnesses, region blocks
+//
+// No decider writes JSON: exact/statics, exact/sliding and exact/fixture return witnesses, and these functions
+// write them, in the one layout of exact/io/json_writer.h.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "exact/fixture/hold.h"
+#include "exact/io/json_writer.h"
+#include "exact/sliding/motion.h"
+#include "exact/statics/closure.h"
+#include "exact/statics/equilibrium.h"
+
+namespace wrenchkit {
+
+// §3.1–§3.2: the certificate object, into `w` (an answer embeds it) or as its own text.
+void write_certificate(Json_writer& w, const Closure_certificate& c);
+std::string certificate_json(const Closure_certificate& c);
+// §3.3
+void write_certificate(Json_writer& w, const Equilibrium_certificate& c);
+std::string certificate_json(const Equilibrium_certificate& c);
+
+// §6: the certificate of a decided motion (not undecided) of the load p on the model's support. Format 1, or 2 where
+// format 1 has none (regions together with a point force not given, §6.5).
+std::string motion_certificate(const Support_model& model, const Vec3q& load, const Motion_answer& answer);
+
+// §7: the certificate of a decided hold (not undecided). Format 1, or 2 for regions with a force not given (§7.5).
+std::string hold_certificate(const Hold_answer& answer);
+
+// Parts shared by the writers (and by answers that show a witness): `[{"contact": i, "edge": E, "weight": "p/q"}, …]`
+// (§3.1, §3.3, §7.1); the members `"twist": [vx, vy, w], "reading": {…}` (§3.2) and `"support_forces": [[gx, gy], …]`
+// (§6.1) into the object `w` has open.
+void write_combination(Json_writer& w, const std::vector<std::pair<Generator_ref, Rational>>& terms);
+void write_twist(Json_writer& w, const Vec3q& twist);
+void write_support_forces(Json_writer& w, const std::vector<Vec2>& forces);
+
+}  // namespace wrenchkit

@@ -1,0 +1,138 @@
+// [LP-1] The one friction-polygon LP (exact/sliding/strategies.h): the stick witness on inscribed N-gons, and the
+// hold's LP on refined inscribed polygons with the contacts' cone (exact/fixture/hold.cpp) — one builder, two goals.
+#include <stdexcept>
+#include <string>
+
+#include "exact/sliding/strategies.h"
+
+namespace wrenchkit {
+
+std::optional<Friction_lp_solution> solve(const Friction_lp& q) {
+  const Support& s = *q.support;
+  const Admissible& a = *q.admissible;
+  const bool free_f = !q.fixed && !a.known();
+  const std::vector<Rational>& f0 = q.fixed ? *q.fixed : a.given;
+  const bool margin_goal = q.goal == Friction_lp::Goal::margin;
+  const std::size_t k = s.points.size(), m = q.cone.size(), P = q.points.size();
+  // Columns: the cone's weights, each listed point's λ_ij, the slacks, the goal's (margin t; or t and its slack), the
+  // unknown forces (free only).
+  std::vector<std::size_t> first(P);
+  std::size_t columns = m;
+  for (std::size_t i = 0; i < P; ++i) {
+    first[i] = columns;
+    columns += q.directions[i].size();
+  }
+  const std::size_t slack = columns, goal = slack + P, force = goal + (margin_goal ? 1 : 2);
+  const std::size_t cols = force + (free_f ? a.unknown.size() : 0);
+  std::vector<std::vector<Rational>> A;
+  std::vector<Rational> b;
+  // The wrench rows: Σ_j c_j w_j + Σ_ij λ_ij (u_ij, r_i × u_ij) = load (margin), or + t·load = 0 (scale).
+  for (std::size_t row = 0; row < 3; ++row) {
+    std::vector<Rational> r(cols);
+    for (std::size_t j = 0; j < m; ++j) r[j] = q.cone[j][row];
+    for (std::size_t i = 0; i < P; ++i) {
+      const Vec2& at = s.points[q.points[i]].at;
+      for (std::size_t j = 0; j < q.directions[i].size(); ++j) {
+        const Vec2& u = q.directions[i][j];
+        r[first[i] + j] = row == 0 ? u.x : row == 1 ? u.y : cross(at, u);
+      }
+    }
+    if (!margin_goal) r[goal] = q.load[row];
+    A.push_back(std::move(r));
+    b.push_back(margin_goal ? q.load[row] : Rational(0));
+  }
+  // The discs: Σ_j λ_ij + s_i (+ t where μ_i f_i > 0, margin with f fixed) = μ_i f_i (f_i a column when free).
+  for (std::size_t i = 0; i < P; ++i) {
+    const std::size_t pt = q.points[i];
+    std::vector<Rational> r(cols);
+    for (std::size_t j = 0; j < q.directions[i].size(); ++j) r[first[i] + j] = 1;
+    r[slack + i] = 1;
+    const Rational& mu = s.mu_of(s.points[pt]);
+    Rational rhs = mu * f0[pt];
+    if (margin_goal && !free_f && rhs > 0) r[goal] = 1;
+    if (free_f)
+      for (std::size_t u = 0; u < a.unknown.size(); ++u)
+        if (a.unknown[u] == pt) {
+          r[force + u] = -mu;
+          rhs = 0;
+        }
+    A.push_back(std::move(r));
+    b.push_back(rhs);
+  }
+  if (!margin_goal) {  // t ≤ 1
+    std::vector<Rational> r(cols);
+    r[goal] = 1;
+    r[goal + 1] = 1;
+    A.push_back(std::move(r));
+    b.push_back(1);
+  }
+  if (free_f) {  // F's rows over the unknown forces
+    for (int row = 0; row < 3; ++row) {
+      std::vector<Rational> r(cols);
+      for (std::size_t u = 0; u < a.unknown.size(); ++u) {
+        const Vec2& at = s.points[a.unknown[u]].at;
+        r[force + u] = row == 0 ? Rational(1) : row == 1 ? at.x : at.y;
+      }
+      A.push_back(std::move(r));
+    }
+    b.push_back(a.rest);
+    b.push_back(a.rest_moment.x);
+    b.push_back(a.rest_moment.y);
+  }
+  std::vector<Rational> objective(cols);
+  if (!margin_goal || !free_f) objective[goal] = 1;  // the largest margin, or the largest share of the load
+  Friction_lp_solution out;
+  out.lp = maximise(A, b, objective);
+  if (out.lp.status != Lp_result::Status::optimal) return std::nullopt;
+  out.goal = out.lp.x[goal];
+  out.distribution = f0;
+  if (free_f)
+    for (std::size_t u = 0; u < a.unknown.size(); ++u) out.distribution[a.unknown[u]] = out.lp.x[force + u];
+  out.cone_weights.assign(out.lp.x.begin(), out.lp.x.begin() + static_cast<std::ptrdiff_t>(m));
+  out.forces.assign(k, Vec2{});
+  for (std::size_t i = 0; i < P; ++i)
+    for (std::size_t j = 0; j < q.directions[i].size(); ++j) {
+      const Rational& l = out.lp.x[first[i] + j];
+      if (l == 0) continue;
+      out.forces[q.points[i]].x += l * q.directions[i][j].x;
+      out.forces[q.points[i]].y += l * q.directions[i][j].y;
+    }
+  return out;
+}
+
+std::optional<Stick_witness> stick_witness(const Support& s, const Admissible& a, const Vec3q& p, int sides,
+                                           const std::vector<Rational>* fixed) {
+  // The LP has (3 + k) rows of about k·n columns: refused beyond kMaxStickWitnessColumns.
+  if (s.points.size() * static_cast<std::size_t>(sides) > kMaxStickWitnessColumns)
+    throw std::length_error("stick_witness: " + std::to_string(s.points.size()) + " support points x " +
+                            std::to_string(sides) + " sides, more than " + std::to_string(kMaxStickWitnessColumns) +
+                            " columns");
+  const bool free_f = !fixed && !a.known();
+  const std::vector<Rational>& f0 = fixed ? *fixed : a.given;
+  if (!free_f) {  // friction at two distinct points, or LS(f) is flat and has no interior
+    const Vec2* first = nullptr;
+    bool two = false;
+    for (std::size_t i = 0; i < s.points.size() && !two; ++i) {
+      if (s.mu_of(s.points[i]) * f0[i] == 0) continue;
+      if (first && (first->x != s.points[i].at.x || first->y != s.points[i].at.y)) two = true;
+      if (!first) first = &s.points[i].at;
+    }
+    if (!two) return std::nullopt;
+  }
+  Friction_lp q;
+  q.support = &s;
+  q.admissible = &a;
+  q.fixed = fixed;
+  q.load = p;
+  const Directions d = make_directions(sides);
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    q.points.push_back(i);
+    q.directions.push_back(d.u);
+  }
+  const std::optional<Friction_lp_solution> lp = solve(q);
+  if (!lp) return std::nullopt;
+  if (!free_f && lp->goal <= 0) return std::nullopt;  // on the inscribed polygons' boundary: not inside
+  return Stick_witness{lp->distribution, lp->forces, {}};
+}
+
+}  // namespace wrenchkit
