@@ -216,8 +216,9 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
               << to_string(a.gravity_off->first.y) << ") but the support's centre of pressure is ("
               << to_string(a.gravity_off->second.x) << ", " << to_string(a.gravity_off->second.y)
               << "): a body at rest on the support would need them to coincide\n";
-  std::cout << "decided by: " << a.closure.decided_by() << " for closure"
-            << (a.equilibrium ? std::string(", ") + a.equilibrium->answer.decided_by() + " for equilibrium" : std::string())
+  std::cout << "decided by: " << arithmetic_name(a.closure.decided_by()) << " for closure"
+            << (a.equilibrium ? std::string(", ") + arithmetic_name(a.equilibrium->answer.decided_by()) + " for equilibrium"
+                              : std::string())
             << "\n"
             << "every certificate accepted by the independent checker (exact arithmetic)\n";
   return kAnswered;

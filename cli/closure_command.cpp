@@ -50,7 +50,7 @@ void write_pair(Json_writer& w, const char (&key)[N], std::size_t force, std::si
 
 void write_closure(Json_writer& w, const Options& o, const Closure_item& r, const char* command) {
   w.member("command", command).member("name", r.name).member("mode", mode_name(o.mode));
-  w.member("decided_by", r.decided_by()).member("force_closure", r.force.holds).member("form_closure", r.form.holds);
+  w.member("decided_by", arithmetic_name(r.decided_by())).member("force_closure", r.force.holds).member("form_closure", r.form.holds);
   write_pair(w, "rank", static_cast<std::size_t>(r.force.rank), static_cast<std::size_t>(r.form.rank));
   write_pair(w, "generators", r.force.generators, r.form.generators);
   write_pair(w, "predicates", r.force.predicates, r.form.predicates);
@@ -82,7 +82,7 @@ int run_closure(const Options& o, const std::string& scene_text, const std::stri
   } else {
     std::cout << "scene: " << (r.name.empty() ? source : r.name) << "\n"
               << closure_human(r)
-              << "decided by: " << r.decided_by() << " (" << r.force.exact_predicates + r.form.exact_predicates
+              << "decided by: " << arithmetic_name(r.decided_by()) << " (" << r.force.exact_predicates + r.form.exact_predicates
               << " of " << r.force.predicates + r.form.predicates << " predicates in exact arithmetic)\n"
               << "both certificates accepted by the independent checker (exact arithmetic)\n";
   }

@@ -107,12 +107,18 @@ Request request_of(const Options& o);
 // text for people (each made only when needed); returns kAnswered.
 int write_answer(const Options& o, const std::function<void(Json_writer&)>& json,
                  const std::function<std::string()>& text);
-// The writer of a support's answer by what the pipeline answered: an unknown distribution (with regions or not: its
-// writers add the regions' statics), a support with regions, the twin alone (--mode float), or the exact answer
-// (sliding and limit-surface alike).
+// The writer of a support's answer by its kind (exact/pipeline/support_answer.h): points with every force given, the
+// same by the twin alone (--mode float), some force not given (with regions or not: its writers add the regions'
+// statics), regions with every force given (sliding and limit-surface alike).
 template <class F>
-F by_answer(const Support_item& r, Mode mode, F unknown, F twin, F exact, F regions) {
-  return r.admissible ? unknown : r.regions ? regions : mode == Mode::float_only ? twin : exact;
+F by_kind(const Support_item& r, F points, F twin, F unknown, F regions) {
+  switch (r.kind) {
+    case Support_kind::points: return points;
+    case Support_kind::points_twin: return twin;
+    case Support_kind::unknown: return unknown;
+    case Support_kind::regions: return regions;
+  }
+  return points;
 }
 
 // sliding_command.cpp: a support with regions [RG-1] (sliding and limit-surface alike): its exact statics ("support",

@@ -13,7 +13,7 @@ namespace wrenchkit::cli {
 void write_equilibrium(Json_writer& w, const Options& o, const Equilibrium_item& r, const char* command) {
   const Vec3q& l = r.answer.load;
   w.member("command", command).member("name", r.name).member("mode", mode_name(o.mode));
-  w.member("decided_by", r.answer.decided_by()).member("balanced", r.answer.balanced);
+  w.member("decided_by", arithmetic_name(r.answer.decided_by())).member("balanced", r.answer.balanced);
   w.key("load").array().rational(l[0]).rational(l[1]).rational(l[2]).end_array();
   w.member("generators", r.answer.generators).member("certificate_checked", true).key("certificate").raw(r.certificate);
 }

@@ -71,7 +71,7 @@ void write_mode(Json_writer& w, const Labels_item& s) {
     return;
   }
   const Wrench_cone& c = s.labels.cone;
-  w.member("mode", mode_name(s.mode)).member("decided_by", decided_by(s.mode, c.predicates, c.exact_predicates));
+  w.member("mode", mode_name(s.mode)).member("decided_by", arithmetic_name(decided_by(s.mode, c.predicates, c.exact_predicates)));
   w.member("predicates", c.predicates).member("exact_predicates", c.exact_predicates);
 }
 

@@ -24,13 +24,13 @@ namespace wrenchkit::cli {
 
 namespace {
 
+// The options, combined once (before any scene): the pipeline's query (--sides, or --tolerance resolved to N or a
+// region's power width; --twist, --load; whether the polytopes are built or were asked for by name), and what only
+// the command does with the answer (--list, the mesh and picture files).
 struct Ls_options {
+  Support_query query;
   Mode mode = Mode::hybrid;
-  bool polytopes = true;
-  int sides = 32;
-  std::optional<Rational> tolerance;
   int sets_built = 0;  // direction sets tried to meet the tolerance
-  std::optional<Vec3q> twist, load;
   std::string off_file, obj_file, ply_file, svg_file;
   bool exact_coordinates = false;  // --exact-coordinates: OFF exactly (exact/cgal/mesh_io.h)
   bool list = false;
@@ -43,8 +43,6 @@ struct Ls_options {
     return m;
   }
   bool exports() const { return !meshes().empty() || !svg_file.empty(); }
-  bool polytopes_asked = false;  // by name: --sides, --list, the exports (refused for regions)
-  std::optional<Rational> region_tolerance;  // --tolerance for a support with regions: the power's width
 };
 
 std::string tv(const Vec3q& v) { return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")"; }
@@ -85,18 +83,19 @@ void write_gauge(Json_writer& w, const std::optional<Rational>& g) { g ? w.ratio
 // --load, the exports and --list (each already validated where it was parsed).
 Ls_options limit_surface_options(const Options& o) {
   Ls_options lo;
-  if (o.sides) lo.sides = *o.sides;
+  Support_query& q = lo.query;
+  if (o.sides) q.sides = *o.sides;
+  q.tolerance = o.tolerance;  // for a support with regions: the power's relative width
   if (o.tolerance) {
     if (o.sides) throw Usage_error("--sides and --tolerance exclude each other");
-    lo.tolerance = o.tolerance;
-    lo.sides = smallest_sides(*lo.tolerance, kMaxSides, &lo.sets_built);
-    if (lo.sides == 0)
+    q.sides = smallest_sides(*o.tolerance, kMaxSides, &lo.sets_built);
+    if (q.sides == 0)
       throw Usage_error("--tolerance: " + o.tolerance_text + " needs more than " + std::to_string(kMaxSides) +
                         " sides (the largest certified ratio available is reached at --sides " +
                         std::to_string(kMaxSides) + ")");
   }
-  lo.twist = o.twist;
-  lo.load = o.load;
+  q.twist = o.twist;
+  q.load = o.load;
   lo.off_file = o.off_file;
   lo.obj_file = o.obj_file;
   lo.ply_file = o.ply_file;
@@ -108,9 +107,8 @@ Ls_options limit_surface_options(const Options& o) {
     throw Usage_error("--exact-coordinates is about mesh files: give --off, --obj or --ply");
   // The polytopes are built when asked for (--sides, --tolerance, --list, the exports) or when nothing else is
   // asked; a --load or --twist query alone is answered on the true surface, building them only if needed.
-  lo.polytopes = o.sides || o.tolerance || lo.list || lo.exports() || (!lo.load && !lo.twist);
-  lo.polytopes_asked = o.sides || lo.list || !lo.meshes().empty();  // --svg draws regions too
-  lo.region_tolerance = o.tolerance;
+  q.polytopes = o.sides || o.tolerance || lo.list || lo.exports() || (!q.load && !q.twist);
+  q.polytopes_asked = o.sides || lo.list || !lo.meshes().empty();  // by name (refused for regions); --svg draws them too
   if (lo.mode == Mode::float_only && (lo.list || lo.exports()))
     throw Usage_error("--list, --off, --obj, --ply and --svg show the exact polytopes: not with --mode float");
   return lo;
@@ -146,7 +144,7 @@ void write_motion(Json_writer& w, const Support_item& r, const Vec3q& load) {
   const Motion_answer& m = *r.motion;
   w.key("load").rationals(load).member("motion", motion_name(m.motion));
   w.member("motion_decided_by", decided_by_name(m.decided_by));
-  if (r.admissible) {
+  if (r.kind == Support_kind::unknown) {
     w.key("per_extreme_distribution").array();
     for (const Motion v : m.per_vertex) w.string(motion_name(v));
     w.end_array();
@@ -163,7 +161,7 @@ void write_motion(Json_writer& w, const Support_item& r, const Vec3q& load) {
     if (m.motion == Motion::slides) w.key("separating_twist").rationals(m.sliding->twist);
     if (!m.undecided_why.empty()) w.member("undecided_why", m.undecided_why);
     if (r.regions) w.member("certificate_cells", m.cells);  // [RG-3] the regions' blocks
-  } else if (r.regions) {
+  } else if (r.kind == Support_kind::regions) {
     w.member("certificate_cells", m.cells);
     w.key("gauge_estimate").raw(std::isfinite(m.gauge_estimate) ? float_number(m.gauge_estimate) : "null");
     if (m.motion == Motion::slides) w.key("slide_twist").rationals(m.sliding->twist);
@@ -183,7 +181,7 @@ std::string motion_text(const Support_item& r, const Vec3q& load) {
   const Motion_answer& m = *r.motion;
   std::ostringstream s;
   s << "load " << tv(load) << ": ";
-  if (r.admissible) {
+  if (r.kind == Support_kind::unknown) {
     switch (m.motion) {
       case Motion::sticks: s << "sticks for every admissible distribution (every extreme one sticks)\n"; break;
       case Motion::slides:
@@ -196,7 +194,7 @@ std::string motion_text(const Support_item& r, const Vec3q& load) {
         break;
       case Motion::undecided: s << "undecided: " << m.undecided_why << "\n"; break;
     }
-  } else if (r.regions) {
+  } else if (r.kind == Support_kind::regions) {
     s << motion_name(m.motion);
     if (m.motion == Motion::sticks)
       s << " (forces on " << m.cells << " cells of the regions, each strictly inside its friction disc)\n";
@@ -205,7 +203,7 @@ std::string motion_text(const Support_item& r, const Vec3q& load) {
         << " cells: its power bound is at most q.p)\n";
     else
       s << ": " << m.undecided_why << "\n";
-  } else if (r.mode == Mode::float_only) {
+  } else if (r.kind == Support_kind::points_twin) {
     s << motion_name(m.motion) << " (the float twin's certified search on the true surface, " << m.search_twists
       << " twists)\n";
     if (m.motion == Motion::slides)
@@ -230,14 +228,7 @@ std::string motion_text(const Support_item& r, const Vec3q& load) {
 // The scene's answer through the pipeline; a failure unwinds as the CLI's Failure.
 Support_item compute_limit_surface(const Ls_options& lo, const Options& o, const std::string& text,
                                    const std::string& source) {
-  Support_query q;
-  q.sides = lo.sides;
-  q.twist = lo.twist;
-  q.load = lo.load;
-  q.polytopes = lo.polytopes;
-  q.polytopes_asked = lo.polytopes_asked;
-  q.tolerance = lo.region_tolerance;
-  return answered(answer_support(text, source, request_of(o), q));
+  return answered(answer_support(text, source, request_of(o), lo.query));
 }
 
 const char* kConvention =
@@ -256,8 +247,8 @@ void write_limit_surface(Json_writer& w, const Ls_options& lo, const Support_ite
   const Ls_support& sup = model.support();
   const Sliding_answer& sa = r.sliding;
   w.member("command", "limit-surface").member("name", r.scene.name).member("mode", mode_name(lo.mode));
-  w.member("convention", kConvention).member("sides", lo.sides);
-  if (lo.tolerance) w.member("tolerance", *lo.tolerance).member("direction_sets_tried", lo.sets_built);
+  w.member("convention", kConvention).member("sides", lo.query.sides);
+  if (lo.query.tolerance) w.member("tolerance", *lo.query.tolerance).member("direction_sets_tried", lo.sets_built);
   w.member("lambda_squared", d.lambda_sq).key("relative_error_bound_approx").raw(ratio_text(d));
   w.key("support").object().member("input_points", r.scene.support->points.size()).member("points", sup.points.size());
   w.member("collinear", sup.collinear).member("mu_f0", sa.mu_f0).key("center_of_friction").array();
@@ -269,8 +260,8 @@ void write_limit_surface(Json_writer& w, const Ls_options& lo, const Support_ite
   } else {
     w.member("polytopes", false);  // a query alone: answered without them (--sides or --list builds them)
   }
-  if (lo.twist) {
-    w.key("twist").rationals(*lo.twist);
+  if (lo.query.twist) {
+    w.key("twist").rationals(*lo.query.twist);
     write_face(w.key("load_for_twist").object().key("inner"), sa.inner_face);
     write_face(w.key("outer"), sa.outer_face);
     w.key("power").object().member("inner", sa.h_inner).member("outer", sa.h_outer).end_object();
@@ -281,7 +272,7 @@ void write_limit_surface(Json_writer& w, const Ls_options& lo, const Support_ite
     write_true(w, r);
     w.end_object();
   }
-  if (lo.load) {
+  if (lo.query.load) {
     const auto cone = [&w](const char* key, const Polygonal_ls::Normal_cone& c) {
       w.key(key).object().key("generators").array();
       for (const Vec3z& g : c.generators) w.rationals(g);
@@ -289,7 +280,7 @@ void write_limit_surface(Json_writer& w, const Ls_options& lo, const Support_ite
       for (const Vec3z& g : c.lineality) w.rationals(g);
       w.end_array().end_object();
     };
-    write_motion(w, r, *lo.load);
+    write_motion(w, r, *lo.query.load);
     if (r.polytopes_built) {
       write_gauge(w.key("gauge").object().key("outer"), r.gauge_out);
       write_gauge(w.key("inner"), r.gauge_in);
@@ -316,8 +307,8 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
     << " given)" << (sup.collinear ? ", collinear" : "") << ", mu*f0 = " << to_string(sa.mu_f0)
     << ", centre of friction (" << to_string(sa.center_of_friction.x) << ", " << to_string(sa.center_of_friction.y)
     << ")\n"
-    << "sides: " << lo.sides;
-  if (lo.tolerance) s << " (the smallest meeting --tolerance " << to_string(*lo.tolerance) << ")";
+    << "sides: " << lo.query.sides;
+  if (lo.query.tolerance) s << " (the smallest meeting --tolerance " << to_string(*lo.query.tolerance) << ")";
   s << "\ncertificate: lambda^2 = " << to_string(d.lambda_sq) << "  (lambda*LS <= LS_in <= LS <= LS_out <= LS/lambda;"
     << " relative error 1/lambda - 1 ~ " << ratio_text(d) << ")\n";
   if (model.dimension() == 2)
@@ -331,8 +322,8 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
   else
     s << "polytopes: not built (the query is answered on the true surface; --sides or --list builds them)\n";
   s << "convention: " << kConvention << "\n";
-  if (lo.twist) {
-    s << "twist " << tv(*lo.twist) << ": " << sa.cls.text << "\n";
+  if (lo.query.twist) {
+    s << "twist " << tv(*lo.query.twist) << ": " << sa.cls.text << "\n";
     for (const auto& [name, f] : {std::pair<const char*, const Ls_face*>{"inner", &sa.inner_face}, {"outer", &sa.outer_face}}) {
       s << "  load on LS_" << name << ": ";
       if (f->dimension == 0) s << "the point " << tv(f->vertices[0]) << "\n";
@@ -345,8 +336,8 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
     s << "  power: " << to_string(sa.h_inner) << " <= h <= " << to_string(sa.h_outer) << "\n";
     if (r.true_power) s << "  true power (float twin, certified): " << bounded_text(*r.true_power) << "\n";
   }
-  if (lo.load) {
-    s << motion_text(r, *lo.load);
+  if (lo.query.load) {
+    s << motion_text(r, *lo.query.load);
     if (r.polytopes_built && r.motion->motion != Motion::sticks) {
       s << "  twists (outward normals of LS_out at the load's direction):";
       for (const Vec3z& g : r.cone_out.generators) s << " " << tz(g);
@@ -363,24 +354,24 @@ void write_limit_surface_float(Json_writer& w, const Ls_options& lo, const Suppo
   const fl::Directions_twin& d = *r.twin_directions;
   const fl::Point2& cof = r.twin_center_of_friction;
   w.member("command", "limit-surface").member("name", r.scene.name).member("mode", "float");
-  w.member("convention", kConvention).member("sides", lo.sides);
-  if (lo.tolerance) w.member("tolerance", *lo.tolerance);
+  w.member("convention", kConvention).member("sides", lo.query.sides);
+  if (lo.query.tolerance) w.member("tolerance", *lo.query.tolerance);
   write_float_value(w.key("lambda_squared"), d.lambda_sq);
   w.key("support").object().member("input_points", r.scene.support->points.size()).member("points", r.twin.size());
   write_float_value(w.key("mu_f0"), r.twin_mu_f0);
   write_float_value(w.key("center_of_friction").array(), cof.x);
   write_float_value(w, cof.y);
   w.end_array().end_object();
-  if (lo.twist) {
-    w.key("twist").rationals(*lo.twist);
+  if (lo.query.twist) {
+    w.key("twist").rationals(*lo.query.twist);
     write_float_value(w.key("load_for_twist").object().key("power").object().key("inner"), *r.twin_power_inner);
     write_float_value(w.key("outer"), *r.twin_power_outer);
     w.end_object();
     write_true(w, r);
     w.end_object();
   }
-  if (lo.load) {
-    write_motion(w, r, *lo.load);
+  if (lo.query.load) {
+    write_motion(w, r, *lo.query.load);
     write_certificate_members(w, r);
   }
 }
@@ -392,16 +383,16 @@ std::string limit_surface_float_human(const Ls_options& lo, const Support_item& 
   s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
     << "support: " << r.twin.size() << " point(s) with mu*f > 0 (of " << r.scene.support->points.size()
     << " given), centre of friction (" << bounded_text(cof.x) << ", " << bounded_text(cof.y) << ")\n"
-    << "sides: " << lo.sides << ", lambda^2 = " << bounded_text(d.lambda_sq) << " (the float twin's direction set)\n"
+    << "sides: " << lo.query.sides << ", lambda^2 = " << bounded_text(d.lambda_sq) << " (the float twin's direction set)\n"
     << "convention: " << kConvention << "\n";
-  if (lo.twist) {
-    s << "twist " << tv(*lo.twist) << ":\n"
+  if (lo.query.twist) {
+    s << "twist " << tv(*lo.query.twist) << ":\n"
       << "  polygonal power: " << bounded_text(*r.twin_power_inner) << " <= h <= " << bounded_text(*r.twin_power_outer)
       << "\n";
     if (r.true_power) s << "  true power: " << bounded_text(*r.true_power) << "\n";
     if (r.true_load) s << "  true load: " << float_load_text(*r.true_load) << "\n";
   }
-  if (lo.load) s << motion_text(r, *lo.load);
+  if (lo.query.load) s << motion_text(r, *lo.query.load);
   s << "decided by: the float twin alone (every sign certified; values with certified bounds)\n";
   return s.str();
 }
@@ -410,24 +401,24 @@ std::string limit_surface_float_human(const Ls_options& lo, const Support_item& 
 // and for --load whether it sticks for every distribution, slides for every one, or depends, with witnesses.
 void write_limit_surface_unknown(Json_writer& w, const Ls_options& lo, const Support_item& r) {
   w.member("command", "limit-surface").member("name", r.scene.name).member("mode", mode_name(r.mode));
-  w.member("convention", kConvention).member("sides", lo.sides);
+  w.member("convention", kConvention).member("sides", lo.query.sides);
   write_unknown_distribution(w, r);
-  if (lo.twist) {
-    w.key("twist").rationals(*lo.twist);
+  if (lo.query.twist) {
+    w.key("twist").rationals(*lo.query.twist);
     write_power_over(w, r);
   }
-  if (!lo.load) return;
-  write_motion(w, r, *lo.load);
+  if (!lo.query.load) return;
+  write_motion(w, r, *lo.query.load);
   write_certificate_members(w, r);
 }
 
 std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item& r, const std::string& source) {
   std::ostringstream s;
   s << unknown_support_text(r, source);
-  if (lo.twist)
-    s << "twist " << tv(*lo.twist) << ": the frictional power over every admissible distribution lies in ["
+  if (lo.query.twist)
+    s << "twist " << tv(*lo.query.twist) << ": the frictional power over every admissible distribution lies in ["
       << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n" << regions_power_text(r);
-  if (lo.load) s << motion_text(r, *lo.load);
+  if (lo.query.load) s << motion_text(r, *lo.query.load);
   s << "convention: " << kConvention << "\n";
   return s.str();
 }
@@ -460,9 +451,9 @@ void write_limit_surface_regions(Json_writer& w, const Ls_options& lo, const Sup
   w.member("convention", kConvention);
   write_region_statics(w, r);
   w.member("polytopes", false).member("strictly_convex", true);
-  write_region_twist(w, r, lo.region_tolerance ? *lo.region_tolerance : Rational(1, 1000000));
-  if (!lo.load) return;
-  write_motion(w, r, *lo.load);
+  write_region_twist(w, r, lo.query.tolerance ? *lo.query.tolerance : Rational(1, 1000000));
+  if (!lo.query.load) return;
+  write_motion(w, r, *lo.query.load);
   write_certificate_members(w, r);
 }
 
@@ -471,7 +462,7 @@ std::string limit_surface_regions_human(const Ls_options& lo, const Support_item
   s << region_statics_text(r, source)
     << "limit surface: strictly convex (a continuous pressure): no exact polytope; queries are certified\n"
     << region_twist_text(r);
-  if (lo.load) s << motion_text(r, *lo.load);
+  if (lo.query.load) s << motion_text(r, *lo.query.load);
   s << "convention: " << kConvention << "\n";
   return s.str();
 }
@@ -479,12 +470,12 @@ std::string limit_surface_regions_human(const Ls_options& lo, const Support_item
 // The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone, or
 // the exact answer).
 void answer_json(Json_writer& w, const Ls_options& lo, const Support_item& r) {
-  by_answer(r, lo.mode, &write_limit_surface_unknown, &write_limit_surface_float, &write_limit_surface,
+  by_kind(r, &write_limit_surface, &write_limit_surface_float, &write_limit_surface_unknown,
             &write_limit_surface_regions)(w, lo, r);
 }
 
 std::string answer_text(const Ls_options& lo, const Support_item& r, const std::string& source) {
-  return by_answer(r, lo.mode, &limit_surface_unknown_human, &limit_surface_float_human, &limit_surface_human,
+  return by_kind(r, &limit_surface_human, &limit_surface_float_human, &limit_surface_unknown_human,
                    &limit_surface_regions_human)(lo, r, source);
 }
 
@@ -497,7 +488,7 @@ Scene_answer prepare_limit_surface_json(const Options& o) {
 int run_limit_surface(const Options& o, const std::string& text, const std::string& source) {
   const Ls_options lo = limit_surface_options(o);
   const Support_item r = compute_limit_surface(lo, o, text, source);
-  if (r.admissible && (lo.list || lo.exports()))
+  if (r.kind == Support_kind::unknown && (lo.list || lo.exports()))
     throw Input_error(source + ": support: the forces of some points are not given, so there is no one limit surface "
                       "to list or draw (--list, --off, --obj, --ply, --svg need every force)");
   if (!o.certificate_file.empty()) {
@@ -510,7 +501,7 @@ int run_limit_surface(const Options& o, const std::string& text, const std::stri
   std::vector<std::string> mesh_bytes;
   for (const auto& [format, file] : lo.meshes()) mesh_bytes.push_back(polytopes_mesh(r.in, r.out, format, lo.exact_coordinates));
   for (std::size_t i = 0; i < mesh_bytes.size(); ++i) write_file(lo.meshes()[i].second, mesh_bytes[i]);
-  if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.sides));
+  if (!lo.svg_file.empty()) write_file(lo.svg_file, render_limit_surface_svg(r.scene, lo.query.sides));
   return write_answer(o, [&](Json_writer& w) {
     answer_json(w, lo, r);
     write_mesh_coordinates(w, lo);

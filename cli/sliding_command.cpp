@@ -194,46 +194,32 @@ const char* kConvention =
     "loads: the wrench the slider applies to the support, parallel to the sliding velocity (theory.md 1.5); "
     "the friction wrench on the slider is its negative";
 
-// The options (validated where they were parsed): --twist (not zero), --sides (default 64), --tolerance (the
-// relative width of a region's power bracket, default 10^-6).
-struct Sliding_options {
-  std::optional<Vec3q> twist;
-  int sides = 64;
-  Mode mode = Mode::hybrid;
-  Rational tolerance{1, 1000000};
-  bool sides_given = false;
-};
-
-Sliding_options sliding_options(const Options& o) {
-  Sliding_options so;
-  so.sides = o.sides.value_or(64);
-  so.sides_given = o.sides.has_value();
-  so.twist = o.twist;
-  so.mode = o.mode;
-  if (o.tolerance) so.tolerance = *o.tolerance;
-  return so;
+// The pipeline's query from the options (validated where they were parsed): --twist (not zero), --sides (default 64;
+// refused for regions), --tolerance (the relative width of a region's power bracket, default 10^-6).
+Support_query sliding_options(const Options& o) {
+  Support_query q;
+  q.question = Support_question::sliding;
+  q.sides = o.sides.value_or(64);
+  q.polytopes_asked = o.sides.has_value();
+  q.twist = o.twist;
+  q.tolerance = o.tolerance.value_or(Rational(1, 1000000));
+  return q;
 }
 
 // The scene's answer through the pipeline; a failure unwinds as the CLI's Failure.
-Support_item compute(const Sliding_options& so, const Options& o, const std::string& text, const std::string& source) {
-  Support_query q;
-  q.question = Support_question::sliding;
-  q.sides = so.sides;
-  q.twist = so.twist;
-  q.tolerance = so.tolerance;
-  q.polytopes_asked = so.sides_given;
+Support_item compute(const Support_query& q, const Options& o, const std::string& text, const std::string& source) {
   return answered(answer_support(text, source, request_of(o), q));
 }
 
 // A support with regions [RG-1]: the exact statics, and the twist's certified power and load.
-void write_sliding_regions(Json_writer& w, const Sliding_options& so, const Support_item& r) {
-  w.member("command", "sliding").member("name", r.scene.name).member("mode", mode_name(so.mode));
+void write_sliding_regions(Json_writer& w, const Support_query& q, const Support_item& r) {
+  w.member("command", "sliding").member("name", r.scene.name).member("mode", mode_name(r.mode));
   w.member("convention", kConvention);
   write_region_statics(w, r);
-  write_region_twist(w, r, so.tolerance);
+  write_region_twist(w, r, *q.tolerance);
 }
 
-std::string sliding_regions_human(const Sliding_options&, const Support_item& r, const std::string& source) {
+std::string sliding_regions_human(const Support_query&, const Support_item& r, const std::string& source) {
   return region_statics_text(r, source) + region_twist_text(r) + "convention: " + kConvention + "\n";
 }
 
@@ -244,14 +230,14 @@ void write_true(Json_writer& w, const Support_item& r) {
   write_float_load(w.key("true_load"), *r.true_load);
 }
 
-void write_sliding_float(Json_writer& w, const Sliding_options& so, const Support_item& r) {
+void write_sliding_float(Json_writer& w, const Support_query& q, const Support_item& r) {
   const fl::Point2& cof = r.twin_center_of_friction;
   w.member("command", "sliding").member("name", r.scene.name).member("mode", "float");
   write_float_value(w.key("center_of_friction").array(), cof.x);
   write_float_value(w, cof.y);
   write_float_value(w.end_array().key("mu_f0"), r.twin_mu_f0);
-  if (so.twist) {
-    w.key("twist").rationals(*so.twist).member("sides", so.sides);
+  if (q.twist) {
+    w.key("twist").rationals(*q.twist).member("sides", q.sides);
     write_float_value(w.key("lambda_squared"), r.twin_directions->lambda_sq);
     write_float_value(w.key("power").object().key("inner"), *r.twin_power_inner);
     write_float_value(w.key("outer"), *r.twin_power_outer);
@@ -260,14 +246,14 @@ void write_sliding_float(Json_writer& w, const Sliding_options& so, const Suppor
   }
 }
 
-std::string sliding_float_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
+std::string sliding_float_human(const Support_query& q, const Support_item& r, const std::string& source) {
   const fl::Point2& cof = r.twin_center_of_friction;
   std::ostringstream s;
   s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
     << "centre of friction: (" << float_value_text(cof.x) << ", " << float_value_text(cof.y) << ")\n";
-  if (so.twist)
-    s << "twist (" << human_number((*so.twist)[0]) << ", " << human_number((*so.twist)[1]) << ", "
-      << human_number((*so.twist)[2]) << "):\n"
+  if (q.twist)
+    s << "twist (" << human_number((*q.twist)[0]) << ", " << human_number((*q.twist)[1]) << ", "
+      << human_number((*q.twist)[2]) << "):\n"
       << "  true power h = " << float_value_text(*r.true_power) << "\n"
       << "  true load: " << float_load_text(*r.true_load) << "\n";
   s << "decided by: the float twin alone (values with certified bounds)\n";
@@ -275,21 +261,21 @@ std::string sliding_float_human(const Sliding_options& so, const Support_item& r
 }
 
 
-void write_sliding_unknown(Json_writer& w, const Sliding_options& so, const Support_item& r) {
+void write_sliding_unknown(Json_writer& w, const Support_query& q, const Support_item& r) {
   w.member("command", "sliding").member("name", r.scene.name).member("mode", mode_name(r.mode));
   w.member("convention", kConvention);
   write_unknown_distribution(w, r);
-  if (so.twist) {
-    w.key("twist").rationals(*so.twist);
+  if (q.twist) {
+    w.key("twist").rationals(*q.twist);
     write_power_over(w, r);
   }
 }
 
-std::string sliding_unknown_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
+std::string sliding_unknown_human(const Support_query& q, const Support_item& r, const std::string& source) {
   std::ostringstream s;
   s << unknown_support_text(r, source);
-  if (so.twist)
-    s << "twist " << thv(*so.twist) << ": the frictional power over every admissible distribution lies in ["
+  if (q.twist)
+    s << "twist " << thv(*q.twist) << ": the frictional power over every admissible distribution lies in ["
       << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n"
       << "  least at f = " << distribution_text(r.power->min_distribution)
       << ", most at f = " << distribution_text(r.power->max_distribution) << "\n" << regions_power_text(r);
@@ -297,10 +283,10 @@ std::string sliding_unknown_human(const Sliding_options& so, const Support_item&
   return s.str();
 }
 
-void write_sliding(Json_writer& w, const Sliding_options& so, const Support_item& r) {
+void write_sliding(Json_writer& w, const Support_query& q, const Support_item& r) {
   const Sliding_answer& a = r.sliding;
   const char* kinds[] = {"facet", "vertex", "smooth"};
-  w.member("command", "sliding").member("name", r.scene.name).member("mode", mode_name(so.mode));
+  w.member("command", "sliding").member("name", r.scene.name).member("mode", mode_name(r.mode));
   w.member("convention", kConvention);
   write_pair(w.key("center_of_friction"), a.center_of_friction.x, a.center_of_friction.y);
   write_pair(w.key("friction_centroid"), a.friction_centroid.x, a.friction_centroid.y);
@@ -313,7 +299,7 @@ void write_sliding(Json_writer& w, const Sliding_options& so, const Support_item
     write_pair(w.key("facet_disc").object().key("at"), p.at.x, p.at.y);
     w.member("radius", p.rho).end_object();
   }
-  w.end_object().member("sides", so.sides).member("lambda_squared", r.model->directions().lambda_sq);
+  w.end_object().member("sides", q.sides).member("lambda_squared", r.model->directions().lambda_sq);
   w.key("power").object().member("inner", a.h_inner).member("outer", a.h_outer).member("lower", a.h_lo);
   w.member("upper", a.h_hi).end_object();
   w.key("load_box").object().key("lower").rationals(a.load_lo).key("upper").rationals(a.load_hi);
@@ -323,7 +309,7 @@ void write_sliding(Json_writer& w, const Sliding_options& so, const Support_item
   write_true(w, r);
 }
 
-std::string sliding_human(const Sliding_options& so, const Support_item& r, const std::string& source) {
+std::string sliding_human(const Support_query& q, const Support_item& r, const std::string& source) {
   const Sliding_answer& a = r.sliding;
   std::ostringstream s;
   s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
@@ -339,7 +325,7 @@ std::string sliding_human(const Sliding_options& so, const Support_item& r, cons
           << " (exact)\n";
     } else {
       s << "power h between " << human_number(a.h_inner) << " and " << human_number(a.h_outer) << " (polygonal, "
-        << so.sides << " sides)\n";
+        << q.sides << " sides)\n";
     }
     s << "load box: " << thv(a.load_lo) << " .. " << thv(a.load_hi)
       << (a.cls.kind == Twist_kind::facet ? " (the facet's centre)\n" : "\n");
@@ -353,13 +339,13 @@ std::string sliding_human(const Sliding_options& so, const Support_item& r, cons
 
 // The answer as JSON and as text, by what the pipeline answered (an unknown distribution, the twin alone,
 // or the exact answer).
-void answer_json(Json_writer& w, const Sliding_options& so, const Support_item& r) {
-  by_answer(r, so.mode, &write_sliding_unknown, &write_sliding_float, &write_sliding, &write_sliding_regions)(w, so, r);
+void answer_json(Json_writer& w, const Support_query& q, const Support_item& r) {
+  by_kind(r, &write_sliding, &write_sliding_float, &write_sliding_unknown, &write_sliding_regions)(w, q, r);
 }
 
-std::string answer_text(const Sliding_options& so, const Support_item& r, const std::string& source) {
-  return by_answer(r, so.mode, &sliding_unknown_human, &sliding_float_human, &sliding_human, &sliding_regions_human)(
-      so, r, source);
+std::string answer_text(const Support_query& q, const Support_item& r, const std::string& source) {
+  return by_kind(r, &sliding_human, &sliding_float_human, &sliding_unknown_human, &sliding_regions_human)(
+      q, r, source);
 }
 
 }  // namespace

@@ -32,15 +32,24 @@ inline std::optional<Mode> parse_mode(std::string_view name) {
 // The message of a front end that met an unknown mode (the option's name first).
 inline constexpr const char* kModeChoices = "is not one of exact, hybrid, float";
 
-// Which arithmetic decided an answer that asked `predicates` signs, `exact` of them in exact arithmetic:
-// "exact" in exact mode or when every sign was exact, "float" when none was, else "hybrid".
-inline const char* decided_by(Mode m, std::size_t predicates, std::size_t exact) {
-  if (m == Mode::exact) return "exact";
-  return exact == 0 ? "float" : (exact == predicates ? "exact" : "hybrid");
+// Which arithmetic decided an answer's signs (its "decided_by"): the twin's certified floats alone, both, or exact
+// arithmetic alone. The order is Python's wrenchkit.DECIDED_BY (0, 1, 2).
+enum class Arithmetic { floats, hybrid, exact };
+inline const char* arithmetic_name(Arithmetic a) {
+  switch (a) {
+    case Arithmetic::floats: return "float";
+    case Arithmetic::hybrid: return "hybrid";
+    case Arithmetic::exact: return "exact";
+  }
+  return "?";
 }
-// Two parts of one answer: the same word when they agree, else "hybrid".
-inline const char* decided_by(const char* a, const char* b) {
-  return std::string_view(a) == std::string_view(b) ? a : "hybrid";
+// An answer that asked `predicates` signs, `exact` of them in exact arithmetic: exact in exact mode or when every
+// sign was exact, floats when none was, else hybrid.
+inline Arithmetic decided_by(Mode m, std::size_t predicates, std::size_t exact) {
+  if (m == Mode::exact) return Arithmetic::exact;
+  return exact == 0 ? Arithmetic::floats : (exact == predicates ? Arithmetic::exact : Arithmetic::hybrid);
 }
+// Two parts of one answer: the same when they agree, else hybrid.
+inline Arithmetic decided_by(Arithmetic a, Arithmetic b) { return a == b ? a : Arithmetic::hybrid; }
 
 }  // namespace wrenchkit

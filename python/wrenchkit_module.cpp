@@ -199,7 +199,7 @@ py::dict closure(const Py_scene& s, const std::string& mode) {
   d["rank"] = rank;
   d["generators"] = gens;
   d["mode"] = mode;
-  d["decided_by"] = r.decided_by();
+  d["decided_by"] = arithmetic_name(r.decided_by());
   d["certificate"] = closure_certificate(r.force.certificate);
   d["form_certificate"] = closure_certificate(r.form.certificate);
   d["certificate_json"] = r.force_certificate;
@@ -216,7 +216,7 @@ py::dict equilibrium(const Py_scene& s, const std::string& mode) {
   d["load"] = triple(a.load[0], a.load[1], a.load[2]);
   d["generators"] = a.generators;
   d["mode"] = mode;
-  d["decided_by"] = a.decided_by();
+  d["decided_by"] = arithmetic_name(a.decided_by());
   d["certificate"] = equilibrium_certificate(a.certificate);
   d["certificate_json"] = r.certificate;
   return d;
@@ -598,8 +598,8 @@ py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::st
   if (!regions) q.sides = checked_sides(sides);
   const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "limit_surface", s.limits), q);
   raise_unless_answered(r.status, r.message);
-  if (r.admissible) return unknown_distribution(r, mode, q);  // with regions too (their statics added)
-  if (r.regions) return regions_dict(r, mode, q);
+  if (r.kind == Support_kind::unknown) return unknown_distribution(r, mode, q);  // with regions too (their statics)
+  if (r.kind == Support_kind::regions) return regions_dict(r, mode, q);
   const Sliding_answer& sa = r.sliding;
   py::dict d;
   d["mode"] = mode;
@@ -635,8 +635,8 @@ py::dict sliding(const Py_scene& s, const std::optional<std::vector<std::string>
   if (twist) q.twist = nonzero_twist(*twist);
   const Support_item r = answer_support(s.scene, s.text, s.source, exact_request(mode, "sliding", s.limits), q);
   raise_unless_answered(r.status, r.message);
-  if (r.admissible) return unknown_distribution(r, mode, q);  // with regions too (their statics added)
-  if (r.regions) return regions_dict(r, mode, q);
+  if (r.kind == Support_kind::unknown) return unknown_distribution(r, mode, q);  // with regions too (their statics)
+  if (r.kind == Support_kind::regions) return regions_dict(r, mode, q);
   py::dict d;
   d["mode"] = mode;
   const Sliding_answer& a = r.sliding;

@@ -64,7 +64,7 @@ struct Closure_item {
   std::string name;                                  // the scene's "name"
   Closure_answer force, form;                        // answered
   std::string force_certificate, form_certificate;  // answered and certified: certificate_json of each
-  const char* decided_by() const { return wrenchkit::decided_by(force.decided_by(), form.decided_by()); }
+  Arithmetic decided_by() const { return wrenchkit::decided_by(force.decided_by(), form.decided_by()); }
 };
 
 // Equilibrium of the scene's load [EQ-1].

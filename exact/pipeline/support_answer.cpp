@@ -144,6 +144,10 @@ void answer(std::string_view source, const Request& request, const Support_query
     throw Input_error(std::string(source) + ": support: the scene has no \"support\" (" +
                       (ls ? "limit-surface" : "sliding") + " needs one)");
   const Support_model m(r.scene);
+  r.kind = !m.known()                   ? Support_kind::unknown
+           : m.has_regions()            ? Support_kind::regions
+           : r.mode == Mode::float_only ? Support_kind::points_twin
+                                        : Support_kind::points;
   if (m.has_regions()) answer_regions(source, m, q, r);
   else if (!m.known()) answer_unknown(m, q, r);
   else if (ls) answer_limit_surface(q, r);

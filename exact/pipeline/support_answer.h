@@ -42,11 +42,17 @@ struct Support_query {
   std::optional<Rational> tolerance;
 };
 
+// What the support is made of, which decides what its answer holds: points with every force given (the polygonal
+// model; `points_twin` in float mode, the twin's values), some point force not given (the admissible set F, with or
+// without regions), or regions with every point force given (their certified brackets).
+enum class Support_kind { points, points_twin, unknown, regions };
+
 struct Support_item {
   Status status = Status::answered;
   std::string message;
   Scene scene;
   Mode mode = Mode::hybrid;
+  Support_kind kind = Support_kind::points;
   // exact and hybrid (and limit-surface's model in float, for the search)
   std::optional<Polygonal_ls> model;
   Ls_polytope in, out;          // limit-surface, exact and hybrid, when built

@@ -55,7 +55,7 @@ struct Closure_answer {
   std::size_t predicates = 0;        // signs the algorithm asked for
   std::size_t exact_predicates = 0;  // of which decided in exact arithmetic
   // "exact", "float" (no exact predicate) or "hybrid" (some of each): core/mode.h's rule.
-  const char* decided_by() const { return wrenchkit::decided_by(mode, predicates, exact_predicates); }
+  Arithmetic decided_by() const { return wrenchkit::decided_by(mode, predicates, exact_predicates); }
 };
 
 // `certify` false skips building the certificate (for throughput measurements and callers that

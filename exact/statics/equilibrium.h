@@ -38,7 +38,7 @@ struct Equilibrium_answer {
   std::size_t generators = 0;
   Equilibrium_certificate certificate;  // built exactly, in every mode (when certify)
   std::size_t predicates = 0, exact_predicates = 0;  // signs of the dual-cone path (hybrid, float)
-  const char* decided_by() const { return wrenchkit::decided_by(mode, predicates, exact_predicates); }
+  Arithmetic decided_by() const { return wrenchkit::decided_by(mode, predicates, exact_predicates); }
 };
 
 // Throws Input_error("load: …") if the scene has no load.
