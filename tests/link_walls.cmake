@@ -1,0 +1,59 @@
+# The link walls of docs/design.md ("Layout and dependency walls"): one library per part, each linking only what
+# its walls allow. Proved twice, from the build itself rather than from the includes (tests/check_walls.cmake):
+# 1. by the linker: each library below is linked on its own as a shared library of its objects with
+#    --no-undefined against only what its target links, so code that calls across a wall fails the build;
+# 2. by CTest (`link_walls`): each target's link libraries, as CMake holds them, against the allowed ones below.
+# Included from the top-level CMakeLists.txt after every target exists (tests on, not the fuzz build); the check
+# runs as cmake -DLINKS=<build>/link_walls/links.cmake -P tests/link_walls.cmake.
+set(wrenchkit_walled_libraries
+  wrenchkit_float wrenchkit_checker
+  wrenchkit_numbers wrenchkit_io wrenchkit_statics wrenchkit_sliding wrenchkit_fixture wrenchkit_pipeline
+  wrenchkit_cgal wrenchkit_mesh_io)
+
+if(CMAKE_SCRIPT_MODE_FILE)
+  cmake_minimum_required(VERSION 3.20)
+  include("${LINKS}")  # links_<target>: the target's link libraries (an INTERFACE target's interface ones)
+  set(gmp wrenchkit_gmp)
+  set(allowed_wrenchkit_float wrenchkit_core)
+  set(allowed_wrenchkit_checker ${gmp})
+  set(allowed_wrenchkit_numbers wrenchkit_core wrenchkit_float ${gmp})
+  set(allowed_wrenchkit_io wrenchkit_numbers ${allowed_wrenchkit_numbers})
+  set(allowed_wrenchkit_statics wrenchkit_io ${allowed_wrenchkit_io})  # not sliding, fixture or the pipeline
+  set(allowed_wrenchkit_sliding wrenchkit_io ${allowed_wrenchkit_io})  # not statics, fixture or the pipeline
+  set(allowed_wrenchkit_fixture wrenchkit_statics wrenchkit_sliding ${allowed_wrenchkit_io})
+  set(allowed_wrenchkit_exact wrenchkit_numbers wrenchkit_io wrenchkit_statics wrenchkit_sliding wrenchkit_fixture)
+  set(allowed_wrenchkit_pipeline wrenchkit_fixture ${allowed_wrenchkit_fixture} wrenchkit_checker Threads::Threads)
+  set(allowed_wrenchkit_cgal wrenchkit_statics wrenchkit_sliding ${allowed_wrenchkit_io} CGAL::CGAL)
+  set(allowed_wrenchkit_mesh_io wrenchkit_sliding ${allowed_wrenchkit_io} CGAL::CGAL)
+  set(failures "")
+  foreach(t IN LISTS wrenchkit_walled_libraries ITEMS wrenchkit_exact)
+    if(NOT DEFINED links_${t})
+      string(APPEND failures "\n  ${t}: not in ${LINKS}")
+    endif()
+    foreach(l IN LISTS links_${t})
+      if(NOT l IN_LIST allowed_${t})
+        string(APPEND failures "\n  ${t} links ${l} (allowed: ${allowed_${t}})")
+      endif()
+    endforeach()
+  endforeach()
+  if(failures)
+    message(FATAL_ERROR "link walls broken:${failures}")
+  endif()
+  message(STATUS "link walls hold")
+  return()
+endif()
+
+set(dir "${PROJECT_BINARY_DIR}/link_walls")
+set(links "")
+foreach(t IN LISTS wrenchkit_walled_libraries)
+  add_library(${t}_link_wall SHARED $<TARGET_OBJECTS:${t}>)
+  target_link_libraries(${t}_link_wall PRIVATE ${t})
+  target_link_options(${t}_link_wall PRIVATE LINKER:--no-undefined)
+  set_target_properties(${t}_link_wall PROPERTIES LIBRARY_OUTPUT_DIRECTORY "${dir}")
+  get_target_property(l ${t} LINK_LIBRARIES)
+  string(APPEND links "set(links_${t} \"${l}\")\n")
+endforeach()
+get_target_property(l wrenchkit_exact INTERFACE_LINK_LIBRARIES)
+string(APPEND links "set(links_wrenchkit_exact \"${l}\")\n")
+file(WRITE "${dir}/links.cmake" "${links}")
+add_test(NAME link_walls COMMAND ${CMAKE_COMMAND} -DLINKS=${dir}/links.cmake -P ${CMAKE_CURRENT_LIST_FILE})
