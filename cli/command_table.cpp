@@ -563,7 +563,10 @@ std::vector<Command> make_table() {
          [](Options& o, S n, S v) { o.reference.scenes = file_value(n, v); }}},
        {},
        nullptr,
-       run_reference});
+       nullptr,
+       nullptr,
+       {},
+       &Conformance_commands::reference});
   t.push_back(
       {"compare",
        "wrenchkit compare DIR ANSWERS: another implementation's answers (JSON lines or CSV) against the corpus; each "
@@ -596,20 +599,23 @@ std::vector<Command> make_table() {
               {"format", "jsonl|csv", "the answers' format (default: by the file name; jsonl for -)",
                [](Options& o, S n, S v) {
                  if (v != "jsonl" && v != "csv") bad_value(n, v, "is not one of jsonl, csv");
-                 o.format = v;
+                 o.compare.format = v;
                }},
               {"rtol", "R", "relative tolerance (default 1e-9): |a - r| <= atol + rtol*|r|",
-               [](Options& o, S n, S v) { o.rtol = non_negative(o, n, v); }},
+               [](Options& o, S n, S v) { o.compare.rtol = non_negative(o, n, v); }},
               {"atol", "A", "absolute tolerance (default 1e-12)",
-               [](Options& o, S n, S v) { o.atol = non_negative(o, n, v); }},
+               [](Options& o, S n, S v) { o.compare.atol = non_negative(o, n, v); }},
               {"near", "D", "a distance <= D counts as near a boundary (default 1e-9)",
-               [](Options& o, S n, S v) { o.near = non_negative(o, n, v); }},
+               [](Options& o, S n, S v) { o.compare.near = non_negative(o, n, v); }},
               with_help(kTolerance, "the tolerance your implementation documents: a disagreement within EPS of a "
                                     "degenerate boundary counts as near (EPS > 0)")},
              with_help(kLimits, "max-file-size", "largest answers file (default 67108864)")}),
        {"CORPUS", "ANSWERS"},
        nullptr,
-       run_compare});
+       nullptr,
+       nullptr,
+       {},
+       &Conformance_commands::compare});
   return t;
 }
 
@@ -824,7 +830,7 @@ const std::vector<Command>& commands() {
   return table;
 }
 
-int run_command_line(const std::vector<std::string>& args) {
+int run_command_line(const std::vector<std::string>& args, const Conformance_commands& conformance) {
   if (args.empty()) {
     std::cerr << main_help();
     return kBadInput;
@@ -847,7 +853,7 @@ int run_command_line(const std::vector<std::string>& args) {
     const std::string& path = o.positional[0];
     return c->scene(o, read_input(path, o.limits.max_file_bytes), path == "-" ? "<stdin>" : path);
   }
-  return c->run(o);
+  return c->conformance ? (conformance.*c->conformance)(o) : c->run(o);
 }
 
 }  // namespace wrenchkit::cli

@@ -22,6 +22,15 @@ struct Option {
   Role role = Role::ordinary;
 };
 
+// The conformance commands (reference, compare: the corpus with its test scenery, and compare; conformance/), whose
+// handlers the program binds (cli/main.cpp) rather than this library: the Python bindings share the table and the
+// batch lines (prepare_batch, batch_line) and link neither the corpus nor the test scenery.
+struct Conformance_commands {
+  int (*reference)(const Options& o);
+  int (*compare)(const Options& o);
+};
+using Conformance_command = int (*Conformance_commands::*)(const Options& o);
+
 struct Command {
   const char* name;
   const char* summary;      // its line in `wrenchkit --help`
@@ -36,6 +45,8 @@ struct Command {
   // Per-scene commands: their JSON answer for `batch COMMAND`, and the options batch adds to theirs.
   Scene_answer (*prepare)(const Options& o) = nullptr;
   std::vector<Option> batch_options = {};
+  // A conformance command: its handler among those the program binds (instead of `run`).
+  Conformance_command conformance = nullptr;
 };
 
 // The table, in the order of `wrenchkit --help`.
@@ -50,8 +61,8 @@ struct Batch_job {
 };
 Batch_job prepare_batch(const std::vector<std::string>& command_and_options);
 
-// `wrenchkit ARGS…` (argv without the program name): parses, validates and runs; the exit code.
-// Throws Usage_error, Input_error, Undecided, Self_check_failure as the commands do.
-int run_command_line(const std::vector<std::string>& args);
+// `wrenchkit ARGS…` (argv without the program name): parses, validates and runs, the conformance commands with the
+// program's handlers; the exit code. Throws Usage_error, Input_error, Undecided, Self_check_failure as the commands do.
+int run_command_line(const std::vector<std::string>& args, const Conformance_commands& conformance);
 
 }  // namespace wrenchkit::cli

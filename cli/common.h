@@ -12,7 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/reference.h"
+#include "conformance/compare.h"
+#include "conformance/reference.h"
 #include "core/mode.h"
 #include "exact/io/json_writer.h"
 #include "exact/pipeline/pipeline.h"
@@ -58,10 +59,9 @@ struct Options {
   std::optional<Picture> what;
   std::string output, off_file, obj_file, ply_file, svg_file;
   bool list = false, exact_coordinates = false;
-  // compare: --format jsonl|csv ("" = by the file name), --rtol, --atol, --near (exact, >= 0), --tolerance
-  // (the field above).
-  std::string format;
-  Rational rtol{"1/1000000000"}, atol{"1/1000000000000"}, near{"1/1000000000"};
+  // compare: --format jsonl|csv, --rtol, --atol, --near (exact, >= 0); its --tolerance, --max-file-size and --json
+  // are the fields above.
+  Compare_options compare;
   // reference: --out DIR, --seed, --cases, --random, --sides (4..64).
   std::string out_dir;
   Reference_options reference;
@@ -243,7 +243,8 @@ int run_hold(const Options& o, const std::string& scene_text, const std::string&
 int run_limit_surface(const Options& o, const std::string& scene_text, const std::string& source);
 int run_sliding(const Options& o, const std::string& scene_text, const std::string& source);
 
-// reference_command.cpp, compare_command.cpp
+// reference_command.cpp, compare_command.cpp: the conformance commands (conformance/), which the program binds
+// (cli/command_table.h, Conformance_commands), not this library.
 int run_reference(const Options& o);
 int run_compare(const Options& o);
 

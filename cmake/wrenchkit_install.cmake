@@ -15,12 +15,17 @@ set(WRENCHKIT_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/wrenchkit")
 set_target_properties(wrenchkit_core PROPERTIES EXPORT_NAME core)
 set_target_properties(wrenchkit_float PROPERTIES EXPORT_NAME float)
 set_target_properties(wrenchkit_exact PROPERTIES EXPORT_NAME exact)
+# The engine's parts (docs/design.md, "Layout and dependency walls"), which wrenchkit::exact links together.
+foreach(part numbers io statics sliding fixture certificates)
+  set_target_properties(wrenchkit_${part} PROPERTIES EXPORT_NAME ${part})
+endforeach()
 set_target_properties(wrenchkit_pipeline PROPERTIES EXPORT_NAME pipeline)
 set_target_properties(wrenchkit_checker PROPERTIES EXPORT_NAME checker)
 set_target_properties(wrenchkit_gmp PROPERTIES EXPORT_NAME gmp)
 # Static libraries that a shared library (a consumer's plugin, the Python module) may link.
 # -fno-semantic-interposition keeps GCC inlining within a library as without -fPIC.
-foreach(t wrenchkit_float wrenchkit_exact wrenchkit_pipeline wrenchkit_checker wrenchkit_cgal wrenchkit_mesh_io)
+foreach(t wrenchkit_float wrenchkit_numbers wrenchkit_io wrenchkit_statics wrenchkit_sliding wrenchkit_fixture wrenchkit_certificates
+          wrenchkit_pipeline wrenchkit_checker wrenchkit_cgal wrenchkit_mesh_io)
   set_property(TARGET ${t} PROPERTY POSITION_INDEPENDENT_CODE ON)
   target_compile_options(${t} PRIVATE -fno-semantic-interposition)
 endforeach()
@@ -28,7 +33,8 @@ target_include_directories(wrenchkit_core INTERFACE
   "$<INSTALL_INTERFACE:${WRENCHKIT_INSTALL_INCLUDEDIR}>" "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
 target_include_directories(wrenchkit_checker INTERFACE "$<INSTALL_INTERFACE:${WRENCHKIT_INSTALL_INCLUDEDIR}>")
 
-install(TARGETS wrenchkit_core wrenchkit_float wrenchkit_exact wrenchkit_pipeline wrenchkit_gmp wrenchkit_checker
+install(TARGETS wrenchkit_core wrenchkit_float wrenchkit_numbers wrenchkit_io wrenchkit_statics wrenchkit_sliding
+  wrenchkit_fixture wrenchkit_certificates wrenchkit_exact wrenchkit_pipeline wrenchkit_gmp wrenchkit_checker
   EXPORT wrenchkitTargets
   ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}" COMPONENT development)
 # The CGAL face (exact/cgal/cgal.h) and the mesh writers: their own export set, loaded only by

@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "conformance/corpus.h"
 #include "core/mode.h"
 #include "exact/certificates/certificates.h"
 #include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/labels_answer.h"
 #include "exact/pipeline/pipeline.h"
-#include "exact/pipeline/reference.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
@@ -675,25 +675,17 @@ py::dict check(const Py_scene& s, const std::string& certificate) {
 }
 
 // wrenchkit.reference(scenes, out, sides): the corpus of the user's own scenes, the same C++ as
-// `wrenchkit reference --scenes PATH --out DIR` (exact/pipeline/reference.h). Returns
+// `wrenchkit reference --scenes PATH --out DIR` (conformance/corpus.h). Returns
 // {"scenes": n, "certificates_checked": n, "bytes": n}.
 py::dict reference(const std::string& scenes, const std::string& out, int sides) {
   if (sides < 4 || sides > 64 || sides % 2) throw Input_error("sides: " + std::to_string(sides) + " is not even in 4..64");
   if (const std::string why = corpus_dir_problem(out); !why.empty()) throw Input_error("out: " + why);
-  std::vector<std::string> ids;
-  std::vector<Reference_item> items;
-  std::size_t certificates = 0;
-  for (const Reference_scene& e : read_user_scenes(scenes, Input_limits{})) {
-    Reference_item b = reference_item(e, sides);
-    raise_unless_answered(b.status, b.message);
-    ids.push_back(e.id);
-    certificates += b.certificates;
-    items.push_back(std::move(b));
-  }
-  const std::size_t bytes = write_corpus(out, ids, items, user_manifest(scenes, sides, ids.size()));
+  const Reference_corpus corpus = user_corpus(scenes, sides);
+  raise_unless_answered(corpus.status, corpus.message);
+  const std::size_t bytes = write_corpus(out, corpus.ids, corpus.items, user_manifest(scenes, sides, corpus.ids.size()));
   py::dict d;
-  d["scenes"] = ids.size();
-  d["certificates_checked"] = certificates;
+  d["scenes"] = corpus.ids.size();
+  d["certificates_checked"] = corpus.certificates;
   d["bytes"] = bytes;
   return d;
 }

@@ -2,8 +2,8 @@
 #   core/   standard library and core/ only
 #   float/  no GMP, no CGAL, nothing from exact/ or proofs/
 #   proofs/ no CGAL, nothing from exact/, core/, float/, cli/
-#   exact/ by parts (below); testing/ no front end
-#   exact/, cli/: no peer library (qhull, cddlib, GLPK) and nothing from bench/
+#   exact/ by parts (below); testing/ no front end; conformance/ no front end, the test scenery in one file
+#   exact/, conformance/, cli/: no peer library (qhull, cddlib, GLPK) and nothing from bench/
 #   CGAL only in exact/cgal/ (its one opt-in header included by no other header), tests/, bench/ and one engine
 #   file, exact/io/region_cgal.cpp (support regions' validity and triangulation)
 #   and no project file pointing at ../shared (the self-contained documentation, below)
@@ -26,8 +26,8 @@ check_dir(core "<gmp|<CGAL/|<boost/|\"(exact|float|proofs|cli)/" "core/ is stand
 check_dir(float "<gmp|<CGAL/|\"(exact|proofs|cli)/" "float/ has no GMP, no CGAL, no exact engine")
 check_dir(proofs "<CGAL/|\"(exact|core|float|cli)/" "proofs/ shares no code with the engine")
 # exact/'s parts (docs/design.md, "Layout"): numbers <- io <- statics, sliding <- fixture <- certificates <- pipeline;
-# nothing of the engine reaches the front ends (cli/, python/) or the test scenery (testing/).
-check_dir(exact "\"(cli|python|testing|bench|fuzz|tests)/" "the engine does not depend on front ends or test scenery")
+# nothing of the engine reaches the front ends (cli/, python/), the conformance part or the test scenery (testing/).
+check_dir(exact "\"(cli|python|conformance|testing|bench|fuzz|tests)/" "the engine does not depend on front ends, conformance or test scenery")
 foreach(part numbers io statics sliding fixture certificates)
   check_dir(exact/${part} "\"proofs/" "only exact/pipeline/ calls the independent checker")
 endforeach()
@@ -43,7 +43,15 @@ check_dir(exact/certificates "\"exact/pipeline/" "certificates/ sits below the p
 foreach(part statics sliding fixture)
   check_dir(exact/${part} "\"exact/io/json_writer\\.h\"" "deciders return witness data; JSON is written by certificates/ and the pipeline")
 endforeach()
-check_dir(testing "\"(cli|python)/" "test scenery does not depend on front ends")
+check_dir(testing "\"(cli|python|conformance)/" "test scenery does not depend on front ends or conformance")
+# conformance/ (the reference corpus and compare) sits on the pipeline; only the built-in corpus
+# (conformance/reference.cpp) uses the test scenery, and neither the command line nor Python includes it.
+check_dir(conformance "\"(cli|python|bench|fuzz|tests)/" "conformance does not depend on front ends")
+set(allowed_file conformance/reference.cpp)
+foreach(dir conformance cli python)
+  check_dir(${dir} "\"testing/" "the test scenery only in the built-in corpus (conformance/reference.cpp)")
+endforeach()
+unset(allowed_file)
 # The front ends reach the twin only through the pipeline (they write the values it answered with).
 foreach(front cli python)
   check_dir(${front} "\"float/|\"exact/statics/hybrid_kernel\\.h" "front ends reach the twin only through exact/pipeline/")
@@ -54,7 +62,7 @@ endforeach()
 # One engine file reads support regions with CGAL (exact/io/region_cgal.cpp: validity and triangulation, an object
 # library linked privately).
 set(allowed_file exact/io/region_cgal.cpp)
-foreach(dir exact/numbers exact/io exact/statics exact/sliding exact/fixture exact/certificates exact/pipeline cli python testing fuzz)
+foreach(dir exact/numbers exact/io exact/statics exact/sliding exact/fixture exact/certificates exact/pipeline conformance cli python testing fuzz)
   check_dir(${dir} "<CGAL/|\"exact/cgal/cgal\\.h\"" "CGAL only in exact/cgal/, tests/, bench/ and exact/io/region_cgal.cpp")
 endforeach()
 unset(allowed_file)
@@ -70,7 +78,7 @@ foreach(h IN LISTS headers)
 endforeach()
 
 # The benchmarks' peers (qhull, cddlib, GLPK, bench/) are never part of the engine or the command.
-foreach(dir exact cli)
+foreach(dir exact conformance cli)
   check_dir(${dir} "<libqhull|<cdd/|<glpk|\"bench/" "peers stay in bench/")
 endforeach()
 
@@ -78,7 +86,7 @@ endforeach()
 # the repository ("../shared", "shared/docs", or the team's spec pages by name: interface.md, peers.md,
 # toolchain.md, house-style.md), which users do not have. Checks the tracked files (every
 # file when ROOT is not a git checkout) under the listed paths, comments and printed strings alike.
-set(doc_paths README.md docs cli exact float core proofs python bench fuzz tests testing)
+set(doc_paths README.md docs cli conformance exact float core proofs python bench fuzz tests testing)
 set(doc_files "")
 find_program(GIT_EXECUTABLE git)
 if(GIT_EXECUTABLE AND EXISTS "${ROOT}/.git")

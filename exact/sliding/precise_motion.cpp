@@ -46,11 +46,6 @@ class Big {
     mpfr_sqrt(r.v_, a.v_, MPFR_RNDN);
     return r;
   }
-  friend Big abs(const Big& a) {
-    Big r(a.bits());
-    mpfr_abs(r.v_, a.v_, MPFR_RNDN);
-    return r;
-  }
   Big neg() const {
     Big r(bits());
     mpfr_neg(r.v_, v_, MPFR_RNDN);

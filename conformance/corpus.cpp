@@ -1,4 +1,4 @@
-#include "exact/pipeline/reference.h"
+#include "conformance/corpus.h"
 
 #include <algorithm>
 #include <charconv>
@@ -414,6 +414,24 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
   if (b.status == Status::bad_input && b.message.compare(0, where.size(), where) != 0)
     b.message = where + ": " + b.message;
   return b;
+}
+
+bool Reference_corpus::add(const std::string& id, Reference_item item) {
+  if (item.status != Status::answered) {
+    status = item.status, message = std::move(item.message);
+    return false;
+  }
+  ids.push_back(id);
+  certificates += item.certificates;
+  items.push_back(std::move(item));
+  return true;
+}
+
+Reference_corpus user_corpus(const std::string& path, int sides) {
+  Reference_corpus corpus;
+  for (const Reference_scene& e : read_user_scenes(path, Input_limits{}))
+    if (!corpus.add(e.id, reference_item(e, sides))) break;
+  return corpus;
 }
 
 std::vector<Reference_scene> read_user_scenes(const std::string& path, const Input_limits& limits) {

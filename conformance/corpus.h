@@ -1,9 +1,10 @@
-// One line of the reference corpus (docs/reference-format.md) for one scene, through the pipeline: the
-// verdicts and their certificates by answer_closure / answer_equilibrium (each certificate accepted by the
-// independent checker before the line exists), the moment labels, the limit surface and the stick/slide
-// answer of the scene's load by answer_support, the boundary measure [RF-1], and every exact number again
-// as its nearest double ("approx"). Used by `wrenchkit reference` (the built-in families and the user's own
-// scenes, --scenes) and by the Python bindings (wrenchkit.reference), so both write the same bytes.
+// The reference corpus' format (docs/reference-format.md), the conformance part's base: one scene's line through
+// the pipeline — the verdicts and their certificates by answer_closure / answer_equilibrium (each certificate
+// accepted by the independent checker before the line exists), the moment labels, the limit surface and the
+// stick/slide answer of the scene's load by answer_support, the boundary measure [RF-1], and every exact number
+// again as its nearest double ("approx") — the user's own scenes, and the corpus directory. Used by `wrenchkit
+// reference` (conformance/reference.h: the built-in scenes, or the user's, --scenes) and by the Python bindings
+// (wrenchkit.reference: the user's scenes), so both write the same bytes; no test scenery here.
 #pragma once
 
 #include <cstddef>
@@ -41,6 +42,23 @@ struct Reference_item {
 // The corpus line of `scene` (limit surfaces with `sides`-gons, 4..64). Never throws. Exact answers
 // (Mode::exact; stick/slide in Mode::hybrid, whose certified answers are exact ones).
 Reference_item reference_item(const Reference_scene& scene, int sides);
+
+// A corpus in memory: the scenes' ids and items in order, and how its making ended — answered, or the status and
+// message of the first item that was not (its scenes before it kept).
+struct Reference_corpus {
+  Status status = Status::answered;
+  std::string message;
+  std::vector<std::string> ids;
+  std::vector<Reference_item> items;  // per scene: its line, canonical text, CSV row
+  std::size_t certificates = 0;       // all accepted by the independent checker
+  // Appends `item`, the line of scene `id`; or, when the item was not answered, ends the corpus with its status
+  // and message and returns false.
+  bool add(const std::string& id, Reference_item item);
+};
+
+// The corpus of the user's own scenes read from PATH (read_user_scenes; Input_error for a bad file or line),
+// limit surfaces with `sides`-gons.
+Reference_corpus user_corpus(const std::string& path, int sides);
 
 // The user's own scenes (`reference --scenes PATH`, docs/reference-format.md §7). PATH is a JSON-lines
 // file — each non-blank line a scene, id "line.N" (N its line number), or {"id": ID, "family": F,
