@@ -571,6 +571,7 @@ def main():
 
     python_section(md, docs)
     hold_section(md, docs, bench, batch)
+    notes_section(md)
 
     md.append("## Reproduce\n")
     md.append("```sh\n./build.sh bench                      # everything: build, run (2–5 min), report\n"
@@ -580,6 +581,14 @@ def main():
               "PYTHONPATH=build/python python3 bench/python_bench.py --cli build/wrenchkit --out docs/benchmarks/python.json"
               "  # (d)\n```\n")
     open(os.path.join(docs, "benchmarks.md"), "w").write("\n".join(md))
+
+
+def notes_section(md):
+    """The performance diary (profiles, what was tried, the next steps), hand-kept beside this script."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "performance-notes.md")
+    if os.path.exists(path):
+        md.append("## Performance notes\n")
+        md.append(open(path).read().rstrip("\n") + "\n")
 
 
 HOLD_BEGIN, HOLD_END = "<!-- hold section -->", "<!-- end of hold section -->"
@@ -620,7 +629,7 @@ def hold_section(md, docs, bench=None, batch=None):
                                                                        fmt_t(hy["cpu_us"])))
     if bh:
         md.append("Goal: `batch hold` ≥ 10 000 scenes/s/core — %s (%.0f scenes/s). Where the time goes (callgrind, "
-                  "instructions per scene of `BM_batch_hold/hybrid`, docs/design.md \"Known limits\"): no scene falls "
+                  "instructions per scene of `BM_batch_hold/hybrid`, \"Performance notes\" below): no scene falls "
                   "to the exact LP any more (4 of its 500 did, half the time, before the Newton runs' stop and warm start); "
                   "about 1.05 M in "
                   "all: the independent checker 46%% (reading the scene again 24%%, the certificate 20%%), the "

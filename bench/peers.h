@@ -2,7 +2,7 @@
 // faithfully to how their users call them, on the same scenes as ours: each declaration below states
 // the peer's options and verdict rule as its users' code applies them (GraspIt!'s qhull call in src/gws.cpp,
 // the plain strict qhull test, cddlib's exact GMP H-representation, GLPK's exact simplex, CGAL's hulls);
-// docs/design.md "Benchmarks" summarises them.
+// docs/benchmarks.md ("Performance notes": the suite and its peers) summarises them.
 // Force closure ⇔ pos{g_i} = R³ ⇔ the origin is strictly inside conv{g_i} (theory.md §3–4).
 //
 // Float peers receive the wrenches computed in double from the scene's doubles (what their users

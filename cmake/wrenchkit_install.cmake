@@ -15,7 +15,7 @@ set(WRENCHKIT_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/wrenchkit")
 set_target_properties(wrenchkit_core PROPERTIES EXPORT_NAME core)
 set_target_properties(wrenchkit_float PROPERTIES EXPORT_NAME float)
 set_target_properties(wrenchkit_exact PROPERTIES EXPORT_NAME exact)
-# The engine's parts (docs/design.md, "Layout and dependency walls"), which wrenchkit::exact links together.
+# The engine's parts (docs/design.md, "The parts and their walls"), which wrenchkit::exact links together.
 foreach(part numbers io statics sliding fixture certificates)
   set_target_properties(wrenchkit_${part} PROPERTIES EXPORT_NAME ${part})
 endforeach()

@@ -14,7 +14,7 @@
 //     triangles grouped by plane) equal; CGAL::is_strongly_convex_3 of the face's Surface_mesh.
 //   * [EQ-1] equilibrium verdicts (exact, hybrid, and float when it decides) against CGAL's exact LP solver
 //     (CGAL/QP_functions.h on Gmpz): −w ∈ pos{g_i} ⇔ {λ ≥ 0 : Σ λ_i g_i = −w} is feasible.
-// This translation unit parses CGAL's Nef, hull and QP headers once; its compile time is in docs/design.md.
+// This translation unit parses CGAL's Nef, hull and QP headers once; its compile time is in docs/benchmarks.md ("Performance notes").
 #include <CGAL/Extended_homogeneous.h>
 #include <CGAL/Gmpz.h>
 #include <CGAL/Nef_polyhedron_2.h>

@@ -25,7 +25,7 @@ endfunction()
 check_dir(core "<gmp|<CGAL/|<boost/|\"(exact|float|proofs|cli)/" "core/ is standard library only")
 check_dir(float "<gmp|<CGAL/|\"(exact|proofs|cli)/" "float/ has no GMP, no CGAL, no exact engine")
 check_dir(proofs "<CGAL/|\"(exact|core|float|cli)/" "proofs/ shares no code with the engine")
-# exact/'s parts (docs/design.md, "Layout"): numbers <- io <- statics, sliding <- fixture <- certificates <- pipeline;
+# exact/'s parts (docs/design.md, "The parts and their walls"): numbers <- io <- statics, sliding <- fixture <- certificates <- pipeline;
 # nothing of the engine reaches the front ends (cli/, python/), the conformance part or the test scenery (testing/).
 check_dir(exact "\"(cli|python|conformance|testing|bench|fuzz|tests)/" "the engine does not depend on front ends, conformance or test scenery")
 foreach(part numbers io statics sliding fixture certificates)

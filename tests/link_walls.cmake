@@ -1,4 +1,4 @@
-# The link walls of docs/design.md ("Layout and dependency walls"): one library per part, each linking only what
+# The link walls of docs/design.md ("The parts and their walls"): one library per part, each linking only what
 # its walls allow. Proved twice, from the build itself rather than from the includes (tests/check_walls.cmake):
 # 1. by the linker: each library below is linked on its own as a shared library of its objects with
 #    --no-undefined against only what its target links, so code that calls across a wall fails the build;

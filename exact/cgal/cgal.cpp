@@ -1,5 +1,5 @@
 // [CG-1] The CGAL face of the exact API (exact/cgal/cgal.h). The only translation unit of wrenchkit::cgal: CGAL's
-// headers are parsed once for the whole face (docs/design.md, "CGAL and Boost": compile cost).
+// headers are parsed once for the whole face (docs/benchmarks.md, "Performance notes": compile cost).
 #include "exact/cgal/cgal.h"
 
 #include <stdexcept>

@@ -1,5 +1,5 @@
-// [BUDGET] The scene-wide budget on exact arithmetic (docs/scene-format.md "Limits", docs/design.md "Input
-// handling"): the measures of exact/numbers/limits.h (Budget_tally) over a scene's text, and the message of a
+// [BUDGET] The scene-wide budget on exact arithmetic (docs/scene-format.md "Limits", docs/design.md "Input,
+// limits and batch"): the measures of exact/numbers/limits.h (Budget_tally) over a scene's text, and the message of a
 // scene over budget. The streaming reader keeps the same tally while it reads (and defers when it goes over);
 // read_scene_tree measures the text first, so a scene over budget is refused before any number is built.
 #pragma once

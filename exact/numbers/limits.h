@@ -25,7 +25,7 @@ struct Input_limits {
 //             it, never measures more), digits(x) counted as the digit limit counts them (scene-format.md
 //             "Numbers": the larger of the digits of its text and of its value written out exactly);
 //   longest = max digits(x);   entries = contacts + support points.
-// Why they bound the work (docs/design.md "Input handling"): an exact number of d digits takes about
+// Why they bound the work (docs/design.md "Input, limits and batch"): an exact number of d digits takes about
 // 0.42·d bytes, so `total` bounds the memory of the scene's rationals and the time to read them (every
 // later quantity of the engine and of the checker is built from them); a generator's integers have
 // O(longest) digits, each certified predicate combines a bounded number of generators, and the number of
