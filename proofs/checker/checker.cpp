@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <type_traits>
 #include <deque>
 #include <exception>
 #include <map>
@@ -345,6 +346,7 @@ Q rational_value(std::string_view s) {
 // most kKeptLimbs limbs each, a constant size) their values are kept as well.
 struct Contact {
   bool wrench = false;
+  bool frictional = false;         // a point contact with mu > 0 (edges left and right under the friction reading)
   bool fixed = false;              // every number fits a Small: `small` holds them, text and value are empty
   std::array<Small, 5> small{};    // point contact: x, y, nx, ny, mu (0 if absent); wrench: fx, fy, m
   std::vector<std::string> text;   // (!fixed) the numbers' texts, in the same order
@@ -480,6 +482,7 @@ std::vector<Q> kept(std::vector<Q> values) {
 Contact make_contact(bool wrench, const Read_number* n, std::size_t count, const Limits& lim) {
   Contact c;
   c.wrench = wrench;
+  c.frictional = !wrench && !n[4].zero;
   c.fixed = true;
   for (std::size_t k = 0; k < count; ++k) c.fixed = c.fixed && n[k].fits;
   if (c.fixed) {
@@ -698,14 +701,16 @@ bool inside(const std::vector<P2>& ring, const P2& p) {
   }
   return in;
 }
-// A sum of many rationals added pairwise (a balanced tree: one gcd with the growing denominator per level, not
-// per term).
-Q tree_sum(std::vector<Q> t) {
-  if (t.empty()) return 0;
+// A sum of many terms added pairwise, as a balanced tree (0 for none): rationals (one gcd with the growing
+// denominator per level, not per term), or integer wrenches over denominators that differ (about log k rounds of
+// work on k terms of n digits, where a running sum would take k rounds).
+template <class T>
+T tree_sum(std::vector<T> t) {
+  if (t.empty()) return T();
   while (t.size() > 1) {
     std::size_t k = 0;
     for (std::size_t i = 0; i + 1 < t.size(); i += 2) t[k++] = t[i] + t[i + 1];
-    if (t.size() % 2) t[k++] = t.back();
+    if (t.size() % 2) t[k++] = std::move(t.back());
     t.resize(k);
   }
   return t[0];
@@ -1179,25 +1184,160 @@ Scene read_scene(Reader& r, const Limits& lim) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// The integers of the checks of §1 and §3. Each of these checks is written once, over a number type N, and
+// run by fast_then_exact(): with N = Fixed (fixed width, on the stack) and, only if a result overflows it,
+// again from the start with N = Z (GMP). Every value of either type is exact, so the two runs take the same
+// steps and reach the same verdict and message; Fixed only decides sooner.
+
+using Z = mpz_class;
+
+struct Overflow {};  // a Fixed result that might not fit: the check starts again with N = Z
+
+// A signed integer of at most kLimbs 64-bit limbs, on GMP's mpn layer (sign and magnitude). A result that
+// might not fit (a product of m and n limbs with m + n > kLimbs, a carry out of the top limb) throws Overflow.
+static_assert(GMP_NUMB_BITS == 64 && sizeof(mp_limb_t) == 8, "64-bit limbs");
+class Fixed {
+ public:
+  static constexpr mp_size_t kLimbs = 8;
+  Fixed() = default;
+  Fixed(long x) : size_(x != 0), negative_(x < 0) {
+    limb_[0] = x < 0 ? 0UL - static_cast<unsigned long>(x) : static_cast<unsigned long>(x);
+  }
+  static Fixed of(const Z& z) {
+    Fixed r;
+    r.size_ = static_cast<mp_size_t>(mpz_size(z.get_mpz_t()));
+    if (r.size_ > kLimbs) throw Overflow{};
+    for (mp_size_t i = 0; i < r.size_; ++i) r.limb_[i] = mpz_getlimbn(z.get_mpz_t(), i);
+    r.negative_ = sgn(z) < 0;
+    return r;
+  }
+  static Fixed of_digits(std::string_view d) {  // a run of decimal digits
+    d.remove_prefix(std::min(d.find_first_not_of('0'), d.size()));
+    if (d.size() > 154) throw Overflow{};  // 10^154 < 2^512
+    Fixed r;
+    if (d.empty()) return r;
+    unsigned char digit[154];
+    for (std::size_t i = 0; i < d.size(); ++i) digit[i] = static_cast<unsigned char>(d[i] - '0');
+    mp_limb_t out[kLimbs + 1];  // mpn_set_str's room: the largest number of d.size() digits, and one limb
+    r.size_ = static_cast<mp_size_t>(mpn_set_str(out, digit, d.size(), 10));
+    std::copy(out, out + r.size_, r.limb_);
+    return r;
+  }
+  friend Z to_z(const Fixed& x) {
+    Z r;
+    mpz_import(r.get_mpz_t(), static_cast<std::size_t>(x.size_), -1, sizeof(mp_limb_t), 0, 0, x.limb_);
+    return x.negative_ ? Z(-r) : r;
+  }
+  friend int sgn(const Fixed& x) { return x.size_ == 0 ? 0 : x.negative_ ? -1 : 1; }
+  friend bool operator==(const Fixed& a, const Fixed& b) {
+    return a.size_ == b.size_ && a.negative_ == b.negative_ && (a.size_ == 0 || mpn_cmp(a.limb_, b.limb_, a.size_) == 0);
+  }
+  friend Fixed operator-(Fixed x) {
+    x.negative_ = x.size_ != 0 && !x.negative_;
+    return x;
+  }
+  friend Fixed operator+(const Fixed& a, const Fixed& b) {
+    if (a.size_ == 0) return b;
+    if (b.size_ == 0) return a;
+    const bool a_larger = a.size_ != b.size_ ? a.size_ > b.size_ : mpn_cmp(a.limb_, b.limb_, a.size_) >= 0;
+    const Fixed& x = a_larger ? a : b;  // |x| >= |y|
+    const Fixed& y = a_larger ? b : a;
+    Fixed r;
+    r.size_ = x.size_;
+    if (a.negative_ == b.negative_) {
+      if (mpn_add(r.limb_, x.limb_, x.size_, y.limb_, y.size_) != 0) {
+        if (r.size_ == kLimbs) throw Overflow{};
+        r.limb_[r.size_++] = 1;
+      }
+    } else {
+      mpn_sub(r.limb_, x.limb_, x.size_, y.limb_, y.size_);  // no borrow: |x| >= |y|
+      while (r.size_ > 0 && r.limb_[r.size_ - 1] == 0) --r.size_;
+    }
+    r.negative_ = r.size_ != 0 && x.negative_;
+    return r;
+  }
+  friend Fixed operator-(const Fixed& a, const Fixed& b) { return a + -b; }
+  friend Fixed operator*(const Fixed& a, const Fixed& b) {
+    Fixed r;
+    if (a.size_ == 0 || b.size_ == 0) return r;
+    if (a.size_ + b.size_ > kLimbs) throw Overflow{};
+    if (a.size_ == 1 && b.size_ == 1) {
+      __extension__ const unsigned __int128 p = static_cast<unsigned __int128>(a.limb_[0]) * b.limb_[0];
+      r.limb_[0] = static_cast<mp_limb_t>(p), r.limb_[1] = static_cast<mp_limb_t>(p >> 64);
+    } else if (a.size_ >= b.size_) {
+      mpn_mul(r.limb_, a.limb_, a.size_, b.limb_, b.size_);
+    } else {
+      mpn_mul(r.limb_, b.limb_, b.size_, a.limb_, a.size_);
+    }
+    r.size_ = a.size_ + b.size_ - (r.limb_[a.size_ + b.size_ - 1] == 0 ? 1 : 0);
+    r.negative_ = a.negative_ != b.negative_;
+    return r;
+  }
+
+ private:
+  mp_size_t size_ = 0;  // limbs in use, the top one not zero; 0 for the integer 0
+  bool negative_ = false;
+  mp_limb_t limb_[kLimbs];
+};
+inline const Z& to_z(const Z& z) { return z; }
+
+// check(Fixed()) and, if that overflows (or Limits::fixed_width is false), check(Z()): check is generic over the
+// type of its argument, a zero of the number type to compute in.
+template <class Check>
+void fast_then_exact(const Limits& lim, const Check& check) {
+  if (lim.fixed_width) try {
+      return check(Fixed());
+    } catch (const Overflow&) {
+    }
+  check(Z());
+}
+
+// A rational as num / den, den > 0, not necessarily in lowest terms.
+template <class N>
+struct Frac {
+  N num, den;
+};
+template <class N>
+Frac<N> fraction(const Q& q) {
+  if constexpr (std::is_same_v<N, Z>) return {q.get_num(), q.get_den()};
+  else return {Fixed::of(q.get_num()), Fixed::of(q.get_den())};
+}
+// A certificate rational's text, its grammar checked (the numerator and denominator as written).
+template <class N>
+Frac<N> fraction(std::string_view s) {
+  const auto digits = [](std::string_view d) {
+    if constexpr (std::is_same_v<N, Z>) return Z(std::string(d), 10);
+    else return Fixed::of_digits(d);
+  };
+  const bool negative = s[0] == '-';
+  const std::size_t slash = s.find('/'), begin = negative ? 1 : 0;
+  Frac<N> f{digits(s.substr(begin, slash - begin)), slash == std::string_view::npos ? N(1L) : digits(s.substr(slash + 1))};
+  if (negative) f.num = -f.num;
+  return f;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Generators (certificate-format.md §1)
 
 enum class Reading { friction, frictionless };  // of force_closure, of form_closure
-
-using Z = mpz_class;
 
 // A wrench in integers: (v[0], v[1], v[2]) / d with d > 0. A positive denominator changes neither the
 // sign of a power nor whether a determinant is zero, and a sum of such fractions is zero exactly when
 // the numerator over their product (or their common denominator) is: so the conditions of §3 are
 // checked on integers, with no gcd (mpq arithmetic reduces every intermediate result).
+template <class N>
 struct Int_wrench {
-  Z v[3];
-  Z d = 1;
+  N v[3], d;
 };
 
 // The rationals (a, b, c) as an Int_wrench over the product of their denominators.
-Int_wrench integer_form(const Q& a, const Q& b, const Q& c) {
-  const Z &da = a.get_den(), &db = b.get_den(), &dc = c.get_den();
-  return {{Z(a.get_num() * db * dc), Z(b.get_num() * da * dc), Z(c.get_num() * da * db)}, Z(da * db * dc)};
+template <class N>
+Int_wrench<N> integer_form(const Frac<N>& a, const Frac<N>& b, const Frac<N>& c) {
+  return {{N(a.num * b.den * c.den), N(b.num * a.den * c.den), N(c.num * a.den * b.den)}, N(a.den * b.den * c.den)};
+}
+template <class N, class T>
+Int_wrench<N> integer_form(const T (&x)[3]) {  // of three rationals (Q) or certificate rational texts
+  return integer_form(fraction<N>(x[0]), fraction<N>(x[1]), fraction<N>(x[2]));
 }
 
 Q value(const Z& num, const Z& den) {  // num / den as a rational in lowest terms (for messages)
@@ -1205,297 +1345,79 @@ Q value(const Z& num, const Z& den) {  // num / den as a rational in lowest term
   q.canonicalize();
   return q;
 }
+template <class N>
+std::string show(const Int_wrench<N>& w) {
+  const Z d = to_z(w.d);
+  return "(" + show(value(to_z(w.v[0]), d)) + ", " + show(value(to_z(w.v[1]), d)) + ", " + show(value(to_z(w.v[2]), d)) + ")";
+}
 
-struct Generator {
-  const char* edge;
-  Int_wrench w;
+// The edges of a contact under a reading (the table of §1): their number, names in `names`.
+int edge_names(const Contact& c, Reading reading, const char* (&names)[2]) {
+  if (c.wrench) return names[0] = "wrench", 1;
+  if (reading == Reading::frictionless || !c.frictional) return names[0] = "normal", 1;
+  names[0] = "left", names[1] = "right";
+  return 2;
+}
+
+// The generators of one contact under a reading, recomputed exactly from the scene text, in edge_names()' order.
+template <class N>
+struct Generators {
+  int count;
+  const char* edge[2];
+  Int_wrench<N> w[2];
 };
-
-// W(p, f) = (fx, fy, px*fy - py*fx): the wrench of force f acting at point p. With p = P / dp and
-// f = F / df (integers, dp, df > 0): W(p, f) = (dp*Fx, dp*Fy, Px*Fy - Py*Fx) / (dp*df).
-Int_wrench force_at(const Z (&P)[2], const Z& dp, const Z& Fx, const Z& Fy, const Z& df) {
-  return {{Z(dp * Fx), Z(dp * Fy), Z(P[0] * Fy - P[1] * Fx)}, Z(dp * df)};
-}
-
-// ---- The same integers in 128 bits, when they fit (short decimals: every scene a grasp planner writes).
-// Each operation is checked (__builtin_*_overflow); any overflow abandons the fixed-width attempt and the
-// GMP formulas above and below compute the generators instead. The formulas are the same, term for term,
-// so the integers are the same; only where they are computed differs.
-__extension__ typedef __int128 I128;
-__extension__ typedef unsigned __int128 U128;
-
-struct Fixed {  // a running 128-bit computation; ok == false once anything overflowed
-  bool ok = true;
-  I128 mul(I128 a, I128 b) {
-    I128 r = 0;
-    ok = ok && !__builtin_mul_overflow(a, b, &r);
-    return r;
-  }
-  I128 add(I128 a, I128 b) {
-    I128 r = 0;
-    ok = ok && !__builtin_add_overflow(a, b, &r);
-    return r;
-  }
-  I128 sub(I128 a, I128 b) {
-    I128 r = 0;
-    ok = ok && !__builtin_sub_overflow(a, b, &r);
-    return r;
-  }
-};
-
-// The value of a GMP integer that fits in a signed long (64 bits), or false.
-bool small_int(const Z& z, I128& out) {
-  if (!mpz_fits_slong_p(z.get_mpz_t())) return false;
-  out = mpz_get_si(z.get_mpz_t());
-  return true;
-}
-
-Z to_z(I128 x) {  // exact: two 64-bit halves of |x|
-  const bool negative = x < 0;
-  const U128 m = negative ? -static_cast<U128>(x) : static_cast<U128>(x);
-  Z z;
-  mpz_set_ui(z.get_mpz_t(), static_cast<unsigned long>(m >> 64));
-  mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), 64);
-  mpz_add_ui(z.get_mpz_t(), z.get_mpz_t(), static_cast<unsigned long>(m));
-  if (negative) mpz_neg(z.get_mpz_t(), z.get_mpz_t());
-  return z;
-}
-
-struct Fixed_wrench {
-  I128 v[3], d;
-};
-Int_wrench to_int_wrench(const Fixed_wrench& w) { return {{to_z(w.v[0]), to_z(w.v[1]), to_z(w.v[2])}, to_z(w.d)}; }
-
-struct Fixed_generator {
-  const char* edge;
-  Fixed_wrench w;
-};
-
-// generators() below in 128 bits, from numerators and denominators (den > 0, in 64 bits): the number of
-// generators written to out (1 or 2), or 0 if a step overflows.
-int fixed_generators(const I128 (&num)[5], const I128 (&den)[5], bool wrench, Reading reading,
-                     Fixed_generator (&out)[2]) {
-  Fixed f;
-  if (wrench) {  // integer_form
-    out[0] = {"wrench",
-              {{f.mul(f.mul(num[0], den[1]), den[2]), f.mul(f.mul(num[1], den[0]), den[2]),
-                f.mul(f.mul(num[2], den[0]), den[1])},
-               f.mul(f.mul(den[0], den[1]), den[2])}};
-    return f.ok ? 1 : 0;
-  }
-  const I128 P[2] = {f.mul(num[0], den[1]), f.mul(num[1], den[0])}, dp = f.mul(den[0], den[1]);
-  const I128 N[2] = {f.mul(num[2], den[3]), f.mul(num[3], den[2])}, dn = f.mul(den[2], den[3]);
-  auto force_at = [&](I128 Fx, I128 Fy, I128 df) {
-    return Fixed_wrench{{f.mul(dp, Fx), f.mul(dp, Fy), f.sub(f.mul(P[0], Fy), f.mul(P[1], Fx))}, f.mul(dp, df)};
-  };
-  if (reading == Reading::frictionless || num[4] == 0) {
-    out[0] = {"normal", force_at(N[0], N[1], dn)};
-    return f.ok ? 1 : 0;
-  }
-  const I128 a = num[4], b = den[4];
-  const I128 bN[2] = {f.mul(b, N[0]), f.mul(b, N[1])}, aN[2] = {f.mul(a, N[0]), f.mul(a, N[1])}, df = f.mul(dn, b);
-  out[0] = {"left", force_at(f.sub(bN[0], aN[1]), f.add(bN[1], aN[0]), df)};
-  out[1] = {"right", force_at(f.add(bN[0], aN[1]), f.sub(bN[1], aN[0]), df)};
-  return f.ok ? 2 : 0;
-}
-
-// The same for a contact whose numbers are Smalls.
-int fixed_generators(const Contact& c, Reading reading, Fixed_generator (&out)[2]) {
-  I128 num[5], den[5];
-  for (std::size_t k = 0; k < 5; ++k) num[k] = c.small[k].num, den[k] = c.small[k].den;
-  return fixed_generators(num, den, c.wrench, reading, out);
-}
-
-// The generators of one contact under a reading, recomputed exactly from the scene text.
-std::vector<Generator> generators(const Contact& c, Reading reading, const Limits& lim) {
-  Fixed_generator fixed[2];
+template <class N>
+Generators<N> generators(const Contact& c, Reading reading, const Limits& lim) {
+  Frac<N> in[5];  // point contact: x, y, nx, ny, mu; wrench: fx, fy, m
+  const std::size_t count = c.wrench ? 3 : 5;
   if (c.fixed) {
-    const int n = fixed_generators(c, reading, fixed);
-    std::vector<Generator> out;
-    for (int k = 0; k < n; ++k) out.push_back({fixed[k].edge, to_int_wrench(fixed[k].w)});
-    if (n > 0) return out;
+    for (std::size_t k = 0; k < count; ++k) in[k] = {N(static_cast<long>(c.small[k].num)), N(static_cast<long>(c.small[k].den))};
+  } else {
+    std::vector<Q> read;
+    if (c.value.empty())
+      for (const std::string& s : c.text) read.push_back(scene_number(s, lim, "contacts"));  // valid: read before
+    for (std::size_t k = 0; k < count; ++k) in[k] = fraction<N>(c.value.empty() ? read[k] : c.value[k]);
   }
-  std::vector<Q> read;
-  if (c.fixed)
-    for (std::size_t k = 0; k < (c.wrench ? 3u : 5u); ++k) {
-      read.emplace_back(mpz_class(static_cast<long>(c.small[k].num)), mpz_class(static_cast<long>(c.small[k].den)));
-      read.back().canonicalize();
-    }
-  else if (c.value.empty())
-    for (const std::string& s : c.text) read.push_back(scene_number(s, lim, "contacts"));  // valid: read before
-  const std::vector<Q>& v = read.empty() ? c.value : read;
-  I128 num[5] = {0, 0, 0, 0, 0}, den[5] = {1, 1, 1, 1, 1};
-  bool fits = true;
-  for (std::size_t k = 0; k < v.size(); ++k)
-    fits = fits && small_int(v[k].get_num(), num[k]) && small_int(v[k].get_den(), den[k]);
-  if (fits) {
-    const int n = fixed_generators(num, den, c.wrench, reading, fixed);
-    std::vector<Generator> out;
-    for (int k = 0; k < n; ++k) out.push_back({fixed[k].edge, to_int_wrench(fixed[k].w)});
-    if (n > 0) return out;
-  }
-  if (c.wrench) return {{"wrench", integer_form(v[0], v[1], v[2])}};
-  const Q &px = v[0], &py = v[1], &nx = v[2], &ny = v[3], &mu = v[4];
-  // p = P / dp, n = N / dn over the products of the coordinates' denominators.
-  const Z P[2] = {Z(px.get_num() * py.get_den()), Z(py.get_num() * px.get_den())}, dp = px.get_den() * py.get_den();
-  const Z N[2] = {Z(nx.get_num() * ny.get_den()), Z(ny.get_num() * nx.get_den())}, dn = nx.get_den() * ny.get_den();
-  if (reading == Reading::frictionless || mu == 0) return {{"normal", force_at(P, dp, N[0], N[1], dn)}};
+  Generators<N> g;
+  g.count = edge_names(c, reading, g.edge);
+  if (c.wrench) return g.w[0] = integer_form(in[0], in[1], in[2]), g;
+  // p = P / dp, n = Nn / dn over the products of the coordinates' denominators. W(p, f) = (fx, fy, px*fy - py*fx)
+  // for f = F / df: (dp*Fx, dp*Fy, Px*Fy - Py*Fx) / (dp*df).
+  const N P[2] = {N(in[0].num * in[1].den), N(in[1].num * in[0].den)}, dp(in[0].den * in[1].den);
+  const N Nn[2] = {N(in[2].num * in[3].den), N(in[3].num * in[2].den)}, dn(in[2].den * in[3].den);
+  const auto force_at = [&](const N& Fx, const N& Fy, const N& df) {
+    return Int_wrench<N>{{N(dp * Fx), N(dp * Fy), N(P[0] * Fy - P[1] * Fx)}, N(dp * df)};
+  };
+  if (g.count == 1) return g.w[0] = force_at(Nn[0], Nn[1], dn), g;
   // n + mu*rot90(n) = (nx - mu*ny, ny + mu*nx),  n - mu*rot90(n) = (nx + mu*ny, ny - mu*nx); with mu = a/b
-  // these are (b*N -+ a*rot90(N)) / (dn*b).
-  const Z &a = mu.get_num(), &b = mu.get_den();
-  const Z bN[2] = {Z(b * N[0]), Z(b * N[1])}, aN[2] = {Z(a * N[0]), Z(a * N[1])}, df = dn * b;
-  return {{"left", force_at(P, dp, Z(bN[0] - aN[1]), Z(bN[1] + aN[0]), df)},
-          {"right", force_at(P, dp, Z(bN[0] + aN[1]), Z(bN[1] - aN[0]), df)}};
+  // these are (b*Nn -+ a*rot90(Nn)) / (dn*b).
+  const N &a = in[4].num, &b = in[4].den;
+  const N bN[2] = {N(b * Nn[0]), N(b * Nn[1])}, aN[2] = {N(a * Nn[0]), N(a * Nn[1])}, df(dn * b);
+  g.w[0] = force_at(N(bN[0] - aN[1]), N(bN[1] + aN[0]), df);
+  g.w[1] = force_at(N(bN[0] + aN[1]), N(bN[1] - aN[0]), df);
+  return g;
 }
 
-// Power <T, w> = vx*fx + vy*fy + w*m (theory.md §1.4) of an integer twist against the numerator of w:
-// the power against w times w.d > 0.
-Z power(const Z (&t)[3], const Int_wrench& g) { return t[0] * g.v[0] + t[1] * g.v[1] + t[2] * g.v[2]; }
+// Power <T, w> = vx*fx + vy*fy + w*m (theory.md §1.4) of the numerators: the power of T/T.d against w/w.d times
+// T.d * w.d > 0.
+template <class N>
+N power(const Int_wrench<N>& t, const Int_wrench<N>& g) {
+  return N(t.v[0] * g.v[0] + t.v[1] * g.v[1] + t.v[2] * g.v[2]);
+}
 
 // det[a; b; c] of the numerators: the determinant of the wrenches times a.d * b.d * c.d > 0.
-Z det3(const Int_wrench& a, const Int_wrench& b, const Int_wrench& c) {
-  const Z(&x)[3] = a.v, (&y)[3] = b.v, (&z)[3] = c.v;
-  return x[0] * Z(y[1] * z[2] - y[2] * z[1]) - x[1] * Z(y[0] * z[2] - y[2] * z[0]) +
-         x[2] * Z(y[0] * z[1] - y[1] * z[0]);
+template <class N>
+N det3(const Int_wrench<N>& a, const Int_wrench<N>& b, const Int_wrench<N>& c) {
+  const N(&x)[3] = a.v, (&y)[3] = b.v, (&z)[3] = c.v;
+  return N(x[0] * N(y[1] * z[2] - y[2] * z[1]) - x[1] * N(y[0] * z[2] - y[2] * z[0]) + x[2] * N(y[0] * z[1] - y[1] * z[0]));
 }
 
 // x + y: over the common denominator when the denominators are equal, else over their product.
-Int_wrench sum(const Int_wrench& x, const Int_wrench& y) {
-  if (x.d == y.d) return {{Z(x.v[0] + y.v[0]), Z(x.v[1] + y.v[1]), Z(x.v[2] + y.v[2])}, x.d};
-  return {{Z(x.v[0] * y.d + y.v[0] * x.d), Z(x.v[1] * y.d + y.v[1] * x.d), Z(x.v[2] * y.d + y.v[2] * x.d)},
-          Z(x.d * y.d)};
+template <class N>
+Int_wrench<N> operator+(const Int_wrench<N>& x, const Int_wrench<N>& y) {
+  if (x.d == y.d) return {{N(x.v[0] + y.v[0]), N(x.v[1] + y.v[1]), N(x.v[2] + y.v[2])}, x.d};
+  return {{N(x.v[0] * y.d + y.v[0] * x.d), N(x.v[1] * y.d + y.v[1] * x.d), N(x.v[2] * y.d + y.v[2] * x.d)}, N(x.d * y.d)};
 }
-
-// ---- Fixed width for the conditions of §3.1 and §3.2 (closure certificates, no load): signed integers of
-// at most kWideLimbs 64-bit limbs on GMP's mpn layer, on the stack, so no allocation. A result that does
-// not fit clears `ok`; then, as for any condition that fails here, the certificate is checked again by the
-// mpz code (check_positive, check_negative), which decides it and writes every rejection's message. Whenever
-// `ok`, the arithmetic is exact, so an accepted certificate meets the very conditions checked there.
-static_assert(GMP_NUMB_BITS == 64 && sizeof(mp_limb_t) == 8, "64-bit limbs");
-constexpr mp_size_t kWideLimbs = 8;
-struct Wide {
-  mp_size_t size = 0;  // limbs in use, the top one not zero; 0 for the integer 0
-  bool negative = false;
-  mp_limb_t limb[kWideLimbs];
-};
-int sign(const Wide& x) { return x.size == 0 ? 0 : x.negative ? -1 : 1; }
-Wide negated(Wide x) {
-  x.negative = x.size != 0 && !x.negative;
-  return x;
-}
-Wide wide(I128 x) {
-  Wide r;
-  const U128 m = x < 0 ? -static_cast<U128>(x) : static_cast<U128>(x);
-  r.limb[0] = static_cast<mp_limb_t>(m);
-  r.limb[1] = static_cast<mp_limb_t>(m >> 64);
-  r.size = r.limb[1] != 0 ? 2 : r.limb[0] != 0 ? 1 : 0;
-  r.negative = x < 0;
-  return r;
-}
-Wide wide_unsigned(U128 m) {
-  Wide r;
-  r.limb[0] = static_cast<mp_limb_t>(m);
-  r.limb[1] = static_cast<mp_limb_t>(m >> 64);
-  r.size = r.limb[1] != 0 ? 2 : r.limb[0] != 0 ? 1 : 0;
-  return r;
-}
-
-struct Wide_arithmetic {  // a running computation; ok == false once a result did not fit
-  bool ok = true;
-  Wide mul(const Wide& a, const Wide& b) {
-    Wide r;
-    if (a.size == 0 || b.size == 0) return r;
-    if (a.size + b.size > kWideLimbs) return ok = false, r;
-    if (a.size >= b.size) mpn_mul(r.limb, a.limb, a.size, b.limb, b.size);
-    else mpn_mul(r.limb, b.limb, b.size, a.limb, a.size);
-    r.size = a.size + b.size;
-    if (r.limb[r.size - 1] == 0) --r.size;
-    r.negative = a.negative != b.negative;
-    return r;
-  }
-  Wide add(const Wide& a, const Wide& b) {
-    if (a.size == 0) return b;
-    if (b.size == 0) return a;
-    const bool a_larger = a.size != b.size ? a.size > b.size : mpn_cmp(a.limb, b.limb, a.size) >= 0;
-    const Wide& x = a_larger ? a : b;  // |x| >= |y|
-    const Wide& y = a_larger ? b : a;
-    Wide r;
-    r.size = x.size;
-    if (a.negative == b.negative) {
-      const mp_limb_t carry = mpn_add(r.limb, x.limb, x.size, y.limb, y.size);
-      if (carry != 0) {
-        if (r.size == kWideLimbs) return ok = false, Wide{};
-        r.limb[r.size++] = carry;
-      }
-    } else {
-      mpn_sub(r.limb, x.limb, x.size, y.limb, y.size);  // no borrow: |x| >= |y|
-      while (r.size > 0 && r.limb[r.size - 1] == 0) --r.size;
-    }
-    r.negative = r.size != 0 && x.negative;
-    return r;
-  }
-  Wide sub(const Wide& a, const Wide& b) { return add(a, negated(b)); }
-  // a[0]*b[0] + a[1]*b[1] + a[2]*b[2]
-  Wide dot(const Wide (&a)[3], const Wide (&b)[3]) { return add(add(mul(a[0], b[0]), mul(a[1], b[1])), mul(a[2], b[2])); }
-};
-
-// The integer of a run of decimal digits, or false if it does not fit.
-bool wide_digits(std::string_view d, Wide& out) {
-  out = Wide{};
-  for (std::size_t i = 0; i < d.size();) {
-    const std::size_t n = std::min<std::size_t>(19, d.size() - i);  // 10^19 < 2^64
-    mp_limb_t chunk = 0, scale = 1;
-    for (std::size_t k = 0; k < n; ++k, ++i) chunk = chunk * 10 + static_cast<mp_limb_t>(d[i] - '0'), scale *= 10;
-    const mp_limb_t carry = out.size != 0 ? mpn_mul_1(out.limb, out.limb, out.size, scale) : 0;
-    if (carry != 0) {
-      if (out.size == kWideLimbs) return false;
-      out.limb[out.size++] = carry;
-    }
-    if (chunk == 0) continue;
-    if (out.size == 0) {
-      out.limb[out.size++] = chunk;
-    } else if (mpn_add_1(out.limb, out.limb, out.size, chunk) != 0) {
-      if (out.size == kWideLimbs) return false;
-      out.limb[out.size++] = 1;
-    }
-  }
-  return true;
-}
-
-// A certificate rational's text (its grammar checked) as num/den with den > 0, or false if it does not fit.
-bool wide_rational(std::string_view s, Wide& num, Wide& den) {
-  const bool negative = !s.empty() && s[0] == '-';
-  if (negative) s.remove_prefix(1);
-  const std::size_t slash = s.find('/');
-  if (!wide_digits(s.substr(0, slash), num)) return false;
-  num.negative = negative && num.size != 0;
-  if (slash == std::string_view::npos) return den = wide(1), true;
-  return wide_digits(s.substr(slash + 1), den);
-}
-
-// A nonnegative Wide of at most two limbs as an unsigned 128-bit integer, or false.
-bool to_u128(const Wide& x, U128& out) {
-  if (x.negative || x.size > 2) return false;
-  out = x.size == 0 ? 0 : x.size == 1 ? x.limb[0] : (static_cast<U128>(x.limb[1]) << 64) | x.limb[0];
-  return true;
-}
-int trailing_zeros(U128 x) {  // x != 0
-  const auto low = static_cast<unsigned long long>(x);
-  return low != 0 ? __builtin_ctzll(low) : 64 + __builtin_ctzll(static_cast<unsigned long long>(x >> 64));
-}
-U128 gcd(U128 a, U128 b) {  // binary gcd
-  if (a == 0 || b == 0) return a | b;
-  const int shift = trailing_zeros(a | b);
-  a >>= trailing_zeros(a);
-  while (b != 0) {
-    b >>= trailing_zeros(b);
-    if (a > b) std::swap(a, b);
-    b -= a;
-  }
-  return a << shift;
-}
-// lcm(a, b) of positive integers, or false if it exceeds 128 bits.
-bool lcm(U128 a, U128 b, U128& out) { return !__builtin_mul_overflow(a / gcd(a, b), b, &out); }
 
 // ---------------------------------------------------------------------------------------------
 // Certificate
@@ -1934,78 +1856,77 @@ std::string name(std::size_t contact, std::string_view edge) {
   return "contacts[" + std::to_string(contact) + "] edge " + std::string(edge);
 }
 
-// The generators of the contacts a certificate refers to, each contact's computed once.
-using Generator_cache = std::map<std::size_t, std::vector<Generator>>;
-
-// Rule 1 of §3.1: the reference names an existing contact and an edge that contact has under the
-// reading. Returns that generator, recomputed from the scene.
-const Int_wrench& resolve(const Ref& ref, const std::vector<Contact>& contacts, Reading reading, const Limits& lim,
-                          Generator_cache& cache) {
+// Rule 1 of §3.1: the reference names an existing contact and an edge that contact has under the reading.
+// Returns the edge's index in generators().
+int check_reference(const Ref& ref, const std::vector<Contact>& contacts, Reading reading) {
   if (ref.contact >= contacts.size())
     throw Failure{ref.path() + ".contact: index " + clip(std::string(ref.index)) + " is out of range (the scene has " +
                   std::to_string(contacts.size()) + " contacts)"};
-  auto at = cache.find(ref.contact);
-  if (at == cache.end()) at = cache.emplace(ref.contact, generators(contacts[ref.contact], reading, lim)).first;
-  std::string edges;
-  for (const Generator& g : at->second) {
-    if (ref.edge == g.edge) return g.w;  // stays valid: the cache's vectors are not modified again
-    edges += (edges.empty() ? "" : " or ") + quote(g.edge);
-  }
+  const char* names[2];
+  const int n = edge_names(contacts[ref.contact], reading, names);
+  for (int k = 0; k < n; ++k)
+    if (ref.edge == names[k]) return k;
+  const std::string edges = quote(names[0]) + (n == 2 ? " or " + quote(names[1]) : "");
   throw Failure{ref.path() + ".edge: contacts[" + std::to_string(ref.contact) + "] has no edge " + quote(ref.edge) +
                 " under the " + (reading == Reading::friction ? "friction" : "frictionless") + " reading (it has " +
                 edges + ")"};
 }
 
-// §3.1, theory [FC-2]. With S the generators of `combination`: (3) and (4) give, for every g_j in S,
-// -g_j = sum_{k != j} (l_k / l_j) g_k in pos(S), so pos(S) is a linear subspace; (5) makes it
-// 3-dimensional, so W contains pos(S) = R^3.
-// §3.3, theory [EQ-1], when `load` is w_ext: (1)-(3) as above and (4') sum_k l_k g_k + w_ext = 0, so
-// -w_ext = sum_k l_k g_k is in W: the contact forces l_k (force of g_k) balance the load. There is no
-// (5), and the combination may be empty (then w_ext must be zero).
 // Rules (1)-(3) of §3.1 for the terms of a combination: each names a generator of the scene under the reading,
-// no generator appears twice, every weight is strictly positive. Returns the weighted generators
-// weight_k g_k as integer wrenches; `seen` gets each generator's path (for rule 5).
-using Seen = std::map<std::pair<std::size_t, std::string>, std::string>;
-std::vector<Int_wrench> weighted_terms(const std::vector<Term>& combination, const std::vector<Contact>& contacts,
-                                       Reading reading, const Limits& lim, Generator_cache& cache, Seen& seen) {
-  // (2) no generator appears twice in combination. Checked on the references before (1), so that
-  // (1) recomputes each generator at most once.
-  for (const Term& t : combination) {
-    const auto [it, fresh] = seen.emplace(std::make_pair(t.ref.contact, std::string(t.ref.edge)), t.ref.path());
-    if (!fresh)
-      throw Failure{t.ref.path() + ": " + name(t.ref.contact, t.ref.edge) + " appears twice (also at " + it->second +
-                    ")"};
+// no generator appears twice, every weight is strictly positive. Holds each term's generator g_k, recomputed from
+// the scene, and weight_k g_k.
+template <class N>
+struct Combination {
+  std::vector<std::size_t> order;  // the terms by generator (contact, edge), then by place
+  std::vector<Int_wrench<N>> generator, weighted;
+  Combination(const std::vector<Term>& terms, const std::vector<Contact>& contacts, Reading reading, const Limits& lim)
+      : order(terms.size()), generator(terms.size()), weighted(terms.size()), terms_(terms) {
+    const std::size_t n = terms.size();
+    for (std::size_t k = 0; k < n; ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return std::make_pair(key(a), a) < std::make_pair(key(b), b); });
+    // (2) no generator appears twice in combination: the first term to repeat one is named. Checked on the
+    // references before (1), so that (1) recomputes each generator once.
+    std::size_t twice = n, first = n;
+    for (std::size_t i = 0; i + 1 < n; ++i)
+      if (key(order[i]) == key(order[i + 1]) && order[i + 1] < twice) twice = order[i + 1], first = order[i];
+    if (twice < n)
+      throw Failure{terms[twice].ref.path() + ": " + name(terms[twice].ref.contact, terms[twice].ref.edge) +
+                    " appears twice (also at " + terms[first].ref.path() + ")"};
+    // (1) every reference names a generator of the scene under the reading
+    std::vector<int> edge(n);
+    for (std::size_t k = 0; k < n; ++k) edge[k] = check_reference(terms[k].ref, contacts, reading);
+    // (3) every weight is strictly positive: by the grammar of §2, its text starts with neither '-' nor '0'
+    for (const Term& t : terms)
+      if (t.weight[0] == '-' || t.weight[0] == '0')
+        throw Failure{t.ref.path() + ".weight: " + quote(t.weight) + " is not strictly positive"};
+    // g_k and weight_k g_k = (a g.v) / (b g.d) for weight_k = a / b, each contact's generators computed once
+    Generators<N> g{};
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = order[i], contact = terms[k].ref.contact;
+      if (i == 0 || contact != terms[order[i - 1]].ref.contact) g = generators<N>(contacts[contact], reading, lim);
+      const Int_wrench<N>& gk = generator[k] = g.w[edge[k]];
+      const Frac<N> w = fraction<N>(terms[k].weight);
+      weighted[k] = {{N(w.num * gk.v[0]), N(w.num * gk.v[1]), N(w.num * gk.v[2])}, N(w.den * gk.d)};
+    }
   }
-  // (1) every reference names a generator of the scene under the reading
-  std::vector<Int_wrench> terms;
-  for (const Term& t : combination) {
-    const Int_wrench& g = resolve(t.ref, contacts, reading, lim, cache);
-    // weight = a/b, b > 0 (a canonical mpq): weight * g = (a * g.v) / (b * g.d)
-    const Q weight = rational_value(t.weight);
-    const Z& a = weight.get_num();
-    terms.push_back({{Z(a * g.v[0]), Z(a * g.v[1]), Z(a * g.v[2])}, Z(weight.get_den() * g.d)});
+  // The term whose generator the reference names, or none (terms.size()).
+  std::size_t find(const Ref& ref) const {
+    const auto at = std::lower_bound(order.begin(), order.end(), std::make_pair(ref.contact, ref.edge),
+                                     [&](std::size_t k, const std::pair<std::size_t, std::string_view>& x) { return key(k) < x; });
+    return at != order.end() && key(*at) == std::make_pair(ref.contact, ref.edge) ? *at : terms_.size();
   }
-  // (3) every weight is strictly positive
-  for (const Term& t : combination)
-    if (sgn(rational_value(t.weight)) <= 0)
-      throw Failure{t.ref.path() + ".weight: " + quote(t.weight) + " is not strictly positive"};
-  return terms;
-}
 
-// The sum of integer wrenches (not empty), added as a balanced tree: with k weights of n digits whose
-// denominators differ, that is about log k rounds of work on k n digits, where a running sum would take k rounds.
-Int_wrench tree_sum(std::vector<Int_wrench> terms) {
-  while (terms.size() > 1) {
-    std::vector<Int_wrench> half;
-    for (std::size_t k = 0; k + 1 < terms.size(); k += 2) half.push_back(sum(terms[k], terms[k + 1]));
-    if (terms.size() % 2 == 1) half.push_back(std::move(terms.back()));
-    terms.swap(half);
-  }
-  return terms.front();
-}
+ private:
+  std::pair<std::size_t, std::string_view> key(std::size_t k) const { return {terms_[k].ref.contact, terms_[k].ref.edge}; }
+  const std::vector<Term>& terms_;
+};
 
-std::string show(const Int_wrench& w) {
-  return "(" + show(value(w.v[0], w.d)) + ", " + show(value(w.v[1], w.d)) + ", " + show(value(w.v[2], w.d)) + ")";
+// The sum of integer wrenches (not empty) is (0, 0, 0); else the failure `what` + the sum + ", not (0, 0, 0)".
+template <class N>
+void zero_sum(std::vector<Int_wrench<N>> terms, const std::string& what) {
+  const Int_wrench<N> total = tree_sum(std::move(terms));
+  if (sgn(total.v[0]) != 0 || sgn(total.v[1]) != 0 || sgn(total.v[2]) != 0)
+    throw Failure{what + show(total) + ", not (0, 0, 0)"};
 }
 
 // §3.1, theory [FC-2]. With S the generators of `combination`: (3) and (4) give, for every g_j in S,
@@ -2014,65 +1935,59 @@ std::string show(const Int_wrench& w) {
 // §3.3, theory [EQ-1], when `load` is w_ext: (1)-(3) as above and (4') sum_k l_k g_k + w_ext = 0, so
 // -w_ext = sum_k l_k g_k is in W: the contact forces l_k (force of g_k) balance the load. There is no
 // (5), and the combination may be empty (then w_ext must be zero).
+template <class N>
 void check_positive(const Certificate& c, const std::vector<Contact>& contacts, const Limits& lim,
-                    const Wrench* load) {
-  Generator_cache cache;
-  Seen seen;
-  std::vector<Int_wrench> terms = weighted_terms(c.combination, contacts, c.reading, lim, cache, seen);
-  std::vector<Int_wrench> independent;
-  for (const Ref& ref : c.independent) independent.push_back(resolve(ref, contacts, c.reading, lim, cache));
+                    const Int_wrench<N>* load) {
+  Combination<N> terms(c.combination, contacts, c.reading, lim);
+  for (const Ref& ref : c.independent) check_reference(ref, contacts, c.reading);
   // (4) sum_k weight_k g_k (+ w_ext) = (0, 0, 0) exactly: the numerator of the sum over the product of
   // the (positive) denominators is zero.
-  if (load) terms.push_back(integer_form(load->fx, load->fy, load->m));
-  const Int_wrench total = tree_sum(std::move(terms));  // not empty: combination is not, or there is a load
-  if (total.v[0] != 0 || total.v[1] != 0 || total.v[2] != 0)
-    throw Failure{std::string("combination: the weighted sum of the generators ") + (load ? "plus the load " : "") +
-                  "is " + show(total) + ", not (0, 0, 0)"};
+  if (load) terms.weighted.push_back(*load);  // not empty: combination is not, or there is a load
+  zero_sum(std::move(terms.weighted), std::string("combination: the weighted sum of the generators ") + (load ? "plus the load " : "") + "is ");
   if (load) return;
   // (5) the three independent generators are in combination, and their determinant is not zero
-  for (const Ref& ref : c.independent)
-    if (!seen.count({ref.contact, std::string(ref.edge)}))
-      throw Failure{ref.path() + ": " + name(ref.contact, ref.edge) + " is not in combination"};
-  if (det3(independent[0], independent[1], independent[2]) == 0)
+  std::size_t row[3];
+  for (std::size_t r = 0; r < 3; ++r)
+    if ((row[r] = terms.find(c.independent[r])) == c.combination.size())
+      throw Failure{c.independent[r].path() + ": " + name(c.independent[r].contact, c.independent[r].edge) + " is not in combination"};
+  if (sgn(det3(terms.generator[row[0]], terms.generator[row[1]], terms.generator[row[2]])) == 0)
     throw Failure{"independent: the three generators are linearly dependent (determinant 0)"};
 }
 
 // Rule (2) of §3.2: <t, g> >= 0 for every generator g of the scene under the reading (the motion t is allowed by
-// every contact). The power is linear in t, so its sign is that of <T, g> for T = L t, L > 0 the lcm of t's
-// denominators: an integer twist, which spares the big gcds of adding fractions when t has long denominators.
-// With g = v / d (d > 0), the sign is that of <T, v>, all in integers: <t, g> = <T, v> / (L d).
-void allowed_by_every_contact(const Q (&t)[3], const std::vector<Contact>& contacts, Reading reading,
+// every contact), for t = T / T.d: the sign is that of the numerators' power.
+template <class N>
+void allowed_by_every_contact(const Int_wrench<N>& t, const std::vector<Contact>& contacts, Reading reading,
                               const Limits& lim, const std::string& prefix) {
-  mpz_class L = 1;
-  for (const Q& x : t) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), x.get_den_mpz_t());
-  const Z T[3] = {Z(t[0].get_num() * (L / t[0].get_den())), Z(t[1].get_num() * (L / t[1].get_den())),
-                  Z(t[2].get_num() * (L / t[2].get_den()))};
-  for (std::size_t i = 0; i < contacts.size(); ++i)
-    for (const Generator& g : generators(contacts[i], reading, lim)) {
-      const Z p = power(T, g.w);
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Generators<N> g = generators<N>(contacts[i], reading, lim);
+    for (int k = 0; k < g.count; ++k) {
+      const N p = power(t, g.w[k]);
       if (sgn(p) < 0)
-        throw Failure{prefix + "twist: power " + show(value(p, Z(L * g.w.d))) + " against " + name(i, g.edge)};
+        throw Failure{prefix + "twist: power " + show(value(to_z(p), to_z(N(t.d * g.w[k].d)))) + " against " + name(i, g.edge[k])};
     }
+  }
 }
 
-// Rule (3) of §3.2: the reading, if present, is P(t) = (-vy, vx, w) on the two-sided plane.
-void check_reading(const Certificate& c, const Q (&t)[3]) {
+// Rule (3) of §3.2: the reading, if present, is P(t) = (-vy, vx, w) on the two-sided plane, t = T / T.d.
+template <class N>
+void check_reading(const Certificate& c, const Int_wrench<N>& T) {
   if (!c.keys.count("reading")) return;
-  const Q where[2] = {rational_value(c.where[0]), rational_value(c.where[1])};
-  const Q &vx = t[0], &vy = t[1], &w = t[2];
-  const std::string label = w > 0 ? "+" : w < 0 ? "-" : "infinity";
+  const auto t = [&c](int k) { return rational_value(c.twist[k]); };  // (the values, for messages)
+  const auto where = [&c] { return show(rational_value(c.where[0]), rational_value(c.where[1])); };
+  const N &vx = T.v[0], &vy = T.v[1], &w = T.v[2];
+  const std::string label = sgn(w) > 0 ? "+" : sgn(w) < 0 ? "-" : "infinity";
   if (c.label != label)
     throw Failure{"reading.label: " + quote(c.label) + " does not match the twist, whose label is " + quote(label)};
-  if (w != 0) {
-    const Q cx = -vy / w, cy = vx / w;  // the rotation centre
-    if (where[0] != cx || where[1] != cy)
-      throw Failure{"reading.point: " + show(where[0], where[1]) + " is not the rotation centre " + show(cx, cy) +
+  const Frac<N> p[2] = {fraction<N>(c.where[0]), fraction<N>(c.where[1])};
+  if (sgn(w) != 0) {  // the rotation centre (-vy/w, vx/w)
+    if (sgn(N(p[0].num * w + vy * p[0].den)) != 0 || sgn(N(p[1].num * w - vx * p[1].den)) != 0)
+      throw Failure{"reading.point: " + where() + " is not the rotation centre " + show(Q(-t(1) / t(2)), Q(t(0) / t(2))) +
                     " of the twist"};
   } else {  // d = (-vy, vx) != 0 as t != 0; e is a positive multiple of d iff d x e = 0 and d . e > 0
-    const Q dx = -vy, dy = vx, &ex = where[0], &ey = where[1];
-    if (dx * ey - dy * ex != 0 || dx * ex + dy * ey <= 0)
-      throw Failure{"reading.direction: " + show(ex, ey) +
-                    " is not a positive multiple of (-vy, vx) = " + show(dx, dy)};
+    const N e[2] = {N(p[0].num * p[1].den), N(p[1].num * p[0].den)};  // (a positive multiple of the point)
+    if (sgn(N(-vy * e[1] - vx * e[0])) != 0 || sgn(N(vx * e[1] - vy * e[0])) <= 0)
+      throw Failure{"reading.direction: " + where() + " is not a positive multiple of (-vy, vx) = " + show(Q(-t(1)), t(0))};
   }
 }
 
@@ -2080,123 +1995,19 @@ void check_reading(const Certificate& c, const Q (&t)[3]) {
 // the wrench -t is not in W, and W != R^3.
 // §3.3, theory [EQ-1], when `load` is w_ext: also <t, w_ext> > 0, so <t, -w_ext> < 0 <= <t, x> for every
 // x in W: -w_ext is not in W, and no admissible contact forces balance the load.
+template <class N>
 void check_negative(const Certificate& c, const std::vector<Contact>& contacts, const Limits& lim,
-                    const Wrench* load) {
-  const Q t[3] = {rational_value(c.twist[0]), rational_value(c.twist[1]), rational_value(c.twist[2])};
+                    const Int_wrench<N>* load) {
+  const Int_wrench<N> t = integer_form<N>(c.twist);
   // (1) the twist is not zero
-  if (t[0] == 0 && t[1] == 0 && t[2] == 0) throw Failure{"twist: the zero twist proves nothing"};
+  if (sgn(t.v[0]) == 0 && sgn(t.v[1]) == 0 && sgn(t.v[2]) == 0) throw Failure{"twist: the zero twist proves nothing"};
   // (2) <t, g> >= 0 for every generator g of the scene under the reading
   allowed_by_every_contact(t, contacts, c.reading, lim, "");
   // (2') equilibrium: <t, w_ext> > 0
-  if (load) {
-    const Q p = t[0] * load->fx + t[1] * load->fy + t[2] * load->m;
-    if (sgn(p) <= 0) throw Failure{"twist: power against the load is " + show(p) + ", not > 0"};
-  }
+  if (load && sgn(power(t, *load)) <= 0)
+    throw Failure{"twist: power against the load is " + show(value(to_z(power(t, *load)), to_z(N(t.d * load->d)))) + ", not > 0"};
   // (3) the reading, if present, is P(t) = (-vy, vx, w) on the two-sided plane
   check_reading(c, t);
-}
-
-// The generator a reference names, in 128 bits: false if the index is out of range, the contact's numbers
-// are not Smalls, its generators overflow, or it has no such edge (check_positive then decides).
-bool fixed_generator(const Ref& ref, const std::vector<Contact>& contacts, Reading reading, Fixed_wrench& out) {
-  if (ref.contact >= contacts.size() || !contacts[ref.contact].fixed) return false;
-  Fixed_generator g[2];
-  const int n = fixed_generators(contacts[ref.contact], reading, g);
-  for (int k = 0; k < n; ++k)
-    if (ref.edge == g[k].edge) return out = g[k].w, true;
-  return false;
-}
-
-// check_positive() without a load, in fixed width: true if the certificate meets (1)-(5) of §3.1; false if
-// it does not, or if it cannot be told here (more than kMost terms, a number too large).
-bool positive_fixed(const Certificate& c, const std::vector<Contact>& contacts) {
-  constexpr std::size_t kMost = 8;
-  const std::size_t n = c.combination.size();
-  if (n == 0 || n > kMost || c.independent.size() != 3) return false;
-  Fixed_wrench g[kMost];
-  Wide a[kMost];  // weight_k = a_k / b_k
-  U128 e[kMost];  // weight_k g_k = a_k v_k / e_k, e_k = b_k d_k
-  for (std::size_t k = 0; k < n; ++k) {
-    const Ref& ref = c.combination[k].ref;
-    if (!fixed_generator(ref, contacts, c.reading, g[k])) return false;  // (1)
-    for (std::size_t j = 0; j < k; ++j)                                    // (2)
-      if (ref.contact == c.combination[j].ref.contact && ref.edge == c.combination[j].ref.edge) return false;
-    Wide b;
-    U128 b128 = 0;
-    if (!wide_rational(c.combination[k].weight, a[k], b) || sign(a[k]) <= 0) return false;  // (3)
-    if (!to_u128(b, b128) || __builtin_mul_overflow(b128, static_cast<U128>(g[k].d), &e[k])) return false;
-  }
-  // (4) sum_k a_k v_k / e_k = 0: over D = lcm(e_k), the numerator sum_k a_k (D / e_k) v_k is zero.
-  U128 D = e[0];
-  for (std::size_t k = 1; k < n; ++k)
-    if (e[k] != D && !lcm(D, e[k], D)) return false;
-  Wide_arithmetic w;
-  Wide total[3];
-  for (std::size_t k = 0; k < n; ++k) {
-    const Wide m = D == e[k] ? a[k] : w.mul(a[k], wide_unsigned(D / e[k]));
-    for (int i = 0; i < 3; ++i) total[i] = w.add(total[i], w.mul(m, wide(g[k].v[i])));
-  }
-  if (!w.ok || sign(total[0]) != 0 || sign(total[1]) != 0 || sign(total[2]) != 0) return false;
-  // (5) the independent generators are in combination and their determinant is not zero
-  Wide row[3][3];
-  for (std::size_t r = 0; r < 3; ++r) {
-    const Ref& ref = c.independent[r];
-    std::size_t k = 0;
-    while (k < n && !(c.combination[k].ref.contact == ref.contact && c.combination[k].ref.edge == ref.edge)) ++k;
-    if (k == n) return false;
-    for (int i = 0; i < 3; ++i) row[r][i] = wide(g[k].v[i]);
-  }
-  const Wide minor[3] = {w.sub(w.mul(row[1][1], row[2][2]), w.mul(row[1][2], row[2][1])),
-                         w.sub(w.mul(row[1][2], row[2][0]), w.mul(row[1][0], row[2][2])),
-                         w.sub(w.mul(row[1][0], row[2][1]), w.mul(row[1][1], row[2][0]))};
-  const Wide det = w.dot(row[0], minor);
-  return w.ok && sign(det) != 0;
-}
-
-// check_negative() without a load, in fixed width: true if the certificate meets (1)-(3) of §3.2; false if
-// it does not, or if it cannot be told here (a contact's numbers not Smalls, a number too large).
-bool negative_fixed(const Certificate& c, const std::vector<Contact>& contacts) {
-  Wide tn[3], td[3];  // t = tn / td
-  U128 d[3];
-  for (int k = 0; k < 3; ++k)
-    if (!wide_rational(c.twist[k], tn[k], td[k]) || !to_u128(td[k], d[k])) return false;
-  if (sign(tn[0]) == 0 && sign(tn[1]) == 0 && sign(tn[2]) == 0) return false;  // (1)
-  // (2) <T, v> >= 0 for the integer twist T = L t (L = lcm of t's denominators) and every generator v / d
-  U128 L = d[0];
-  if (!lcm(L, d[1], L) || !lcm(L, d[2], L)) return false;
-  Wide_arithmetic w;
-  const Wide T[3] = {w.mul(tn[0], wide_unsigned(L / d[0])), w.mul(tn[1], wide_unsigned(L / d[1])),
-                     w.mul(tn[2], wide_unsigned(L / d[2]))};
-  for (const Contact& contact : contacts) {
-    if (!contact.fixed) return false;
-    Fixed_generator g[2];
-    const int n = fixed_generators(contact, c.reading, g);
-    if (n == 0) return false;
-    for (int k = 0; k < n; ++k) {
-      const Wide v[3] = {wide(g[k].w.v[0]), wide(g[k].w.v[1]), wide(g[k].w.v[2])};
-      if (sign(w.dot(T, v)) < 0) return false;
-    }
-  }
-  if (!w.ok) return false;
-  // (3) the reading, if present, is P(t) = (-vy, vx, w)
-  if (!c.keys.count("reading")) return true;
-  const int sw = sign(tn[2]);
-  if (c.label != (sw > 0 ? "+" : sw < 0 ? "-" : "infinity")) return false;
-  Wide pn[2], pd[2];  // the point or direction p = pn / pd
-  if (!wide_rational(c.where[0], pn[0], pd[0]) || !wide_rational(c.where[1], pn[1], pd[1])) return false;
-  if (sw != 0) {
-    // p0 = -vy/w = -(tn1 td2)/(td1 tn2)  <=>  p0 td1 tn2 = -tn1 td2 pd0;  p1 = vx/w  <=>  p1 td0 tn2 = tn0 td2 pd1
-    const Wide x0 = w.sub(w.mul(w.mul(pn[0], td[1]), tn[2]), negated(w.mul(w.mul(tn[1], td[2]), pd[0])));
-    const Wide x1 = w.sub(w.mul(w.mul(pn[1], td[0]), tn[2]), w.mul(w.mul(tn[0], td[2]), pd[1]));
-    return w.ok && sign(x0) == 0 && sign(x1) == 0;
-  }
-  // p is a positive multiple of (-vy, vx): with both scaled by positive numbers, D = (-tn1 td0, tn0 td1) and
-  // E = (pn0 pd1, pn1 pd0): D x E = 0 and D . E > 0.
-  const Wide D[2] = {negated(w.mul(tn[1], td[0])), w.mul(tn[0], td[1])};
-  const Wide E[2] = {w.mul(pn[0], pd[1]), w.mul(pn[1], pd[0])};
-  const Wide cross = w.sub(w.mul(D[0], E[1]), w.mul(D[1], E[0]));
-  const Wide dot = w.add(w.mul(D[0], E[0]), w.mul(D[1], E[1]));
-  return w.ok && sign(cross) == 0 && sign(dot) > 0;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -2502,7 +2313,7 @@ class Support_blocks {
       const Q &x = pt.back().x, &y = pt.back().y;
       a.push_back({Z(x.get_den() * y.get_den()), Z(x.get_num() * y.get_den()), Z(y.get_num() * x.get_den())});
     }
-    const Int_wrench bw = integer_form(s_.rest_weight, s_.rest_moment[0], s_.rest_moment[1]);
+    const Int_wrench<Z> bw = integer_form<Z>({s_.rest_weight, s_.rest_moment[0], s_.rest_moment[1]});
     const Z(&b)[3] = bw.v;
     auto cross = [](const std::array<Z, 3>& u, const std::array<Z, 3>& v) {
       return std::array<Z, 3>{Z(u[1] * v[2] - u[2] * v[1]), Z(u[2] * v[0] - u[0] * v[2]), Z(u[0] * v[1] - u[1] * v[0])};
@@ -2759,7 +2570,7 @@ class Hold_check {
     }
     if (!c_.holds) {
       fail(f, twist_, m_.speed_bounds, "", known ? nullptr : m_.dual, blocks_);
-      return check_reading(c_, twist_);
+      return fast_then_exact(lim_, [&](auto zero) { check_reading(c_, integer_form<decltype(zero)>(c_.twist)); });
     }
     if (known) return hold(f, c_.combination, m_.support_forces, "", blocks_);
     // Holds for every f in F: a hold witness at every vertex of F (W is a convex cone and LS is linear in f).
@@ -2790,25 +2601,22 @@ class Hold_check {
   // Contact weights and support forces (closed discs) that cancel the load exactly.
   void hold(const std::vector<Q>& f, const std::vector<Term>& combination, const std::vector<Pair>& g,
             const std::string& prefix, const std::vector<Block>* blocks) const {
-    Generator_cache cache;
-    Seen seen;
-    std::vector<Int_wrench> terms = weighted_terms(combination, scene_.contacts, Reading::friction, lim_, cache, seen);
+    std::vector<Int_wrench<Z>> terms = Combination<Z>(combination, scene_.contacts, Reading::friction, lim_).weighted;
     if (scene_.support.has_value()) {
       const std::array<Q, 3> sum = b_.support_sum(f, g, prefix + "support_forces", false, blocks);
-      terms.push_back(integer_form(sum[0], sum[1], sum[2]));
+      terms.push_back(integer_form<Z>({sum[0], sum[1], sum[2]}));
     }
-    terms.push_back(integer_form(scene_.load->fx, scene_.load->fy, scene_.load->m));
-    const Int_wrench total = tree_sum(std::move(terms));
-    if (total.v[0] != 0 || total.v[1] != 0 || total.v[2] != 0)
-      throw Failure{prefix + "combination: the contact forces" +
-                    std::string(scene_.support.has_value() ? ", the support forces" : "") + " and the load sum to " +
-                    show(total) + ", not (0, 0, 0)"};
+    terms.push_back(integer_form<Z>({scene_.load->fx, scene_.load->fy, scene_.load->m}));
+    zero_sum(std::move(terms), prefix + "combination: the contact forces" +
+                                   (scene_.support.has_value() ? ", the support forces" : "") + " and the load sum to ");
   }
 
   // A motion every contact allows that the load drives harder than the support's friction can resist.
   void fail(const std::vector<Q>& f, const Q (&t)[3], const std::vector<Q>& u, const std::string& prefix,
             const Q* dual, const std::vector<Block>* blocks) const {
-    allowed_by_every_contact(t, scene_.contacts, Reading::friction, lim_, prefix);
+    fast_then_exact(lim_, [&](auto zero) {
+      allowed_by_every_contact(integer_form<decltype(zero)>(t), scene_.contacts, Reading::friction, lim_, prefix);
+    });
     const Q bound = scene_.support.has_value() ? b_.friction_bound(f, t, u, prefix, dual, blocks) : Q(0);
     const Q power = t[0] * scene_.load->fx + t[1] * scene_.load->fy + t[2] * scene_.load->m;
     if (!(power > bound))
@@ -2845,14 +2653,13 @@ Result check_certificate(const Scene& scene, std::string_view certificate_json, 
       return {Outcome::accepted, "accepted"};
     }
     if (c.equilibrium && !scene.has_load) throw Failure{"property: \"equilibrium\" needs a scene with a load"};
-    const Wrench* load = c.equilibrium ? &*scene.load : nullptr;
-    // Fixed width first (closure certificates); the mpz checks decide whatever it does not accept.
-    const bool fast = limits.fixed_width && !load;
-    if (c.holds) {
-      if (!(fast && positive_fixed(c, scene.contacts))) check_positive(c, scene.contacts, limits, load);
-    } else {
-      if (!(fast && negative_fixed(c, scene.contacts))) check_negative(c, scene.contacts, limits, load);
-    }
+    fast_then_exact(limits, [&](auto zero) {
+      using N = decltype(zero);
+      Int_wrench<N> w_ext;
+      if (c.equilibrium) w_ext = integer_form<N>({scene.load->fx, scene.load->fy, scene.load->m});
+      if (c.holds) check_positive(c, scene.contacts, limits, c.equilibrium ? &w_ext : nullptr);
+      else check_negative(c, scene.contacts, limits, c.equilibrium ? &w_ext : nullptr);
+    });
     return {Outcome::accepted, "accepted"};
   } catch (const Failure& f) {
     return {Outcome::rejected, f.message};

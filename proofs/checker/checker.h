@@ -59,8 +59,8 @@ struct Limits {
   // §6): the checker enumerates the vertices of F itself, over n + C(n,2) + C(n,3) candidate bases for
   // n points without a given force, and rejects a larger certificate as too large to check.
   unsigned long long max_vertex_bases = 2000000;
-  // Closure certificates are first checked in fixed-width integers (64-bit limbs on the stack) and, when
-  // that does not accept them, by GMP integers, which also name what is wrong. false: GMP only (the
+  // The integer checks of §1 and §3 are written once over a number type and run on fixed-width integers (eight
+  // 64-bit limbs on the stack) and, only if a result overflows them, again on GMP integers. false: GMP only (the
   // tests compare the two).
   bool fixed_width = true;
 };
