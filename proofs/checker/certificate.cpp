@@ -25,10 +25,7 @@ Q read_rational(Reader& r) { return rational_value(read_rational_text(r)); }
 Term read_term(Reader& r, bool weighted, const char* list, std::size_t item) {
   Term t;
   t.ref.list = list, t.ref.item = item;
-  if (r.peek() != Kind::object)
-    r.fail(weighted ? "expected an object {\"contact\", \"edge\", \"weight\"}"
-                    : "expected an object {\"contact\", \"edge\"}");
-  r.begin_object();
+  begin_object(r, weighted ? "expected an object {\"contact\", \"edge\", \"weight\"}" : "expected an object {\"contact\", \"edge\"}");
   enum : unsigned { kContact = 1, kEdge = 2, kWeight = 4 };
   unsigned keys = 0;  // the keys present
   std::string_view key;
@@ -62,24 +59,15 @@ Term read_term(Reader& r, bool weighted, const char* list, std::size_t item) {
   return t;
 }
 
-// An array of rationals, of any length.
-std::vector<Q> read_rationals(Reader& r) {
-  if (r.peek() != Kind::array) r.fail("expected an array of rationals");
-  r.begin_array();
-  std::vector<Q> out;
-  out.reserve(16);  // (a reallocation copies the rationals: room for 16 at once, then doubling)
-  while (r.next_item()) out.push_back(read_rational(r));
-  return out;
-}
-// An array of [x, y] pairs of rationals.
-std::vector<Pair> read_pairs(Reader& r) {
-  if (r.peek() != Kind::array) r.fail("expected an array of [gx, gy] pairs of rationals");
-  r.begin_array();
-  std::vector<Pair> out;
+// An array of rationals, or of [x, y] pairs of rationals, of any length.
+template <class T>
+std::vector<T> read_list(Reader& r) {
+  begin_array(r, std::is_same_v<T, Q> ? "expected an array of rationals" : "expected an array of [gx, gy] pairs of rationals");
+  std::vector<T> out;
   out.reserve(16);  // (a reallocation copies the rationals: room for 16 at once, then doubling)
   while (r.next_item()) {
-    out.emplace_back();
-    read_fixed(r, 2, "an array of two rationals [gx, gy]", [&](std::size_t k) { out.back()[k] = read_rational(r); });
+    if constexpr (std::is_same_v<T, Q>) out.push_back(read_rational(r));
+    else read_fixed(r, 2, "an array of two rationals [gx, gy]", [&, &p = out.emplace_back()](std::size_t k) { p[k] = read_rational(r); });
   }
   return out;
 }
@@ -94,19 +82,17 @@ Witness read_witness(Reader& r, bool slide) {
   w.path = r.path();
   const char* const what = slide ? "expected an object {\"distribution\", \"twist\", \"speed_bounds\"}"
                                  : "expected an object {\"distribution\", \"support_forces\"}";
-  if (r.peek() != Kind::object) r.fail(what);
-  r.begin_object();
+  begin_object(r, what);
   std::set<std::string> keys;
   std::string_view key;
   while (r.next_key(key)) {
     keys.insert(std::string(key));
     if (key == "distribution") {
-      w.distribution = read_rationals(r);
+      w.distribution = read_list<Q>(r);
     } else if (key == "support_forces" && !slide) {
-      w.forces = read_pairs(r);
+      w.forces = read_list<Pair>(r);
     } else if (key == "combination" && !slide) {
-      if (r.peek() != Kind::array) r.fail("expected an array of {\"contact\", \"edge\", \"weight\"}");
-      r.begin_array();
+      begin_array(r, "expected an array of {\"contact\", \"edge\", \"weight\"}");
       while (r.next_item()) {
         w.combination.push_back(read_term(r, true, "combination", w.combination.size()));
         w.combination.back().ref.owner = w.path + ".";
@@ -115,10 +101,9 @@ Witness read_witness(Reader& r, bool slide) {
     } else if (key == "twist" && slide) {
       read_fixed(r, 3, "an array of three rationals [vx, vy, w]", [&](std::size_t k) { w.twist[k] = read_rational(r); });
     } else if (key == "speed_bounds" && slide) {
-      w.speeds = read_rationals(r);
+      w.speeds = read_list<Q>(r);
     } else if (key == "regions") {  // format 2 only (§6.5, §7.5: checked with the scene)
-      if (r.peek() != Kind::array) r.fail("expected an array of region blocks (one per support region)");
-      r.begin_array();
+      begin_array(r, "expected an array of region blocks (one per support region)");
       while (r.next_item()) w.regions.push_back(read_block(r));
       w.has_regions = true;
     } else {
@@ -136,18 +121,15 @@ Witness read_witness(Reader& r, bool slide) {
 Block read_block(Reader& r) {
   Block b;
   b.path = r.path();
-  if (r.peek() != Kind::object)
-    r.fail("expected an object {\"vertices\", \"triangles\", \"forces\" or \"speed_bounds\"}");
-  r.begin_object();
+  begin_object(r, "expected an object {\"vertices\", \"triangles\", \"forces\" or \"speed_bounds\"}");
   std::set<std::string> keys;
   std::string_view key;
   while (r.next_key(key)) {
     keys.insert(std::string(key));
     if (key == "vertices") {
-      for (const Pair& v : read_pairs(r)) b.vertices.push_back({v[0], v[1]});
+      for (const Pair& v : read_list<Pair>(r)) b.vertices.push_back({v[0], v[1]});
     } else if (key == "triangles") {
-      if (r.peek() != Kind::array) r.fail("expected an array of [i, j, k] vertex indices");
-      r.begin_array();
+      begin_array(r, "expected an array of [i, j, k] vertex indices");
       while (r.next_item()) {
         b.triangles.emplace_back();
         read_fixed(r, 3, "an array of three vertex indices [i, j, k]", [&](std::size_t k) {
@@ -161,10 +143,10 @@ Block read_block(Reader& r) {
         });
       }
     } else if (key == "forces") {
-      b.forces = read_pairs(r);
+      b.forces = read_list<Pair>(r);
       b.has_forces = true;
     } else if (key == "speed_bounds") {
-      b.speeds = read_rationals(r);
+      b.speeds = read_list<Q>(r);
       b.has_speeds = true;
     } else {
       r.fail("unknown key " + quote(key), true);
@@ -178,8 +160,7 @@ Block read_block(Reader& r) {
 
 // {"label": "+" | "-", "point": [x, y]} or {"label": "infinity", "direction": [dx, dy]}
 void read_reading(Reader& r, Certificate& c) {
-  if (r.peek() != Kind::object) r.fail("expected an object {\"label\", \"point\"} or {\"label\", \"direction\"}");
-  r.begin_object();
+  begin_object(r, "expected an object {\"label\", \"point\"} or {\"label\", \"direction\"}");
   std::set<std::string> keys;
   std::string_view key;
   while (r.next_key(key)) {
@@ -202,8 +183,7 @@ void read_reading(Reader& r, Certificate& c) {
 
 Certificate read_certificate(Reader& r) {
   Certificate c;
-  if (r.peek() != Kind::object) r.fail("a certificate must be a JSON object");
-  r.begin_object();
+  begin_object(r, "a certificate must be a JSON object");
   // An empty combination is allowed for "equilibrium" only; if "property" comes after
   // "combination", that is decided once the whole object is read.
   const std::string non_empty = "expected a non-empty array of {\"contact\", \"edge\", \"weight\"}";
@@ -255,14 +235,13 @@ Certificate read_certificate(Reader& r) {
       if (c.claim != "sticks" && c.claim != "slides" && c.claim != "depends")
         r.fail("expected \"sticks\", \"slides\" or \"depends\"");
     } else if (key == "support_forces") {
-      c.m().support_forces = read_pairs(r);
+      c.m().support_forces = read_list<Pair>(r);
     } else if (key == "speed_bounds") {
-      c.m().speed_bounds = read_rationals(r);
+      c.m().speed_bounds = read_list<Q>(r);
     } else if (key == "dual") {
       read_fixed(r, 3, "an array of three rationals [y0, yx, yy]", [&](std::size_t k) { c.m().dual[k] = read_rational(r); });
     } else if (key == "vertices") {
-      if (r.peek() != Kind::array) r.fail("expected an array of {\"distribution\", \"support_forces\"}");
-      r.begin_array();
+      begin_array(r, "expected an array of {\"distribution\", \"support_forces\"}");
       while (r.next_item()) c.m().vertices.push_back(read_witness(r, false));
     } else if (key == "sticking") {
       c.m().sticking = read_witness(r, false);
@@ -273,8 +252,7 @@ Certificate read_certificate(Reader& r) {
     } else if (key == "failing") {
       c.m().failing = read_witness(r, true);
     } else if (key == "regions") {
-      if (r.peek() != Kind::array) r.fail("expected an array of region blocks (one per support region)");
-      r.begin_array();
+      begin_array(r, "expected an array of region blocks (one per support region)");
       while (r.next_item()) c.m().regions.push_back(read_block(r));
     } else {
       r.fail("unknown key " + quote(key), true);

@@ -59,20 +59,12 @@ class Key_set {
     const int i = index(key);
     if (i >= 0) bits_ |= 1u << i;
   }
-  std::size_t count(std::string_view key) const {
-    const int i = index(key);
-    if (i < 0) throw std::logic_error("Key_set: \"" + std::string(key) + "\" is not a key of the format");
-    return (bits_ >> i) & 1u;
-  }
+  std::size_t count(std::string_view key) const { return (bits_ & bit(key)) != 0; }
   // The bits of these keys, to test many at once (any()): computed once by the caller, not per certificate.
   template <std::size_t N>
   static unsigned mask(const char* const (&keys)[N]) {
     unsigned m = 0;
-    for (const std::string_view k : keys) {
-      const int i = index(k);
-      if (i < 0) throw std::logic_error("Key_set: \"" + std::string(k) + "\" is not a key of the format");
-      m |= 1u << i;
-    }
+    for (const char* k : keys) m |= bit(k);
     return m;
   }
   bool any(unsigned mask) const { return (bits_ & mask) != 0; }
@@ -86,6 +78,11 @@ class Key_set {
     for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
       if (known[i] == key) return i;
     return -1;
+  }
+  static unsigned bit(std::string_view key) {
+    const int i = index(key);
+    if (i < 0) throw std::logic_error("Key_set: \"" + std::string(key) + "\" is not a key of the format");
+    return 1u << i;
   }
   unsigned bits_ = 0;
 };

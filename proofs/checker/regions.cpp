@@ -10,9 +10,8 @@
 
 namespace wrenchkit_checker::detail {
 
-int orient(const P2& a, const P2& b, const P2& c) {
-  return sgn(Q((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)));
-}
+Q cross(const P2& a, const P2& b, const P2& c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+int orient(const P2& a, const P2& b, const P2& c) { return sgn(cross(a, b, c)); }
 // p on the closed segment ab, given the three are collinear.
 bool on_segment(const P2& p, const P2& a, const P2& b) {
   return (p.x - a.x) * (p.x - b.x) <= 0 && (p.y - a.y) * (p.y - b.y) <= 0;
@@ -153,11 +152,9 @@ void settle_region(Region& g) {
 Region read_region(Reader& r, const Limits& lim, std::size_t& vertices) {
   Region g;
   g.path = r.path();
-  if (r.peek() != Kind::object) r.fail("expected an object {\"outline\", \"holes\"?, \"pressure\", \"force\"?, \"mu\"?}");
-  r.begin_object();
+  begin_object(r, "expected an object {\"outline\", \"holes\"?, \"pressure\", \"force\"?, \"mu\"?}");
   const auto ring = [&](std::vector<P2>& out) {
-    if (r.peek() != Kind::array) r.fail("expected an array of points");
-    r.begin_array();
+    begin_array(r, "expected an array of points");
     while (r.next_item()) {
       if (++vertices > lim.max_region_vertices)
         r.fail("the support's regions have more than " + std::to_string(lim.max_region_vertices) + " vertices in all", true);
@@ -174,8 +171,7 @@ Region read_region(Reader& r, const Limits& lim, std::size_t& vertices) {
       ring(g.rings[0]);
       has_outline = true;
     } else if (key == "holes") {
-      if (r.peek() != Kind::array) r.fail("expected an array of rings");
-      r.begin_array();
+      begin_array(r, "expected an array of rings");
       while (r.next_item()) {
         g.rings.emplace_back();
         ring(g.rings.back());
@@ -186,8 +182,7 @@ Region read_region(Reader& r, const Limits& lim, std::size_t& vertices) {
         if (r.string_view() != "uniform") r.fail("expected \"uniform\" or {\"linear\": [a, b, c]}");
         g.uniform = true;
       } else {
-        if (r.peek() != Kind::object) r.fail("expected \"uniform\" or {\"linear\": [a, b, c]}");
-        r.begin_object();
+        begin_object(r, "expected \"uniform\" or {\"linear\": [a, b, c]}");
         bool has_linear = false;
         std::string_view k;
         while (r.next_key(k)) {
@@ -279,20 +274,41 @@ void check_tiling(const Region& g, const Block& b) {
   }
 }
 
+// The block's `key` has one entry (`n` of `what`) per cell or vertex, and its cells tile g.
+void check_block(const Region& g, const Block& b, const char* key, std::size_t have, const char* items, std::size_t n,
+                 const char* what) {
+  if (have != n)
+    throw Failure{b.path + "." + key + ": " + std::to_string(have) + " " + items + " for " + std::to_string(n) + " " + what};
+  check_tiling(g, b);
+}
+
+void in_disc(const Q& gx, const Q& gy, const Q& rho, bool strict, const std::string& path, std::size_t i,
+             const char* mu_f) {
+  const Q lhs = gx * gx + gy * gy;
+  if (strict ? (sgn(rho) == 0 ? sgn(lhs) == 0 : lhs < rho * rho) : lhs <= rho * rho) return;
+  throw Failure{path + "[" + std::to_string(i) + "]: |g|^2 = " + show(lhs) + " is not " + (strict ? "less than" : "at most") +
+                " (" + mu_f + ")^2 = " + show(Q(rho * rho)) + (sgn(rho) == 0 ? " (no friction there: g must be 0)" : "")};
+}
+
+void speed_bound(const Q& u, const Q (&q)[3], const Q& x, const Q& y, const std::string& path, std::size_t i,
+                 const char* v) {
+  const auto at = [&] { return path + "[" + std::to_string(i) + "]: "; };
+  if (sgn(u) < 0) throw Failure{at() + show(u) + " is negative"};
+  const Q vx = q[0] - q[2] * y, vy = q[1] + q[2] * x, speed2 = vx * vx + vy * vy;
+  if (u * u < speed2) throw Failure{at() + "u^2 = " + show(Q(u * u)) + " is less than |" + v + "|^2 = " + show(speed2)};
+}
+
 // A stick block: |g_k|^2 < (mu F_k)^2 (g_k = 0 where mu F_k = 0), F_k = area p(centroid); adds sum_k (g_k, c_k x g_k)
 // to `sum` (c_k = M_k / F_k the cell's pressure centroid, M_k its integral of r p by the edge-midpoint rule) and
 // calls friction(c_k) for every cell with mu F_k > 0.
 // `strict` as support_sum's: a stick (|g_k|^2 < (mu F_k)^2) or a hold (|g_k|^2 <= (mu F_k)^2, closed discs).
 void add_stick_block(const Region& g, const Block& b, std::array<Q, 3>& sum,
                      const std::function<void(const Q&, const Q&)>& friction, bool strict) {
-  if (b.forces.size() != b.triangles.size())
-    throw Failure{b.path + ".forces: " + std::to_string(b.forces.size()) + " forces for " +
-                  std::to_string(b.triangles.size()) + " cells"};
-  check_tiling(g, b);
+  check_block(g, b, "forces", b.forces.size(), "forces", b.triangles.size(), "cells");
   for (std::size_t k = 0; k < b.triangles.size(); ++k) {
     const auto& t = b.triangles[k];
     const P2 &p = b.vertices[t[0]], &q = b.vertices[t[1]], &r = b.vertices[t[2]];
-    const Q area = Q((q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x)) / 2;
+    const Q area = cross(p, q, r) / 2;
     const P2 m[3] = {{(p.x + q.x) / 2, (p.y + q.y) / 2}, {(q.x + r.x) / 2, (q.y + r.y) / 2}, {(r.x + p.x) / 2, (r.y + p.y) / 2}};
     Q F = 0, M[2] = {0, 0};
     for (const P2& x : m) {
@@ -301,12 +317,8 @@ void add_stick_block(const Region& g, const Block& b, std::array<Q, 3>& sum,
     }
     F *= area / 3, M[0] *= area / 3, M[1] *= area / 3;
     const Pair& f = b.forces[k];
-    const Q lhs = f[0] * f[0] + f[1] * f[1], rho = g.mu * F;
-    const bool inside = strict ? (sgn(rho) == 0 ? sgn(lhs) == 0 : lhs < rho * rho) : lhs <= rho * rho;
-    if (!inside)
-      throw Failure{b.path + ".forces[" + std::to_string(k) + "]: |g|^2 = " + show(lhs) + " is not " +
-                    (strict ? "less than" : "at most") + " (mu F)^2 = " + show(Q(rho * rho)) +
-                    (sgn(rho) == 0 ? " (no friction there: g must be 0)" : "")};
+    const Q rho = g.mu * F;
+    in_disc(f[0], f[1], rho, strict, b.path + ".forces", k, "mu F");
     if (sgn(rho) == 0) continue;
     sum[0] += f[0], sum[1] += f[1], sum[2] += (M[0] * f[1] - M[1] * f[0]) / F;
     friction(Q(M[0] / F), Q(M[1] / F));
@@ -317,24 +329,14 @@ void add_stick_block(const Region& g, const Block& b, std::array<Q, 3>& sum,
 // w_j = area (p_j + p_a + p_b + p_c)/12, the integral of the barycentric coordinate j times p (|v| is convex and
 // p >= 0, so the integral of |v| p over the region is at most this).
 Q slide_block_bound(const Region& g, const Block& b, const Q (&q)[3]) {
-  if (b.speeds.size() != b.vertices.size())
-    throw Failure{b.path + ".speed_bounds: " + std::to_string(b.speeds.size()) + " bounds for " +
-                  std::to_string(b.vertices.size()) + " vertices"};
-  check_tiling(g, b);
-  for (std::size_t j = 0; j < b.vertices.size(); ++j) {
-    const P2& v = b.vertices[j];
-    const Q vx = q[0] - q[2] * v.y, vy = q[1] + q[2] * v.x, speed2 = vx * vx + vy * vy;
-    const Q& u = b.speeds[j];
-    if (sgn(u) < 0) throw Failure{b.path + ".speed_bounds[" + std::to_string(j) + "]: " + show(u) + " is negative"};
-    if (u * u < speed2)
-      throw Failure{b.path + ".speed_bounds[" + std::to_string(j) + "]: u^2 = " + show(Q(u * u)) +
-                    " is less than |v(q)|^2 = " + show(speed2)};
-  }
+  check_block(g, b, "speed_bounds", b.speeds.size(), "bounds", b.vertices.size(), "vertices");
+  const std::string path = b.path + ".speed_bounds";
+  for (std::size_t j = 0; j < b.vertices.size(); ++j) speed_bound(b.speeds[j], q, b.vertices[j].x, b.vertices[j].y, path, j, "v(q)");
   std::vector<Q> terms;
   terms.reserve(b.triangles.size());
   for (const auto& t : b.triangles) {
     const P2 &p = b.vertices[t[0]], &q2 = b.vertices[t[1]], &r = b.vertices[t[2]];
-    const Q area = Q((q2.x - p.x) * (r.y - p.y) - (q2.y - p.y) * (r.x - p.x)) / 2;
+    const Q area = cross(p, q2, r) / 2;
     const Q pv[3] = {pressure(g.c, p), pressure(g.c, q2), pressure(g.c, r)};
     const Q all = pv[0] + pv[1] + pv[2];
     Q cell = 0;

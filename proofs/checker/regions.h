@@ -42,4 +42,13 @@ void add_stick_block(const Region& g, const Block& b, std::array<Q, 3>& sum,
 // A slide block: speed bounds at its vertices for the twist q; returns its bound on the region's frictional power.
 Q slide_block_bound(const Region& g, const Block& b, const Q (&q)[3]);
 
+// The two conditions of §6.2 on a support point (support_witnesses.h) and of §6.4 on a cell or a vertex of a block:
+// a friction force g in its disc of radius rho = mu f >= 0, open (`strict`: a stick, with g = 0 where rho = 0) or
+// closed (a hold); a speed bound u >= 0 with u^2 >= |v|^2, v = (q0 - q2 y, q1 + q2 x) the velocity of the point
+// (x, y) under the twist q. Else the Failure "<path>[<i>]: ...", naming the bound `mu_f` or the velocity `v`.
+void in_disc(const Q& gx, const Q& gy, const Q& rho, bool strict, const std::string& path, std::size_t i,
+             const char* mu_f);
+void speed_bound(const Q& u, const Q (&q)[3], const Q& x, const Q& y, const std::string& path, std::size_t i,
+                 const char* v);
+
 }  // namespace wrenchkit_checker::detail

@@ -142,9 +142,7 @@ Contact make_contact(bool wrench, const Read_number* n, std::size_t count, const
 
 // {at, normal, mu?, name?} (normal != 0, mu >= 0) or {wrench, name?} (wrench != 0).
 Contact read_contact(Reader& r, const Limits& lim) {
-  if (r.peek() != Kind::object)
-    r.fail("expected an object {\"at\", \"normal\", \"mu\"?, \"name\"?} or {\"wrench\", \"name\"?}");
-  r.begin_object();
+  begin_object(r, "expected an object {\"at\", \"normal\", \"mu\"?, \"name\"?} or {\"wrench\", \"name\"?}");
   Read_number point[5], wrench[3];  // x, y, nx, ny, mu ("0" if absent); fx, fy, m
   std::string_view key;
   enum : unsigned { kAt = 1, kNormal = 2, kMu = 4, kWrench = 8 };
@@ -197,13 +195,11 @@ void read_vector(Reader& r, const Limits& lim, std::size_t n, Q* out) {
 // {"outline"?: [points], "com"?: [x, y]}. Only com is used (by a gravity load); outline must be an
 // array, its points are not interpreted (the checker draws nothing).
 void read_body(Reader& r, const Limits& lim, bool& has_com, Q (&com)[2]) {
-  if (r.peek() != Kind::object) r.fail("expected an object");
-  r.begin_object();
+  begin_object(r, "expected an object");
   std::string_view key;
   while (r.next_key(key)) {
     if (key == "outline") {  // not interpreted, but limited and counted in the budget like every point
-      if (r.peek() != Kind::array) r.fail("expected an array of points");
-      r.begin_array();
+      begin_array(r, "expected an array of points");
       for (std::size_t points = 0; r.next_item(); ++points) {
         if (points == lim.max_contacts)
           throw Failure{"body.outline: more than " + std::to_string(lim.max_contacts) + " points"};
@@ -253,8 +249,7 @@ struct Load {
 // key, including one of another form, is an unknown key.
 Load read_load(Reader& r, const Limits& lim) {
   const char* const forms = "{\"force\", \"at\"}, {\"wrench\"} or {\"gravity\"}";
-  if (r.peek() != Kind::object) r.fail(std::string("expected an object ") + forms);
-  r.begin_object();
+  begin_object(r, std::string("expected an object ") + forms);
   Load load;
   std::vector<std::string> keys;  // in the order written
   std::string_view key;
@@ -303,8 +298,7 @@ const Point_values& values(const Support_point& p, const Limits& lim, Point_valu
 // {"mu"?, "weight"?, "pressure_center"?, "points": [{"at": [x, y], "force"?: f, "mu"?: mu}, ...]}
 // (docs/scene-format.md). Every number is read exactly and checked: forces, weights and mu >= 0.
 Support read_support(Reader& r, const Limits& lim) {
-  if (r.peek() != Kind::object) r.fail("expected an object");
-  r.begin_object();
+  begin_object(r, "expected an object");
   Support s;
   bool has_mu = false, has_points = false;
   std::string mu_text;
@@ -328,14 +322,12 @@ Support read_support(Reader& r, const Limits& lim) {
       read_vector(r, lim, 2, s.center);
       s.has_center = true;
     } else if (key == "regions") {
-      if (r.peek() != Kind::array) r.fail("expected an array");
-      r.begin_array();
+      begin_array(r, "expected an array");
       std::size_t vertices = 0;
       while (r.next_item()) s.regions.push_back(read_region(r, lim, vertices));
     } else if (key == "points") {
       has_points = true;
-      if (r.peek() != Kind::array) r.fail("expected an array");
-      r.begin_array();
+      begin_array(r, "expected an array");
       while (r.next_item()) {
         if (raw.size() == lim.max_contacts)
           throw Failure{"support.points: more than " + std::to_string(lim.max_contacts) + " points"};
@@ -345,8 +337,7 @@ Support read_support(Reader& r, const Limits& lim) {
           points_path = r.path();
           points_path.resize(points_path.size() - 3);
         }
-        if (r.peek() != Kind::object) r.fail("expected an object {\"at\", \"force\"?, \"mu\"?}");
-        r.begin_object();
+        begin_object(r, "expected an object {\"at\", \"force\"?, \"mu\"?}");
         std::string_view point_key;
         // x, y, mu, force as read (validated and counted; "0" where absent: mu until support.mu is known)
         Read_number n[4];
@@ -494,8 +485,7 @@ void settle_support(Support& s, bool has_com, const Q (&com)[2], const Limits& l
 // certificates (§6); an empty admissible set F is a bad scene.
 Scene read_scene(Reader& r, const Limits& lim) {
   Scene scene;
-  if (r.peek() != Kind::object) r.fail("a scene must be a JSON object");
-  r.begin_object();
+  begin_object(r, "a scene must be a JSON object");
   bool has_version = false, has_com = false;
   struct Body {
     Q com[2];
@@ -518,8 +508,7 @@ Scene read_scene(Reader& r, const Limits& lim) {
     } else if (key == "support") {
       scene.support = read_support(r, lim);
     } else if (key == "contacts") {
-      if (r.peek() != Kind::array) r.fail("expected an array");
-      r.begin_array();
+      begin_array(r, "expected an array");
       while (r.next_item()) {
         if (scene.contacts.size() == lim.max_contacts)
           throw Failure{"contacts: more than " + std::to_string(lim.max_contacts) + " contacts"};

@@ -138,12 +138,8 @@ class Support_witnesses {
         if (sgn(v.mu) > 0 && sgn(f[i]) > 0) friction_at(v.x, v.y);
         continue;
       }
-      const Q lhs = g[i][0] * g[i][0] + g[i][1] * g[i][1], bound = v.mu * f[i];
-      const bool inside = strict ? (sgn(bound) == 0 ? sgn(lhs) == 0 : lhs < bound * bound) : lhs <= bound * bound;
-      if (!inside)
-        throw Failure{path + "[" + std::to_string(i) + "]: |g|^2 = " + show(lhs) + " is not " +
-                      (strict ? "less than" : "at most") + " (mu f)^2 = " + show(Q(bound * bound)) +
-                      (sgn(bound) == 0 ? " (no friction there: g must be 0)" : "")};
+      const Q bound = v.mu * f[i];
+      in_disc(g[i][0], g[i][1], bound, strict, path, i, "mu f");
       if (sgn(bound) > 0) friction_at(v.x, v.y);
       sum[0] += g[i][0], sum[1] += g[i][1], sum[2] += v.x * g[i][1] - v.y * g[i][0];
     }
@@ -167,11 +163,7 @@ class Support_witnesses {
     for (std::size_t i = 0; i < u.size(); ++i) {
       Point_values scratch;
       const Point_values& v = values(s_.points[i], lim_, scratch);
-      const auto at = [&] { return path + "[" + std::to_string(i) + "]: "; };  // (built only for a failure)
-      if (sgn(u[i]) < 0) throw Failure{at() + show(u[i]) + " is negative"};
-      const Q vx = q[0] - q[2] * v.y, vy = q[1] + q[2] * v.x, speed2 = vx * vx + vy * vy;
-      if (u[i] * u[i] < speed2)
-        throw Failure{at() + "u^2 = " + show(Q(u[i] * u[i])) + " is less than |v_i(q)|^2 = " + show(speed2)};
+      speed_bound(u[i], q, v.x, v.y, path, i, "v_i(q)");
       const Q mu_u = v.mu * u[i];
       if (!dual || s_.points[i].known) {
         bound += mu_u * f[i];
