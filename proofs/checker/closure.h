@@ -39,18 +39,17 @@ struct Combination {
       throw Failure{terms[twice].ref.path() + ": " + name(terms[twice].ref.contact, terms[twice].ref.edge) +
                     " appears twice (also at " + terms[first].ref.path() + ")"};
     // (1) every reference names a generator of the scene under the reading
-    std::vector<int> edge(n);
-    for (std::size_t k = 0; k < n; ++k) edge[k] = check_reference(terms[k].ref, contacts, reading);
+    for (const Term& t : terms) check_reference(t.ref, contacts, reading);
     // (3) every weight is strictly positive: by the grammar of §2, its text starts with neither '-' nor '0'
     for (const Term& t : terms)
       if (t.weight[0] == '-' || t.weight[0] == '0')
         throw Failure{t.ref.path() + ".weight: " + quote(t.weight) + " is not strictly positive"};
     // g_k and weight_k g_k = (a g.v) / (b g.d) for weight_k = a / b, each contact's generators computed once
-    Generators<N> g{};
+    Generators<N> g;
     for (std::size_t i = 0; i < n; ++i) {
       const std::size_t k = order[i], contact = terms[k].ref.contact;
       if (i == 0 || contact != terms[order[i - 1]].ref.contact) g = generators<N>(contacts[contact], reading, lim);
-      const Int_wrench<N>& gk = generator[k] = g.w[edge[k]];
+      const Int_wrench<N>& gk = generator[k] = g.w[check_reference(terms[k].ref, contacts, reading)];
       const Frac<N> w = fraction<N>(terms[k].weight);
       weighted[k] = {{N(w.num * gk.v[0]), N(w.num * gk.v[1]), N(w.num * gk.v[2])}, N(w.den * gk.d)};
     }

@@ -104,7 +104,8 @@ void begin_array(Reader& r, const Message& otherwise) {
 // An array of exactly n values; item(k) reads the k-th.
 template <class Item>
 void read_fixed(Reader& r, std::size_t n, const std::string& what, Item item) {
-  begin_array(r, "expected " + what);
+  if (r.peek() != Reader::Kind::array) r.fail("expected " + what);
+  r.begin_array();
   std::size_t k = 0;
   while (r.next_item()) {
     if (k == n) r.fail("expected " + what, true);

@@ -249,7 +249,8 @@ struct Load {
 // key, including one of another form, is an unknown key.
 Load read_load(Reader& r, const Limits& lim) {
   const char* const forms = "{\"force\", \"at\"}, {\"wrench\"} or {\"gravity\"}";
-  begin_object(r, std::string("expected an object ") + forms);
+  if (r.peek() != Kind::object) r.fail(std::string("expected an object ") + forms);
+  r.begin_object();
   Load load;
   std::vector<std::string> keys;  // in the order written
   std::string_view key;
