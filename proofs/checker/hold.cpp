@@ -3,6 +3,7 @@
 #include "proofs/checker/closure.h"
 #include "proofs/checker/support_witnesses.h"
 
+#include <optional>
 #include <set>
 
 namespace wrenchkit_checker::detail {
@@ -85,14 +86,18 @@ class Hold_check {
   // Contact weights and support forces (closed discs) that cancel the load exactly.
   void hold(const std::vector<Q>& f, const std::vector<Term>& combination, const std::vector<Pair>& g,
             const std::string& prefix, const std::vector<Block>* blocks) const {
-    std::vector<Int_wrench<Z>> terms = Combination<Z>(combination, scene_.contacts, Reading::friction, lim_).weighted;
-    if (scene_.support.has_value()) {
-      const std::array<Q, 3> sum = b_.support_sum(f, g, prefix + "support_forces", false, blocks);
-      terms.push_back(integer_form<Z>({sum[0], sum[1], sum[2]}));
-    }
-    terms.push_back(integer_form<Z>({scene_.load->fx, scene_.load->fy, scene_.load->m}));
-    zero_sum(std::move(terms), prefix + "combination: the contact forces" +
-                                   (scene_.support.has_value() ? ", the support forces" : "") + " and the load sum to ");
+    std::optional<std::array<Q, 3>> sum;  // the support forces' wrench, computed once (a rerun on Z reuses it)
+    fast_then_exact(lim_, [&](auto zero) {
+      using N = decltype(zero);
+      std::vector<Int_wrench<N>> terms = Combination<N>(combination, scene_.contacts, Reading::friction, lim_).weighted;
+      if (scene_.support.has_value()) {
+        if (!sum) sum = b_.support_sum(f, g, prefix + "support_forces", false, blocks);
+        terms.push_back(integer_form<N>({(*sum)[0], (*sum)[1], (*sum)[2]}));
+      }
+      terms.push_back(integer_form<N>({scene_.load->fx, scene_.load->fy, scene_.load->m}));
+      zero_sum(std::move(terms), prefix + "combination: the contact forces" +
+                                     (scene_.support.has_value() ? ", the support forces" : "") + " and the load sum to ");
+    });
   }
 
   // A motion every contact allows that the load drives harder than the support's friction can resist.
