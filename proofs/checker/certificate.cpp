@@ -161,21 +161,22 @@ Block read_block(Reader& r) {
 // {"label": "+" | "-", "point": [x, y]} or {"label": "infinity", "direction": [dx, dy]}
 void read_reading(Reader& r, Certificate& c) {
   begin_object(r, "expected an object {\"label\", \"point\"} or {\"label\", \"direction\"}");
-  std::set<std::string> keys;
+  bool label = false, point = false, direction = false;  // the keys present
   std::string_view key;
   while (r.next_key(key)) {
-    keys.insert(std::string(key));
     if (key == "label") {
+      label = true;
       c.label = r.peek() == Kind::string ? r.string_view() : "";
       if (c.label != "+" && c.label != "-" && c.label != "infinity") r.fail("expected \"+\", \"-\" or \"infinity\"");
     } else if (key == "point" || key == "direction") {
+      (key == "point" ? point : direction) = true;
       read_fixed(r, 2, "an array of two rationals", [&](std::size_t k) { c.where[k] = read_rational_text(r); });
     } else {
       r.fail("unknown key " + quote(key), true);
     }
   }
-  if (!keys.count("label")) r.fail("missing required key \"label\"");
-  const bool infinite = c.label == "infinity", point = keys.count("point") > 0, direction = keys.count("direction") > 0;
+  if (!label) r.fail("missing required key \"label\"");
+  const bool infinite = c.label == "infinity";
   if (infinite ? point || !direction : !point || direction)
     r.fail(infinite ? "label \"infinity\" needs \"direction\" and no \"point\""
                     : "label " + quote(c.label) + " needs \"point\" and no \"direction\"");

@@ -1,6 +1,6 @@
 // proofs/checker/support_witnesses.h - what the motion (certificate-format.md §6.2, §6.4, §6.5) and hold (§7.2,
-// §7.4, §7.5) checks share about the support: distributions in F, friction forces in their discs, bounds on the
-// frictional power, the vertices of F.
+// §7.4, §7.5) checks share about the support: keys and witnesses' regions, distributions in F, friction forces in
+// their discs, bounds on the frictional power, the vertices of F.
 #pragma once
 
 #include <functional>
