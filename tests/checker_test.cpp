@@ -797,8 +797,8 @@ TEST(CheckerMutations, NegativeCertificates) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Fixed width against GMP. Closure certificates are checked in fixed-width integers first and by GMP
-// integers whenever that does not accept them (Limits::fixed_width); the two must agree, message
+// Fixed width against GMP. The integer checks run on fixed-width integers first and again on GMP integers
+// whenever a result overflows them (Limits::fixed_width); the two must agree, message
 // included, on every example, on mutations of examples and scenes, and on random scenes whose numbers
 // have mixed numbers of digits (different denominators) and sizes around and past 64 bits, with valid
 // certificates and invalid ones.

@@ -1,29 +1,13 @@
 // proofs/checker/checker.h - the independent certificate checker of wrenchkit (certificate format v1).
 //
 // check() decides whether a certificate (proofs/certificate-format.md) proves its claim about a scene
-// (docs/scene-format.md):
-//   * holds = true  (theory [FC-2]): strictly positive weights of distinct generators sum to the zero
-//     wrench and three of them are linearly independent, so the contact wrench cone is all of R^3;
-//   * holds = false (theory [FC-3]): a nonzero twist has non-negative power against every generator,
-//     so the cone lies in a closed half-space and is not R^3;
-//   * property "equilibrium" (theory [EQ-1], §3.3), about the scene's load w_ext (a force at a point,
-//     a wrench, or gravity at body.com), with the friction generators: holds = true when strictly
-//     positive weights of distinct generators (possibly none) sum to -w_ext; holds = false when a
-//     twist has non-negative power against every generator and positive power against w_ext. A
-//     scene without a load has no equilibrium claim: such a certificate is rejected;
-//   * property "motion" (certificate-format.md §6, proofs/notes/SL-1), about a load p applied to the
-//     scene's support: "sticks" (rational support forces inside their friction discs that carry p),
-//     "slides" (a twist and rational speed bounds whose power bound p beats), for the scene's known
-//     distribution or for every admissible distribution F (a stick witness for every vertex of F,
-//     which the checker enumerates itself; an LP dual bound for slides), or "depends" (one admissible
-//     distribution sticks, another slides). An empty F is a bad scene, with the reason.
-//   * property "hold" (certificate-format.md §7, proofs/notes/HD-1), about the scene's contacts and support
-//     against its load: true (positive weights on friction generators and support forces in their closed
-//     discs that cancel the load), false (a twist every generator allows whose power against the load beats
-//     the rational bound on the support's frictional power, strictly), or "depends" (one admissible
-//     distribution holds, another fails); for every admissible distribution as for "motion".
-// Every generator, and the load, is recomputed from the scene text; the certificate supplies only
-// indices and rationals. All arithmetic is exact (GMP rationals); there is no floating point.
+// (docs/scene-format.md): force and form closure (§3.1 holds = true, theory [FC-2]; §3.2 holds = false, [FC-3]),
+// equilibrium of the scene's load (§3.3, [EQ-1]; a scene without a load has no such claim), sliding on the scene's
+// support (property "motion", §6, [SL-1]: "sticks", "slides" or "depends", for its known distribution or for every
+// admissible one, whose vertices the checker enumerates itself; an empty set of them is a bad scene), and fixtures on
+// a support against the load (property "hold", §7, [HD-1]). proofs/checker/README.md maps each section to its file.
+// Every generator, and the load, is recomputed from the scene text; the certificate supplies only indices and
+// rationals. All arithmetic is exact (integers and rationals; no floating point).
 //
 // Independence: this checker uses the C++17 standard library and GMP only, with its own JSON reader
 // and number parser. It shares no code with the engine (exact/, core/, float/) and does not use CGAL.
@@ -59,8 +43,8 @@ struct Limits {
   // §6): the checker enumerates the vertices of F itself, over n + C(n,2) + C(n,3) candidate bases for
   // n points without a given force, and rejects a larger certificate as too large to check.
   unsigned long long max_vertex_bases = 2000000;
-  // Closure certificates are first checked in fixed-width integers (64-bit limbs on the stack) and, when
-  // that does not accept them, by GMP integers, which also name what is wrong. false: GMP only (the
+  // The integer checks of §1 and §3 are written once over a number type and run on fixed-width integers (eight
+  // 64-bit limbs on the stack) and, only if a result overflows them, again on GMP integers. false: GMP only (the
   // tests compare the two).
   bool fixed_width = true;
 };

@@ -89,4 +89,29 @@ class Reader {
   std::deque<std::string> decoded_;   // string_view()'s decoded strings
 };
 
+// The next value, an object (an array): opened; else the failure `otherwise`, at its path.
+template <class Message>
+void begin_object(Reader& r, const Message& otherwise) {
+  if (r.peek() != Reader::Kind::object) r.fail(otherwise);
+  r.begin_object();
+}
+template <class Message>
+void begin_array(Reader& r, const Message& otherwise) {
+  if (r.peek() != Reader::Kind::array) r.fail(otherwise);
+  r.begin_array();
+}
+
+// An array of exactly n values; item(k) reads the k-th.
+template <class Item>
+void read_fixed(Reader& r, std::size_t n, const std::string& what, Item item) {
+  if (r.peek() != Reader::Kind::array) r.fail("expected " + what);
+  r.begin_array();
+  std::size_t k = 0;
+  while (r.next_item()) {
+    if (k == n) r.fail("expected " + what, true);
+    item(k++);
+  }
+  if (k != n) r.fail("expected " + what);
+}
+
 }  // namespace wrenchkit_checker::detail

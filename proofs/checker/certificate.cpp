@@ -1,0 +1,305 @@
+// proofs/checker/certificate.cpp - reading the certificate object (certificate-format.md §2 numbers, §3 keys,
+// §6.1, §6.4 blocks, §7.1): every key known, every value of its type; which keys a claim needs is checked by
+// check_keys() (§3, §3.3) or by the motion and hold checks, which know the scene's support.
+#include "proofs/checker/certificate.h"
+
+#include <set>
+
+namespace wrenchkit_checker::detail {
+
+const Motion_part& members(const Certificate& c) {
+  static const Motion_part none;
+  return c.motion_members ? *c.motion_members : none;
+}
+
+// A certificate rational's text (a JSON string, its grammar checked; a view valid while the reader is).
+std::string_view read_rational_text(Reader& r) {
+  if (r.peek() != Kind::string) r.fail("expected a rational as a JSON string, such as \"-3/4\"");
+  const std::string_view s = r.string_view();
+  if (!rational_grammar(s)) not_a_rational(s, r.path());
+  return s;
+}
+Q read_rational(Reader& r) { return rational_value(read_rational_text(r)); }
+
+// {"contact": i, "edge": E} and, if weighted, "weight": "p/q".
+Term read_term(Reader& r, bool weighted, const char* list, std::size_t item) {
+  Term t;
+  t.ref.list = list, t.ref.item = item;
+  begin_object(r, weighted ? "expected an object {\"contact\", \"edge\", \"weight\"}" : "expected an object {\"contact\", \"edge\"}");
+  enum : unsigned { kContact = 1, kEdge = 2, kWeight = 4 };
+  unsigned keys = 0;  // the keys present
+  std::string_view key;
+  while (r.next_key(key)) {
+    if (key == "contact") {
+      keys |= kContact;
+      if (r.peek() != Kind::number) r.fail("expected a contact index (a JSON integer)");
+      t.ref.index = r.number();
+      if (t.ref.index.find_first_not_of("0123456789") != std::string::npos)
+        r.fail("expected a contact index: a JSON integer without sign, fraction or exponent, not " +
+               clip(std::string(t.ref.index)));
+      if (t.ref.index.size() <= 18) {  // no overflow; a longer index is out of range anyway
+        unsigned long long v = 0;
+        for (const char d : t.ref.index) v = v * 10 + static_cast<unsigned>(d - '0');
+        t.ref.contact = v < SIZE_MAX ? static_cast<std::size_t>(v) : SIZE_MAX;
+      }
+    } else if (key == "edge") {
+      keys |= kEdge;
+      if (r.peek() != Kind::string) r.fail("expected a string");
+      t.ref.edge = r.string_view();
+    } else if (key == "weight" && weighted) {
+      keys |= kWeight;
+      t.weight = read_rational_text(r);
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  if (!(keys & kContact)) r.fail("missing required key \"contact\"");
+  if (!(keys & kEdge)) r.fail("missing required key \"edge\"");
+  if (weighted && !(keys & kWeight)) r.fail("missing required key \"weight\"");
+  return t;
+}
+
+// An array of rationals, or of [x, y] pairs of rationals, of any length.
+template <class T>
+std::vector<T> read_list(Reader& r) {
+  begin_array(r, std::is_same_v<T, Q> ? "expected an array of rationals" : "expected an array of [gx, gy] pairs of rationals");
+  std::vector<T> out;
+  out.reserve(16);  // (a reallocation copies the rationals: room for 16 at once, then doubling)
+  while (r.next_item()) {
+    if constexpr (std::is_same_v<T, Q>) out.push_back(read_rational(r));
+    else read_fixed(r, 2, "an array of two rationals [gx, gy]", [&, &p = out.emplace_back()](std::size_t k) { p[k] = read_rational(r); });
+  }
+  return out;
+}
+
+// A stick witness {"distribution", "support_forces"} or (slide) a slide witness {"distribution",
+// "twist", "speed_bounds"}: exactly these keys; a stick witness may also hold "combination" (a hold witness,
+// §7: which keys a property allows is checked once the property is known).
+Block read_block(Reader& r);
+
+Witness read_witness(Reader& r, bool slide) {
+  Witness w;
+  w.path = r.path();
+  const char* const what = slide ? "expected an object {\"distribution\", \"twist\", \"speed_bounds\"}"
+                                 : "expected an object {\"distribution\", \"support_forces\"}";
+  begin_object(r, what);
+  std::set<std::string> keys;
+  std::string_view key;
+  while (r.next_key(key)) {
+    keys.insert(std::string(key));
+    if (key == "distribution") {
+      w.distribution = read_list<Q>(r);
+    } else if (key == "support_forces" && !slide) {
+      w.forces = read_list<Pair>(r);
+    } else if (key == "combination" && !slide) {
+      begin_array(r, "expected an array of {\"contact\", \"edge\", \"weight\"}");
+      while (r.next_item()) {
+        w.combination.push_back(read_term(r, true, "combination", w.combination.size()));
+        w.combination.back().ref.owner = w.path + ".";
+      }
+      w.has_combination = true;
+    } else if (key == "twist" && slide) {
+      read_fixed(r, 3, "an array of three rationals [vx, vy, w]", [&](std::size_t k) { w.twist[k] = read_rational(r); });
+    } else if (key == "speed_bounds" && slide) {
+      w.speeds = read_list<Q>(r);
+    } else if (key == "regions") {  // format 2 only (§6.5, §7.5: checked with the scene)
+      begin_array(r, "expected an array of region blocks (one per support region)");
+      while (r.next_item()) w.regions.push_back(read_block(r));
+      w.has_regions = true;
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  for (const char* k : slide ? std::vector<const char*>{"distribution", "twist", "speed_bounds"}
+                             : std::vector<const char*>{"distribution", "support_forces"})
+    if (!keys.count(k)) r.fail(std::string("missing required key \"") + k + "\"");
+  return w;
+}
+
+// {"vertices": [[x, y], ...], "triangles": [[i, j, k], ...], "forces": [[gx, gy], ...]} or with "speed_bounds":
+// [u, ...] instead of "forces" (§6.4); indices are JSON integers without sign, fraction or exponent.
+Block read_block(Reader& r) {
+  Block b;
+  b.path = r.path();
+  begin_object(r, "expected an object {\"vertices\", \"triangles\", \"forces\" or \"speed_bounds\"}");
+  std::set<std::string> keys;
+  std::string_view key;
+  while (r.next_key(key)) {
+    keys.insert(std::string(key));
+    if (key == "vertices") {
+      for (const Pair& v : read_list<Pair>(r)) b.vertices.push_back({v[0], v[1]});
+    } else if (key == "triangles") {
+      begin_array(r, "expected an array of [i, j, k] vertex indices");
+      while (r.next_item()) {
+        b.triangles.emplace_back();
+        read_fixed(r, 3, "an array of three vertex indices [i, j, k]", [&](std::size_t k) {
+          if (r.peek() != Kind::number) r.fail("expected a vertex index (a JSON integer)");
+          const std::string t(r.number());
+          if (t.find_first_not_of("0123456789") != std::string::npos || t.size() > 18)
+            r.fail("expected a vertex index: a JSON integer without sign, fraction or exponent, not " + clip(t));
+          unsigned long long v = 0;
+          for (const char d : t) v = v * 10 + static_cast<unsigned>(d - '0');
+          b.triangles.back()[k] = v < SIZE_MAX ? static_cast<std::size_t>(v) : SIZE_MAX;
+        });
+      }
+    } else if (key == "forces") {
+      b.forces = read_list<Pair>(r);
+      b.has_forces = true;
+    } else if (key == "speed_bounds") {
+      b.speeds = read_list<Q>(r);
+      b.has_speeds = true;
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  for (const char* k : {"vertices", "triangles"})
+    if (!keys.count(k)) r.fail(std::string("missing required key \"") + k + "\"");
+  if (b.has_forces == b.has_speeds) r.fail("expected exactly one of \"forces\" (sticks) and \"speed_bounds\" (slides)");
+  return b;
+}
+
+// {"label": "+" | "-", "point": [x, y]} or {"label": "infinity", "direction": [dx, dy]}
+void read_reading(Reader& r, Certificate& c) {
+  begin_object(r, "expected an object {\"label\", \"point\"} or {\"label\", \"direction\"}");
+  bool label = false, point = false, direction = false;  // the keys present
+  std::string_view key;
+  while (r.next_key(key)) {
+    if (key == "label") {
+      label = true;
+      c.label = r.peek() == Kind::string ? r.string_view() : "";
+      if (c.label != "+" && c.label != "-" && c.label != "infinity") r.fail("expected \"+\", \"-\" or \"infinity\"");
+    } else if (key == "point" || key == "direction") {
+      (key == "point" ? point : direction) = true;
+      read_fixed(r, 2, "an array of two rationals", [&](std::size_t k) { c.where[k] = read_rational_text(r); });
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  if (!label) r.fail("missing required key \"label\"");
+  const bool infinite = c.label == "infinity";
+  if (infinite ? point || !direction : !point || direction)
+    r.fail(infinite ? "label \"infinity\" needs \"direction\" and no \"point\""
+                    : "label " + quote(c.label) + " needs \"point\" and no \"direction\"");
+}
+
+Certificate read_certificate(Reader& r) {
+  Certificate c;
+  begin_object(r, "a certificate must be a JSON object");
+  // An empty combination is allowed for "equilibrium" only; if "property" comes after
+  // "combination", that is decided once the whole object is read.
+  const std::string non_empty = "expected a non-empty array of {\"contact\", \"edge\", \"weight\"}";
+  bool empty_combination = false;
+  std::string_view key;
+  while (r.next_key(key)) {
+    c.keys.insert(key);
+    if (key == "wrenchkit_certificate") {
+      const std::string_view v = r.peek() == Kind::number ? r.number() : "";
+      if (v != "1" && v != "2") r.fail("expected the integer 1 or 2");
+      c.version = v == "2" ? 2 : 1;
+    } else if (key == "property") {
+      const std::string_view p = r.peek() == Kind::string ? r.string_view() : "";
+      if (p != "force_closure" && p != "form_closure" && p != "equilibrium" && p != "motion" && p != "hold")
+        r.fail("expected \"force_closure\", \"form_closure\", \"equilibrium\", \"motion\" or \"hold\"");
+      c.property = p;
+      c.reading = p == "form_closure" ? Reading::frictionless : Reading::friction;
+      c.equilibrium = p == "equilibrium";
+      c.motion = p == "motion";
+      c.hold = p == "hold";
+    } else if (key == "holds") {
+      if (r.peek() == Kind::string) {  // "depends": property "hold" only (checked once the property is known)
+        if (r.string_view() != "depends") r.fail("expected true or false (or \"depends\" for property \"hold\")");
+        c.depends = true;
+      } else {
+        if (r.peek() != Kind::boolean) r.fail("expected true or false");
+        c.holds = r.boolean();
+      }
+    } else if (key == "combination") {
+      if (r.peek() != Kind::array)
+        r.fail(c.equilibrium ? "expected an array of {\"contact\", \"edge\", \"weight\"}" : non_empty);
+      r.begin_array();
+      c.combination.reserve(8);
+      while (r.next_item()) c.combination.push_back(read_term(r, true, "combination", c.combination.size()));
+      if (c.combination.empty() && c.keys.count("property") && !c.equilibrium && !c.hold) r.fail(non_empty);
+      empty_combination = c.combination.empty();
+    } else if (key == "independent") {
+      read_fixed(r, 3, "an array of three {\"contact\", \"edge\"}",
+                 [&](std::size_t k) { c.independent.push_back(read_term(r, false, "independent", k).ref); });
+    } else if (key == "twist") {
+      read_fixed(r, 3, "an array of three rationals [vx, vy, w]",
+                 [&](std::size_t k) { c.twist[k] = read_rational_text(r); });
+    } else if (key == "reading") {
+      read_reading(r, c);
+    } else if (key == "load") {
+      read_fixed(r, 3, "an array of three rationals [fx, fy, m]", [&](std::size_t k) { c.m().load[k] = read_rational(r); });
+    } else if (key == "motion") {
+      c.claim = r.peek() == Kind::string ? r.string_view() : "";
+      if (c.claim != "sticks" && c.claim != "slides" && c.claim != "depends")
+        r.fail("expected \"sticks\", \"slides\" or \"depends\"");
+    } else if (key == "support_forces") {
+      c.m().support_forces = read_list<Pair>(r);
+    } else if (key == "speed_bounds") {
+      c.m().speed_bounds = read_list<Q>(r);
+    } else if (key == "dual") {
+      read_fixed(r, 3, "an array of three rationals [y0, yx, yy]", [&](std::size_t k) { c.m().dual[k] = read_rational(r); });
+    } else if (key == "vertices") {
+      begin_array(r, "expected an array of {\"distribution\", \"support_forces\"}");
+      while (r.next_item()) c.m().vertices.push_back(read_witness(r, false));
+    } else if (key == "sticking") {
+      c.m().sticking = read_witness(r, false);
+    } else if (key == "sliding") {
+      c.m().sliding = read_witness(r, true);
+    } else if (key == "holding") {
+      c.m().holding = read_witness(r, false);
+    } else if (key == "failing") {
+      c.m().failing = read_witness(r, true);
+    } else if (key == "regions") {
+      begin_array(r, "expected an array of region blocks (one per support region)");
+      while (r.next_item()) c.m().regions.push_back(read_block(r));
+    } else {
+      r.fail("unknown key " + quote(key), true);
+    }
+  }
+  if (empty_combination && !c.equilibrium && !c.hold) throw Failure{"combination: " + non_empty};
+  return c;
+}
+
+// The keys that must, and must not, be present (certificate-format.md §3, §3.3).
+void check_keys(const Certificate& c) {
+  auto need = [&c](const char* key) {
+    if (!c.keys.count(key)) throw Failure{std::string("missing required key \"") + key + "\""};
+  };
+  auto ban = [&c](const char* key) {
+    if (c.keys.count(key))
+      throw Failure{std::string("key \"") + key + "\" is not allowed when \"holds\" is " +
+                    (c.holds ? "true" : "false")};
+  };
+  auto no_independent = [&c, &ban] {  // "equilibrium" never uses it
+    if (!c.equilibrium) return ban("independent");
+    if (c.keys.count("independent"))
+      throw Failure{"key \"independent\" is not allowed when \"property\" is \"equilibrium\""};
+  };
+  need("wrenchkit_certificate"), need("property");
+  if (c.depends && !c.hold)
+    throw Failure{"holds: \"depends\" is only a claim of property \"hold\" (expected true or false)"};
+  if (c.motion || c.hold) return;  // check_motion() and check_hold() decide, knowing the scene's support
+  static const char* const motion_keys[] = {"load",    "motion",   "support_forces", "speed_bounds",
+                                            "dual",    "vertices", "sticking",       "sliding",
+                                            "holding", "failing",  "regions"};
+  static const unsigned motion_mask = Key_set::mask(motion_keys);
+  if (c.keys.any(motion_mask))  // (one test for the usual certificate; the loop names the key)
+    for (const char* key : motion_keys)
+      if (c.keys.count(key))
+        throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is " + quote(c.property)};
+  need("holds");
+  if (c.holds) {
+    need("combination");
+    if (c.equilibrium)
+      no_independent();
+    else
+      need("independent");
+    ban("twist"), ban("reading");
+  } else {
+    need("twist"), ban("combination"), no_independent();
+  }
+}
+}  // namespace wrenchkit_checker::detail

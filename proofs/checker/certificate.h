@@ -1,0 +1,135 @@
+// proofs/checker/certificate.h - the certificate object, certificate-format.md §3 (the table of keys), §6.1,
+// §6.4 (blocks), §6.5, §7.1 and §7.5, as read; and the checks of its properties (each in its own file).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "proofs/checker/generators.h"
+
+namespace wrenchkit_checker::detail {
+
+// Texts below (std::string_view) are views of the certificate's text or of its reader's decoded strings:
+// valid while the reader is.
+struct Ref {  // {"contact": i, "edge": E}, the item-th element of the array `list` (in the object at `owner`)
+  std::string owner;  // "" at the top level, else the path of the witness holding `list`, and "."
+  const char* list = "";
+  std::size_t item = 0;
+  std::string_view index, edge;
+  std::size_t contact = SIZE_MAX;  // SIZE_MAX if the index text is too long to be in range
+  std::string path() const { return owner + list + ("[" + std::to_string(item) + "]"); }  // for messages
+};
+struct Term {
+  Ref ref;
+  std::string_view weight;  // its text (grammar checked); rational_value() is the weight
+};
+using Pair = std::array<Q, 2>;
+// A stick witness {"distribution", "support_forces"} or a slide witness {"distribution", "twist",
+// "speed_bounds"} (§6.2); a hold witness {"distribution", "combination", "support_forces"} and a fail witness
+// (a slide witness's keys) of property "hold" (§7).
+struct Witness {
+  std::string path;
+  std::vector<Q> distribution;
+  std::vector<Pair> forces;  // support_forces
+  Q twist[3];
+  std::vector<Q> speeds;  // speed_bounds
+  bool has_combination = false;
+  std::vector<Term> combination;
+  bool has_regions = false;  // format 2 (§7.5): the regions' blocks of this witness's distribution
+  std::vector<struct Block> regions;
+};
+// A region's block (certificate-format.md §6.4): cells (vertices and counter-clockwise index triples) that tile
+// the region, with a force per cell (sticks) or a speed bound per vertex (slides).
+struct Block {
+  std::string path;
+  std::vector<P2> vertices;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<Pair> forces;
+  std::vector<Q> speeds;
+  bool has_forces = false, has_speeds = false;
+};
+// The keys present in a certificate: one bit per key of the format (an unknown key is rejected as it is
+// read, so it is never asked for). Used as the set of keys it replaces: insert() and count().
+class Key_set {
+ public:
+  void insert(std::string_view key) {
+    const int i = index(key);
+    if (i >= 0) bits_ |= 1u << i;
+  }
+  std::size_t count(std::string_view key) const { return (bits_ & bit(key)) != 0; }
+  // The bits of these keys, to test many at once (any()): computed once by the caller, not per certificate.
+  template <std::size_t N>
+  static unsigned mask(const char* const (&keys)[N]) {
+    unsigned m = 0;
+    for (const char* k : keys) m |= bit(k);
+    return m;
+  }
+  bool any(unsigned mask) const { return (bits_ & mask) != 0; }
+
+ private:
+  static int index(std::string_view key) {
+    static const std::string_view known[] = {"wrenchkit_certificate", "property", "holds", "combination",
+                                             "independent", "twist", "reading", "load", "motion",
+                                             "support_forces", "speed_bounds", "dual", "vertices", "sticking",
+                                             "sliding", "holding", "failing", "regions"};
+    for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
+      if (known[i] == key) return i;
+    return -1;
+  }
+  static unsigned bit(std::string_view key) {
+    const int i = index(key);
+    if (i < 0) throw std::logic_error("Key_set: \"" + std::string(key) + "\" is not a key of the format");
+    return 1u << i;
+  }
+  unsigned bits_ = 0;
+};
+
+// The members of properties "motion" (§6) and "hold" (§7), read only when present (each costs allocations).
+struct Motion_part {
+  Q load[3], dual[3];
+  std::vector<Pair> support_forces;
+  std::vector<Q> speed_bounds;
+  std::vector<Witness> vertices;
+  Witness sticking, sliding;
+  Witness holding, failing;  // property "hold", "holds": "depends"
+  std::vector<Block> regions;
+};
+
+struct Certificate {
+  Key_set keys;  // the keys present
+  std::string_view property;
+  Reading reading = Reading::friction;
+  bool equilibrium = false;  // property "equilibrium" (§3.3), read with friction
+  bool motion = false;       // property "motion" (§6)
+  bool hold = false;         // property "hold" (§7), read with friction
+  bool holds = false;
+  bool depends = false;      // "holds": "depends" (property "hold" only)
+  int version = 1;           // "wrenchkit_certificate": 1, or 2 (§7.5: a witness may carry its regions' blocks)
+  std::vector<Term> combination;
+  std::vector<Ref> independent;
+  std::string_view twist[3] = {"0", "0", "0"}, where[2] = {"0", "0"};  // texts; where: reading.point or .direction
+  std::string_view label;  // reading.label
+  // property "motion" (and, in motion_members, the support's blocks that "hold" shares with it)
+  std::string_view claim;  // "sticks", "slides" or "depends"
+  std::unique_ptr<Motion_part> motion_members;  // allocated by m() when a member is read; see members()
+  Motion_part& m() {
+    if (!motion_members) motion_members = std::make_unique<Motion_part>();
+    return *motion_members;
+  }
+};
+
+const Motion_part& members(const Certificate& c);  // its members of "motion" and "hold" (all empty if none)
+Certificate read_certificate(Reader& r);
+void check_keys(const Certificate& c);  // the keys that must, and must not, be present (§3, §3.3)
+
+// The checks of the properties, each against the scene: closure.cpp (§3.1, §3.2), equilibrium.cpp (§3.3),
+// motion.cpp (§6), hold.cpp (§7). Each returns if the certificate proves its claim, else throws the Failure.
+void check_closure(const Certificate& c, const Scene& scene, const Limits& lim);
+void check_equilibrium(const Certificate& c, const Scene& scene, const Limits& lim);
+void check_motion(const Certificate& c, const Scene& scene, const Limits& lim);
+void check_hold(const Certificate& c, const Scene& scene, const Limits& lim);
+
+}  // namespace wrenchkit_checker::detail
