@@ -26,6 +26,7 @@ namespace {
 // the true surface first). Empty (with `why`) when the polytopes exceed the budget.
 struct Ls_summary {
   std::string json, human;
+  bool undecided = false;  // the load's motion
 };
 std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::optional<Rational>& tolerance,
                                                 const Scene& scene, std::string& why) {
@@ -68,12 +69,9 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
       const Motion_answer m = decide_motion(Support_model(scene), p, o.mode, mo);
       j.key("load_motion").object().key("load").rationals(p);
       j.member("motion", motion_name(m.motion)).member("decided_by", decided_by_name(m.decided_by)).end_object();
-      r.human += "the load on the support: " + std::string(motion_name(m.motion)) +
-                 (m.decided_by == Decided_by::float_search ? " (the float twin's certified search on the true limit surface)"
-                  : m.decided_by == Decided_by::polygons   ? " (the exact polygons)"
-                  : m.decided_by == Decided_by::newton     ? " (Newton's method in multiple precision, checked exactly)"
-                                                           : " (within the polygons' resolution: refine --tolerance)") +
-                 "\n";
+      r.human += "the load on the support: " + std::string(motion_name(m.motion)) + " (" +
+                 (m.motion == Motion::undecided ? m.undecided_why : std::string(decided_by_words(m.decided_by))) + ")\n";
+      r.undecided = m.motion == Motion::undecided;
     }
     r.json = j.end_object().take();
     return r;
@@ -112,6 +110,7 @@ std::optional<Ls_summary> region_summary(const Options& o, const Scene& scene, c
                  (m.motion == Motion::undecided ? " (" + m.undecided_why + ")"
                                                 : " (a certificate over the regions' cells, accepted by the checker)") +
                  "\n";
+    out.undecided = m.motion == Motion::undecided;
   }
   out.json = j.end_object().take();
   return out;
@@ -129,6 +128,10 @@ struct Analysis {
   std::optional<Hold_item> hold;  // contacts, a support and an in-plane load: the two together
   std::vector<std::pair<std::string, std::string>> skipped;
   std::optional<std::pair<Vec2, Vec2>> gravity_off;  // body.com, the support's centre of pressure
+  // Some answer is undecided (the exit code is 3).
+  bool undecided() const {
+    return (limit_surface && limit_surface->undecided) || (hold && hold->answer.verdict == Hold_verdict::undecided);
+  }
 };
 
 Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, const std::string& scene_text,
@@ -201,7 +204,7 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
   const Analysis a = analyze(o, o.tolerance, scene_text, source);
   if (o.json) {
     std::cout << json_answer([&](Json_writer& w) { write_analysis(w, o, a, command); }, 2048) << "\n";
-    return kAnswered;
+    return a.undecided() ? kUndecided : kAnswered;
   }
   std::cout << "scene: " << (a.scene.name.empty() ? source : a.scene.name) << "\n" << closure_human(a.closure);
   if (a.equilibrium) std::cout << equilibrium_human(*a.equilibrium);
@@ -221,7 +224,7 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
                               : std::string())
             << "\n"
             << "every certificate accepted by the independent checker (exact arithmetic)\n";
-  return kAnswered;
+  return a.undecided() ? kUndecided : kAnswered;
 }
 
 }  // namespace wrenchkit::cli

@@ -64,11 +64,13 @@ std::string vec_text(const std::array<Rational, 3>& v) {
 }
 
 int write_answer(const Options& o, const std::function<void(Json_writer&)>& json,
-                 const std::function<std::string()>& text) {
+                 const std::function<std::string()>& text, bool undecided) {
   if (o.json) std::cout << json_answer(json, 4096) << "\n";
   else std::cout << text();
-  return kAnswered;
+  return undecided ? kUndecided : kAnswered;
 }
+
+std::string undecided_advice(Mode mode) { return mode == Mode::float_only ? "; use --mode hybrid or exact" : ""; }
 
 std::string scene_line(const std::string& name, const std::string& source) {
   return "scene: " + (name.empty() ? source : name) + "\n";
@@ -126,7 +128,7 @@ Ended failure_of(std::exception_ptr e) {
 }
 
 std::string cli_message(Status s, const std::string& message) {
-  return s == Status::undecided ? message + "; use --mode hybrid or exact" : message;
+  return s == Status::undecided ? message + undecided_advice(Mode::float_only) : message;
 }
 
 int report(const Ended& e) {

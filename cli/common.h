@@ -83,7 +83,7 @@ struct Failure : std::runtime_error {
   Status status;
 };
 // The one place where the command line meets how an answer ended. cli_message: the engine's message as the
-// CLI writes it (an undecided answer gets the advice to change mode); answered: a pipeline item itself when
+// CLI writes it (an undecided status comes only from the float twin: it gets the advice to change mode); answered: a pipeline item itself when
 // it was answered, else its Failure; failure_of: the status and message of the exception in flight
 // (Usage_error → bad_input with its own prefix, see `usage`); report: the stderr line of a single command and
 // its exit code (docs/cli.md).
@@ -104,9 +104,13 @@ int report(const Ended& e);
 Request request_of(const Options& o);
 
 // Writes a single command's answer: with --json its JSON line (the members `json` writes, in braces), else its
-// text for people (each made only when needed); returns kAnswered.
+// text for people (each made only when needed); returns kAnswered, or kUndecided when the answer says undecided
+// (the one exit-code rule: an undecided answer exits 3 in every output form and mode).
 int write_answer(const Options& o, const std::function<void(Json_writer&)>& json,
-                 const std::function<std::string()>& text);
+                 const std::function<std::string()>& text, bool undecided = false);
+// What can help an undecided answer in this mode: "; use --mode hybrid or exact" in float mode, else nothing (the
+// answer's own reason says what is left).
+std::string undecided_advice(Mode mode);
 // The writer of a support's answer by its kind (exact/pipeline/support_answer.h): points with every force given, the
 // same by the twin alone (--mode float), some force not given (with regions or not: its writers add the regions'
 // statics), regions with every force given (sliding and limit-surface alike).

@@ -61,12 +61,21 @@ void write_hold(Json_writer& w, const Hold_item& r) {
         if (a.has_support) write_support_forces(w, a.holding->support.forces);
       }
       break;
+    case Hold_verdict::impending:  // just held; the motion it may slip with (its power meets the friction's)
+      if (a.impending) {
+        write_contact_forces(w, a.impending->holding);
+        if (a.has_support) write_support_forces(w, a.impending->holding.support.forces);
+      }
+      write_motion(w.key("motion"), a.impending ? a.impending->twist.twist : a.failing->twist);
+      break;
     case Hold_verdict::fails:
       write_motion(w.key("motion"), a.failing->twist);
       break;
     case Hold_verdict::depends:
-      w.key("witnesses").object().key("holds").object().key("distribution").rationals(a.holding->support.distribution);
-      w.end_object().key("fails").object().key("distribution").rationals(a.failing->distribution);
+      w.key("witnesses").object().key("holds").object().member("holds", hold_word(a.held_as));
+      w.key("distribution").rationals(a.holding->support.distribution);
+      w.end_object().key("fails").object().member("holds", hold_word(a.moved_as));
+      w.key("distribution").rationals(a.failing->distribution);
       write_motion(w.key("motion"), a.failing->twist);
       w.end_object().end_object();
       break;
@@ -111,12 +120,20 @@ std::string hold_human(const Hold_item& r) {
   s << "\n";
   switch (a.verdict) {
     case Hold_verdict::holds:
-      s << "holds: yes — the contacts and the support's friction can balance the load";
+      s << "holds: yes — the contacts and the support's friction balance the load with margin";
       if (a.unknown) s << " under every admissible distribution (every extreme one holds)";
       s << "\n";
       if (a.holding) s << "  " << forces_text(*a.holding, a.has_support) << " cancel the load exactly\n";
       if (a.holding && !a.holding->support.regions.empty())
         s << "  with the regions' friction as forces on " << a.cells << " cells, each in its disc at the cell's pressure centroid\n";
+      break;
+    case Hold_verdict::impending:
+      s << "holds: impending — the contacts and the support's friction can just balance the load";
+      if (a.unknown) s << " under every admissible distribution (every extreme one holds it at the limit)";
+      s << ", with no margin: it may start to slip in " << motion_words(a.impending ? a.impending->twist.twist : a.failing->twist)
+        << " (twist " << vec_text(a.impending ? a.impending->twist.twist : a.failing->twist)
+        << "; every contact allows it, and the load's power meets the friction's exactly)\n";
+      if (a.impending) s << "  " << forces_text(a.impending->holding, a.has_support) << " cancel the load exactly\n";
       break;
     case Hold_verdict::fails:
       s << "holds: no — the body moves: " << motion_words(a.failing->twist) << " (twist "
@@ -127,9 +144,12 @@ std::string hold_human(const Hold_item& r) {
         s << "  (the regions' friction bounded by speed bounds at the vertices of " << a.cells << " cells)\n";
       break;
     case Hold_verdict::depends:
-      s << "holds: depends on the distribution — it holds with f = " << distribution_text(a.holding->support.distribution)
-        << " and fails with f = " << distribution_text(a.failing->distribution) << " (then "
-        << motion_words(a.failing->twist) << ")\n";
+      s << "holds: depends on the distribution — it "
+        << (a.held_as == Hold_verdict::holds ? "holds" : "is just held (impending)") << " with f = "
+        << distribution_text(a.holding->support.distribution) << " and "
+        << (a.moved_as == Hold_verdict::fails ? "fails" : "is just held (impending)") << " with f = "
+        << distribution_text(a.failing->distribution) << " (then " << motion_words(a.failing->twist)
+        << (a.moved_as == Hold_verdict::fails ? "" : " is admitted") << ")\n";
       break;
     case Hold_verdict::undecided:
       s << "holds: undecided — " << a.undecided_why << "\n";
@@ -150,12 +170,13 @@ int run_hold(const Options& o, const std::string& scene_text, const std::string&
   const Hold_item r = answered(answer_hold(scene_text, source, request_of(o)));
   if (!o.certificate_file.empty()) {
     if (r.certificate.empty())
-      throw Failure(Status::undecided, cli_message(Status::undecided, "hold is undecided: no certificate to write (" +
-                                                                          r.answer.undecided_why + ")"));
+      throw Failure(Status::undecided, "hold is undecided: no certificate to write (" + r.answer.undecided_why + ")" +
+                                           undecided_advice(o.mode));
     write_file(o.certificate_file, r.certificate + "\n");
   }
   return write_answer(o, [&](Json_writer& w) { write_hold(w, r); },
-                      [&] { return scene_line(r.scene.name, source) + hold_human(r); });
+                      [&] { return scene_line(r.scene.name, source) + hold_human(r); },
+                      r.answer.verdict == Hold_verdict::undecided);
 }
 
 }  // namespace wrenchkit::cli

@@ -14,6 +14,7 @@
 #include "exact/cgal/mesh_io.h"
 #include "exact/io/input_error.h"
 #include "exact/io/json_writer.h"
+#include "exact/numbers/vectors.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
@@ -136,6 +137,14 @@ std::string certificate_line(const Support_item& r) {
   return "";
 }
 
+// The twist a load on the surface may slip with: the one distribution's, or (over F) the one for every distribution.
+const Vec3q* impending_twist(const Motion_answer& m) {
+  if (m.motion != Motion::impending) return nullptr;
+  return m.impending ? &m.impending->twist.twist : &m.sliding->twist;
+}
+
+std::string slip_text(const Vec3q& q) { return "the twist " + tv(q) + ", " + motion_words(q); }
+
 // The load's motion, whatever the support (exact/sliding/motion.h): "load", "motion", "motion_decided_by", and how it
 // was decided — every force given: the float search's twists and its sliding twist (points), the certificate's cells,
 // the gauge's estimate and the sliding twist (regions); some force not given: each extreme distribution's verdict,
@@ -144,18 +153,22 @@ void write_motion(Json_writer& w, const Support_item& r, const Vec3q& load) {
   const Motion_answer& m = *r.motion;
   w.key("load").rationals(load).member("motion", motion_name(m.motion));
   w.member("motion_decided_by", decided_by_name(m.decided_by));
+  if (const Vec3q* slip = impending_twist(m))  // on the surface: the slip it admits (every kind of support)
+    w.key("impending_twist").rationals(*slip).member("impending_motion", motion_words(*slip));
   if (r.kind == Support_kind::unknown) {
     w.key("per_extreme_distribution").array();
     for (const Motion v : m.per_vertex) w.string(motion_name(v));
     w.end_array();
     if (m.motion == Motion::depends) {  // the forces too when the sticking distribution was found over F
-      w.key("witnesses").object().key("sticks").object().key("distribution").rationals(m.sticking->distribution);
+      w.key("witnesses").object().key("sticks").object().member("motion", motion_name(m.held_as));
+      w.key("distribution").rationals(m.sticking->distribution);
       if (m.decided_by != Decided_by::vertices) {
         w.key("support_forces").array();
         for (const Vec2& f : m.sticking->forces) w.array().rational(f.x).rational(f.y).end_array();
         w.end_array();
       }
-      w.end_object().key("slides").object().key("distribution").rationals(m.sliding->distribution);
+      w.end_object().key("slides").object().member("motion", motion_name(m.moved_as));
+      w.key("distribution").rationals(m.sliding->distribution);
       w.end_object().end_object();
     }
     if (m.motion == Motion::slides) w.key("separating_twist").rationals(m.sliding->twist);
@@ -181,16 +194,24 @@ std::string motion_text(const Support_item& r, const Vec3q& load) {
   const Motion_answer& m = *r.motion;
   std::ostringstream s;
   s << "load " << tv(load) << ": ";
+  const Vec3q* slip = impending_twist(m);
   if (r.kind == Support_kind::unknown) {
     switch (m.motion) {
       case Motion::sticks: s << "sticks for every admissible distribution (every extreme one sticks)\n"; break;
+      case Motion::impending:
+        s << "impending for every admissible distribution: on every one's limit surface (every extreme one can just "
+             "hold it, and "
+          << slip_text(*slip) << " meets every one's friction power)\n";
+        break;
       case Motion::slides:
         s << "slides for every admissible distribution (the twist " << tv(m.sliding->twist)
           << " drives it past every one's limit surface)\n";
         break;
       case Motion::depends:
-        s << "depends on the distribution: it sticks with f = " << distribution_text(m.sticking->distribution)
-          << " and slides with f = " << distribution_text(m.sliding->distribution) << "\n";
+        s << "depends on the distribution: it " << (m.held_as == Motion::sticks ? "sticks" : "is on the limit surface")
+          << " with f = " << distribution_text(m.sticking->distribution) << " and "
+          << (m.moved_as == Motion::slides ? "slides" : "is on the limit surface") << " with f = "
+          << distribution_text(m.sliding->distribution) << "\n";
         break;
       case Motion::undecided: s << "undecided: " << m.undecided_why << "\n"; break;
     }
@@ -198,29 +219,30 @@ std::string motion_text(const Support_item& r, const Vec3q& load) {
     s << motion_name(m.motion);
     if (m.motion == Motion::sticks)
       s << " (forces on " << m.cells << " cells of the regions, each strictly inside its friction disc)\n";
+    else if (m.motion == Motion::impending)
+      s << " (on the limit surface: forces on " << m.cells << " cells in their closed friction discs, and "
+        << slip_text(*slip) << " meets the regions' friction power exactly)\n";
     else if (m.motion == Motion::slides)
       s << " (the twist " << tv(m.sliding->twist) << " with speed bounds at the vertices of " << m.cells
-        << " cells: its power bound is at most q.p)\n";
+        << " cells: its power bound is below q.p)\n";
     else
       s << ": " << m.undecided_why << "\n";
   } else if (r.kind == Support_kind::points_twin) {
     s << motion_name(m.motion) << " (the float twin's certified search on the true surface, " << m.search_twists
       << " twists)\n";
     if (m.motion == Motion::slides)
-      s << "  a twist with h(q) <= q.p: (" << float_number(m.search_twist[0]) << ", " << float_number(m.search_twist[1])
+      s << "  a twist with h(q) < q.p: (" << float_number(m.search_twist[0]) << ", " << float_number(m.search_twist[1])
         << ", " << float_number(m.search_twist[2]) << ")\n";
   } else {
     s << motion_name(m.motion) << "  (";
     if (r.polytopes_built)
       s << "gauge between " << gauge_text(r.gauge_out) << " and " << gauge_text(r.gauge_in)
-        << "; sticks if < 1, slides if >= 1; ";
-    s << "decided by "
-      << (m.decided_by == Decided_by::float_search ? "the float twin's certified search on the true surface"
-          : m.decided_by == Decided_by::polygons   ? "the polygons"
-          : m.decided_by == Decided_by::newton     ? "Newton's method in multiple precision, checked exactly"
-                                                   : "nothing")
-      << ")\n";
-    if (m.motion == Motion::undecided) s << "  undecided: refine with more --sides or a smaller --tolerance\n";
+        << "; sticks if < 1, slides if > 1, on the surface if 1; ";
+    s << "decided by " << decided_by_words(m.decided_by) << ")\n";
+    if (slip)
+      s << "  on the limit surface: friction can just hold it, and it may slip with " << slip_text(*slip)
+        << " (its power meets the friction's exactly)\n";
+    if (m.motion == Motion::undecided) s << "  undecided: " << m.undecided_why << "\n";
   }
   return s.str() + certificate_line(r);
 }
@@ -493,8 +515,10 @@ int run_limit_surface(const Options& o, const std::string& text, const std::stri
                       "to list or draw (--list, --off, --obj, --ply, --svg need every force)");
   if (!o.certificate_file.empty()) {
     if (r.certificate.empty())
-      throw Failure(Status::undecided, cli_message(Status::undecided, "the load's motion is undecided: no certificate to "
-                                                                      "write"));
+      throw Failure(Status::undecided, "the load's motion is undecided: no certificate to write" +
+                                           (r.motion && !r.motion->undecided_why.empty() ? " (" + r.motion->undecided_why + ")"
+                                                                                          : std::string()) +
+                                           undecided_advice(o.mode));
     write_file(o.certificate_file, r.certificate + "\n");
   }
   // Every mesh is made before any file is written (a coordinate beyond the doubles is an error, nothing written).
@@ -505,7 +529,8 @@ int run_limit_surface(const Options& o, const std::string& text, const std::stri
   return write_answer(o, [&](Json_writer& w) {
     answer_json(w, lo, r);
     write_mesh_coordinates(w, lo);
-  }, [&] { return answer_text(lo, r, source) + mesh_coordinates_text(lo); });
+  }, [&] { return answer_text(lo, r, source) + mesh_coordinates_text(lo); },
+                      r.motion && r.motion->motion == Motion::undecided);
 }
 
 }  // namespace wrenchkit::cli

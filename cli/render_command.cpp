@@ -160,20 +160,21 @@ const char* kMotion = "#c0392b";
 // (with the sense) or its translation direction.
 std::string render_hold(const Scene& s, const Hold_item& h, const std::string& source) {
   const Hold_answer& a = h.answer;
-  const std::optional<std::array<Rational, 3>> motion =
-      a.failing && (a.verdict == Hold_verdict::fails || a.verdict == Hold_verdict::depends)
-          ? std::optional<std::array<Rational, 3>>(a.failing->twist)
-          : std::nullopt;
+  // The motion of the certificate: the one that breaks the hold, or on the boundary the one the load may slip with.
+  const std::optional<Vec3q> motion = a.impending ? std::optional<Vec3q>(a.impending->twist.twist)
+                                      : a.failing ? std::optional<Vec3q>(a.failing->twist)
+                                                  : std::nullopt;
   Bounds b;
   add_scene_bounds(b, s);
   if (s.support)
     for (const Support_point& p : s.support->points) b.add(to_p2(p.at));
   if (motion && (*motion)[2] != 0)
     b.add({Rational(-(*motion)[1] / (*motion)[2]).get_d(), Rational((*motion)[0] / (*motion)[2]).get_d()});
-  const std::string verdict = a.verdict == Hold_verdict::holds   ? "holds"
-                              : a.verdict == Hold_verdict::fails ? "does not hold"
-                              : a.verdict == Hold_verdict::depends ? "depends on the distribution"
-                                                                   : "undecided";
+  const std::string verdict = a.verdict == Hold_verdict::holds       ? "holds (with margin)"
+                              : a.verdict == Hold_verdict::impending ? "impending (just held: it may slip)"
+                              : a.verdict == Hold_verdict::fails     ? "does not hold"
+                              : a.verdict == Hold_verdict::depends   ? "depends on the distribution"
+                                                                     : "undecided";
   Svg_canvas c = b.canvas(title_of(s, source), "hold: the contacts and the support's friction against the load");
   const std::vector<Generator> gens = generators(s, Reading::friction);
   draw_scene(c, s, gens, false);
@@ -208,10 +209,14 @@ std::string render_hold(const Scene& s, const Hold_item& h, const std::string& s
   c.legend(swatch(kCone, 0.55), "contacts: friction cones; arrows: contact normals");
   if (s.support) c.legend(swatch(kSupport, 0.5), "support points: discs grow with mu*f (hollow: force unknown)");
   if (s.load) c.legend(swatch(kLoad, 1), "load");
-  if (motion) c.legend(swatch(kMotion, 1), "the motion of the certificate's twist (" + motion_words(*motion) + ")");
+  if (motion)
+    c.legend(swatch(kMotion, 1), std::string(a.verdict == Hold_verdict::impending ? "the slip the load may start: "
+                                                                                  : "the motion of the certificate's twist: ") +
+                                     motion_words(*motion));
   c.caption("hold: " + verdict + " (decided by " + decided_by_text(a) + ")");
   if (a.verdict == Hold_verdict::depends)
-    c.caption("holds with f = " + distribution_text(a.holding->support.distribution) + "; the motion drawn is the one with f = " +
+    c.caption(std::string(a.held_as == Hold_verdict::holds ? "holds" : "just held") + " with f = " +
+              distribution_text(a.holding->support.distribution) + "; the motion drawn is the one with f = " +
               distribution_text(a.failing->distribution));
   return c.finish();
 }
@@ -224,10 +229,11 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
   if (o.sides && what != Picture::limit_surface) throw Usage_error("--sides goes with --what limit-surface");
   const Scene s = read_scene(text, o.limits, source);
   if (what == Picture::hold) {
-    const std::string svg = render_hold(s, answered(answer_hold(text, source, request_of(o))), source);
+    const Hold_item h = answered(answer_hold(text, source, request_of(o)));
+    const std::string svg = render_hold(s, h, source);
     if (!o.output.empty()) write_file(o.output, svg);
     else std::cout << svg;
-    return kAnswered;
+    return h.answer.verdict == Hold_verdict::undecided ? kUndecided : kAnswered;
   }
   if (what == Picture::limit_surface) {
     const std::string svg = render_limit_surface_svg(s, o.sides.value_or(32));

@@ -2,10 +2,12 @@
 // accept a certificate whose claim is false: whenever it accepts, the exact engine must agree with
 // the claim (soundness, differential against the engine). For property "motion" (sliding) on a
 // support the engine reads (every force given), the float twin's certified search on the true limit
-// surface must not decide the opposite; unknown distributions have no engine oracle yet. Both sides
-// say "sticks" only for the interior of a three-dimensional limit surface and "slides" on its boundary;
-// when LS is flat (friction at fewer than two distinct points) the twin's "sticks" means the relative
-// interior, which has no interior point: there the checker must only ever accept "slides".
+// surface must not decide the opposite; unknown distributions have no engine oracle yet. "sticks" is the
+// interior of a three-dimensional limit surface; format 3 tells the boundary ("impending") from the outside
+// ("slides"), formats 1 and 2 call both "slides" (and "holds": true is the closed set there), so an older claim
+// is compared with the engine's answer read the old way. The twin tells the interior from the rest only. When
+// LS is flat (friction at fewer than two distinct points) it has no interior: the checker must never accept
+// "sticks" there.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -46,6 +48,33 @@ std::string_view value_of(std::string_view json, std::string_view key) {
   std::string_view v = json.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i);
   while (!v.empty() && (v.back() == ' ' || v.back() == '\n' || v.back() == '\r' || v.back() == '\t')) v.remove_suffix(1);
   return v;
+}
+
+// The certificate's format ("wrenchkit_certificate"): 1, 2 or 3.
+int version_of(std::string_view cert) {
+  const std::string_view v = value_of(cert, "wrenchkit_certificate");
+  return v == "3" ? 3 : v == "2" ? 2 : 1;
+}
+
+// The engine's motion as a claim of the format: before format 3 the boundary was "slides" (and "depends" needed a
+// distribution strictly inside).
+std::string motion_claim(const wrenchkit::Motion_answer& m, int version) {
+  using wrenchkit::Motion;
+  if (version >= 3 || m.motion == Motion::sticks) return wrenchkit::motion_name(m.motion);
+  if (m.motion == Motion::depends && m.held_as == Motion::sticks) return "depends";
+  return "slides";
+}
+
+// The engine's hold verdict as the claim's JSON value: before format 3 "true" was the closed set (and "depends"
+// needed a distribution that fails strictly).
+std::string hold_claim(const wrenchkit::Hold_answer& a, int version) {
+  using wrenchkit::Hold_verdict;
+  Hold_verdict v = a.verdict;
+  if (version < 3 && (v == Hold_verdict::impending || (v == Hold_verdict::depends && a.moved_as != Hold_verdict::fails)))
+    v = Hold_verdict::holds;
+  if (v == Hold_verdict::holds) return "true";
+  if (v == Hold_verdict::fails) return "false";
+  return "\"" + std::string(wrenchkit::hold_word(v)) + "\"";
 }
 
 }  // namespace
@@ -107,15 +136,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         exact_p[k] = *wrenchkit::parse_rational(c.find("load")->items[k].text, false, unlimited, why);
       }
       const wrenchkit::Motion_answer m = wrenchkit::decide_on_regions(*scene.support, exact_p);
-      if (m.motion != wrenchkit::Motion::undecided && (m.motion == wrenchkit::Motion::slides) != (claim == "slides")) {
-        std::cerr << "checker accepted \"" << claim << "\" on a support with regions; the engine certifies the opposite\n";
+      if (m.motion != wrenchkit::Motion::undecided && motion_claim(m, version_of(cert)) != claim) {
+        std::cerr << "checker accepted \"" << claim << "\" on a support with regions; the engine certifies "
+                  << motion_claim(m, version_of(cert)) << "\n";
         std::abort();
       }
       return 0;
     }
     const wrenchkit::Ls_support merged = wrenchkit::merge_support(*scene.support);
     if (merged.points.size() < 2) {  // coincident points merged, rho = 0 dropped: LS is flat (or {0})
-      if (claim != "slides") {
+      if (claim == "sticks") {
         std::cerr << "checker accepted \"" << claim << "\" on a flat limit surface, which has no interior\n";
         std::abort();
       }
@@ -123,7 +153,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     const wrenchkit::fl::Motion_answer a = wrenchkit::fl::classify_load(wrenchkit::twin_support(merged), p, 20000);
     if (a.motion != wrenchkit::fl::Motion_twin::undecided &&
-        (a.motion == wrenchkit::fl::Motion_twin::slides) != (claim == "slides")) {
+        (a.motion == wrenchkit::fl::Motion_twin::sticks) != (claim == "sticks")) {
       std::cerr << "checker accepted \"" << claim << "\"; the certified float search decides the opposite\n";
       std::abort();
     }
@@ -138,7 +168,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const wrenchkit::Hold_answer a = wrenchkit::decide_hold(scene, wrenchkit::Mode::hybrid);
     if (a.verdict == wrenchkit::Hold_verdict::undecided) return 0;
     const std::string_view claim = value_of(cert, "holds");
-    const std::string engine = a.verdict == wrenchkit::Hold_verdict::depends ? "\"depends\"" : wrenchkit::hold_word(a.verdict);
+    const std::string engine = hold_claim(a, version_of(cert));
     if (claim != engine) {
       std::cerr << "checker accepted hold " << claim << "; the engine certifies " << engine << "\n";
       std::abort();

@@ -308,7 +308,7 @@ TEST(UnknownMotion, TheDinnerPlateDepends) {
 TEST(UnknownMotion, RandomAnswersAgreeWithTheirWitnesses) {
   std::mt19937_64 rng(test::seed(424242));
   std::uniform_int_distribution<int> coord(-4, 4), small(-12, 12);
-  int decided = 0, counts[4] = {0, 0, 0, 0};
+  int decided = 0, counts[5] = {0, 0, 0, 0, 0};
   for (int trial = 0; trial < 120; ++trial) {
     std::string pts;
     const int k = 4 + trial % 3;
@@ -344,18 +344,24 @@ TEST(UnknownMotion, RandomAnswersAgreeWithTheirWitnesses) {
         expect_witness_holds(*s.support, a, *w, p);
       }
     } else if (m.motion == Motion::slides) {
-      EXPECT_TRUE(slides_for_every(*s.support, a, p, m.sliding->twist)) << text;
+      EXPECT_TRUE(slides_for_every(*s.support, a, p, m.sliding->twist, true)) << text;
+    } else if (m.motion == Motion::impending) {  // every vertex held in its closed set, one twist meeting every bound
+      EXPECT_TRUE(slides_for_every(*s.support, a, p, m.sliding->twist, false)) << text;
+      EXPECT_FALSE(slides_for_every(*s.support, a, p, m.sliding->twist, true)) << text;
+      EXPECT_EQ(m.vertices.size(), v.size()) << text;
     } else {
       ASSERT_TRUE(m.sticking && m.sliding) << text;
-      expect_witness_holds(*s.support, a, *m.sticking, p);
+      EXPECT_TRUE(m.held_as == Motion::sticks || m.moved_as == Motion::slides) << text;  // one of them strictly
+      if (m.held_as == Motion::sticks) expect_witness_holds(*s.support, a, *m.sticking, p);
       EXPECT_TRUE(a.contains(*s.support, m.sliding->distribution)) << text;
-      EXPECT_TRUE(slide_witness(*s.support, m.sliding->distribution, p, m.sliding->twist)) << text;
+      EXPECT_TRUE(slide_witness(*s.support, m.sliding->distribution, p, m.sliding->twist, m.moved_as == Motion::slides))
+          << text;
     }
   }
   EXPECT_GT(decided, 40);
-  EXPECT_GT(counts[0], 0);  // some stick, some slide, some depend
-  EXPECT_GT(counts[1], 0);
-  EXPECT_GT(counts[2], 0);
+  EXPECT_GT(counts[static_cast<int>(Motion::sticks)], 0);  // some stick, some slide, some depend
+  EXPECT_GT(counts[static_cast<int>(Motion::slides)], 0);
+  EXPECT_GT(counts[static_cast<int>(Motion::depends)], 0);
 }
 
 // Near the thresholds, through the pipeline with certificates (every one re-checked by the independent checker

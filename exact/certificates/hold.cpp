@@ -1,5 +1,5 @@
-// proofs/certificate-format.md §7: does the body hold? (§7.4 regions, §7.5 format 2). The checker's side:
-// proofs/checker/ (the hold check).
+// proofs/certificate-format.md §7: does the body hold, with margin or just (§7.4 regions, §7.5 format 2, §7.6 format 3:
+// the boundary). The checker's side: proofs/checker/hold.cpp.
 #include "exact/certificates/certificates.h"
 #include "exact/certificates/witnesses.h"
 
@@ -29,14 +29,23 @@ void write_failing(Json_writer& w, const Slide_witness& f, bool support, bool di
   if (f.dual) w.key("dual").rationals(*f.dual);
 }
 
+// On the boundary, one distribution: the closed hold witness and the motion that meets the friction's bound, each
+// region's block with the cells' forces and the corners' speed bounds.
+void write_impending(Json_writer& w, const Hold_impending& h, bool support) {
+  write_combination(w.key("combination"), h.holding.combination);
+  if (support) write_support_forces(w, h.holding.support.forces);
+  write_twist(w, h.twist.twist);
+  if (support) w.key("speed_bounds").rationals(h.twist.speed_bounds);
+  write_blocks(w, h.holding.support.regions, h.twist.regions);
+}
+
 }  // namespace
 
 std::string hold_certificate(const Hold_answer& a) {
   Json_writer w(1024);
-  // Format 2 (§7.5) only where format 1 has no certificate: regions together with a force not given.
-  w.object().member("wrenchkit_certificate", a.regions && a.unknown ? 2 : 1).member("property", "hold");
+  w.object().member("wrenchkit_certificate", 3).member("property", "hold");
   switch (a.verdict) {
-    case Hold_verdict::holds:
+    case Hold_verdict::holds:  // with margin: forces strictly inside, the weighted generators and friction span R³
       w.member("holds", true);
       if (!a.unknown) {
         write_holding(w, *a.holding, a.has_support, false);
@@ -46,11 +55,22 @@ std::string hold_certificate(const Hold_answer& a) {
         w.end_array();
       }
       break;
+    case Hold_verdict::impending:
+      w.member("holds", "impending");
+      if (!a.unknown) {
+        write_impending(w, *a.impending, a.has_support);
+        break;
+      }
+      w.key("vertices").array();  // every vertex held in the closed set, one motion meeting every distribution's bound
+      for (const Hold_witness& v : a.vertices) write_holding(w.object(), v, true, true), w.end_object();
+      w.end_array();
+      write_failing(w, *a.failing, true, false);
+      break;
     case Hold_verdict::fails:
       w.member("holds", false);
       write_failing(w, *a.failing, a.has_support, false);
       break;
-    case Hold_verdict::depends:
+    case Hold_verdict::depends:  // one distribution held (closed), another moved, one of them strictly
       w.member("holds", "depends");
       write_holding(w.key("holding").object(), *a.holding, true, true);
       write_failing(w.end_object().key("failing").object(), *a.failing, true, true);

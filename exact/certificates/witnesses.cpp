@@ -38,6 +38,18 @@ void write_blocks(Json_writer& w, const std::vector<Region_stick_block>& blocks)
   w.end_array();
 }
 
+void write_blocks(Json_writer& w, const std::vector<Region_stick_block>& forces,
+                  const std::vector<Region_slide_block>& speeds) {
+  if (forces.empty()) return;
+  w.key("regions").array();
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    write_cells(w.object(), forces[k].cells);
+    write_pairs(w.key("forces"), forces[k].forces);
+    w.key("speed_bounds").rationals(speeds[k].speed_bounds).end_object();
+  }
+  w.end_array();
+}
+
 void write_blocks(Json_writer& w, const std::vector<Region_slide_block>& blocks) {
   if (blocks.empty()) return;
   w.key("regions").array();

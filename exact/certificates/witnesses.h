@@ -13,5 +13,9 @@ namespace wrenchkit {
 // block: {"vertices", "triangles", "forces"}; a slide block: {"vertices", "triangles", "speed_bounds"}.
 void write_blocks(Json_writer& w, const std::vector<Region_stick_block>& blocks);
 void write_blocks(Json_writer& w, const std::vector<Region_slide_block>& blocks);
+// A load on the surface (§6.6): per region one block on one set of cells with both, {"vertices", "triangles",
+// "forces", "speed_bounds"} (the stick and slide blocks of an impending witness share their cells).
+void write_blocks(Json_writer& w, const std::vector<Region_stick_block>& forces,
+                  const std::vector<Region_slide_block>& speeds);
 
 }  // namespace wrenchkit

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <array>
+#include <optional>
+#include <string>
 
 #include "exact/numbers/rational.h"
 
@@ -49,5 +51,15 @@ inline Vec3q primitive_vec(const Vec3q& v) {
   const Vec3z z = primitive(v);
   return {Rational(z[0]), Rational(z[1]), Rational(z[2])};
 }
+
+// A twist (or any 3-vector) in double with its small-denominator ratios made exact: each component over the largest
+// by continued fractions, denominators ≤ 10^4, within 10^-10 of it; nothing when one has no such ratio. A load exactly
+// on a limit surface is met by a rational normal twist when one exists with short numbers (a translation along
+// (3, 4), a rotation about (1/2, 0)), which rounding alone misses.
+std::optional<Vec3q> rationalized(const std::array<double, 3>& d);
+
+// The motion a twist describes, in words: "a counter-clockwise rotation about (x, y)", "a clockwise rotation about
+// (x, y)", "a translation along (dx, dy)" (the velocity's direction, primitive integers). t ≠ 0.
+std::string motion_words(const Vec3q& twist);
 
 }  // namespace wrenchkit

@@ -26,7 +26,7 @@ std::optional<Friction_lp_solution> solve(const Friction_lp& q) {
   const std::size_t cols = force + (free_f ? a.unknown.size() : 0);
   std::vector<std::vector<Rational>> A;
   std::vector<Rational> b;
-  // The wrench rows: Σ_j c_j w_j + Σ_ij λ_ij (u_ij, r_i × u_ij) = load (margin), or + t·load = 0 (scale).
+  // The wrench rows: Σ_j c_j w_j + Σ_ij λ_ij (u_ij, r_i × u_ij) = load (margin), or + t·load = rhs (scale).
   for (std::size_t row = 0; row < 3; ++row) {
     std::vector<Rational> r(cols);
     for (std::size_t j = 0; j < m; ++j) r[j] = q.cone[j][row];
@@ -39,7 +39,7 @@ std::optional<Friction_lp_solution> solve(const Friction_lp& q) {
     }
     if (!margin_goal) r[goal] = q.load[row];
     A.push_back(std::move(r));
-    b.push_back(margin_goal ? q.load[row] : Rational(0));
+    b.push_back(margin_goal ? q.load[row] : q.rhs[row]);
   }
   // The discs: Σ_j λ_ij + s_i (+ t where μ_i f_i > 0, margin with f fixed) = μ_i f_i (f_i a column when free).
   for (std::size_t i = 0; i < P; ++i) {

@@ -87,6 +87,7 @@ const char* side_name(Side s) { return s == Side::inner ? "inner" : "outer"; }
 const char* motion_name(Motion m) {
   switch (m) {
     case Motion::sticks: return "sticks";
+    case Motion::impending: return "impending";
     case Motion::slides: return "slides";
     case Motion::depends: return "depends";
     case Motion::undecided: return "undecided";

@@ -166,11 +166,12 @@ class Polygonal_ls {
 
 Vec3q to_rational(const Vec3z& v);
 
-// [LS-3] The motion for a quasistatic load p: sticks iff p is in the interior of LS (relative
-// interior when flat), slides iff not; over an unknown distribution also depends (exact/sliding/motion.h).
-// classify_load certifies it from the polytopes: g_in(p) < 1 ⇒ sticks, g_out(p) ≥ 1 ⇒ slides, else undecided
-// (refine n).
-enum class Motion { sticks, slides, depends, undecided };
+// [LS-3] [SL-1] The motion for a quasistatic load p (exact/sliding/motion.h): sticks — p is in the interior of LS,
+// friction holds it with margin; impending — p is on LS (friction can just hold it, and quasi-static slip is
+// admitted too; every load in a flat LS is on it); slides — p is outside LS; over an unknown distribution also
+// depends. classify_load reads the polytopes alone: g_in(p) < 1 ⇒ sticks, g_out(p) ≥ 1 ⇒ slides — on or outside the
+// true surface, which a witness then tells apart —, else undecided (refine n).
+enum class Motion { sticks, impending, slides, depends, undecided };
 const char* motion_name(Motion m);
 Motion classify_load(const std::optional<Rational>& gauge_inner, const std::optional<Rational>& gauge_outer);
 

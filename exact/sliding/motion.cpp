@@ -43,6 +43,26 @@ const char* decided_by_name(Decided_by d) {
   return "?";
 }
 
+const char* decided_by_words(Decided_by d) {
+  switch (d) {
+    case Decided_by::none: return "nothing";
+    case Decided_by::float_search: return "the float twin's certified search on the true limit surface";
+    case Decided_by::polygons: return "the exact polygons";
+    case Decided_by::newton: return "Newton's method in multiple precision, checked exactly";
+    case Decided_by::flat: return "a flat limit surface (friction at fewer than two places): all of it is surface";
+    case Decided_by::certificate: return "an exact witness (twists and forces tried, each checked exactly)";
+    case Decided_by::vertices: return "the extreme distributions";
+    case Decided_by::twist: return "one twist for every distribution";
+    case Decided_by::minimax: return "the minimax over the extreme distributions";
+    case Decided_by::lp: return "the exact LP over the admissible distributions";
+    case Decided_by::lp_over_f: return "the exact LP over the admissible distributions and inscribed polygons";
+    case Decided_by::zero_load: return "the zero load";
+    case Decided_by::equilibrium: return "the contacts alone";
+    case Decided_by::smoothed_witness: return "the smoothed witness";
+  }
+  return "?";
+}
+
 namespace {
 
 constexpr double kPi = 3.141592653589793;
@@ -58,24 +78,14 @@ const char* const kNoWitness =
     ", but no rational witness was found (the load is too close to the limit surface for the witnesses: the smoothed "
     "twist witness in double and the exact LP on inscribed 256-gons)";
 
-// Friction at fewer than two distinct points under f: LS(f) is flat and has no interior (every load slides on it).
-bool flat(const Support& s, const std::vector<Rational>& f) {
-  const Vec2* first = nullptr;
-  for (std::size_t i = 0; i < s.points.size(); ++i) {
-    if (s.mu_of(s.points[i]) * f[i] == 0) continue;
-    if (first && (first->x != s.points[i].at.x || first->y != s.points[i].at.y)) return false;
-    if (!first) first = &s.points[i].at;
-  }
-  return true;
-}
-
 Vec3q rational_twist(const std::array<double, 3>& w) { return {Rational(w[0]), Rational(w[1]), Rational(w[2])}; }
 
-// Twists that may prove "slides" for the distribution f: the verdict's own twist (the certified search's, Newton's),
-// else the outward normals of LS_out at the load (its normal cone's generators: from the caller's polytope, else one
-// built here); then the load itself, the rotations about the first point with friction (they cost no friction on a
-// flat surface), and the translation (1, 0, 0).
-std::vector<Vec3q> slide_candidates(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
+// Twists that may prove "slides" or "impending" for the distribution f: the verdict's own twist (the certified
+// search's, Newton's), else the outward normals of LS_out at the load (its normal cone's generators: from the caller's
+// polytope, else one built here); then the load itself, the rotations about each point with friction (a facet of LS:
+// on a flat surface they cost no friction), the translation along the load's force, the search's and Newton's twists
+// made rational (continued fractions: an exact normal with short numbers), and the translation (1, 0, 0).
+std::vector<Vec3q> twist_candidates(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
                                     const Points_verdict& d, int sides, const Built_polygons& built) {
   std::vector<Vec3q> c;
   const bool searched = d.decided_by == Decided_by::float_search;
@@ -88,9 +98,10 @@ std::vector<Vec3q> slide_candidates(const Support& s, const std::vector<Rational
   }
   if (!cone && !searched && !d.exact_witness) {
     const Polygonal_ls model(merge_support(s, &f), make_directions(sides));
-    if (model.candidate_count() > kMaxCandidates) return c;
-    const Ls_polytope out = model.build(Side::outer);
-    cone = model.normal_cone(out, Side::outer, p);
+    if (model.candidate_count() <= kMaxCandidates) {
+      const Ls_polytope out = model.build(Side::outer);
+      cone = model.normal_cone(out, Side::outer, p);
+    }
   }
   if (cone)
     for (const Vec3z& g : cone->generators) c.push_back({Rational(g[0]), Rational(g[1]), Rational(g[2])});
@@ -100,22 +111,28 @@ std::vector<Vec3q> slide_candidates(const Support& s, const std::vector<Rational
     if (s.mu_of(pt) * f[i] == 0) continue;
     c.push_back({pt.at.y, -pt.at.x, Rational(1)});  // v(r) = 0
     c.push_back({-pt.at.y, pt.at.x, Rational(-1)});
-    break;
   }
+  if (p[0] != 0 || p[1] != 0) c.push_back({p[0], p[1], Rational(0)});
+  for (const auto& d2 : {std::optional<std::array<double, 3>>(searched ? std::optional<std::array<double, 3>>(d.witness)
+                                                                        : std::nullopt),
+                         d.proposal})
+    if (d2)
+      if (const auto r = rationalized(*d2)) c.push_back(*r);
   c.push_back({Rational(1), Rational(0), Rational(0)});
   return c;
 }
 
-std::optional<Slide_witness> first_slide_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
-                                                 const std::vector<Vec3q>& candidates) {
+template <class Witness, class Find>
+std::optional<Witness> first_of(const std::vector<Vec3q>& candidates, Find find) {
   for (const Vec3q& q : candidates)
-    if (auto w = slide_witness(s, f, p, q)) return w;
+    if (auto w = find(q)) return w;
   return std::nullopt;
 }
 
-// Every force given, points: the verdict (strategies.h points_verdict), then its witness [SL-4]. A sticking verdict
-// without a stick witness may still be a load on a flat surface (friction at fewer than two places): a slide witness
-// then decides "slides".
+// Every force given, points: the verdict (strategies.h points_verdict), then its witness [SL-4] [SL-1]. The verdict
+// "slides" says "not inside": a twist whose power the load's exceeds proves "outside" (slides), one whose power it
+// meets with exact speeds, and forces on that face, prove "on the surface" (impending). A load the verdict leaves
+// undecided — within the search's and the polygons' resolution, or exactly on the surface — is tried for "impending".
 Motion_answer known_points(const Support_model& model, const Vec3q& p, Mode mode, const Motion_options& o) {
   const Support& s = model.support();
   const std::vector<Rational>& f = model.given();
@@ -127,16 +144,31 @@ Motion_answer known_points(const Support_model& model, const Vec3q& p, Mode mode
   r.decided_by = v.decided_by;
   r.search_twists = v.cells;
   r.search_twist = v.witness;
+  std::optional<std::vector<Vec3q>> cands;
+  const auto candidates = [&]() -> const std::vector<Vec3q>& {
+    if (!cands) cands = twist_candidates(s, f, p, v, o.sides, r.motion == Motion::slides ? b : Built_polygons{});
+    return *cands;
+  };
+  const auto slides = [&] {
+    r.sliding = first_of<Slide_witness>(candidates(), [&](const Vec3q& q) { return slide_witness(s, f, p, q); });
+    return r.sliding.has_value();
+  };
+  const auto impending = [&] {
+    r.impending = first_of<Impending_witness>(candidates(), [&](const Vec3q& q) { return impending_witness(s, f, p, q); });
+    return r.impending.has_value();
+  };
+  const auto now = [&](Motion m) {
+    if (r.decided_by != Decided_by::flat) r.decided_by = m == r.motion ? r.decided_by : Decided_by::certificate;
+    r.motion = m;
+  };
   if (r.motion == Motion::sticks) {
-    if (auto w = stick_witness_refined(s, model.admissible(), p, std::max(o.sides, 8), f)) {
-      r.sticking = std::move(*w);
-    } else if (auto sw = first_slide_witness(s, f, p, slide_candidates(s, f, p, v, o.sides, {}))) {
-      r.sliding = std::move(*sw);
-      r.motion = Motion::slides;
-      r.decided_by = Decided_by::certificate;
-    }
+    if (auto w = stick_witness_refined(s, model.admissible(), p, std::max(o.sides, 8), f)) r.sticking = std::move(*w);
+    else if (impending()) now(Motion::impending);
+    else if (slides()) now(Motion::slides);
   } else if (r.motion == Motion::slides) {
-    r.sliding = first_slide_witness(s, f, p, slide_candidates(s, f, p, v, o.sides, b));
+    if (!slides() && impending()) now(Motion::impending);
+  } else if (impending()) {
+    now(Motion::impending);
   }
   if (r.motion == Motion::sticks && !r.sticking &&
       s.points.size() * static_cast<std::size_t>(std::max(o.sides, 8)) > kMaxStickWitnessColumns) {
@@ -145,7 +177,7 @@ Motion_answer known_points(const Support_model& model, const Vec3q& p, Mode mode
                     " columns (support points x sides); the verdict is the float twin's certified search's";
     return r;
   }
-  if (r.motion != Motion::undecided && !r.sticking && !r.sliding) {
+  if (r.motion != Motion::undecided && !r.sticking && !r.sliding && !r.impending) {
     r.uncertified = std::string("the certified search says ") + motion_name(r.motion) + kNoWitness;
     r.motion = Motion::undecided;
   }
@@ -159,11 +191,13 @@ Support with_forces(const Support& s, const std::vector<Rational>& f) {
   return t;
 }
 
-// [RG-3] Does q prove "slides for every distribution" over points and regions? q·p ≥ max_F Σ μ_i f_i u_i (the LP over F,
-// with its dual) plus the regions' slide blocks, refined within max_cells until their bound fits the slack. Exact.
-std::optional<Slide_witness> slides_for_every_regions(const Support& s, const Admissible& a, const Vec3q& p,
-                                                      const Vec3q& q, std::size_t max_cells, std::size_t& cells) {
-  std::optional<Slide_witness> w = slides_for_every(s, a, p, q);
+// [SL-3] [RG-3] Does q prove "outside every limit surface of F" (`strict`; else "on or outside")? q·p > max_F Σ μ_i f_i
+// u_i (the LP over F, with its dual) plus the regions' slide blocks, refined within max_cells until their bound fits
+// the slack. Exact.
+std::optional<Slide_witness> outside_every(const Support& s, const Admissible& a, const Vec3q& p, const Vec3q& q,
+                                           bool strict, std::size_t max_cells, std::size_t& cells) {
+  std::optional<Slide_witness> w = slides_for_every(s, a, p, q, strict);
+  if (!w || s.regions.empty()) return w;
   if (!w) return std::nullopt;
   const Rational power = dot(q, p);
   // The points' bound over F, by LP duality: Σ_given μ_i f_i u_i + y0 W' + yx M'_x + yy M'_y (the LP's maximum).
@@ -172,7 +206,7 @@ std::optional<Slide_witness> slides_for_every_regions(const Support& s, const Ad
   for (std::size_t i = 0; i < s.points.size(); ++i)
     if (s.points[i].force) points += s.mu_of(s.points[i]) * *s.points[i].force * w->speed_bounds[i];
   Region_slide_blocks b = region_slide_blocks(s, q, Rational(power - points), max_cells);
-  if (!b.ok || points + b.bound > power) return std::nullopt;
+  if (!b.ok || (strict ? points + b.bound >= power : points + b.bound > power)) return std::nullopt;
   w->regions = std::move(b.blocks);
   cells = b.cells;
   return w;
@@ -220,175 +254,178 @@ std::optional<Stick_witness> stick_over_f(const Support& s, const Admissible& a,
   return std::nullopt;
 }
 
-// [SL-3] [RG-3] Some force not given: the extreme distributions first, then one twist for all of F, the union's
-// minimax (points, hybrid), and a distribution that sticks; the witnesses of the verdict last (points: the regions'
-// come with their decisions).
+// One distribution's decision: the known-forces strategies on the support with f put in place.
+Motion_answer at_distribution(const Support& s, const std::vector<Rational>& f, const Vec3q& p, Mode mode,
+                              const Motion_options& o) {
+  const Support t = with_forces(s, f);
+  if (!s.regions.empty()) return decide_on_regions(t, p);
+  Admissible known;
+  known.given = f;
+  Motion_options own;
+  own.sides = o.sides;
+  return known_points(Support_model(t, std::move(known)), p, mode, own);
+}
+
+// [SL-3] [RG-3] Some force not given: the extreme distributions first (each by the known-forces decision, with its
+// witness), then what every vertex shares needs one more step:
 //
-//   1. each vertex: points — flat, else its verdict (points_verdict); regions — decide_on_regions with its forces. All
-//      stick: sticks; a stick and a slide: depends; some undecided and the rest alike: undecided;
-//   2. every vertex slides: the vertices' sliding twists (their sum first), each checked by the LP over F (and the
-//      regions' slide blocks, within 500 cells);
-//   3. points, hybrid: the union's minimax — its twist (slides) or its distribution f* = Σ λ_v f_v (depends when f* has
-//      a stick witness);
-//   4. the search for a twist separating p from the union (regions: their power added; blocks within 20 000 cells);
-//   5. a distribution that sticks, by the exact LP over F (depends);
-//   6. else undecided, with the reason.
+//   1. outcomes of two kinds among the vertices: depends (a witness of each kind); some undecided and the rest of one
+//      kind: undecided;
+//   2. every vertex sticks: sticks for every distribution (LS is Minkowski-linear in f);
+//   3. every vertex on its surface: one twist for all of F whose bound the load meets (the vertices' twists, their
+//      sum; the LP over F and the regions' slide blocks) — impending for every distribution; else a mixture of the
+//      vertices sticks (depends);
+//   4. every vertex slides: one twist for all of F whose bound the load exceeds (the vertices' twists, their sum; the
+//      union's minimax in hybrid for points, whose multipliers may instead give a distribution that sticks; the
+//      union's compass search), or a distribution that sticks by the exact LP over F (depends);
+//   5. else undecided, with the reason.
 Motion_answer over_f(const Support_model& model, const Vec3q& p, Mode mode, const Motion_options& o) {
   const Support& s = model.support();
   const Admissible& a = model.admissible();
   const bool regions = model.has_regions();
   const std::vector<std::vector<Rational>>& v = model.extreme();
   Motion_answer r;
-  std::vector<Points_verdict> verdicts;        // points: each vertex's (its twists, for its witness)
-  std::vector<Motion_answer> region_answers;   // regions: each vertex's, with its witness
-  std::vector<Vec3q> twists;                   // the sliding vertices' twists
-  std::optional<std::size_t> sticking_vertex, sliding_vertex;
+  std::vector<Motion_answer> at;  // each vertex's answer, with its witness
+  std::optional<std::size_t> first[3];  // the first vertex that sticks, is on its surface, slides
   for (std::size_t i = 0; i < v.size(); ++i) {
-    Motion m = Motion::undecided;
-    if (regions) {
-      region_answers.push_back(decide_on_regions(with_forces(s, v[i]), p));
-      const Motion_answer& x = region_answers.back();
-      m = x.motion;
-      if (x.sliding) twists.push_back(x.sliding->twist);
-    } else {
-      Points_verdict d;
-      if (flat(s, v[i])) {
-        d.motion = Motion::slides;
-        d.decided_by = Decided_by::flat;
-      } else {
-        d = points_verdict(merge_support(s, &v[i]), p, mode, o.sides);
-      }
-      if (d.motion == Motion::slides && d.decided_by == Decided_by::float_search) twists.push_back(rational_twist(d.witness));
-      if (d.exact_witness) twists.push_back(*d.exact_witness);
-      m = d.motion;
-      verdicts.push_back(std::move(d));
-    }
+    at.push_back(at_distribution(s, v[i], p, mode, o));
+    const Motion m = at.back().motion;
     r.per_vertex.push_back(m);
-    if (m == Motion::sticks && !sticking_vertex) sticking_vertex = i;
-    if (m == Motion::slides && !sliding_vertex) sliding_vertex = i;
+    const int kind = m == Motion::sticks ? 0 : m == Motion::impending ? 1 : m == Motion::slides ? 2 : -1;
+    if (kind >= 0 && !first[kind]) first[kind] = i;
   }
-  const bool all_stick = std::all_of(r.per_vertex.begin(), r.per_vertex.end(), [](Motion m) { return m == Motion::sticks; });
-  const bool all_slide = std::all_of(r.per_vertex.begin(), r.per_vertex.end(), [](Motion m) { return m == Motion::slides; });
-  std::optional<Stick_witness> found;  // a sticking distribution found over F (minimax, lp)
+  const int kinds = (first[0] ? 1 : 0) + (first[1] ? 1 : 0) + (first[2] ? 1 : 0);
   const auto decided = [&](Motion m, Decided_by by) {
     r.motion = m;
     r.decided_by = by;
-  };
-  if (sticking_vertex && sliding_vertex) {
-    decided(Motion::depends, Decided_by::vertices);
-  } else if (all_stick) {
-    decided(Motion::sticks, Decided_by::vertices);
-  } else if (!all_slide) {  // some vertices undecided and none of the other kind: not decided
-    for (std::size_t i = 0; i < r.per_vertex.size(); ++i)
-      if (r.per_vertex[i] == Motion::undecided) {
-        r.undecided_why = "extreme distribution " + std::to_string(i + 1) + " of " + std::to_string(v.size()) +
-                          " is undecided: " +
-                          (regions ? region_answers[i].undecided_why
-                                   : "the load lies between its inscribed and circumscribed " + std::to_string(o.sides) +
-                                         "-gon limit surfaces, within " + gap_text(1 / std::cos(kPi / o.sides) - 1) +
-                                         " of its limit surface (relative, along the load's ray; refine --sides)");
-        break;
-      }
     return r;
-  } else {
-    if (twists.size() > 1) {  // their sum first: a twist between the vertices' own
-      Vec3q sum{};
-      for (const Vec3q& q : twists)
-        for (std::size_t c = 0; c < 3; ++c) sum[c] += q[c];
-      twists.insert(twists.begin(), sum);
-    }
-    const auto slides_for_all = [&](const Vec3q& q, std::size_t max_cells) {
-      r.sliding = regions ? slides_for_every_regions(s, a, p, q, max_cells, r.cells) : slides_for_every(s, a, p, q);
-      return r.sliding.has_value();
-    };
-    for (const Vec3q& q : twists)
-      if (slides_for_all(q, 500)) {
-        decided(Motion::slides, Decided_by::twist);
-        break;
-      }
-    if (r.motion == Motion::undecided && !regions && mode == Mode::hybrid)
-      if (const Union_minimax m = union_minimax(s, v, p); m.found) {
-        if (m.t < 1) {
-          if (slides_for_all(rational_twist(m.q), 0)) decided(Motion::slides, Decided_by::minimax);
-        } else if (m.t > 1 + 1e-9) {  // only margins the doubles resolve
-          std::vector<Rational> l(v.size());
-          Rational total = 0;
-          for (std::size_t j = 0; j < v.size(); ++j) total += l[j] = Rational(m.lambda[j]);
-          std::vector<Rational> f(s.points.size());
-          for (std::size_t j = 0; j < v.size(); ++j)
-            if (l[j] != 0)
-              for (std::size_t i = 0; i < f.size(); ++i) f[i] += l[j] / total * v[j][i];
-          found = smoothed_stick_witness(s, f, p);
-          if (!found) found = precise_witness(s, f, p).sticks;
-          if (found) decided(Motion::depends, Decided_by::minimax);
-        }
-      }
-    if (r.motion == Motion::undecided) {
-      std::function<double(const double*)> common;  // the regions' power, the same for every distribution
-      std::vector<double> mu_r;
-      for (const Support_region& g : s.regions) mu_r.push_back(s.mu_of(g).get_d());
-      if (regions)
-        common = [&](const double* q) {
-          double h = 0;
-          for (std::size_t g = 0; g < s.regions.size(); ++g)
-            if (mu_r[g] != 0) h += mu_r[g] * region_power_double(s.regions[g], q);
-          return h;
-        };
-      if (const auto q = union_search(s, v, p, twists.empty() ? nullptr : &twists.front(), common))
-        if (slides_for_all(*q, kMaxRegionCells)) decided(Motion::slides, Decided_by::twist);
-    }
-    int largest = 0;
-    if (r.motion == Motion::undecided)
-      if ((found = stick_over_f(s, a, p, regions ? 8 : o.sides, largest, r.cells))) decided(Motion::depends, Decided_by::lp);
-    if (r.motion == Motion::undecided) {
-      if (regions)
-        r.undecided_why = "every extreme distribution slides, no twist tried separates the load from the union of the "
-                          "limit surfaces (the regions' slide blocks with up to " + std::to_string(kMaxRegionCells) +
-                          " cells and the LP over the distributions), and no distribution holds it on the regions' "
-                          "coarse cells (inscribed polygons of up to 256 sides): the load is near the boundary of that union";
-      else
-        r.undecided_why = "every extreme distribution slides, no twist tried separates the load from the union of the "
-                          "limit surfaces, and no distribution holds it with forces on inscribed " +
-                          std::to_string(largest ? largest : o.sides) + "-gons: if inside that union, the load is within " +
-                          gap_text(1 - std::cos(kPi / (largest ? largest : o.sides))) +
-                          " of its boundary (relative, along the load's ray)";
-      r.cells = 0;
+  };
+  if (kinds >= 2) {  // one inside (or on) and one outside (or on), one of them strictly
+    const Motion_answer& in = at[*(first[0] ? first[0] : first[1])];
+    const Motion_answer& out = at[*(first[2] ? first[2] : first[1])];
+    r.sticking = in.sticking ? in.sticking : in.impending->forces;
+    r.sliding = out.sliding ? out.sliding : out.impending->twist;
+    r.held_as = in.motion;
+    r.moved_as = out.motion;
+    r.cells = in.cells + out.cells;
+    return decided(Motion::depends, Decided_by::vertices);
+  }
+  for (std::size_t i = 0; i < at.size(); ++i)
+    if (at[i].motion == Motion::undecided) {
+      r.undecided_why = "extreme distribution " + std::to_string(i + 1) + " of " + std::to_string(v.size()) +
+                        " is undecided: " +
+                        (!at[i].undecided_why.empty() ? at[i].undecided_why
+                         : !at[i].uncertified.empty() ? at[i].uncertified
+                                                      : "the load lies between its inscribed and circumscribed " +
+                                                            std::to_string(o.sides) + "-gon limit surfaces, within " +
+                                                            gap_text(1 / std::cos(kPi / o.sides) - 1) +
+                                                            " of its limit surface (relative, along the load's ray; "
+                                                            "refine --sides)");
       return r;
     }
-  }
-  // The witnesses of the verdict.
-  if (regions) {
-    if (r.motion == Motion::sticks)
-      for (const Motion_answer& x : region_answers) {
-        r.vertices.push_back(*x.sticking);
-        r.cells += x.cells;
-      }
-    if (r.motion == Motion::depends) {
-      const Motion_answer& slid = region_answers[*sliding_vertex];
-      r.sticking = found ? *found : *region_answers[*sticking_vertex].sticking;
-      r.sliding = slid.sliding;
-      r.cells = (found ? r.cells : region_answers[*sticking_vertex].cells) + slid.cells;
+  if (first[0]) {  // every vertex sticks
+    for (Motion_answer& x : at) {
+      r.cells += x.cells;
+      r.vertices.push_back(std::move(*x.sticking));
     }
+    return decided(Motion::sticks, Decided_by::vertices);
+  }
+  // Every vertex on its surface, or every vertex outside: one twist for all of F, from the vertices' own (their sum
+  // first: a twist between them).
+  const bool on = first[1].has_value();
+  std::vector<Vec3q> twists;
+  for (const Motion_answer& x : at) twists.push_back(on ? x.impending->twist.twist : x.sliding->twist);
+  if (twists.size() > 1) {
+    Vec3q sum{};
+    for (const Vec3q& q : twists)
+      for (std::size_t c = 0; c < 3; ++c) sum[c] += q[c];
+    twists.insert(twists.begin(), sum);
+  }
+  const auto for_all = [&](const Vec3q& q, std::size_t max_cells) {
+    r.sliding = outside_every(s, a, p, q, !on, max_cells, r.cells);
+    return r.sliding.has_value();
+  };
+  for (const Vec3q& q : twists)
+    if (for_all(q, 500)) {
+      if (!on) return decided(Motion::slides, Decided_by::twist);
+      for (Motion_answer& x : at) {
+        r.cells += x.cells;
+        r.vertices.push_back(std::move(x.impending->forces));
+      }
+      return decided(Motion::impending, Decided_by::twist);
+    }
+  r.cells = 0;
+  std::optional<Stick_witness> found;  // a distribution of F that sticks (depends)
+  if (on) {  // the vertices' surfaces meet the load with different normals: their mixture holds it inside
+    std::vector<Rational> mean(s.points.size());
+    for (const std::vector<Rational>& f : v)
+      for (std::size_t i = 0; i < f.size(); ++i) mean[i] += f[i] / static_cast<long>(v.size());
+    const Motion_answer m = at_distribution(s, mean, p, mode, o);
+    if (m.motion == Motion::sticks) {
+      r.sticking = m.sticking;
+      r.sliding = at[*first[1]].impending->twist;
+      r.moved_as = Motion::impending;
+      r.cells = m.cells + at[*first[1]].cells;
+      return decided(Motion::depends, Decided_by::twist);
+    }
+    r.undecided_why = "every extreme distribution has the load on its limit surface, no twist tried is normal to every "
+                      "one there, and their mean distribution does not hold it inside";
     return r;
   }
-  const int sides = std::max(o.sides, 8);
-  if (r.motion == Motion::sticks) {
-    for (const std::vector<Rational>& f : v) {
-      auto w = stick_witness_refined(s, a, p, sides, f);
-      if (!w) break;
-      r.vertices.push_back(std::move(*w));
+  if (!regions && mode == Mode::hybrid)  // the union's minimax (points): its twist, or its distribution that sticks
+    if (const Union_minimax m = union_minimax(s, v, p); m.found) {
+      if (m.t < 1) {
+        if (for_all(rational_twist(m.q), 0)) return decided(Motion::slides, Decided_by::minimax);
+      } else if (m.t > 1 + 1e-9) {  // only margins the doubles resolve
+        std::vector<Rational> l(v.size());
+        Rational total = 0;
+        for (std::size_t j = 0; j < v.size(); ++j) total += l[j] = Rational(m.lambda[j]);
+        std::vector<Rational> f(s.points.size());
+        for (std::size_t j = 0; j < v.size(); ++j)
+          if (l[j] != 0)
+            for (std::size_t i = 0; i < f.size(); ++i) f[i] += l[j] / total * v[j][i];
+        found = smoothed_stick_witness(s, f, p);
+        if (!found) found = precise_witness(s, f, p).sticks;
+        if (found) {
+          r.sticking = std::move(found);
+          r.sliding = at[*first[2]].sliding;
+          return decided(Motion::depends, Decided_by::minimax);
+        }
+      }
     }
-    if (r.vertices.size() != v.size()) r.vertices.clear();
-  } else if (r.motion == Motion::depends) {
-    r.sticking = found ? found : stick_witness_refined(s, a, p, sides, v[*sticking_vertex]);
-    const std::vector<Rational>& f = v[*sliding_vertex];
-    r.sliding = first_slide_witness(s, f, p, slide_candidates(s, f, p, verdicts[*sliding_vertex], sides, {}));
-    if (!r.sticking || !r.sliding) r.sticking.reset(), r.sliding.reset();
+  {
+    std::function<double(const double*)> common;  // the regions' power, the same for every distribution
+    std::vector<double> mu_r;
+    for (const Support_region& g : s.regions) mu_r.push_back(s.mu_of(g).get_d());
+    if (regions)
+      common = [&](const double* q) {
+        double h = 0;
+        for (std::size_t g = 0; g < s.regions.size(); ++g)
+          if (mu_r[g] != 0) h += mu_r[g] * region_power_double(s.regions[g], q);
+        return h;
+      };
+    if (const auto q = union_search(s, v, p, &twists.front(), common))
+      if (for_all(*q, kMaxRegionCells)) return decided(Motion::slides, Decided_by::twist);
   }
-  if (r.vertices.empty() && !r.sticking && !r.sliding) {
-    r.uncertified = std::string("the answer is ") + motion_name(r.motion) + kNoWitness;
-    r.motion = Motion::undecided;
+  int largest = 0;
+  std::size_t cells = 0;
+  if ((found = stick_over_f(s, a, p, regions ? 8 : o.sides, largest, cells))) {
+    r.sticking = std::move(found);
+    r.sliding = at[*first[2]].sliding;
+    r.cells = cells + at[*first[2]].cells;
+    return decided(Motion::depends, Decided_by::lp);
   }
+  if (regions)
+    r.undecided_why = "every extreme distribution slides, no twist tried separates the load from the union of the "
+                      "limit surfaces (the regions' slide blocks with up to " + std::to_string(kMaxRegionCells) +
+                      " cells and the LP over the distributions), and no distribution holds it on the regions' "
+                      "coarse cells (inscribed polygons of up to 256 sides): the load is near the boundary of that union";
+  else
+    r.undecided_why = "every extreme distribution slides, no twist tried separates the load from the union of the "
+                      "limit surfaces, and no distribution holds it with forces on inscribed " +
+                      std::to_string(largest ? largest : o.sides) + "-gons: if inside that union, the load is within " +
+                      gap_text(1 - std::cos(kPi / (largest ? largest : o.sides))) +
+                      " of its boundary (relative, along the load's ray)";
   return r;
 }
 

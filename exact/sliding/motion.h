@@ -5,9 +5,13 @@
 // are data of the model: one distribution when every force is given, else a polytope whose vertices (the extreme
 // distributions) are enumerated once, on first use. The load p is the wrench the slider applies to the support.
 //
-//   sticks   p is in the interior of LS(f) for every f ∈ F (LS is Minkowski-linear in f: ⇔ at every vertex of F);
-//   slides   p is in the interior of no LS(f) (a load on the limit surface slides; a flat LS has no interior);
-//   depends  some distribution sticks and another slides (F has more than one distribution).
+//   sticks     p is in the interior of LS(f) for every f ∈ F (LS is Minkowski-linear in f: ⇔ at every vertex of F):
+//              friction holds it with margin;
+//   impending  p is on LS(f) for every f ∈ F: friction can just hold it, and quasi-static slip with a twist in the
+//              normal cone there is admitted too (the book's facets — a rotation about a support point — and
+//              vertices); a flat LS (friction at fewer than two distinct points) is all surface;
+//   slides     p is outside LS(f) for every f ∈ F;
+//   depends    two of these occur over F (F has more than one distribution).
 //
 // decide_motion answers with plain witness data — the verdict, how it was decided, the witnesses a certificate is
 // written from (exact/certificates/certificates.h, proofs/certificate-format.md §6) — whatever the support is made
@@ -15,7 +19,10 @@
 //   every force given, points:  the float twin's certified search on the true surface (hybrid, float), the exact
 //                               polygons [LS-3], Newton in multiple precision [SL-6]; then the witness: support forces
 //                               strictly inside their discs (smoothed Newton, SL-6, the exact LP on inscribed N-gons),
-//                               or a twist with rational speed bounds;
+//                               a twist with rational speed bounds whose power the load's exceeds, or on the surface a
+//                               twist with exactly rational speeds whose power the load's meets and forces on the
+//                               face that twist supports (rotations about support points, translations, the load,
+//                               the search's and Newton's twists made rational);
 //   every force given, regions: the twist minimising the power (in double) proposes; cells and slide blocks decide [RG-1];
 //   some force not given:       each vertex of F by the above, then one twist for all of F (the LP over F, the regions'
 //                               slide blocks), the union's minimax (points, hybrid), a distribution that sticks by the
@@ -79,13 +86,17 @@ enum class Decided_by {
   smoothed_witness,  // "smoothed witness": Newton in double proposes, one exact round (hold)
 };
 const char* decided_by_name(Decided_by d);
+// The same for a sentence: "the float twin's certified search on the true limit surface", "the exact polygons", …
+const char* decided_by_words(Decided_by d);
 
 // The witnesses of one distribution f (proofs/certificate-format.md §6.1, §6.4, §7.1):
-//   stick — support forces g_i, one per point, |g_i| < μ_i f_i (hold: ≤), and one stick block per region, that sum to
-//           the load (hold: with the contacts, to −w_L);
+//   stick — support forces g_i, one per point, |g_i| < μ_i f_i (closed, ≤, when the load is on the surface), and one
+//           stick block per region, that sum to the load (hold: with the contacts, to −w_L);
 //   slide — a twist q ≠ 0 with rational speed bounds u_i ≥ |v_i(q)|, one per point, and one slide block per region,
-//           whose power bound the load's power reaches (hold: exceeds). For every distribution of F: `distribution`
-//           empty, the LP dual (y0, yx, yy) over F in `dual`.
+//           whose power bound the load's power exceeds (meets, when the load is on the surface). For every distribution
+//           of F: `distribution` empty, the LP dual (y0, yx, yy) over F in `dual`.
+// A load on the surface has both: forces in the closed discs and a twist whose power bound the load's meets — then
+// every bound is the exact speed, and the twist's plane supports LS(f) at the load.
 struct Stick_witness {
   std::vector<Rational> distribution;  // one force per support point
   std::vector<Vec2> forces;            // one per support point
@@ -99,15 +110,25 @@ struct Slide_witness {
   std::optional<std::array<Rational, 3>> dual;
 };
 
+struct Impending_witness {
+  Stick_witness forces;  // closed discs
+  Slide_witness twist;   // its power bound met
+};
+
 struct Motion_answer {
   Motion motion = Motion::undecided;
   Decided_by decided_by = Decided_by::none;
-  // What the certificate is written from: every force given — `sticking` or `sliding`; some force not given — sticks:
-  // `vertices` (a stick witness per vertex of F), slides: `sliding` (for every distribution), depends: both `sticking`
-  // and `sliding`.
+  // What the certificate is written from. Every force given: `sticking`, `impending` or `sliding`. Some force not
+  // given: sticks — `vertices` (a strict stick witness per vertex of F); impending — `vertices` (closed) and `sliding`
+  // (every distribution's twist, its bound met); slides — `sliding` (every distribution's); depends — `sticking` and
+  // `sliding` of two distributions, one of them strict: one distribution inside and another not (sticks against
+  // impending or slides), or one in its closed set and another outside (impending or sticks against slides).
   std::optional<Stick_witness> sticking;
+  std::optional<Impending_witness> impending;
   std::optional<Slide_witness> sliding;
   std::vector<Stick_witness> vertices;
+  // depends: what the distributions of `sticking` and `sliding` do (sticks or impending; impending or slides).
+  Motion held_as = Motion::sticks, moved_as = Motion::slides;
   // How, for the answer's readers: each vertex's own verdict (some force not given), the float search's twists and its
   // sliding twist (points, every force given), the regions' estimate of the gauge (every force given) and the cells
   // of the certificate's blocks.

@@ -324,7 +324,10 @@ Precise_motion precise_motion(const std::vector<Rho_point>& points, const Vec3q&
       e = f;
     }
     if (!e.smooth) return out;  // a rotation about a support point: the facet, not Newton's to decide
-    if (certify(at_z(q0, e1, e2, a1, a2), e.h) || spent) return out;  // spent: the work bound, undecided
+    const Big3 last = at_z(q0, e1, e2, a1, a2);
+    if (certify(last, e.h)) return out;
+    out.proposal = {last[0].rounded(53).get_d(), last[1].rounded(53).get_d(), last[2].rounded(53).get_d()};
+    if (spent) return out;  // the work bound: undecided
     z1 = a1;
     z2 = a2;
   }

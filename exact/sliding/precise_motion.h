@@ -16,6 +16,7 @@
 // smooth). Hybrid mode only: its numbers are floating point, even though everything kept is exact.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct Precise_motion {
   std::vector<Vec2> forces;            // sticks: g_i, one per point, Σ (g_i, r_i × g_i) = p, |g_i| < ρ_i
   Vec3q twist{};                       // slides: a primitive integer twist …
   std::vector<Rational> speed_bounds;  // … with u_i ≥ |v_i(twist)|, one per point, and Σ ρ_i u_i < twist·p
+  // undecided: Newton's last minimiser, when it ran (a load on the limit surface: close to its normal twist, which a
+  // caller may make exact, rationalized, to certify the load on the surface).
+  std::optional<std::array<double, 3>> proposal;
 };
 
 // At most this many points, and at most kMaxPreciseMotionWork point evaluations of h in all (each costs a few

@@ -598,8 +598,49 @@ bool try_slide(const Support& s, const Vec3q& p, const Vec3q& q, Motion_answer& 
   Region_slide_blocks r = region_slide_blocks(s, q, Rational(power - bound), max_cells);
   if (!r.ok) return false;
   out.cells = r.cells;
-  if (bound + r.bound > power) return false;
+  if (bound + r.bound >= power) return false;  // strictly outside
   out.sliding = Slide_witness{std::move(f), q, std::move(u), std::move(r.blocks), {}};
+  return true;
+}
+
+// On the surface: a translation q with a rational speed |v| moves every point and every cell corner at |v| exactly, so
+// the points' bound and each region's slide block (its coarse cells) are the exact power μ W |v|; the load meets it,
+// and the forces μ f v̂ of the points and μ F_k v̂ of the cells (on their circles) carry it exactly.
+bool try_impending(const Support& s, const Vec3q& p, const Vec3q& q, Motion_answer& out) {
+  if (q[2] != 0 || is_zero(q)) return false;
+  const auto [lo, hi] = sqrt_bracket(q[0] * q[0] + q[1] * q[1]);
+  if (lo != hi) return false;
+  const Vec2 dir{q[0] / lo, q[1] / lo};
+  Impending_witness w;
+  Rational bound;
+  Vec3q sum{};
+  for (const Support_point& pt : s.points) {
+    const Rational rho = s.mu_of(pt) * *pt.force;
+    w.forces.distribution.push_back(*pt.force);
+    w.forces.forces.push_back({rho * dir.x, rho * dir.y});
+    w.twist.speed_bounds.push_back(lo);
+    bound += rho * lo;
+    const Vec3q a = wrench_at(pt.at, w.forces.forces.back());
+    for (std::size_t c = 0; c < 3; ++c) sum[c] += a[c];
+  }
+  out.cells = 0;
+  for (const Support_region& r : s.regions) {  // one block of cells for both: forces per cell, speeds per corner
+    const Rational& mu = s.mu_of(r);
+    Region_stick_block stick{region_cells(r, 1), {}};
+    for (const Support_point& c : cell_points(r, mu, stick.cells))
+      stick.forces.push_back({mu * *c.force * dir.x, mu * *c.force * dir.y});
+    Region_slide_block slide{stick.cells, std::vector<Rational>(stick.cells.vertices.size(), lo), mu * lo * r.total};
+    bound += slide.bound;
+    const Vec3q a = region_stick_wrench(r, stick);
+    for (std::size_t c = 0; c < 3; ++c) sum[c] += a[c];
+    out.cells += stick.cells.triangles.size();
+    w.forces.regions.push_back(std::move(stick));
+    w.twist.regions.push_back(std::move(slide));
+  }
+  if (dot(q, p) != bound || sum != p) return false;
+  w.twist.distribution = w.forces.distribution;
+  w.twist.twist = q;
+  out.impending = std::move(w);
   return true;
 }
 
@@ -663,6 +704,17 @@ Motion_answer decide_on_regions(const Support& s, const Vec3q& p) {
   };
   const bool outside = !zero && m.found && m.h < 1;
   if (outside ? slide() || stick() : stick() || slide()) return out;
+  // On the surface: translations along the load's force and the search's twist, made rational.
+  std::vector<Vec3q> on;
+  if (p[0] != 0 || p[1] != 0) on.push_back({p[0], p[1], Rational(0)});
+  if (m.found)
+    if (const auto r = rationalized(m.q)) on.push_back(*r);
+  for (const Vec3q& q : on)
+    if (try_impending(s, p, q, out)) {
+      out.motion = Motion::impending;
+      out.decided_by = Decided_by::certificate;
+      return out;
+    }
   out.cells = 0;
   char buf[320];
   if (m.found)

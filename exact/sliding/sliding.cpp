@@ -234,6 +234,7 @@ void precise_fallback(const Ls_support& support, const Vec3q& p, Points_verdict&
     const std::size_t spent = d.cells;
     d = search(support, p);
     d.cells += spent;
+    d.proposal = m.proposal;
     return;
   }
   d.motion = m.motion;

@@ -29,6 +29,7 @@ struct Points_verdict {
   std::size_t cells = 0;                     // twists the search evaluated
   std::array<double, 3> witness{};           // slides by the search: a twist with h(q) ≤ q·p
   std::optional<Vec3q> exact_witness;        // slides by Newton: a primitive integer twist with h(q) < q·p
+  std::optional<std::array<double, 3>> proposal;  // undecided: Newton's last minimiser (near the load's normal)
 };
 Points_verdict points_verdict(const Polygonal_ls& model, const Vec3q& load, Mode mode,
                               const Ls_polytope* inner = nullptr, const Ls_polytope* outer = nullptr);
@@ -39,11 +40,18 @@ Points_verdict points_verdict(const Ls_support& support, const Vec3q& load, Mode
 // Rational upper bounds of the speeds |v_i(q)| of every support point (square-root brackets of `bits` bits).
 std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q, int bits = 80);
 
-// The slide witness of q (≠ 0) for f when q·p ≥ Σ μ_i f_i u_i (p on or past the limit surface); nothing otherwise.
-// The speeds are bounded to 80 bits, and when that does not prove it and q has long numbers (Newton's twists), to
-// 2·b + 64 bits, b the longest component's bits. Points only (no region blocks).
+// The slide witness of q (≠ 0) for f when q·p > Σ μ_i f_i u_i (p outside the limit surface; `strict` false: ≥, on or
+// outside); nothing otherwise. The speeds are bounded to 80 bits, and when that does not prove it and q has long
+// numbers (Newton's twists), to 2·b + 64 bits, b the longest component's bits. Points only (no region blocks).
 std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
-                                           const Vec3q& q);
+                                           const Vec3q& q, bool strict = true);
+
+// [SL-1] The witness that p is ON the limit surface of f, from the twist q (≠ 0): every point with friction moves at an
+// exactly rational speed u_i = |v_i(q)|, q·p = Σ μ_i f_i u_i exactly, and p is in the face of LS(f) that q supports —
+// the forces μ_i f_i v_i/u_i of the moving points, plus at the points at rest (q's rotation centre) one force g in
+// their closed disc with moment c × g. Nothing otherwise. Points only.
+std::optional<Impending_witness> impending_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
+                                                   const Vec3q& q);
 
 // Support forces and non-negative multiples of the `cone`'s wrenches c_j that sum to p exactly:
 // Σ_i (g_i, r_i × g_i) + Σ_j weights_j c_j = p with g_i·g_i < (μ_i f_i)² (g_i = 0 where μ_i f_i = 0). With an empty
@@ -86,8 +94,8 @@ std::optional<Stick_witness> stick_witness_refined(const Support& s, const Admis
 // three wrench rows, one disc row per listed point (Σ_j λ_ij + s_i (+ t) = μ_i f_i), the goal's, and F's three rows.
 //   margin — Σ_j λ_ij (u_ij, r_i × u_ij) + cone = load, the common margin t (in each disc row with μ_i f_i > 0, f
 //            fixed) maximised: t > 0 puts every force strictly inside its disc (the stick witness);
-//   scale  — cone + Σ λ_ij (u_ij, r_i × u_ij) + t·load = 0 with t ≤ 1 maximised: t = 1 balances the load (a hold); the
-//            dual of the wrench rows is then a candidate motion (exact/fixture/hold.h).
+//   scale  — cone + Σ λ_ij (u_ij, r_i × u_ij) + t·load = rhs with t ≤ 1 maximised: with rhs 0, t = 1 balances the load
+//            (a hold); the dual of the wrench rows is then a candidate motion (exact/fixture/hold.h).
 // `fixed` null: the distribution is free in F (its unknown forces are columns, F's rows added).
 struct Friction_lp {
   enum class Goal { margin, scale };
@@ -96,6 +104,7 @@ struct Friction_lp {
   const Admissible* admissible = nullptr;
   const std::vector<Rational>* fixed = nullptr;
   Vec3q load;
+  Vec3q rhs{};  // scale: the wrench rows' right-hand side
   std::vector<Vec3q> cone;
   std::vector<std::size_t> points;            // the points with columns, in order
   std::vector<std::vector<Vec2>> directions;  // each listed point's u_ij

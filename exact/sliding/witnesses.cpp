@@ -16,16 +16,13 @@ std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q, int bits) {
 }
 
 std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
-                                           const Vec3q& q) {
-  if (q[0] == 0 && q[1] == 0 && q[2] == 0) return std::nullopt;
+                                           const Vec3q& q, bool strict) {
+  if (is_zero(q)) return std::nullopt;
+  const Rational power = dot(q, p);
   const auto proves = [&](const std::vector<Rational>& u) {
     Rational bound;
-    for (std::size_t i = 0; i < s.points.size(); ++i) {
-      const Support_point& pt = s.points[i];
-      const Rational mu = s.mu_of(pt);
-      bound += mu * f[i] * u[i];
-    }
-    return dot(q, p) >= bound;
+    for (std::size_t i = 0; i < s.points.size(); ++i) bound += s.mu_of(s.points[i]) * f[i] * u[i];
+    return strict ? power > bound : power >= bound;
   };
   Slide_witness w{f, q, speed_bounds(s, q), {}, {}};
   if (proves(w.speed_bounds)) return w;
@@ -236,6 +233,48 @@ std::optional<Support_witness> smoothed_witness(const Support& s, const std::vec
     if (inside) return out;
   }
   return std::nullopt;
+}
+
+std::optional<Impending_witness> impending_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
+                                                   const Vec3q& q0) {
+  if (is_zero(q0)) return std::nullopt;
+  const Vec3q q = primitive_vec(q0);  // (the same motion, written with small integers)
+  const std::size_t k = s.points.size();
+  Impending_witness w{{f, std::vector<Vec2>(k), {}}, {f, q, std::vector<Rational>(k), {}, {}}};
+  Rational bound, still;  // still: the friction of the points at rest (the rotation centre's)
+  Vec3q rest = p;         // what the points at rest must carry
+  std::vector<std::size_t> at_rest;
+  for (std::size_t i = 0; i < k; ++i) {
+    const Support_point& pt = s.points[i];
+    const Rational rho = s.mu_of(pt) * f[i];
+    const Rational s2 = speed_squared(q, pt.at);
+    Rational& u = w.twist.speed_bounds[i];
+    if (s2 == 0) {
+      if (rho > 0) at_rest.push_back(i), still += rho;
+      continue;  // u = 0
+    }
+    const auto [lo, hi] = sqrt_bracket(s2);
+    if (lo != hi && rho > 0) return std::nullopt;  // an irrational speed: no rational bound meets the power
+    u = hi;
+    if (rho == 0) continue;
+    bound += rho * u;
+    const Vec2 v = velocity(q, pt.at);
+    Vec2& g = w.forces.forces[i];
+    g = {rho * v.x / u, rho * v.y / u};
+    const Vec3q a = wrench_at(pt.at, g);
+    for (std::size_t c = 0; c < 3; ++c) rest[c] -= a[c];
+  }
+  if (dot(q, p) != bound) return std::nullopt;
+  if (at_rest.empty()) return is_zero(rest) ? std::optional<Impending_witness>(std::move(w)) : std::nullopt;
+  // The rest as one force g at the centre c (the points at rest coincide there): moment c × g, |g| ≤ their friction.
+  const Vec2& c = s.points[at_rest.front()].at;
+  const Vec2 g{rest[0], rest[1]};
+  if (rest[2] != cross(c, g) || dot(g, g) > still * still) return std::nullopt;
+  for (const std::size_t i : at_rest) {
+    const Rational share = s.mu_of(s.points[i]) * f[i] / still;
+    w.forces.forces[i] = {share * g.x, share * g.y};
+  }
+  return w;
 }
 
 std::optional<Slide_witness> slides_for_every(const Support& s, const Admissible& a, const Vec3q& p, const Vec3q& q,

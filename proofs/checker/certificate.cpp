@@ -117,7 +117,8 @@ Witness read_witness(Reader& r, bool slide) {
 }
 
 // {"vertices": [[x, y], ...], "triangles": [[i, j, k], ...], "forces": [[gx, gy], ...]} or with "speed_bounds":
-// [u, ...] instead of "forces" (§6.4); indices are JSON integers without sign, fraction or exponent.
+// [u, ...] instead of "forces" (§6.4), or both (§6.6: which a claim needs is checked with it); indices are JSON
+// integers without sign, fraction or exponent.
 Block read_block(Reader& r) {
   Block b;
   b.path = r.path();
@@ -154,7 +155,8 @@ Block read_block(Reader& r) {
   }
   for (const char* k : {"vertices", "triangles"})
     if (!keys.count(k)) r.fail(std::string("missing required key \"") + k + "\"");
-  if (b.has_forces == b.has_speeds) r.fail("expected exactly one of \"forces\" (sticks) and \"speed_bounds\" (slides)");
+  if (!b.has_forces && !b.has_speeds)
+    r.fail("expected \"forces\" (sticks), \"speed_bounds\" (slides), or both (a load on the limit surface, format 3)");
   return b;
 }
 
@@ -194,8 +196,8 @@ Certificate read_certificate(Reader& r) {
     c.keys.insert(key);
     if (key == "wrenchkit_certificate") {
       const std::string_view v = r.peek() == Kind::number ? r.number() : "";
-      if (v != "1" && v != "2") r.fail("expected the integer 1 or 2");
-      c.version = v == "2" ? 2 : 1;
+      if (v != "1" && v != "2" && v != "3") r.fail("expected the integer 1, 2 or 3");
+      c.version = v[0] - '0';
     } else if (key == "property") {
       const std::string_view p = r.peek() == Kind::string ? r.string_view() : "";
       if (p != "force_closure" && p != "form_closure" && p != "equilibrium" && p != "motion" && p != "hold")
@@ -206,9 +208,11 @@ Certificate read_certificate(Reader& r) {
       c.motion = p == "motion";
       c.hold = p == "hold";
     } else if (key == "holds") {
-      if (r.peek() == Kind::string) {  // "depends": property "hold" only (checked once the property is known)
-        if (r.string_view() != "depends") r.fail("expected true or false (or \"depends\" for property \"hold\")");
-        c.depends = true;
+      if (r.peek() == Kind::string) {  // property "hold" only (checked once the property is known)
+        const std::string_view v = r.string_view();
+        if (v != "depends" && v != "impending")
+          r.fail("expected true or false (or \"impending\" or \"depends\" for property \"hold\")");
+        (v == "depends" ? c.depends : c.impending) = true;
       } else {
         if (r.peek() != Kind::boolean) r.fail("expected true or false");
         c.holds = r.boolean();
@@ -233,8 +237,8 @@ Certificate read_certificate(Reader& r) {
       read_fixed(r, 3, "an array of three rationals [fx, fy, m]", [&](std::size_t k) { c.m().load[k] = read_rational(r); });
     } else if (key == "motion") {
       c.claim = r.peek() == Kind::string ? r.string_view() : "";
-      if (c.claim != "sticks" && c.claim != "slides" && c.claim != "depends")
-        r.fail("expected \"sticks\", \"slides\" or \"depends\"");
+      if (c.claim != "sticks" && c.claim != "impending" && c.claim != "slides" && c.claim != "depends")
+        r.fail("expected \"sticks\", \"impending\", \"slides\" or \"depends\"");
     } else if (key == "support_forces") {
       c.m().support_forces = read_list<Pair>(r);
     } else if (key == "speed_bounds") {
@@ -279,8 +283,9 @@ void check_keys(const Certificate& c) {
       throw Failure{"key \"independent\" is not allowed when \"property\" is \"equilibrium\""};
   };
   need("wrenchkit_certificate"), need("property");
-  if (c.depends && !c.hold)
-    throw Failure{"holds: \"depends\" is only a claim of property \"hold\" (expected true or false)"};
+  if ((c.depends || c.impending) && !c.hold)
+    throw Failure{std::string("holds: ") + (c.depends ? "\"depends\"" : "\"impending\"") +
+                  " is only a claim of property \"hold\" (expected true or false)"};
   if (c.motion || c.hold) return;  // check_motion() and check_hold() decide, knowing the scene's support
   static const char* const motion_keys[] = {"load",    "motion",   "support_forces", "speed_bounds",
                                             "dual",    "vertices", "sticking",       "sliding",

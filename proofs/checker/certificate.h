@@ -107,13 +107,16 @@ struct Certificate {
   bool hold = false;         // property "hold" (§7), read with friction
   bool holds = false;
   bool depends = false;      // "holds": "depends" (property "hold" only)
-  int version = 1;           // "wrenchkit_certificate": 1, or 2 (§7.5: a witness may carry its regions' blocks)
+  bool impending = false;    // "holds": "impending" (property "hold", format 3 only)
+  // "wrenchkit_certificate": 1; 2 (§6.5, §7.5: a witness may carry its regions' blocks); 3 (§6.6, §7.6: the boundary
+  // is its own outcome — "sticks" and "holds": true with margin, "slides" and "holds": false strictly past it)
+  int version = 1;
   std::vector<Term> combination;
   std::vector<Ref> independent;
   std::string_view twist[3] = {"0", "0", "0"}, where[2] = {"0", "0"};  // texts; where: reading.point or .direction
   std::string_view label;  // reading.label
   // property "motion" (and, in motion_members, the support's blocks that "hold" shares with it)
-  std::string_view claim;  // "sticks", "slides" or "depends"
+  std::string_view claim;  // "sticks", "impending", "slides" or "depends"
   std::unique_ptr<Motion_part> motion_members;  // allocated by m() when a member is read; see members()
   Motion_part& m() {
     if (!motion_members) motion_members = std::make_unique<Motion_part>();

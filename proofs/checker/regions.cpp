@@ -282,10 +282,11 @@ void check_block(const Region& g, const Block& b, const char* key, std::size_t h
   check_tiling(g, b);
 }
 
-void in_disc(const Q& gx, const Q& gy, const Q& rho, bool strict, const std::string& path, std::size_t i,
+bool in_disc(const Q& gx, const Q& gy, const Q& rho, bool strict, const std::string& path, std::size_t i,
              const char* mu_f) {
   const Q lhs = gx * gx + gy * gy;
-  if (strict ? (sgn(rho) == 0 ? sgn(lhs) == 0 : lhs < rho * rho) : lhs <= rho * rho) return;
+  const bool open = sgn(rho) == 0 ? sgn(lhs) == 0 : lhs < rho * rho;
+  if (open || (!strict && lhs <= rho * rho)) return open;
   throw Failure{path + "[" + std::to_string(i) + "]: |g|^2 = " + show(lhs) + " is not " + (strict ? "less than" : "at most") +
                 " (" + mu_f + ")^2 = " + show(Q(rho * rho)) + (sgn(rho) == 0 ? " (no friction there: g must be 0)" : "")};
 }
@@ -298,13 +299,15 @@ void speed_bound(const Q& u, const Q (&q)[3], const Q& x, const Q& y, const std:
   if (u * u < speed2) throw Failure{at() + "u^2 = " + show(Q(u * u)) + " is less than |" + v + "|^2 = " + show(speed2)};
 }
 
-// A stick block: |g_k|^2 < (mu F_k)^2 (g_k = 0 where mu F_k = 0), F_k = area p(centroid); adds sum_k (g_k, c_k x g_k)
+// A stick block: |g_k|^2 < (mu F_k)^2 (g_k = 0 where mu F_k = 0; closed without `strict`, then returning whether every
+// force is strictly inside all the same), F_k = area p(centroid); adds sum_k (g_k, c_k x g_k)
 // to `sum` (c_k = M_k / F_k the cell's pressure centroid, M_k its integral of r p by the edge-midpoint rule) and
 // calls friction(c_k) for every cell with mu F_k > 0.
 // `strict` as support_sum's: a stick (|g_k|^2 < (mu F_k)^2) or a hold (|g_k|^2 <= (mu F_k)^2, closed discs).
-void add_stick_block(const Region& g, const Block& b, std::array<Q, 3>& sum,
+bool add_stick_block(const Region& g, const Block& b, std::array<Q, 3>& sum,
                      const std::function<void(const Q&, const Q&)>& friction, bool strict) {
   check_block(g, b, "forces", b.forces.size(), "forces", b.triangles.size(), "cells");
+  bool open = true;
   for (std::size_t k = 0; k < b.triangles.size(); ++k) {
     const auto& t = b.triangles[k];
     const P2 &p = b.vertices[t[0]], &q = b.vertices[t[1]], &r = b.vertices[t[2]];
@@ -318,11 +321,12 @@ void add_stick_block(const Region& g, const Block& b, std::array<Q, 3>& sum,
     F *= area / 3, M[0] *= area / 3, M[1] *= area / 3;
     const Pair& f = b.forces[k];
     const Q rho = g.mu * F;
-    in_disc(f[0], f[1], rho, strict, b.path + ".forces", k, "mu F");
+    open = in_disc(f[0], f[1], rho, strict, b.path + ".forces", k, "mu F") && open;
     if (sgn(rho) == 0) continue;
     sum[0] += f[0], sum[1] += f[1], sum[2] += (M[0] * f[1] - M[1] * f[0]) / F;
     friction(Q(M[0] / F), Q(M[1] / F));
   }
+  return open;
 }
 
 // A slide block: u_j >= 0 and u_j^2 >= |v_j(q)|^2 at every vertex; returns mu sum_cells sum_j w_j u_j with

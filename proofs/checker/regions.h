@@ -36,8 +36,9 @@ void settle_region(Region& g);  // validated, oriented, with W and M
 Q pressure(const Q (&c)[3], const P2& r);
 
 // A stick block: each cell's force in its friction disc (open with `strict`, closed without); adds the cells'
-// wrenches to `sum` and calls friction(c_k) at each cell's pressure centroid where there is friction.
-void add_stick_block(const Region& g, const Block& b, std::array<Q, 3>& sum,
+// wrenches to `sum` and calls friction(c_k) at each cell's pressure centroid where there is friction. Returns whether
+// every force is strictly inside its disc.
+bool add_stick_block(const Region& g, const Block& b, std::array<Q, 3>& sum,
                      const std::function<void(const Q&, const Q&)>& friction, bool strict);
 // A slide block: speed bounds at its vertices for the twist q; returns its bound on the region's frictional power.
 Q slide_block_bound(const Region& g, const Block& b, const Q (&q)[3]);
@@ -46,7 +47,8 @@ Q slide_block_bound(const Region& g, const Block& b, const Q (&q)[3]);
 // a friction force g in its disc of radius rho = mu f >= 0, open (`strict`: a stick, with g = 0 where rho = 0) or
 // closed (a hold); a speed bound u >= 0 with u^2 >= |v|^2, v = (q0 - q2 y, q1 + q2 x) the velocity of the point
 // (x, y) under the twist q. Else the Failure "<path>[<i>]: ...", naming the bound `mu_f` or the velocity `v`.
-void in_disc(const Q& gx, const Q& gy, const Q& rho, bool strict, const std::string& path, std::size_t i,
+// in_disc returns whether g is strictly inside (open: the condition `strict` asks for).
+bool in_disc(const Q& gx, const Q& gy, const Q& rho, bool strict, const std::string& path, std::size_t i,
              const char* mu_f);
 void speed_bound(const Q& u, const Q (&q)[3], const Q& x, const Q& y, const std::string& path, std::size_t i,
                  const char* v);

@@ -22,6 +22,19 @@ inline std::string point_name(std::size_t i) { return "support.points[" + std::t
 
 inline const std::vector<Block>* own_blocks(const Witness& w) { return w.has_regions ? &w.regions : nullptr; }
 
+// Where a witness's friction acts and how (HD-1 §10): whether every force is strictly inside its disc, and the
+// distinct places with friction (counted up to two; the first kept). Two places span R^3 with their friction;
+// one place (x, y) spans the plane of wrenches (g, r x g), normal (y, -x, 1); none spans nothing.
+struct Friction_reach {
+  bool open = true;
+  int places = 0;
+  Q x, y;
+  void at(const Q& px, const Q& py) {
+    if (places == 0) x = px, y = py, places = 1;
+    else if (places == 1 && (px != x || py != y)) places = 2;
+  }
+};
+
 // The support's witnesses of the sliding (§6) and hold (§7) certificates, checked the same way for both: their keys
 // and regions, a distribution in F, support forces in their friction discs and their wrench, a bound on the
 // frictional power of a twist (rational speed bounds; for every distribution, with the LP dual over F), and the
@@ -62,6 +75,19 @@ class Support_witnesses {
       throw Failure{"regions: " + std::to_string(blocks.size()) + " blocks, but the support has " +
                     std::to_string(s_.regions.size()) + " regions"};
     return &blocks;
+  }
+
+  // What a list of blocks (if any) holds, by the claim that reads it: forces (a witness carrying the load), speed
+  // bounds (a twist's bound), or both on one set of cells (a load on the limit surface, §6.6, §7.6).
+  static void block_kinds(const std::vector<Block>* blocks, bool forces, bool speeds) {
+    if (!blocks) return;
+    for (const Block& b : *blocks)
+      if (b.has_forces != forces || b.has_speeds != speeds)
+        throw Failure{b.path + ": expected " +
+                      (forces && speeds ? std::string("both \"forces\" and \"speed_bounds\" (a load on the limit surface)")
+                       : forces         ? std::string("\"forces\" (a witness that carries the load) and no \"speed_bounds\"")
+                                        : std::string("\"speed_bounds\" (a twist's bound) and no \"forces\"")) +
+                      " here"};
   }
 
   // For every f in F (§6.2, §7.2): check(v) for every witness v of `vertices` (it is in F and its claim holds under
@@ -114,23 +140,21 @@ class Support_witnesses {
   }
 
   // Support forces g_i under f, each in its friction disc, and their wrench sum (g_i, r_i x g_i).
-  // `strict` (a stick, §6): p in the INTERIOR of LS(f) (a load on the limit surface slides, docs/theory.md §11):
-  // |g_i|^2 < (mu_i f_i)^2 where mu_i f_i > 0, g_i = 0 where it is 0, and LS(f) is three-dimensional (two distinct
-  // points with mu_i f_i > 0), so the sum of the discs' relative interiors is its interior (SL-1). Not strict (a
-  // hold, §7): |g_i|^2 <= (mu_i f_i)^2, the closed discs (so g_i = 0 where mu_i f_i = 0), any number of points.
+  // `strict` (a stick, §6): p in the INTERIOR of LS(f): |g_i|^2 < (mu_i f_i)^2 where mu_i f_i > 0, g_i = 0 where it
+  // is 0, and LS(f) is three-dimensional (two distinct points with mu_i f_i > 0), so the sum of the discs' relative
+  // interiors is its interior (SL-1). Not strict (a hold, or a load on the limit surface, §6.6, §7.6):
+  // |g_i|^2 <= (mu_i f_i)^2, the closed discs (so g_i = 0 where mu_i f_i = 0), any number of points; `reach` (if
+  // given) then tells whether every force is strictly inside its disc and where friction acts (HD-1 §10).
   // With `blocks` (one per support region, certificate-format.md §6.4), each region's cells add their forces,
   // acting at the cells' pressure centroids, inside their discs as the points' are.
   std::array<Q, 3> support_sum(const std::vector<Q>& f, const std::vector<Pair>& g, const std::string& path,
-                               bool strict, const std::vector<Block>* blocks = nullptr) const {
+                               bool strict, const std::vector<Block>* blocks = nullptr,
+                               Friction_reach* reach = nullptr) const {
     size(g.size(), path);
     std::array<Q, 3> sum{0, 0, 0};
-    bool two = false, one = false;
-    Q ax, ay;
-    const auto friction_at = [&](const Q& x, const Q& y) {
-      if (!strict || two) return;  // (only a stick asks for two distinct points)
-      if (one && (x != ax || y != ay)) two = true;
-      if (!one) one = true, ax = x, ay = y;
-    };
+    Friction_reach own;
+    Friction_reach& r = reach ? *reach : own;
+    const auto friction_at = [&r](const Q& x, const Q& y) { r.at(x, y); };
     for (std::size_t i = 0; i < g.size(); ++i) {
       Point_values scratch;
       const Point_values& v = values(s_.points[i], lim_, scratch);
@@ -139,13 +163,14 @@ class Support_witnesses {
         continue;
       }
       const Q bound = v.mu * f[i];
-      in_disc(g[i][0], g[i][1], bound, strict, path, i, "mu f");
+      r.open = in_disc(g[i][0], g[i][1], bound, strict, path, i, "mu f") && r.open;
       if (sgn(bound) > 0) friction_at(v.x, v.y);
       sum[0] += g[i][0], sum[1] += g[i][1], sum[2] += v.x * g[i][1] - v.y * g[i][0];
     }
     if (blocks)  // each region's cells: forces spread over the cell as p, acting at its pressure centroid
-      for (std::size_t k = 0; k < blocks->size(); ++k) add_stick_block(s_.regions[k], (*blocks)[k], sum, friction_at, strict);
-    if (strict && !two)
+      for (std::size_t k = 0; k < blocks->size(); ++k)
+        r.open = add_stick_block(s_.regions[k], (*blocks)[k], sum, friction_at, strict) && r.open;
+    if (strict && r.places < 2)
       throw Failure{path + ": friction acts at fewer than two distinct points, so the limit surface is flat and no "
                            "load is inside it"};
     return sum;
