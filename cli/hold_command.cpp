@@ -29,6 +29,12 @@ void write_motion(Json_writer& w, const Vec3q& t) {
   w.member("text", motion_words(t)).end_object();
 }
 
+// "holds": true or false, or the word ("impending", "depends", "undecided").
+void write_holds(Json_writer& w, Hold_verdict v) {
+  if (v == Hold_verdict::holds || v == Hold_verdict::fails) w.boolean(v == Hold_verdict::holds);
+  else w.string(hold_word(v));
+}
+
 void write_contact_forces(Json_writer& w, const Hold_witness& h) {
   write_combination(w.key("contact_forces"), h.combination);
 }
@@ -38,9 +44,7 @@ void write_contact_forces(Json_writer& w, const Hold_witness& h) {
 void write_hold(Json_writer& w, const Hold_item& r) {
   const Hold_answer& a = r.answer;
   w.member("command", "hold").member("name", r.scene.name).member("mode", mode_name(r.mode));
-  w.key("holds");
-  if (a.verdict == Hold_verdict::holds || a.verdict == Hold_verdict::fails) w.boolean(a.verdict == Hold_verdict::holds);
-  else w.string(hold_word(a.verdict));
+  write_holds(w.key("holds"), a.verdict);
   w.member("decided_by", decided_by_text(a));
   w.key("load").array().rational(a.load[0]).rational(a.load[1]).rational(a.load[2]).end_array();
   w.member("generators", a.generators).member("support", support_kind(a));
@@ -72,9 +76,9 @@ void write_hold(Json_writer& w, const Hold_item& r) {
       write_motion(w.key("motion"), a.failing->twist);
       break;
     case Hold_verdict::depends:
-      w.key("witnesses").object().key("holds").object().member("holds", hold_word(a.held_as));
+      write_holds(w.key("witnesses").object().key("holds").object().key("holds"), a.held_as);
       w.key("distribution").rationals(a.holding->support.distribution);
-      w.end_object().key("fails").object().member("holds", hold_word(a.moved_as));
+      write_holds(w.end_object().key("fails").object().key("holds"), a.moved_as);
       w.key("distribution").rationals(a.failing->distribution);
       write_motion(w.key("motion"), a.failing->twist);
       w.end_object().end_object();

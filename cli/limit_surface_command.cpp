@@ -233,6 +233,9 @@ std::string motion_text(const Support_item& r, const Vec3q& load) {
     if (m.motion == Motion::slides)
       s << "  a twist with h(q) < q.p: (" << float_number(m.search_twist[0]) << ", " << float_number(m.search_twist[1])
         << ", " << float_number(m.search_twist[2]) << ")\n";
+    if (slip)
+      s << "  on the limit surface: friction can just hold it, and it may slip with " << slip_text(*slip)
+        << " (its power meets the friction's exactly)\n";
   } else {
     s << motion_name(m.motion) << "  (";
     if (r.polytopes_built)

@@ -34,7 +34,9 @@ using Counts = py::array_t<std::int64_t, py::array::c_style>;
 // decided_by as the small integers of docs/python.md (wrenchkit.DECIDED_BY): -1 undecided (mode "float" only).
 std::int8_t decided_code(Arithmetic d) { return static_cast<std::int8_t>(d); }
 // motion and motion_decided_by (wrenchkit.MOTION, wrenchkit.MOTION_DECIDED_BY).
-std::int8_t motion_code(Motion m) { return m == Motion::sticks ? 1 : m == Motion::slides ? 0 : -1; }
+std::int8_t motion_code(Motion m) {
+  return m == Motion::sticks ? 1 : m == Motion::slides ? 0 : m == Motion::impending ? 2 : -1;
+}
 std::int8_t motion_decided_code(Decided_by d) {
   switch (d) {
     case Decided_by::float_search: return 0;

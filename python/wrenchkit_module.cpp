@@ -278,9 +278,20 @@ py::dict hold(const Py_scene& s, const std::string& mode) {
     d["support_forces"] = g;
     if (a.unknown) d["holding_distribution"] = distribution_list(a.holding->support.distribution);
   }
+  if (a.impending) {  // just held: its forces, and the motion it may start (its power meets the friction's)
+    d["contact_forces"] = combination_list(a.impending->holding.combination);
+    py::list g;
+    for (const Vec2& f : a.impending->holding.support.forces) g.append(point(f));
+    d["support_forces"] = g;
+    d["motion"] = motion_dict(a.impending->twist.twist);
+  }
   if (a.failing && a.verdict != Hold_verdict::holds) {
     d["motion"] = motion_dict(a.failing->twist);
-    if (a.verdict == Hold_verdict::depends) d["failing_distribution"] = distribution_list(a.failing->distribution);
+    if (a.verdict == Hold_verdict::depends) {
+      d["failing_distribution"] = distribution_list(a.failing->distribution);
+      d["holding_as"] = a.held_as == Hold_verdict::holds ? py::object(py::bool_(true)) : py::object(py::str("impending"));
+      d["failing_as"] = a.moved_as == Hold_verdict::fails ? py::object(py::bool_(false)) : py::object(py::str("impending"));
+    }
   }
   if (a.verdict == Hold_verdict::undecided) d["undecided_why"] = a.undecided_why;
   d["certificate_json"] = r.certificate;
@@ -486,6 +497,15 @@ py::list region_list(const Support& sup) {
   return regions;
 }
 
+// A load's motion, whatever the support: "motion", "motion_decided_by", on the surface the twist it may slip with
+// ("impending_twist": every distribution's over F), and why undecided.
+void motion_fields(py::dict& d, const Motion_answer& m) {
+  d["motion"] = motion_name(m.motion);
+  d["motion_decided_by"] = decided_by_name(m.decided_by);
+  if (m.motion == Motion::impending) d["impending_twist"] = triple(m.impending ? m.impending->twist.twist : m.sliding->twist);
+  if (!m.undecided_why.empty()) d["undecided_why"] = m.undecided_why;
+}
+
 // A support with unknown forces (limit_surface and sliding alike): the admissible set, the power of a twist
 // over it, and whether a load sticks for every distribution, slides for every one, or depends.
 py::dict unknown_distribution(const Support_item& r, const std::string& mode, const Support_query& q) {
@@ -511,16 +531,16 @@ py::dict unknown_distribution(const Support_item& r, const std::string& mode, co
   if (r.motion) {
     const Motion_answer& m = *r.motion;
     d["load"] = triple(*q.load);
-    d["motion"] = motion_name(m.motion);
-    d["motion_decided_by"] = decided_by_name(m.decided_by);
+    motion_fields(d, m);
     if (m.motion == Motion::depends) {
       py::dict w;
       w["sticks"] = distribution(m.sticking->distribution);
       w["slides"] = distribution(m.sliding->distribution);
+      w["sticks_motion"] = motion_name(m.held_as);  // sticks, or impending (on its surface)
+      w["slides_motion"] = motion_name(m.moved_as);  // slides, or impending
       d["witnesses"] = w;
     }
     if (m.motion == Motion::slides) d["separating_twist"] = triple(m.sliding->twist);
-    if (!m.undecided_why.empty()) d["undecided_why"] = m.undecided_why;
     if (r.regions) d["certificate_json"] = r.certificate;  // format 2 (checked)
   }
   return d;
@@ -564,10 +584,8 @@ py::dict regions_dict(const Support_item& r, const std::string& mode, const Supp
   if (r.motion) {
     const Motion_answer& m = *r.motion;
     d["load"] = triple((*q.load)[0], (*q.load)[1], (*q.load)[2]);
-    d["motion"] = motion_name(m.motion);
-    d["motion_decided_by"] = decided_by_name(m.decided_by);
+    motion_fields(d, m);
     d["certificate_json"] = r.certificate;
-    if (!m.undecided_why.empty()) d["undecided_why"] = m.undecided_why;
   }
   return d;
 }
@@ -616,8 +634,7 @@ py::dict limit_surface(const Py_scene& s, int sides, const std::optional<std::st
   }
   if (q.load) {
     d["load"] = triple(*q.load);
-    d["motion"] = motion_name(r.motion->motion);
-    d["motion_decided_by"] = decided_by_name(r.motion->decided_by);
+    motion_fields(d, *r.motion);
     py::dict g;
     g["inner"] = r.gauge_in ? fraction(*r.gauge_in) : py::none();
     g["outer"] = r.gauge_out ? fraction(*r.gauge_out) : py::none();

@@ -65,15 +65,20 @@ TEST(CliLimitSurface, TwistAndLoadQueries) {
   const Cli_result s = run("limit-surface --json --sides 8 --load 0,0,2 " + golden("barbell"));
   EXPECT_TRUE(has(s.out, "\"motion\": \"slides\"")) << s.out;
   EXPECT_TRUE(has(s.out, "\"twist_cone\": {\"outer\": {\"generators\": [["));
-  // (0, 0, 1) is a point of LS (theory.md §14.2): the polygons cannot tell at any N (--mode exact)…
+  // (0, 0, 1) is a point of LS (theory.md §14.2): the polygons cannot tell at any N, but a twist with exact speeds
+  // meets its power, q·p = h(q), beside forces on the discs' circles: impending, certified, in every mode.
   const Cli_result u = run("limit-surface --json --mode exact --sides 8 --load 0,0,1 " + golden("barbell"));
-  EXPECT_TRUE(has(u.out, "\"motion\": \"undecided\"")) << u.out;
+  EXPECT_EQ(u.code, 0) << u.err;
+  EXPECT_TRUE(has(u.out, "\"motion\": \"impending\", \"motion_decided_by\": \"certificate\"")) << u.out;
+  EXPECT_TRUE(has(u.out, "\"impending_twist\": [")) << u.out;
   const Cli_result h = run("limit-surface --mode exact --sides 8 --load 0,0,1 --twist 0,0,1 " + golden("barbell"));
-  EXPECT_TRUE(has(h.out, "undecided: refine")) << h.out;
+  EXPECT_TRUE(has(h.out, "impending  (")) << h.out;
+  EXPECT_TRUE(has(h.out, "on the limit surface: friction can just hold it, and it may slip with the twist")) << h.out;
   EXPECT_TRUE(has(h.out, "non-smooth point")) << h.out;
-  // … while the default (hybrid) search finds a twist q with h(q) = q·p exactly: the boundary slides.
   const Cli_result hy = run("limit-surface --json --sides 8 --load 0,0,1 " + golden("barbell"));
-  EXPECT_TRUE(has(hy.out, "\"motion\": \"slides\", \"motion_decided_by\": \"float\"")) << hy.out;
+  EXPECT_TRUE(has(hy.out, "\"motion\": \"impending\"")) << hy.out;
+  EXPECT_TRUE(has(hy.out, "\"certificate\": {\"wrenchkit_certificate\": 3, \"property\": \"motion\", \"load\": [\"0\", "
+                          "\"0\", \"1\"], \"motion\": \"impending\"")) << hy.out;
 }
 
 TEST(CliLimitSurface, ToleranceAndListAndDegenerateScenes) {
@@ -270,7 +275,9 @@ TEST(CliLimitSurfaceModes, MotionByModeAndTheTrueSurface) {
   const Cli_result hy = run("limit-surface --json --sides 8 --load 1.01,0,0 " + golden("barbell"));
   ASSERT_EQ(ex.code, 0) << ex.err;
   ASSERT_EQ(hy.code, 0) << hy.err;
-  EXPECT_TRUE(has(ex.out, "\"motion\": \"undecided\"")) << ex.out;  // N = 8 cannot tell 1 % outside
+  // N = 8 cannot tell 1 % outside; the polygon rounds refined where friction acts can (a strict slide witness).
+  EXPECT_TRUE(has(ex.out, "\"motion\": \"slides\", \"motion_decided_by\": \"polygons\"")) << ex.out;
+  EXPECT_TRUE(has(ex.out, "\"twist\": [\"1\", \"0\", \"1\"]")) << ex.out;  // small integers
   EXPECT_TRUE(has(hy.out, "\"motion\": \"slides\", \"motion_decided_by\": \"float\"")) << hy.out;
   EXPECT_TRUE(has(hy.out, "\"witness_twist\"")) << hy.out;
   const Cli_result in = run("limit-surface --json --sides 8 --load 0.99,0,0 " + golden("barbell"));
@@ -285,9 +292,9 @@ TEST(CliLimitSurfaceModes, MotionByModeAndTheTrueSurface) {
   EXPECT_FALSE(has(fl.out, "\"facets\"")) << fl.out;
   EXPECT_TRUE(has(fl.out, "\"motion\": \"sticks\"")) << fl.out;
   EXPECT_TRUE(has(fl.out, "\"true_power\": {\"value\": 2, \"bound\": 0}")) << fl.out;  // ½|(3, 0)| + ½|(−1, 0)|
-  // (1, 0, 0) is on LS and the search meets the exact witness q = (1, 0, 0): slides (the boundary is not the
-  // interior). 10^-18 inside the load of the twist (1, 0.3, 0.7) is beyond the doubles' resolution: exit 3.
-  EXPECT_TRUE(has(run("limit-surface --mode float --load 1,0,0 " + golden("barbell")).out, "slides"));
+  // (1, 0, 0) is on LS and the search meets the exact witness q = (1, 0, 0): impending (the boundary is neither the
+  // interior nor outside). 10^-18 inside the load of the twist (1, 0.3, 0.7) is beyond the doubles' resolution: exit 3.
+  EXPECT_TRUE(has(run("limit-surface --mode float --load 1,0,0 " + golden("barbell")).out, "impending"));
   const Cli_result on = run(
       "limit-surface --mode float --load 0.84594517000224216553149590029074925480005609593367,"
       "0.44044605754779759779121475101766813932871231275802,0.13883838881569464183775831937244773991606452035004 " +
@@ -411,7 +418,7 @@ TEST(CliRegions, RegionsWithForcesNotGivenEndToEnd) {
     EXPECT_TRUE(has(r.out, "\"extreme_distributions\": [[\"0\", \"4\", \"0\"], [\"2\", \"0\", \"2\"]]")) << r.out;
     EXPECT_TRUE(has(r.out, "\"support\": {\"points\": 3, \"regions\": [{\"area\": \"1\", \"force\": \"1\"")) << r.out;
     EXPECT_TRUE(has(r.out, "\"certificate_checked\": true")) << r.out;
-    EXPECT_TRUE(has(test::read_text(cert), "\"wrenchkit_certificate\": 2, \"property\": \"motion\""));
+    EXPECT_TRUE(has(test::read_text(cert), "\"wrenchkit_certificate\": 3, \"property\": \"motion\""));
     EXPECT_EQ(run("check '" + scene + "' '" + cert + "'").code, 0) << c.load;
   }
   const Cli_result t = run("limit-surface --load 0,0,1 -", mat);

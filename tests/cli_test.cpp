@@ -406,7 +406,8 @@ TEST(Cli, HoldAnswersWithACheckedCertificateAndTheMotion) {
   const Cli_result dep = run("hold --json '" + dir + "table_pinned_pushed.scene.json'");
   ASSERT_EQ(dep.code, 0) << dep.err;
   EXPECT_NE(dep.out.find("\"holds\": \"depends\""), std::string::npos) << dep.out;
-  EXPECT_NE(dep.out.find("\"witnesses\": {\"holds\": {\"distribution\""), std::string::npos) << dep.out;
+  EXPECT_NE(dep.out.find("\"witnesses\": {\"holds\": {\"holds\": true, \"distribution\""), std::string::npos) << dep.out;
+  EXPECT_NE(dep.out.find("\"fails\": {\"holds\": false, \"distribution\""), std::string::npos) << dep.out;
   const Cli_result fl = run("hold --mode float '" + dir + "table_pinned_pushed.scene.json'");
   EXPECT_EQ(fl.code, 3) << fl.out << fl.err;
   EXPECT_EQ(fl.out, "");

@@ -129,6 +129,37 @@ std::optional<Witness> first_of(const std::vector<Vec3q>& candidates, Find find)
   return std::nullopt;
 }
 
+// A load the verdict leaves undecided, one distribution f: the polygon rounds (strategies.h) on the disc polygons
+// refined where friction acts, the candidates' exact velocities among their directions — p in the closed LS_in:
+// a margin witness (sticks) or, with none, the candidates and the rounds' dual for "impending"; p outside LS_in: the
+// dual twist y (y·p > h_in(y)) and its rational neighbour for "slides" or "impending".
+void polygon_rounds_at(const Support& s, const Admissible& a, const std::vector<Rational>& f, const Vec3q& p,
+                       const std::vector<Vec3q>& candidates, Motion_answer& r) {
+  Polygon_rounds rounds;
+  rounds.support = &s;
+  rounds.admissible = &a;
+  rounds.fixed = &f;
+  for (const Vec3q& q : candidates) add_exact_directions(s, q, rounds.common);
+  int count = 0;
+  polygon_rounds(rounds, p, [&](const Friction_lp_solution& lp) {
+    const Vec3q y{lp.lp.y[0], lp.lp.y[1], lp.lp.y[2]};
+    std::vector<Vec3q> twists;
+    if (!is_zero(y)) twists.push_back(y);
+    if (const auto q = rationalized({y[0].get_d(), y[1].get_d(), y[2].get_d()})) twists.push_back(*q);
+    if (lp.goal >= 1) {  // p ∈ LS_in(f), closed
+      if ((r.sticking = rounds.margin(p))) return r.motion = Motion::sticks, true;
+      twists.insert(twists.end(), candidates.begin(), candidates.end());
+    } else {
+      for (const Vec3q& q : twists)
+        if ((r.sliding = slide_witness(s, f, p, q))) return r.motion = Motion::slides, true;
+    }
+    for (const Vec3q& q : twists)
+      if ((r.impending = impending_witness(s, f, p, q))) return r.motion = Motion::impending, true;
+    return false;
+  }, count);
+  if (r.motion != Motion::undecided) r.decided_by = Decided_by::polygons;
+}
+
 // Every force given, points: the verdict (strategies.h points_verdict), then its witness [SL-4] [SL-1]. The verdict
 // "slides" says "not inside": a twist whose power the load's exceeds proves "outside" (slides), one whose power it
 // meets with exact speeds, and forces on that face, prove "on the surface" (impending). A load the verdict leaves
@@ -169,6 +200,8 @@ Motion_answer known_points(const Support_model& model, const Vec3q& p, Mode mode
     if (!slides() && impending()) now(Motion::impending);
   } else if (impending()) {
     now(Motion::impending);
+  } else if (mode != Mode::float_only) {
+    polygon_rounds_at(s, model.admissible(), f, p, candidates(), r);
   }
   if (r.motion == Motion::sticks && !r.sticking &&
       s.points.size() * static_cast<std::size_t>(std::max(o.sides, 8)) > kMaxStickWitnessColumns) {

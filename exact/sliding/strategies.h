@@ -119,6 +119,38 @@ struct Friction_lp_solution {
 // Nothing when the LP is not feasible and bounded.
 std::optional<Friction_lp_solution> solve(const Friction_lp& problem);
 
+// ---- The polygon rounds [LP-1]: the friction LP on inscribed polygons refined where friction acts -----------------
+// Each disc's inscribed polygon: the 16-gon (φ_j = 2π(j + ½)/16), the four axes (a load that friction carries with
+// forces along an axis — a translation along one, a rotation about a point on one — is a polygon point), `common`
+// (the exact unit velocities of candidate twists: friction saturated along a twist's velocities is then a polygon
+// point, and the LP finds the exact witness), and each point's own refinements near where its force goes.
+struct Polygon_rounds {
+  const Support* support = nullptr;
+  const Admissible* admissible = nullptr;
+  const std::vector<Rational>* fixed = nullptr;  // null: the distribution free in F
+  std::vector<Vec3q> cone;                       // the contacts' generators (a hold), or none
+  std::vector<Vec2> common;
+  std::vector<std::vector<Vec2>> own;  // per support point
+  // The scale LP: the largest t ≤ 1 with cone + Σ_ij λ_ij (u_ij, r_i × u_ij) + t·load = rhs. With rhs 0, t = 1 says
+  // −load is in W ⊕ LS_in(f) (the primal is the witness); t < 1: the dual y of the wrench rows has y·load > h_in(y)
+  // and ⟨y, c⟩ ≥ 0 on the cone, a candidate twist.
+  Friction_lp_solution scale(const Vec3q& load, const Vec3q& rhs = {}) const;
+  // f fixed, no cone: a stick witness strictly inside the polygons (the largest common margin of the discs, > 0) with
+  // friction at two distinct points; nothing otherwise.
+  std::optional<Stick_witness> margin(const Vec3q& p) const;
+  // After round `round` with dual twist τ: τ's exact unit velocities join `common`, and each point's polygon is refined
+  // (δ = 2^-(4+3·round)) about the direction against its velocity under τ, where its force goes at the optimum, and
+  // about the round's own `forces` (τ is not unique where LS is not strictly convex; τ = 0 once the load is held).
+  void refine(const Vec3q& twist, int round, const std::vector<Vec2>& forces = {});
+};
+// The exact unit directions ±v_i(t)/|v_i(t)| of the support points' velocities under t where |v_i(t)| is rational.
+void add_exact_directions(const Support& s, const Vec3q& t, std::vector<Vec2>& out);
+// Rounds of r.scale(load) then r.refine (kPolygonRounds, to about 10^-11 of the discs); `decide` gets each round's
+// solution and says whether it decided. Returns the last round's t; `rounds` counts the rounds run.
+constexpr int kPolygonRounds = 6;
+Rational polygon_rounds(Polygon_rounds& r, const Vec3q& load,
+                        const std::function<bool(const Friction_lp_solution&)>& decide, int& rounds);
+
 // A stick witness on the inscribed N-gons (N = sides) for the distribution `fixed` (the margin goal): nothing when p
 // is not strictly inside LS_in^N(f) or friction acts at fewer than two distinct points. With `fixed` null: some
 // distribution of F with p in LS_in^N(f) (closed; the caller confirms it strictly with that f fixed). Throws

@@ -16,8 +16,9 @@ std::vector<Rational> speed_bounds(const Support& s, const Vec3q& q, int bits) {
 }
 
 std::optional<Slide_witness> slide_witness(const Support& s, const std::vector<Rational>& f, const Vec3q& p,
-                                           const Vec3q& q, bool strict) {
-  if (is_zero(q)) return std::nullopt;
+                                           const Vec3q& q0, bool strict) {
+  if (is_zero(q0)) return std::nullopt;
+  const Vec3q q = primitive_vec(q0);  // (the same motion, written with integers)
   const Rational power = dot(q, p);
   const auto proves = [&](const std::vector<Rational>& u) {
     Rational bound;

@@ -19,7 +19,7 @@ from . import _core
 
 # Codes of the integer result arrays.
 DECIDED_BY = {0: "float", 1: "hybrid", 2: "exact", -1: "undecided"}
-MOTION = {1: "sticks", 0: "slides", -1: "undecided"}
+MOTION = {1: "sticks", 0: "slides", 2: "impending", -1: "undecided"}
 MOTION_DECIDED_BY = {0: "float", 1: "polygons", 2: "flat", 3: "certificate", 4: "newton", -1: "none"}
 
 
@@ -135,7 +135,7 @@ def stick_slide_arrays(points, forces, mu, loads, counts=None, *, sides=32, mode
 
     points: (B, N, 2) support points; forces: (B, N) normal forces >= 0, not all zero; mu: a number or (B, N);
     loads: (B, 3) (fx, fy, m); counts as closure_arrays (at least 1). Returns "motion" (int8, MOTION: 1 sticks,
-    0 slides, -1 undecided) and "motion_decided_by" (int8, MOTION_DECIDED_BY: 0 the float twin's certified
+    0 slides, 2 impending (on the limit surface), -1 undecided) and "motion_decided_by" (int8, MOTION_DECIDED_BY: 0 the float twin's certified
     search, 1 the polygons, 2 a flat surface, 3 the certificate, 4 Newton's method in multiple precision checked
     exactly, -1 none); with certificates=True
     "certificates": dicts with "motion", "certificate" (the parsed JSON, exact numbers as "p/q" strings),
