@@ -18,6 +18,7 @@
 #include "exact/io/scene.h"
 #include "exact/numbers/exact_lp.h"
 #include "exact/pipeline/hold_answer.h"
+#include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
 #include "exact/sliding/strategies.h"
 #include "exact/statics/equilibrium.h"
@@ -731,6 +732,99 @@ TEST(HoldInput, NoLoadAndFloatOverF) {
   const Hold_item fl = hold_of(table, Mode::float_only);
   EXPECT_EQ(fl.status, Status::undecided);
   EXPECT_NE(fl.message.find("no LP over the admissible distributions"), std::string::npos) << fl.message;
+}
+
+// Past the threshold over regions, with contacts (issue 29): a fixed-seed family of a region (rectangle, L or
+// triangle; uniform or linear pressure), 0–2 points and 1–2 contacts that allow a motion t (each contact's normal
+// along its point's velocity under t), loaded with w_L = (1 + ε)·∂h(t), the true limit surface's load of t (the
+// regions' certified load box, its midpoint): t·w_L = (1 + ε) h(t), so the body moves. At ε = 1 % and 0.1 % every
+// scene fails, each failing motion certified by the independent checker (before the search on the regions' true
+// power: 58 of 60 and 41 of 60).
+TEST(HoldRegions, PastTheThresholdWithContacts) {
+  std::mt19937_64 rng(test::seed(2911));
+  std::uniform_real_distribution<double> u(0, 1);
+  // three decimals, exactly: the value and its JSON text
+  const auto q3 = [](double v) {
+    Rational q(static_cast<long>(std::llround(v * 1000)), 1000);
+    q.canonicalize();
+    return q;
+  };
+  const auto dec = [&](double v) { return "\"" + to_string(q3(v)) + "\""; };
+  const auto at = [&](double lo, double hi) { return lo + (hi - lo) * u(rng); };
+  struct Case {
+    std::string support, contacts;
+    Vec3q twist;
+  };
+  std::vector<Case> family;
+  const std::vector<std::vector<std::array<double, 2>>> shapes = {
+      {{0, 0}, {2, 0}, {2, 1}, {0, 1}}, {{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 2}, {0, 2}}, {{0, 0}, {2, 0}, {1, 2}}};
+  for (int n = 0; n < 60; ++n) {
+    const double ox = at(-1.5, 0), oy = at(-1.5, 0);
+    std::string shifted = "[";
+    for (const auto& v : shapes[static_cast<std::size_t>(n % 3)])
+      shifted += std::string(shifted.size() > 1 ? ", " : "") + "[" + dec(v[0] + ox) + ", " + dec(v[1] + oy) + "]";
+    shifted += "]";
+    const std::string pressure = n % 2 ? R"("pressure": "uniform", "force": )" + dec(at(0.5, 2))
+                                       : R"("pressure": {"linear": [1, )" + dec(at(-0.2, 0.2)) + ", " + dec(at(-0.2, 0.2)) + "]}";
+    std::string points;
+    for (int i = 0; i < n % 3; ++i)
+      points += std::string(i ? ", " : "") + R"({"at": [)" + dec(at(-2, 2)) + ", " + dec(at(-2, 2)) + R"(], "force": )" +
+                dec(at(0.1, 1)) + "}";
+    const std::string support = R"("support": {"mu": )" + dec(at(0.2, 0.8)) + R"(, "regions": [{"outline": )" + shifted +
+                                ", " + pressure + "}]" + (points.empty() ? "" : R"(, "points": [)" + points + "]") + "}";
+    double t[3];
+    if (n % 5) {
+      const double cx = at(-3, 3), cy = at(-3, 3), w = n % 2 ? 1 : -1;
+      t[0] = w * cy, t[1] = -w * cx, t[2] = w;
+    } else {
+      const double a = at(0, 6.283185307179586);
+      t[0] = std::cos(a), t[1] = std::sin(a), t[2] = 0;
+    }
+    Vec3q tq;
+    for (int i = 0; i < 3; ++i) tq[static_cast<std::size_t>(i)] = q3(t[i]);
+    std::string contacts;
+    for (int i = 0; i < 1 + n % 2; ++i) {
+      const double a = at(0, 6.283185307179586), px = 2.5 * std::cos(a), py = 2.5 * std::sin(a);
+      const double vx = tq[0].get_d() - tq[2].get_d() * q3(py).get_d(), vy = tq[1].get_d() + tq[2].get_d() * q3(px).get_d(),
+                   l = std::hypot(vx, vy);
+      if (l < 1e-2) continue;
+      // a normal within 10^-3 of the velocity, rounded so that the contact still allows t exactly (checked below)
+      contacts += std::string(contacts.empty() ? "" : ", ") + R"({"at": [)" + dec(px) + ", " + dec(py) + R"(], "normal": [)" +
+                  dec(vx / l) + ", " + dec(vy / l) + R"(], "mu": )" + dec(at(0, 0.3)) + "}";
+    }
+    family.push_back({support, contacts, tq});
+  }
+  for (const double eps : {1e-2, 1e-3}) {
+    int fails = 0, scenes = 0;
+    for (const Case& c : family) {
+      const Scene s = read_scene(R"({"wrenchkit": 1, )" + c.support + "}", kLimits);
+      const Region_sliding rs = region_sliding(*s.support, c.twist, Rational(1, 1000000000));
+      std::string load = "[";
+      for (std::size_t i = 0; i < 3; ++i) {
+        char b[40];
+        std::snprintf(b, sizeof b, "%.15g", (1 + eps) * Rational((rs.load_lo[i] + rs.load_hi[i]) / 2).get_d());
+        load += std::string(i ? ", " : "") + "\"" + b + "\"";
+      }
+      load += "]";
+      const std::string text = R"({"wrenchkit": 1, "contacts": [)" + c.contacts + "], " + c.support +
+                               R"(, "load": {"wrench": )" + load + "}}";
+      const Scene full = read_scene(text, kLimits);
+      bool allowed = true;  // the rounded contacts still allow t (else the case proves nothing: skipped)
+      for (const Generator& g : generators(full, Reading::friction)) allowed = allowed && dot(c.twist, g.w) >= 0;
+      if (!allowed) continue;
+      ++scenes;
+      const Hold_item h = hold_of(text, Mode::hybrid);
+      ASSERT_EQ(h.status, Status::answered) << h.message;
+      EXPECT_EQ(h.answer.verdict, Hold_verdict::fails) << eps << " " << h.answer.undecided_why << "\n"
+                                                       << test::dump_failure(text, "hold_past_threshold");
+      if (h.answer.verdict == Hold_verdict::fails) {
+        ++fails;
+        EXPECT_TRUE(test::checker_accepts(text, h.certificate));
+      }
+    }
+    EXPECT_GE(scenes, 40) << eps;
+    EXPECT_EQ(fails, scenes) << eps;
+  }
 }
 
 }  // namespace
