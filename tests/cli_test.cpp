@@ -737,5 +737,42 @@ TEST(CliModes, LabelsDualReuleauxInEveryMode) {
   }
 }
 
+// One exit-code rule (issue 29): an undecided answer exits 3 in every output form and mode — text, --json and
+// --certificate — for every command that can leave a question undecided; the answer itself (text or JSON) is still
+// written, with the reason, and --certificate writes no file. Advice names only what can help: hybrid mode's Newton
+// from exact mode, never "use --mode hybrid or exact" outside float mode. Decided answers exit 0.
+TEST(Cli, UndecidedExitsThreeInEveryForm) {
+  // 1.41421356237309504880 < √2 by 1.7·10^-21: the barbell on the diagonal's pure moment, beyond exact mode's rounds.
+  const std::string scene = write("undecided_moment.scene.json",
+                                  R"({"wrenchkit": 1, "support": {"mu": 1, "points": [{"at": [1, 1], "force": "1/2"},
+      {"at": [-1, -1], "force": "1/2"}]}, "load": {"wrench": [0, 0, "-1.41421356237309504880"]}})");
+  const std::string ls = "limit-surface --mode exact --load 0,0,1.41421356237309504880 '" + scene + "'";
+  const std::string cert = (scratch() / "undecided.cert.json").string();
+  std::filesystem::remove(cert);
+  for (const std::string& command : {ls, "hold --mode exact '" + scene + "'", "analyze --mode exact '" + scene + "'"}) {
+    const Cli_result text = run(command);
+    EXPECT_EQ(text.code, 3) << command << "\n" << text.out << text.err;
+    EXPECT_NE(text.out.find("undecided"), std::string::npos) << command << "\n" << text.out;
+    EXPECT_NE(text.out.find("hybrid mode adds Newton's method"), std::string::npos) << command << "\n" << text.out;
+    EXPECT_EQ(text.out.find("use --mode hybrid or exact"), std::string::npos) << command;
+    const Cli_result json = run(command + " --json");
+    EXPECT_EQ(json.code, 3) << command << " --json\n" << json.out << json.err;
+    EXPECT_NE(json.out.find("\"undecided"), std::string::npos) << json.out;
+  }
+  for (const std::string& command : {ls, "hold --mode exact '" + scene + "'"}) {
+    const Cli_result c = run(command + " --certificate '" + cert + "'");
+    EXPECT_EQ(c.code, 3) << command << "\n" << c.err;
+    EXPECT_FALSE(std::filesystem::exists(cert)) << command;
+    EXPECT_NE(c.err.find("no certificate to write"), std::string::npos) << c.err;
+  }
+  // Hybrid decides it (Newton in multiple precision): exit 0; float mode cannot and says where to go.
+  EXPECT_EQ(run("hold '" + scene + "'").code, 0);
+  const Cli_result fl = run("hold --mode float '" + scene + "'");
+  EXPECT_EQ(fl.code, 3) << fl.err;
+  EXPECT_NE(fl.err.find("use --mode hybrid or exact"), std::string::npos) << fl.err;
+  const Cli_result fl_ls = run("limit-surface --mode float --json --load 0,0,1.41421356237309504880 '" + scene + "'");
+  EXPECT_EQ(fl_ls.code, 3) << fl_ls.out << fl_ls.err;
+}
+
 }  // namespace
 }  // namespace wrenchkit

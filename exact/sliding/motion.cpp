@@ -214,6 +214,16 @@ Motion_answer known_points(const Support_model& model, const Vec3q& p, Mode mode
     r.uncertified = std::string("the certified search says ") + motion_name(r.motion) + kNoWitness;
     r.motion = Motion::undecided;
   }
+  if (r.motion == Motion::undecided && r.uncertified.empty())
+    r.undecided_why =
+        std::string("the load is within the resolution of ") +
+        (mode == Mode::float_only ? "the float twin's certified search"
+                                  : "the exact tests (the " + std::to_string(o.sides) +
+                                        "-gons, then polygons refined where friction acts, to about 10^-11 of the "
+                                        "discs)") +
+        " of the limit surface, and no twist tried meets the friction's power exactly (a load exactly on the surface "
+        "whose supporting twists give a point an irrational speed has no certificate in rationals)" +
+        (mode == Mode::exact ? "; hybrid mode adds Newton's method in multiple precision" : "");
   return r;
 }
 
