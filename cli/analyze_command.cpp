@@ -61,7 +61,7 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
               "): lambda^2 = " + lam + ", inner " + std::to_string(in.facets.size()) + " facets, outer " +
               std::to_string(out.facets.size()) + " facets; centre of friction (" + to_string(cof.x) + ", " +
               to_string(cof.y) + ") — 'wrenchkit limit-surface' for any N, tolerances and queries\n";
-    if (scene.load && scene.load->kind != Load::Kind::gravity) {
+    if (scene.load) {  // gravity beside the support presses it: nothing in-plane (load_wrench)
       const Vec3q p = load_wrench(scene);
       Motion_options mo;
       mo.sides = n;
@@ -85,8 +85,7 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
 std::optional<Ls_summary> region_summary(const Options& o, const Scene& scene, const std::string& text,
                                          const std::string& source, std::string& why) {
   Support_query q;
-  const bool load = scene.load && scene.load->kind != Load::Kind::gravity;
-  if (load) q.load = load_wrench(scene);
+  if (scene.load) q.load = load_wrench(scene);
   const Support_item r = answer_support(scene, text, source, request_of(o), q);
   if (r.status != Status::answered) {
     why = r.message;
@@ -102,7 +101,7 @@ std::optional<Ls_summary> region_summary(const Options& o, const Scene& scene, c
               " region(s) with a continuous pressure (strictly convex, no polytope); total force " +
               to_string(st.total_force) + ", centre of friction (" + to_string(st.center_of_pressure.x) + ", " +
               to_string(st.center_of_pressure.y) + ") — 'wrenchkit sliding' and 'limit-surface' for twists and loads\n";
-  if (load) {
+  if (q.load) {
     const Motion_answer& m = *r.motion;
     j.key("load_motion").object().key("load").rationals(*q.load).member("motion", motion_name(m.motion));
     j.member("decided_by", decided_by_name(m.decided_by)).member("certificate_checked", !r.certificate.empty()).end_object();
@@ -127,7 +126,6 @@ struct Analysis {
   std::optional<Ls_summary> limit_surface;
   std::optional<Hold_item> hold;  // contacts, a support and an in-plane load: the two together
   std::vector<std::pair<std::string, std::string>> skipped;
-  std::optional<std::pair<Vec2, Vec2>> gravity_off;  // body.com, the support's centre of pressure
   // Some answer is undecided (the exit code is 3).
   bool undecided() const {
     return (limit_surface && limit_surface->undecided) || (hold && hold->answer.verdict == Hold_verdict::undecided);
@@ -149,22 +147,13 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
     a.limit_surface = a.scene.support->regions.empty() ? limit_surface_summary(o, tolerance, a.scene, why)
                                                        : region_summary(o, a.scene, scene_text, source, why);
     if (!a.limit_surface) a.skipped.push_back({"limit_surface", why});
-    else if (a.scene.load && a.scene.load->kind == Load::Kind::gravity)
-      a.skipped.push_back({"load_motion", "gravity acts across a horizontal support, not in its plane: give the load "
-                                          "on the support as a force or a wrench"});
   } else if (tolerance) {
     a.skipped.push_back({"limit_surface", "--tolerance was given but the scene has no support"});
   }
   // Equilibrium above is the contacts without the support; the load's motion on the support is the support without
   // the contacts; hold is both together (docs/fixtures.md).
-  if (!a.scene.contacts.empty() && a.scene.support && a.scene.load) {
-    if (a.scene.load->kind == Load::Kind::gravity)
-      a.skipped.push_back({"hold", "gravity acts across a horizontal support, not in its plane: give the in-plane load "
-                                   "as a force or a wrench for hold"});
-    else
-      a.hold = answered(answer_hold(a.scene, scene_text, request));
-  }
-  a.gravity_off = gravity_off_pressure_center(a.scene);
+  if (!a.scene.contacts.empty() && a.scene.support && a.scene.load)
+    a.hold = answered(answer_hold(a.scene, scene_text, request));
   return a;
 }
 
@@ -184,12 +173,6 @@ void write_analysis(Json_writer& w, const Options& o, const Analysis& a, const c
   w.key("skipped").array();
   for (const auto& [what, why] : a.skipped) w.object().member("what", what).member("why", why).end_object();
   w.end_array();
-  if (a.gravity_off) {
-    w.key("warnings").array().object().member("what", "gravity_off_pressure_center");
-    write_point(w.key("com"), a.gravity_off->first);
-    write_point(w.key("pressure_center"), a.gravity_off->second);
-    w.end_object().end_array();
-  }
 }
 
 }  // namespace
@@ -214,11 +197,6 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
                  "load on the support the support alone):\n"
               << hold_human(*a.hold);
   for (const auto& [what, why] : a.skipped) std::cout << "skipped " << what << ": " << why << "\n";
-  if (a.gravity_off)
-    std::cout << "warning: the weight acts at body.com (" << to_string(a.gravity_off->first.x) << ", "
-              << to_string(a.gravity_off->first.y) << ") but the support's centre of pressure is ("
-              << to_string(a.gravity_off->second.x) << ", " << to_string(a.gravity_off->second.y)
-              << "): a body at rest on the support would need them to coincide\n";
   std::cout << "decided by: " << arithmetic_name(a.closure.decided_by()) << " for closure"
             << (a.equilibrium ? std::string(", ") + arithmetic_name(a.equilibrium->answer.decided_by()) + " for equilibrium"
                               : std::string())

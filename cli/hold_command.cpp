@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/common.h"
+#include "exact/io/support_check.h"
 #include "exact/certificates/certificates.h"
 #include "exact/io/json_writer.h"
 #include "exact/pipeline/hold_answer.h"
@@ -111,7 +112,12 @@ std::string forces_text(const Hold_witness& h, bool support) {
 std::string hold_human(const Hold_item& r) {
   const Hold_answer& a = r.answer;
   std::ostringstream s;
-  s << "load: the wrench " << vec_text({a.load[0], a.load[1], a.load[2]}) << " on the body (force, moment about the origin)\n"
+  s << "load: the wrench " << vec_text({a.load[0], a.load[1], a.load[2]}) << " on the body (force, moment about the origin)"
+    << (gravity_across_support(r.scene) ? "; gravity " + human_number(r.scene.load->weight) +
+                                              " at body.com presses the body on the support (its total normal force), "
+                                              "nothing in the plane"
+                                        : std::string())
+    << "\n"
     << "contacts: " << a.generators << " friction generator(s); support: ";
   if (!a.has_support) s << "none (hold is equilibrium)";
   else if (!a.unknown) {

@@ -60,7 +60,7 @@ std::string unknown_support_text(const Support_item& r, const std::string& sourc
   const Admissible& a = *r.admissible;
   std::string s = scene_line(r.scene.name, source) + "support: " + std::to_string(r.scene.support->points.size()) +
                   " points, the forces of " + std::to_string(a.unknown.size()) + " not given; weight " +
-                  human_number(*r.scene.support->weight) + ", centre of pressure (" + human_number(r.pressure_center.x) +
+                  human_number(r.weight) + ", centre of pressure (" + human_number(r.pressure_center.x) +
                   ", " + human_number(r.pressure_center.y) + ")";
   if (a.unknown.size() <= kMaxEnumeratedUnknowns)
     s += "; " + std::to_string(r.vertices.size()) + " extreme admissible distributions";
@@ -75,7 +75,7 @@ void write_unknown_distribution(Json_writer& w, const Support_item& r) {
   const Admissible& a = *r.admissible;
   w.member("distribution", "unknown").key("unknown_points").array();
   for (const auto k : a.unknown) w.integer(k);
-  w.end_array().member("weight", *r.scene.support->weight);
+  w.end_array().member("weight", r.weight);
   w.key("pressure_center").array().rational(r.pressure_center.x).rational(r.pressure_center.y).end_array();
   w.key("extreme_distributions");
   if (a.unknown.size() > kMaxEnumeratedUnknowns) {

@@ -513,7 +513,7 @@ py::dict unknown_distribution(const Support_item& r, const std::string& mode, co
   d["mode"] = mode;
   d["distribution"] = "unknown";
   d["unknown_points"] = r.admissible->unknown;
-  d["weight"] = fraction(*r.scene.support->weight);
+  d["weight"] = fraction(r.weight);
   d["pressure_center"] = point(r.pressure_center);
   py::list v;
   for (const auto& f : r.vertices) v.append(distribution(f));

@@ -546,6 +546,24 @@ TEST(CheckerLoad, BadLoadsAndBodies) {
     EXPECT_NE(check(plus(v1, ok), "{}").outcome, Outcome::bad_scene) << ok;
 }
 
+// Gravity beside a support is the weight pressing the body on it: W and c = body.com, read as the engine reads them
+// (exact/io/support_check.h); a conflict is a bad scene, agreeing values are a good one.
+TEST(CheckerLoad, GravityBesideASupportSetsItsWeight) {
+  const std::string base = R"({"wrenchkit": 1, "body": {"com": [0, 0]}, "load": {"gravity": 2}, "support": {"mu": 1, )";
+  const std::string pts = R"("points": [{"at": [0, 1]}, {"at": [0, -1]}]}})";
+  EXPECT_EQ(check(base + pts, "{}").outcome == Outcome::bad_scene, false);
+  EXPECT_EQ(check(base + R"("weight": 2, "pressure_center": [0, 0], )" + pts, "{}").outcome == Outcome::bad_scene, false);
+  EXPECT_EQ(scene_error(base + R"("weight": 3, )" + pts), "load.gravity: the weight 2 is not support.weight 3");
+  EXPECT_EQ(scene_error(base + R"("pressure_center": [0, "1/2"], )" + pts),
+            "support.pressure_center: (0, 1/2) is not body.com (0, 0), where the weight acts");
+  // Given forces: they carry the weight at body.com, or the scene is refused.
+  EXPECT_NE(scene_error(base + R"("points": [{"at": [0, 1], "force": 1}, {"at": [0, -1], "force": "1/2"}]}})"), "");
+  EXPECT_NE(scene_error(base + R"("points": [{"at": [0, 1], "force": 2}]}})"), "");
+  EXPECT_EQ(check(base + R"("points": [{"at": [0, 1], "force": 1}, {"at": [0, -1], "force": 1}]}})", "{}").outcome ==
+                Outcome::bad_scene,
+            false);
+}
+
 TEST(CheckerLoad, ClosureIgnoresTheLoad) {
   // force_closure / form_closure certificates are checked exactly as without a load
   const std::string negative = negative_head + R"("twist": ["0", "1", "0"]})";

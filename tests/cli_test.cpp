@@ -450,7 +450,7 @@ TEST(Cli, AnalyzeComputesWhatTheSceneCallsFor) {
   // A load: equilibrium too; a support: listed as skipped, not silently dropped.
   const std::string s = write("analyze.json", R"({"wrenchkit": 1, "body": {"com": [0, 1]},
       "contacts": [{"at": [-1, 0], "normal": [0, 1]}, {"at": [1, 0], "normal": [0, 1]}],
-      "load": {"gravity": 2}, "support": {"mu": 1, "points": [{"at": [0, 0], "force": 1}]}})");
+      "load": {"force": [0, -2], "at": [0, 1]}, "support": {"mu": 1, "points": [{"at": [0, 0], "force": 1}]}})");
   const Cli_result e = run("analyze --json '" + s + "'");
   ASSERT_EQ(e.code, 0) << e.err;
   EXPECT_NE(e.out.find("\"equilibrium\": {"), std::string::npos) << e.out;
@@ -463,6 +463,55 @@ TEST(Cli, AnalyzeComputesWhatTheSceneCallsFor) {
   EXPECT_EQ(run("analyze --certificate x.json '" + s + "'").code, 2);
   const Cli_result d = run("demo");
   EXPECT_NE(d.out.find("balanced: yes"), std::string::npos) << d.out;
+}
+
+// Gravity beside a support is the weight pressing the body on it (docs/scene-format.md): it sets W and, at body.com, the
+// centre of pressure, and pushes nothing in the plane; every command reads it so, and the checker too.
+TEST(Cli, GravityOnASupportPressesTheBodyOnIt) {
+  const std::string plate = R"("body": {"com": [0, 0]}, "contacts": [{"at": [-1, 0], "normal": [1, 0]}],
+      "load": {"gravity": 2}, "support": {"mu": "1/2", )";
+  const std::string pts = R"("points": [{"at": [0, 1]}, {"at": [0, -1]}, {"at": [1, 0]}, {"at": [-1, 0]}]}})";
+  const std::string s = write("gravity_support.json", "{\"wrenchkit\": 1, " + plate + pts);
+  // hold: the in-plane load is zero (not (0, -2)): it holds, the weight W = 2 sets the distributions.
+  const Cli_result h = run("hold '" + s + "'");
+  ASSERT_EQ(h.code, 0) << h.err;
+  EXPECT_NE(h.out.find("load: the wrench (0, 0, 0) on the body"), std::string::npos) << h.out;
+  EXPECT_NE(h.out.find("gravity 2 at body.com presses the body on the support"), std::string::npos) << h.out;
+  EXPECT_NE(h.out.find("holds: yes"), std::string::npos) << h.out;
+  EXPECT_NE(h.out.find("accepted by the independent checker"), std::string::npos) << h.out;
+  // limit-surface: W is the weight, c is body.com.
+  const Cli_result l = run("limit-surface '" + s + "' --load 0,0,1/10");
+  ASSERT_EQ(l.code, 0) << l.err;
+  EXPECT_NE(l.out.find("weight 2, centre of pressure (0, 0)"), std::string::npos) << l.out;
+  // analyze runs hold and the load's motion instead of skipping them.
+  const Cli_result a = run("analyze --json '" + s + "'");
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_NE(a.out.find("\"hold\": {"), std::string::npos) << a.out;
+  EXPECT_EQ(a.out.find("gravity acts across"), std::string::npos) << a.out;
+  // A conflicting weight or pressure centre is refused with both values, by every command.
+  const std::string w3 = write("gravity_weight.json", "{\"wrenchkit\": 1, " + plate + "\"weight\": 3, " + pts);
+  for (const char* command : {"hold", "analyze", "limit-surface", "sliding", "equilibrium"}) {
+    const Cli_result e = run(std::string(command) + " '" + w3 + "'");
+    EXPECT_EQ(e.code, 2) << command;
+    EXPECT_NE(e.err.find("load.gravity: the weight 2 presses the body on the support, but support.weight is 3"),
+              std::string::npos) << command << ": " << e.err;
+  }
+  const std::string c1 = write("gravity_center.json",
+                               "{\"wrenchkit\": 1, " + plate + "\"pressure_center\": [0, \"1/2\"], " + pts);
+  const Cli_result c = run("hold '" + c1 + "'");
+  EXPECT_EQ(c.code, 2);
+  EXPECT_NE(c.err.find("support.pressure_center: (0, 1/2) is not body.com (0, 0)"), std::string::npos) << c.err;
+  // Given forces must carry the weight, at body.com.
+  const std::string f1 = write("gravity_forces.json", R"({"wrenchkit": 1, "body": {"com": [0, 1]},
+      "load": {"gravity": 2}, "support": {"mu": 1, "points": [{"at": [0, 0], "force": 1}]}})");
+  const Cli_result f = run("hold '" + f1 + "'");
+  EXPECT_EQ(f.code, 2);
+  EXPECT_NE(f.err.find("load.gravity: the weight 2 is not the sum of the given forces, 1"), std::string::npos) << f.err;
+  const std::string f2 = write("gravity_forces_off.json", R"({"wrenchkit": 1, "body": {"com": [0, 1]},
+      "load": {"gravity": 2}, "support": {"mu": 1, "points": [{"at": [0, 0], "force": 2}]}})");
+  const Cli_result g = run("limit-surface '" + f2 + "' --load 0,0,0");
+  EXPECT_EQ(g.code, 2);
+  EXPECT_NE(g.err.find("body.com: the weight's point (0, 1) is not the centre of pressure"), std::string::npos) << g.err;
 }
 
 TEST(Cli, LimitsCanBeRaised) {

@@ -42,38 +42,45 @@ std::optional<Vec2> pressure_center_of(const Scene& scene) {
   return std::nullopt;
 }
 
-std::optional<std::pair<Vec2, Vec2>> gravity_off_pressure_center(const Scene& scene) {
-  if (!scene.support || !scene.load || scene.load->kind != Load::Kind::gravity || !scene.body.com) return std::nullopt;
+std::optional<Rational> support_weight_of(const Scene& scene) {
+  if (!scene.support) return std::nullopt;
+  if (scene.support->weight) return scene.support->weight;
+  if (gravity_across_support(scene)) return scene.load->weight;
+  return std::nullopt;
+}
+
+bool gravity_across_support(const Scene& scene) {
+  return scene.support && scene.load && scene.load->kind == Load::Kind::gravity;
+}
+
+// Gravity beside a support fixes W (the weight) and c (body.com): a written weight or pressure_center that
+// says otherwise is a contradiction, refused with both values.
+static std::string gravity_conflict(const Scene& scene) {
+  if (!gravity_across_support(scene)) return "";
   const Support& s = *scene.support;
-  Vec2 c;
-  if (s.pressure_center) {
-    c = *s.pressure_center;
-  } else if (s.known()) {
-    Rational w;
-    for (const Support_point& p : s.points) {
-      w += *p.force;
-      c.x += *p.force * p.at.x;
-      c.y += *p.force * p.at.y;
-    }
-    for (const Support_region& r : s.regions) {
-      w += r.total;
-      c.x += r.moment.x;
-      c.y += r.moment.y;
-    }
-    c = {c.x / w, c.y / w};
-  } else {
-    return std::nullopt;  // c is body.com itself
-  }
+  const Rational& g = scene.load->weight;
+  if (s.weight && *s.weight != g)
+    return "load.gravity: the weight " + to_string(g) + " presses the body on the support, but support.weight is " +
+           to_string(*s.weight) + " (gravity beside a support sets the support's total normal force: give one of "
+           "them, or the same value)";
   const Vec2& com = *scene.body.com;
-  if (com.x == c.x && com.y == c.y) return std::nullopt;
-  return std::make_pair(com, c);
+  if (s.pressure_center && (s.pressure_center->x != com.x || s.pressure_center->y != com.y))
+    return "support.pressure_center: " + point_text(*s.pressure_center) + " is not body.com " + point_text(com) +
+           ", where the weight (load.gravity) acts (gravity beside a support sets the centre of pressure: drop "
+           "pressure_center or move body.com)";
+  return "";
 }
 
 std::string support_inadmissible(const Scene& scene) {
   if (!scene.support) return "";
   const Support& s = *scene.support;
   // Every force given and neither weight nor pressure_center written: nothing to agree with.
-  if (!s.weight && !s.pressure_center && s.known()) return "";
+  if (const std::string why = gravity_conflict(scene); !why.empty()) return why;
+  const std::optional<Rational> weight = support_weight_of(scene);
+  // With gravity the weight acts at body.com: the centre of pressure is held there as if it were written.
+  const std::optional<Vec2> center = gravity_across_support(scene) ? scene.body.com : s.pressure_center;
+  // Every force given and neither weight nor pressure_center written: nothing to agree with.
+  if (!weight && !center && s.known()) return "";
   Rational given;
   Vec2 moment;
   std::vector<Vec2> unknown;
@@ -93,25 +100,26 @@ std::string support_inadmissible(const Scene& scene) {
     moment.y += r.moment.y;
   }
   if (unknown.empty()) {
-    if (s.weight && *s.weight != given)
-      return "support.weight: " + to_string(*s.weight) + " is not the sum of the given forces" +
+    if (weight && *weight != given)
+      return std::string(s.weight ? "support.weight: " : "load.gravity: the weight ") + to_string(*weight) +
+             " is not the sum of the given forces" +
              (s.regions.empty() ? "" : " and the regions' forces") + ", " + to_string(given) +
              ": no admissible distribution";
-    if (s.pressure_center && (s.pressure_center->x * given != moment.x || s.pressure_center->y * given != moment.y))
-      return "support.pressure_center: " + point_text(*s.pressure_center) +
-             " is not the centre of pressure of the given forces, " +
+    if (center && (center->x * given != moment.x || center->y * given != moment.y))
+      return std::string(s.pressure_center ? "support.pressure_center: " : "body.com: the weight's point ") +
+             point_text(*center) + " is not the centre of pressure of the given forces, " +
              point_text({moment.x / given, moment.y / given}) + ": no admissible distribution";
     return "";
   }
-  if (!s.weight) return "support.weight: missing (the total normal force is needed when a point's force is not given)";
+  if (!weight) return "support.weight: missing (the total normal force is needed when a point's force is not given)";
   const std::optional<Vec2> c = pressure_center_of(scene);
   if (!c)
     return "support.pressure_center: missing, and the body has no com (the centre of pressure is needed when a "
            "point's force is not given)";
-  const Rational rest = *s.weight - given;
-  const Vec2 rest_moment{*s.weight * c->x - moment.x, *s.weight * c->y - moment.y};
+  const Rational rest = *weight - given;
+  const Vec2 rest_moment{*weight * c->x - moment.x, *weight * c->y - moment.y};
   if (rest < 0)
-    return "support.weight: " + to_string(*s.weight) + " is less than the sum of the given forces, " +
+    return std::string(s.weight ? "support.weight: " : "load.gravity: the weight ") + to_string(*weight) + " is less than the sum of the given forces, " +
            to_string(given) + ": no admissible distribution";
   if (rest == 0) {
     if (rest_moment.x == 0 && rest_moment.y == 0) return "";

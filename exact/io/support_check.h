@@ -14,7 +14,6 @@
 
 #include <optional>
 #include <string>
-#include <utility>
 
 #include "exact/io/scene.h"
 
@@ -28,9 +27,12 @@ std::string support_inadmissible(const Scene& scene);
 // nothing when every force is given and no pressure_center is written.
 std::optional<Vec2> pressure_center_of(const Scene& scene);
 
-// A gravity load is carried by the support at its centre of pressure: when body.com is not that point
-// (the given forces' centre, or pressure_center), the scene is inconsistent as a body at rest — reported,
-// not refused. Returns {com, centre of pressure} then; nothing otherwise (no gravity, no support, or equal).
-std::optional<std::pair<Vec2, Vec2>> gravity_off_pressure_center(const Scene& scene);
+// The total normal force W: support.weight, else a gravity load's weight (gravity beside a support is the
+// weight pressing the body on it, docs/scene-format.md "Gravity on a support"); nothing when neither is given.
+std::optional<Rational> support_weight_of(const Scene& scene);
+
+// Gravity beside a support acts across the support's plane: it presses the body on the support with its
+// weight at body.com and pushes nothing in the plane. True when the scene's load is read that way.
+bool gravity_across_support(const Scene& scene);
 
 }  // namespace wrenchkit

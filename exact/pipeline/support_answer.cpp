@@ -76,6 +76,7 @@ void answer_unknown(const Support_model& m, const Support_query& q, Support_item
   const Support& s = *r.scene.support;
   r.admissible = m.admissible();
   r.pressure_center = *pressure_center_of(r.scene);
+  r.weight = *support_weight_of(r.scene);
   if (r.mode == Mode::float_only)
     throw Undecided_error("the float twin has no LP over the admissible distributions (the forces of " +
                           std::to_string(r.admissible->unknown.size()) + " support point(s) are not given)");
@@ -89,6 +90,7 @@ void answer_regions_unknown(const Support_model& m, const Support_query& q, Supp
   const Support& s = *r.scene.support;
   r.admissible = m.admissible();
   r.pressure_center = *pressure_center_of(r.scene);
+  r.weight = *support_weight_of(r.scene);
   Support regions_only = s;
   regions_only.points.clear();
   r.regions = region_sliding(regions_only, q.twist, q.tolerance ? *q.tolerance : Rational(1, 1000000));

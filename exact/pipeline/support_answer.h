@@ -76,6 +76,7 @@ struct Support_item {
   std::vector<std::vector<Rational>> vertices;
   std::optional<Power_range> power;
   Vec2 pressure_center;
+  Rational weight;  // W: support.weight, or the weight of gravity beside the support
   // A support with regions [RG-1] [RG-2] (exact/sliding/region_sliding.h), every mode but float (which has no twin
   // of regions and answers undecided): the exact statics and the power and load of --twist as certified brackets;
   // with a point force not given [RG-3], the regions' own (the points' range over F is in `power`, their bracket added).

@@ -59,9 +59,10 @@ Admissible admissible_set(const Scene& scene) {
     moment.y += r.moment.y;
   }
   const std::optional<Vec2> c = pressure_center_of(scene);
-  if (!s.weight || !c) throw std::invalid_argument("admissible_set: a scene read_scene would refuse");
-  a.rest = *s.weight - sum;
-  a.rest_moment = {*s.weight * c->x - moment.x, *s.weight * c->y - moment.y};
+  const std::optional<Rational> weight = support_weight_of(scene);
+  if (!weight || !c) throw std::invalid_argument("admissible_set: a scene read_scene would refuse");
+  a.rest = *weight - sum;
+  a.rest_moment = {*weight * c->x - moment.x, *weight * c->y - moment.y};
   return a;
 }
 

@@ -8,6 +8,7 @@
 #include "exact/statics/cone_lp.h"
 #include "exact/statics/hybrid_kernel.h"
 #include "exact/io/input_error.h"
+#include "exact/io/support_check.h"
 #include "exact/io/to_float.h"
 
 namespace wrenchkit {
@@ -17,7 +18,8 @@ Vec3q load_wrench(const Scene& scene) {
   switch (l.kind) {
     case Load::Kind::wrench:
       return l.wrench;
-    case Load::Kind::gravity:  // weight w at the centre of mass, acting in −y
+    case Load::Kind::gravity:  // weight w at the centre of mass, acting in −y; across a support: nothing in-plane
+      if (gravity_across_support(scene)) return {Rational(0), Rational(0), Rational(0)};
       return wrench_at(*scene.body.com, Vec2{Rational(0), Rational(-l.weight)});
     case Load::Kind::force:
       break;
@@ -65,6 +67,7 @@ fl::Bounded3 load_bounded(const Scene& scene) {
     case Load::Kind::wrench:
       return {to_bounded(l.wrench[0]), to_bounded(l.wrench[1]), to_bounded(l.wrench[2])};
     case Load::Kind::gravity: {
+      if (gravity_across_support(scene)) return {fl::Bounded::exact(0), fl::Bounded::exact(0), fl::Bounded::exact(0)};
       const fl::Bounded w = to_bounded(l.weight);
       return {fl::Bounded::exact(0), -w, -(w * to_bounded(scene.body.com->x))};
     }

@@ -521,6 +521,20 @@ Scene read_scene(Reader& r, const Limits& lim) {
     }
   }
   if (!has_version) r.fail("missing required key \"wrenchkit\"");
+  // Gravity beside a support is the weight pressing the body on it (scene-format.md): it sets W and, at body.com,
+  // the centre of pressure c, and pushes nothing in the plane. A written weight or pressure_center must agree.
+  const bool across = scene.support && load && load->form == Load::Form::gravity;
+  if (across) {
+    Support& s = *scene.support;
+    if (!has_com) throw Failure{"load.gravity: needs body.com (the point where the weight acts)"};
+    if (s.has_weight && s.weight != load->weight)
+      throw Failure{"load.gravity: the weight " + show(load->weight) + " is not support.weight " + show(s.weight)};
+    if (s.has_center && (s.center[0] != body->com[0] || s.center[1] != body->com[1]))
+      throw Failure{"support.pressure_center: " + show(s.center[0], s.center[1]) + " is not body.com " +
+                    show(body->com[0], body->com[1]) + ", where the weight acts"};
+    s.weight = load->weight, s.has_weight = true;
+    s.center[0] = body->com[0], s.center[1] = body->com[1], s.has_center = true;
+  }
   if (scene.support) {
     if (has_com) settle_support(*scene.support, true, body->com, lim);
     else settle_support(*scene.support, false, Body{}.com, lim);
@@ -536,7 +550,8 @@ Scene read_scene(Reader& r, const Limits& lim) {
     case Load::Form::wrench: scene.load = Wrench{load->wrench[0], load->wrench[1], load->wrench[2]}; break;
     case Load::Form::gravity:
       if (!has_com) throw Failure{"load.gravity: needs body.com (the point where the weight acts)"};
-      scene.load = Wrench{0, -load->weight, -load->weight * body->com[0]};
+      if (across) scene.load = Wrench{0, 0, 0};  // across the support: nothing in the plane
+      else scene.load = Wrench{0, -load->weight, -load->weight * body->com[0]};
       break;
   }
   return scene;
