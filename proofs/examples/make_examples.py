@@ -84,7 +84,7 @@ SCENES = {
             {"at": ["3.0", "30E-1"], "normal": ["-1", "-.1e1"], "mu": "1/10"},
         ],
         "load": {"gravity": 1},
-        "support": {"mu": "1/2", "points": [{"at": [1, 1], "force": 1}]},
+        "support": {"mu": "1/2", "points": [{"at": [2, 2], "force": 1}]},
     },
     # theory.md section 9: the block in a corner with mu = 1/2 at all four contacts, under four loads
     "block_corner_mu_1_2_gravity": {
