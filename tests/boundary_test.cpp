@@ -143,6 +143,33 @@ TEST(BoundaryFlat, OnePointIsAllSurface) {
   }
 }
 
+// A region (uniform square, μ = 1, W = 1) and a point: the load of the translation along (3, 4) is p* = (3/5, 4/5, m*)
+// (m* from the region's centre of pressure and the point); p*·(1 ± 10^-30) are decided by their scale alone — sticks
+// and slides, with forces or speeds exact on the translation's ray — and p* itself is impending, in hybrid and exact
+// mode, the certificates accepted by the independent checker.
+TEST(BoundaryRegions, TheRayOfATranslationAtAnyDistance) {
+  const std::string scene = R"({"wrenchkit": 1, "support": {"mu": 1, "points": [{"at": [2, 1], "force": "1/2"}],
+      "regions": [{"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": "1/2"}]}})";
+  // p* = Σ μ f v̂ at each point of force: the point (2, 1) carries 1/2, the square 1/2 at its centre (0, 0).
+  const Vec2 v{Rational(3, 5), Rational(4, 5)};
+  const Vec3q star{v.x, v.y, Rational(1, 2) * cross(Vec2{Rational(2), Rational(1)}, v)};
+  Rational tiny(1);
+  for (int i = 0; i < 30; ++i) tiny /= 10;
+  const auto scaled = [&](const Rational& k) { return Vec3q{star[0] * k, star[1] * k, star[2] * k}; };
+  for (const Mode mode : {Mode::hybrid, Mode::exact}) {
+    const struct {
+      Vec3q load;
+      Motion want;
+    } cases[] = {{star, Motion::impending}, {scaled(1 - tiny), Motion::sticks}, {scaled(1 + tiny), Motion::slides}};
+    for (const auto& c : cases) {
+      const Support_item r = motion_of(scene, c.load, mode);
+      ASSERT_EQ(r.status, Status::answered) << r.message;
+      EXPECT_EQ(r.motion->motion, c.want) << mode_name(mode) << " " << to_string(c.load[2]) << ": " << r.motion->undecided_why;
+      EXPECT_TRUE(test::checker_accepts(scene, r.certificate)) << mode_name(mode);
+    }
+  }
+}
+
 // On a support alone, `hold` with the body load w and `limit-surface --load −w` are one decision (issue 29): the same
 // outcome (holds ⇔ sticks, impending ⇔ impending, fails ⇔ slides, depends ⇔ depends), both certificates accepted, in
 // hybrid and exact mode — on every support-only scene of the stress families and the reference corpus' families

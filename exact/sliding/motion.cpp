@@ -200,6 +200,8 @@ Motion_answer known_points(const Support_model& model, const Vec3q& p, Mode mode
     if (!slides() && impending()) now(Motion::impending);
   } else if (impending()) {
     now(Motion::impending);
+  } else if (slides()) {  // the candidates (the translation along the force, …) with exact speed bounds
+    now(Motion::slides);
   } else if (mode != Mode::float_only) {
     polygon_rounds_at(s, model.admissible(), f, p, candidates(), r);
   }

@@ -603,10 +603,12 @@ bool try_slide(const Support& s, const Vec3q& p, const Vec3q& q, Motion_answer& 
   return true;
 }
 
-// On the surface: a translation q with a rational speed |v| moves every point and every cell corner at |v| exactly, so
-// the points' bound and each region's slide block (its coarse cells) are the exact power μ W |v|; the load meets it,
-// and the forces μ f v̂ of the points and μ F_k v̂ of the cells (on their circles) carry it exactly.
-bool try_impending(const Support& s, const Vec3q& p, const Vec3q& q, Motion_answer& out) {
+// Along a translation q with a rational speed |v|: every point and every cell corner moves at |v| exactly, so the
+// points' bound and each region's slide block (its coarse cells) are the exact power μ W |v| = q·p_q, where p_q is the
+// load the forces μ f v̂ of the points and μ F_k v̂ of the cells (on their circles) carry. A load p = λ p_q on that
+// ray is decided by λ: below 1 it sticks (the forces scaled by λ, strictly inside their discs), at 1 it is impending
+// (the forces on their circles, the twist's power met), above 1 it slides (q·p = λ q·p_q beats the exact bound).
+bool try_translation(const Support& s, const Vec3q& p, const Vec3q& q, Motion_answer& out) {
   if (q[2] != 0 || is_zero(q)) return false;
   const auto [lo, hi] = sqrt_bracket(q[0] * q[0] + q[1] * q[1]);
   if (lo != hi) return false;
@@ -623,7 +625,7 @@ bool try_impending(const Support& s, const Vec3q& p, const Vec3q& q, Motion_answ
     const Vec3q a = wrench_at(pt.at, w.forces.forces.back());
     for (std::size_t c = 0; c < 3; ++c) sum[c] += a[c];
   }
-  out.cells = 0;
+  std::size_t cells = 0;
   for (const Support_region& r : s.regions) {  // one block of cells for both: forces per cell, speeds per corner
     const Rational& mu = s.mu_of(r);
     Region_stick_block stick{region_cells(r, 1), {}};
@@ -633,14 +635,32 @@ bool try_impending(const Support& s, const Vec3q& p, const Vec3q& q, Motion_answ
     bound += slide.bound;
     const Vec3q a = region_stick_wrench(r, stick);
     for (std::size_t c = 0; c < 3; ++c) sum[c] += a[c];
-    out.cells += stick.cells.triangles.size();
+    cells += stick.cells.triangles.size();
     w.forces.regions.push_back(std::move(stick));
     w.twist.regions.push_back(std::move(slide));
   }
-  if (dot(q, p) != bound || sum != p) return false;
+  if (is_zero(sum) || !is_zero(cross(sum, p))) return false;  // p is not on the ray of p_q
+  const Rational lambda = dot(sum, p) / dot(sum, sum);
+  if (lambda <= 0) return false;
+  out.cells = cells;
   w.twist.distribution = w.forces.distribution;
   w.twist.twist = q;
-  out.impending = std::move(w);
+  if (lambda == 1) {
+    if (dot(q, p) != bound) return false;
+    out.impending = std::move(w);
+    out.motion = Motion::impending;
+  } else if (lambda < 1) {
+    Stick_witness& st = w.forces;
+    for (Vec2& g : st.forces) g = {g.x * lambda, g.y * lambda};
+    for (Region_stick_block& b : st.regions)
+      for (Vec2& g : b.forces) g = {g.x * lambda, g.y * lambda};
+    out.sticking = std::move(st);
+    out.motion = Motion::sticks;
+  } else {
+    if (dot(q, p) <= bound) return false;
+    out.sliding = std::move(w.twist);
+    out.motion = Motion::slides;
+  }
   return true;
 }
 
@@ -667,6 +687,12 @@ Motion_answer decide_on_regions(const Support& s, const Vec3q& p) {
     return v;
   };
   const bool zero = p[0] == 0 && p[1] == 0 && p[2] == 0;
+  // A load on the ray of a translation's boundary load (the force's direction with a rational length): decided by
+  // its scale alone, however close to the surface.
+  if (!zero && (p[0] != 0 || p[1] != 0) && try_translation(s, p, {p[0], p[1], Rational(0)}, out)) {
+    out.decided_by = Decided_by::certificate;
+    return out;
+  }
   const Plane_minimum m = zero ? Plane_minimum{} : minimise_on_load_plane(p, h);
   out.gauge_estimate = zero ? 0 : m.found && m.h > 0 ? 1 / m.h : HUGE_VAL;
   // Within 10^-12 of the limit surface (by the doubles) the witnesses found in double cannot resolve the side: only
@@ -710,8 +736,7 @@ Motion_answer decide_on_regions(const Support& s, const Vec3q& p) {
   if (m.found)
     if (const auto r = rationalized(m.q)) on.push_back(*r);
   for (const Vec3q& q : on)
-    if (try_impending(s, p, q, out)) {
-      out.motion = Motion::impending;
+    if (try_translation(s, p, q, out)) {
       out.decided_by = Decided_by::certificate;
       return out;
     }
