@@ -168,6 +168,14 @@ TEST(BoundaryRegions, TheRayOfATranslationAtAnyDistance) {
       EXPECT_TRUE(test::checker_accepts(scene, r.certificate)) << mode_name(mode);
     }
   }
+  // A triangle alone is one coarse cell: the stick witness cuts it once more (friction at two places at least).
+  const std::string tri = R"({"wrenchkit": 1, "support": {"mu": 1, "regions": [{"outline": [[0, 0], [3, 0], [0, 3]],
+      "pressure": "uniform", "force": 1}]}})";
+  const Vec3q below{Rational(1) - tiny, Rational(0), Rational(0)};  // the centre (1, 1): m = −1·fx for fy = 0
+  const Support_item r = motion_of(tri, {below[0], 0, -below[0]}, Mode::hybrid);
+  ASSERT_EQ(r.status, Status::answered) << r.message;
+  EXPECT_EQ(r.motion->motion, Motion::sticks) << r.motion->undecided_why;
+  EXPECT_TRUE(test::checker_accepts(tri, r.certificate));
 }
 
 // On a support alone, `hold` with the body load w and `limit-surface --load −w` are one decision (issue 29): the same

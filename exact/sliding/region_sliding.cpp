@@ -608,7 +608,9 @@ bool try_slide(const Support& s, const Vec3q& p, const Vec3q& q, Motion_answer& 
 // load the forces μ f v̂ of the points and μ F_k v̂ of the cells (on their circles) carry. A load p = λ p_q on that
 // ray is decided by λ: below 1 it sticks (the forces scaled by λ, strictly inside their discs), at 1 it is impending
 // (the forces on their circles, the twist's power met), above 1 it slides (q·p = λ q·p_q beats the exact bound).
-bool try_translation(const Support& s, const Vec3q& p, const Vec3q& q, Motion_answer& out) {
+// A stick witness needs friction at two distinct places (else the surface is flat): a region that is one coarse cell
+// (a triangle) is cut once more then.
+bool try_translation(const Support& s, const Vec3q& p, const Vec3q& q, Motion_answer& out, int level = 1) {
   if (q[2] != 0 || is_zero(q)) return false;
   const auto [lo, hi] = sqrt_bracket(q[0] * q[0] + q[1] * q[1]);
   if (lo != hi) return false;
@@ -625,10 +627,12 @@ bool try_translation(const Support& s, const Vec3q& p, const Vec3q& q, Motion_an
     const Vec3q a = wrench_at(pt.at, w.forces.forces.back());
     for (std::size_t c = 0; c < 3; ++c) sum[c] += a[c];
   }
-  std::size_t cells = 0;
+  std::size_t cells = 0, places = 0;
+  for (const Support_point& pt : s.points) places += s.mu_of(pt) * *pt.force != 0;
   for (const Support_region& r : s.regions) {  // one block of cells for both: forces per cell, speeds per corner
     const Rational& mu = s.mu_of(r);
-    Region_stick_block stick{region_cells(r, 1), {}};
+    Region_stick_block stick{region_cells(r, level), {}};
+    if (mu != 0) places += stick.cells.triangles.size();
     for (const Support_point& c : cell_points(r, mu, stick.cells))
       stick.forces.push_back({mu * *c.force * dir.x, mu * *c.force * dir.y});
     Region_slide_block slide{stick.cells, std::vector<Rational>(stick.cells.vertices.size(), lo), mu * lo * r.total};
@@ -650,6 +654,7 @@ bool try_translation(const Support& s, const Vec3q& p, const Vec3q& q, Motion_an
     out.impending = std::move(w);
     out.motion = Motion::impending;
   } else if (lambda < 1) {
+    if (places < 2) return level == 1 && try_translation(s, p, q, out, 2);
     Stick_witness& st = w.forces;
     for (Vec2& g : st.forces) g = {g.x * lambda, g.y * lambda};
     for (Region_stick_block& b : st.regions)
