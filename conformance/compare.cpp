@@ -41,9 +41,9 @@ struct Ref {
   std::map<std::string, bool> verdicts;  // force_closure, form_closure, equilibrium
   std::map<std::string, Field_distance> fields;  // force_closure, form_closure, equilibrium
   bool has_motion = false;               // the line has "motion" (a load on a support)
-  std::string motion;                    // sticks, slides, depends; empty: no certified answer
+  std::string motion;                    // sticks, impending, slides, depends; empty: no certified answer
   bool has_hold = false;                 // the line has "hold" (a load)
-  std::string hold;                      // true, false, depends; empty: no certified answer (or refused)
+  std::string hold;                      // true, impending, false, depends; empty: no certified answer (or refused)
   const json::Value* labels = nullptr;
   const json::Value* limit_surface = nullptr;
   Field_distance distance_of(const std::string& field) const {
@@ -72,8 +72,11 @@ struct Disagreement {
   std::vector<Power_detail> power;
 };
 
+// `boundary`: the reference is "impending" (the load on the boundary: friction can just hold it) and the answer
+// names a side (sticks or slides, true or false) or "depends" — a convention at the boundary, neither unsafe nor
+// lost, counted apart from agree and disagree.
 struct Field_tally {
-  std::size_t compared = 0, agree = 0, disagree = 0, no_answer = 0, unsafe = 0, lost = 0;
+  std::size_t compared = 0, agree = 0, disagree = 0, no_answer = 0, unsafe = 0, lost = 0, boundary = 0;
 };
 
 const char* const kFields[] = {"force_closure", "form_closure", "equilibrium", "hold", "motion",
@@ -87,13 +90,15 @@ std::pair<std::string, bool> verdict_kind(const std::string& field, bool answer)
   return {answer ? "falsely closed" : "falsely open", answer};
 }
 const char* unsafe_words(const std::string& f) {
-  return f == "equilibrium" ? "falsely balanced" : f == "motion" ? "falsely sticks" : f == "hold" ? "falsely holds"
-                                                                                                 : "falsely closed";
+  return f == "equilibrium" ? "falsely balanced"
+         : f == "motion"    ? "falsely sticks or impending"
+         : f == "hold"      ? "falsely holds or impending"
+                            : "falsely closed";
 }
 const char* lost_words(const std::string& f) {
   return f == "equilibrium" ? "falsely unbalanced"
-         : f == "motion"    ? "falsely slides or depends"
-         : f == "hold"      ? "falsely fails or depends"
+         : f == "motion"    ? "falsely slides, impending or depends"
+         : f == "hold"      ? "falsely fails, impending or depends"
                             : "falsely open";
 }
 // Fields with a safety split (unsafe / lost): the verdicts, motion and hold.
@@ -149,6 +154,14 @@ Corpus read_corpus(const std::string& path, Read_file read) {
   std::error_code ec;
   if (fs::is_directory(file, ec)) file /= "reference.jsonl";
   c.dir = file.parent_path();
+  // The format version, when the manifest is there: 1 or 2 (docs/reference-format.md); a newer corpus is refused.
+  if (const fs::path m = c.dir / "manifest.json"; fs::exists(m, ec)) {
+    const json::Value manifest = json::parse(read(m.string(), std::size_t(1) << 20), Input_limits{}, m.string());
+    const json::Value* v = manifest.find("wrenchkit_reference");
+    if (!v || v->type != json::Type::number || (v->text != "1" && v->text != "2"))
+      throw Input_error(m.string() + ": wrenchkit_reference: " + (v ? json::text_of(*v) : std::string("missing")) +
+                        " is not a corpus format this compare reads (1 or 2; a newer wrenchkit writes newer ones)");
+  }
   const std::string text = read(file.string(), std::size_t(1) << 32);
   Input_limits limits;
   limits.max_file_bytes = std::size_t(1) << 32;
@@ -336,9 +349,10 @@ std::vector<Answer> read_csv_answers(const std::string& path, const std::string&
       const std::string& c = cells[i];
       cell.type = json::Type::string, cell.text = c;
       if (const std::optional<bool> b = verdict_value(cell)) v.type = json::Type::boolean, v.boolean = *b;
-      else if (header[i] == "hold" && c == "depends") v = cell;
+      else if (header[i] == "hold" && (c == "depends" || c == "impending")) v = cell;
       else if (!c.empty())
-        throw Input_error(where + ": " + header[i] + ": \"" + c + "\" is not true, false (any case), 1, 0 (or 1.0, 0.0) or empty");
+        throw Input_error(where + ": " + header[i] + ": \"" + c + "\" is not true, false (any case), 1, 0 (or 1.0, 0.0)" +
+                          (header[i] == "hold" ? ", impending, depends" : "") + " or empty");
       a.fields.emplace_back(header[i], v);
     }
     out.push_back(std::move(a));
@@ -454,38 +468,48 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
           disagree(std::move(d));
         }
       } else if (field == "hold") {
-        // A verdict (true/false, 1/0, …) or "depends" (an unknown distribution: holds for some, fails for others).
+        // A verdict (true/false, 1/0, …), "impending" (on the boundary) or "depends" (an unknown distribution).
         std::string h;
-        if (v.type == json::Type::string && v.text == "depends") h = "depends";
+        if (v.type == json::Type::string && (v.text == "depends" || v.text == "impending")) h = v.text;
         else if (const std::optional<bool> b = verdict_value(v)) h = *b ? "true" : "false";
-        else throw Input_error(where + ": " + json::text_of(v) + " is not " + kVerdictWords + ", \"depends\" or null");
+        else
+          throw Input_error(where + ": " + json::text_of(v) + " is not " + kVerdictWords +
+                            ", \"impending\", \"depends\" or null");
         if (!ref.has_hold) throw Input_error(where + ": scene \"" + a.id + "\" has no load (no hold answer)");
         if (ref.hold.empty()) continue;  // the corpus has no certified answer (undecided or refused): nothing to compare
         count(&Field_tally::compared);
         if (ref.hold == h) {
           count(&Field_tally::agree);
+        } else if (ref.hold == "impending") {
+          count(&Field_tally::boundary);
         } else {
           Disagreement d;
           d.reference = ref.hold;
           d.answer = h;
-          d.unsafe = h == "true";  // claims the body is held where it is not for some (or every) distribution
-          d.kind = h == "true" ? "falsely holds" : h == "false" ? "falsely fails" : "falsely depends";
+          // Unsafe: claims friction holds (with margin or just) where it does not for some (or every) distribution.
+          d.unsafe = h == "true" || (h == "impending" && ref.hold != "true");
+          d.kind = "falsely " + std::string(h == "true" ? "holds" : h == "false" ? "fails" : h);
           disagree(std::move(d));
         }
       } else if (field == "motion") {
-        if (v.type != json::Type::string || (v.text != "sticks" && v.text != "slides" && v.text != "depends"))
-          throw Input_error(where + ": " + json::text_of(v) + " is not \"sticks\", \"slides\", \"depends\" or null");
+        if (v.type != json::Type::string ||
+            (v.text != "sticks" && v.text != "impending" && v.text != "slides" && v.text != "depends"))
+          throw Input_error(where + ": " + json::text_of(v) +
+                            " is not \"sticks\", \"impending\", \"slides\", \"depends\" or null");
         if (!ref.has_motion)
           throw Input_error(where + ": scene \"" + a.id + "\" has no load on a support (no motion answer)");
         if (ref.motion.empty()) continue;  // the corpus has no certified answer: nothing to compare with
         count(&Field_tally::compared);
         if (ref.motion == v.text) {
           count(&Field_tally::agree);
+        } else if (ref.motion == "impending") {
+          count(&Field_tally::boundary);
         } else {
           Disagreement d;
           d.reference = ref.motion;
           d.answer = v.text;
-          d.unsafe = v.text == "sticks";
+          // Unsafe: claims friction holds it (with margin or just) where it slides for some (or every) distribution.
+          d.unsafe = v.text == "sticks" || (v.text == "impending" && ref.motion != "sticks");
           d.kind = "falsely " + v.text;
           disagree(std::move(d));
         }
@@ -660,6 +684,7 @@ void write_tally(Json_writer& w, const std::string& field, const Field_tally& t)
     w.member("unsafe", t.unsafe).member("lost", t.lost);
     w.member("unsafe_means", unsafe_words(field)).member("lost_means", lost_words(field));
   }
+  if (field == "motion" || field == "hold") w.member("boundary", t.boundary);
   w.end_object();
 }
 
@@ -671,6 +696,9 @@ std::string tally_line(const std::string& f, const Field_tally& t) {
   if (has_split(f) && t.disagree)
     s += "  (unsafe: " + std::to_string(t.unsafe) + " " + unsafe_words(f) + "; lost: " + std::to_string(t.lost) + " " +
          lost_words(f) + ")";
+  if (t.boundary)
+    s += "  (" + std::to_string(t.boundary) + " on an impending reference answered with a side: the boundary, neither "
+         "unsafe nor lost)";
   return s + "\n";
 }
 

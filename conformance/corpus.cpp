@@ -533,7 +533,7 @@ std::size_t write_corpus(const std::string& out_dir, const std::vector<std::stri
 
 std::string user_manifest(const std::string& scenes_from, int sides, std::size_t scenes) {
   Json_writer m(512);
-  m.object().member("wrenchkit_reference", 1).member("generator", "wrenchkit 0.1.0");
+  m.object().member("wrenchkit_reference", kReferenceFormat).member("generator", "wrenchkit 0.1.0");
   m.member("format", "docs/reference-format.md").member("scenes_from", scenes_from).member("sides", sides);
   m.member("scenes", scenes).key("files").object().member("corpus", "reference.jsonl");
   m.member("scenes", "scenes/").member("verdicts", "expected.csv").end_object().end_object();

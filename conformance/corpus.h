@@ -18,6 +18,11 @@
 
 namespace wrenchkit {
 
+// The corpus format version written in manifest.json ("wrenchkit_reference"). 2 (issue 29): `motion` may be
+// "impending" and `hold` "impending" (a load on the boundary; version 1 called them "slides" and true); the
+// certificates are format 3. compare reads versions 1 and 2.
+inline constexpr int kReferenceFormat = 2;
+
 // A scene of the corpus: where it comes from (empty strings are written as JSON null) and its text.
 struct Reference_scene {
   std::string id, family, source, epsilon, side, seed;

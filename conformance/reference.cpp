@@ -175,7 +175,7 @@ Reference_corpus build_reference(const Reference_options& ro) {
 std::string reference_manifest(const Reference_options& ro, std::size_t scenes) {
   if (!ro.scenes.empty()) return user_manifest(ro.scenes, ro.sides, scenes);
   Json_writer m(512);
-  m.object().member("wrenchkit_reference", 1).member("generator", "wrenchkit 0.1.0");
+  m.object().member("wrenchkit_reference", kReferenceFormat).member("generator", "wrenchkit 0.1.0");
   m.member("format", "docs/reference-format.md").member("seed", std::to_string(ro.seed)).member("cases", ro.cases);
   m.member("random", ro.random).member("sides", ro.sides);
   m.key("epsilons").array();

@@ -6,7 +6,7 @@
 # --tolerance 1e-3, and near with it. The fixture scenes (a load on a support: a pin and a known or unknown
 # distribution, a support region) with the peer's absolute 1e-3 force tolerance and its "depends" for any unknown
 # force: hold falsely holds (unsafe), hold falsely depends (lost), the region's motion falsely sticks (unsafe), each
-# with no boundary measure; the reference records the region's hold as refused or answered without failing.
+# with no boundary measure; the push at exactly mu W is impending, and the peer's side for it the boundary; the reference records the region's hold as refused or answered without failing.
 #   cmake -DCLI=<wrenchkit> -DPYTHON=<python3> -DDIR=<compare_peer> -DWORK=<dir> -P compare_peer.cmake
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -90,7 +90,7 @@ function(check_disagreements json near_margins)
     string(JSON hold_${what} GET "${json}" fields hold ${what})
   endforeach()
   expect("hold compared (pin_unknown_twist depends: agrees)" ${hold_compared} 6)
-  expect("hold agree" ${hold_agree} 4)
+  expect("hold agree (pin_at_limit is the boundary)" ${hold_agree} 3)
   expect("hold unsafe" ${hold_unsafe} 1)
   expect("hold lost" ${hold_lost} 1)
   string(JSON motion_unsafe GET "${json}" fields motion unsafe)
@@ -99,6 +99,9 @@ function(check_disagreements json near_margins)
   expect("motion agree (the region)" ${motion_agree} 1)
   string(JSON pin_unsafe GET "${json}" families pin hold unsafe)
   expect("pin hold unsafe" ${pin_unsafe} 1)
+  # pin_at_limit: the push at exactly mu W is impending; the peer's side for it is the boundary, not a disagreement.
+  string(JSON hold_boundary GET "${json}" fields hold boundary)
+  expect("hold boundary (pin_at_limit)" ${hold_boundary} 1)
 endfunction()
 
 # A corpus line's answer FIELD (VALUE, unless empty) and its certificate.

@@ -210,7 +210,7 @@ TEST_F(Corpus, HoldsEveryKindOfScene) {
                         "known slides"})
     EXPECT_GT(motions[m], 0) << m;
   // Issue 16 [HD-2] [RG-3]: hold and stick/slide over regions with legs whose forces are not given — every verdict,
-  // certified in format 2; the limit surface is the power's range over F.
+  // certified (format 3 since issue 29); the limit surface is the power's range over F.
   std::map<std::string, int> region_holds, region_motions;
   for (const json::Value& v : lines_) {
     if (v.find("family")->text != "fixture_regions") continue;
@@ -218,7 +218,7 @@ TEST_F(Corpus, HoldsEveryKindOfScene) {
     ASSERT_NE(h, nullptr);
     ASSERT_NE(h->type, json::Type::null) << v.find("id")->text;
     ++region_holds[json::text_of(*h)];
-    EXPECT_EQ(v.find("certificates")->find("hold")->find("wrenchkit_certificate")->text, "2") << v.find("id")->text;
+    EXPECT_EQ(v.find("certificates")->find("hold")->find("wrenchkit_certificate")->text, "3") << v.find("id")->text;
     ASSERT_EQ(v.find("limit_surface")->type, json::Type::object) << v.find("id")->text;
     EXPECT_EQ(v.find("limit_surface")->find("distribution")->text, "unknown") << v.find("id")->text;
     EXPECT_EQ(v.find("limit_surface_refused"), nullptr) << v.find("id")->text;
@@ -226,7 +226,7 @@ TEST_F(Corpus, HoldsEveryKindOfScene) {
     ASSERT_NE(m, nullptr);
     ASSERT_EQ(m->type, json::Type::string) << v.find("id")->text;
     ++region_motions[m->text];
-    EXPECT_EQ(v.find("certificates")->find("motion")->find("wrenchkit_certificate")->text, "2") << v.find("id")->text;
+    EXPECT_EQ(v.find("certificates")->find("motion")->find("wrenchkit_certificate")->text, "3") << v.find("id")->text;
   }
   for (const char* h : {"true", "false", "\"depends\""}) EXPECT_GT(region_holds[h], 0) << h;
   for (const char* m : {"sticks", "slides", "depends"}) EXPECT_GT(region_motions[m], 0) << m;
@@ -593,9 +593,11 @@ TEST(ReferenceCli, SmallCorpusReplacesAnEarlierOne) {
 const char* const kOwnScenes =
     R"({"id": "pinch", "family": "pinch", "scene": {"wrenchkit": 1, "contacts": [{"at": [0, 1], "normal": [0, -1], "mu": 0.3}, {"at": [0, -1], "normal": [0, 1], "mu": 0.3}]}})"
     "\n\n"
-    R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]}], "load": {"wrench": [-1, 0, 0]}, "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}})"
+    R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]}], "load": {"wrench": [-2, 0, 0]}, "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}})"
     "\n"
     R"({"id": "plate", "scene": {"wrenchkit": 1, "load": {"wrench": ["1/10", 0, 0]}, "support": {"mu": 1, "points": [{"at": [1, 0], "force": 1}, {"at": [-1, 0], "force": 1}]}}, "_note": "ignored"})"
+    "\n"
+    R"({"id": "edge", "scene": {"wrenchkit": 1, "load": {"wrench": [1, 0, 0]}, "support": {"mu": 1, "weight": 1, "pressure_center": [0, 0], "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]}}})"
     "\n";
 
 TEST(ReferenceScenes, OwnScenesGetTheCorpusFormatAndCompareAgrees) {
@@ -608,7 +610,7 @@ TEST(ReferenceScenes, OwnScenesGetTheCorpusFormatAndCompareAgrees) {
   std::istringstream in(test::read_text((d / "corpus" / "reference.jsonl").string()));
   std::vector<json::Value> lines;
   for (std::string line; std::getline(in, line);) lines.push_back(json::parse(line, Input_limits{}, "own"));
-  ASSERT_EQ(lines.size(), 3u);
+  ASSERT_EQ(lines.size(), 4u);
   EXPECT_EQ(lines[0].find("id")->text, "pinch");
   EXPECT_EQ(lines[0].find("family")->text, "pinch");
   EXPECT_EQ(lines[1].find("id")->text, "line.3");  // a bare scene: its line number
@@ -619,6 +621,8 @@ TEST(ReferenceScenes, OwnScenesGetTheCorpusFormatAndCompareAgrees) {
   EXPECT_NE(lines[1].find("limit_surface")->find("twists")->items[0].find("power_range"), nullptr);
   EXPECT_EQ(lines[1].find("motion")->text, "slides");
   EXPECT_EQ(lines[2].find("motion")->text, "sticks");  // |f| = 1/10 < mu·W = 2
+  EXPECT_EQ(lines[3].find("motion")->text, "impending");  // |f| = mu·W = 1: a translation, for every distribution
+  EXPECT_EQ(lines[3].find("hold")->text, "impending");
   // Per-field distances; nearest doubles; every certificate accepted by the independent checker.
   EXPECT_NE(lines[0].find("boundary")->find("fields")->find("form_closure"), nullptr);
   EXPECT_EQ(json::text_of(*lines[0].find("approx")->find("scene")->find("contacts")->items[0].find("mu")), "0.3");
@@ -636,11 +640,16 @@ TEST(ReferenceScenes, OwnScenesGetTheCorpusFormatAndCompareAgrees) {
     range += (i ? ", " : "") + json::text_of(*ranges.items[i].find("power_range"));
   r = run("compare '" + (d / "corpus").string() + "' -",
           "{\"id\": \"line.3\", \"motion\": \"sticks\", \"power_range\": " + range + "]}\n"
-          "{\"id\": \"plate\", \"motion\": \"sticks\"}\n");
+          "{\"id\": \"plate\", \"motion\": \"sticks\"}\n"
+          "{\"id\": \"edge\", \"motion\": \"sticks\", \"hold\": false}\n");
   EXPECT_EQ(r.code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("motion: falsely sticks (unsafe): reference slides, answer sticks"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("power_range              1 compared       1 agree"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("motion                   2 compared       1 agree       1 disagree"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("motion                   3 compared       1 agree       1 disagree"), std::string::npos) << r.out;
+  // On an impending reference a side is the boundary: neither unsafe nor lost, counted apart.
+  EXPECT_NE(r.out.find("(1 on an impending reference answered with a side: the boundary, neither unsafe nor lost)"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hold                     1 compared       0 agree       0 disagree"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("no boundary measure for motion"), std::string::npos) << r.out;
   // A directory of scene files: ids from the paths, families from the directories.
   fs::create_directories(d / "dir" / "clamps");
