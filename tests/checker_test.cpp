@@ -372,16 +372,23 @@ TEST(CheckerMalformed, KeysAndTypes) {
             R"(missing required key "holds")");
   EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": 1, "holds": false, )" + twist + "}"),
             R"(missing required key "property")");
-  for (const char* version : {"3", "0", "2.0", "1.0", "1e0", "\"1\"", "true"})
+  for (const char* version : {"4", "0", "2.0", "1.0", "1e0", "\"1\"", "true"})
     EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": )" + std::string(version) +
                                           R"(, "property": "force_closure", "holds": false, )" + twist + "}"),
-              "wrenchkit_certificate: expected the integer 1 or 2");
+              "wrenchkit_certificate: expected the integer 1, 2 or 3");
+  // Format 3 names the boundary of motion and hold only: a closure certificate reads the same in 1, 2 and 3.
+  for (const char* version : {"1", "2", "3"})
+    EXPECT_EQ(check(block_corner, R"({"wrenchkit_certificate": )" + std::string(version) +
+                                      R"(, "property": "force_closure", "holds": false, )" + twist + "}")
+                  .outcome,
+              Outcome::accepted)
+        << version;
   EXPECT_EQ(
       rejection(block_corner, R"({"wrenchkit_certificate": 1, "property": "closure", "holds": false, )" + twist + "}"),
       R"(property: expected "force_closure", "form_closure", "equilibrium", "motion" or "hold")");
   EXPECT_EQ(rejection(block_corner,
                       R"({"wrenchkit_certificate": 1, "property": "force_closure", "holds": "false", )" + twist + "}"),
-            R"(holds: expected true or false (or "depends" for property "hold"))");
+            R"(holds: expected true or false (or "impending" or "depends" for property "hold"))");
   EXPECT_EQ(rejection(block_corner, negative_head + twist + R"(, "holds": false})"), R"(duplicate key "holds")");
   EXPECT_EQ(rejection(block_corner, negative_head + twist + R"(, "Twist": 1})"), R"(unknown key "Twist")");
   EXPECT_EQ(rejection(block_corner, negative_head + R"("reading": {"label": "+", "point": ["0", "0"]}})"),
@@ -1136,7 +1143,7 @@ TEST(CheckerMotion, KeysAndScenes) {
   EXPECT_EQ(rejection(table_scene, sticks + R"("vertices": [{"distribution": ["1/2", "0", "1/2", 0], "support_forces": []}]})"),
             R"(vertices[0].distribution[3]: expected a rational as a JSON string, such as "-3/4")");
   EXPECT_EQ(rejection(table_scene, motion_head + R"("load": ["0", "0", "0"], "motion": "stops", "vertices": []})"),
-            R"(motion: expected "sticks", "slides" or "depends")");
+            R"(motion: expected "sticks", "impending", "slides" or "depends")");
   EXPECT_EQ(rejection(table_scene, motion_head + R"("load": ["0", "0"], "motion": "sticks", "vertices": []})"),
             "load: expected an array of three rationals [fx, fy, m]");
   EXPECT_EQ(rejection(table_scene, sticks + R"("vertices": []})"),

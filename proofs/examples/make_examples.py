@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes and verifies the worked examples of proofs/examples/ (certificate format v1).
+"""Writes and verifies the worked examples of proofs/examples/ (certificate formats 1 to 3).
 
 Every scene and certificate is written from the tables below, then read back from disk and checked
 by a small exact checker written here with Python's fractions (a second implementation, independent
@@ -240,6 +240,16 @@ def motion2(claim, load, **rest):
     return dict(motion(claim, load, **rest), wrenchkit_certificate=2)
 
 
+def motion3(claim, load, **rest):
+    """A sliding certificate in format 3 (section 6.6: the boundary is "impending"; "slides" is strict)."""
+    return dict(motion(claim, load, **rest), wrenchkit_certificate=3)
+
+
+def hold3(claim, **rest):
+    """A hold certificate in format 3 (section 7.6: true is held with margin, the boundary is "impending")."""
+    return dict(hold(claim, **rest), wrenchkit_certificate=3)
+
+
 def hold_witness(distribution, combination, forces):
     return {"distribution": distribution, "combination": combination, "support_forces": forces}
 
@@ -473,6 +483,37 @@ CERTS = [
     ("table_four_legs", "slides_without_dual", 'invalid:keys|missing required key "dual"',
      {k: v for k, v in TABLE_SLIDES.items() if k != "dual"}),
     ("barbell_known", "slides_on_surface", "valid", motion("slides", [F(1, 2), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1"])),
+    # Format 3 (section 6.6): the surface is "impending". A facet of Fig. 6.15: the rotation about the support point
+    # (0, 1), q = (1, 0, 1), speeds 2 and 0, power 1/4 + 1/4 = 1/2 = (1/4) 2; the force (1/4, 0) at (0, -1) on its
+    # circle carries (1/4, 0, 1/4). A translation at exactly mu W: (1/2, 0, 0), speeds 1, 1.
+    ("barbell_known", "impending_facet", "valid",
+     motion3("impending", [F(1, 4), 0, F(1, 4)], support_forces=[["1/4", "0"], ["0", "0"]], twist=["1", "0", "1"],
+             speed_bounds=["2", "0"])),
+    ("barbell_known", "impending_translation", "valid",
+     motion3("impending", [F(1, 2), 0, 0], support_forces=[["1/4", "0"], ["1/4", "0"]], twist=["1", "0", "0"],
+             speed_bounds=["1", "1"])),
+    ("barbell_known", "slides_on_surface_in_format_3", "invalid:power|only equals sum mu_i f_i u_i = 1/2",
+     motion3("slides", [F(1, 2), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1"])),
+    ("barbell_known", "impending_in_format_1", 'invalid:version|motion: "impending" is a claim of format 3',
+     motion("impending", [F(1, 2), 0, 0], support_forces=[["1/4", "0"], ["1/4", "0"]], twist=["1", "0", "0"],
+            speed_bounds=["1", "1"])),
+    ("barbell_known", "impending_force_outside_disc", "invalid:stick|support_forces[0]",
+     motion3("impending", [F(1, 2), 0, F(1, 2)], support_forces=[["1/2", "0"], ["0", "0"]], twist=["1", "0", "1"],
+             speed_bounds=["2", "0"])),
+    ("barbell_known", "impending_power_short", "invalid:power|twist: power q.p = 1/4 is less than sum mu_i f_i u_i = 1/2",
+     motion3("impending", [F(1, 4), 0, F(1, 4)], support_forces=[["1/4", "0"], ["0", "0"]], twist=["1", "0", "0"],
+             speed_bounds=["1", "1"])),
+    # The table at exactly mu W along x: every vertex of F (the two diagonals) carries (1, 0, 0) with forces (1/2, 0) on
+    # their circles, and q = (1, 0, 0) with the dual (1, 0, 0) bounds every distribution's power by W = 1 = q.p.
+    ("table_four_legs", "impending_for_every", "valid",
+     motion3("impending", [1, 0, 0],
+             vertices=[stick_witness(["1/2", "0", "1/2", "0"], [["1/2", "0"], ["0", "0"], ["1/2", "0"], ["0", "0"]]),
+                       stick_witness(["0", "1/2", "0", "1/2"], [["0", "0"], ["1/2", "0"], ["0", "0"], ["1/2", "0"]])],
+             twist=["1", "0", "0"], speed_bounds=["1", "1", "1", "1"], dual=["1", "0", "0"])),
+    ("table_four_legs", "impending_missing_vertex", "invalid:vertex|vertices: the vertex (0, 1/2, 0, 1/2) of the admissible distributions has no witness",
+     motion3("impending", [1, 0, 0],
+             vertices=[stick_witness(["1/2", "0", "1/2", "0"], [["1/2", "0"], ["0", "0"], ["1/2", "0"], ["0", "0"]])],
+             twist=["1", "0", "0"], speed_bounds=["1", "1", "1", "1"], dual=["1", "0", "0"])),
     ("barbell_known", "power_below_bound", "invalid:power|twist: power q.p = 2/5 is less than sum mu_i f_i u_i = 1/2",
      motion("slides", [F(2, 5), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1"])),
     ("barbell_known", "g_on_circle", "invalid:stick|support_forces[0]: |g|^2 = 1/16 is not less than (mu f)^2 = 1/16",
@@ -508,6 +549,25 @@ CERTS = [
      hold(True, combination=[], support_forces=[["-1/8", "0"]] * 4)),
     ("fixture_pin_pull", "power_equals_bound", "invalid:power|twist: power against the load t.w_L = 1/2 is not more than sum mu_i f_i u_i = 1/2",
      hold(False, twist=["1", "0", "0"], speed_bounds=["1", "1", "1", "1"])),
+    # Format 3 (section 7.6): the same pull is "impending" — the closed witness above and the translation whose power
+    # meets the bound, together — and "holds": true now means with margin, which the forces on their circles are not.
+    ("fixture_pin_pull", "impending", "valid",
+     hold3("impending", combination=[], support_forces=[["-1/8", "0"]] * 4, twist=["1", "0", "0"],
+           speed_bounds=["1", "1", "1", "1"])),
+    ("fixture_pin_pull", "holds_v3_without_margin", "invalid:margin|combination: the load is held, but with no margin",
+     hold3(True, combination=[], support_forces=[["-1/8", "0"]] * 4)),
+    ("fixture_pin_pull", "impending_in_format_2", 'invalid:version|holds: "impending" is a claim of format 3',
+     dict(hold3("impending", combination=[], support_forces=[["-1/8", "0"]] * 4, twist=["1", "0", "0"],
+                speed_bounds=["1", "1", "1", "1"]), wrenchkit_certificate=2)),
+    ("fixture_pin_pull", "impending_power_short", "invalid:power|twist: power against the load t.w_L = 0 is not at least sum mu_i f_i u_i = 1/2",
+     hold3("impending", combination=[], support_forces=[["-1/8", "0"]] * 4, twist=["0", "1", "0"],
+           speed_bounds=["1", "1", "1", "1"])),
+    # The push (-1, 1/4) at (1, 0) held with margin in format 3: the pin takes the push along x; the legs carry
+    # (0, -1/4) with the moment -1/4 by (±1/16, -1/16) each, |g|^2 = 1/128 < 1/64 strictly inside their discs; the
+    # pin's normal and the legs' span make R^3.
+    ("fixture_pin_push", "holds_with_margin", "valid",
+     hold3(True, combination=comb((0, "normal", "1")),
+           support_forces=[["1/16", "-1/16"], ["1/16", "-1/16"], ["-1/16", "-1/16"], ["-1/16", "-1/16"]])),
     # No support: hold is equilibrium (section 3.3): the floor's two cone edges carry the block's weight.
     ("block_corner_mu_1_2_gravity", "hold_without_support", "valid", None),
     ("block_corner_mu_1_2_gravity", "hold_with_support_forces", 'invalid:keys|key "support_forces" is not allowed when "holds" is true and the scene has no support',
@@ -705,6 +765,8 @@ MOTION_KEYS = {  # (claim, every force given) -> the keys besides the common one
     ("sticks", True): {"support_forces"}, ("slides", True): {"twist", "speed_bounds"},
     ("sticks", False): {"vertices"}, ("slides", False): {"twist", "speed_bounds", "dual"},
     ("depends", False): {"sticking", "sliding"},
+    ("impending", True): {"support_forces", "twist", "speed_bounds"},
+    ("impending", False): {"vertices", "twist", "speed_bounds", "dual"},
 }
 
 
@@ -860,12 +922,15 @@ def verify_motion(scene, cert):
     regions = [region(r, sup) for r in sup.get("regions", [])]
     known = all(f is not None for *_, f in pts)
     claim = cert["motion"]
+    v3 = cert["wrenchkit_certificate"] >= 3  # section 6.6: "impending" names the surface; "slides" is strict
+    if claim == "impending" and not v3:
+        return "version"
     if claim == "depends" and known:
         return "depends known"
     per_witness = bool(regions) and not known  # format 2 (section 6.5): each witness carries its regions' blocks
-    if per_witness and cert["wrenchkit_certificate"] != 2:
+    if per_witness and cert["wrenchkit_certificate"] < 2:
         return "regions unknown"
-    top = bool(regions) and (known or claim == "slides")
+    top = bool(regions) and (known or claim in ("slides", "impending"))
     if set(cert) != {"wrenchkit_certificate", "property", "load", "motion"} | MOTION_KEYS[(claim, known)] | (
             {"regions"} if top else set()):
         return "keys"
@@ -900,9 +965,10 @@ def verify_motion(scene, cert):
             bound += b
         return bound
 
-    def sticks(f, g, blocks=()):  # p in the interior of LS(f): strictly inside the discs, friction at two points
-        g = [[rational(a) for a in gi] for gi in g]
-        if len(g) != len(pts) or any((a, b) != (0, 0) if q[2] * fi == 0 else a * a + b * b >= (q[2] * fi) ** 2
+    def sticks(f, g, blocks=(), strict=True):  # strict: p in the interior of LS(f), open discs at two places;
+        g = [[rational(a) for a in gi] for gi in g]  # else p in the closed LS(f)
+        if len(g) != len(pts) or any(a * a + b * b > (q[2] * fi) ** 2 or (strict and q[2] * fi != 0 and
+                                                                          a * a + b * b == (q[2] * fi) ** 2)
                                      for (a, b), q, fi in zip(g, pts, f)):
             return False
         places = {(q[0], q[1]) for q, fi in zip(pts, f) if q[2] * fi > 0}
@@ -914,12 +980,12 @@ def verify_motion(scene, cert):
             for t, (a, b) in zip(tris, ([rational(x) for x in gk] for gk in blk["forces"])):
                 Fk, (mx, my) = cell_measures(reg, [vs[i] for i in t])
                 rho = reg["mu"] * Fk
-                if ((a, b) != (0, 0)) if rho == 0 else a * a + b * b >= rho * rho:
+                if a * a + b * b > rho * rho or (strict and rho != 0 and a * a + b * b == rho * rho):
                     return False
                 if rho > 0:
                     places.add((mx / Fk, my / Fk))
                     total = [total[0] + a, total[1] + b, total[2] + (mx * b - my * a) / Fk]
-        return len(places) >= 2 and total == p
+        return (len(places) >= 2 or not strict) and total == p
 
     def speeds(q, u):  # None if fine, else the reason
         if not any(q):
@@ -933,11 +999,29 @@ def verify_motion(scene, cert):
     def power(q):  # q.p; a slide witness needs q != 0 and q.p >= the bound (a load on the limit surface slides)
         return q[0] * p[0] + q[1] * p[1] + q[2] * p[2]
 
-    if claim == "sticks" and known:
+    def beats(power_, bound_, strict):  # slides in format 3: strictly; impending (and formats 1, 2): at least
+        return power_ > bound_ if strict else power_ >= bound_
+
+    if claim in ("sticks", "impending") and known:
         if regions and any(not tiles(reg, *cells_of(blk)) for reg, blk in zip(regions, cert["regions"])):
             return "tiling"
-        return None if sticks(given, cert["support_forces"], cert.get("regions", ())) else "stick"
-    if claim == "slides":
+        if not sticks(given, cert["support_forces"], cert.get("regions", ()), claim == "sticks"):
+            return "stick"
+        if claim == "sticks":
+            return None
+    if claim in ("slides", "impending"):
+        strict = v3 and claim == "slides"
+        if claim == "impending" and not known:  # every vertex of F in its closed set, then the twist over F
+            wit = []
+            for w in cert["vertices"]:
+                f = [rational(v) for v in w["distribution"]]
+                if not in_F(f):
+                    return "F"
+                if not sticks(f, w["support_forces"], w.get("regions", ()), False):
+                    return "stick"
+                wit.append(f)
+            if not all(f in wit for f in vertices_of_F(pts, given, W, c, regions)):
+                return "vertex"
         q, u = [rational(v) for v in cert["twist"]], [rational(v) for v in cert["speed_bounds"]]
         if speeds(q, u):
             return speeds(q, u)
@@ -946,7 +1030,7 @@ def verify_motion(scene, cert):
             return rb
         if known:
             bound = sum(qq[2] * f * v for qq, f, v in zip(pts, given, u)) + rb
-            return None if power(q) >= bound else "power"
+            return None if beats(power(q), bound, strict) else "power"
         y = [rational(v) for v in cert["dual"]]
         if any(q_[3] is None and q_[2] * v > y[0] + y[1] * q_[0] + y[2] * q_[1] for q_, v in zip(pts, u)):
             return "dual"
@@ -954,13 +1038,13 @@ def verify_motion(scene, cert):
         rest_m = [W * c[k] - sum(f * q_[k] for f, q_ in zip(given, pts)) - fixed[1][k] for k in range(2)]
         bound = (sum(q_[2] * f * v for q_, f, v in zip(pts, given, u) if q_[3] is not None)
                  + y[0] * rest_w + y[1] * rest_m[0] + y[2] * rest_m[1] + rb)
-        return None if power(q) >= bound else "power"
+        return None if beats(power(q), bound, strict) else "power"
     if claim == "depends":
         st, sl = cert["sticking"], cert["sliding"]
         f1, f2 = [rational(v) for v in st["distribution"]], [rational(v) for v in sl["distribution"]]
         if not in_F(f1) or not in_F(f2):
             return "F"
-        if not sticks(f1, st["support_forces"], st.get("regions", ())):
+        if not sticks(f1, st["support_forces"], st.get("regions", ()), not v3):
             return "stick"
         q, u = [rational(v) for v in sl["twist"]], [rational(v) for v in sl["speed_bounds"]]
         if speeds(q, u):
@@ -968,7 +1052,11 @@ def verify_motion(scene, cert):
         rb = region_bound(q, sl.get("regions", ()))
         if isinstance(rb, str):
             return rb
-        return None if power(q) >= sum(qq[2] * f * v for qq, f, v in zip(pts, f2, u)) + rb else "power"
+        bound = sum(qq[2] * f * v for qq, f, v in zip(pts, f2, u)) + rb
+        if power(q) < bound:
+            return "power"
+        # Format 3: the two witnesses closed and at least; one strict (else both are on the surface: impending).
+        return None if not v3 or power(q) > bound or sticks(f1, st["support_forces"], st.get("regions", ())) else "strict"
     # sticks for every distribution: every witness in F and sticking, every vertex of F witnessed.
     # Vertices by brute force: every set S of at most three unknown points whose columns (1, x, y) are
     # independent and give a strictly positive solution of the three rows.
@@ -997,24 +1085,25 @@ def verify_hold(scene, cert):
     known = all(f is not None for *_, f in pts)
     regions = [] if sup is None else [region(r, sup) for r in sup.get("regions", [])]
     claim = cert["holds"]
+    v3 = cert["wrenchkit_certificate"] >= 3  # section 7.6: true is held with margin; the boundary is "impending"
+    if claim == "impending" and not v3:
+        return "version"
     if claim == "depends" and known:
         return "depends known"
     per_witness = bool(regions) and not known  # format 2 (section 7.5): each witness carries its regions' blocks
-    if per_witness and cert["wrenchkit_certificate"] != 2:
+    if per_witness and cert["wrenchkit_certificate"] < 2:
         return "regions unknown"
-    top = regions and (known or claim is False)
+    top = regions and (known or claim is False or claim == "impending")
     base = {"wrenchkit_certificate", "property", "holds"} | ({"regions"} if top else set())
     bad = witness_blocks([cert["holding"], cert["failing"]] if claim == "depends" else cert.get("vertices", []),
                          regions, per_witness)
     if bad:
         return bad
-    if claim is True:
-        want = ({"combination"} | ({"support_forces"} if sup else set())) if known else {"vertices"}
-    elif claim is False:
-        want = {"twist"} | ({"speed_bounds"} if sup else set()) | (set() if known else {"dual"})
-    else:
-        want = {"holding", "failing"}
-    if set(cert) - {"reading"} != base | want or ("reading" in cert and claim is not False):
+    held = ({"combination"} | ({"support_forces"} if sup else set())) if known else {"vertices"}
+    moved = {"twist"} | ({"speed_bounds"} if sup else set()) | (set() if known else {"dual"})
+    want = held if claim is True else moved if claim is False else held | moved if claim == "impending" else {
+        "holding", "failing"}
+    if set(cert) - {"reading"} != base | want or ("reading" in cert and claim not in (False, "impending")):
         return "keys"
     if top and len(cert["regions"]) != len(regions):
         return "keys"
@@ -1032,6 +1121,24 @@ def verify_hold(scene, cert):
         return (len(f) == len(pts) and all(v >= 0 for v in f) and all(q[3] is None or q[3] == v for q, v in zip(pts, f))
                 and sum(f) + fixed[0] == W
                 and all(sum(v * q[k] for v, q in zip(f, pts)) + fixed[1][k] == W * c[k] for k in range(2)))
+
+    def margin(f, combination, forces, blocks):  # section 7.6: -w_L in the interior of W + LS(f)
+        g = [[rational(a) for a in gi] for gi in forces]
+        if any(a * a + b * b >= (q[2] * fi) ** 2 for (a, b), q, fi in zip(g, pts, f) if q[2] * fi != 0):
+            return False
+        span = [gens[t["contact"]][t["edge"]] for t in combination]
+        for (x, y, mu, _), fi in zip(pts, f):  # a point with friction reaches (1, 0, -y) and (0, 1, x)
+            if mu * fi != 0:
+                span += [(F(1), F(0), -y), (F(0), F(1), x)]
+        for reg, blk in zip(regions, blocks):
+            vs, tris = cells_of(blk)
+            for t, (a, b) in zip(tris, ([rational(x) for x in gk] for gk in blk["forces"])):
+                Fk, (mx, my) = cell_measures(reg, [vs[i] for i in t])
+                if reg["mu"] * Fk != 0:
+                    if a * a + b * b >= (reg["mu"] * Fk) ** 2:
+                        return False
+                    span += [(F(1), F(0), -my / Fk), (F(0), F(1), mx / Fk)]
+        return any(det3(a, b, c) != 0 for a, b, c in itertools.combinations(span, 3))
 
     def holds(f, combination, forces, blocks):
         names = [(t["contact"], t["edge"]) for t in combination]
@@ -1063,7 +1170,7 @@ def verify_hold(scene, cert):
                 total = [total[0] + a, total[1] + b, total[2] + (mx * b - my * a) / Fk]
         return None if total == [0, 0, 0] else "sum"
 
-    def fails(f, twist, u, dual, blocks):
+    def fails(f, twist, u, dual, blocks, strict=True):
         t = [rational(v) for v in twist]
         for g in (g for cc in gens for g in cc.values()):
             if sum(a * b for a, b in zip(t, g)) < 0:
@@ -1086,20 +1193,36 @@ def verify_hold(scene, cert):
             if b is None:
                 return "speed"
             bound += b
-        return None if sum(a * b for a, b in zip(t, load)) > bound else "power"
+        power = sum(a * b for a, b in zip(t, load))
+        return None if (power > bound if strict else power >= bound) else "power"
 
     top_blocks = cert.get("regions", ())
     if claim is True and known:
-        return holds(given, cert["combination"], cert.get("support_forces", []), top_blocks)
-    if claim is False:
-        return fails(given, cert["twist"], cert.get("speed_bounds", []), None if known else cert["dual"], top_blocks)
+        reason = holds(given, cert["combination"], cert.get("support_forces", []), top_blocks)
+        if reason or not v3:
+            return reason
+        return None if margin(given, cert["combination"], cert.get("support_forces", []), top_blocks) else "margin"
+    if claim is False or claim == "impending":
+        if claim == "impending" and known:
+            reason = holds(given, cert["combination"], cert.get("support_forces", []), top_blocks)
+            if reason:
+                return reason
+        reason = fails(given, cert["twist"], cert.get("speed_bounds", []), None if known else cert["dual"], top_blocks,
+                       claim is False)
+        if reason or claim is False or known:
+            return reason
     if claim == "depends":
         h, fl = cert["holding"], cert["failing"]
         f1, f2 = [rational(v) for v in h["distribution"]], [rational(v) for v in fl["distribution"]]
         if not in_F(f1) or not in_F(f2):
             return "F"
-        return (holds(f1, h["combination"], h["support_forces"], h.get("regions", ()))
-                or fails(f2, fl["twist"], fl["speed_bounds"], None, fl.get("regions", ())))
+        reason = (holds(f1, h["combination"], h["support_forces"], h.get("regions", ()))
+                  or fails(f2, fl["twist"], fl["speed_bounds"], None, fl.get("regions", ()), not v3))
+        if reason or not v3:
+            return reason
+        strict = (margin(f1, h["combination"], h["support_forces"], h.get("regions", ()))
+                  or fails(f2, fl["twist"], fl["speed_bounds"], None, fl.get("regions", ())) is None)
+        return None if strict else "strict"
     wit = []
     for w in cert["vertices"]:
         f = [rational(v) for v in w["distribution"]]
@@ -1108,6 +1231,8 @@ def verify_hold(scene, cert):
         reason = holds(f, w["combination"], w["support_forces"], w.get("regions", ()))
         if reason:
             return reason
+        if v3 and claim is True and not margin(f, w["combination"], w["support_forces"], w.get("regions", ())):
+            return "margin"
         wit.append(f)
     return None if all(f in wit for f in vertices_of_F(pts, given, W, c, regions)) else "vertex"
 
@@ -1120,7 +1245,7 @@ def verify(scene, cert):
                "holding", "failing", "regions"}
     if keys - allowed:
         return "unknown key"
-    if cert.get("wrenchkit_certificate") in (1, 2) and cert.get("property") in ("motion", "hold"):
+    if cert.get("wrenchkit_certificate") in (1, 2, 3) and cert.get("property") in ("motion", "hold"):
         try:
             return (verify_motion if cert["property"] == "motion" else verify_hold)(scene, cert)
         except (ValueError, KeyError, TypeError) as e:
