@@ -167,6 +167,8 @@ class Hold_check {
   // else at least as hard: the boundary). Returns whether strictly harder.
   bool fail(const std::vector<Q>& f, const Q (&t)[3], const std::vector<Q>& u, const std::string& prefix,
             const Q* dual, const std::vector<Block>* blocks, bool strict) const {
+    // The zero twist meets every bound with equality and proves nothing (strict: it cannot pass anyway).
+    if (sgn(t[0]) == 0 && sgn(t[1]) == 0 && sgn(t[2]) == 0) throw Failure{prefix + "twist: the zero twist"};
     fast_then_exact(lim_, [&](auto zero) {
       allowed_by_every_contact(integer_form<decltype(zero)>(t), scene_.contacts, Reading::friction, lim_, prefix);
     });

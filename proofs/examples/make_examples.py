@@ -562,6 +562,9 @@ CERTS = [
     ("fixture_pin_pull", "impending_power_short", "invalid:power|twist: power against the load t.w_L = 0 is not at least sum mu_i f_i u_i = 1/2",
      hold3("impending", combination=[], support_forces=[["-1/8", "0"]] * 4, twist=["0", "1", "0"],
            speed_bounds=["1", "1", "1", "1"])),
+    ("fixture_pin_pull", "impending_zero_twist", "invalid:zero twist|twist: the zero twist",
+     hold3("impending", combination=[], support_forces=[["-1/8", "0"]] * 4, twist=["0", "0", "0"],
+           speed_bounds=["0", "0", "0", "0"])),
     # The push (-1, 1/4) at (1, 0) held with margin in format 3: the pin takes the push along x; the legs carry
     # (0, -1/4) with the moment -1/4 by (±1/16, -1/16) each, |g|^2 = 1/128 < 1/64 strictly inside their discs; the
     # pin's normal and the legs' span make R^3.
@@ -1172,6 +1175,8 @@ def verify_hold(scene, cert):
 
     def fails(f, twist, u, dual, blocks, strict=True):
         t = [rational(v) for v in twist]
+        if not any(t):
+            return "zero twist"
         for g in (g for cc in gens for g in cc.values()):
             if sum(a * b for a, b in zip(t, g)) < 0:
                 return "power"
