@@ -178,6 +178,30 @@ TEST(BoundaryRegions, TheRayOfATranslationAtAnyDistance) {
   EXPECT_TRUE(test::checker_accepts(tri, r.certificate));
 }
 
+// Float mode, no support (hold is equilibrium): the twin decides a margin by balancing the load pushed toward the
+// cone's interior (HD-1 §10), so a load held with margin is "holds" in float mode as in hybrid; the frictionless block
+// in a corner, whose load only its floor carries (it may slide along the floor), is impending in hybrid and float
+// mode does not guess.
+TEST(BoundaryFloat, NoSupportHoldsWithMarginByTheTwin) {
+  Request request;
+  for (const Mode mode : {Mode::float_only, Mode::hybrid}) {
+    request.mode = mode;
+    const std::string gravity = test::read_text(test::source_dir() + "/proofs/examples/block_corner_mu_1_2_gravity.scene.json");
+    const Hold_item h = answer_hold(gravity, "scene", request);
+    ASSERT_EQ(h.status, Status::answered) << h.message;
+    EXPECT_EQ(h.answer.verdict, Hold_verdict::holds) << mode_name(mode);
+    EXPECT_TRUE(test::checker_accepts(gravity, h.certificate));
+    const std::string mu0 = test::read_text(test::source_dir() + "/proofs/examples/block_corner_mu0.scene.json");
+    const Hold_item b = answer_hold(mu0, "scene", request);
+    if (mode == Mode::hybrid) {
+      ASSERT_EQ(b.status, Status::answered) << b.message;
+      EXPECT_EQ(b.answer.verdict, Hold_verdict::impending);
+    } else {
+      EXPECT_NE(b.status == Status::answered && b.answer.verdict == Hold_verdict::holds, true);
+    }
+  }
+}
+
 // On a support alone, `hold` with the body load w and `limit-surface --load −w` are one decision (issue 29): the same
 // outcome (holds ⇔ sticks, impending ⇔ impending, fails ⇔ slides, depends ⇔ depends), both certificates accepted, in
 // hybrid and exact mode — on every support-only scene of the stress families and the reference corpus' families
