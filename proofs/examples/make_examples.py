@@ -492,6 +492,11 @@ CERTS = [
     ("barbell_known", "impending_translation", "valid",
      motion3("impending", [F(1, 2), 0, 0], support_forces=[["1/4", "0"], ["1/4", "0"]], twist=["1", "0", "0"],
              speed_bounds=["1", "1"])),
+    # (1/2, 0, 0) is a vertex of Fig. 6.15 (both forces saturated across the barbell): its normals are a wedge, and the
+    # rotation (2, 0, 1) about (0, 2) is one of them as well: speeds 3 and 1, power 1 = (1/4)(3 + 1).
+    ("barbell_known", "impending_vertex_wedge", "valid",
+     motion3("impending", [F(1, 2), 0, 0], support_forces=[["1/4", "0"], ["1/4", "0"]], twist=["2", "0", "1"],
+             speed_bounds=["3", "1"])),
     ("barbell_known", "slides_on_surface_in_format_3", "invalid:power|only equals sum mu_i f_i u_i = 1/2",
      motion3("slides", [F(1, 2), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1"])),
     ("barbell_known", "impending_in_format_1", 'invalid:version|motion: "impending" is a claim of format 3',
