@@ -497,6 +497,12 @@ CERTS = [
     ("barbell_known", "impending_vertex_wedge", "valid",
      motion3("impending", [F(1, 2), 0, 0], support_forces=[["1/4", "0"], ["1/4", "0"]], twist=["2", "0", "1"],
              speed_bounds=["3", "1"])),
+    # A smooth point: the rotation about (4/3, 0), q = (0, -4, 3), moves both points at the Pythagorean speed 5; each
+    # force saturated along its velocity, (1/4)(3/5, -4/5) and (1/4)(-3/5, -4/5), carries (0, -2/5, 3/10), and the
+    # power 8/5 + 9/10 = 5/2 = (1/4)(5 + 5). (The engine writes this certificate, in exact and hybrid mode.)
+    ("barbell_known", "impending_smooth", "valid",
+     motion3("impending", [0, F(-2, 5), F(3, 10)], support_forces=[["3/20", "-1/5"], ["-3/20", "-1/5"]],
+             twist=["0", "-4", "3"], speed_bounds=["5", "5"])),
     ("barbell_known", "slides_on_surface_in_format_3", "invalid:power|only equals sum mu_i f_i u_i = 1/2",
      motion3("slides", [F(1, 2), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1"])),
     ("barbell_known", "impending_in_format_1", 'invalid:version|motion: "impending" is a claim of format 3',
