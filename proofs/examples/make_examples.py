@@ -492,6 +492,17 @@ CERTS = [
     ("barbell_known", "impending_translation", "valid",
      motion3("impending", [F(1, 2), 0, 0], support_forces=[["1/4", "0"], ["1/4", "0"]], twist=["1", "0", "0"],
              speed_bounds=["1", "1"])),
+    # (1/2, 0, 0) is a vertex of Fig. 6.15 (both forces saturated across the barbell): its normals are a wedge, and the
+    # rotation (2, 0, 1) about (0, 2) is one of them as well: speeds 3 and 1, power 1 = (1/4)(3 + 1).
+    ("barbell_known", "impending_vertex_wedge", "valid",
+     motion3("impending", [F(1, 2), 0, 0], support_forces=[["1/4", "0"], ["1/4", "0"]], twist=["2", "0", "1"],
+             speed_bounds=["3", "1"])),
+    # A smooth point: the rotation about (4/3, 0), q = (0, -4, 3), moves both points at the Pythagorean speed 5; each
+    # force saturated along its velocity, (1/4)(3/5, -4/5) and (1/4)(-3/5, -4/5), carries (0, -2/5, 3/10), and the
+    # power 8/5 + 9/10 = 5/2 = (1/4)(5 + 5). (The engine writes this certificate, in exact and hybrid mode.)
+    ("barbell_known", "impending_smooth", "valid",
+     motion3("impending", [0, F(-2, 5), F(3, 10)], support_forces=[["3/20", "-1/5"], ["-3/20", "-1/5"]],
+             twist=["0", "-4", "3"], speed_bounds=["5", "5"])),
     ("barbell_known", "slides_on_surface_in_format_3", "invalid:power|only equals sum mu_i f_i u_i = 1/2",
      motion3("slides", [F(1, 2), 0, 0], twist=["1", "0", "0"], speed_bounds=["1", "1"])),
     ("barbell_known", "impending_in_format_1", 'invalid:version|motion: "impending" is a claim of format 3',
@@ -503,6 +514,22 @@ CERTS = [
     ("barbell_known", "impending_power_short", "invalid:power|twist: power q.p = 1/4 is less than sum mu_i f_i u_i = 1/2",
      motion3("impending", [F(1, 4), 0, F(1, 4)], support_forces=[["1/4", "0"], ["0", "0"]], twist=["1", "0", "0"],
              speed_bounds=["1", "1"])),
+    # The version, the twist and its speeds of an impending claim: "impending" in format 2 is rejected as in format 1;
+    # the zero twist meets every bound and proves nothing. The translation (1, 1, 0) moves both points at sqrt(2), which
+    # no rational bound equals: rounded down (7/5) it is not a bound, rounded up (3/2) the power 1/2 of (1/2, 0, 0)
+    # falls short of (1/4)(3/2) 2 = 3/4. (q.p = h(q) forces u_i = |v_i(q)|: SL-1 section 7.)
+    ("barbell_known", "impending_in_format_2", 'invalid:version|motion: "impending" is a claim of format 3',
+     motion2("impending", [F(1, 4), 0, F(1, 4)], support_forces=[["1/4", "0"], ["0", "0"]], twist=["1", "0", "1"],
+             speed_bounds=["2", "0"])),
+    ("barbell_known", "impending_zero_twist", "invalid:zero twist|twist: the zero twist",
+     motion3("impending", [F(1, 2), 0, 0], support_forces=[["1/4", "0"], ["1/4", "0"]], twist=["0", "0", "0"],
+             speed_bounds=["0", "0"])),
+    ("barbell_known", "impending_speed_rounded_down", "invalid:speed|speed_bounds[0]: u^2 = 49/25 is less than |v_i(q)|^2 = 2",
+     motion3("impending", [F(1, 2), 0, 0], support_forces=[["1/4", "0"], ["1/4", "0"]], twist=["1", "1", "0"],
+             speed_bounds=["7/5", "7/5"])),
+    ("barbell_known", "impending_speed_rounded_up", "invalid:power|twist: power q.p = 1/2 is less than sum mu_i f_i u_i = 3/4",
+     motion3("impending", [F(1, 2), 0, 0], support_forces=[["1/4", "0"], ["1/4", "0"]], twist=["1", "1", "0"],
+             speed_bounds=["3/2", "3/2"])),
     # The table at exactly mu W along x: every vertex of F (the two diagonals) carries (1, 0, 0) with forces (1/2, 0) on
     # their circles, and q = (1, 0, 0) with the dual (1, 0, 0) bounds every distribution's power by W = 1 = q.p.
     ("table_four_legs", "impending_for_every", "valid",
@@ -565,6 +592,11 @@ CERTS = [
     ("fixture_pin_pull", "impending_zero_twist", "invalid:zero twist|twist: the zero twist",
      hold3("impending", combination=[], support_forces=[["-1/8", "0"]] * 4, twist=["0", "0", "0"],
            speed_bounds=["0", "0", "0", "0"])),
+    # The pull carried by the two right legs alone, (-1/4, 0) each (their moments cancel): outside the discs of
+    # radius 1/8, so the witness is not in the closed set, whatever the twist shows.
+    ("fixture_pin_pull", "impending_force_outside_disc", "invalid:disc|support_forces[0]: |g|^2 = 1/16 is not at most (mu f)^2 = 1/64",
+     hold3("impending", combination=[], support_forces=[["-1/4", "0"], ["0", "0"], ["0", "0"], ["-1/4", "0"]],
+           twist=["1", "0", "0"], speed_bounds=["1", "1", "1", "1"])),
     # The push (-1, 1/4) at (1, 0) held with margin in format 3: the pin takes the push along x; the legs carry
     # (0, -1/4) with the moment -1/4 by (±1/16, -1/16) each, |g|^2 = 1/128 < 1/64 strictly inside their discs; the
     # pin's normal and the legs' span make R^3.
