@@ -276,8 +276,10 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
     c.infinity_cone(d.infinity, kInfinity);
     c.dot({0, 0}, 3, "fill=\"#222\"");
     c.text({0, 0}, "O");
+    bool generator_at_infinity = false;
     for (std::size_t i = 0; i < d.generators.size(); ++i) {
       const Dual_point& p = d.generators[i];
+      generator_at_infinity |= p.sheet == 'i';
       const std::string name = "c" + std::to_string(gens[i].contact) + (gens[i].edge == Edge::left ? "L" : gens[i].edge == Edge::right ? "R" : "");
       if (p.sheet == 'i') {
         c.infinity_dot(to_p2(p.at), "#222");
@@ -304,6 +306,8 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
     if (!d.plus_sheet.empty()) c.legend(swatch(kPlus), "front (+) sheet of the dual polygon: wrenches with m > 0 (filled dots)");
     if (!d.minus_sheet.empty()) c.legend(swatch(kMinus), "back (\u2212) sheet: wrenches with m < 0, drawn where they sit (hollow dots)");
     if (d.infinity.shape != Cone2::Shape::zero) c.legend(swatch(kInfinity, 1), "points at infinity of the polygon: forces through the origin O");
+    if (generator_at_infinity)
+      c.legend(swatch("#222", 1), "black dots on the rim: generators through O (m = 0), their dual points at infinity");
     if (s.load) c.legend(swatch(kLoad, 1), "antipode of the load: balanced iff it lies in the polygon");
     c.caption(std::string("covers the whole two-sided plane: ") + (d.covers_all ? "yes (force closure)" : "no"));
     c.caption("a wrench (fx, fy, m) is the point D(w) = (\u2212fy, fx, m): (\u2212fy/m, fx/m) on the sheet of sign m");

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -119,6 +120,40 @@ TEST(Newcomer, AnUnknownCommandOrOptionSaysWhichItLikelyMeans) {
             0u);
 }
 
+TEST(Newcomer, LabelsSaysWhatIsLabeledAndReadsTheLoad) {
+  const Cli_result closed = run("labels '" + golden("triangle_example3_mu_1_10") + "'");
+  ASSERT_EQ(closed.code, 0) << closed.err;
+  EXPECT_NE(closed.out.find("\nforce closure: yes (nothing labeled, infinity included)\n"), std::string::npos) << closed.out;
+  const Cli_result walls = run("labels '" + golden("vertical_walls_squeeze") + "'");
+  ASSERT_EQ(walls.code, 0) << walls.err;
+  EXPECT_NE(walls.out.find("\nforce closure: no (labeled: points at infinity; closure needs nothing labeled, infinity "
+                           "included)\n"),
+            std::string::npos)
+      << walls.out;
+  const Cli_result corner = run("labels '" + golden("equilibrium/block_corner_mu_1_2_gravity") + "'");
+  ASSERT_EQ(corner.code, 0) << corner.err;
+  EXPECT_NE(corner.out.find("\nforce closure: no (labeled: the + region, the - region and points at infinity; closure "
+                            "needs nothing labeled, infinity included)\n"),
+            std::string::npos)
+      << corner.out;
+  EXPECT_NE(corner.out.find("\nload (0, -1, -1/2): balanced (minus the load is a possible contact resultant)\n"),
+            std::string::npos)
+      << corner.out;
+  const Cli_result ladder = run("labels '" + golden("equilibrium/ladder_mu_1_8_gravity") + "'");
+  ASSERT_EQ(ladder.code, 0) << ladder.err;
+  EXPECT_NE(ladder.out.find(": not balanced (minus the load is not a possible contact resultant)\n"), std::string::npos)
+      << ladder.out;
+  // The same in --mode float, read on the twin's labels.
+  const Cli_result fl = run("labels --mode float '" + golden("equilibrium/block_corner_mu_1_2_gravity") + "'");
+  ASSERT_EQ(fl.code, 0) << fl.err;
+  EXPECT_NE(fl.out.find("\nforce closure: no (labeled: the + region, the - region and points at infinity; closure"),
+            std::string::npos)
+      << fl.out;
+  EXPECT_NE(fl.out.find(": balanced (minus the load"), std::string::npos) << fl.out;
+  // Without a load, no load line.
+  EXPECT_EQ(closed.out.find("\nload "), std::string::npos) << closed.out;
+}
+
 TEST(Newcomer, BatchReadsFilesInOrderAsStandardInputWouldBe) {
   const std::string a = test::read_text(golden("two_finger_y1_2_mu1_10")), b = test::read_text(golden("single_force"));
   const auto line = [](std::string t) {
@@ -144,6 +179,77 @@ TEST(Newcomer, BatchReadsFilesInOrderAsStandardInputWouldBe) {
   const Cli_result dir = run("batch closure '" + scratch().string() + "'");
   EXPECT_EQ(dir.code, 2);
   EXPECT_EQ(dir.out, "");
+}
+
+// The <text> elements of an SVG: (x, y, text).
+struct Svg_text {
+  double x, y;
+  std::string text;
+};
+std::vector<Svg_text> texts_of(const std::string& svg) {
+  std::vector<Svg_text> out;
+  const std::regex re("<text x=\"([-0-9.]+)\" y=\"([-0-9.]+)\"[^>]*>([^<]*)</text>");
+  for (std::sregex_iterator i(svg.begin(), svg.end(), re), end; i != end; ++i)
+    out.push_back({std::atof((*i)[1].str().c_str()), std::atof((*i)[2].str().c_str()), (*i)[3].str()});
+  return out;
+}
+const Svg_text* find_text(const std::vector<Svg_text>& t, const std::string& s) {
+  for (const Svg_text& x : t)
+    if (x.text == s) return &x;
+  return nullptr;
+}
+// Two labels of one line of text overprint when their baselines are within a line's height and their starts
+// within the first one's width (13px text, about 8px a character).
+bool overprint(const Svg_text& a, const Svg_text& b) {
+  const double width = 8.0 * static_cast<double>(a.x <= b.x ? a.text.size() : b.text.size());
+  return std::abs(a.y - b.y) < 13 && std::abs(a.x - b.x) < width;
+}
+
+TEST(Newcomer, PicturesPlaceLabelsApart) {
+  const auto render = [](const std::string& what, const std::string& scene) {
+    const Cli_result r = run("render --what " + what + " '" + scene + "'");
+    EXPECT_EQ(r.code, 0) << r.err;
+    return texts_of(r.out);
+  };
+  // Example 3 in closure: both sheets cover the plane, their captions at one centroid.
+  const std::vector<Svg_text> dual = render("dual", golden("triangle_example3_mu_1_10"));
+  const Svg_text *plus = find_text(dual, "+ sheet"), *minus = find_text(dual, "\u2212 sheet");
+  ASSERT_TRUE(plus && minus);
+  EXPECT_FALSE(overprint(*plus, *minus)) << plus->x << "," << plus->y << " " << minus->x << "," << minus->y;
+  for (const Svg_text& t : dual) {
+    if (&t == plus || &t == minus || t.y >= 720) continue;  // below the disc: the legend and captions
+    EXPECT_FALSE(overprint(*plus, t)) << t.text;
+    EXPECT_FALSE(overprint(*minus, t)) << t.text;
+  }
+  // A block in a corner: contacts 0 and 2 at one point.
+  const std::vector<Svg_text> corner = render("labels", golden("equilibrium/block_corner_mu_1_2_gravity"));
+  const Svg_text *c0 = find_text(corner, "c0"), *c2 = find_text(corner, "c2");
+  ASSERT_TRUE(c0 && c2);
+  EXPECT_FALSE(overprint(*c0, *c2)) << c0->x << "," << c0->y << " " << c2->x << "," << c2->y;
+  // The hold picture: the pin's name and the rotation centre at it.
+  const std::vector<Svg_text> hold = render("hold", test::source_dir() + "/proofs/examples/fixture_pin_lift.scene.json");
+  const Svg_text* pin = find_text(hold, "c0");
+  ASSERT_TRUE(pin);
+  std::size_t centres = 0;
+  for (const Svg_text& t : hold) {
+    if (t.text.find("rotation centre") == std::string::npos) continue;
+    EXPECT_FALSE(overprint(*pin, t)) << t.text;
+    ++centres;
+  }
+  EXPECT_EQ(centres, 1u);
+}
+
+TEST(Newcomer, TheDualsLegendNamesTheBlackDotsOnTheRim) {
+  // A contact at the origin: its generators' moments are zero, their dual points at infinity (black dots on the rim).
+  const std::string at_origin = write("origin.json", R"({"wrenchkit": 1, "contacts": [
+      {"at": [0, 0], "normal": [1, 0], "mu": "1/2"}, {"at": [1, 1], "normal": [0, -1], "mu": "1/2"}]})");
+  const Cli_result r = run("render --what dual '" + at_origin + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find(">black dots on the rim: generators through O (m = 0), their dual points at infinity</text>"),
+            std::string::npos);
+  const Cli_result none = run("render --what dual '" + golden("triangle_example3_mu_1_10") + "'");
+  ASSERT_EQ(none.code, 0) << none.err;
+  EXPECT_EQ(none.out.find("black dots on the rim"), std::string::npos);
 }
 
 }  // namespace
