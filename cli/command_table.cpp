@@ -837,6 +837,12 @@ Batch_job prepare_batch(const std::vector<std::string>& args) {
   return {o, c->prepare(o)};
 }
 
+Options parse_options(const std::string& command, const std::vector<std::string>& args) {
+  const Command* c = find_command(command);
+  if (!c) throw std::logic_error("parse_options: no command " + command);
+  return parse(Grammar{c->name, c->options}, args);
+}
+
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = make_table();
   return table;

@@ -114,7 +114,8 @@ Labels_query labels_query(const Options& o) {
   return q;
 }
 
-// reuleaux: the optional motion (--center [--sense], --direction or --twist).
+}  // namespace
+
 Labels_query reuleaux_query(const Options& o) {
   const int queries = o.center.has_value() + o.direction.has_value() + o.twist.has_value();
   if (queries > 1) throw Usage_error("give at most one of --center, --direction, --twist");
@@ -126,6 +127,8 @@ Labels_query reuleaux_query(const Options& o) {
   else if (o.twist) q.motion = *o.twist;
   return q;
 }
+
+namespace {
 
 Labels_query dual_query(const Options&) {
   Labels_query q;

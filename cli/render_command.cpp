@@ -218,29 +218,18 @@ std::string render_hold(const Scene& s, const Hold_item& h, const std::string& s
 
 }  // namespace
 
-int run_render(const Options& o, const std::string& text, const std::string& source) {
+std::string render_svg(const Options& o, const std::string& text, const std::string& source) {
   if (!o.what) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface|hold");
   const Picture what = *o.what;
   if (o.sides && what != Picture::limit_surface) throw Usage_error("--sides goes with --what limit-surface");
   const Scene s = read_scene(text, o.limits, source);
-  if (what == Picture::hold) {
-    const std::string svg = render_hold(s, answered(answer_hold(text, source, request_of(o))), source);
-    if (!o.output.empty()) write_file(o.output, svg);
-    else std::cout << svg;
-    return kAnswered;
-  }
-  if (what == Picture::limit_surface) {
-    const std::string svg = render_limit_surface_svg(s, o.sides.value_or(32));
-    if (!o.output.empty()) write_file(o.output, svg);
-    else std::cout << svg;
-    return kAnswered;
-  }
+  if (what == Picture::hold) return render_hold(s, answered(answer_hold(text, source, request_of(o))), source);
+  if (what == Picture::limit_surface) return render_limit_surface_svg(s, o.sides.value_or(32));
   const bool frictionless = what == Picture::reuleaux;
   const std::vector<Generator> gens = generators(s, frictionless ? Reading::frictionless : Reading::friction);
   std::vector<Vec3q> ws;
   for (const Generator& g : gens) ws.push_back(g.w);
   const Moment_labels l = moment_labels(ws);
-  std::string svg;
   if (what == Picture::labels || what == Picture::reuleaux) {
     Bounds b;
     add_scene_bounds(b, s);
@@ -256,7 +245,7 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
     c.caption(frictionless ? std::string("first-order form closure: ") + (closed ? "yes" : "no")
                            : std::string("force closure: ") + (closed ? "yes (nothing labeled)" : "no"));
     if (l.both.kind == Both_set::Kind::plane) c.caption("no contact wrench: every point is labeled \u00b1");
-    svg = c.finish();
+    return c.finish();
   } else {
     const Force_dual d = force_dual(l, ws);
     Bounds b;
@@ -315,8 +304,12 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
       const Vec3q w = load_wrench(s);
       c.caption(std::string("load balanced: ") + (in_cone(l.cone, {-w[0], -w[1], -w[2]}) ? "yes" : "no"));
     }
-    svg = c.finish();
+    return c.finish();
   }
+}
+
+int run_render(const Options& o, const std::string& text, const std::string& source) {
+  const std::string svg = render_svg(o, text, source);
   if (!o.output.empty()) write_file(o.output, svg);
   else std::cout << svg;
   return kAnswered;
