@@ -1,11 +1,16 @@
-// wrenchkit batch COMMAND: JSON lines in, one answer per line, in order, on --jobs threads. Each
+// wrenchkit batch COMMAND [FILE ...]: JSON lines in, one answer per line, in order, on --jobs threads. Each
 // line's answer is the command's own --json answer (its Scene_answer, cli/common.h) with a "line"
 // field first; the threads and the order are exact/pipeline/batch.h's ordered_map.
 #include <atomic>
+#include <cerrno>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <memory>
 #include <new>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/common.h"
@@ -17,19 +22,25 @@ namespace wrenchkit::cli {
 
 namespace {
 
-// Standard input read in blocks and split into lines (without the '\n'). A line longer than `limit`
-// bytes is flagged and its text dropped as it streams by, so memory stays bounded.
+// The inputs (standard input, or files one after the other) read in blocks and split into lines (without the
+// '\n'; a file's last line need not end with one). A line longer than `limit` bytes is flagged and its text
+// dropped as it streams by, so memory stays bounded.
 class Line_reader {
  public:
-  Line_reader(std::streambuf* in, std::size_t limit) : in_(in), limit_(limit), buf_(1 << 16) {}
+  Line_reader(std::vector<std::streambuf*> in, std::size_t limit) : in_(std::move(in)), limit_(limit), buf_(1 << 16) {}
 
-  // The next line into `line`; false at the end of the input.
+  // The next line into `line`; false at the end of the last input.
   bool next(std::string& line, bool& too_long) {
     line.clear();
     too_long = false;
     bool any = false;
     for (;;) {
-      if (pos_ == end_ && !fill()) return any;
+      if (pos_ == end_ && !fill()) {
+        if (any) return true;
+        if (++current_ >= in_.size()) return false;
+        eof_ = false;
+        continue;
+      }
       any = true;
       const char* b = buf_.data() + pos_;
       const std::size_t left = end_ - pos_;
@@ -54,14 +65,15 @@ class Line_reader {
  private:
   bool fill() {
     if (eof_) return false;
-    const std::streamsize got = in_->sgetn(buf_.data(), static_cast<std::streamsize>(buf_.size()));
+    const std::streamsize got = in_[current_]->sgetn(buf_.data(), static_cast<std::streamsize>(buf_.size()));
     pos_ = 0;
     end_ = got > 0 ? static_cast<std::size_t>(got) : 0;
     eof_ = end_ == 0;
     return !eof_;
   }
 
-  std::streambuf* in_;
+  std::vector<std::streambuf*> in_;
+  std::size_t current_ = 0;
   std::size_t limit_;
   std::vector<char> buf_;
   std::size_t pos_ = 0, end_ = 0;
@@ -114,11 +126,27 @@ Status batch_line(const Options& o, const Scene_answer& answer, const std::strin
   return status;
 }
 
-// wrenchkit batch COMMAND [OPTIONS] < scenes.jsonl (the command and its options already read and
-// prepared: cli/command_table.cpp).
+// wrenchkit batch COMMAND [OPTIONS] [FILE ...] (the command and its options already read and prepared:
+// cli/command_table.cpp): the lines of the files in their order (- or none: standard input), numbered on across
+// the files. Every file is opened before any line is read.
 int run_batch(const Options& o, const Scene_answer& answer) {
   std::atomic<bool> self_check_failed{false}, internal_error{false};
-  Line_reader reader(std::cin.rdbuf(), o.limits.max_file_bytes);
+  std::vector<std::unique_ptr<std::filebuf>> files;
+  std::vector<std::streambuf*> inputs;
+  for (const std::string& path : o.positional) {
+    if (path == "-") {
+      inputs.push_back(std::cin.rdbuf());
+      continue;
+    }
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw Input_error(path + ": is a directory, not a file of scenes");
+    files.push_back(std::make_unique<std::filebuf>());
+    if (!files.back()->open(path, std::ios::in | std::ios::binary))
+      throw Input_error(path + ": cannot open (" + std::strerror(errno) + ")");
+    inputs.push_back(files.back().get());
+  }
+  if (inputs.empty()) inputs.push_back(std::cin.rdbuf());
+  Line_reader reader(std::move(inputs), o.limits.max_file_bytes);
   ordered_map<Line, std::string, Worker>(
       o.jobs,
       [&](Line& l) {

@@ -11,10 +11,12 @@
 #include <iostream>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cli/demo_scene.h"
+#include "exact/io/suggest.h"
 #include "exact/numbers/rational.h"
 #include "exact/sliding/limit_surface.h"
 
@@ -509,11 +511,12 @@ std::vector<Command> make_table() {
                run_demo});
   t.push_back(
       {"batch",
-       "wrenchkit batch COMMAND < scenes.jsonl: one scene per line, one JSON answer per line in order, on all "
+       "wrenchkit batch COMMAND [FILE ...]: one scene per line, one JSON answer per line in order, on all "
        "cores (--jobs N), for each command that answers per scene",
-       "COMMAND [OPTIONS] < scenes.jsonl",
-       "Reads one scene per line (JSON lines) on standard input and writes one JSON answer per line,\n"
-       "in the same order, computed on --jobs threads (the output is the same for any --jobs): the\n"
+       "COMMAND [OPTIONS] [FILE ...]",
+       "Reads one scene per line (JSON lines) from the files in their order, or standard input (- or no\n"
+       "file), and writes one JSON answer per line, in the same order, lines numbered on across the files,\n"
+       "computed on --jobs threads (the output is the same for any --jobs): the\n"
        "output of 'wrenchkit COMMAND --json' with a \"line\" field first, or {\"line\": N, \"error\":\n"
        "MESSAGE, \"exit_code\": 2} for a bad line (the stream goes on), {\"line\": N, \"undecided\": …,\n"
        "\"exit_code\": 3} when --mode float cannot decide. The command's own options apply to every\n"
@@ -669,7 +672,11 @@ bool spells(const Option& o, std::string token) {
     for (const std::vector<Option>* list : {&c.options, &c.batch_options})
       for (const Option& o : *list)
         if (spells(o, token)) throw Usage_error(token.substr(0, token.find('=')) + " is not an option of " + g.name);
-  throw Usage_error("unknown option " + token);
+  const std::string name = token.substr(0, token.find('='));
+  std::vector<std::string> known;
+  for (const Option& o : g.options) known.push_back(long_name(o.name));
+  const std::string meant = name.rfind("--", 0) == 0 ? closest_word(name.substr(2), known) : std::string();
+  throw Usage_error("unknown option " + token + (meant.empty() ? "" : " (did you mean --" + meant + "?)"));
 }
 
 Options parse(const Grammar& g, const std::vector<std::string>& args) {
@@ -793,23 +800,28 @@ int run_batch_command(const Command& batch, const std::vector<std::string>& args
   std::string names;
   for (const Command& x : commands())
     if (x.prepare) names += (names.empty() ? "" : "|") + std::string(x.name);
-  const std::string usage = "wrenchkit batch " + names + " [OPTIONS] < scenes.jsonl";
+  const std::string usage = "wrenchkit batch " + names + " [OPTIONS] [FILE ...]";
   if (args.size() >= 2 && (args[1] == "--help" || args[1] == "-h")) return std::cout << command_help(batch), kAnswered;
   if (args.size() < 2 || (args[1].size() > 1 && args[1][0] == '-')) throw Usage_error("batch needs a command: " + usage);
   const Command* c = find_command(args[1]);
-  if (!c || !c->prepare)
-    throw Usage_error("batch: \"" + args[1] + "\" is not a command that answers per scene: " + usage);
+  if (!c || !c->prepare) {
+    std::vector<std::string> per_scene;
+    for (const Command& x : commands())
+      if (x.prepare) per_scene.push_back(x.name);
+    throw Usage_error("batch: \"" + args[1] + "\" is not a command that answers per scene" +
+                      did_you_mean(closest_word(args[1], per_scene)) + ": " + usage);
+  }
   const Grammar g = batch_grammar(batch, *c);
   const Options o = parse(g, std::vector<std::string>(args.begin() + 2, args.end()));
   if (o.help) {
-    std::cout << "usage: wrenchkit batch " << c->name << " [OPTIONS] < scenes.jsonl\n\n"
-              << "For each scene of standard input, one line: the answer of 'wrenchkit " << c->name << " --json'\n"
+    std::cout << "usage: wrenchkit batch " << c->name << " [OPTIONS] [FILE ...]\n\n"
+              << "For each scene of the files (- or none: standard input), one line: the answer of 'wrenchkit "
+              << c->name << " --json'\n"
               << "('wrenchkit batch --help'). What " << c->name << " answers:\n\n"
               << c->description << "\n"
               << options_text(g.options);
     return kAnswered;
   }
-  if (!o.positional.empty()) throw Usage_error("batch reads its scenes from standard input: " + usage);
   return run_batch(o, c->prepare(o));  // the command's options combined once, before any line
 }
 
@@ -823,6 +835,12 @@ Batch_job prepare_batch(const std::vector<std::string>& args) {
   const Options o = parse(batch_grammar(*batch, *c), std::vector<std::string>(args.begin() + 1, args.end()));
   if (o.help || !o.positional.empty()) throw Usage_error("batch " + args[0] + ": takes options only, no --help or scene files");
   return {o, c->prepare(o)};
+}
+
+Options parse_options(const std::string& command, const std::vector<std::string>& args) {
+  const Command* c = find_command(command);
+  if (!c) throw std::logic_error("parse_options: no command " + command);
+  return parse(Grammar{c->name, c->options}, args);
 }
 
 const std::vector<Command>& commands() {
@@ -839,7 +857,13 @@ int run_command_line(const std::vector<std::string>& args, const Conformance_com
   if (name == "--help" || name == "-h" || name == "help") return std::cout << main_help(), kAnswered;
   if (name == "--version") return std::cout << "wrenchkit 0.1.0\n", kAnswered;
   const Command* c = find_command(name);
-  if (!c) throw Usage_error("unknown command \"" + name + "\" (try wrenchkit --help)");
+  if (!c) {
+    std::vector<std::string> names;
+    for (const Command& x : commands()) names.push_back(x.name);
+    const std::string meant = closest_word(name, names);
+    throw Usage_error("unknown command \"" + name + "\" (" + (meant.empty() ? "" : "did you mean \"" + meant + "\"? ") +
+                      "try wrenchkit --help)");
+  }
   if (std::string(c->name) == "batch") return run_batch_command(*c, args);
   const Options o = parse(Grammar{c->name, c->options}, std::vector<std::string>(args.begin() + 1, args.end()));
   if (o.help) return std::cout << command_help(*c), kAnswered;

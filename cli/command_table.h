@@ -61,6 +61,11 @@ struct Batch_job {
 };
 Batch_job prepare_batch(const std::vector<std::string>& command_and_options);
 
+// COMMAND's options (no scene file), parsed and validated as `wrenchkit COMMAND ARGS…` parses them, for the front
+// ends that answer one command's question without a command line (the Python bindings' render, reuleaux, compare).
+// Usage_error as the command line gives it.
+Options parse_options(const std::string& command, const std::vector<std::string>& args);
+
 // `wrenchkit ARGS…` (argv without the program name): parses, validates and runs, the conformance commands with the
 // program's handlers; the exit code. Throws Usage_error, Input_error, Undecided, Self_check_failure as the commands do.
 int run_command_line(const std::vector<std::string>& args, const Conformance_commands& conformance);

@@ -18,6 +18,7 @@
 #include "exact/io/json_writer.h"
 #include "exact/pipeline/pipeline.h"
 #include "exact/pipeline/hold_answer.h"
+#include "exact/pipeline/labels_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
@@ -237,6 +238,11 @@ int run_labels(const Options& o, const std::string& scene_text, const std::strin
 int run_dual(const Options& o, const std::string& scene_text, const std::string& source);
 int run_reuleaux(const Options& o, const std::string& scene_text, const std::string& source);
 int run_render(const Options& o, const std::string& scene_text, const std::string& source);
+// reuleaux's motion from --center [--sense], --direction or --twist (none: no query); Usage_error for two of them.
+Labels_query reuleaux_query(const Options& o);
+// render's picture (--what, --sides) of one scene: the SVG text that `render` writes (the Python bindings' too).
+std::string render_svg(const Options& o, const std::string& scene_text, const std::string& source,
+                       bool* undecided = nullptr);
 
 // hold_command.cpp (analyze uses these pieces): contacts and the support's friction against the load.
 void write_hold(Json_writer& w, const Hold_item& r);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/common.h"
 #include "cli/float_json.h"
@@ -113,7 +114,8 @@ Labels_query labels_query(const Options& o) {
   return q;
 }
 
-// reuleaux: the optional motion (--center [--sense], --direction or --twist).
+}  // namespace
+
 Labels_query reuleaux_query(const Options& o) {
   const int queries = o.center.has_value() + o.direction.has_value() + o.twist.has_value();
   if (queries > 1) throw Usage_error("give at most one of --center, --direction, --twist");
@@ -125,6 +127,8 @@ Labels_query reuleaux_query(const Options& o) {
   else if (o.twist) q.motion = *o.twist;
   return q;
 }
+
+namespace {
 
 Labels_query dual_query(const Options&) {
   Labels_query q;
@@ -256,6 +260,33 @@ std::string human_labels(const Labels_item& s) {
   return s.mode == Mode::float_only ? float_labels_human(s.twin) : labels_human(s.labels);
 }
 
+// The force-closure line: closure ⇔ nothing is labeled, infinity included (theory.md §5.5); when something is,
+// what.
+std::string closure_line(const Labels_item& s) {
+  if (s.closed()) return "force closure: yes (nothing labeled, infinity included)\n";
+  const bool fm = s.mode == Mode::float_only;
+  std::vector<std::string> parts;
+  if (fm ? s.twin.plus.shape != fl::Region2::Shape::empty : !s.labels.plus.empty()) parts.push_back("the + region");
+  if (fm ? s.twin.minus.shape != fl::Region2::Shape::empty : !s.labels.minus.empty()) parts.push_back("the - region");
+  if (!fm && s.labels.both.kind != Both_set::Kind::none) parts.push_back("the +- set");
+  if (fm ? s.twin.infinity.shape != fl::Arc2::Shape::zero : s.labels.infinity.shape != Cone2::Shape::zero)
+    parts.push_back("points at infinity");
+  std::string labeled;
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    labeled += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+  return "force closure: no (labeled: " + labeled + "; closure needs nothing labeled, infinity included)\n";
+}
+
+// The scene's load read on the labels (theory.md §5.5): balanced ⇔ minus the load is a contact resultant.
+std::string load_line(const Labels_item& s) {
+  if (!s.load) return "";
+  const Vec3q& w = *s.load;
+  return "load " + vec_text({w[0], w[1], w[2]}) + ": " +
+         (*s.load_balanced ? "balanced (minus the load is a possible contact resultant)"
+                           : "not balanced (minus the load is not a possible contact resultant)") +
+         "\n";
+}
+
 }  // namespace
 
 Scene_answer prepare_labels_json(const Options& o) {
@@ -284,11 +315,11 @@ std::string labels_text(const Labels_item& s, const Labels_query& q, const std::
   std::ostringstream out;
   out << scene_line(s.scene.name, source) << "moment labels of the contact wrench cone (with friction"
       << (s.mode == Mode::float_only ? "" : "; exact") << "):\n"
-      << human_labels(s) << "force closure: " << (s.closed() ? "yes" : "no") << " (nothing labeled, infinity included)\n";
+      << human_labels(s) << closure_line(s);
   if (q.resultant)
     out << "resultant " << vec_text({(*q.resultant)[0], (*q.resultant)[1], (*q.resultant)[2]}) << ": "
         << (*s.resultant_possible ? "possible" : "not possible") << "\n";
-  return out.str() + decided_line(s);
+  return out.str() + load_line(s) + decided_line(s);
 }
 
 std::string dual_text(const Labels_item& s, const std::string& source) {

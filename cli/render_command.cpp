@@ -223,30 +223,22 @@ std::string render_hold(const Scene& s, const Hold_item& h, const std::string& s
 
 }  // namespace
 
-int run_render(const Options& o, const std::string& text, const std::string& source) {
+std::string render_svg(const Options& o, const std::string& text, const std::string& source, bool* undecided) {
   if (!o.what) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface|hold");
   const Picture what = *o.what;
   if (o.sides && what != Picture::limit_surface) throw Usage_error("--sides goes with --what limit-surface");
   const Scene s = read_scene(text, o.limits, source);
   if (what == Picture::hold) {
     const Hold_item h = answered(answer_hold(text, source, request_of(o)));
-    const std::string svg = render_hold(s, h, source);
-    if (!o.output.empty()) write_file(o.output, svg);
-    else std::cout << svg;
-    return h.answer.verdict == Hold_verdict::undecided ? kUndecided : kAnswered;
+    if (undecided) *undecided = h.answer.verdict == Hold_verdict::undecided;
+    return render_hold(s, h, source);
   }
-  if (what == Picture::limit_surface) {
-    const std::string svg = render_limit_surface_svg(s, o.sides.value_or(32));
-    if (!o.output.empty()) write_file(o.output, svg);
-    else std::cout << svg;
-    return kAnswered;
-  }
+  if (what == Picture::limit_surface) return render_limit_surface_svg(s, o.sides.value_or(32));
   const bool frictionless = what == Picture::reuleaux;
   const std::vector<Generator> gens = generators(s, frictionless ? Reading::frictionless : Reading::friction);
   std::vector<Vec3q> ws;
   for (const Generator& g : gens) ws.push_back(g.w);
   const Moment_labels l = moment_labels(ws);
-  std::string svg;
   if (what == Picture::labels || what == Picture::reuleaux) {
     Bounds b;
     add_scene_bounds(b, s);
@@ -262,7 +254,7 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
     c.caption(frictionless ? std::string("first-order form closure: ") + (closed ? "yes" : "no")
                            : std::string("force closure: ") + (closed ? "yes (nothing labeled)" : "no"));
     if (l.both.kind == Both_set::Kind::plane) c.caption("no contact wrench: every point is labeled \u00b1");
-    svg = c.finish();
+    return c.finish();
   } else {
     const Force_dual d = force_dual(l, ws);
     Bounds b;
@@ -282,8 +274,10 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
     c.infinity_cone(d.infinity, kInfinity);
     c.dot({0, 0}, 3, "fill=\"#222\"");
     c.text({0, 0}, "O");
+    bool generator_at_infinity = false;
     for (std::size_t i = 0; i < d.generators.size(); ++i) {
       const Dual_point& p = d.generators[i];
+      generator_at_infinity |= p.sheet == 'i';
       const std::string name = "c" + std::to_string(gens[i].contact) + (gens[i].edge == Edge::left ? "L" : gens[i].edge == Edge::right ? "R" : "");
       if (p.sheet == 'i') {
         c.infinity_dot(to_p2(p.at), "#222");
@@ -310,6 +304,8 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
     if (!d.plus_sheet.empty()) c.legend(swatch(kPlus), "front (+) sheet of the dual polygon: wrenches with m > 0 (filled dots)");
     if (!d.minus_sheet.empty()) c.legend(swatch(kMinus), "back (\u2212) sheet: wrenches with m < 0, drawn where they sit (hollow dots)");
     if (d.infinity.shape != Cone2::Shape::zero) c.legend(swatch(kInfinity, 1), "points at infinity of the polygon: forces through the origin O");
+    if (generator_at_infinity)
+      c.legend(swatch("#222", 1), "black dots on the rim: generators through O (m = 0), their dual points at infinity");
     if (s.load) c.legend(swatch(kLoad, 1), "antipode of the load: balanced iff it lies in the polygon");
     c.caption(std::string("covers the whole two-sided plane: ") + (d.covers_all ? "yes (force closure)" : "no"));
     c.caption("a wrench (fx, fy, m) is the point D(w) = (\u2212fy, fx, m): (\u2212fy/m, fx/m) on the sheet of sign m");
@@ -317,11 +313,16 @@ int run_render(const Options& o, const std::string& text, const std::string& sou
       const Vec3q w = load_wrench(s);
       c.caption(std::string("load balanced: ") + (in_cone(l.cone, {-w[0], -w[1], -w[2]}) ? "yes" : "no"));
     }
-    svg = c.finish();
+    return c.finish();
   }
+}
+
+int run_render(const Options& o, const std::string& text, const std::string& source) {
+  bool undecided = false;  // the hold picture of an undecided answer: drawn, and exit 3 like every undecided answer
+  const std::string svg = render_svg(o, text, source, &undecided);
   if (!o.output.empty()) write_file(o.output, svg);
   else std::cout << svg;
-  return kAnswered;
+  return undecided ? kUndecided : kAnswered;
 }
 
 }  // namespace wrenchkit::cli

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace wrenchkit::cli {
 
@@ -197,8 +198,35 @@ void Svg_canvas::dot(P2 p, double r_px, const std::string& style) {
 void Svg_canvas::text(P2 p, const std::string& s, const std::string& style) {
   if (std::hypot(p.x - centre_.x, p.y - centre_.y) > radius_) return;
   const P2 q = screen(p);
-  const bool sized = style.find("font-size") != std::string::npos;
-  body_ += text_el({q.x + 6, q.y - 6}, s, (sized ? "" : "font-size=\"13\" ") + style);
+  const std::size_t sized = style.find("font-size=\"");
+  const double size = sized == std::string::npos ? 13 : std::atof(style.c_str() + sized + 11);
+  // The text's extent, estimated: 0.62 of the font size per character (UTF-8 continuation bytes not counted).
+  double chars = 0;
+  for (const char c : s) chars += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  const double w = 0.62 * size * chars, h = size;
+  // Up right of the point, as always; where that covers a text already placed (names at a shared or a nearby
+  // point, two captions at one centroid), the first free place of: down right, up left, down left, then further
+  // up and down.
+  const double gap = 6;
+  std::vector<P2> at = {{q.x + gap, q.y - gap}, {q.x + gap, q.y + gap + h}, {q.x - gap - w, q.y - gap},
+                        {q.x - gap - w, q.y + gap + h}};
+  for (int k = 1; k <= 4; ++k) {
+    at.push_back({q.x + gap, q.y - gap - k * (h + 2)});
+    at.push_back({q.x + gap, q.y + gap + h + k * (h + 2)});
+  }
+  const auto free = [&](P2 a) {
+    for (const Label_box& b : labels_)
+      if (a.x < b.x1 && a.x + w > b.x0 && a.y - h < b.y1 && a.y > b.y0) return false;
+    return true;
+  };
+  P2 chosen = at[0];
+  for (const P2& a : at)
+    if (free(a)) {
+      chosen = a;
+      break;
+    }
+  labels_.push_back({chosen.x, chosen.y - h, chosen.x + w, chosen.y});
+  texts_ += text_el(chosen, s, (sized == std::string::npos ? "font-size=\"13\" " : "") + style);
 }
 
 void Svg_canvas::region(const Region& r, const std::string& fill, const std::string& stroke, const std::string& label) {
@@ -333,7 +361,7 @@ std::string Svg_canvas::finish() const {
   s += "<text x=\"" + num(kCx) + "\" y=\"50\" font-size=\"14\" fill=\"#555\" text-anchor=\"middle\">" +
        xml_escape(subtitle_) + "</text>\n";
   s += circle_el({kCx, kCy}, kDiscPx + 6, "fill=\"none\" stroke=\"#bbb\" stroke-width=\"1\" stroke-dasharray=\"4 4\"");
-  s += "<g clip-path=\"url(#view)\">\n" + body_ + "</g>\n" + rim_;
+  s += "<g clip-path=\"url(#view)\">\n" + body_ + texts_ + "</g>\n" + rim_;
   double y = top;
   for (const auto& [style, text] : legend_) {
     s += "<rect x=\"40\" y=\"" + num(y - 12) + "\" width=\"26\" height=\"14\" " + style + "/>\n";

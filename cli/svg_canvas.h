@@ -42,6 +42,7 @@ class Svg_canvas {
   void full_line(P2 through, P2 direction, const std::string& style);  // the whole line, clipped
   void arrow(P2 from, P2 to, const std::string& colour, double width = 2);
   void dot(P2 p, double r_px, const std::string& style);
+  // A label up right of p, or where it covers no label drawn before (a nearby free place).
   void text(P2 p, const std::string& s, const std::string& style = "");
   // The rim: the circle at infinity, and labeled arcs/directions on it (counter-clockwise arcs).
   void infinity_arc(P2 from, P2 to, bool full, const std::string& colour);
@@ -63,7 +64,12 @@ class Svg_canvas {
   P2 centre_;
   double radius_;
   std::string title_, subtitle_;
-  std::string body_;  // clipped to the view disc
+  struct Label_box {
+    double x0, y0, x1, y1;  // page pixels
+  };
+  std::vector<Label_box> labels_;  // the texts drawn so far: a new one is placed off them
+  std::string body_;   // clipped to the view disc
+  std::string texts_;  // the labels, drawn over everything in the disc
   std::string rim_;   // on the circle at infinity
   std::vector<std::pair<std::string, std::string>> legend_;
   std::vector<std::string> captions_;

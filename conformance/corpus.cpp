@@ -409,7 +409,7 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
     b.line = w.end_object().take();
     b.certificates = (eq ? 3 : 2) + !motion.certificate.empty() + !hold.certificate.empty();
     b.csv = e.id + "," + (c.force.holds ? "true" : "false") + "," + (c.form.holds ? "true" : "false") + "," +
-            (eq ? (eq->answer.balanced ? "true" : "false") : "");
+            (eq ? (eq->answer.balanced ? "true" : "false") : "") + "," + hold.verdict;
   });
   if (b.status == Status::bad_input && b.message.compare(0, where.size(), where) != 0)
     b.message = where + ": " + b.message;
@@ -516,7 +516,7 @@ std::size_t write_corpus(const std::string& out_dir, const std::vector<std::stri
   fs::remove_all(tmp, ec);
   fs::create_directories(tmp / "scenes", ec);
   if (ec) throw Input_error(out_dir + ": cannot create (" + ec.message() + ")");
-  std::string jsonl, csv = "id,force_closure,form_closure,equilibrium\n";
+  std::string jsonl, csv = "id,force_closure,form_closure,equilibrium,hold\n";
   for (std::size_t i = 0; i < ids.size(); ++i) {
     jsonl += items[i].line + "\n";
     csv += items[i].csv + "\n";

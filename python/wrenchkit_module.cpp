@@ -10,6 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "cli/command_table.h"
+#include "cli/common.h"
+#include "conformance/compare.h"
 #include "conformance/corpus.h"
 #include "core/mode.h"
 #include "exact/certificates/certificates.h"
@@ -373,12 +376,8 @@ Request exact_request(const std::string& mode, const char* what, const Input_lim
   return r;
 }
 
-py::dict labels(const Py_scene& s, const std::string& reading, const std::string& mode) {
-  const Reading rd = reading_of_text(reading);
-  Labels_query q;
-  q.question = rd == Reading::friction ? Labels_question::labels : Labels_question::reuleaux;
-  const Labels_item r = answer_labels(s.scene, exact_request(mode, "labels", s.limits), q);
-  raise_unless_answered(r.status, r.message);
+// The labels of a reading as wrenchkit.labels returns them (wrenchkit.reuleaux adds its query).
+py::dict labels_dict(const Labels_item& r, Reading rd, const std::string& reading, const std::string& mode) {
   const Moment_labels& l = r.labels;
   py::dict d;
   d["reading"] = reading;
@@ -396,6 +395,85 @@ py::dict labels(const Py_scene& s, const std::string& reading, const std::string
     d["load"] = ld;
   }
   return d;
+}
+
+py::dict labels(const Py_scene& s, const std::string& reading, const std::string& mode) {
+  const Reading rd = reading_of_text(reading);
+  Labels_query q;
+  q.question = rd == Reading::friction ? Labels_question::labels : Labels_question::reuleaux;
+  const Labels_item r = answer_labels(s.scene, exact_request(mode, "labels", s.limits), q);
+  raise_unless_answered(r.status, r.message);
+  return labels_dict(r, rd, reading, mode);
+}
+
+// A command's options from the words of its command line, by the command line's own table (its validation and
+// messages: a usage error is an InputError), within the scene's limits.
+cli::Options command_options(const std::string& command, const std::vector<std::string>& words, const Input_limits& limits) {
+  try {
+    cli::Options o = cli::parse_options(command, words);
+    o.limits = limits;
+    return o;
+  } catch (const cli::Usage_error& e) {
+    throw Input_error(e.what());
+  }
+}
+
+// Reuleaux's method (`wrenchkit reuleaux`): the frictionless reading's labels and form closure, and with a motion
+// (the words --center x,y [--sense ccw|cw], --direction dx,dy or --twist vx,vy,w) its "query": the twist, its
+// reading, feasible, marginal and each contact's mode.
+py::dict reuleaux(const Py_scene& s, const std::vector<std::string>& words, const std::string& mode) {
+  Labels_query q;
+  try {
+    q = cli::reuleaux_query(command_options("reuleaux", words, s.limits));
+  } catch (const cli::Usage_error& e) {
+    throw Input_error(e.what());
+  }
+  const Labels_item r = answer_labels(s.scene, exact_request(mode, "reuleaux", s.limits), q);
+  raise_unless_answered(r.status, r.message);
+  py::dict d = labels_dict(r, Reading::frictionless, "frictionless", mode);
+  if (q.motion) {
+    const std::array<Rational, 3> t = {(*q.motion)[0], (*q.motion)[1], (*q.motion)[2]};
+    py::dict query;
+    query["twist"] = triple(*q.motion);
+    query["reading"] = reading_dict(t);
+    query["feasible"] = r.modes->feasible;
+    query["marginal"] = r.modes->marginal;
+    py::list modes;
+    for (std::size_t i = 0; i < r.modes->modes.size(); ++i) {
+      py::dict m;
+      m["contact"] = i;
+      m["mode"] = mode_name(r.modes->modes[i]);
+      modes.append(m);
+    }
+    query["modes"] = modes;
+    d["query"] = query;
+  }
+  return d;
+}
+
+// `wrenchkit render` (--what, --sides in `words`): the SVG text.
+std::string render(const Py_scene& s, const std::vector<std::string>& words) {
+  const cli::Options o = command_options("render", words, s.limits);
+  try {
+    return cli::render_svg(o, s.text, s.source);
+  } catch (const cli::Usage_error& e) {
+    throw Input_error(e.what());
+  } catch (const cli::Failure& e) {
+    raise_unless_answered(e.status, e.what());
+    throw;
+  }
+}
+
+// `wrenchkit compare --json` (its options in `words`, CORPUS and ANSWERS last): the report's JSON text.
+std::string compare(const std::vector<std::string>& words) {
+  const cli::Options o = command_options("compare", words, Input_limits{});
+  if (o.positional.size() != 2) throw Input_error("compare needs CORPUS and ANSWERS");
+  Compare_options c = o.compare;
+  c.tolerance = o.tolerance, c.tolerance_text = o.tolerance_text;
+  c.limits = o.limits;
+  c.json = true;
+  const Compare_report report = compare_answers(o.positional[0], o.positional[1], c, cli::read_input);
+  return report.text;
 }
 
 py::object dual_point_obj(const Dual_point& p) {
@@ -746,6 +824,9 @@ PYBIND11_MODULE(_core, m) {
   m.def("equilibrium", &equilibrium);
   m.def("hold", &hold);
   m.def("labels", &labels);
+  m.def("reuleaux", &reuleaux);
+  m.def("render", &render);
+  m.def("compare", &compare);
   m.def("dual", &dual);
   m.def("limit_surface", &limit_surface);
   m.def("sliding", &sliding);

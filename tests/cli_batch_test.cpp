@@ -163,7 +163,7 @@ TEST(CliBatch, OutputIsByteIdenticalForAnyJobsAcrossManyWindows) {
 TEST(CliBatch, UsageErrorsStopBeforeAnyLine) {
   const std::string input = golden("tests/golden")[0] + "\n";
   for (const char* args : {"batch", "batch render", "batch check", "batch demo", "batch frobnicate",
-                           "batch closure scene.json", "batch closure --certificate c.json",
+                           "batch closure --certificate c.json",
                            "batch closure --center 1,1", "batch labels --verdict-only", "batch labels --twist 0,0,1",
                            "batch reuleaux --center 1", "batch reuleaux --sense cw", "batch sliding --twist 0,0,0",
                            "batch sliding --sides 7", "batch limit-surface --off x.off", "batch limit-surface --ply x.ply", "batch limit-surface --exact-coordinates", "batch limit-surface --sides 3",
@@ -175,6 +175,11 @@ TEST(CliBatch, UsageErrorsStopBeforeAnyLine) {
     EXPECT_EQ(r.out, "") << args;
     EXPECT_EQ(r.err.rfind("wrenchkit: usage error: ", 0), 0u) << args << ": " << r.err;
   }
+  // A scene file that cannot be read is bad input, before any line too (batch reads its files, not only stdin).
+  const Cli_result missing = run("batch closure scene.json", input);
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_EQ(missing.out, "");
+  EXPECT_EQ(missing.err, "wrenchkit: error: scene.json: cannot open (No such file or directory)\n");
   const Cli_result help = run("batch --help");
   EXPECT_EQ(help.code, 0);
   for (const char* c : {"closure", "equilibrium", "labels", "dual", "reuleaux", "limit-surface", "sliding", "hold", "analyze"})

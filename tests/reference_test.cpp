@@ -336,6 +336,32 @@ TEST_F(Corpus, CompareAgreesWithItsOwnVerdicts) {
   EXPECT_NE(r.out.find("\"power\": {\"compared\": "), std::string::npos) << r.out;
 }
 
+TEST_F(Corpus, ExpectedCsvHasEveryLinesVerdictsHoldIncluded) {
+  // expected.csv: id,force_closure,form_closure,equilibrium,hold — the lines' verdicts, empty where a line has none
+  // (no load, or a hold without a certificate).
+  std::istringstream csv(test::read_text(dir_ + "/expected.csv"));
+  std::string row;
+  std::getline(csv, row);
+  EXPECT_EQ(row, "id,force_closure,form_closure,equilibrium,hold");
+  const auto cell = [](const json::Value* x) {
+    return !x || x->type == json::Type::null ? std::string() : x->type == json::Type::string ? x->text : json::text_of(*x);
+  };
+  std::size_t rows = 0, holds = 0, depends = 0;
+  for (const json::Value& v : lines_) {
+    ASSERT_TRUE(std::getline(csv, row));
+    const std::string want = v.find("id")->text + "," + cell(v.find("force_closure")) + "," +
+                             cell(v.find("form_closure")) + "," + cell(v.find("equilibrium")) + "," + cell(v.find("hold"));
+    EXPECT_EQ(row, want);
+    ++rows;
+    holds += !cell(v.find("hold")).empty();
+    depends += cell(v.find("hold")) == "depends";
+  }
+  EXPECT_FALSE(std::getline(csv, row)) << row;
+  EXPECT_GT(holds, 50u);
+  EXPECT_GE(depends, 1u);
+  EXPECT_GT(rows, 400u);
+}
+
 TEST_F(Corpus, CompareReportsADisagreementWithItsScene) {
   // Flip one verdict far from any boundary and one near it: exit 1, both named, far one first.
   std::string csv = test::read_text(dir_ + "/expected.csv");
@@ -372,7 +398,7 @@ TEST_F(Corpus, CompareReadsQuotedCsvAndPythonBooleans) {
   // What pandas' to_csv and Python's csv.writer produce: "quoted" ids (with "" for a quote), True/False,
   // blanks around cells, CRLF line ends. The same verdicts as expected.csv: agreement, exit 0.
   const std::string csv = test::read_text(dir_ + "/expected.csv");
-  std::string out = "\"id\" , force_closure,form_closure ,equilibrium\r\n";
+  std::string out = "\"id\" , force_closure,form_closure ,equilibrium, hold\r\n";
   std::size_t start = csv.find('\n') + 1, rows = 0;
   while (start < csv.size()) {
     std::size_t end = csv.find('\n', start);
@@ -659,7 +685,7 @@ TEST(ReferenceScenes, OwnScenesGetTheCorpusFormatAndCompareAgrees) {
   r = run("reference --scenes '" + (d / "dir").string() + "' --out '" + (d / "dircorpus").string() + "' --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string csv = test::read_text((d / "dircorpus" / "expected.csv").string());
-  EXPECT_NE(csv.find("\na,false,false,\nclamps.b,false,false,\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\na,false,false,,\nclamps.b,false,false,,\n"), std::string::npos) << csv;
   EXPECT_NE(test::read_text((d / "dircorpus" / "reference.jsonl").string()).find("\"family\": \"clamps\""), std::string::npos);
 }
 

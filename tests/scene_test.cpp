@@ -209,7 +209,7 @@ TEST(SceneErrors, MessagesNameThePathAndTheValue) {
   EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0,0], "normal": [1,0], "mu": "-1/2"}]})"),
             "contacts[0].mu: \"-1/2\" is negative (must be >= 0)");
   EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0,0], "nromal": [1,0]}]})"),
-            "contacts[0]: unknown key \"nromal\"");
+            "contacts[0]: unknown key \"nromal\" (did you mean \"normal\"?)");
   EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0,0]}]})"), "contacts[0]: missing key \"normal\"");
   EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0,0,1], "normal": [1,0]}]})"),
             "contacts[0].at: expected an array of 2 numbers, got an array of 3");
@@ -226,7 +226,7 @@ TEST(SceneErrors, MessagesNameThePathAndTheValue) {
             "contacts[0]: unknown key \"mu\"");
   EXPECT_EQ(error_of(R"({"wrenchkit": 2})"), "wrenchkit: 2 is not a supported format version (only 1)");
   EXPECT_EQ(error_of(R"({"contacts": []})"), "scene: missing key \"wrenchkit\" (the format version, 1)");
-  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contact": []})"), "scene: unknown key \"contact\"");
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "contact": []})"), "scene: unknown key \"contact\" (did you mean \"contacts\"?)");
   EXPECT_EQ(error_of(R"([1, 2])"), "scene: expected an object, got an array");
   EXPECT_EQ(error_of("{" + ok + R"("support": {"mu": 1, "points": [{"at": [0,0], "force": 0}]}})"),
             "support.points: all forces are zero");
@@ -242,6 +242,30 @@ TEST(SceneErrors, MessagesNameThePathAndTheValue) {
   EXPECT_EQ(error_of("{" + ok + R"("load": {"gravity": 1, "wrench": [0,0,1]}})"), "load: unknown key \"wrench\"");
   EXPECT_EQ(error_of("{" + ok + R"("load": {}})"),
             "load: expected one of {\"force\", \"at\"}, {\"wrench\"} or {\"gravity\"}");
+}
+
+// The likely fix in a message (an unknown key's likely meaning, how to write a direction), the same from every
+// reader (error_of compares them).
+TEST(SceneErrors, MessagesNameTheLikelyFix) {
+  const std::string ok = R"("wrenchkit": 1, )";
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"position": [0,0], "normal": [1,0]}]})"),
+            "contacts[0]: unknown key \"position\" (did you mean \"at\"?)");
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0,0], "normal": [1,0], "coefficient": 1}]})"),
+            "contacts[0]: unknown key \"coefficient\" (did you mean \"mu\"?)");
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"wrench": [1,0,0], "name": "w", "nmae": 1}]})"),
+            "contacts[0]: unknown key \"nmae\" (did you mean \"name\"?)");
+  EXPECT_EQ(error_of("{" + ok + R"("body": {"cog": [0,0]}})"), "body: unknown key \"cog\" (did you mean \"com\"?)");
+  EXPECT_EQ(error_of("{" + ok + R"("support": {"mu": 1, "regions": [{"outline": [[0,0],[1,0],[0,1]], "presure": "uniform"}]}})"),
+            "support.regions[0]: unknown key \"presure\" (did you mean \"pressure\"?)");
+  const std::string advice =
+      " (a normal is a direction [dx, dy] of any length, not an angle: for 30\u00b0 write [0.866025, 0.5], or give an "
+      "exact direction such as [4, 3])";
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0,0], "normal": 30}]})"),
+            "contacts[0].normal: expected an array of 2 numbers, got a number" + advice);
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0,0], "normal": "1/2"}]})"),
+            "contacts[0].normal: expected an array of 2 numbers, got a string" + advice);
+  EXPECT_EQ(error_of("{" + ok + R"("contacts": [{"at": [0,0], "normal": {}}]})"),
+            "contacts[0].normal: expected an array of 2 numbers, got an object");
 }
 
 TEST(SceneErrors, LimitsAreEnforcedAndNamed) {

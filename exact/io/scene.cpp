@@ -1,6 +1,7 @@
 #include "exact/io/scene.h"
 #include "exact/io/support_check.h"
 
+#include <algorithm>
 #include <initializer_list>
 #include <limits>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include "exact/io/region.h"
 #include "exact/io/json.h"
 #include "exact/io/scene_budget.h"
+#include "exact/io/suggest.h"
 
 namespace wrenchkit {
 namespace {
@@ -78,13 +80,40 @@ class Reader {
     if (v.type != t) fail(path, std::string("expected ") + what + ", got " + json::type_name(v.type));
   }
 
-  static void keys(const Value& obj, const std::string& path,
-                   std::initializer_list<const char*> allowed) {
+  static void keys(const Value& obj, const std::string& path, std::initializer_list<const char*> allowed) {
+    keys(obj, path, allowed, allowed);
+  }
+
+  // Every key of obj is one of `allowed`; an unknown key's message suggests the key of `known` (the object's
+  // keys, those of its other forms included) that it likely means.
+  static void keys(const Value& obj, const std::string& path, std::initializer_list<const char*> allowed,
+                   std::initializer_list<const char*> known) {
     for (const auto& m : obj.members) {
       bool ok = false;
       for (const char* a : allowed) ok |= m.first == a;
-      if (!ok) fail(path.empty() ? "scene" : path, "unknown key " + json::quote(m.first));
+      if (!ok) fail(path.empty() ? "scene" : path, "unknown key " + json::quote(m.first) + did_you_mean(likely_key(m.first, known)));
     }
+  }
+
+  // The key of `known` an unknown key likely means: by the synonyms people write (position → at, direction →
+  // normal, friction → mu, center_of_mass → com, ...) when that key is known here, else the closest spelling.
+  static std::string likely_key(const std::string& key, std::initializer_list<const char*> known) {
+    static const std::pair<const char*, const char*> synonyms[] = {
+        {"position", "at"}, {"point", "at"}, {"location", "at"}, {"pos", "at"}, {"where", "at"}, {"contact_point", "at"},
+        {"direction", "normal"}, {"dir", "normal"}, {"inward_normal", "normal"}, {"normal_direction", "normal"},
+        {"friction", "mu"}, {"coefficient", "mu"}, {"friction_coefficient", "mu"}, {"coefficient_of_friction", "mu"},
+        {"μ", "mu"}, {"centre_of_mass", "com"}, {"center_of_mass", "com"}, {"centre_of_gravity", "com"},
+        {"center_of_gravity", "com"}, {"cog", "com"}, {"cm", "com"}, {"mass_center", "com"}, {"mass_centre", "com"},
+        {"centroid", "com"}, {"polygon", "outline"}, {"vertices", "outline"}, {"shape", "outline"},
+        {"boundary", "outline"}, {"weight", "gravity"}, {"mass", "gravity"}, {"normal_force", "force"},
+        {"center_of_pressure", "pressure_center"}, {"centre_of_pressure", "pressure_center"},
+        {"cop", "pressure_center"}, {"version", "wrenchkit"}, {"format", "wrenchkit"}, {"title", "name"},
+        {"label", "name"}, {"fingers", "contacts"}, {"grasp", "contacts"}, {"external_load", "load"},
+        {"external_wrench", "load"}, {"table", "support"}, {"friction_support", "support"}};
+    std::vector<std::string> names(known.begin(), known.end());
+    for (const auto& [word, meant] : synonyms)
+      if (key == word && std::find(names.begin(), names.end(), meant) != names.end()) return meant;
+    return closest_word(key, names);
   }
 
   static const Value& required(const Value& obj, const std::string& path, const char* key) {
@@ -126,11 +155,23 @@ class Reader {
     return sign;
   }
 
+  // An array of n numbers was expected at path and v is not one: "expected an array of N numbers[ NAMES], got
+  // …", and where a direction is expected and a number or a string came, how to write one (angles are a common
+  // first guess).
+  [[noreturn]] static void not_an_array(const Value& v, const std::string& path, std::size_t n, const std::string& names) {
+    std::string what = "expected an array of " + std::to_string(n) + " numbers" + names + ", got " +
+                       (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
+                                              : std::string(json::type_name(v.type)));
+    const std::string tail = ".normal";
+    const bool direction = path.size() > tail.size() && path.compare(path.size() - tail.size(), tail.size(), tail) == 0;
+    if (direction && (v.type == Type::number || v.type == Type::string))
+      what += " (a normal is a direction [dx, dy] of any length, not an angle: for 30\u00b0 write [0.866025, 0.5], "
+              "or give an exact direction such as [4, 3])";
+    fail(path, what);
+  }
+
   const Value& pair_item(const Value& v, const std::string& path, std::size_t n, std::size_t i) const {
-    if (v.type != Type::array || v.items.size() != n)
-      fail(path, std::string("expected an array of ") + (n == 2 ? "2 numbers" : "3 numbers [fx, fy, m]") + ", got " +
-                     (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
-                                            : std::string(json::type_name(v.type))));
+    if (v.type != Type::array || v.items.size() != n) not_an_array(v, path, n, n == 2 ? "" : " [fx, fy, m]");
     return v.items[i];
   }
 
@@ -141,19 +182,13 @@ class Reader {
   }
 
   Vec2 vec2(const Value& v, const std::string& path, fl::Bounded* approx2 = nullptr) const {
-    if (v.type != Type::array || v.items.size() != 2)
-      fail(path, std::string("expected an array of 2 numbers, got ") +
-                     (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
-                                            : std::string(json::type_name(v.type))));
+    if (v.type != Type::array || v.items.size() != 2) not_an_array(v, path, 2, "");
     return {number(v.items[0], path + "[0]", approx2), number(v.items[1], path + "[1]", approx2 ? approx2 + 1 : nullptr)};
   }
 
   Vec3q wrench3(const Value& v, const std::string& path, fl::Bounded* approx3 = nullptr,
                  const char* names = "[fx, fy, m]") const {
-    if (v.type != Type::array || v.items.size() != 3)
-      fail(path, std::string("expected an array of 3 numbers ") + names + ", got " +
-                     (v.type == Type::array ? "an array of " + std::to_string(v.items.size())
-                                            : std::string(json::type_name(v.type))));
+    if (v.type != Type::array || v.items.size() != 3) not_an_array(v, path, 3, std::string(" ") + names);
     return {number(v.items[0], path + "[0]", approx3), number(v.items[1], path + "[1]", approx3 ? approx3 + 1 : nullptr),
             number(v.items[2], path + "[2]", approx3 ? approx3 + 2 : nullptr)};
   }
@@ -272,7 +307,7 @@ class Reader {
       l.force = vec2(required(v, "load", "force"), "load.force");
       l.at = vec2(required(v, "load", "at"), "load.at");
     } else {
-      keys(v, "load", {});
+      keys(v, "load", {}, {"force", "at", "wrench", "gravity"});
       fail("load", "expected one of {\"force\", \"at\"}, {\"wrench\"} or {\"gravity\"}");
     }
     return l;

@@ -18,6 +18,9 @@ Numbers. Every number of a scene is read EXACTLY, from its text:
     the JSON scene files are, NOT as the binary double 0.1000000000000000055511151231257827...
     For the double's exact binary value pass Fraction(x) (Fraction(0.1) == 3602879701896397/36028797018963968).
     NaN and infinities are refused (InputError).
+  * NumPy arrays and scalars (numpy.float64(0.1), numpy.array([0, 0.5])): as the array API reads them, each
+    floating-point value as the EXACT BINARY VALUE it holds (numpy.float64(0.1) is 3602879701896397/2**55),
+    integers exactly.
 Every exact number in a result is a fractions.Fraction; verdicts are bools; certificates are dicts
 (with Fractions) and JSON text ("certificate_json") that the independent checker accepts.
 Errors in the input raise wrenchkit.InputError (a ValueError) with the command line's message,
@@ -30,6 +33,7 @@ import json as _json
 import math as _math
 import numbers as _numbers
 import os as _os
+import sys as _sys
 
 __version__ = "0.1.0"
 
@@ -50,14 +54,37 @@ from . import _core  # noqa: E402  (the exception classes above are handed to th
 
 _core._set_exceptions(InputError, InternalError, UndecidedError)
 
-__all__ = ["Scene", "closure", "force_closure", "form_closure", "equilibrium", "hold", "labels", "dual",
-           "limit_surface", "sliding", "check", "reference", "batch", "closure_arrays", "equilibrium_arrays",
-           "stick_slide_arrays", "DECIDED_BY", "MOTION", "MOTION_DECIDED_BY", "InputError", "UndecidedError",
-           "InternalError"]
+__all__ = ["Scene", "closure", "force_closure", "form_closure", "equilibrium", "hold", "labels", "dual", "reuleaux",
+           "limit_surface", "sliding", "render", "check", "reference", "compare", "batch", "closure_arrays",
+           "equilibrium_arrays", "stick_slide_arrays", "DECIDED_BY", "MOTION", "MOTION_DECIDED_BY", "InputError",
+           "UndecidedError", "InternalError"]
+
+
+def _numpy():
+    """NumPy if it was imported (a value can only be a NumPy object then), else None."""
+    return _sys.modules.get("numpy")
+
+
+def _numpy_number_text(x, np, path):
+    """The exact text of a NumPy scalar: an integer exactly, a floating-point value as the exact binary value it
+    holds (as the array API reads it), not as its decimal text."""
+    if isinstance(x, np.bool_):
+        raise InputError(f"{path}: {x!r} is a boolean, not a number")
+    if isinstance(x, np.integer):
+        return str(int(x))
+    if isinstance(x, np.floating):
+        if not np.isfinite(x):
+            raise InputError(f"{path}: {x!r} is not a finite number")
+        n, d = x.as_integer_ratio()
+        return f"{n}/{d}"
+    raise InputError(f"{path}: {x!r} ({type(x).__name__}) is not a number")
 
 
 def _number_text(x, path):
     """The exact decimal or p/q text of a Python number (see the module docstring)."""
+    np = _numpy()
+    if np is not None and isinstance(x, np.generic):
+        return _numpy_number_text(x, np, path)
     if isinstance(x, bool):
         raise InputError(f"{path}: {x!r} is a boolean, not a number")
     if isinstance(x, _numbers.Integral):
@@ -90,6 +117,9 @@ def _to_json(v, path="scene"):
                 raise InputError(f"{path}: key {k!r} is not a string")
             parts.append(_json.dumps(k) + ": " + _to_json(x, k if path == "scene" else f"{path}.{k}"))
         return "{" + ", ".join(parts) + "}"
+    np = _numpy()
+    if np is not None and isinstance(v, np.ndarray):  # its items: NumPy scalars (read as such) or sub-arrays
+        return _to_json(v[()], path) if v.ndim == 0 else _to_json(list(v), path)
     if isinstance(v, (list, tuple)):
         return "[" + ", ".join(_to_json(x, f"{path}[{i}]") for i, x in enumerate(v)) + "]"
     if isinstance(v, str):
@@ -224,6 +254,54 @@ def labels(scene, reading="friction", mode="hybrid"):
     return _core.labels(_scene(scene), reading, mode)
 
 
+def reuleaux(scene, *, center=None, sense=None, direction=None, twist=None, mode="hybrid"):
+    """Reuleaux's method (theory.md section 7), as `wrenchkit reuleaux --json`: the labels of the contacts read
+    frictionless (as labels(scene, "frictionless")), "form_closure", and with a motion its "query": {"twist",
+    "reading", "feasible", "marginal", "modes": [{"contact", "mode"}]} (each contact's mode: "break", "slide",
+    "stick" or "penetrate").
+
+    The motion, at most one of: center=(x, y) with sense="ccw" (default) or "cw", a rotation about that point;
+    direction=(dx, dy), a translation; twist=(vx, vy, w). Numbers as in Scene. mode: "hybrid" or "exact".
+    """
+    words = []
+    for name, value in (("center", center), ("direction", direction), ("twist", twist)):
+        if value is not None:
+            words += ["--" + name, ",".join(_vec(value, name))]
+    if sense is not None:
+        words += ["--sense", str(sense)]
+    return _core.reuleaux(_scene(scene), words, mode)
+
+
+def render(scene, what, *, sides=None):
+    """The SVG picture of `wrenchkit render --what WHAT` (docs/gallery.md), as text: what is "labels", "dual",
+    "reuleaux", "limit-surface" or "hold"; sides (even, with "limit-surface") the polygons' sides (default 32).
+    """
+    words = ["--what", str(what)]
+    if sides is not None:
+        words += ["--sides", str(int(sides))]
+    return _core.render(_scene(scene), words)
+
+
+def compare(corpus, answers, *, format=None, rtol=None, atol=None, near=None, tolerance=None, max_file_size=None):
+    """Your implementation's answers against a reference corpus, as `wrenchkit compare --json CORPUS ANSWERS`
+    (docs/reference-format.md sections 5-6): returns the report as a dict; its "agree" says whether every given
+    answer agrees (the command's exit code 0).
+
+    corpus: the corpus directory (or its reference.jsonl); answers: a JSON-lines or CSV file (format "jsonl" or
+    "csv", by default from the file name). rtol, atol, near, tolerance: numbers as the command's options.
+    Raises InputError naming the file, line and field for bad answers.
+    """
+    words = []
+    for name, value in (("rtol", rtol), ("atol", atol), ("near", near), ("tolerance", tolerance)):
+        if value is not None:
+            words += ["--" + name, _number_text(value, name)]
+    if format is not None:
+        words += ["--format", str(format)]
+    if max_file_size is not None:
+        words += ["--max-file-size", str(int(max_file_size))]
+    return _json.loads(_core.compare(words + [_os.fspath(corpus), _os.fspath(answers)]))
+
+
 def dual(scene, mode="hybrid"):
     """The force dual (theory.md section 6): {"covers_all", "plus_region", "minus_region", ...}."""
     return _core.dual(_scene(scene), mode)
@@ -326,15 +404,16 @@ def _line_text(s):
     raise InputError(f"batch: a scene is a dict, a JSON line (str or bytes) or a Scene, not {type(s).__name__}")
 
 
-def batch(command, scenes, *options, jobs=None, first_line=1, chunk=None, **kwargs):
+def batch(command, scenes, *options, jobs=None, first_line=1, chunk=None, as_dict=False, **kwargs):
     """The answers of `wrenchkit batch COMMAND [OPTIONS]` for any iterable of scenes, streamed in order.
 
     scenes: dicts (the scene format, Python numbers as in Scene), JSON lines (str or bytes), or Scenes.
     options: the command line's words ("--mode", "exact", "--verdict-only"), or keywords (mode="exact",
     verdict_only=True, twist=(0, 0, 1), sides=8). Yields one str per scene: exactly the line `wrenchkit batch
     COMMAND` writes for that scene's line (without the newline), numbered from first_line; bad scenes give
-    their error line, as there. jobs: threads (default: batch's --jobs, else every core). Options that do
-    not apply raise InputError before any scene is read; a certificate rejected by the independent checker
+    their error line, as there. as_dict=True yields each line parsed (json.loads: a dict whose exact numbers
+    are "p/q" strings, as in the line). jobs: threads (default: batch's --jobs, else every core). Options that
+    do not apply raise InputError before any scene is read; a certificate rejected by the independent checker
     (a bug) raises InternalError after its line.
     """
     job = _core.Batch([command] + _batch_options(options, kwargs))
@@ -346,7 +425,7 @@ def batch(command, scenes, *options, jobs=None, first_line=1, chunk=None, **kwar
     def run(texts, line):
         lines, code = job.run(texts, line, int(jobs or 0))
         for out in lines:
-            yield out.decode("utf-8", "surrogateescape")
+            yield _json.loads(out) if as_dict else out.decode("utf-8", "surrogateescape")
         if code:
             raise InternalError(f"batch {command}: an answer failed its own certificate check or hit an internal "
                                 f"error (the command line exits {code} here): see the lines' messages")
