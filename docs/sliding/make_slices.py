@@ -17,7 +17,8 @@ TABLE = {"name": "four-legged table", "support": {"mu": 1, "weight": 1, "pressur
 RIM = [(1, 0), ("3/5", "4/5"), (0, 1), ("-3/5", "4/5"), (-1, 0), ("-3/5", "-4/5"), (0, -1), ("3/5", "-4/5"), (0, 0)]
 PLATE = {"name": "dinner plate", "body": {"com": [0, 0]},
          "support": {"mu": 1, "weight": 1, "points": [{"at": [x, y]} for x, y in RIM]}}
-COLOURS = {"sticks": "#4c9a2a", "depends": "#e0b030", "slides": "#c0392b", "undecided": "#888888"}
+COLOURS = {"sticks": "#4c9a2a", "depends": "#e0b030", "impending": "#7d3c98", "slides": "#c0392b",
+           "undecided": "#888888"}
 
 
 def slice_svg(scene, title, xlabel, ylabel, load_of, extent, n, path):
@@ -45,7 +46,8 @@ def slice_svg(scene, title, xlabel, ylabel, load_of, extent, n, path):
                % (margin + size / 2, margin + size / 2, ylabel, -extent, extent))
     y = margin
     for k, words in (("sticks", "sticks for every distribution"), ("depends", "depends (sticks for some)"),
-                     ("slides", "slides for every distribution"), ("undecided", "undecided (near a boundary)")):
+                     ("impending", "impending (on every limit surface)"), ("slides", "slides for every distribution"),
+                     ("undecided", "undecided (near a boundary)")):
         out.append('<rect x="%d" y="%d" width="12" height="12" fill="%s"/><text x="%d" y="%d">%s</text>'
                    % (margin + size + 15, y, COLOURS[k], margin + size + 32, y + 11, words))
         y += 22
