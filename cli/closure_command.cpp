@@ -36,7 +36,8 @@ std::string human_verdict(const Closure_answer& a, bool form) {
       s << " (a " << (r.label == '+' ? "counter-clockwise" : "clockwise") << " rotation about ("
         << to_string(r.point[0]) << ", " << to_string(r.point[1]) << "), labeled " << r.label << ")";
     s << (form ? "; the contacts allow this motion to first order"
-               : "; the wrench -t is not a possible resultant");
+               : "; so the contact forces cannot resist a load along -t (the wrench -t is not a possible "
+                 "resultant of the contact forces)");
   }
   return s.str();
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/common.h"
+#include "cli/float_json.h"
 #include "exact/io/input_error.h"
 
 namespace wrenchkit::cli {
@@ -57,6 +58,40 @@ std::string human_number(const Rational& q) {
   char b[40];
   std::snprintf(b, sizeof b, "~%.12g", q.get_d());
   return b;
+}
+
+std::string approx_vec_text(const std::vector<Rational>& v) {
+  std::string exact = "(", approx = "(";
+  bool fractions = false;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    exact += (i ? ", " : "") + human_number(v[i]);
+    fractions = fractions || v[i].get_den() != 1;
+    char b[40];
+    std::snprintf(b, sizeof b, "%.6g", v[i].get_d());
+    approx += (i ? ", " : "") + std::string(b);
+  }
+  return exact + ")" + (fractions ? " ≈ " + approx + ")" : std::string());
+}
+
+std::string contact_forces_text(const std::vector<Contact_force>& forces) {
+  std::string s;
+  for (const Contact_force& f : forces) {
+    if (!s.empty()) s += "; ";
+    s += "c" + std::to_string(f.contact) + (f.name.empty() ? "" : " (" + f.name + ")") + " " +
+         approx_vec_text({f.wrench[0], f.wrench[1]});
+  }
+  return s;
+}
+
+void write_forces(Json_writer& w, const std::vector<Contact_force>& forces) {
+  w.key("forces").array();
+  for (const Contact_force& f : forces) {
+    w.object().member("contact", f.contact).member("name", f.name);
+    w.key("force").array().rational(f.wrench[0]).rational(f.wrench[1]).end_array();
+    w.key("force_approx").array().raw(float_number(f.wrench[0].get_d())).raw(float_number(f.wrench[1].get_d()));
+    w.end_array().end_object();
+  }
+  w.end_array();
 }
 
 std::string vec_text(const std::array<Rational, 3>& v) {

@@ -154,6 +154,12 @@ void write_file(const std::string& path, const std::string& text);
 // exact value is in --json).
 std::string human_number(const Rational& q);
 std::string vec_text(const std::array<Rational, 3>& v);
+// A vector of exact numbers with, when any is not an integer, its decimals beside it: "(0, 1/2) ≈ (0, 0.5)".
+std::string approx_vec_text(const std::vector<Rational>& v);
+// Each contact's force under a certificate's weights, in words: "c0 (floor, left) (0, 1/2) ≈ (0, 0.5); …".
+std::string contact_forces_text(const std::vector<Contact_force>& forces);
+// The same as JSON: "forces": [{"contact", "name", "force": [fx, fy] exact, "force_approx": [doubles]}, …].
+void write_forces(Json_writer& w, const std::vector<Contact_force>& forces);
 // The words for a region of the plane (docs/cli.md, REGION) from its shape name (shape_name of
 // exact/statics/planar_region.h, which the twin's regions share) and the texts of its corners and
 // directions: one sentence for the exact regions and the twin's.

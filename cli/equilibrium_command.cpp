@@ -15,7 +15,9 @@ void write_equilibrium(Json_writer& w, const Options& o, const Equilibrium_item&
   w.member("command", command).member("name", r.name).member("mode", mode_name(o.mode));
   w.member("decided_by", arithmetic_name(r.answer.decided_by())).member("balanced", r.answer.balanced);
   w.key("load").array().rational(l[0]).rational(l[1]).rational(l[2]).end_array();
-  w.member("generators", r.answer.generators).member("certificate_checked", true).key("certificate").raw(r.certificate);
+  w.member("generators", r.answer.generators);
+  if (r.answer.balanced) write_forces(w, r.forces);
+  w.member("certificate_checked", true).key("certificate").raw(r.certificate);
 }
 
 std::string equilibrium_human(const Equilibrium_item& r) {
@@ -26,10 +28,8 @@ std::string equilibrium_human(const Equilibrium_item& r) {
     << "balanced: " << (a.balanced ? "yes" : "no") << "\n    certificate: ";
   if (a.balanced) {
     if (a.certificate.combination.empty()) s << "the load is zero";
-    else s << "the contact wrenches";
-    for (const auto& [ref, w] : a.certificate.combination)
-      s << " " << to_string(w) << "·c" << ref.contact << "." << edge_name(ref.edge);
-    if (!a.certificate.combination.empty()) s << " cancel the load exactly";
+    else s << "the contact forces " << contact_forces_text(r.forces) << " cancel the load exactly (weights on the "
+           << "friction cones' edges in the certificate)";
   } else {
     const Twist_reading tr = read_twist(a.certificate.twist);
     s << "the twist " << vec_text(a.certificate.twist)

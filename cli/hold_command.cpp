@@ -36,8 +36,9 @@ void write_holds(Json_writer& w, Hold_verdict v) {
   else w.string(hold_word(v));
 }
 
-void write_contact_forces(Json_writer& w, const Hold_witness& h) {
+void write_contact_forces(Json_writer& w, const Scene& scene, const Hold_witness& h) {
   write_combination(w.key("contact_forces"), h.combination);
+  write_forces(w, contact_forces(scene, h.combination));
 }
 
 }  // namespace
@@ -62,13 +63,13 @@ void write_hold(Json_writer& w, const Hold_item& r) {
   switch (a.verdict) {
     case Hold_verdict::holds:
       if (a.holding) {
-        write_contact_forces(w, *a.holding);
+        write_contact_forces(w, r.scene, *a.holding);
         if (a.has_support) write_support_forces(w, a.holding->support.forces);
       }
       break;
     case Hold_verdict::impending:  // just held; the motion it may slip with (its power meets the friction's)
       if (a.impending) {
-        write_contact_forces(w, a.impending->holding);
+        write_contact_forces(w, r.scene, a.impending->holding);
         if (a.has_support) write_support_forces(w, a.impending->holding.support.forces);
       }
       write_motion(w.key("motion"), a.impending ? a.impending->twist.twist : a.failing->twist);
@@ -93,12 +94,10 @@ void write_hold(Json_writer& w, const Hold_item& r) {
 
 namespace {
 
-std::string forces_text(const Hold_witness& h, bool support) {
+std::string forces_text(const Scene& scene, const Hold_witness& h, bool support) {
   std::ostringstream s;
   if (h.combination.empty()) s << "no contact force";
-  else s << "contact forces";
-  for (const auto& [ref, weight] : h.combination)
-    s << " " << human_number(weight) << "·c" << ref.contact << "." << edge_name(ref.edge);
+  else s << "contact forces " << contact_forces_text(contact_forces(scene, h.combination));
   if (support && !h.support.forces.empty()) {
     std::size_t carrying = 0;
     for (const Vec2& g : h.support.forces) carrying += !is_zero(g);
@@ -118,7 +117,7 @@ std::string hold_human(const Hold_item& r) {
                                               "nothing in the plane"
                                         : std::string())
     << "\n"
-    << "contacts: " << a.generators << " friction generator(s); support: ";
+    << "contacts: " << a.generators << " generator(s) of their wrench cone; support: ";
   if (!a.has_support) s << "none (hold is equilibrium)";
   else if (!a.unknown) {
     s << r.scene.support->points.size() << " point(s), every force given";
@@ -128,28 +127,32 @@ std::string hold_human(const Hold_item& r) {
     s << r.scene.support->points.size() << " point(s), forces not all given: " << a.extreme.size()
       << " extreme admissible distribution(s)";
   s << "\n";
+  // Who carries the load: the contacts, the support's friction, or both (the book's words for each).
+  const std::string carriers = !a.has_support ? "the contacts" : a.generators == 0 ? "the support's friction"
+                                                                                  : "the contacts and the support's friction";
   switch (a.verdict) {
     case Hold_verdict::holds:
-      s << "holds: yes — the contacts and the support's friction balance the load with margin";
+      s << "holds: yes — " << carriers << " balance the load with margin";
       if (a.unknown) s << " under every admissible distribution (every extreme one holds)";
       s << "\n";
-      if (a.holding) s << "  " << forces_text(*a.holding, a.has_support) << " cancel the load exactly\n";
+      if (a.holding) s << "  " << forces_text(r.scene, *a.holding, a.has_support) << " cancel the load exactly\n";
       if (a.holding && !a.holding->support.regions.empty())
         s << "  with the regions' friction as forces on " << a.cells << " cells, each in its disc at the cell's pressure centroid\n";
       break;
     case Hold_verdict::impending:
-      s << "holds: impending — the contacts and the support's friction can just balance the load";
+      s << "holds: impending — " << carriers << " can just balance the load";
       if (a.unknown) s << " under every admissible distribution (every extreme one holds it at the limit)";
       s << ", with no margin: it may start to slip in " << motion_words(a.impending ? a.impending->twist.twist : a.failing->twist)
         << " (twist " << vec_text(a.impending ? a.impending->twist.twist : a.failing->twist)
         << "; every contact allows it, and the load's power meets the friction's exactly)\n";
-      if (a.impending) s << "  " << forces_text(a.impending->holding, a.has_support) << " cancel the load exactly\n";
+      if (a.impending) s << "  " << forces_text(r.scene, a.impending->holding, a.has_support) << " cancel the load exactly\n";
       break;
     case Hold_verdict::fails:
       s << "holds: no — the body moves: " << motion_words(a.failing->twist) << " (twist "
         << vec_text(a.failing->twist) << ")";
       if (a.unknown) s << " under every admissible distribution";
-      s << "\n  every contact allows it, and the load drives it harder than the support's friction can resist\n";
+      s << (a.has_support ? "\n  every contact allows it, and the load drives it harder than the support's friction can resist\n"
+                          : "\n  every contact allows it, and the load drives it (the contacts cannot resist it)\n");
       if (!a.failing->regions.empty())
         s << "  (the regions' friction bounded by speed bounds at the vertices of " << a.cells << " cells)\n";
       break;

@@ -86,6 +86,7 @@ void decide_equilibrium_item(const Scene& scene, std::string_view text, const Re
                    "bound of zero, or the contact wrenches have rank < 3)";
     return;
   }
+  if (item.answer.balanced) item.forces = contact_forces(scene, item.answer.certificate.combination);
   if (!r.certify) return;
   item.certificate = certificate_json(item.answer.certificate);
   std::string why = check_certificates(text, {item.certificate}, r);

@@ -30,6 +30,7 @@
 #include "exact/numbers/limits.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
+#include "exact/statics/generators.h"
 #include "proofs/checker/checker.h"
 
 namespace wrenchkit {
@@ -73,6 +74,7 @@ struct Equilibrium_item {
   std::string message;
   std::string name;
   Equilibrium_answer answer;
+  std::vector<Contact_force> forces;  // balanced: each contact's force under the certificate's weights
   std::string certificate;  // answered and certified: certificate_json
 };
 

@@ -4,6 +4,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "core/contact_generators.h"
@@ -23,6 +25,27 @@ struct Generator {
 // (μ = 0 or frictionless reading) or `left` = W(p, n + μ·rot90 n), `right` = W(p, n − μ·rot90 n).
 // Exact; O(#contacts).
 std::vector<Generator> generators(const Scene& scene, Reading reading);
+
+// The force each contact exerts on the body under a certificate's weights on its generators (friction reading):
+// Σ_edges weight·(the edge's force); a wrench contact's wrench. One entry per contact that carries any weight, in
+// contact order — what a reader of the book wants to see instead of weights on unnormalised cone edges.
+struct Contact_force {
+  std::size_t contact = 0;
+  std::string name;  // the contact's `name`, or ""
+  Vec3q wrench;      // (fx, fy, m about the origin); for a point contact (fx, fy) acts at its point
+};
+template <class Ref>
+std::vector<Contact_force> contact_forces(const Scene& scene, const std::vector<std::pair<Ref, Rational>>& combination) {
+  const std::vector<Generator> gens = generators(scene, Reading::friction);
+  std::vector<Contact_force> out;
+  for (const Generator& g : gens)
+    for (const auto& [ref, weight] : combination) {
+      if (ref.contact != g.contact || ref.edge != g.edge || weight == 0) continue;
+      if (out.empty() || out.back().contact != g.contact) out.push_back({g.contact, scene.contacts[g.contact].name, {}});
+      for (std::size_t k = 0; k < 3; ++k) out.back().wrench[k] += weight * g.w[k];
+    }
+  return out;
+}
 
 // Exact predicate kernel for core/dual_cone.h over a list of nonzero wrenches. Each wrench is
 // replaced by a positive integer multiple (the cone is unchanged). Signs are
