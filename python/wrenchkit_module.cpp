@@ -210,6 +210,19 @@ py::dict closure(const Py_scene& s, const std::string& mode) {
   return d;
 }
 
+// Each contact's force under a certificate's weights, as `--json` writes "forces": [{"contact", "name", "force"}].
+py::list forces_list(const std::vector<Contact_force>& forces) {
+  py::list out;
+  for (const Contact_force& f : forces) {
+    py::dict d;
+    d["contact"] = f.contact;
+    d["name"] = f.name;
+    d["force"] = py::make_tuple(fraction(f.wrench[0]), fraction(f.wrench[1]));
+    out.append(d);
+  }
+  return out;
+}
+
 py::dict equilibrium(const Py_scene& s, const std::string& mode) {
   const Equilibrium_item r = answer_equilibrium(s.scene, s.text, request_of(mode, s.limits));
   raise_unless_answered(r.status, r.message);
@@ -220,6 +233,7 @@ py::dict equilibrium(const Py_scene& s, const std::string& mode) {
   d["generators"] = a.generators;
   d["mode"] = mode;
   d["decided_by"] = arithmetic_name(a.decided_by());
+  if (a.balanced) d["forces"] = forces_list(r.forces);
   d["certificate"] = equilibrium_certificate(a.certificate);
   d["certificate_json"] = r.certificate;
   return d;
@@ -276,6 +290,7 @@ py::dict hold(const Py_scene& s, const std::string& mode) {
   }
   if (a.holding) {
     d["contact_forces"] = combination_list(a.holding->combination);
+    d["forces"] = forces_list(contact_forces(r.scene, a.holding->combination));
     py::list g;
     for (const Vec2& f : a.holding->support.forces) g.append(point(f));
     d["support_forces"] = g;
@@ -283,6 +298,7 @@ py::dict hold(const Py_scene& s, const std::string& mode) {
   }
   if (a.impending) {  // just held: its forces, and the motion it may start (its power meets the friction's)
     d["contact_forces"] = combination_list(a.impending->holding.combination);
+    d["forces"] = forces_list(contact_forces(r.scene, a.impending->holding.combination));
     py::list g;
     for (const Vec2& f : a.impending->holding.support.forces) g.append(point(f));
     d["support_forces"] = g;
