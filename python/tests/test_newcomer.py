@@ -150,3 +150,15 @@ def test_the_use_example_of_docs_python_runs_from_any_directory(tmp_path):
         os.chdir(here)
     assert names["wrenchkit"].equilibrium(names["ladder"])["balanced"] is True
     assert names["svg"].startswith("<?xml")
+
+
+def test_each_contact_force_as_a_vector_with_its_name():
+    # The block in a tray corner under its weight: the floor's two contacts carry it, (1/4, 1/2) and (-1/4, 1/2).
+    scene = SOURCE / "docs" / "quickstart" / "block_in_corner.json"
+    forces = wrenchkit.equilibrium(scene)["forces"]
+    assert [(f["contact"], f["name"], f["force"]) for f in forces] == [
+        (0, "floor, left", (Fraction(1, 4), Fraction(1, 2))), (1, "floor, right", (Fraction(-1, 4), Fraction(1, 2)))]
+    # They balance the weight (0, -1) at (1/2, 1/2) exactly: the forces' sum and moment.
+    assert sum(f["force"][1] for f in forces) == 1 and sum(f["force"][0] for f in forces) == 0
+    held = wrenchkit.hold(SOURCE / "docs" / "quickstart" / "pinned_part.json")
+    assert held["holds"] is True and held["forces"][0]["name"] == "pin" and held["forces"][0]["force"][1] == 0
