@@ -189,18 +189,26 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
     std::cout << json_answer([&](Json_writer& w) { write_analysis(w, o, a, command); }, 2048) << "\n";
     return a.undecided() ? kUndecided : kAnswered;
   }
-  std::cout << "scene: " << (a.scene.name.empty() ? source : a.scene.name) << "\n" << closure_human(a.closure);
-  if (a.equilibrium) std::cout << equilibrium_human(*a.equilibrium);
+  // No contacts: closure and equilibrium have nothing to say (their JSON keeps the trivial answers); say so in words.
+  const bool contacts = !a.scene.contacts.empty();
+  std::cout << "scene: " << (a.scene.name.empty() ? source : a.scene.name) << "\n"
+            << (contacts ? closure_human(a.closure)
+                         : std::string("contacts: none (closure and equilibrium are questions about contacts") +
+                               (a.scene.support ? "; the support's friction is below)\n" : ")\n"));
+  if (a.equilibrium && contacts) std::cout << equilibrium_human(*a.equilibrium);
   if (a.limit_surface) std::cout << a.limit_surface->human;
   if (a.hold)
     std::cout << "hold — the contacts and the support's friction together (equilibrium above is the contacts alone, the "
                  "load on the support the support alone):\n"
               << hold_human(*a.hold);
   for (const auto& [what, why] : a.skipped) std::cout << "skipped " << what << ": " << why << "\n";
-  std::cout << "decided by: " << arithmetic_name(a.closure.decided_by()) << " for closure"
-            << (a.equilibrium ? std::string(", ") + arithmetic_name(a.equilibrium->answer.decided_by()) + " for equilibrium"
-                              : std::string())
-            << "\n"
+  if (contacts)
+    std::cout << "decided by: " << arithmetic_name(a.closure.decided_by()) << " for closure"
+              << (a.equilibrium ? std::string(", ") + arithmetic_name(a.equilibrium->answer.decided_by()) +
+                                      " for equilibrium"
+                                : std::string())
+              << "\n";
+  std::cout
             << "every certificate accepted by the independent checker (exact arithmetic)\n";
   return a.undecided() ? kUndecided : kAnswered;
 }

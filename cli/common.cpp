@@ -60,6 +60,12 @@ std::string human_number(const Rational& q) {
   return b;
 }
 
+std::string ask_support_text() {
+  return "to ask: --load fx,fy,m (does the load stick, is it impending, or does it slide?), --twist vx,vy,w (the "
+         "friction load of a motion and its power), --list or --svg FILE (the limit surface's polytopes), or 'wrenchkit "
+         "hold' with contacts and a load\n";
+}
+
 std::string approx_vec_text(const std::vector<Rational>& v) {
   std::string exact = "(", approx = "(";
   bool fractions = false;

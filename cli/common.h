@@ -155,6 +155,8 @@ void write_file(const std::string& path, const std::string& text);
 std::string human_number(const Rational& q);
 std::string vec_text(const std::array<Rational, 3>& v);
 // A vector of exact numbers with, when any is not an integer, its decimals beside it: "(0, 1/2) ≈ (0, 0.5)".
+// What a support scene allows to ask, for `sliding` and `limit-surface` asked nothing (text only).
+std::string ask_support_text();
 std::string approx_vec_text(const std::vector<Rational>& v);
 // Each contact's force under a certificate's weights, in words: "c0 (floor, left) (0, 1/2) ≈ (0, 0.5); …".
 std::string contact_forces_text(const std::vector<Contact_force>& forces);

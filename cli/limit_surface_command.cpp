@@ -532,7 +532,10 @@ int run_limit_surface(const Options& o, const std::string& text, const std::stri
   return write_answer(o, [&](Json_writer& w) {
     answer_json(w, lo, r);
     write_mesh_coordinates(w, lo);
-  }, [&] { return answer_text(lo, r, source) + mesh_coordinates_text(lo); },
+  }, [&] {
+    const bool asked = lo.query.twist || lo.query.load || lo.list || lo.exports() || o.sides || o.tolerance;
+    return answer_text(lo, r, source) + mesh_coordinates_text(lo) + (asked ? std::string() : ask_support_text());
+  },
                       r.motion && r.motion->motion == Motion::undecided);
 }
 

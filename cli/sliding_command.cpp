@@ -345,7 +345,8 @@ void answer_json(Json_writer& w, const Support_query& q, const Support_item& r) 
 
 std::string answer_text(const Support_query& q, const Support_item& r, const std::string& source) {
   return by_kind(r, &sliding_human, &sliding_float_human, &sliding_unknown_human, &sliding_regions_human)(
-      q, r, source);
+             q, r, source) +
+         (q.twist || q.load ? std::string() : ask_support_text());
 }
 
 }  // namespace

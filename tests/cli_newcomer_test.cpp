@@ -252,5 +252,27 @@ TEST(Newcomer, TheDualsLegendNamesTheBlackDotsOnTheRim) {
   EXPECT_EQ(none.out.find("black dots on the rim"), std::string::npos);
 }
 
+// A support-only scene: analyze says there are no contacts instead of an empty closure; sliding and limit-surface
+// asked nothing say what the scene allows to ask (and nothing of it when a question is given).
+TEST(CliNewcomer, SupportScenesSayWhatToAsk) {
+  const std::string barbell = test::source_dir() + "/docs/quickstart/barbell.json";
+  const Cli_result a = run("analyze '" + barbell + "'");
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_NE(a.out.find("contacts: none (closure and equilibrium are questions about contacts; the support's friction "
+                       "is below)"), std::string::npos) << a.out;
+  EXPECT_EQ(a.out.find("force closure:"), std::string::npos) << a.out;
+  for (const char* command : {"sliding", "limit-surface"}) {
+    const Cli_result bare = run(std::string(command) + " '" + barbell + "'");
+    ASSERT_EQ(bare.code, 0) << bare.err;
+    EXPECT_NE(bare.out.find("to ask: --load fx,fy,m"), std::string::npos) << command << ": " << bare.out;
+    const Cli_result asked = run(std::string(command) + " '" + barbell + "' --twist 0,0,1");
+    EXPECT_EQ(asked.out.find("to ask:"), std::string::npos) << command << ": " << asked.out;
+  }
+  // Each contact's force, named, exact and in decimals (equilibrium and hold).
+  const Cli_result e = run("equilibrium '" + test::source_dir() + "/docs/quickstart/block_in_corner.json'");
+  EXPECT_NE(e.out.find("c0 (floor, left) (1/4, 1/2) ≈ (0.25, 0.5); c1 (floor, right) (-1/4, 1/2) ≈ (-0.25, 0.5)"),
+            std::string::npos) << e.out;
+}
+
 }  // namespace
 }  // namespace wrenchkit
