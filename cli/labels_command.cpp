@@ -354,11 +354,14 @@ std::string reuleaux_text(const Labels_item& s, const Labels_query& q, const std
       << "\n";
   if (q.motion) {
     const Mode_answer& m = *s.modes;
-    out << "twist " << vec_text({(*q.motion)[0], (*q.motion)[1], (*q.motion)[2]}) << ": "
+    const Vec3q t{(*q.motion)[0], (*q.motion)[1], (*q.motion)[2]};
+    out << "twist " << vec_text({t[0], t[1], t[2]}) << " (" << motion_words(t) << "): "
         << (m.feasible ? (m.marginal ? "feasible, marginal (keeps some contacts to first order)" : "feasible")
                        : "infeasible (penetrates)")
         << "\n";
-    for (std::size_t i = 0; i < m.modes.size(); ++i) out << "  contact " << i << ": " << mode_name(m.modes[i]) << "\n";
+    for (std::size_t i = 0; i < m.modes.size(); ++i)
+      out << "  contact " << i << (s.scene.contacts[i].name.empty() ? "" : " (" + s.scene.contacts[i].name + ")") << ": "
+          << mode_name(m.modes[i]) << "\n";
   }
   return out.str() + decided_line(s);
 }
