@@ -191,7 +191,7 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
   }
   // No contacts: closure and equilibrium have nothing to say (their JSON keeps the trivial answers); say so in words.
   const bool contacts = !a.scene.contacts.empty();
-  std::cout << "scene: " << (a.scene.name.empty() ? source : a.scene.name) << "\n"
+  std::cout << "scene: " << (a.scene.name.empty() ? source : a.scene.name) << "\n" << frictionless_note(a.scene)
             << (contacts ? closure_human(a.closure)
                          : std::string("contacts: none (closure and equilibrium are questions about contacts") +
                                (a.scene.support ? "; the support's friction is below)\n" : ")\n"));

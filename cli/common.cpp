@@ -60,6 +60,20 @@ std::string human_number(const Rational& q) {
   return b;
 }
 
+std::string frictionless_note(const Scene& scene) {
+  std::string which;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
+    const Contact& c = scene.contacts[i];
+    if (c.kind != Contact::Kind::point || c.mu_given) continue;
+    if (++n <= 6) which += (which.empty() ? "c" : ", c") + std::to_string(i) + (c.name.empty() ? "" : " (" + c.name + ")");
+  }
+  if (n == 0) return "";
+  if (n > 6) which += " and " + std::to_string(n - 6) + " more";
+  return "note: " + which + (n == 1 ? " has" : " have") + " no \"mu\": frictionless (write \"mu\" on a contact to give "
+         "it friction)\n";
+}
+
 std::string ask_support_text() {
   return "to ask: --load fx,fy,m (does the load stick, is it impending, or does it slide?), --twist vx,vy,w (the "
          "friction load of a motion and its power), --list or --svg FILE (the limit surface's polytopes), or 'wrenchkit "

@@ -155,6 +155,8 @@ void write_file(const std::string& path, const std::string& text);
 std::string human_number(const Rational& q);
 std::string vec_text(const std::array<Rational, 3>& v);
 // A vector of exact numbers with, when any is not an integer, its decimals beside it: "(0, 1/2) ≈ (0, 0.5)".
+// "note: …" when point contacts have no "mu" (frictionless by default; the text output says so once), else "".
+std::string frictionless_note(const Scene& scene);
 // What a support scene allows to ask, for `sliding` and `limit-surface` asked nothing (text only).
 std::string ask_support_text();
 std::string approx_vec_text(const std::vector<Rational>& v);

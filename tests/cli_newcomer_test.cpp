@@ -268,6 +268,11 @@ TEST(CliNewcomer, SupportScenesSayWhatToAsk) {
     const Cli_result asked = run(std::string(command) + " '" + barbell + "' --twist 0,0,1");
     EXPECT_EQ(asked.out.find("to ask:"), std::string::npos) << command << ": " << asked.out;
   }
+  // A contact without "mu" is frictionless by default, and the text says so once (not for a contact with mu).
+  const Cli_result pin = run("hold '" + test::source_dir() + "/docs/quickstart/pinned_part.json'");
+  EXPECT_NE(pin.out.find("note: c0 (pin) has no \"mu\": frictionless"), std::string::npos) << pin.out;
+  const Cli_result fingers = run("closure '" + test::source_dir() + "/docs/quickstart/two_finger.json'");
+  EXPECT_EQ(fingers.out.find("note:"), std::string::npos) << fingers.out;
   // Each contact's force, named, exact and in decimals (equilibrium and hold).
   const Cli_result e = run("equilibrium '" + test::source_dir() + "/docs/quickstart/block_in_corner.json'");
   EXPECT_NE(e.out.find("c0 (floor, left) (1/4, 1/2) ≈ (0.25, 0.5); c1 (floor, right) (-1/4, 1/2) ≈ (-0.25, 0.5)"),

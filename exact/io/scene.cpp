@@ -238,6 +238,7 @@ class Reader {
     c.normal = vec2(required(v, path, "normal"), path + ".normal", n);
     if (c.normal.x == 0 && c.normal.y == 0) fail(path + ".normal", "zero vector");
     if (const Value* mu = v.find("mu")) c.mu = nonnegative(*mu, path + ".mu", &c.twin.mu);
+    c.mu_given = v.find("mu") != nullptr;
     c.twin.ax = at[0];
     c.twin.ay = at[1];
     c.twin.nx = n[0];
@@ -266,6 +267,7 @@ class Reader {
     }
     keys(v, path, {"at", "normal", "mu", "name"});
     c.kind = Contact::Kind::point;
+    c.mu_given = v.find("mu") != nullptr;
     const Value& at = required(v, path, "at");
     const std::string ap = path + ".at";
     lazy_number(pair_item(at, ap, 2, 0), ap + "[0]", c, 0, c.twin.ax);

@@ -20,6 +20,7 @@ struct Contact {
   Vec2 at;          // point contact: the contact point
   Vec2 normal;      // point contact: inward normal, nonzero, any length
   Rational mu;      // point contact: Coulomb coefficient ≥ 0 (0 = frictionless)
+  bool mu_given = false;  // point contact: "mu" was written (else it is frictionless by default, said in the output)
   Vec3q wrench;    // wrench generator: nonzero
   std::string name;
   // The same contact as certified doubles for the float twin [FL-4], computed by read_scene from

@@ -332,6 +332,7 @@ class Stream {
       return;
     }
     if ((seen & (kAt | kNormal)) != (kAt | kNormal) || zero_normal || mu_sign < 0) defer();
+    c.mu_given = (seen & kMu) != 0;
     if (!(seen & kMu) && !tally_.add_number(1, limits_)) defer();  // an absent mu counts as its "0"
     if (lazy_ && !(seen & kMu)) {  // lazy_contact() keeps "0" for an absent mu
       c.number_text[4] = "0";
