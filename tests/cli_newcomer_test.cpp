@@ -273,6 +273,25 @@ TEST(CliNewcomer, SupportScenesSayWhatToAsk) {
   EXPECT_NE(pin.out.find("note: c0 (pin) has no \"mu\": frictionless"), std::string::npos) << pin.out;
   const Cli_result fingers = run("closure '" + test::source_dir() + "/docs/quickstart/two_finger.json'");
   EXPECT_EQ(fingers.out.find("note:"), std::string::npos) << fingers.out;
+  // A scene-wide "mu" is every point contact's coefficient unless it writes its own: the same answers and certificates
+  // as writing it on each contact, the checker reading it the same, and no frictionless note.
+  const std::string wide = write("scene_mu.json", R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0]},
+      {"at": [1, 0], "normal": [-1, 0]}, {"at": [0, 1], "normal": [0, -1], "mu": 0}], "mu": "1/2"})");
+  const std::string each = write("each_mu.json", R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0],
+      "mu": "1/2"}, {"at": [1, 0], "normal": [-1, 0], "mu": "1/2"}, {"at": [0, 1], "normal": [0, -1], "mu": 0}]})");
+  for (const char* mode : {"hybrid", "exact", "float"}) {
+    const Cli_result w = run(std::string("closure --json --mode ") + mode + " '" + wide + "'");
+    ASSERT_EQ(w.code, 0) << w.err;
+    EXPECT_EQ(w.out, run(std::string("closure --json --mode ") + mode + " '" + each + "'").out) << mode;
+  }
+  EXPECT_EQ(run("closure '" + wide + "'").out.find("note:"), std::string::npos);
+  const Cli_result cert = run("closure '" + wide + "' --certificate '" + (scratch() / "wide.cert.json").string() + "'");
+  ASSERT_EQ(cert.code, 0) << cert.err;
+  EXPECT_EQ(run("check '" + wide + "' '" + (scratch() / "wide.cert.json").string() + "'").code, 0);
+  const std::string negative = write("scene_mu_negative.json", R"({"wrenchkit": 1, "mu": "-1", "contacts": []})");
+  const Cli_result bad = run("closure '" + negative + "'");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("mu: \"-1\" is negative (must be >= 0)"), std::string::npos) << bad.err;
   // Each contact's force, named, exact and in decimals (equilibrium and hold).
   const Cli_result e = run("equilibrium '" + test::source_dir() + "/docs/quickstart/block_in_corner.json'");
   EXPECT_NE(e.out.find("c0 (floor, left) (1/4, 1/2) ≈ (0.25, 0.5); c1 (floor, right) (-1/4, 1/2) ≈ (-0.25, 0.5)"),

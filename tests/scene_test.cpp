@@ -513,3 +513,32 @@ TEST(SceneModel, ReadsEveryField) {
 
 }  // namespace
 }  // namespace wrenchkit
+
+namespace wrenchkit {
+namespace {
+
+// The scene-wide "mu" (docs/scene-format.md "Friction"): every point contact's coefficient unless it writes its own,
+// wherever the key stands; eager, lazy and streaming reading agree; the checker reads it the same.
+TEST(SceneMu, SceneWideDefaultForContactsWithoutTheirOwn) {
+  const std::string text = R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [0, 1]},
+      {"at": [1, 0], "normal": [0, 1], "mu": 0}, {"wrench": [0, 0, 1]}], "mu": "1/3"})";
+  for (const bool lazy : {false, true}) {
+    const Scene s = read_scene(text, Input_limits{}, "s", lazy);
+    const Contact c0 = s.contacts[0].exact_pending ? exact_contact(s.contacts[0]) : s.contacts[0];
+    const Contact c1 = s.contacts[1].exact_pending ? exact_contact(s.contacts[1]) : s.contacts[1];
+    EXPECT_EQ(c0.mu, Rational(1, 3)) << lazy;
+    EXPECT_TRUE(s.contacts[0].mu_given);
+    EXPECT_EQ(c1.mu, 0);
+    EXPECT_TRUE(s.contacts[1].twin.frictional == false);
+    EXPECT_TRUE(s.contacts[0].twin.frictional);
+  }
+  // Without it, a contact without mu is frictionless and known to be so by default.
+  const Scene plain = read_scene(R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [0, 1]}]})", Input_limits{}, "s");
+  EXPECT_EQ(plain.contacts[0].mu, 0);
+  EXPECT_FALSE(plain.contacts[0].mu_given);
+  EXPECT_EQ(error_of(R"({"wrenchkit": 1, "mu": "-1/2", "contacts": []})"), "mu: \"-1/2\" is negative (must be >= 0)");
+  EXPECT_EQ(readers_disagree(text, Input_limits{}, reused_eager, reused_lazy), "");
+}
+
+}  // namespace
+}  // namespace wrenchkit

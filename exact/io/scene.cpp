@@ -25,7 +25,7 @@ class Reader {
 
   Scene scene(const Value& root) {
     expect(root, Type::object, "scene", "an object");
-    keys(root, "", {"wrenchkit", "name", "body", "contacts", "load", "support"});
+    keys(root, "", {"wrenchkit", "name", "body", "contacts", "load", "support", "mu"});
     const Value* version = root.find("wrenchkit");
     if (!version) fail("scene", "missing key \"wrenchkit\" (the format version, 1)");
     if (number(*version, "wrenchkit") != 1)
@@ -36,6 +36,9 @@ class Reader {
       s.name = v->text;
     }
     if (const Value* v = root.find("body")) s.body = body(*v);
+    // The scene-wide μ: every point contact's coefficient unless it writes its own (docs/scene-format.md).
+    scene_mu_ = root.find("mu");
+    if (scene_mu_) nonnegative(*scene_mu_, "mu");
     if (const Value* v = root.find("contacts")) {
       expect(*v, Type::array, "contacts", "an array");
       if (v->items.size() > limits_.max_contacts)
@@ -55,6 +58,7 @@ class Reader {
  private:
   const Input_limits& limits_;
   bool lazy_;
+  const Value* scene_mu_ = nullptr;  // the scene-wide "mu", while its contacts are read
 
   [[noreturn]] static void fail(const std::string& path, const std::string& what) {
     throw Input_error(path + ": " + what);
@@ -237,8 +241,9 @@ class Reader {
     c.at = vec2(required(v, path, "at"), path + ".at", at);
     c.normal = vec2(required(v, path, "normal"), path + ".normal", n);
     if (c.normal.x == 0 && c.normal.y == 0) fail(path + ".normal", "zero vector");
-    if (const Value* mu = v.find("mu")) c.mu = nonnegative(*mu, path + ".mu", &c.twin.mu);
-    c.mu_given = v.find("mu") != nullptr;
+    const Value* own = v.find("mu");
+    if (const Value* mu = own ? own : scene_mu_) c.mu = nonnegative(*mu, own ? path + ".mu" : "mu", &c.twin.mu);
+    c.mu_given = own || scene_mu_;
     c.twin.ax = at[0];
     c.twin.ay = at[1];
     c.twin.nx = n[0];
@@ -267,7 +272,7 @@ class Reader {
     }
     keys(v, path, {"at", "normal", "mu", "name"});
     c.kind = Contact::Kind::point;
-    c.mu_given = v.find("mu") != nullptr;
+    c.mu_given = v.find("mu") || scene_mu_;
     const Value& at = required(v, path, "at");
     const std::string ap = path + ".at";
     lazy_number(pair_item(at, ap, 2, 0), ap + "[0]", c, 0, c.twin.ax);
@@ -281,9 +286,10 @@ class Reader {
     c.number_text[4] = "0";
     c.number_is_json[4] = true;
     c.twin.mu = fl::Bounded::exact(0);
-    if (const Value* mu = v.find("mu")) {
-      smu = lazy_number(*mu, path + ".mu", c, 4, c.twin.mu);
-      if (smu < 0) fail(path + ".mu", display(*mu) + " is negative (must be >= 0)");
+    const Value* own = v.find("mu");
+    if (const Value* mu = own ? own : scene_mu_) {
+      smu = lazy_number(*mu, own ? path + ".mu" : "mu", c, 4, c.twin.mu);
+      if (smu < 0) fail(own ? path + ".mu" : "mu", display(*mu) + " is negative (must be >= 0)");
     }
     c.twin.frictional = smu != 0;
     return c;

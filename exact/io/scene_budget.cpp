@@ -39,7 +39,7 @@ bool is_object(Place p) {
 Place member(Place object, std::string_view key) {
   switch (object) {
     case Place::root:
-      return key == "wrenchkit" ? Place::number
+      return key == "wrenchkit" || key == "mu" ? Place::number
              : key == "body"     ? Place::body
              : key == "contacts" ? Place::contacts
              : key == "load"     ? Place::load

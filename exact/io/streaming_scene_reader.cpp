@@ -59,9 +59,11 @@ class Stream {
 
   void scene(Scene& out) {
     if (s_.size() > limits_.max_file_bytes) defer();
-    enum : unsigned { kVersion = 1, kName = 2, kBody = 4, kContacts = 8, kLoad = 16, kSupport = 32 };
+    enum : unsigned { kVersion = 1, kName = 2, kBody = 4, kContacts = 8, kLoad = 16, kSupport = 32, kSceneMu = 64 };
     unsigned seen = 0;
     std::size_t contacts = 0;
+    int scene_mu_sign = 0;
+    without_mu_.clear();
     out.name.clear();
     object(0, [&](std::string_view key) {
       const unsigned bit = key == "contacts" ? kContacts
@@ -70,8 +72,9 @@ class Stream {
                            : key == "body"      ? kBody
                            : key == "load"      ? kLoad
                            : key == "support"   ? kSupport
+                           : key == "mu"        ? kSceneMu
                                                 : 0u;
-      if (bit == 0 || (seen & bit)) defer();  // unknown or duplicate key
+      if (bit == 0 || (seen & bit)) defer();  // unknown or duplicate key (a scene-wide "mu" too: read_scene_tree)
       seen |= bit;
       switch (bit) {
         case kVersion: version(); break;
@@ -80,16 +83,32 @@ class Stream {
         case kContacts:
           array(1, [&](std::size_t k) {
             if (k >= limits_.max_contacts || !tally_.add_entry(limits_)) defer();
-            contact(slot(out.contacts, k), 2);
+            Contact& c = slot(out.contacts, k);
+            contact(c, 2);
+            if (c.kind == Contact::Kind::point && !c.mu_given) without_mu_.push_back(k);
             contacts = k + 1;
           });
           break;
         case kLoad: load(out.load ? *out.load : out.load.emplace()); break;
         case kSupport: support(out.support ? *out.support : out.support.emplace()); break;
+        case kSceneMu:  // the scene-wide μ (read_scene_tree's message when negative)
+          scene_mu_sign = contact_number(scene_mu_, 4, scene_mu_.mu, scene_mu_.twin.mu);
+          if (scene_mu_sign < 0) defer();
+          break;
       }
     });
     if (!(seen & kVersion)) defer();
     if (peek() != kEnd) defer();  // data after the scene
+    if (seen & kSceneMu)  // every point contact without its own mu takes the scene's (wherever the key stood)
+      for (const std::size_t k : without_mu_) {
+        Contact& c = out.contacts[k];
+        c.mu = scene_mu_.mu;
+        c.twin.mu = scene_mu_.twin.mu;
+        c.twin.frictional = scene_mu_sign != 0;
+        c.number_text[4] = scene_mu_.number_text[4];
+        c.number_is_json[4] = scene_mu_.number_is_json[4];
+        c.mu_given = true;
+      }
     if (!(seen & kBody)) {
       out.body.outline.clear();
       out.body.com.reset();
@@ -109,6 +128,8 @@ class Stream {
   bool lazy_;
   std::size_t i_ = 0;
   std::string why_;      // the number readers' reason (unused: any failure defers)
+  Contact scene_mu_;                    // the scene-wide "mu", read into its mu slot as a contact's mu is
+  std::vector<std::size_t> without_mu_;  // the point contacts without their own mu, in this scene
   Budget_tally tally_;   // [BUDGET] the scene's measures so far: over budget defers (read_scene_tree says why)
   std::string decoded_;  // a string with escapes or non-ASCII, decoded by json::decode_string
 

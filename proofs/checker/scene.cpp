@@ -140,8 +140,9 @@ Contact make_contact(bool wrench, const Read_number* n, std::size_t count, const
   return c;
 }
 
-// {at, normal, mu?, name?} (normal != 0, mu >= 0) or {wrench, name?} (wrench != 0).
-Contact read_contact(Reader& r, const Limits& lim) {
+// {at, normal, mu?, name?} (normal != 0, mu >= 0) or {wrench, name?} (wrench != 0). A point contact without mu
+// leaves its numbers in *no_mu (when given): the scene-wide "mu", which may come later, replaces its "0".
+Contact read_contact(Reader& r, const Limits& lim, std::optional<std::array<Read_number, 5>>* no_mu = nullptr) {
   begin_object(r, "expected an object {\"at\", \"normal\", \"mu\"?, \"name\"?} or {\"wrench\", \"name\"?}");
   Read_number point[5], wrench[3];  // x, y, nx, ny, mu ("0" if absent); fx, fy, m
   std::string_view key;
@@ -183,6 +184,7 @@ Contact read_contact(Reader& r, const Limits& lim) {
       r.fail(f.message.substr(2));
     }
   }
+  if (!(keys & kMu) && no_mu) *no_mu = std::array<Read_number, 5>{point[0], point[1], point[2], point[3], point[4]};
   return make_contact(false, point, 5, lim);
 }
 
@@ -493,9 +495,14 @@ Scene read_scene(Reader& r, const Limits& lim) {
   };
   std::optional<Body> body;  // (rationals only for the members present: each costs an allocation)
   std::optional<Load> load;
+  std::optional<Read_number> scene_mu;  // the scene-wide "mu" (docs/scene-format.md)
+  std::vector<std::pair<std::size_t, std::array<Read_number, 5>>> without_mu;  // point contacts that take it
   std::string_view key;
   while (r.next_key(key)) {
-    if (key == "wrenchkit") {
+    if (key == "mu") {
+      scene_mu = read_contact_number(r, lim);
+      if (scene_mu->negative) r.fail(quote(scene_mu->text) + " is negative");
+    } else if (key == "wrenchkit") {
       const Read_number v = read_contact_number(r, lim);
       if (v.fits ? v.value.num != v.value.den : scene_number(v.text, lim, "") != 1)
         r.fail("expected 1 (the scene format version)");
@@ -514,13 +521,20 @@ Scene read_scene(Reader& r, const Limits& lim) {
         if (scene.contacts.size() == lim.max_contacts)
           throw Failure{"contacts: more than " + std::to_string(lim.max_contacts) + " contacts"};
         if (Tally::reading) Tally::reading->entry("contacts", scene.contacts.size(), lim);
-        scene.contacts.push_back(read_contact(r, lim));
+        std::optional<std::array<Read_number, 5>> no_mu;
+        scene.contacts.push_back(read_contact(r, lim, &no_mu));
+        if (no_mu) without_mu.emplace_back(scene.contacts.size() - 1, *no_mu);
       }
     } else {
       r.fail("unknown key " + quote(key), true);
     }
   }
   if (!has_version) r.fail("missing required key \"wrenchkit\"");
+  if (scene_mu)
+    for (auto& [i, numbers] : without_mu) {
+      numbers[4] = *scene_mu;
+      scene.contacts[i] = make_contact(false, numbers.data(), 5, lim);
+    }
   // Gravity beside a support is the weight pressing the body on it (scene-format.md): it sets W and, at body.com,
   // the centre of pressure c, and pushes nothing in the plane. A written weight or pressure_center must agree.
   const bool across = scene.support && load && load->form == Load::Form::gravity;
