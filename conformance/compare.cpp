@@ -440,6 +440,21 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
         count(&Field_tally::disagree);
         if (c.disagreements.back().kind != "value") count(c.disagreements.back().unsafe ? &Field_tally::unsafe : &Field_tally::lost);
       };
+      // hold and motion, one rule (docs/reference-format.md §6): agree; on an impending reference a side is the
+      // boundary, neither unsafe nor lost; else a disagreement, unsafe where the answer claims friction holds (with
+      // margin, `held`, or just, "impending") and the reference does not hold with margin.
+      const auto outcome = [&](const std::string& reference, const std::string& answer, const char* held,
+                               const std::string& word) {
+        count(&Field_tally::compared);
+        if (reference == answer) return count(&Field_tally::agree);
+        if (reference == "impending") return count(&Field_tally::boundary);
+        Disagreement d;
+        d.reference = reference;
+        d.answer = answer;
+        d.unsafe = answer == held || (answer == "impending" && reference != held);
+        d.kind = "falsely " + word;
+        disagree(std::move(d));
+      };
       const std::string where = a.where + ": " + field;
       const bool applicable = field == "equilibrium"                                  ? ref.verdicts.count(field) != 0
                               : field == "motion"                                     ? ref.has_motion
@@ -477,20 +492,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
                             ", \"impending\", \"depends\" or null");
         if (!ref.has_hold) throw Input_error(where + ": scene \"" + a.id + "\" has no load (no hold answer)");
         if (ref.hold.empty()) continue;  // the corpus has no certified answer (undecided or refused): nothing to compare
-        count(&Field_tally::compared);
-        if (ref.hold == h) {
-          count(&Field_tally::agree);
-        } else if (ref.hold == "impending") {
-          count(&Field_tally::boundary);
-        } else {
-          Disagreement d;
-          d.reference = ref.hold;
-          d.answer = h;
-          // Unsafe: claims friction holds (with margin or just) where it does not for some (or every) distribution.
-          d.unsafe = h == "true" || (h == "impending" && ref.hold != "true");
-          d.kind = "falsely " + std::string(h == "true" ? "holds" : h == "false" ? "fails" : h);
-          disagree(std::move(d));
-        }
+        outcome(ref.hold, h, "true", h == "true" ? "holds" : h == "false" ? "fails" : h);
       } else if (field == "motion") {
         if (v.type != json::Type::string ||
             (v.text != "sticks" && v.text != "impending" && v.text != "slides" && v.text != "depends"))
@@ -499,20 +501,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
         if (!ref.has_motion)
           throw Input_error(where + ": scene \"" + a.id + "\" has no load on a support (no motion answer)");
         if (ref.motion.empty()) continue;  // the corpus has no certified answer: nothing to compare with
-        count(&Field_tally::compared);
-        if (ref.motion == v.text) {
-          count(&Field_tally::agree);
-        } else if (ref.motion == "impending") {
-          count(&Field_tally::boundary);
-        } else {
-          Disagreement d;
-          d.reference = ref.motion;
-          d.answer = v.text;
-          // Unsafe: claims friction holds it (with margin or just) where it slides for some (or every) distribution.
-          d.unsafe = v.text == "sticks" || (v.text == "impending" && ref.motion != "sticks");
-          d.kind = "falsely " + v.text;
-          disagree(std::move(d));
-        }
+        outcome(ref.motion, v.text, "sticks", v.text);
       } else if (field == "center_of_friction" || field == "power" || field == "power_range") {
         if (!ref.limit_surface)
           throw Input_error(where + ": scene \"" + a.id + "\" has no support (no " + field + " answer)");
