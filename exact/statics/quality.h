@@ -1,0 +1,81 @@
+// [QL-1] How good is the grasp: the Ferrari–Canny quality ε of the contacts with their friction, exact or in a
+// certified bracket (docs/quality.md, proofs/notes/QL-1-quality.md, proofs/certificate-format.md §3.4).
+//
+// The grasp wrench space of the planar contacts is a convex polytope in (fx, fy, s·m) — m the moment about the
+// point `about`, s the torque scale — built from each contact's friction-cone edges scaled so that a contact's
+// force is at most one unit (the normalisation):
+//   L1   conv{every scaled edge}             (the contacts' normal forces sum to at most 1);
+//   L∞   Σ_i conv{0, contact i's scaled edges} (each contact's normal force at most 1; a Minkowski sum).
+// ε is the radius of the largest ball about the origin inside it: 0 unless the contacts are in force closure.
+//
+// Exact: the edges of proofs/certificate-format.md §1 are rational; a normalisation multiplies contact i's edges by
+// c_i = 1/√q_i (q_i = |n_i|² for unit-normal, |n_i|²(1 + μ_i²) for unit-force, 1 as given). When every c_i is
+// rational, ε² is rational and given exactly. Otherwise c_i is replaced by a rational c̃_i within η_i of it, ε̃ of
+// the rational polytope computed exactly, and ε bracketed by ε̃ ± δ (δ the generators' largest displacement, L1, or
+// their sum over the contacts, L∞: ε is 1-Lipschitz in the support function) to the relative tolerance asked.
+//
+// L1: an exact incremental convex hull of the (at most a few hundred) scaled edges; its triangles are the
+// certificate's closed, positively oriented boundary, and ε² = min over them of b²/|n|². L∞: the facets of a
+// Minkowski sum of triangles have normals among the triangles' normals and the cross products of two contacts'
+// edge directions; ε = min over those O(n²) candidates of the support function over |d|, O(n³) in all.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "core/mode.h"
+#include "exact/io/scene.h"
+#include "exact/numbers/vectors.h"
+#include "exact/statics/closure.h"
+
+namespace wrenchkit {
+
+enum class Quality_norm { l1, linf };
+enum class Force_normalization { unit_normal, unit_force, as_given };
+const char* quality_norm_name(Quality_norm n);            // "L1", "Linf"
+const char* normalization_name(Force_normalization n);    // "unit-normal", "unit-force", "as-given"
+
+struct Quality_query {
+  Quality_norm norm = Quality_norm::l1;
+  Force_normalization normalize = Force_normalization::unit_normal;
+  Rational torque_scale = 1;       // s > 0: the moment's weight against a force
+  std::optional<Vec2> about;       // the moments' point; default body.com when the scene has one, else the origin
+  Rational tolerance{1ul, 1000000000000ul};  // the bracket's width relative to its lower end (ε not rational)
+};
+
+// One contact's scale: its edges are multiplied by `scale` (c̃_i); the true c_i = 1/√q_i lies within `error` of it
+// (0: exact); `bound` ≥ |u| for each of its unscaled edges u (as wrenches about `about` with the torque scale).
+struct Quality_scale {
+  Rational q, scale, error, bound;
+};
+
+struct Quality_answer {
+  Quality_query query;
+  Vec2 about;                   // resolved
+  Closure_answer closure;       // force closure of the contacts: ε > 0 exactly when it holds
+  bool exact = false;           // ε² is rational and `squared` is it
+  Rational squared;             // ε² (exact) or ε̃² (of the rational polytope)
+  Rational lower, upper;        // ε ∈ [lower, upper]; lower = upper = ε when ε is rational
+  std::vector<Quality_scale> scales;  // per contact
+  std::vector<Generator_ref> refs;    // the generators (friction reading) in §1 order
+  std::vector<Vec3q> points;          // their scaled wrenches (fx, fy, s·m about `about`), c̃ applied
+  // ε > 0, L1: the boundary of conv(points), triangles of point indices, each positively oriented (det > 0), and
+  // the one nearest the origin.
+  std::vector<std::array<std::size_t, 3>> boundary;
+  std::array<std::size_t, 3> nearest{};
+  // ε > 0: the outward normal of a nearest facet (L1: of `nearest`; L∞: the candidate attaining the minimum)
+  Vec3q normal;
+  std::size_t hull_points = 0;  // L1: points on the hull (for the text)
+};
+
+// The quality of the scene's contacts (the friction reading, each contact with its own μ). Closure is decided in
+// `mode` (Mode::float_only may leave it undecided: closure.decided false and nothing else set); ε itself is exact
+// arithmetic. Throws Input_error for a scene without contacts or a question that does not apply (torque scale ≤ 0).
+Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mode mode);
+
+// The scaled wrench of a §1 generator g of a contact with scale c: c·(fx, fy, s·(m − about × f)).
+Vec3q quality_wrench(const Vec3q& g, const Rational& c, const Rational& s, const Vec2& about);
+
+}  // namespace wrenchkit

@@ -1,0 +1,164 @@
+// [QL-1] The grasp quality ε: golden cases worked by hand, and an independent brute force (the supporting planes
+// through every triple of points of the wrench space, L∞'s points being every sum of one point per contact) on
+// random grasps, for both norms; brackets against the exact value of the same grasp written with unit normals.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "exact/io/scene.h"
+#include "exact/statics/generators.h"
+#include "exact/statics/quality.h"
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+using namespace test;
+
+Scene scene_of(const std::string& text) { return read_scene(text, Input_limits{}); }
+
+// ε² of conv(S) by brute force: the minimum of off²/|n|² over the planes through three points of S with every point
+// on one side (the facets' planes); 0 when the origin is not strictly inside (or S is flat).
+Rational brute_epsilon_squared(const std::vector<Vec3q>& S) {
+  bool any = false;
+  Rational best;
+  for (std::size_t a = 0; a < S.size(); ++a)
+    for (std::size_t b = a + 1; b < S.size(); ++b)
+      for (std::size_t c = b + 1; c < S.size(); ++c) {
+        const Vec3q u{S[b][0] - S[a][0], S[b][1] - S[a][1], S[b][2] - S[a][2]};
+        const Vec3q v{S[c][0] - S[a][0], S[c][1] - S[a][1], S[c][2] - S[a][2]};
+        Vec3q n = cross(u, v);
+        if (is_zero(n)) continue;
+        Rational off = dot(n, S[a]);
+        int above = 0, below = 0;
+        for (const Vec3q& p : S) {
+          const Rational s = dot(n, p) - off;
+          above += s > 0, below += s < 0;
+        }
+        if (above && below) continue;  // not a supporting plane
+        if (!above && !below) return 0;  // S is flat
+        if (above) n = {-n[0], -n[1], -n[2]}, off = -off;
+        if (off <= 0) return 0;  // the origin on the plane or beyond it
+        const Rational d = off * off / dot(n, n);
+        if (!any || d < best) best = d, any = true;
+      }
+  return any ? best : Rational(0);
+}
+
+// The points of the wrench space as the definition states them (not as the engine builds them): L1 every scaled
+// edge; L∞ every sum of one point (0 or an edge) per contact.
+std::vector<Vec3q> brute_points(const Scene& scene, Quality_norm norm, const Rational& s, const Vec2& about) {
+  std::vector<std::vector<Vec3q>> per(scene.contacts.size());
+  for (const Generator& g : generators(scene, Reading::friction)) {
+    const Vec3q f{g.w[0], g.w[1], s * (g.w[2] - (about.x * g.w[1] - about.y * g.w[0]))};
+    per[g.contact].push_back(f);
+  }
+  std::vector<Vec3q> out;
+  if (norm == Quality_norm::l1) {
+    for (const auto& p : per) out.insert(out.end(), p.begin(), p.end());
+    return out;
+  }
+  out.push_back({0, 0, 0});
+  for (const auto& p : per) {
+    std::vector<Vec3q> next = out;
+    for (const Vec3q& x : out)
+      for (const Vec3q& e : p) next.push_back({x[0] + e[0], x[1] + e[1], x[2] + e[2]});
+    out = std::move(next);
+  }
+  return out;
+}
+
+Quality_query query(Quality_norm norm, Force_normalization f = Force_normalization::as_given) {
+  Quality_query q;
+  q.norm = norm;
+  q.normalize = f;
+  return q;
+}
+
+// Two fingers at (∓1, 0) pressing inward with μ = 1: the edges are the alternate corners of the cube [−1, 1]³, a
+// regular tetrahedron of inradius 1/√3.
+const char* kTwoFingers = R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": 1},
+                                           {"at": [1, 0], "normal": [-1, 0], "mu": 1}]})";
+
+TEST(QualityGolden, TwoFingersTetrahedron) {
+  const Quality_answer a = decide_quality(scene_of(kTwoFingers), query(Quality_norm::l1), Mode::exact);
+  ASSERT_TRUE(a.closure.holds);
+  EXPECT_TRUE(a.exact);
+  EXPECT_EQ(a.squared, Rational(1, 3));
+  EXPECT_EQ(a.boundary.size(), 4u);
+  EXPECT_LE(a.lower * a.lower, Rational(1, 3));
+  EXPECT_GE(a.upper * a.upper, Rational(1, 3));
+  EXPECT_LE(a.upper - a.lower, a.query.tolerance * a.lower);
+}
+
+// Unit-force: every edge divided by √2, so ε = 1/√6, irrational: a bracket within the tolerance.
+TEST(QualityGolden, TwoFingersUnitForceBracket) {
+  const Quality_answer a = decide_quality(scene_of(kTwoFingers), query(Quality_norm::l1, Force_normalization::unit_force), Mode::exact);
+  EXPECT_FALSE(a.exact);
+  EXPECT_LT(a.lower * a.lower * 6, Rational(1));
+  EXPECT_GT(a.upper * a.upper * 6, Rational(1));
+  EXPECT_LE(a.upper - a.lower, a.query.tolerance * a.lower);
+}
+
+// Not in closure (two frictionless fingers): ε = 0, exactly.
+TEST(QualityGolden, OpenGraspIsZero) {
+  const Quality_answer a = decide_quality(
+      scene_of(R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0]}, {"at": [1, 0], "normal": [-1, 0]}]})"),
+      query(Quality_norm::l1), Mode::exact);
+  EXPECT_FALSE(a.closure.holds);
+  EXPECT_TRUE(a.exact);
+  EXPECT_EQ(a.upper, 0);
+}
+
+// Normals of length 5 (3-4-5): unit-normal divides by 5 exactly, so ε² stays rational and is 1/25 of the as-given
+// one for the same directions.
+TEST(QualityGolden, RationalUnitNormalIsExact) {
+  const char* scene = R"({"wrenchkit": 1, "contacts": [{"at": [0, -1], "normal": [3, 4], "mu": "1/2"}, {"at": [1, 1], "normal": [-4, -3], "mu": "1/2"},
+                                       {"at": [-1, 1], "normal": [4, -3], "mu": "1/2"}]})";
+  const Quality_answer given = decide_quality(scene_of(scene), query(Quality_norm::l1), Mode::exact);
+  const Quality_answer unit = decide_quality(scene_of(scene), query(Quality_norm::l1, Force_normalization::unit_normal), Mode::exact);
+  ASSERT_TRUE(given.closure.holds);
+  ASSERT_TRUE(unit.exact);
+  EXPECT_EQ(unit.squared * 25, given.squared);
+}
+
+// Random grasps likely to be closed: 2–5 contacts at small integer points, each normal pointing roughly at the
+// origin, μ from a few fractions (and now and then a frictionless one).
+std::string inward_grasp(std::mt19937_64& rng, int n) {
+  const char* mus[] = {"", "1/4", "1/3", "1/2", "1", "2"};
+  std::vector<Contact_spec> cs;
+  for (int i = 0; i < n; ++i) {
+    int x = 0, y = 0;
+    while (x == 0 && y == 0) x = static_cast<int>(rng() % 7) - 3, y = static_cast<int>(rng() % 7) - 3;
+    const int nx = -x + static_cast<int>(rng() % 3) - 1, ny = -y + static_cast<int>(rng() % 3) - 1;
+    if (nx == 0 && ny == 0) continue;
+    cs.push_back({std::to_string(x), std::to_string(y), std::to_string(nx), std::to_string(ny), mus[rng() % 6]});
+  }
+  return scene_json(cs);
+}
+
+// Both norms against the brute force on random grasps (the contacts' own μ, as given, moments about the origin).
+TEST(QualityOracle, RandomGraspsAgainstBruteForce) {
+  std::mt19937_64 rng(seed(20261128));
+  int closed = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    const int n = 2 + static_cast<int>(rng() % 4);
+    const std::string text = trial % 3 == 0 ? scene_json(random_contacts(rng, n)) : inward_grasp(rng, n);
+    const Scene scene = scene_of(text);
+    if (scene.contacts.empty()) continue;
+    for (Quality_norm norm : {Quality_norm::l1, Quality_norm::linf}) {
+      if (norm == Quality_norm::linf && scene.contacts.size() > 3) continue;  // the brute force's 3^n points
+      const Quality_answer a = decide_quality(scene, query(norm), Mode::exact);
+      const Rational want = brute_epsilon_squared(brute_points(scene, norm, 1, {}));
+      ASSERT_TRUE(a.exact);
+      ASSERT_EQ(a.squared, want) << quality_norm_name(norm) << " " << dump_failure(text, "quality_oracle");
+      ASSERT_EQ(a.closure.holds, want > 0) << dump_failure(text, "quality_oracle");
+      closed += a.closure.holds;
+    }
+  }
+  EXPECT_GT(closed, 40);
+}
+
+}  // namespace
+}  // namespace wrenchkit
