@@ -7,9 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "exact/certificates/certificates.h"
 #include "exact/io/scene.h"
 #include "exact/statics/generators.h"
 #include "exact/statics/quality.h"
+#include "proofs/checker/checker.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {
@@ -17,6 +19,12 @@ namespace {
 using namespace test;
 
 Scene scene_of(const std::string& text) { return read_scene(text, Input_limits{}); }
+
+// The independent checker's verdict on the answer's certificate: "" when accepted.
+std::string rejected(const std::string& scene, const Quality_answer& a) {
+  const wrenchkit_checker::Result r = wrenchkit_checker::check(scene, certificate_json(a), wrenchkit_checker::Limits{});
+  return r.outcome == wrenchkit_checker::Outcome::accepted ? "" : r.message + "\n" + certificate_json(a);
+}
 
 // ε² of conv(S) by brute force: the minimum of off²/|n|² over the planes through three points of S with every point
 // on one side (the facets' planes); 0 when the origin is not strictly inside (or S is flat).
@@ -90,6 +98,7 @@ TEST(QualityGolden, TwoFingersTetrahedron) {
   EXPECT_LE(a.lower * a.lower, Rational(1, 3));
   EXPECT_GE(a.upper * a.upper, Rational(1, 3));
   EXPECT_LE(a.upper - a.lower, a.query.tolerance * a.lower);
+  EXPECT_EQ(rejected(kTwoFingers, a), "");
 }
 
 // Unit-force: every edge divided by √2, so ε = 1/√6, irrational: a bracket within the tolerance.
@@ -99,6 +108,7 @@ TEST(QualityGolden, TwoFingersUnitForceBracket) {
   EXPECT_LT(a.lower * a.lower * 6, Rational(1));
   EXPECT_GT(a.upper * a.upper * 6, Rational(1));
   EXPECT_LE(a.upper - a.lower, a.query.tolerance * a.lower);
+  EXPECT_EQ(rejected(kTwoFingers, a), "");
 }
 
 // Not in closure (two frictionless fingers): ε = 0, exactly.
@@ -154,6 +164,10 @@ TEST(QualityOracle, RandomGraspsAgainstBruteForce) {
       ASSERT_TRUE(a.exact);
       ASSERT_EQ(a.squared, want) << quality_norm_name(norm) << " " << dump_failure(text, "quality_oracle");
       ASSERT_EQ(a.closure.holds, want > 0) << dump_failure(text, "quality_oracle");
+      ASSERT_EQ(rejected(text, a), "") << dump_failure(text, "quality_oracle");
+      Quality_query uf = query(norm, Force_normalization::unit_force);
+      const Quality_answer b = decide_quality(scene, uf, Mode::exact);
+      ASSERT_EQ(rejected(text, b), "") << dump_failure(text, "quality_oracle");
       closed += a.closure.holds;
     }
   }

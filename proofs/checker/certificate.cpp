@@ -13,13 +13,58 @@ const Motion_part& members(const Certificate& c) {
 }
 
 // A certificate rational's text (a JSON string, its grammar checked; a view valid while the reader is).
-std::string_view read_rational_text(Reader& r) {
+std::string_view read_rational_text(Reader& r) {  // (certificate.h)
   if (r.peek() != Kind::string) r.fail("expected a rational as a JSON string, such as \"-3/4\"");
   const std::string_view s = r.string_view();
   if (!rational_grammar(s)) not_a_rational(s, r.path());
   return s;
 }
 Q read_rational(Reader& r) { return rational_value(read_rational_text(r)); }
+
+std::size_t read_index(Reader& r, const char* what) {
+  if (r.peek() != Kind::number) r.fail(std::string("expected a ") + what + " (a JSON integer)");
+  const std::string t(r.number());
+  if (t.find_first_not_of("0123456789") != std::string::npos || t.size() > 18)
+    r.fail(std::string("expected a ") + what + ": a JSON integer without sign, fraction or exponent, not " + clip(t));
+  unsigned long long v = 0;
+  for (const char d : t) v = v * 10 + static_cast<unsigned>(d - '0');
+  return v < SIZE_MAX ? static_cast<std::size_t>(v) : SIZE_MAX;
+}
+
+// The members of property "quality" (§3.4): "epsilon" {"lower", "upper", "squared"?}, "scales" [{"scale", "error",
+// "bound"}, …], index triples.
+void read_epsilon(Reader& r, Quality_part& q) {
+  begin_object(r, "expected an object {\"lower\", \"upper\", \"squared\"}");
+  bool lower = false, upper = false;
+  std::string_view key;
+  while (r.next_key(key)) {
+    if (key == "lower") lower = true, q.lower = read_rational(r);
+    else if (key == "upper") upper = true, q.upper = read_rational(r);
+    else if (key == "squared") q.has_squared = true, q.squared = read_rational(r);
+    else r.fail("unknown key " + quote(key), true);
+  }
+  if (!lower) r.fail("missing required key \"lower\"");
+  if (!upper) r.fail("missing required key \"upper\"");
+}
+void read_scales(Reader& r, Quality_part& q) {
+  begin_array(r, "expected an array of {\"scale\", \"error\", \"bound\"}, one per contact");
+  while (r.next_item()) {
+    Quality_part::Scale& s = q.scales.emplace_back();
+    begin_object(r, "expected an object {\"scale\", \"error\", \"bound\"}");
+    unsigned keys = 0;
+    std::string_view key;
+    while (r.next_key(key)) {
+      if (key == "scale") keys |= 1, s.scale = read_rational(r);
+      else if (key == "error") keys |= 2, s.error = read_rational(r);
+      else if (key == "bound") keys |= 4, s.bound = read_rational(r);
+      else r.fail("unknown key " + quote(key), true);
+    }
+    if (keys != 7) r.fail("expected the keys \"scale\", \"error\" and \"bound\"");
+  }
+}
+void read_triple(Reader& r, std::array<std::size_t, 3>& t) {
+  read_fixed(r, 3, "an array of three generator indices [i, j, k]", [&](std::size_t k) { t[k] = read_index(r, "generator index"); });
+}
 
 // {"contact": i, "edge": E} and, if weighted, "weight": "p/q".
 Term read_term(Reader& r, bool weighted, const char* list, std::size_t item) {
@@ -134,13 +179,7 @@ Block read_block(Reader& r) {
       while (r.next_item()) {
         b.triangles.emplace_back();
         read_fixed(r, 3, "an array of three vertex indices [i, j, k]", [&](std::size_t k) {
-          if (r.peek() != Kind::number) r.fail("expected a vertex index (a JSON integer)");
-          const std::string t(r.number());
-          if (t.find_first_not_of("0123456789") != std::string::npos || t.size() > 18)
-            r.fail("expected a vertex index: a JSON integer without sign, fraction or exponent, not " + clip(t));
-          unsigned long long v = 0;
-          for (const char d : t) v = v * 10 + static_cast<unsigned>(d - '0');
-          b.triangles.back()[k] = v < SIZE_MAX ? static_cast<std::size_t>(v) : SIZE_MAX;
+          b.triangles.back()[k] = read_index(r, "vertex index");
         });
       }
     } else if (key == "forces") {
@@ -196,17 +235,19 @@ Certificate read_certificate(Reader& r) {
     c.keys.insert(key);
     if (key == "wrenchkit_certificate") {
       const std::string_view v = r.peek() == Kind::number ? r.number() : "";
-      if (v != "1" && v != "2" && v != "3") r.fail("expected the integer 1, 2 or 3");
+      if (v != "1" && v != "2" && v != "3" && v != "4") r.fail("expected the integer 1, 2, 3 or 4");
       c.version = v[0] - '0';
     } else if (key == "property") {
       const std::string_view p = r.peek() == Kind::string ? r.string_view() : "";
-      if (p != "force_closure" && p != "form_closure" && p != "equilibrium" && p != "motion" && p != "hold")
-        r.fail("expected \"force_closure\", \"form_closure\", \"equilibrium\", \"motion\" or \"hold\"");
+      if (p != "force_closure" && p != "form_closure" && p != "equilibrium" && p != "motion" && p != "hold" &&
+          p != "quality")
+        r.fail("expected \"force_closure\", \"form_closure\", \"equilibrium\", \"motion\", \"hold\" or \"quality\"");
       c.property = p;
       c.reading = p == "form_closure" ? Reading::frictionless : Reading::friction;
       c.equilibrium = p == "equilibrium";
       c.motion = p == "motion";
       c.hold = p == "hold";
+      c.quality = p == "quality";
     } else if (key == "holds") {
       if (r.peek() == Kind::string) {  // property "hold" only (checked once the property is known)
         const std::string_view v = r.string_view();
@@ -259,6 +300,26 @@ Certificate read_certificate(Reader& r) {
     } else if (key == "regions") {
       begin_array(r, "expected an array of region blocks (one per support region)");
       while (r.next_item()) c.m().regions.push_back(read_block(r));
+    } else if (key == "norm" || key == "normalize") {
+      const std::string_view v = r.peek() == Kind::string ? r.string_view() : "";
+      if (key == "norm" ? v != "L1" && v != "Linf" : v != "unit-normal" && v != "unit-force" && v != "as-given")
+        r.fail(key == "norm" ? "expected \"L1\" or \"Linf\"" : "expected \"unit-normal\", \"unit-force\" or \"as-given\"");
+      (key == "norm" ? c.q().norm : c.q().normalize) = v;
+    } else if (key == "torque_scale") {
+      c.q().torque_scale = read_rational(r);
+    } else if (key == "about") {
+      read_fixed(r, 2, "an array of two rationals [x, y]", [&](std::size_t k) { c.q().about[k] = read_rational(r); });
+    } else if (key == "scales") {
+      read_scales(r, c.q());
+    } else if (key == "epsilon") {
+      read_epsilon(r, c.q());
+    } else if (key == "boundary") {
+      begin_array(r, "expected an array of [i, j, k] generator indices");
+      while (r.next_item()) read_triple(r, c.q().boundary.emplace_back());
+    } else if (key == "nearest") {
+      read_triple(r, c.q().nearest);
+    } else if (key == "normal") {
+      read_fixed(r, 3, "an array of three rationals [a, b, c]", [&](std::size_t k) { c.q().normal[k] = read_rational(r); });
     } else {
       r.fail("unknown key " + quote(key), true);
     }
@@ -283,6 +344,17 @@ void check_keys(const Certificate& c) {
       throw Failure{"key \"independent\" is not allowed when \"property\" is \"equilibrium\""};
   };
   need("wrenchkit_certificate"), need("property");
+  if ((c.version == 4) != c.quality)
+    throw Failure{c.quality ? "wrenchkit_certificate: property \"quality\" is format 4 (expected the integer 4)"
+                            : "wrenchkit_certificate: format 4 is property \"quality\" only (expected 1, 2 or 3)"};
+  if (c.quality) return;  // check_quality() decides which keys its claim needs
+  static const char* const quality_keys[] = {"norm", "normalize", "torque_scale", "about", "scales",
+                                             "epsilon", "boundary", "nearest", "normal"};
+  static const unsigned quality_mask = Key_set::mask(quality_keys);
+  if (c.keys.any(quality_mask))
+    for (const char* key : quality_keys)
+      if (c.keys.count(key))
+        throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is " + quote(c.property)};
   if ((c.depends || c.impending) && !c.hold)
     throw Failure{std::string("holds: ") + (c.depends ? "\"depends\"" : "\"impending\"") +
                   " is only a claim of property \"hold\" (expected true or false)"};

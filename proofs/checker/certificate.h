@@ -74,7 +74,9 @@ class Key_set {
     static const std::string_view known[] = {"wrenchkit_certificate", "property", "holds", "combination",
                                              "independent", "twist", "reading", "load", "motion",
                                              "support_forces", "speed_bounds", "dual", "vertices", "sticking",
-                                             "sliding", "holding", "failing", "regions"};
+                                             "sliding", "holding", "failing", "regions", "norm", "normalize",
+                                             "torque_scale", "about", "scales", "epsilon", "boundary", "nearest",
+                                             "normal"};
     for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
       if (known[i] == key) return i;
     return -1;
@@ -98,6 +100,21 @@ struct Motion_part {
   std::vector<Block> regions;
 };
 
+// The members of property "quality" (§3.4).
+struct Quality_part {
+  std::string_view norm, normalize;  // "L1" or "Linf"; "unit-normal", "unit-force" or "as-given"
+  Q torque_scale, about[2];
+  struct Scale {
+    Q scale, error, bound;
+  };
+  std::vector<Scale> scales;
+  Q lower, upper, squared;  // epsilon
+  bool has_squared = false;
+  std::vector<std::array<std::size_t, 3>> boundary;
+  std::array<std::size_t, 3> nearest{};
+  Q normal[3];
+};
+
 struct Certificate {
   Key_set keys;  // the keys present
   std::string_view property;
@@ -105,6 +122,7 @@ struct Certificate {
   bool equilibrium = false;  // property "equilibrium" (§3.3), read with friction
   bool motion = false;       // property "motion" (§6)
   bool hold = false;         // property "hold" (§7), read with friction
+  bool quality = false;      // property "quality" (§3.4, format 4), read with friction
   bool holds = false;
   bool depends = false;      // "holds": "depends" (property "hold" only)
   bool impending = false;    // "holds": "impending" (property "hold", format 3 only)
@@ -122,17 +140,26 @@ struct Certificate {
     if (!motion_members) motion_members = std::make_unique<Motion_part>();
     return *motion_members;
   }
+  std::unique_ptr<Quality_part> quality_members;  // allocated by q() when a member of §3.4 is read
+  Quality_part& q() {
+    if (!quality_members) quality_members = std::make_unique<Quality_part>();
+    return *quality_members;
+  }
 };
 
 const Motion_part& members(const Certificate& c);  // its members of "motion" and "hold" (all empty if none)
 Certificate read_certificate(Reader& r);
+std::size_t read_index(Reader& r, const char* what);  // a JSON integer without sign, fraction or exponent
+Q read_rational(Reader& r);
+std::string_view read_rational_text(Reader& r);
 void check_keys(const Certificate& c);  // the keys that must, and must not, be present (§3, §3.3)
 
 // The checks of the properties, each against the scene: closure.cpp (§3.1, §3.2), equilibrium.cpp (§3.3),
-// motion.cpp (§6), hold.cpp (§7). Each returns if the certificate proves its claim, else throws the Failure.
+// quality.cpp (§3.4), motion.cpp (§6), hold.cpp (§7). Each returns if the certificate proves its claim, else throws the Failure.
 void check_closure(const Certificate& c, const Scene& scene, const Limits& lim);
 void check_equilibrium(const Certificate& c, const Scene& scene, const Limits& lim);
 void check_motion(const Certificate& c, const Scene& scene, const Limits& lim);
 void check_hold(const Certificate& c, const Scene& scene, const Limits& lim);
+void check_quality(const Certificate& c, const Scene& scene, const Limits& lim);  // quality.cpp (§3.4)
 
 }  // namespace wrenchkit_checker::detail
