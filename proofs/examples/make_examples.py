@@ -42,6 +42,18 @@ MAT_LEGS = {"wrenchkit": 1, "support": {"mu": "1/2", "weight": 5, "pressure_cent
 SQUARE_REGION = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 1}
 
 SCENES = {
+    "two_fingers_mu1": {
+        "wrenchkit": 1,
+        "name": "two fingers at (-1, 0) and (1, 0) pressing inward, mu = 1: the edges are alternate corners of the cube",
+        "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": 1, "name": "left finger"},
+                     {"at": [1, 0], "normal": [-1, 0], "mu": 1, "name": "right finger"}],
+    },
+    "two_fingers_mu0": {
+        "wrenchkit": 1,
+        "name": "the same two fingers without friction: not in force closure",
+        "contacts": [{"at": [-1, 0], "normal": [1, 0], "name": "left finger"},
+                     {"at": [1, 0], "normal": [-1, 0], "name": "right finger"}],
+    },
     "block_corner_mu0": {
         "wrenchkit": 1,
         "name": "frictionless unit block in a corner (certificate-format.md section 5)",
@@ -338,7 +350,56 @@ TRIANGLE_EDGES = [(c, e) for c in range(3) for e in ("left", "right")]
 WRENCHES = comb((0, "wrench", "1"), (1, "wrench", "1"), (2, "wrench", "1"), (3, "wrench", "1"))
 WRENCHES_IND = refs((0, "wrench"), (1, "wrench"), (2, "wrench"))
 
+def quality(norm, normalize, epsilon, **rest):
+    cert = {"wrenchkit_certificate": 4, "property": "quality", "norm": norm, "normalize": normalize,
+            "torque_scale": "1", "about": ["0", "0"], "epsilon": epsilon}
+    cert.update(rest)
+    return cert
+
+
+# Two fingers with mu = 1 (section 3.4): the generators (1,1,-1), (1,-1,1), (-1,-1,-1), (-1,1,1) are a regular
+# tetrahedron whose faces are at distance 1/sqrt 3 (L1); the L-infinity space's nearest facet has normal (-2, 1, -1)
+# and support 2, distance sqrt(2/3). Unit-force divides every edge by sqrt 2: the scale 181/256 is within 1/256 of
+# 1/sqrt 2, each edge has length sqrt 3 <= 7/4, so epsilon is within 7/1024 of (181/256)/sqrt 3.
+EXACT = [{"scale": "1", "error": "0", "bound": "7/4"}] * 2
+TETRA = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]
+ROOT2 = [{"scale": "181/256", "error": "1/256", "bound": "7/4"}] * 2
+
 CERTS = [
+    ("two_fingers_mu1", "quality_l1", "valid",
+     quality("L1", "as-given", {"lower": "577/1000", "upper": "289/500", "squared": "1/3"}, scales=EXACT,
+             boundary=TETRA, nearest=[0, 1, 2])),
+    ("two_fingers_mu1", "quality_unit_force", "valid",
+     quality("L1", "unit-force", {"lower": "2/5", "upper": "21/50"}, scales=ROOT2, boundary=TETRA, nearest=[0, 1, 2])),
+    ("two_fingers_mu1", "quality_linf", "valid",
+     quality("Linf", "as-given", {"lower": "4/5", "upper": "41/50", "squared": "2/3"}, scales=EXACT, normal=["-2", "1", "-1"])),
+    ("two_fingers_mu0", "quality_zero", "valid",
+     quality("L1", "unit-normal", {"lower": "0", "upper": "0", "squared": "0"}, twist=["0", "0", "1"])),
+    ("two_fingers_mu1", "quality_open_surface", "invalid:surface|has no reverse: the surface is not closed",
+     quality("L1", "as-given", {"lower": "577/1000", "upper": "289/500", "squared": "1/3"}, scales=EXACT,
+             boundary=TETRA[:3], nearest=[0, 1, 2])),
+    ("two_fingers_mu1", "quality_inward_triangle", "invalid:orientation|the origin is not strictly behind the triangle",
+     quality("L1", "as-given", {"lower": "577/1000", "upper": "289/500", "squared": "1/3"}, scales=EXACT,
+             boundary=[[0, 2, 1]] + TETRA[1:], nearest=[0, 3, 1])),
+    ("two_fingers_mu1", "quality_squared_wrong", "invalid:squared|epsilon.squared: 1/4 is not 1/3",
+     quality("L1", "as-given", {"lower": "1/2", "upper": "289/500", "squared": "1/4"}, scales=EXACT, boundary=TETRA,
+             nearest=[0, 1, 2])),
+    ("two_fingers_mu1", "quality_lower_too_high", "invalid:lower|epsilon.lower: 3/5 is above",
+     quality("L1", "as-given", {"lower": "3/5", "upper": "3/5", "squared": "1/3"}, scales=EXACT, boundary=TETRA,
+             nearest=[0, 1, 2])),
+    ("two_fingers_mu1", "quality_scale_not_exact", "invalid:scale|scales[0].scale: 181/256 is not 1/",
+     quality("L1", "unit-force", {"lower": "2/5", "upper": "21/50", "squared": "1/6"},
+             scales=[{"scale": "181/256", "error": "0", "bound": "7/4"}] * 2, boundary=TETRA, nearest=[0, 1, 2])),
+    ("two_fingers_mu1", "quality_bound_short", "invalid:bound|scales[0].bound: 3/2 is shorter than the edge",
+     quality("L1", "unit-force", {"lower": "2/5", "upper": "21/50"},
+             scales=[{"scale": "181/256", "error": "1/256", "bound": "3/2"}] * 2, boundary=TETRA, nearest=[0, 1, 2])),
+    ("two_fingers_mu1", "quality_linf_not_nearest", "invalid:normal|normal: not the normal of a facet nearest the origin",
+     quality("Linf", "as-given", {"lower": "4/5", "upper": "41/50", "squared": "2/3"}, scales=EXACT, normal=["1", "1", "-1"])),
+    ("two_fingers_mu1", "quality_zero_for_a_closed_grasp", "invalid:power|twist: power",
+     quality("L1", "as-given", {"lower": "0", "upper": "0", "squared": "0"}, twist=["0", "0", "1"])),
+    ("two_fingers_mu1", "quality_format_3", "invalid:header|property \"quality\" is format 4",
+     dict(quality("L1", "as-given", {"lower": "577/1000", "upper": "289/500", "squared": "1/3"}, scales=EXACT,
+                  boundary=TETRA, nearest=[0, 1, 2]), wrenchkit_certificate=3)),
     # block in a corner: not in force closure (nor form closure)
     ("block_corner_mu0", "translate_up", "valid",
      negative("force_closure", ["0", "1", "0"], {"label": "infinity", "direction": ["-1", "0"]})),
@@ -1274,8 +1335,109 @@ def verify_hold(scene, cert):
     return None if all(f in wit for f in vertices_of_F(pts, given, W, c, regions)) else "vertex"
 
 
+def verify_quality(scene, cert):
+    """Section 3.4: the grasp quality epsilon in [lower, upper]; None if proved, else a short reason."""
+    if cert.get("wrenchkit_certificate") != 4:
+        return "header"
+    norm, normalize, s = cert["norm"], cert["normalize"], rational(cert["torque_scale"])
+    ax, ay = (rational(v) for v in cert["about"])
+    eps = cert["epsilon"]
+    lower, upper = rational(eps["lower"]), rational(eps["upper"])
+    if s <= 0 or lower < 0 or lower > upper:
+        return "bracket"
+    contacts = scene.get("contacts", [])
+    gens = [generators(c, True) for c in contacts]
+    dot = lambda a, b: sum(x * y for x, y in zip(a, b))  # noqa: E731
+    cross = lambda u, v: (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])  # noqa: E731
+    sub = lambda a, b: tuple(x - y for x, y in zip(a, b))  # noqa: E731
+    if upper == 0:  # not in force closure: a twist with power >= 0 against every edge
+        t = [rational(v) for v in cert["twist"]]
+        if all(v == 0 for v in t):
+            return "zero twist"
+        if any(dot(t, w) < 0 for g in gens for w in g.values()):
+            return "power"
+        return None
+    scales = cert["scales"]
+    if len(scales) != len(contacts):
+        return "scales"
+    points, owner, delta_max, delta_sum, exact = [], [], F(0), F(0), True
+    for i, (c, g) in enumerate(zip(contacts, gens)):
+        sc, err, bound = (rational(scales[i][k]) for k in ("scale", "error", "bound"))
+        edges = [g[e] for e in ("left", "right", "normal", "wrench") if e in g]
+        u = [(fx, fy, s * (m - (ax * fy - ay * fx))) for fx, fy, m in edges]
+        if "wrench" in c or normalize == "as-given":
+            q = F(1)
+        elif normalize == "unit-force":
+            q = u[0][0] ** 2 + u[0][1] ** 2
+        else:
+            nx, ny = (number(v) for v in c["normal"])
+            q = nx * nx + ny * ny
+        if err == 0:
+            if sc * sc * q != 1:
+                return "scale"
+        elif sc - err < 0 or (sc - err) ** 2 * q > 1 or (sc + err) ** 2 * q < 1:
+            return "scale"
+        if any(bound * bound < dot(x, x) for x in u):
+            return "bound"
+        exact = exact and err == 0
+        delta_max, delta_sum = max(delta_max, err * bound), delta_sum + err * bound
+        for x in u:
+            points.append(tuple(sc * v for v in x))
+            owner.append(i)
+    if exact != ("squared" in eps):
+        return "squared"
+    if norm == "L1":
+        tris, seen, best = cert["boundary"], set(), None
+        for t in tris:
+            a, b, c = (points[k] for k in t)
+            n = cross(sub(b, a), sub(c, a))
+            off = dot(n, a)
+            if off <= 0:
+                return "orientation"
+            if any(dot(n, p) > off for p in points):
+                return "support"
+            for k in range(3):
+                e = (t[k], t[(k + 1) % 3])
+                if e in seen:
+                    return "surface"
+                seen.add(e)
+            d = off * off / dot(n, n)
+            best = d if best is None else min(best, d)
+        if any((b, a) not in seen for a, b in seen):
+            return "surface"
+        if cert["nearest"] not in tris:
+            return "nearest"
+        delta = delta_max
+    else:
+        groups = [[p for p, o in zip(points, owner) if o == i] for i in range(len(contacts))]
+        edges = [g + ([sub(g[0], g[1])] if len(g) == 2 else []) for g in groups]
+        normals = [cross(*g) for g in groups if len(g) == 2]
+        normals += [cross(e, f) for i in range(len(groups)) for j in range(i + 1, len(groups)) for e in edges[i] for f in edges[j]]
+        h = lambda d: sum(max([F(0)] + [dot(d, x) for x in g]) for g in groups)  # noqa: E731
+        values = [h(d) ** 2 / dot(d, d) for n in normals if any(n) for d in (n, tuple(-v for v in n))]
+        if not values or min(values) <= 0:
+            return "closure"
+        best = min(values)
+        n = [rational(v) for v in cert["normal"]]
+        if not any(n) or h(n) ** 2 / dot(n, n) != best:
+            return "normal"
+        delta = delta_sum
+    if exact and rational(eps["squared"]) != best:
+        return "squared"
+    if (lower + delta) ** 2 > best:
+        return "lower"
+    if upper - delta < 0 or (upper - delta) ** 2 < best:
+        return "upper"
+    return None
+
+
 def verify(scene, cert):
     """Returns None if cert proves its claim for scene, else a short reason."""
+    if cert.get("property") == "quality":
+        try:
+            return verify_quality(scene, cert)
+        except (ValueError, KeyError, TypeError) as e:
+            return f"malformed: {e}"
     keys = set(cert)
     allowed = {"wrenchkit_certificate", "property", "holds", "combination", "independent", "twist", "reading",
                "load", "motion", "support_forces", "speed_bounds", "dual", "vertices", "sticking", "sliding",
