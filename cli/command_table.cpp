@@ -187,6 +187,36 @@ const Option kTolerance{"tolerance", "EPS",
 
 const Option kResultant{"resultant", "fx,fy,m", "is this wrench a possible resultant of the contact forces?",
                         [](Options& o, S n, S v) { o.resultant = exact_values<3>(o, n, v, "fx,fy,m"); }};
+const Option kNorm{"norm", "L1|Linf",
+                   "the grasp wrench space: L1 (default), the hull of the edges (the normal forces sum to at most 1), "
+                   "or Linf, the sum of the contacts' cones (each normal force at most 1)",
+                   [](Options& o, S n, S v) {
+                     if (v == "L1" || v == "l1") o.quality.norm = Quality_norm::l1;
+                     else if (v == "Linf" || v == "linf" || v == "Linfinity") o.quality.norm = Quality_norm::linf;
+                     else bad_value(n, v, "is not one of L1, Linf");
+                   }};
+const Option kNormalize{"normalize", "unit-normal|unit-force|as-given",
+                        "each contact's edges scaled to normal component 1 (unit-normal, the default; Dex-Net's and "
+                        "GraspIt!'s), to unit forces (unit-force), or the edges n +- mu rot90(n) as the scene writes n",
+                        [](Options& o, S n, S v) {
+                          for (Force_normalization f : {Force_normalization::unit_normal, Force_normalization::unit_force,
+                                                        Force_normalization::as_given})
+                            if (v == normalization_name(f)) return void(o.quality.normalize = f);
+                          bad_value(n, v, "is not one of unit-normal, unit-force, as-given");
+                        }};
+const Option kTorqueScale{"torque-scale", "T",
+                          "the moment's weight against a force in the wrench space (T > 0, exact: 1 (default), 1/10, "
+                          "0.25): a wrench is (fx, fy, T*m)",
+                          [](Options& o, S n, S v) {
+                            const Rational t = exact_value(o, n, v);
+                            if (t <= 0) bad_value(n, v, "must be > 0");
+                            o.quality.torque_scale = t;
+                          }};
+const Option kAbout{"about", "x,y", "the point the moments are taken about (default: body.com if the scene has one, else the origin)",
+                    [](Options& o, S n, S v) {
+                      const std::array<Rational, 2> p = exact_values<2>(o, n, v, "x,y");
+                      o.quality.about = Vec2{p[0], p[1]};
+                    }};
 const Option kCenter{"center", "x,y", "a rotation about (x, y), counter-clockwise unless --sense cw",
                      [](Options& o, S n, S v) { o.center = exact_values<2>(o, n, v, "x,y"); }};
 const Option kSense{"sense", "ccw|cw", "the sense of the rotation of --center (default ccw)", [](Options& o, S n, S v) {
@@ -483,6 +513,31 @@ std::vector<Command> make_table() {
        run_hold,
        nullptr,
        prepare_hold_json});
+  t.push_back(
+      {"quality",
+       "how good is the grasp: the Ferrari-Canny quality epsilon of the contacts with their friction, exact or in a "
+       "certified bracket, with a certificate",
+       "[OPTIONS] SCENE.json",
+       "The grasp wrench space of the contacts (each friction cone's two edges, scaled to unit normal force by\n"
+       "default, as wrenches (fx, fy, T*m) about body.com or the origin) is a convex polytope; epsilon is the\n"
+       "radius of the largest ball about the origin inside it: 0 unless the grasp is in force closure, and the\n"
+       "size of the smallest wrench the grasp cannot resist with unit contact forces. L1: the hull of the edges\n"
+       "(the normal forces sum to at most 1); Linf: each normal force at most 1. epsilon^2 is given exactly when\n"
+       "the scales are rational (unit normals such as (3/5, 4/5), or --normalize as-given); otherwise epsilon is\n"
+       "certified in a bracket of relative width --tolerance. The certificate (the closed boundary of the wrench\n"
+       "space and its nearest facet, or a facet normal, or the twist of an open grasp) is re-verified first.\n",
+       join({{kHelp, kJson, kNorm, kNormalize, kTorqueScale, kAbout,
+              with_help(kTolerance, "the bracket's width relative to its lower end when epsilon is irrational (EPS > 0, "
+                                    "exact: 1e-12 (the default), 1/1000)"),
+              with_help(kMode,
+                        "hybrid (default) and exact: force closure in that mode, then epsilon in exact arithmetic; "
+                        "float: force closure by the twin alone, and exit 3 for a closed grasp (epsilon has no float twin)"),
+              with_help(kCertificate, "write the certificate to FILE (checked first)")},
+             kLimits}),
+       {kScene},
+       run_quality,
+       nullptr,
+       prepare_quality_json});
   t.push_back(
       {"analyze",
        "everything the scene calls for: closure, equilibrium when it has a load, a summary of the limit surface "

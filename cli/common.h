@@ -18,6 +18,7 @@
 #include "exact/io/json_writer.h"
 #include "exact/pipeline/pipeline.h"
 #include "exact/pipeline/hold_answer.h"
+#include "exact/pipeline/quality_answer.h"
 #include "exact/pipeline/labels_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/statics/closure.h"
@@ -63,6 +64,8 @@ struct Options {
   // compare: --format jsonl|csv, --rtol, --atol, --near (exact, >= 0); its --tolerance, --max-file-size and --json
   // are the fields above.
   Compare_options compare;
+  // quality: --norm, --normalize, --torque-scale, --about (its --tolerance is the field above).
+  Quality_query quality;
   // reference: --out DIR, --seed, --cases, --random, --sides (4..64).
   std::string out_dir;
   Reference_options reference;
@@ -245,6 +248,10 @@ int run_check(const Options& o);
 
 // labels_command.cpp: labels, dual, reuleaux;  render_command.cpp: render
 int run_labels(const Options& o, const std::string& scene_text, const std::string& source);
+int run_quality(const Options& o, const std::string& scene_text, const std::string& source);
+Scene_answer prepare_quality_json(const Options& o);
+void write_quality(Json_writer& w, const Quality_item& r);
+std::string quality_human(const Quality_item& r);
 int run_dual(const Options& o, const std::string& scene_text, const std::string& source);
 int run_reuleaux(const Options& o, const std::string& scene_text, const std::string& source);
 int run_render(const Options& o, const std::string& scene_text, const std::string& source);

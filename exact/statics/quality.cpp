@@ -267,6 +267,7 @@ Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mo
     a.exact = true;
     return a;
   }
+  if (mode == Mode::float_only) return a;  // ε has no float twin: the caller says undecided
   const std::vector<Generator> gens = generators(scene, Reading::friction);
   std::vector<Vec3q> unscaled;
   for (const Generator& g : gens) {
@@ -290,7 +291,10 @@ Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mo
   // within the tolerance (the exact case needs only the square root's bits).
   Rational eps2;
   bool built = false;
-  for (unsigned bits = 64;; bits *= 2) {
+  // start from the bits the tolerance asks (its binary digits and a margin), at least 16
+  unsigned start = 16;
+  for (Rational t = query.tolerance; t < 1 && start < 4096; t *= 2) ++start;
+  for (unsigned bits = start;; bits *= 2) {
     bool exact = true;
     if (!built || !a.exact) {
       for (Quality_scale& s : a.scales) set_scale(s, bits), exact = exact && s.error == 0;

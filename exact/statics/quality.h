@@ -72,7 +72,7 @@ struct Quality_answer {
 
 // The quality of the scene's contacts (the friction reading, each contact with its own μ). Closure is decided in
 // `mode` (Mode::float_only may leave it undecided: closure.decided false and nothing else set); ε itself is exact
-// arithmetic. Throws Input_error for a scene without contacts or a question that does not apply (torque scale ≤ 0).
+// arithmetic, not computed in Mode::float_only (a closed grasp's ε is then left unset: no float twin). Throws Input_error for a scene without contacts or a question that does not apply (torque scale ≤ 0).
 Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mode mode);
 
 // The scaled wrench of a §1 generator g of a contact with scale c: c·(fx, fy, s·(m − about × f)).

@@ -1,0 +1,141 @@
+// wrenchkit quality: how good is the grasp — the Ferrari–Canny ε of the contacts with their friction (docs/quality.md,
+// exact/statics/quality.h), exact or in a certified bracket, with a checked certificate.
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+
+#include "cli/common.h"
+#include "cli/float_json.h"
+#include "exact/pipeline/quality_answer.h"
+
+namespace wrenchkit::cli {
+
+namespace {
+
+std::string decimal(const Rational& q, int digits) {
+  char b[48];
+  std::snprintf(b, sizeof b, "%.*g", digits, q.get_d());
+  return b;
+}
+
+// "the left edge of c0 (its name)", "c2's normal", "the wrench c3".
+std::string generator_name(const Scene& scene, const Generator_ref& g) {
+  const std::string& name = scene.contacts[g.contact].name;
+  const std::string c = "c" + std::to_string(g.contact) + (name.empty() ? "" : " (" + name + ")");
+  switch (g.edge) {
+    case Edge::left: return "the left edge of " + c;
+    case Edge::right: return "the right edge of " + c;
+    case Edge::normal: return "the normal of " + c;
+    case Edge::wrench: return "the wrench " + c;
+  }
+  return c;
+}
+
+// Closure in the mode, then ε in exact arithmetic: hybrid when the closure was the twin's alone.
+Arithmetic decided_by(const Quality_answer& a) {
+  return a.closure.holds ? wrenchkit::decided_by(a.closure.decided_by(), Arithmetic::exact) : a.closure.decided_by();
+}
+
+// The wrench space in words: "L1 (the contacts' normal forces sum to at most 1)", its normalisation and moments.
+std::string space_text(const Quality_answer& a) {
+  std::ostringstream s;
+  s << (a.query.norm == Quality_norm::l1 ? "L1: the hull of the friction-cone edges (normal forces summing to at most 1)"
+                                         : "Linf: the sum of the contacts' cones (each normal force at most 1)")
+    << "; forces " << normalization_name(a.query.normalize) << ", moments about "
+    << approx_vec_text({a.about.x, a.about.y}) << " times " << human_number(a.query.torque_scale);
+  return s.str();
+}
+
+// The question of the command line: --norm, --normalize, --torque-scale, --about, and --tolerance.
+Quality_query query_of(const Options& o) {
+  Quality_query q = o.quality;
+  if (o.tolerance) q.tolerance = *o.tolerance;
+  return q;
+}
+
+// A facet normal: small integers as they are, else a unit vector in decimals.
+std::string normal_text(const Vec3q& n) {
+  const Vec3q p = primitive_vec(n);
+  if (to_string(p[0]).size() + to_string(p[1]).size() + to_string(p[2]).size() <= 24) return vec_text(p);
+  const double x = p[0].get_d(), y = p[1].get_d(), z = p[2].get_d(), len = std::sqrt(x * x + y * y + z * z);
+  char b[96];
+  std::snprintf(b, sizeof b, "≈ (%.6g, %.6g, %.6g) (unit length)", x / len, y / len, z / len);
+  return b;
+}
+
+}  // namespace
+
+void write_quality(Json_writer& w, const Quality_item& r) {
+  const Quality_answer& a = r.answer;
+  w.member("command", "quality").member("name", r.scene.name).member("mode", mode_name(r.mode));
+  w.member("force_closure", a.closure.holds);
+  w.key("epsilon").object().member("lower", a.lower).member("upper", a.upper);
+  if (a.exact) w.member("squared", a.squared);
+  w.key("lower_approx").raw(float_number(a.lower.get_d())).key("upper_approx").raw(float_number(a.upper.get_d()));
+  w.member("norm", quality_norm_name(a.query.norm)).member("normalize", normalization_name(a.query.normalize));
+  w.member("torque_scale", a.query.torque_scale).key("about").rationals(std::array<Rational, 2>{a.about.x, a.about.y});
+  w.end_object();
+  if (a.closure.holds) {
+    w.key("nearest_facet").object();
+    if (a.query.norm == Quality_norm::l1) {
+      w.key("generators").array();
+      for (std::size_t k : a.nearest)
+        w.object().member("contact", a.refs[k].contact).member("edge", edge_name(a.refs[k].edge)).end_object();
+      w.end_array();
+    }
+    w.key("normal").rationals(primitive(a.normal)).end_object();
+    w.member("generators", a.refs.size());
+    if (a.query.norm == Quality_norm::l1) w.member("hull_points", a.hull_points).member("hull_triangles", a.boundary.size());
+  }
+  w.member("decided_by", arithmetic_name(decided_by(a)));
+  if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
+}
+
+std::string quality_human(const Quality_item& r) {
+  const Quality_answer& a = r.answer;
+  std::ostringstream s;
+  s << "force closure: " << (a.closure.holds ? "yes" : "no") << "\n";
+  s << "quality epsilon (" << space_text(a) << "):\n";
+  if (!a.closure.holds) {
+    s << "  epsilon = 0: the grasp is not in force closure (the twist " << vec_text(a.closure.certificate.twist)
+      << " is allowed by every contact: " << motion_words(a.closure.certificate.twist) << ")\n";
+  } else {
+    if (a.lower == a.upper) s << "  epsilon = " << human_number(a.lower) << " (≈ " << decimal(a.lower, 15) << "), exactly\n";
+    else if (a.exact)
+      s << "  epsilon^2 = " << human_number(a.squared) << " (≈ " << decimal(a.squared, 15) << "), exactly; epsilon ≈ "
+        << decimal(a.lower, 15) << "\n";
+    else
+      s << "  epsilon ≈ " << decimal(a.lower, 15) << " (irrational with these scales; certified within "
+        << decimal(Rational(a.upper - a.lower), 2) << " in a rational bracket, given with --json)\n";
+    if (a.query.norm == Quality_norm::l1) {
+      s << "  nearest facet: ";
+      for (std::size_t k = 0; k < 3; ++k) s << (k ? ", " : "") << generator_name(r.scene, a.refs[a.nearest[k]]);
+      s << "; outward normal " << normal_text(a.normal) << "\n";
+      s << "  the wrench space: " << a.refs.size() << " edges, " << a.hull_points << " on its boundary ("
+        << a.boundary.size() << " triangles)\n";
+    } else {
+      s << "  nearest facet: outward normal " << normal_text(a.normal) << "\n";
+    }
+    s << "  every wrench of size up to epsilon is resisted with normal contact forces "
+      << (a.query.norm == Quality_norm::l1 ? "summing to at most 1" : "each at most 1") << "\n";
+  }
+  s << "decided by: " << arithmetic_name(decided_by(a)) << " (" << mode_name(r.mode) << " mode)\n";
+  if (!r.certificate.empty()) s << "certificate accepted by the independent checker (exact arithmetic)\n";
+  return s.str();
+}
+
+Scene_answer prepare_quality_json(const Options& o) {
+  return [request = request_of(o), query = query_of(o)](Json_writer& w, const std::string& text, const std::string& source) {
+    write_quality(w, answered(answer_quality(text, source, request, query)));
+  };
+}
+
+int run_quality(const Options& o, const std::string& scene_text, const std::string& source) {
+  const Quality_item r = answered(answer_quality(scene_text, source, request_of(o), query_of(o)));
+  if (!o.certificate_file.empty()) write_file(o.certificate_file, r.certificate + "\n");
+  return write_answer(o, [&](Json_writer& w) { write_quality(w, r); },
+                      [&] { return scene_line(r.scene.name, source) + frictionless_note(r.scene) + quality_human(r); });
+}
+
+}  // namespace wrenchkit::cli

@@ -1,0 +1,36 @@
+#include "exact/pipeline/quality_answer.h"
+
+#include "exact/certificates/certificates.h"
+
+namespace wrenchkit {
+
+namespace {
+
+void decide(std::string_view text, const Request& request, const Quality_query& query, Quality_item& r) {
+  r.mode = request.mode;
+  r.answer = decide_quality(r.scene, query, request.mode);
+  if (!r.answer.closure.decided) throw Undecided_error("force closure is undecided by the float twin alone");
+  if (request.mode == Mode::float_only && r.answer.closure.holds)
+    throw Undecided_error("the grasp is in force closure; its quality ε has no float twin (ε is exact arithmetic)");
+  r.certificate = certificate_json(r.answer);
+  std::string why = check_certificates(text, {r.certificate}, request);
+  if (!why.empty()) {
+    r.status = Status::check_failed;
+    r.message = std::move(why);
+  }
+}
+
+}  // namespace
+
+Quality_item answer_quality(std::string_view text, std::string_view source, const Request& request,
+                            const Quality_query& query) {
+  return answer_into_item<Quality_item>(text, source, request.limits,
+                                        [&](Quality_item& r) { decide(text, request, query, r); });
+}
+
+Quality_item answer_quality(const Scene& scene, std::string_view text, const Request& request,
+                            const Quality_query& query) {
+  return answer_into_item<Quality_item>(scene, [&](Quality_item& r) { decide(text, request, query, r); });
+}
+
+}  // namespace wrenchkit
