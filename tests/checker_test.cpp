@@ -372,10 +372,13 @@ TEST(CheckerMalformed, KeysAndTypes) {
             R"(missing required key "holds")");
   EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": 1, "holds": false, )" + twist + "}"),
             R"(missing required key "property")");
-  for (const char* version : {"4", "0", "2.0", "1.0", "1e0", "\"1\"", "true"})
+  for (const char* version : {"5", "0", "2.0", "1.0", "1e0", "\"1\"", "true"})
     EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": )" + std::string(version) +
                                           R"(, "property": "force_closure", "holds": false, )" + twist + "}"),
-              "wrenchkit_certificate: expected the integer 1, 2 or 3");
+              "wrenchkit_certificate: expected the integer 1, 2, 3 or 4");
+  // Format 4 adds property "quality" (§3.4) and nothing else.
+  EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": 4, "property": "force_closure", "holds": false, )" + twist + "}"),
+            R"(wrenchkit_certificate: format 4 is property "quality" only (expected 1, 2 or 3))");
   // Format 3 names the boundary of motion and hold only: a closure certificate reads the same in 1, 2 and 3.
   for (const char* version : {"1", "2", "3"})
     EXPECT_EQ(check(block_corner, R"({"wrenchkit_certificate": )" + std::string(version) +
@@ -385,7 +388,7 @@ TEST(CheckerMalformed, KeysAndTypes) {
         << version;
   EXPECT_EQ(
       rejection(block_corner, R"({"wrenchkit_certificate": 1, "property": "closure", "holds": false, )" + twist + "}"),
-      R"(property: expected "force_closure", "form_closure", "equilibrium", "motion" or "hold")");
+      R"(property: expected "force_closure", "form_closure", "equilibrium", "motion", "hold" or "quality")");
   EXPECT_EQ(rejection(block_corner,
                       R"({"wrenchkit_certificate": 1, "property": "force_closure", "holds": "false", )" + twist + "}"),
             R"(holds: expected true or false (or "impending" or "depends" for property "hold"))");
@@ -788,7 +791,8 @@ TEST(CheckerMutations, NegativeCertificates) {
   // two fingers' normals are both horizontal, so a vertical translation has power 0 against both).
   const std::set<std::string> all_powers_zero = {"triangle_mu_1_10.form_rotation_about_G.valid.json",
                                                  "triangle_mu_1_10.form_rotation_about_G_clockwise.valid.json",
-                                                 "two_finger_mu_1_2.form_translate_up.valid.json"};
+                                                 "two_finger_mu_1_2.form_translate_up.valid.json",
+                                                 "two_fingers_mu0.quality_zero.valid.json"};
   const std::regex reading_re(R"re(,\s*"reading": \{[^}]*\})re");
   int negatives = 0;
   std::set<std::string> seen;
