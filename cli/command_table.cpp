@@ -212,6 +212,13 @@ const Option kTorqueScale{"torque-scale", "T",
                             if (t <= 0) bad_value(n, v, "must be > 0");
                             o.quality.torque_scale = t;
                           }};
+const Option kOnly{"only", "epsilon|critical-mu",
+                   "answer only the quality epsilon, or only the critical friction coefficient (default: both)",
+                   [](Options& o, S n, S v) {
+                     if (v == "epsilon") o.quality.critical_mu = false;
+                     else if (v == "critical-mu") o.quality.epsilon = false;
+                     else bad_value(n, v, "is not one of epsilon, critical-mu");
+                   }};
 const Option kAbout{"about", "x,y", "the point the moments are taken about (default: body.com if the scene has one, else the origin)",
                     [](Options& o, S n, S v) {
                       const std::array<Rational, 2> p = exact_values<2>(o, n, v, "x,y");
@@ -525,13 +532,18 @@ std::vector<Command> make_table() {
        "(the normal forces sum to at most 1); Linf: each normal force at most 1. epsilon^2 is given exactly when\n"
        "the scales are rational (unit normals such as (3/5, 4/5), or --normalize as-given); otherwise epsilon is\n"
        "certified in a bracket of relative width --tolerance. The certificate (the closed boundary of the wrench\n"
-       "space and its nearest facet, or a facet normal, or the twist of an open grasp) is re-verified first.\n",
-       join({{kHelp, kJson, kNorm, kNormalize, kTorqueScale, kAbout,
+       "space and its nearest facet, or a facet normal, or the twist of an open grasp) is re-verified first.\n"
+       "Also the critical friction coefficient mu*: with one mu for every point contact, the least mu at which the\n"
+       "contacts are in force closure (closed for every mu above it) and, with a load, at which they balance it —\n"
+       "exact when rational (the two-finger grasp: the tangent of the contact line's angle), else a bracket of\n"
+       "relative width --tolerance; \"always\" (closed without friction) or \"never\" said as such; certificates on\n"
+       "both sides (the property failing just below and holding at or above, each re-verified).\n",
+       join({{kHelp, kJson, kOnly, kNorm, kNormalize, kTorqueScale, kAbout,
               with_help(kTolerance, "the bracket's width relative to its lower end when epsilon is irrational (EPS > 0, "
                                     "exact: 1e-12 (the default), 1/1000)"),
               with_help(kMode,
-                        "hybrid (default) and exact: force closure in that mode, then epsilon in exact arithmetic; "
-                        "float: force closure by the twin alone, and exit 3 for a closed grasp (epsilon has no float twin)"),
+                        "hybrid (default) and exact: force closure in that mode, then epsilon and mu* in exact arithmetic; "
+                        "float: force closure by the twin alone, and exit 3 for a closed grasp or mu* (no float twin)"),
               with_help(kCertificate, "write the certificate to FILE (checked first)")},
              kLimits}),
        {kScene},

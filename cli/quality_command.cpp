@@ -64,11 +64,54 @@ std::string normal_text(const Vec3q& n) {
   return b;
 }
 
+void write_critical(Json_writer& w, const Critical_mu& c, const std::string& certificate) {
+  w.object().member("kind", critical_kind_name(c.kind));
+  if (c.kind == Critical_kind::value) {
+    w.member("lower", c.lower).member("upper", c.upper);
+    w.key("lower_approx").raw(float_number(c.lower.get_d())).key("upper_approx").raw(float_number(c.upper.get_d()));
+    w.member("exact", c.exact());
+  }
+  w.member("decisions", c.decisions).member("certificate_checked", true).key("certificate").raw(certificate).end_object();
+}
+
+std::string critical_text(const Critical_mu& c, bool closure) {
+  std::ostringstream s;
+  const char* property = closure ? "closed" : "balanced";
+  switch (c.kind) {
+    case Critical_kind::always:
+      s << "always — " << property << " even without friction (mu = 0), so for every mu";
+      break;
+    case Critical_kind::never:
+      s << "never — no friction coefficient makes it " << property;
+      if (c.limit_twist)
+        s << ": every contact allows " << motion_words(*c.limit_twist) << " (twist " << vec_text(primitive_vec(*c.limit_twist))
+          << ") whatever mu" << (closure ? "" : ", and the load drives it");
+      else s << ": only an infinite mu would balance the load";
+      break;
+    case Critical_kind::value:
+      if (c.exact())
+        s << "mu* = " << human_number(c.lower) << (c.lower.get_den() == 1 ? "" : " (≈ " + decimal(c.lower, 12) + ")") << " exactly — "
+          << (closure ? "not closed at mu*, closed for every mu above it" : "balanced at mu* and above, not below");
+      else
+        s << "mu* ≈ " << decimal(c.lower, 12) << ", certified in [" << human_number(c.lower) << ", " << human_number(c.upper)
+          << "] (not a rational of small height: its bracket)";
+      break;
+  }
+  return s.str();
+}
+
 }  // namespace
 
 void write_quality(Json_writer& w, const Quality_item& r) {
   const Quality_answer& a = r.answer;
   w.member("command", "quality").member("name", r.scene.name).member("mode", mode_name(r.mode));
+  if (r.critical) {
+    w.key("critical_mu").object().key("closure");
+    write_critical(w, r.critical->closure, r.closure_mu_certificate);
+    if (r.critical->equilibrium) write_critical(w.key("equilibrium"), *r.critical->equilibrium, r.balance_mu_certificate);
+    w.end_object();
+  }
+  if (r.certificate.empty()) return;  // ε not asked
   w.member("force_closure", a.closure.holds);
   w.key("epsilon").object().member("lower", a.lower).member("upper", a.upper);
   if (a.exact) w.member("squared", a.squared);
@@ -95,6 +138,17 @@ void write_quality(Json_writer& w, const Quality_item& r) {
 std::string quality_human(const Quality_item& r) {
   const Quality_answer& a = r.answer;
   std::ostringstream s;
+  const auto critical = [&] {
+    if (!r.critical) return;
+    s << "critical friction (one mu for every point contact):\n";
+    s << "  force closure: " << critical_text(r.critical->closure, true) << "\n";
+    if (r.critical->equilibrium) s << "  equilibrium of the load: " << critical_text(*r.critical->equilibrium, false) << "\n";
+  };
+  if (r.certificate.empty()) {
+    critical();
+    s << "certificates accepted by the independent checker (exact arithmetic)\n";
+    return s.str();
+  }
   s << "force closure: " << (a.closure.holds ? "yes" : "no") << "\n";
   s << "quality epsilon (" << space_text(a) << "):\n";
   if (!a.closure.holds) {
@@ -120,8 +174,9 @@ std::string quality_human(const Quality_item& r) {
     s << "  every wrench of size up to epsilon is resisted with normal contact forces "
       << (a.query.norm == Quality_norm::l1 ? "summing to at most 1" : "each at most 1") << "\n";
   }
+  critical();
   s << "decided by: " << arithmetic_name(decided_by(a)) << " (" << mode_name(r.mode) << " mode)\n";
-  if (!r.certificate.empty()) s << "certificate accepted by the independent checker (exact arithmetic)\n";
+  s << (r.critical ? "certificates" : "certificate") << " accepted by the independent checker (exact arithmetic)\n";
   return s.str();
 }
 
@@ -133,7 +188,10 @@ Scene_answer prepare_quality_json(const Options& o) {
 
 int run_quality(const Options& o, const std::string& scene_text, const std::string& source) {
   const Quality_item r = answered(answer_quality(scene_text, source, request_of(o), query_of(o)));
-  if (!o.certificate_file.empty()) write_file(o.certificate_file, r.certificate + "\n");
+  if (!o.certificate_file.empty()) {
+    if (r.certificate.empty()) throw Usage_error("--certificate: epsilon was not asked (--only critical-mu): no certificate of it");
+    write_file(o.certificate_file, r.certificate + "\n");
+  }
   return write_answer(o, [&](Json_writer& w) { write_quality(w, r); },
                       [&] { return scene_line(r.scene.name, source) + frictionless_note(r.scene) + quality_human(r); });
 }

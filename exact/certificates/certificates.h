@@ -5,6 +5,7 @@
 //   closure.cpp      §3.1–§3.2  force and form closure (combination and independent generators; a twist and its reading)
 //   equilibrium.cpp  §3.3       equilibrium of the load (a combination; a twist the load drives)
 //   quality.cpp      §3.4       the grasp quality ε (a twist; the closed boundary of the wrench space; a facet normal)
+//   critical_mu.cpp  §3.5       the critical friction coefficient (§3.1–§3.3 certificates at a common μ on each side)
 //   motion.cpp       §6         stick / slide / depends on a support (§6.4 regions, §6.5 format 2)
 //   hold.cpp         §7         fixtures on a support (§7.4 regions, §7.5 format 2)
 //   witnesses.cpp    §6.1 §6.4  the parts §6 and §7 share: support forces, stick and slide witnesses, region blocks
@@ -22,6 +23,7 @@
 #include "exact/sliding/motion.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
+#include "exact/statics/critical_mu.h"
 #include "exact/statics/quality.h"
 
 namespace wrenchkit {
@@ -36,6 +38,9 @@ std::string certificate_json(const Equilibrium_certificate& c);
 // §3.4 (format 4): the certificate of a decided quality (closure decided).
 void write_certificate(Json_writer& w, const Quality_answer& a);
 std::string certificate_json(const Quality_answer& a);
+
+// §3.5 (format 4): the certificate of μ* of force closure (`closure`) or of the scene's load's equilibrium.
+std::string critical_mu_certificate(const Critical_mu& c, bool closure);
 
 // §6: the certificate of a decided motion (not undecided) of the load p on the model's support. Format 1, or 2 where
 // format 1 has none (regions together with a point force not given, §6.5).

@@ -8,12 +8,27 @@ namespace {
 
 void decide(std::string_view text, const Request& request, const Quality_query& query, Quality_item& r) {
   r.mode = request.mode;
-  r.answer = decide_quality(r.scene, query, request.mode);
-  if (!r.answer.closure.decided) throw Undecided_error("force closure is undecided by the float twin alone");
-  if (request.mode == Mode::float_only && r.answer.closure.holds)
-    throw Undecided_error("the grasp is in force closure; its quality ε has no float twin (ε is exact arithmetic)");
-  r.certificate = certificate_json(r.answer);
-  std::string why = check_certificates(text, {r.certificate}, request);
+  std::vector<std::string_view> certificates;
+  if (query.epsilon) {
+    r.answer = decide_quality(r.scene, query, request.mode);
+    if (!r.answer.closure.decided) throw Undecided_error("force closure is undecided by the float twin alone");
+    if (request.mode == Mode::float_only && r.answer.closure.holds)
+      throw Undecided_error("the grasp is in force closure; its quality ε has no float twin (ε is exact arithmetic)");
+    r.certificate = certificate_json(r.answer);
+    certificates.push_back(r.certificate);
+  }
+  if (query.critical_mu) {
+    if (request.mode == Mode::float_only)
+      throw Undecided_error("the critical friction coefficient has no float twin (it is exact arithmetic)");
+    r.critical = decide_critical_mu(r.scene, request.mode, query.tolerance);
+    r.closure_mu_certificate = critical_mu_certificate(r.critical->closure, true);
+    certificates.push_back(r.closure_mu_certificate);
+    if (r.critical->equilibrium) {
+      r.balance_mu_certificate = critical_mu_certificate(*r.critical->equilibrium, false);
+      certificates.push_back(r.balance_mu_certificate);
+    }
+  }
+  std::string why = check_certificates(text, certificates, request);
   if (!why.empty()) {
     r.status = Status::check_failed;
     r.message = std::move(why);

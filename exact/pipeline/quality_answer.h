@@ -4,13 +4,16 @@
 //
 //   exact, hybrid  force closure in the mode (closure.h), then ε in exact arithmetic: exact, or a certified bracket;
 //   float          force closure by the twin; ε = 0 when it is not closed (certified by its twist), else undecided
-//                  (Status::undecided, exit 3): ε has no float twin.
+//                  (Status::undecided, exit 3): ε has no float twin; nor has μ*, undecided whenever asked.
+// The critical friction coefficient μ* (exact/statics/critical_mu.h, §3.5) of closure and, with a load, of
+// equilibrium, when the query asks (the default).
 #pragma once
 
 #include <string>
 #include <string_view>
 
 #include "exact/pipeline/pipeline.h"
+#include "exact/statics/critical_mu.h"
 #include "exact/statics/quality.h"
 
 namespace wrenchkit {
@@ -20,8 +23,10 @@ struct Quality_item {
   std::string message;
   Scene scene;
   Mode mode = Mode::hybrid;
-  Quality_answer answer;
+  Quality_answer answer;     // query.epsilon
   std::string certificate;  // the certificate the independent checker accepted
+  std::optional<Critical_answer> critical;                // query.critical_mu
+  std::string closure_mu_certificate, balance_mu_certificate;  // accepted by the checker
 };
 
 // Reads `text` (eagerly) and answers; never throws.

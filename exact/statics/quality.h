@@ -43,6 +43,8 @@ struct Quality_query {
   Rational torque_scale = 1;       // s > 0: the moment's weight against a force
   std::optional<Vec2> about;       // the moments' point; default body.com when the scene has one, else the origin
   Rational tolerance{1ul, 1000000000000ul};  // the bracket's width relative to its lower end (ε not rational)
+  // What to answer (the quality command): ε, and the critical friction coefficient μ* (critical_mu.h)
+  bool epsilon = true, critical_mu = true;
 };
 
 // One contact's scale: its edges are multiplied by `scale` (c̃_i); the true c_i = 1/√q_i lies within `error` of it

@@ -240,14 +240,16 @@ Certificate read_certificate(Reader& r) {
     } else if (key == "property") {
       const std::string_view p = r.peek() == Kind::string ? r.string_view() : "";
       if (p != "force_closure" && p != "form_closure" && p != "equilibrium" && p != "motion" && p != "hold" &&
-          p != "quality")
-        r.fail("expected \"force_closure\", \"form_closure\", \"equilibrium\", \"motion\", \"hold\" or \"quality\"");
+          p != "quality" && p != "critical_mu")
+        r.fail("expected \"force_closure\", \"form_closure\", \"equilibrium\", \"motion\", \"hold\", \"quality\" or "
+               "\"critical_mu\"");
       c.property = p;
       c.reading = p == "form_closure" ? Reading::frictionless : Reading::friction;
       c.equilibrium = p == "equilibrium";
       c.motion = p == "motion";
       c.hold = p == "hold";
       c.quality = p == "quality";
+      c.critical = p == "critical_mu";
     } else if (key == "holds") {
       if (r.peek() == Kind::string) {  // property "hold" only (checked once the property is known)
         const std::string_view v = r.string_view();
@@ -318,6 +320,44 @@ Certificate read_certificate(Reader& r) {
       while (r.next_item()) read_triple(r, c.q().boundary.emplace_back());
     } else if (key == "nearest") {
       read_triple(r, c.q().nearest);
+    } else if (key == "of") {
+      const std::string_view v = r.peek() == Kind::string ? r.string_view() : "";
+      if (v != "force_closure" && v != "equilibrium") r.fail("expected \"force_closure\" or \"equilibrium\"");
+      c.cm().of = v;
+    } else if (key == "critical_mu") {
+      if (r.peek() == Kind::string) {
+        c.cm().word = r.string_view();
+        if (c.cm().word != "always" && c.cm().word != "never")
+          r.fail("expected \"always\", \"never\" or an object {\"lower\", \"upper\"}");
+      } else {
+        begin_object(r, "expected \"always\", \"never\" or an object {\"lower\", \"upper\"}");
+        unsigned keys = 0;
+        std::string_view k;
+        while (r.next_key(k)) {
+          if (k == "lower") keys |= 1, c.cm().lower = read_rational(r);
+          else if (k == "upper") keys |= 2, c.cm().upper = read_rational(r);
+          else r.fail("unknown key " + quote(k), true);
+        }
+        if (keys != 3) r.fail("expected the keys \"lower\" and \"upper\"");
+      }
+    } else if (key == "below" || key == "above") {
+      Critical_part::Side& side = key == "below" ? c.cm().below : c.cm().above;
+      side.present = true;
+      begin_object(r, "expected an object {\"mu\", \"certificate\"}");
+      unsigned keys = 0;
+      std::string_view k;
+      while (r.next_key(k)) {
+        if (k == "mu") keys |= 1, side.mu = read_rational(r);
+        else if (k == "certificate") keys |= 2, side.certificate = std::make_unique<Certificate>(read_certificate(r));
+        else r.fail("unknown key " + quote(k), true);
+      }
+      if (keys != 3) r.fail("expected the keys \"mu\" and \"certificate\"");
+    } else if (key == "constant" || key == "constant_beyond") {
+      if (r.peek() != Kind::boolean || !r.boolean()) r.fail("expected true (or leave the key out)");
+      (key == "constant" ? c.cm().constant : c.cm().constant_beyond) = true;
+    } else if (key == "limit_twist") {
+      c.cm().has_limit_twist = true;
+      read_fixed(r, 3, "an array of three rationals [vx, vy, w]", [&](std::size_t k) { c.cm().limit_twist[k] = read_rational(r); });
     } else if (key == "normal") {
       read_fixed(r, 3, "an array of three rationals [a, b, c]", [&](std::size_t k) { c.q().normal[k] = read_rational(r); });
     } else {
@@ -344,13 +384,15 @@ void check_keys(const Certificate& c) {
       throw Failure{"key \"independent\" is not allowed when \"property\" is \"equilibrium\""};
   };
   need("wrenchkit_certificate"), need("property");
-  if ((c.version == 4) != c.quality)
-    throw Failure{c.quality ? "wrenchkit_certificate: property \"quality\" is format 4 (expected the integer 4)"
-                            : "wrenchkit_certificate: format 4 is property \"quality\" only (expected 1, 2 or 3)"};
-  if (c.quality) return;  // check_quality() decides which keys its claim needs
-  static const char* const quality_keys[] = {"norm", "normalize", "torque_scale", "about", "scales",
-                                             "epsilon", "boundary", "nearest", "normal"};
-  static const unsigned quality_mask = Key_set::mask(quality_keys);
+  if ((c.version == 4) != (c.quality || c.critical))
+    throw Failure{c.quality || c.critical ? "wrenchkit_certificate: property " + quote(c.property) + " is format 4 (expected the integer 4)"
+                            : "wrenchkit_certificate: format 4 is properties \"quality\" and \"critical_mu\" only (expected 1, 2 or 3)"};
+  if (c.quality || c.critical) return;  // check_quality() and check_critical_mu() decide which keys their claims need
+  static const char* const quality_keys[] = {"norm",   "normalize", "torque_scale", "about",    "scales",
+                                             "epsilon", "boundary", "nearest",     "normal",   "of",
+                                             "critical_mu", "below", "above", "constant", "constant_beyond",
+                                             "limit_twist"};
+  static const std::uint64_t quality_mask = Key_set::mask(quality_keys);
   if (c.keys.any(quality_mask))
     for (const char* key : quality_keys)
       if (c.keys.count(key))
@@ -362,7 +404,7 @@ void check_keys(const Certificate& c) {
   static const char* const motion_keys[] = {"load",    "motion",   "support_forces", "speed_bounds",
                                             "dual",    "vertices", "sticking",       "sliding",
                                             "holding", "failing",  "regions"};
-  static const unsigned motion_mask = Key_set::mask(motion_keys);
+  static const std::uint64_t motion_mask = Key_set::mask(motion_keys);
   if (c.keys.any(motion_mask))  // (one test for the usual certificate; the loop names the key)
     for (const char* key : motion_keys)
       if (c.keys.count(key))

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -57,17 +58,17 @@ class Key_set {
  public:
   void insert(std::string_view key) {
     const int i = index(key);
-    if (i >= 0) bits_ |= 1u << i;
+    if (i >= 0) bits_ |= std::uint64_t{1} << i;
   }
   std::size_t count(std::string_view key) const { return (bits_ & bit(key)) != 0; }
   // The bits of these keys, to test many at once (any()): computed once by the caller, not per certificate.
   template <std::size_t N>
-  static unsigned mask(const char* const (&keys)[N]) {
-    unsigned m = 0;
+  static std::uint64_t mask(const char* const (&keys)[N]) {
+    std::uint64_t m = 0;
     for (const char* k : keys) m |= bit(k);
     return m;
   }
-  bool any(unsigned mask) const { return (bits_ & mask) != 0; }
+  bool any(std::uint64_t mask) const { return (bits_ & mask) != 0; }
 
  private:
   static int index(std::string_view key) {
@@ -76,17 +77,18 @@ class Key_set {
                                              "support_forces", "speed_bounds", "dual", "vertices", "sticking",
                                              "sliding", "holding", "failing", "regions", "norm", "normalize",
                                              "torque_scale", "about", "scales", "epsilon", "boundary", "nearest",
-                                             "normal"};
+                                             "normal", "of", "critical_mu", "below", "above", "constant",
+                                             "constant_beyond", "limit_twist"};
     for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
       if (known[i] == key) return i;
     return -1;
   }
-  static unsigned bit(std::string_view key) {
+  static std::uint64_t bit(std::string_view key) {
     const int i = index(key);
     if (i < 0) throw std::logic_error("Key_set: \"" + std::string(key) + "\" is not a key of the format");
-    return 1u << i;
+    return std::uint64_t{1} << i;
   }
-  unsigned bits_ = 0;
+  std::uint64_t bits_ = 0;
 };
 
 // The members of properties "motion" (§6) and "hold" (§7), read only when present (each costs allocations).
@@ -115,6 +117,23 @@ struct Quality_part {
   Q normal[3];
 };
 
+// The members of property "critical_mu" (§3.5): the certificates below and above μ* are certificate objects of
+// §3.1–§3.3 (read by read_certificate), for the scene with every point contact's μ set to their `mu`.
+struct Certificate;
+struct Critical_part {
+  std::string_view of;       // "force_closure" or "equilibrium"
+  std::string_view word;     // "always" or "never"; empty: a value {"lower", "upper"}
+  Q lower, upper;
+  struct Side {
+    bool present = false;
+    Q mu;
+    std::unique_ptr<Certificate> certificate;
+  } below, above;
+  bool constant = false, constant_beyond = false;
+  bool has_limit_twist = false;
+  Q limit_twist[3];
+};
+
 struct Certificate {
   Key_set keys;  // the keys present
   std::string_view property;
@@ -123,6 +142,7 @@ struct Certificate {
   bool motion = false;       // property "motion" (§6)
   bool hold = false;         // property "hold" (§7), read with friction
   bool quality = false;      // property "quality" (§3.4, format 4), read with friction
+  bool critical = false;     // property "critical_mu" (§3.5, format 4)
   bool holds = false;
   bool depends = false;      // "holds": "depends" (property "hold" only)
   bool impending = false;    // "holds": "impending" (property "hold", format 3 only)
@@ -139,6 +159,11 @@ struct Certificate {
   Motion_part& m() {
     if (!motion_members) motion_members = std::make_unique<Motion_part>();
     return *motion_members;
+  }
+  std::unique_ptr<Critical_part> critical_members;  // allocated by cm() when a member of §3.5 is read
+  Critical_part& cm() {
+    if (!critical_members) critical_members = std::make_unique<Critical_part>();
+    return *critical_members;
   }
   std::unique_ptr<Quality_part> quality_members;  // allocated by q() when a member of §3.4 is read
   Quality_part& q() {
@@ -161,5 +186,6 @@ void check_equilibrium(const Certificate& c, const Scene& scene, const Limits& l
 void check_motion(const Certificate& c, const Scene& scene, const Limits& lim);
 void check_hold(const Certificate& c, const Scene& scene, const Limits& lim);
 void check_quality(const Certificate& c, const Scene& scene, const Limits& lim);  // quality.cpp (§3.4)
+void check_critical_mu(const Certificate& c, const Scene& scene, const Limits& lim);  // critical_mu.cpp (§3.5)
 
 }  // namespace wrenchkit_checker::detail

@@ -49,6 +49,16 @@ inline int edge_names(const Contact& c, Reading reading, const char* (&names)[2]
   return 2;
 }
 
+// A contact's numbers, exactly: a point contact's x, y, nx, ny, mu (0 if absent); a wrench contact's fx, fy, m.
+inline std::vector<Q> contact_numbers(const Contact& c, const Limits& lim) {
+  std::vector<Q> out(c.wrench ? 3 : 5);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    if (c.fixed) set_small(out[k], c.small[k]);
+    else out[k] = c.value.empty() ? scene_number(c.text[k], lim, "contacts") : c.value[k];  // valid: read before
+  }
+  return out;
+}
+
 // The generators of one contact under a reading, recomputed exactly from the scene text, in edge_names()' order.
 template <class N>
 struct Generators {

@@ -1,0 +1,309 @@
+// [QL-2] The critical friction coefficient: see critical_mu.h and proofs/notes/QL-2-critical-friction.md.
+#include "exact/statics/critical_mu.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+#include "exact/io/input_error.h"
+
+namespace wrenchkit {
+
+const char* critical_kind_name(Critical_kind k) {
+  switch (k) {
+    case Critical_kind::value: return "value";
+    case Critical_kind::always: return "always";
+    case Critical_kind::never: return "never";
+  }
+  return "?";
+}
+
+Scene at_common_mu(const Scene& scene, const Rational& mu) {
+  Scene s = scene;
+  for (Contact& c : s.contacts)
+    if (c.kind == Contact::Kind::point) c.mu = mu, c.mu_given = true, c.has_twin = false;
+  return s;
+}
+
+namespace {
+
+// Polynomials in μ with rational coefficients, lowest degree first.
+using Poly = std::vector<Rational>;
+
+void trim(Poly& p) {
+  while (!p.empty() && p.back() == 0) p.pop_back();
+}
+Rational eval(const Poly& p, const Rational& x) {
+  Rational v = 0;
+  for (std::size_t k = p.size(); k-- > 0;) v = v * x + p[k];
+  return v;
+}
+Poly mul(const Poly& a, const Poly& b) {
+  if (a.empty() || b.empty()) return {};
+  Poly r(a.size() + b.size() - 1);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) r[i + j] += a[i] * b[j];
+  return r;
+}
+int variations(const Poly& p) {
+  int v = 0, last = 0;
+  for (const Rational& c : p) {
+    const int s = sgn(c);
+    if (s == 0) continue;
+    if (last != 0 && s != last) ++v;
+    last = s;
+  }
+  return v;
+}
+// Descartes' rule on (l, h): the roots of p there are the positive roots of (1 + x)^d p((l + h x)/(1 + x)); no sign
+// variation, no root.
+bool no_root_between(const Poly& p, const Rational& l, const Rational& h) {
+  const std::size_t d = p.size() - 1;
+  Poly q;
+  for (std::size_t k = 0; k <= d; ++k) {
+    Poly term{p[k]};
+    for (std::size_t i = 0; i < k; ++i) term = mul(term, {l, h});
+    for (std::size_t i = k; i < d; ++i) term = mul(term, {1, 1});
+    if (q.size() < term.size()) q.resize(term.size());
+    for (std::size_t i = 0; i < term.size(); ++i) q[i] += term[i];
+  }
+  return variations(q) == 0;
+}
+// No root > M: p(M + x) has no sign variation.
+bool no_root_beyond(const Poly& p, const Rational& M) {
+  Poly q;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    Poly term{p[k]};
+    for (std::size_t i = 0; i < k; ++i) term = mul(term, {M, 1});
+    if (q.size() < term.size()) q.resize(term.size());
+    for (std::size_t i = 0; i < term.size(); ++i) q[i] += term[i];
+  }
+  return variations(q) == 0;
+}
+// p keeps one sign on the interval between `excluded` and `included` (that end included): p ≡ 0, or p(included) ≠ 0
+// and no root strictly between.
+bool constant_on(const Poly& p, const Rational& excluded, const Rational& included) {
+  if (p.empty()) return true;
+  if (eval(p, included) == 0) return false;
+  return no_root_between(p, std::min(excluded, included), std::max(excluded, included));
+}
+// A bound on the absolute values of p's roots (Cauchy): 1 + max |c_k / c_lead|.
+Rational root_bound(const Poly& p) {
+  Rational m = 0;
+  for (std::size_t k = 0; k + 1 < p.size(); ++k) m = std::max(m, Rational(abs(p[k] / p.back())));
+  return 1 + m;
+}
+
+// The simplest rational (least denominator, then numerator) in [l, h], 0 ≤ l ≤ h.
+Rational simplest(const Rational& l, const Rational& h) {
+  Integer f;
+  mpz_fdiv_q(f.get_mpz_t(), l.get_num_mpz_t(), l.get_den_mpz_t());
+  if (Rational(f) == l) return l;
+  if (Rational(f + 1) <= h) return Rational(f + 1);
+  return Rational(f) + 1 / simplest(1 / (h - f), 1 / (l - f));
+}
+
+// The edges as families a + μ b: each point contact's left (a + μ b) and right (a − μ b), each wrench contact's wrench
+// (b = 0), and the load (b = 0) when asked.
+struct Family {
+  Vec3q a, b;
+};
+std::vector<Family> families(const Scene& scene, bool with_load) {
+  std::vector<Family> out;
+  for (const Contact& c : scene.contacts) {
+    if (c.kind == Contact::Kind::wrench) {
+      out.push_back({c.wrench, {0, 0, 0}});
+      continue;
+    }
+    const Vec3q a = wrench_at(c.at, c.normal), b = wrench_at(c.at, {-c.normal.y, c.normal.x});
+    out.push_back({a, b});
+    out.push_back({a, {-b[0], -b[1], -b[2]}});
+  }
+  if (with_load) out.push_back({load_wrench(scene), {0, 0, 0}});
+  return out;
+}
+Rational det(const Vec3q& x, const Vec3q& y, const Vec3q& z) { return dot(x, cross(y, z)); }
+// Every minor of the families' matrix that is not identically zero: their coordinates (1×1), the coordinates of
+// their cross products (2×2) and their determinants (3×3), as polynomials in μ.
+std::vector<Poly> minors(const std::vector<Family>& F) {
+  std::vector<Poly> out;
+  const auto keep = [&out](Poly p) {
+    trim(p);
+    if (!p.empty()) out.push_back(std::move(p));
+  };
+  for (const Family& f : F)
+    for (int k = 0; k < 3; ++k) keep({f.a[k], f.b[k]});
+  for (std::size_t i = 0; i < F.size(); ++i)
+    for (std::size_t j = i + 1; j < F.size(); ++j) {
+      const Vec3q c0 = cross(F[i].a, F[j].a), c2 = cross(F[i].b, F[j].b), u = cross(F[i].a, F[j].b), v = cross(F[i].b, F[j].a);
+      for (int k = 0; k < 3; ++k) keep({c0[k], u[k] + v[k], c2[k]});
+    }
+  for (std::size_t i = 0; i < F.size(); ++i)
+    for (std::size_t j = i + 1; j < F.size(); ++j)
+      for (std::size_t k = j + 1; k < F.size(); ++k) {
+        const Vec3q &A = F[i].a, &B = F[j].a, &C = F[k].a, &a = F[i].b, &b = F[j].b, &c = F[k].b;
+        keep({det(A, B, C), det(a, B, C) + det(A, b, C) + det(A, B, c), det(A, b, c) + det(a, B, c) + det(a, b, C),
+              det(a, b, c)});
+      }
+  return out;
+}
+bool all_constant_on(const std::vector<Poly>& P, const Rational& excluded, const Rational& included) {
+  for (const Poly& p : P)
+    if (!constant_on(p, excluded, included)) return false;
+  return true;
+}
+bool is_root(const std::vector<Poly>& P, const Rational& x) {
+  for (const Poly& p : P)
+    if (eval(p, x) == 0) return true;
+  return false;
+}
+
+// The limit cone pos{a_i, ±b_i, wrenches} as a scene of wrench contacts (with the load, for balance).
+Scene limit_scene(const Scene& scene) {
+  Scene s;
+  s.name = scene.name;
+  s.load = scene.load;
+  s.body = scene.body;
+  const auto add = [&s](const Vec3q& w) {
+    Contact c;
+    c.kind = Contact::Kind::wrench;
+    c.wrench = w;
+    s.contacts.push_back(c);
+  };
+  for (const Contact& c : scene.contacts) {
+    if (c.kind == Contact::Kind::wrench) {
+      add(c.wrench);
+      continue;
+    }
+    const Vec3q b = wrench_at(c.at, {-c.normal.y, c.normal.x});
+    add(wrench_at(c.at, c.normal)), add(b), add({-b[0], -b[1], -b[2]});
+  }
+  return s;
+}
+
+Rational two_to(int bits) {
+  Integer p = 1;
+  mpz_mul_2exp(p.get_mpz_t(), p.get_mpz_t(), static_cast<mp_bitcnt_t>(bits));
+  return Rational(p);
+}
+
+// The search both properties share. `holds(μ, certify)`: the property at μ (certify: keep its certificate as the
+// `below` or `above` evidence). Closure holds on (μ*, ∞), balance on [μ*, ∞): `closed_at_critical` says which.
+template <class Holds>
+void search(Critical_mu& out, const std::vector<Poly>& P, Rational lo, Rational hi, const Rational& tol,
+            bool holds_at_critical, Holds holds) {
+  const auto bisect_until = [&](const Rational& width) {
+    while (hi - lo > width) {
+      const Rational mid = (lo + hi) / 2;
+      (holds(mid, false) ? hi : lo) = mid;
+    }
+  };
+  // Exact: the simplest rational s of a narrow bracket that is a root of a minor and on μ*'s side (fails at s for
+  // closure, holds at s for balance), with the minors' signs constant on a one-sided interval beside it.
+  for (int bits : {32, 64, 128, 256}) {
+    bisect_until((hi + 1) / two_to(bits));  // (absolute near 0: μ* may be 0)
+    const Rational s = simplest(lo, hi);
+    if (!is_root(P, s) || holds(s, false) != holds_at_critical) continue;
+    Rational other = holds_at_critical ? lo : hi;  // balance: [other, s) fails; closure: (s, other] holds
+    for (int t = 0; t < 64; ++t, other = (other + s) / 2) {
+      if (!all_constant_on(P, s, other)) continue;
+      if (holds(other, false) == holds_at_critical) break;  // the same answer on both sides: s is not μ*
+      out.kind = Critical_kind::value;
+      out.lower = out.upper = s;
+      out.constant = true;
+      holds(s, true);
+      holds(other, true);
+      (holds_at_critical ? out.above_mu : out.below_mu) = s;
+      (holds_at_critical ? out.below_mu : out.above_mu) = other;
+      return;
+    }
+  }
+  bisect_until(tol * (hi + 1 / two_to(64)));
+  out.kind = Critical_kind::value;
+  out.lower = lo, out.upper = hi;
+  holds(lo, true);
+  holds(hi, true);
+  out.below_mu = lo, out.above_mu = hi;
+}
+
+Critical_mu closure_mu(const Scene& scene, Mode mode, const Rational& tol) {
+  Critical_mu out;
+  const auto closed = [&](const Rational& mu, bool certify) {
+    ++out.decisions;
+    const Closure_answer a = decide_closure(at_common_mu(scene, mu), Property::force_closure, mode, certify);
+    if (certify) (a.holds ? out.above_closure : out.below_closure) = a.certificate;
+    return a.holds;
+  };
+  if (closed(0, true)) {
+    out.kind = Critical_kind::always;
+    out.above_mu = Rational(0);
+    return out;
+  }
+  const Closure_answer limit = decide_closure(limit_scene(scene), Property::force_closure, mode, true);
+  ++out.decisions;
+  if (!limit.holds) {  // no μ closes: a twist orthogonal to every b_i
+    out.kind = Critical_kind::never;
+    out.limit_twist = limit.certificate.twist;
+    return out;
+  }
+  Rational lo = 0, hi = 1;
+  for (int guard = 0; !closed(hi, false); ++guard) {
+    if (guard > 100000) throw std::logic_error("critical mu: closure never reached although the limit cone closes");
+    lo = hi, hi *= 2;
+  }
+  search(out, minors(families(scene, false)), lo, hi, tol, false, closed);
+  return out;
+}
+
+Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
+  Critical_mu out;
+  const auto balanced = [&](const Rational& mu, bool certify) {
+    ++out.decisions;
+    const Equilibrium_answer a = decide_equilibrium(at_common_mu(scene, mu), mode, certify);
+    if (certify) (a.balanced ? out.above_balance : out.below_balance) = a.certificate;
+    return a.balanced;
+  };
+  if (balanced(0, true)) {
+    out.kind = Critical_kind::always;
+    out.above_mu = Rational(0);
+    return out;
+  }
+  const Equilibrium_answer limit = decide_equilibrium(limit_scene(scene), mode, true);
+  ++out.decisions;
+  if (!limit.balanced) {
+    out.kind = Critical_kind::never;
+    out.limit_twist = limit.certificate.twist;
+    return out;
+  }
+  const std::vector<Poly> P = minors(families(scene, true));
+  Rational M = 1;
+  for (const Poly& p : P) M = std::max(M, root_bound(p));
+  M += 1;  // beyond every minor's roots (complex ones too): the answer there is the answer for every larger μ
+  for (const Poly& p : P)
+    if (eval(p, M) == 0 || !no_root_beyond(p, M)) throw std::logic_error("critical mu: a minor has a root beyond its bound");
+  if (!balanced(M, true)) {  // the load is on the limit cone's boundary: reached by no finite μ
+    out.kind = Critical_kind::never;
+    out.below_mu = M;
+    out.constant_beyond = true;
+    return out;
+  }
+  Rational lo = 0, hi = 1;
+  while (!balanced(hi, false)) lo = hi, hi = std::min(Rational(hi * 2), M);
+  search(out, P, lo, hi, tol, true, balanced);
+  return out;
+}
+
+}  // namespace
+
+Critical_answer decide_critical_mu(const Scene& scene, Mode mode, const Rational& tolerance) {
+  bool point = false;
+  for (const Contact& c : scene.contacts) point = point || c.kind == Contact::Kind::point;
+  if (!point) throw Input_error("contacts: no point contact, so no friction coefficient to find");
+  if (tolerance <= 0) throw Input_error("--tolerance: " + to_string(tolerance) + " is not positive");
+  Critical_answer a;
+  a.closure = closure_mu(scene, mode, tolerance);
+  if (scene.load) a.equilibrium = balance_mu(scene, mode, tolerance);
+  return a;
+}
+
+}  // namespace wrenchkit

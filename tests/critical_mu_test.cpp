@@ -1,0 +1,155 @@
+// [QL-2] The critical friction coefficient μ*: golden cases worked by hand (two fingers: the tangent of the contact
+// line's angle; the ladder's 1/7 of theory.md §9 for its equilibrium and 4/3 for its closure; grasps no friction
+// closes; a load only an infinite μ balances; form closure: "always"), and on random grasps the theorem's own
+// statement: the property fails at μ* (closure) or just below it (balance) and holds just above it (closure) or at it
+// (balance), μ*·(1 ± 10⁻⁹); brackets fail at their lower end and hold at their upper end; every certificate accepted
+// by the independent checker.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "exact/certificates/certificates.h"
+#include "exact/io/scene.h"
+#include "exact/statics/critical_mu.h"
+#include "proofs/checker/checker.h"
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+using namespace test;
+
+Scene scene_of(const std::string& text) { return read_scene(text, Input_limits{}); }
+const Rational kTol(1, 1000000000000ul);
+
+std::string rejected(const std::string& scene, const std::string& cert) {
+  const wrenchkit_checker::Result r = wrenchkit_checker::check(scene, cert, wrenchkit_checker::Limits{});
+  return r.outcome == wrenchkit_checker::Outcome::accepted ? "" : r.message + "\n" + cert;
+}
+bool closed(const Scene& s, const Rational& mu) {
+  return decide_closure(at_common_mu(s, mu), Property::force_closure, Mode::exact, false).holds;
+}
+bool balanced(const Scene& s, const Rational& mu) { return decide_equilibrium(at_common_mu(s, mu), Mode::exact, false).balanced; }
+
+Critical_answer answer(const std::string& text) { return decide_critical_mu(scene_of(text), Mode::hybrid, kTol); }
+
+TEST(CriticalMuGolden, TwoFingersTangentOfTheContactLine) {
+  // the contact line from (-1, 0) to (1, 1) makes tan = 1/2 with both normals
+  const char* t = R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0]}, {"at": [1, 1], "normal": [-1, 0]}]})";
+  const Critical_answer a = answer(t);
+  EXPECT_TRUE(a.closure.exact());
+  EXPECT_EQ(a.closure.lower, Rational(1, 2));
+  EXPECT_FALSE(a.equilibrium);
+  EXPECT_EQ(rejected(t, critical_mu_certificate(a.closure, true)), "");
+  // different angles: the larger tangent (3/4 at one finger, 1/3 at the other... here 4/3 and 3/4)
+  const char* l = R"({"wrenchkit": 1, "body": {"com": ["-1/2", "7/2"]},
+    "contacts": [{"at": [0, 0], "normal": [0, 1]}, {"at": [-4, 3], "normal": [1, 0]}], "load": {"gravity": 1}})";
+  const Critical_answer b = answer(l);
+  EXPECT_EQ(b.closure.lower, Rational(4, 3));
+  EXPECT_TRUE(b.closure.exact());
+  ASSERT_TRUE(b.equilibrium);  // theory.md §9: the ladder stands iff mu >= 1/7
+  EXPECT_TRUE(b.equilibrium->exact());
+  EXPECT_EQ(b.equilibrium->lower, Rational(1, 7));
+  EXPECT_EQ(rejected(l, critical_mu_certificate(b.closure, true)), "");
+  EXPECT_EQ(rejected(l, critical_mu_certificate(*b.equilibrium, false)), "");
+}
+
+TEST(CriticalMuGolden, CollinearFingersNeedAnyFriction) {
+  const char* t = R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0]}, {"at": [1, 0], "normal": [-1, 0]}]})";
+  const Critical_answer a = answer(t);
+  EXPECT_TRUE(a.closure.exact());
+  EXPECT_EQ(a.closure.lower, 0);
+  EXPECT_EQ(rejected(t, critical_mu_certificate(a.closure, true)), "");
+}
+
+TEST(CriticalMuGolden, NeverAndAlways) {
+  // both fingers push +x: no friction closes the grasp, nor balances a push along +x
+  const char* t = R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0]}, {"at": [1, 1], "normal": [1, 0]}],
+                     "load": {"force": [1, 0], "at": [0, 0]}})";
+  const Critical_answer a = answer(t);
+  EXPECT_EQ(a.closure.kind, Critical_kind::never);
+  EXPECT_EQ(a.equilibrium->kind, Critical_kind::never);
+  EXPECT_TRUE(a.closure.limit_twist);
+  EXPECT_EQ(rejected(t, critical_mu_certificate(a.closure, true)), "");
+  EXPECT_EQ(rejected(t, critical_mu_certificate(*a.equilibrium, false)), "");
+  // a sideways push on one contact: balanced only in the limit of infinite friction
+  const char* s = R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [0, 1]}], "load": {"force": [1, 0], "at": [0, 0]}})";
+  const Critical_answer b = answer(s);
+  EXPECT_EQ(b.equilibrium->kind, Critical_kind::never);
+  EXPECT_TRUE(b.equilibrium->constant_beyond);
+  EXPECT_EQ(rejected(s, critical_mu_certificate(*b.equilibrium, false)), "");
+  // form closure (square_crossed_couples): closed without friction
+  const std::string f = read_text(source_dir() + "/tests/golden/square_crossed_couples.scene.json");
+  const Critical_answer c = answer(f);
+  EXPECT_EQ(c.closure.kind, Critical_kind::always);
+  EXPECT_EQ(rejected(f, critical_mu_certificate(c.closure, true)), "");
+}
+
+// Random grasps (2–4 contacts pressing roughly inward, a load now and then): the theorem's own statement at μ* and
+// 10⁻⁹ beside it, and the checker.
+TEST(CriticalMuProperty, RandomGraspsMeetTheirThreshold) {
+  std::mt19937_64 rng(seed(20261129));
+  int values = 0, exact = 0, brackets = 0;
+  for (int trial = 0; trial < 80; ++trial) {
+    std::string text = R"({"wrenchkit": 1, "contacts": [)";
+    const int n = 2 + static_cast<int>(rng() % 3);
+    for (int i = 0; i < n; ++i) {
+      int x = 0, y = 0;
+      while (x == 0 && y == 0) x = static_cast<int>(rng() % 7) - 3, y = static_cast<int>(rng() % 7) - 3;
+      int nx = -x + static_cast<int>(rng() % 5) - 2, ny = -y + static_cast<int>(rng() % 5) - 2;
+      if (nx == 0 && ny == 0) nx = 1;
+      text += (i ? ", " : "") + std::string("{\"at\": [") + std::to_string(x) + ", " + std::to_string(y) + "], \"normal\": [" +
+              std::to_string(nx) + ", " + std::to_string(ny) + "]}";
+    }
+    text += "]";
+    if (trial % 2) text += R"(, "load": {"force": [)" + std::to_string(static_cast<int>(rng() % 5) - 2) + ", -3], \"at\": [" +
+                           std::to_string(static_cast<int>(rng() % 3) - 1) + ", 0]}";
+    text += "}";
+    const Scene s = scene_of(text);
+    const Critical_answer a = decide_critical_mu(s, Mode::hybrid, kTol);
+    ASSERT_EQ(rejected(text, critical_mu_certificate(a.closure, true)), "") << dump_failure(text, "critical_mu");
+    const Rational step(1, 1000000000);
+    if (a.closure.kind == Critical_kind::value) {
+      ++values;
+      const Critical_mu& c = a.closure;
+      ASSERT_FALSE(closed(s, c.lower)) << dump_failure(text, "critical_mu");
+      ASSERT_TRUE(closed(s, c.upper * (1 + step) + step)) << dump_failure(text, "critical_mu");
+      if (c.exact()) {
+        ++exact;
+        ASSERT_TRUE(closed(s, c.upper + step * step)) << dump_failure(text, "critical_mu");
+        if (c.lower > 0) {
+          ASSERT_FALSE(closed(s, c.lower * (1 - step))) << dump_failure(text, "critical_mu");
+        }
+      } else {
+        ++brackets;
+        ASSERT_TRUE(closed(s, c.upper)) << dump_failure(text, "critical_mu");
+        ASSERT_LE(c.upper - c.lower, kTol * c.upper + kTol) << dump_failure(text, "critical_mu");
+      }
+    } else if (a.closure.kind == Critical_kind::always) {
+      ASSERT_TRUE(closed(s, 0));
+    } else {
+      ASSERT_FALSE(closed(s, 1000000));
+    }
+    if (!a.equilibrium) continue;
+    const Critical_mu& e = *a.equilibrium;
+    ASSERT_EQ(rejected(text, critical_mu_certificate(e, false)), "") << dump_failure(text, "critical_mu");
+    if (e.kind == Critical_kind::value) {
+      ASSERT_TRUE(balanced(s, e.upper)) << dump_failure(text, "critical_mu");
+      ASSERT_FALSE(balanced(s, e.lower * (1 - step))) << dump_failure(text, "critical_mu");
+      if (!e.exact()) {
+        ASSERT_FALSE(balanced(s, e.lower)) << dump_failure(text, "critical_mu");
+      }
+    } else if (e.kind == Critical_kind::always) {
+      ASSERT_TRUE(balanced(s, 0));
+    } else {
+      ASSERT_FALSE(balanced(s, 1000000));
+    }
+  }
+  EXPECT_GT(values, 20);
+  EXPECT_GT(exact, 5);
+  RecordProperty("brackets", brackets);
+}
+
+}  // namespace
+}  // namespace wrenchkit
