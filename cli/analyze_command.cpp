@@ -50,17 +50,17 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
     }
     const Ls_polytope in = model.build(Side::inner), out = model.build(Side::outer);
     const Vec2 cof{sup.weighted_force_sum.x / sup.total_force, sup.weighted_force_sum.y / sup.total_force};
-    const std::string lam = to_string(model.directions().lambda_sq);
+    const std::string lam = number_text(model.directions().lambda_sq);
     Ls_summary r;
     Json_writer j;
     j.object().member("sides", n).member("lambda_squared", model.directions().lambda_sq);
     j.key("center_of_friction").array().rational(cof.x).rational(cof.y).end_array();
+    write_approx(j, "center_of_friction", {cof.x, cof.y});
     j.key("inner").object().member("facets", in.facets.size()).member("vertices", in.vertices.size()).end_object();
     j.key("outer").object().member("facets", out.facets.size()).member("vertices", out.vertices.size()).end_object();
     r.human = "limit surface (" + std::to_string(n) + " sides" + (tolerance ? ", the fewest meeting --tolerance" : "") +
               "): lambda^2 = " + lam + ", inner " + std::to_string(in.facets.size()) + " facets, outer " +
-              std::to_string(out.facets.size()) + " facets; centre of friction (" + to_string(cof.x) + ", " +
-              to_string(cof.y) + ") — 'wrenchkit limit-surface' for any N, tolerances and queries\n";
+              std::to_string(out.facets.size()) + " facets; centre of friction " + vec_text(cof) + " — 'wrenchkit limit-surface' for any N, tolerances and queries\n";
     if (scene.load) {  // gravity beside the support presses it: nothing in-plane (load_wrench)
       const Vec3q p = load_wrench(scene);
       Motion_options mo;
@@ -68,6 +68,7 @@ std::optional<Ls_summary> limit_surface_summary(const Options& o, const std::opt
       mo.polygons = {&model, &in, &out};
       const Motion_answer m = decide_motion(Support_model(scene), p, o.mode, mo);
       j.key("load_motion").object().key("load").rationals(p);
+      write_approx(j, "load", {p[0], p[1], p[2]});
       j.member("motion", motion_name(m.motion)).member("decided_by", decided_by_name(m.decided_by)).end_object();
       r.human += "the load on the support: " + std::string(motion_name(m.motion)) + " (" +
                  (m.motion == Motion::undecided ? m.undecided_why : std::string(decided_by_words(m.decided_by))) + ")\n";
@@ -96,14 +97,16 @@ std::optional<Ls_summary> region_summary(const Options& o, const Scene& scene, c
   Json_writer j;
   j.object().member("regions", scene.support->regions.size()).member("total_force", st.total_force);
   j.key("center_of_friction").array().rational(st.center_of_pressure.x).rational(st.center_of_pressure.y).end_array();
+  write_approx(j, "center_of_friction", {st.center_of_pressure.x, st.center_of_pressure.y});
   j.member("mu_f0", st.mu_f0).member("strictly_convex", true);
   out.human = "limit surface: " + std::to_string(scene.support->regions.size()) +
               " region(s) with a continuous pressure (strictly convex, no polytope); total force " +
-              to_string(st.total_force) + ", centre of friction (" + to_string(st.center_of_pressure.x) + ", " +
-              to_string(st.center_of_pressure.y) + ") — 'wrenchkit sliding' and 'limit-surface' for twists and loads\n";
+              number_text(st.total_force) + ", centre of friction " + vec_text(st.center_of_pressure) + " — 'wrenchkit sliding' and 'limit-surface' for twists and loads\n";
   if (q.load) {
     const Motion_answer& m = *r.motion;
-    j.key("load_motion").object().key("load").rationals(*q.load).member("motion", motion_name(m.motion));
+    j.key("load_motion").object().key("load").rationals(*q.load);
+    write_approx(j, "load", {(*q.load)[0], (*q.load)[1], (*q.load)[2]});
+    j.member("motion", motion_name(m.motion));
     j.member("decided_by", decided_by_name(m.decided_by)).member("certificate_checked", !r.certificate.empty()).end_object();
     out.human += "the load on the support: " + std::string(motion_name(m.motion)) +
                  (m.motion == Motion::undecided ? " (" + m.undecided_why + ")"
@@ -192,7 +195,7 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
   // No contacts: closure and equilibrium have nothing to say (their JSON keeps the trivial answers); say so in words.
   const bool contacts = !a.scene.contacts.empty();
   std::cout << "scene: " << (a.scene.name.empty() ? source : a.scene.name) << "\n" << frictionless_note(a.scene)
-            << (contacts ? closure_human(a.closure)
+            << (contacts ? closure_human(a.closure, a.scene)
                          : std::string("contacts: none (closure and equilibrium are questions about contacts") +
                                (a.scene.support ? "; the support's friction is below)\n" : ")\n"));
   if (a.equilibrium && contacts) std::cout << equilibrium_human(*a.equilibrium);

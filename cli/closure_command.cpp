@@ -15,26 +15,26 @@ namespace wrenchkit::cli {
 
 namespace {
 
-std::string human_verdict(const Closure_answer& a, bool form) {
+std::string human_verdict(const Closure_answer& a, const Scene& scene, bool form) {
   std::ostringstream s;
   s << (a.holds ? "yes" : "no") << "  (" << a.generators << " generator"
     << (a.generators == 1 ? "" : "s") << ", rank " << a.rank << ")\n    ";
   const Closure_certificate& c = a.certificate;
   if (a.holds) {
-    s << "certificate: strictly positive weights on " << c.combination.size()
-      << " generators sum to the zero wrench:";
-    for (const auto& [ref, w] : c.combination)
-      s << " " << to_string(w) << "·c" << ref.contact << "." << edge_name(ref.edge);
-    s << "; so every wrench is a" << (form ? " resisted load: no motion is possible" : " possible resultant");
+    // The certificate's weights on cone edges, as the forces they put on each contact (the certificate keeps the weights).
+    s << "certificate: the contact forces "
+      << contact_forces_text(contact_forces(scene, c.combination, form ? Reading::frictionless : Reading::friction))
+      << " sum to the zero wrench (strictly positive weights on " << c.combination.size()
+      << (form ? " contact normals" : " friction cones' edges") << " in the certificate); so every wrench is a"
+      << (form ? " resisted load: no motion is possible" : " possible resultant");
   } else {
     const Twist_reading r = read_twist(c.twist);
-    s << "certificate: the twist " << vec_text(c.twist) << " has power >= 0 against every generator";
+    s << "certificate: the twist " << twist_text(c.twist) << " has power >= 0 against every generator";
     if (r.label == 'i')
-      s << " (a translation; its centre is at infinity in direction (" << to_string(r.point[0])
-        << ", " << to_string(r.point[1]) << "))";
+      s << " (a translation; its centre is at infinity in direction " << vec_text(Vec2{r.point[0], r.point[1]}) << ")";
     else
-      s << " (a " << (r.label == '+' ? "counter-clockwise" : "clockwise") << " rotation about ("
-        << to_string(r.point[0]) << ", " << to_string(r.point[1]) << "), labeled " << r.label << ")";
+      s << " (a " << (r.label == '+' ? "counter-clockwise" : "clockwise") << " rotation about "
+        << vec_text(Vec2{r.point[0], r.point[1]}) << ", labeled " << r.label << ")";
     s << (form ? "; the contacts allow this motion to first order"
                : "; so the contact forces cannot resist a load along -t (the wrench -t is not a possible "
                  "resultant of the contact forces)");
@@ -61,8 +61,9 @@ void write_closure(Json_writer& w, const Options& o, const Closure_item& r, cons
     w.key("certificate").raw(r.force_certificate).key("form_certificate").raw(r.form_certificate);
 }
 
-std::string closure_human(const Closure_item& r) {
-  return "force closure: " + human_verdict(r.force, false) + "\nform closure:  " + human_verdict(r.form, true) + "\n";
+std::string closure_human(const Closure_item& r, const Scene& scene) {
+  return "force closure: " + human_verdict(r.force, scene, false) + "\nform closure:  " + human_verdict(r.form, scene, true) +
+         "\n";
 }
 
 Scene_answer prepare_closure_json(const Options& o) {
@@ -82,7 +83,7 @@ int run_closure(const Options& o, const std::string& scene_text, const std::stri
     std::cout << json_answer([&](Json_writer& w) { write_closure(w, o, r, command); }) << "\n";
   } else {
     std::cout << "scene: " << (r.name.empty() ? source : r.name) << "\n" << frictionless_note(scene)
-              << closure_human(r)
+              << closure_human(r, scene)
               << "decided by: " << arithmetic_name(r.decided_by()) << " (" << r.force.exact_predicates + r.form.exact_predicates
               << " of " << r.force.predicates + r.form.predicates << " predicates in exact arithmetic)\n"
               << "both certificates accepted by the independent checker (exact arithmetic)\n";

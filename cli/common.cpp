@@ -4,12 +4,15 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/common.h"
 #include "cli/float_json.h"
 #include "exact/io/input_error.h"
+#include "exact/numbers/decimal.h"
+#include "exact/numbers/vectors.h"
 
 namespace wrenchkit::cli {
 
@@ -55,9 +58,51 @@ void write_file(const std::string& path, const std::string& text) {
 std::string human_number(const Rational& q) {
   std::string t = to_string(q);
   if (t.size() <= 24) return t;
-  char b[40];
-  std::snprintf(b, sizeof b, "~%.12g", q.get_d());
-  return b;
+  return "~" + decimal_text(q, 12);
+}
+
+std::string number_text(const Rational& q) {
+  std::string t = human_number(q);
+  if (q.get_den() == 1 || t[0] == '~') return t;  // an integer, or already a decimal
+  return t + " (≈ " + decimal_text(q) + ")";
+}
+
+namespace {
+// " ≈ (d1, d2, …)" when an entry of v is shown as a fraction (not an integer, not already "~" and its decimal), else "".
+std::string approx_suffix(const std::vector<Rational>& v) {
+  bool fractions = false;
+  for (const Rational& x : v) fractions = fractions || (x.get_den() != 1 && human_number(x)[0] != '~');
+  if (!fractions) return "";
+  std::string approx = " ≈ (";
+  for (std::size_t i = 0; i < v.size(); ++i) approx += (i ? ", " : "") + decimal_text(v[i]);
+  return approx + ")";
+}
+}  // namespace
+
+std::string vec_text(const std::vector<Rational>& v) {
+  std::string exact = "(";
+  for (std::size_t i = 0; i < v.size(); ++i) exact += (i ? ", " : "") + human_number(v[i]);
+  return exact + ")" + approx_suffix(v);
+}
+std::string vec_text(const Vec3q& v) { return vec_text(std::vector<Rational>(v.begin(), v.end())); }
+std::string vec_text(const Vec2& p) { return vec_text(std::vector<Rational>{p.x, p.y}); }
+std::string twist_text(const Vec3q& t) { return vec_text(primitive_vec(t)); }
+std::string motion_text(const Vec3q& t) {
+  const std::string words = motion_words(t);
+  if (t[2] == 0) return words;  // a translation: its direction in primitive integers
+  // "a … rotation about " from motion_words, the centre as vec_text writes a point.
+  return words.substr(0, words.find(" about (") + 7) + vec_text(Vec2{Rational(-t[1] / t[2]), Rational(t[0] / t[2])});
+}
+
+void approx_number(Json_writer& w, const Rational& q) {
+  const std::optional<double> d = nearest_double(q);
+  w.raw(d ? float_number(*d) : decimal_text(q, 17));
+}
+
+void write_approx(Json_writer& w, const std::string& key, const std::vector<Rational>& v) {
+  w.key(key + "_approx").array();
+  for (const Rational& x : v) approx_number(w, x);
+  w.end_array();
 }
 
 std::string frictionless_note(const Scene& scene) {
@@ -80,25 +125,12 @@ std::string ask_support_text() {
          "hold' with contacts and a load\n";
 }
 
-std::string approx_vec_text(const std::vector<Rational>& v) {
-  std::string exact = "(", approx = "(";
-  bool fractions = false;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    exact += (i ? ", " : "") + human_number(v[i]);
-    fractions = fractions || v[i].get_den() != 1;
-    char b[40];
-    std::snprintf(b, sizeof b, "%.6g", v[i].get_d());
-    approx += (i ? ", " : "") + std::string(b);
-  }
-  return exact + ")" + (fractions ? " ≈ " + approx + ")" : std::string());
-}
-
 std::string contact_forces_text(const std::vector<Contact_force>& forces) {
   std::string s;
   for (const Contact_force& f : forces) {
     if (!s.empty()) s += "; ";
     s += "c" + std::to_string(f.contact) + (f.name.empty() ? "" : " (" + f.name + ")") + " " +
-         approx_vec_text({f.wrench[0], f.wrench[1]});
+         (f.point ? vec_text(std::vector<Rational>{f.wrench[0], f.wrench[1]}) : "the wrench " + vec_text(f.wrench));
   }
   return s;
 }
@@ -108,14 +140,10 @@ void write_forces(Json_writer& w, const std::vector<Contact_force>& forces) {
   for (const Contact_force& f : forces) {
     w.object().member("contact", f.contact).member("name", f.name);
     w.key("force").array().rational(f.wrench[0]).rational(f.wrench[1]).end_array();
-    w.key("force_approx").array().raw(float_number(f.wrench[0].get_d())).raw(float_number(f.wrench[1].get_d()));
-    w.end_array().end_object();
+    write_approx(w, "force", {f.wrench[0], f.wrench[1]});
+    w.end_object();
   }
   w.end_array();
-}
-
-std::string vec_text(const std::array<Rational, 3>& v) {
-  return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")";
 }
 
 int write_answer(const Options& o, const std::function<void(Json_writer&)>& json,

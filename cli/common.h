@@ -153,16 +153,31 @@ std::string scene_line(const std::string& name, const std::string& source);
 std::string read_input(const std::string& path, std::size_t limit);
 // Writes FILE atomically: a temporary beside it, then a rename, so nothing is half-written.
 void write_file(const std::string& path, const std::string& text);
-// An exact rational for human output: "p/q" when short, else "~" and 12 significant digits (the
-// exact value is in --json).
+// The one way text output writes exact numbers for people (docs/cli.md, "Text output"). human_number: the exact
+// rational alone, "p/q" when short, else "~" and 12 significant digits (the exact value is in --json). number_text:
+// a number a person reads, with its decimal beside it when it is not an integer, "1/7 (≈ 0.142857)" (6 significant
+// digits, correctly rounded from the exact value: decimal_text of exact/numbers/decimal.h). vec_text: a vector (a
+// point, load, force, distribution) with, when any entry is not an integer, the decimals beside it: "(0, 1/2) ≈ (0,
+// 0.5)". twist_text: a twist as a direction, its primitive integer multiple "(0, 1, 1)" (the scaled value is in
+// certificates, where a check needs it).
 std::string human_number(const Rational& q);
-std::string vec_text(const std::array<Rational, 3>& v);
-// A vector of exact numbers with, when any is not an integer, its decimals beside it: "(0, 1/2) ≈ (0, 0.5)".
+std::string number_text(const Rational& q);
+std::string vec_text(const std::vector<Rational>& v);
+std::string vec_text(const Vec3q& v);
+std::string vec_text(const Vec2& p);
+std::string twist_text(const Vec3q& t);
+// motion_words (exact/numbers/vectors.h) with the rotation centre's decimals: "a counter-clockwise rotation about (1/3,
+// 0) ≈ (0.333333, 0)".
+std::string motion_text(const Vec3q& t);
+// The same for JSON: an "_approx" sibling beside an exact value, as force_approx has always been: JSON numbers, each
+// the exact value's nearest double (17 significant digits), or its 17-digit decimal beyond the doubles' range.
+// approx_number writes one value, write_approx the member KEY_approx of a vector.
+void approx_number(Json_writer& w, const Rational& q);
+void write_approx(Json_writer& w, const std::string& key, const std::vector<Rational>& v);
 // "note: …" when point contacts have no "mu" (frictionless by default; the text output says so once), else "".
 std::string frictionless_note(const Scene& scene);
 // What a support scene allows to ask, for `sliding` and `limit-surface` asked nothing (text only).
 std::string ask_support_text();
-std::string approx_vec_text(const std::vector<Rational>& v);
 // Each contact's force under a certificate's weights, in words: "c0 (floor, left) (0, 1/2) ≈ (0, 0.5); …".
 std::string contact_forces_text(const std::vector<Contact_force>& forces);
 // The same as JSON: "forces": [{"contact", "name", "force": [fx, fy] exact, "force_approx": [doubles]}, …].
@@ -230,7 +245,7 @@ Scene_answer prepare_hold_json(const Options& o);
 // closure_command.cpp, equilibrium_command.cpp (analyze uses these pieces): the pipeline's items
 // (exact/pipeline/pipeline.h) written as the members of a JSON answer and as text.
 void write_closure(Json_writer& w, const Options& o, const Closure_item& r, const char* command);
-std::string closure_human(const Closure_item& r);
+std::string closure_human(const Closure_item& r, const Scene& scene);
 int run_closure(const Options& o, const std::string& scene_text, const std::string& source, const char* command);
 void write_equilibrium(Json_writer& w, const Options& o, const Equilibrium_item& r, const char* command);
 std::string equilibrium_human(const Equilibrium_item& r);

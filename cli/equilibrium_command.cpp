@@ -15,6 +15,7 @@ void write_equilibrium(Json_writer& w, const Options& o, const Equilibrium_item&
   w.member("command", command).member("name", r.name).member("mode", mode_name(o.mode));
   w.member("decided_by", arithmetic_name(r.answer.decided_by())).member("balanced", r.answer.balanced);
   w.key("load").array().rational(l[0]).rational(l[1]).rational(l[2]).end_array();
+  write_approx(w, "load", {l[0], l[1], l[2]});
   w.member("generators", r.answer.generators);
   if (r.answer.balanced) write_forces(w, r.forces);
   w.member("certificate_checked", true).key("certificate").raw(r.certificate);
@@ -22,9 +23,8 @@ void write_equilibrium(Json_writer& w, const Options& o, const Equilibrium_item&
 
 std::string equilibrium_human(const Equilibrium_item& r) {
   const Equilibrium_answer& a = r.answer;
-  const std::array<Rational, 3> load = {a.load[0], a.load[1], a.load[2]};
   std::ostringstream s;
-  s << "load: the wrench " << vec_text(load) << " (force, moment about the origin)\n"
+  s << "load: the wrench " << vec_text(a.load) << " (force, moment about the origin)\n"
     << "balanced: " << (a.balanced ? "yes" : "no") << "\n    certificate: ";
   if (a.balanced) {
     if (a.certificate.combination.empty()) s << "the load is zero";
@@ -32,14 +32,13 @@ std::string equilibrium_human(const Equilibrium_item& r) {
            << "friction cones' edges in the certificate)";
   } else {
     const Twist_reading tr = read_twist(a.certificate.twist);
-    s << "the twist " << vec_text(a.certificate.twist)
+    s << "the twist " << twist_text(a.certificate.twist)
       << " has power >= 0 against every contact wrench and > 0 against the load";
     if (tr.label == 'i')
-      s << " (a translation toward direction (" << to_string(tr.point[0]) << ", " << to_string(tr.point[1])
-        << ") at infinity)";
+      s << " (a translation toward direction " << vec_text(Vec2{tr.point[0], tr.point[1]}) << " at infinity)";
     else
-      s << " (a " << (tr.label == '+' ? "counter-clockwise" : "clockwise") << " rotation about ("
-        << to_string(tr.point[0]) << ", " << to_string(tr.point[1]) << "))";
+      s << " (a " << (tr.label == '+' ? "counter-clockwise" : "clockwise") << " rotation about "
+        << vec_text(Vec2{tr.point[0], tr.point[1]}) << ")";
     s << ": the load drives a motion the contacts allow";
   }
   s << "\n";

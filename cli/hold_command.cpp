@@ -18,11 +18,15 @@ const char* support_kind(const Hold_answer& a) { return !a.has_support ? "none" 
 
 // The motion a failing twist describes: {"twist", "kind": "rotation", "center", "sense"} or
 // {"twist", "kind": "translation", "direction"} (the velocity's direction), and the words.
-void write_motion(Json_writer& w, const Vec3q& t) {
+// The twist is a direction here: its primitive integer multiple (the certificate keeps the value its checks need).
+void write_motion(Json_writer& w, const Vec3q& twist) {
+  const Vec3q t = primitive_vec(twist);
   w.object().key("twist").rationals(t);
   if (t[2] != 0) {
-    w.member("kind", "rotation").key("center").array().rational(Rational(-t[1] / t[2])).rational(Rational(t[0] / t[2]));
-    w.end_array().member("sense", t[2] > 0 ? "counter-clockwise" : "clockwise");
+    const Rational cx = -t[1] / t[2], cy = t[0] / t[2];
+    w.member("kind", "rotation").key("center").array().rational(cx).rational(cy).end_array();
+    write_approx(w, "center", {cx, cy});
+    w.member("sense", t[2] > 0 ? "counter-clockwise" : "clockwise");
   } else {
     const std::array<Integer, 2> d = primitive(t[0], t[1]);
     w.member("kind", "translation").key("direction").array().rational(d[0]).rational(d[1]).end_array();
@@ -49,6 +53,7 @@ void write_hold(Json_writer& w, const Hold_item& r) {
   write_holds(w.key("holds"), a.verdict);
   w.member("decided_by", decided_by_text(a));
   w.key("load").array().rational(a.load[0]).rational(a.load[1]).rational(a.load[2]).end_array();
+  write_approx(w, "load", {a.load[0], a.load[1], a.load[2]});
   w.member("generators", a.generators).member("support", support_kind(a));
   if (a.rounds) w.member("lp_rounds", a.rounds);
   if (a.has_support && !r.scene.support->regions.empty())
@@ -111,8 +116,8 @@ std::string forces_text(const Scene& scene, const Hold_witness& h, bool support)
 std::string hold_human(const Hold_item& r) {
   const Hold_answer& a = r.answer;
   std::ostringstream s;
-  s << "load: the wrench " << vec_text({a.load[0], a.load[1], a.load[2]}) << " on the body (force, moment about the origin)"
-    << (gravity_across_support(r.scene) ? "; gravity " + human_number(r.scene.load->weight) +
+  s << "load: the wrench " << vec_text(a.load) << " on the body (force, moment about the origin)"
+    << (gravity_across_support(r.scene) ? "; gravity " + number_text(r.scene.load->weight) +
                                               " at body.com presses the body on the support (its total normal force), "
                                               "nothing in the plane"
                                         : std::string())
@@ -142,14 +147,14 @@ std::string hold_human(const Hold_item& r) {
     case Hold_verdict::impending:
       s << "holds: impending — " << carriers << " can just balance the load";
       if (a.unknown) s << " under every admissible distribution (every extreme one holds it at the limit)";
-      s << ", with no margin: it may start to slip in " << motion_words(a.impending ? a.impending->twist.twist : a.failing->twist)
-        << " (twist " << vec_text(a.impending ? a.impending->twist.twist : a.failing->twist)
+      s << ", with no margin: it may start to slip in " << motion_text(a.impending ? a.impending->twist.twist : a.failing->twist)
+        << " (twist " << twist_text(a.impending ? a.impending->twist.twist : a.failing->twist)
         << "; every contact allows it, and the load's power meets the friction's exactly)\n";
       if (a.impending) s << "  " << forces_text(r.scene, a.impending->holding, a.has_support) << " cancel the load exactly\n";
       break;
     case Hold_verdict::fails:
-      s << "holds: no — the body moves: " << motion_words(a.failing->twist) << " (twist "
-        << vec_text(a.failing->twist) << ")";
+      s << "holds: no — the body moves: " << motion_text(a.failing->twist) << " (twist "
+        << twist_text(a.failing->twist) << ")";
       if (a.unknown) s << " under every admissible distribution";
       s << (a.has_support ? "\n  every contact allows it, and the load drives it harder than the support's friction can resist\n"
                           : "\n  every contact allows it, and the load drives it (the contacts cannot resist it)\n");
@@ -161,7 +166,7 @@ std::string hold_human(const Hold_item& r) {
         << (a.held_as == Hold_verdict::holds ? "holds" : "is just held (impending)") << " with f = "
         << distribution_text(a.holding->support.distribution) << " and "
         << (a.moved_as == Hold_verdict::fails ? "fails" : "is just held (impending)") << " with f = "
-        << distribution_text(a.failing->distribution) << " (then " << motion_words(a.failing->twist)
+        << distribution_text(a.failing->distribution) << " (then " << motion_text(a.failing->twist)
         << (a.moved_as == Hold_verdict::fails ? "" : " is admitted") << ")\n";
       break;
     case Hold_verdict::undecided:

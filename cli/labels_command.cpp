@@ -21,7 +21,7 @@ namespace wrenchkit::cli {
 
 namespace {
 
-std::string pt(const Vec2& p) { return "(" + to_string(p.x) + ", " + to_string(p.y) + ")"; }
+std::string pt(const Vec2& p) { return vec_text(p); }
 
 std::string region_text(const Region& r) {
   const auto texts = [](const std::vector<Vec2>& x) {
@@ -104,6 +104,7 @@ std::string float_labels_human(const fl::Labels_twin& l) {
 void write_load(Json_writer& w, const Labels_item& s) {
   if (!s.load) return;
   w.key("load").object().key("wrench").rationals(*s.load);
+  write_approx(w, "wrench", {(*s.load)[0], (*s.load)[1], (*s.load)[2]});
   w.member("balanced", *s.load_balanced).end_object();
 }
 
@@ -231,7 +232,7 @@ void write_query(Json_writer& w, const Labels_query& q, const Labels_item& s) {
   if (!q.motion) return;
   const Mode_answer& m = *s.modes;
   w.key("query").object();
-  write_twist(w, {(*q.motion)[0], (*q.motion)[1], (*q.motion)[2]});
+  write_twist(w, primitive_vec({(*q.motion)[0], (*q.motion)[1], (*q.motion)[2]}));  // a direction: small integers
   w.member("feasible", m.feasible).member("marginal", m.marginal).key("modes").array();
   for (std::size_t i = 0; i < m.modes.size(); ++i)
     w.object().member("contact", i).member("mode", mode_name(m.modes[i])).end_object();
@@ -281,7 +282,7 @@ std::string closure_line(const Labels_item& s) {
 std::string load_line(const Labels_item& s) {
   if (!s.load) return "";
   const Vec3q& w = *s.load;
-  return "load " + vec_text({w[0], w[1], w[2]}) + ": " +
+  return "load " + vec_text(w) + ": " +
          (*s.load_balanced ? "balanced (minus the load is a possible contact resultant)"
                            : "not balanced (minus the load is not a possible contact resultant)") +
          "\n";
@@ -317,7 +318,7 @@ std::string labels_text(const Labels_item& s, const Labels_query& q, const std::
       << (s.mode == Mode::float_only ? "" : "; exact") << "):\n"
       << human_labels(s) << closure_line(s);
   if (q.resultant)
-    out << "resultant " << vec_text({(*q.resultant)[0], (*q.resultant)[1], (*q.resultant)[2]}) << ": "
+    out << "resultant " << vec_text(*q.resultant) << ": "
         << (*s.resultant_possible ? "possible" : "not possible") << "\n";
   return out.str() + load_line(s) + decided_line(s);
 }
@@ -355,7 +356,7 @@ std::string reuleaux_text(const Labels_item& s, const Labels_query& q, const std
   if (q.motion) {
     const Mode_answer& m = *s.modes;
     const Vec3q t{(*q.motion)[0], (*q.motion)[1], (*q.motion)[2]};
-    out << "twist " << vec_text({t[0], t[1], t[2]}) << " (" << motion_words(t) << "): "
+    out << "twist " << twist_text(t) << " (" << motion_text(t) << "): "
         << (m.feasible ? (m.marginal ? "feasible, marginal (keeps some contacts to first order)" : "feasible")
                        : "infeasible (penetrates)")
         << "\n";

@@ -46,7 +46,6 @@ struct Ls_options {
   bool exports() const { return !meshes().empty() || !svg_file.empty(); }
 };
 
-std::string tv(const Vec3q& v) { return "(" + to_string(v[0]) + ", " + to_string(v[1]) + ", " + to_string(v[2]) + ")"; }
 std::string tz(const Vec3z& v) { return "(" + v[0].get_str() + ", " + v[1].get_str() + ", " + v[2].get_str() + ")"; }
 
 void write_face(Json_writer& w, const Ls_face& f) {
@@ -77,7 +76,7 @@ void write_polytope(Json_writer& w, const Ls_polytope& P, bool list) {
   w.end_object();
 }
 
-std::string gauge_text(const std::optional<Rational>& g) { return g ? human_number(*g) : std::string("infinite"); }
+std::string gauge_text(const std::optional<Rational>& g) { return g ? number_text(*g) : std::string("infinite"); }
 void write_gauge(Json_writer& w, const std::optional<Rational>& g) { g ? w.rational(*g) : w.null(); }
 
 // The options, combined once (before any scene): --sides or --tolerance (resolved to N here), --twist,
@@ -143,7 +142,7 @@ const Vec3q* impending_twist(const Motion_answer& m) {
   return m.impending ? &m.impending->twist.twist : &m.sliding->twist;
 }
 
-std::string slip_text(const Vec3q& q) { return "the twist " + tv(q) + ", " + motion_words(q); }
+std::string slip_text(const Vec3q& q) { return "the twist " + twist_text(q) + ", " + motion_text(q); }
 
 // The load's motion, whatever the support (exact/sliding/motion.h): "load", "motion", "motion_decided_by", and how it
 // was decided — every force given: the float search's twists and its sliding twist (points), the certificate's cells,
@@ -151,10 +150,12 @@ std::string slip_text(const Vec3q& q) { return "the twist " + tv(q) + ", " + mot
 // the witnesses' distributions, the separating twist, why undecided (and the regions' cells).
 void write_motion(Json_writer& w, const Support_item& r, const Vec3q& load) {
   const Motion_answer& m = *r.motion;
-  w.key("load").rationals(load).member("motion", motion_name(m.motion));
+  w.key("load").rationals(load);
+  write_approx(w, "load", {load[0], load[1], load[2]});
+  w.member("motion", motion_name(m.motion));
   w.member("motion_decided_by", decided_by_name(m.decided_by));
   if (const Vec3q* slip = impending_twist(m))  // on the surface: the slip it admits (every kind of support)
-    w.key("impending_twist").rationals(*slip).member("impending_motion", motion_words(*slip));
+    w.key("impending_twist").rationals(primitive_vec(*slip)).member("impending_motion", motion_words(*slip));
   if (r.kind == Support_kind::unknown) {
     w.key("per_extreme_distribution").array();
     for (const Motion v : m.per_vertex) w.string(motion_name(v));
@@ -171,13 +172,13 @@ void write_motion(Json_writer& w, const Support_item& r, const Vec3q& load) {
       w.key("distribution").rationals(m.sliding->distribution);
       w.end_object().end_object();
     }
-    if (m.motion == Motion::slides) w.key("separating_twist").rationals(m.sliding->twist);
+    if (m.motion == Motion::slides) w.key("separating_twist").rationals(primitive_vec(m.sliding->twist));
     if (!m.undecided_why.empty()) w.member("undecided_why", m.undecided_why);
     if (r.regions) w.member("certificate_cells", m.cells);  // [RG-3] the regions' blocks
   } else if (r.kind == Support_kind::regions) {
     w.member("certificate_cells", m.cells);
     w.key("gauge_estimate").raw(std::isfinite(m.gauge_estimate) ? float_number(m.gauge_estimate) : "null");
-    if (m.motion == Motion::slides) w.key("slide_twist").rationals(m.sliding->twist);
+    if (m.motion == Motion::slides) w.key("slide_twist").rationals(primitive_vec(m.sliding->twist));
     if (!m.undecided_why.empty()) w.member("undecided_why", m.undecided_why);
   } else {
     if (m.search_twists) w.member("search_twists", m.search_twists);
@@ -190,10 +191,10 @@ void write_motion(Json_writer& w, const Support_item& r, const Vec3q& load) {
 }
 
 // The same as text: the verdict's line(s) and the certificate's.
-std::string motion_text(const Support_item& r, const Vec3q& load) {
+std::string load_motion_text(const Support_item& r, const Vec3q& load) {
   const Motion_answer& m = *r.motion;
   std::ostringstream s;
-  s << "load " << tv(load) << ": ";
+  s << "load " << vec_text(load) << ": ";
   const Vec3q* slip = impending_twist(m);
   if (r.kind == Support_kind::unknown) {
     switch (m.motion) {
@@ -204,7 +205,7 @@ std::string motion_text(const Support_item& r, const Vec3q& load) {
           << slip_text(*slip) << " meets every one's friction power)\n";
         break;
       case Motion::slides:
-        s << "slides for every admissible distribution (the twist " << tv(m.sliding->twist)
+        s << "slides for every admissible distribution (the twist " << twist_text(m.sliding->twist)
           << " drives it past every one's limit surface)\n";
         break;
       case Motion::depends:
@@ -223,7 +224,7 @@ std::string motion_text(const Support_item& r, const Vec3q& load) {
       s << " (on the limit surface: forces on " << m.cells << " cells in their closed friction discs, and "
         << slip_text(*slip) << " meets the regions' friction power exactly)\n";
     else if (m.motion == Motion::slides)
-      s << " (the twist " << tv(m.sliding->twist) << " with speed bounds at the vertices of " << m.cells
+      s << " (the twist " << twist_text(m.sliding->twist) << " with speed bounds at the vertices of " << m.cells
         << " cells: its power bound is below q.p)\n";
     else
       s << ": " << m.undecided_why << "\n";
@@ -277,7 +278,9 @@ void write_limit_surface(Json_writer& w, const Ls_options& lo, const Support_ite
   w.member("lambda_squared", d.lambda_sq).key("relative_error_bound_approx").raw(ratio_text(d));
   w.key("support").object().member("input_points", r.scene.support->points.size()).member("points", sup.points.size());
   w.member("collinear", sup.collinear).member("mu_f0", sa.mu_f0).key("center_of_friction").array();
-  w.rational(sa.center_of_friction.x).rational(sa.center_of_friction.y).end_array().end_object();
+  w.rational(sa.center_of_friction.x).rational(sa.center_of_friction.y).end_array();
+  write_approx(w, "center_of_friction", {sa.center_of_friction.x, sa.center_of_friction.y});
+  w.end_object();
   w.member("dimension", model.dimension());
   if (r.polytopes_built) {
     write_polytope(w.key("inner"), r.in, lo.list);
@@ -329,12 +332,11 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
   std::ostringstream s;
   s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
     << "support: " << sup.points.size() << " distinct point(s) with mu*f > 0 (of " << r.scene.support->points.size()
-    << " given)" << (sup.collinear ? ", collinear" : "") << ", mu*f0 = " << to_string(sa.mu_f0)
-    << ", centre of friction (" << to_string(sa.center_of_friction.x) << ", " << to_string(sa.center_of_friction.y)
-    << ")\n"
+    << " given)" << (sup.collinear ? ", collinear" : "") << ", mu*f0 = " << number_text(sa.mu_f0)
+    << ", centre of friction " << vec_text(sa.center_of_friction) << "\n"
     << "sides: " << lo.query.sides;
   if (lo.query.tolerance) s << " (the smallest meeting --tolerance " << to_string(*lo.query.tolerance) << ")";
-  s << "\ncertificate: lambda^2 = " << to_string(d.lambda_sq) << "  (lambda*LS <= LS_in <= LS <= LS_out <= LS/lambda;"
+  s << "\ncertificate: lambda^2 = " << number_text(d.lambda_sq) << "  (lambda*LS <= LS_in <= LS <= LS_out <= LS/lambda;"
     << " relative error 1/lambda - 1 ~ " << ratio_text(d) << ")\n";
   if (model.dimension() == 2)
     s << "note: one support point: the limit surface is a flat disc in the plane of its rotation twist (dimension 2);"
@@ -348,21 +350,21 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
     s << "polytopes: not built (the query is answered on the true surface; --sides or --list builds them)\n";
   s << "convention: " << kConvention << "\n";
   if (lo.query.twist) {
-    s << "twist " << tv(*lo.query.twist) << ": " << sa.cls.text << "\n";
+    s << "twist " << vec_text(*lo.query.twist) << ": " << sa.cls.text << "\n";
     for (const auto& [name, f] : {std::pair<const char*, const Ls_face*>{"inner", &sa.inner_face}, {"outer", &sa.outer_face}}) {
       s << "  load on LS_" << name << ": ";
-      if (f->dimension == 0) s << "the point " << tv(f->vertices[0]) << "\n";
+      if (f->dimension == 0) s << "the point " << vec_text(f->vertices[0]) << "\n";
       else {
         s << (f->dimension == 1 ? "the segment" : "the facet with vertices");
-        for (const Vec3q& v : f->vertices) s << " " << tv(v);
+        for (const Vec3q& v : f->vertices) s << " " << vec_text(v);
         s << "\n";
       }
     }
-    s << "  power: " << to_string(sa.h_inner) << " <= h <= " << to_string(sa.h_outer) << "\n";
+    s << "  power: " << number_text(sa.h_inner) << " <= h <= " << number_text(sa.h_outer) << "\n";
     if (r.true_power) s << "  true power (float twin, certified): " << bounded_text(*r.true_power) << "\n";
   }
   if (lo.query.load) {
-    s << motion_text(r, *lo.query.load);
+    s << load_motion_text(r, *lo.query.load);
     if (r.polytopes_built && r.motion->motion != Motion::sticks) {
       s << "  twists (outward normals of LS_out at the load's direction):";
       for (const Vec3z& g : r.cone_out.generators) s << " " << tz(g);
@@ -411,13 +413,13 @@ std::string limit_surface_float_human(const Ls_options& lo, const Support_item& 
     << "sides: " << lo.query.sides << ", lambda^2 = " << bounded_text(d.lambda_sq) << " (the float twin's direction set)\n"
     << "convention: " << kConvention << "\n";
   if (lo.query.twist) {
-    s << "twist " << tv(*lo.query.twist) << ":\n"
+    s << "twist " << vec_text(*lo.query.twist) << ":\n"
       << "  polygonal power: " << bounded_text(*r.twin_power_inner) << " <= h <= " << bounded_text(*r.twin_power_outer)
       << "\n";
     if (r.true_power) s << "  true power: " << bounded_text(*r.true_power) << "\n";
     if (r.true_load) s << "  true load: " << float_load_text(*r.true_load) << "\n";
   }
-  if (lo.query.load) s << motion_text(r, *lo.query.load);
+  if (lo.query.load) s << load_motion_text(r, *lo.query.load);
   s << "decided by: the float twin alone (every sign certified; values with certified bounds)\n";
   return s.str();
 }
@@ -441,9 +443,9 @@ std::string limit_surface_unknown_human(const Ls_options& lo, const Support_item
   std::ostringstream s;
   s << unknown_support_text(r, source);
   if (lo.query.twist)
-    s << "twist " << tv(*lo.query.twist) << ": the frictional power over every admissible distribution lies in ["
-      << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n" << regions_power_text(r);
-  if (lo.query.load) s << motion_text(r, *lo.query.load);
+    s << "twist " << vec_text(*lo.query.twist) << ": the frictional power over every admissible distribution lies in ["
+      << number_text(r.power->lower) << ", " << number_text(r.power->upper) << "]\n" << regions_power_text(r);
+  if (lo.query.load) s << load_motion_text(r, *lo.query.load);
   s << "convention: " << kConvention << "\n";
   return s.str();
 }
@@ -487,7 +489,7 @@ std::string limit_surface_regions_human(const Ls_options& lo, const Support_item
   s << region_statics_text(r, source)
     << "limit surface: strictly convex (a continuous pressure): no exact polytope; queries are certified\n"
     << region_twist_text(r);
-  if (lo.query.load) s << motion_text(r, *lo.query.load);
+  if (lo.query.load) s << load_motion_text(r, *lo.query.load);
   s << "convention: " << kConvention << "\n";
   return s.str();
 }

@@ -9,6 +9,7 @@
 
 #include "cli/common.h"
 #include "cli/float_json.h"
+#include "exact/numbers/decimal.h"
 #include "exact/io/input_error.h"
 #include "exact/io/json_writer.h"
 #include "exact/pipeline/support_answer.h"
@@ -19,16 +20,17 @@
 namespace wrenchkit::cli {
 
 // An unknown distribution (docs/theory-sliding.md §1–§2), for sliding and limit-surface alike.
-std::string distribution_text(const std::vector<Rational>& f) {
-  std::string s = "(";
-  for (std::size_t i = 0; i < f.size(); ++i) s += (i ? ", " : "") + human_number(f[i]);
-  return s + ")";
-}
+std::string distribution_text(const std::vector<Rational>& f) { return vec_text(f); }
 
 namespace {
 
 void write_xy(Json_writer& w, const Vec2& p) { w.array().rational(p.x).rational(p.y).end_array(); }
-std::string point_text(const Vec2& p) { return "(" + human_number(p.x) + ", " + human_number(p.y) + ")"; }
+// A point people read (a centre): "key": [x, y] exact and "key_approx": its decimals.
+void write_centre(Json_writer& w, const std::string& key, const Vec2& p) {
+  write_xy(w.key(key), p);
+  write_approx(w, key, {p.x, p.y});
+}
+
 
 // "support": {"points": n, "regions": [{area, force, mu, centre of pressure, pressure, moments, triangles}, …]}.
 void write_support_regions(Json_writer& w, const Support& s) {
@@ -47,8 +49,8 @@ std::string region_lines(const Support& s) {
   std::ostringstream o;
   for (std::size_t k = 0; k < s.regions.size(); ++k) {
     const Support_region& g = s.regions[k];
-    o << "  region " << k << ": area " << human_number(g.area) << ", force " << human_number(g.total) << ", mu "
-      << human_number(s.mu_of(g)) << ", centre of pressure " << point_text({g.moment.x / g.total, g.moment.y / g.total})
+    o << "  region " << k << ": area " << number_text(g.area) << ", force " << number_text(g.total) << ", mu "
+      << number_text(s.mu_of(g)) << ", centre of pressure " << vec_text(Vec2{g.moment.x / g.total, g.moment.y / g.total})
       << " (" << (g.uniform ? "uniform" : "linear") << " pressure, " << g.triangles.size() << " triangles)\n";
   }
   return o.str();
@@ -60,8 +62,7 @@ std::string unknown_support_text(const Support_item& r, const std::string& sourc
   const Admissible& a = *r.admissible;
   std::string s = scene_line(r.scene.name, source) + "support: " + std::to_string(r.scene.support->points.size()) +
                   " points, the forces of " + std::to_string(a.unknown.size()) + " not given; weight " +
-                  human_number(r.weight) + ", centre of pressure (" + human_number(r.pressure_center.x) +
-                  ", " + human_number(r.pressure_center.y) + ")";
+                  number_text(r.weight) + ", centre of pressure " + vec_text(r.pressure_center);
   if (a.unknown.size() <= kMaxEnumeratedUnknowns)
     s += "; " + std::to_string(r.vertices.size()) + " extreme admissible distributions";
   s += "\n";
@@ -90,9 +91,7 @@ void write_unknown_distribution(Json_writer& w, const Support_item& r) {
 
 std::string regions_power_text(const Support_item& r) {
   if (!r.regions || !r.regions->has_twist) return "";
-  char lo[32], hi[32];
-  std::snprintf(lo, sizeof lo, "%.10g", r.regions->h_lo.get_d());
-  std::snprintf(hi, sizeof hi, "%.10g", r.regions->h_hi.get_d());
+  const std::string lo = decimal_text(r.regions->h_lo, 10), hi = decimal_text(r.regions->h_hi, 10);
   return std::string("  of which the regions' power (every distribution alike) lies in [") + lo + ", " + hi +
          "] (certified: exact rational ends in --json)\n";
 }
@@ -109,9 +108,6 @@ void write_power_over(Json_writer& w, const Support_item& r) {
 
 namespace {
 
-std::string thv(const Vec3q& v) {
-  return "(" + human_number(v[0]) + ", " + human_number(v[1]) + ", " + human_number(v[2]) + ")";
-}
 // "twist", "motion", and the translation's exact load or the rotation's centre (Sliding_answer and Region_sliding
 // alike).
 template <class Answer>
@@ -120,8 +116,9 @@ void write_twist_motion(Json_writer& w, const Answer& a) {
   if (a.translation) {
     w.key("load_direction").rationals(a.load_direction).member("speed_squared", a.speed_squared).key("load");
     a.load ? w.rationals(*a.load) : w.null();
+    if (a.load) write_approx(w, "load", {(*a.load)[0], (*a.load)[1], (*a.load)[2]});
   } else {
-    write_xy(w.key("rotation_center"), a.rotation_center);
+    write_centre(w, "rotation_center", a.rotation_center);
   }
 }
 
@@ -131,8 +128,8 @@ void write_region_statics(Json_writer& w, const Support_item& r) {
   const Region_sliding& a = *r.regions;
   write_support_regions(w, *r.scene.support);
   w.member("total_force", a.total_force);
-  write_xy(w.key("center_of_friction"), a.center_of_pressure);
-  write_xy(w.key("friction_centroid"), a.friction_centroid);
+  write_centre(w, "center_of_friction", a.center_of_pressure);
+  write_centre(w, "friction_centroid", a.friction_centroid);
   w.member("mu_f0", a.mu_f0);
 }
 
@@ -152,8 +149,8 @@ std::string region_statics_text(const Support_item& r, const std::string& source
   std::ostringstream o;
   o << scene_line(r.scene.name, source) << "support: " << s.points.size() << " point(s) and " << s.regions.size()
     << " region(s) with a continuous pressure\n" << region_lines(s);
-  o << "total normal force " << human_number(a.total_force) << ", centre of friction " << point_text(a.center_of_pressure)
-    << " (exact)\nmu*f0 = " << human_number(a.mu_f0) << ", friction centroid " << point_text(a.friction_centroid) << "\n";
+  o << "total normal force " << number_text(a.total_force) << ", centre of friction " << vec_text(a.center_of_pressure)
+    << " (exact)\nmu*f0 = " << number_text(a.mu_f0) << ", friction centroid " << vec_text(a.friction_centroid) << "\n";
   return o.str();
 }
 
@@ -161,23 +158,20 @@ std::string region_twist_text(const Support_item& r) {
   const Region_sliding& a = *r.regions;
   if (!a.has_twist) return "";
   std::ostringstream o;
-  o << "twist " << thv(a.twist) << ": ";
+  o << "twist " << vec_text(a.twist) << ": ";
   if (a.translation) {
     o << "a translation: the load is the force mu*f0 along v through the friction centroid\n";
-    if (a.load) o << "  load: " << thv(*a.load) << " (exact)\n";
+    if (a.load) o << "  load: " << vec_text(*a.load) << " (exact)\n";
     else
-      o << "  load: (mu*f0/|v|) * " << thv(a.load_direction) << " with |v|^2 = " << human_number(a.speed_squared)
+      o << "  load: (mu*f0/|v|) * " << vec_text(a.load_direction) << " with |v|^2 = " << number_text(a.speed_squared)
         << " (exact)\n";
   } else {
-    o << "rotation about " << point_text(a.rotation_center)
+    o << "rotation about " << vec_text(a.rotation_center)
       << (a.center_on_point ? " (a support point: its disc is a facet, inside the load box)" : "") << "\n";
   }
-  char lo[32], hi[32];
-  std::snprintf(lo, sizeof lo, "%.10g", a.h_lo.get_d());
-  std::snprintf(hi, sizeof hi, "%.10g", a.h_hi.get_d());
-  o << "  power h in [" << lo << ", " << hi << "] (certified: exact rational ends in --json"
+  o << "  power h in [" << decimal_text(a.h_lo, 10) << ", " << decimal_text(a.h_hi, 10) << "] (certified: exact rational ends in --json"
     << (a.met ? "" : "; the tolerance was not met at the largest precision") << ")\n"
-    << "  load box: " << thv(a.load_lo) << " .. " << thv(a.load_hi) << "\n";
+    << "  load box: " << vec_text(a.load_lo) << " .. " << vec_text(a.load_hi) << "\n";
   return o.str();
 }
 
@@ -252,8 +246,7 @@ std::string sliding_float_human(const Support_query& q, const Support_item& r, c
   s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
     << "centre of friction: (" << float_value_text(cof.x) << ", " << float_value_text(cof.y) << ")\n";
   if (q.twist)
-    s << "twist (" << human_number((*q.twist)[0]) << ", " << human_number((*q.twist)[1]) << ", "
-      << human_number((*q.twist)[2]) << "):\n"
+    s << "twist " << vec_text(*q.twist) << ":\n"
       << "  true power h = " << float_value_text(*r.true_power) << "\n"
       << "  true load: " << float_load_text(*r.true_load) << "\n";
   s << "decided by: the float twin alone (values with certified bounds)\n";
@@ -275,8 +268,8 @@ std::string sliding_unknown_human(const Support_query& q, const Support_item& r,
   std::ostringstream s;
   s << unknown_support_text(r, source);
   if (q.twist)
-    s << "twist " << thv(*q.twist) << ": the frictional power over every admissible distribution lies in ["
-      << human_number(r.power->lower) << ", " << human_number(r.power->upper) << "]\n"
+    s << "twist " << vec_text(*q.twist) << ": the frictional power over every admissible distribution lies in ["
+      << number_text(r.power->lower) << ", " << number_text(r.power->upper) << "]\n"
       << "  least at f = " << distribution_text(r.power->min_distribution)
       << ", most at f = " << distribution_text(r.power->max_distribution) << "\n" << regions_power_text(r);
   s << "convention: " << kConvention << "\n";
@@ -288,8 +281,8 @@ void write_sliding(Json_writer& w, const Support_query& q, const Support_item& r
   const char* kinds[] = {"facet", "vertex", "smooth"};
   w.member("command", "sliding").member("name", r.scene.name).member("mode", mode_name(r.mode));
   w.member("convention", kConvention);
-  write_pair(w.key("center_of_friction"), a.center_of_friction.x, a.center_of_friction.y);
-  write_pair(w.key("friction_centroid"), a.friction_centroid.x, a.friction_centroid.y);
+  write_centre(w, "center_of_friction", a.center_of_friction);
+  write_centre(w, "friction_centroid", a.friction_centroid);
   w.member("mu_f0", a.mu_f0);
   if (!a.has_twist) return;
   write_twist_motion(w, a);
@@ -313,21 +306,20 @@ std::string sliding_human(const Support_query& q, const Support_item& r, const s
   const Sliding_answer& a = r.sliding;
   std::ostringstream s;
   s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
-    << "centre of friction: (" << human_number(a.center_of_friction.x) << ", " << human_number(a.center_of_friction.y) << ")\n"
-    << "mu*f0 = " << human_number(a.mu_f0) << ", friction centroid (" << human_number(a.friction_centroid.x) << ", "
-    << human_number(a.friction_centroid.y) << ")\n";
+    << "centre of friction: " << vec_text(a.center_of_friction) << "\n"
+    << "mu*f0 = " << number_text(a.mu_f0) << ", friction centroid " << vec_text(a.friction_centroid) << "\n";
   if (a.has_twist) {
-    s << "twist " << thv(a.twist) << ": " << a.cls.text << "\n";
+    s << "twist " << vec_text(a.twist) << ": " << a.cls.text << "\n";
     if (a.translation) {
-      if (a.load) s << "load: " << thv(*a.load) << " (exact)\n";
+      if (a.load) s << "load: " << vec_text(*a.load) << " (exact)\n";
       else
-        s << "load: (mu*f0/|v|) * " << thv(a.load_direction) << " with |v|^2 = " << human_number(a.speed_squared)
+        s << "load: (mu*f0/|v|) * " << vec_text(a.load_direction) << " with |v|^2 = " << number_text(a.speed_squared)
           << " (exact)\n";
     } else {
-      s << "power h between " << human_number(a.h_inner) << " and " << human_number(a.h_outer) << " (polygonal, "
+      s << "power h between " << number_text(a.h_inner) << " and " << number_text(a.h_outer) << " (polygonal, "
         << q.sides << " sides)\n";
     }
-    s << "load box: " << thv(a.load_lo) << " .. " << thv(a.load_hi)
+    s << "load box: " << vec_text(a.load_lo) << " .. " << vec_text(a.load_hi)
       << (a.cls.kind == Twist_kind::facet ? " (the facet's centre)\n" : "\n");
     if (r.true_power)
       s << "true power h = " << float_value_text(*r.true_power) << ", true load " << float_load_text(*r.true_load)

@@ -136,7 +136,7 @@ TEST(Newcomer, LabelsSaysWhatIsLabeledAndReadsTheLoad) {
                             "needs nothing labeled, infinity included)\n"),
             std::string::npos)
       << corner.out;
-  EXPECT_NE(corner.out.find("\nload (0, -1, -1/2): balanced (minus the load is a possible contact resultant)\n"),
+  EXPECT_NE(corner.out.find("\nload (0, -1, -1/2) ≈ (0, -1, -0.5): balanced (minus the load is a possible contact resultant)\n"),
             std::string::npos)
       << corner.out;
   const Cli_result ladder = run("labels '" + golden("equilibrium/ladder_mu_1_8_gravity") + "'");
@@ -297,6 +297,60 @@ TEST(CliNewcomer, SupportScenesSayWhatToAsk) {
   EXPECT_NE(e.out.find("c0 (floor, left) (1/4, 1/2) ≈ (0.25, 0.5); c1 (floor, right) (-1/4, 1/2) ≈ (-0.25, 0.5)"),
             std::string::npos) << e.out;
 }
+
+// Issue 30: a decimal beside every fraction a person reads in text (6 significant digits, from the exact value), JSON's
+// `_approx` siblings, twists that are directions as primitive integers, and closure's certificate as named forces.
+namespace decimals {
+
+std::string qs(const std::string& name) { return test::source_dir() + "/docs/quickstart/" + name + ".json"; }
+std::string eq_golden(const std::string& name) {
+  return test::source_dir() + "/tests/golden/equilibrium/" + name + ".scene.json";
+}
+void has(const Cli_result& r, const std::string& text) {
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find(text), std::string::npos) << "missing: " << text << "\nin:\n" << r.out;
+}
+
+TEST(Newcomer, ClosureTextGivesNamedForcesAndCentresWithDecimals) {
+  has(run("closure " + qs("two_finger")),
+      "certificate: the contact forces c0 (left finger) (2, 0); c1 (right finger) (-2, 0) sum to the zero wrench");
+  const Cli_result r = run("closure " + eq_golden("pipe_clamp_mu_1_2_d_3"));
+  EXPECT_EQ(r.out.find("·c0"), std::string::npos) << r.out;  // no weights on cone edges in the text any more
+  has(r, "rotation about (0, 1/2) ≈ (0, 0.5)");
+  // The certificate JSON keeps its weights on the edges.
+  has(run("closure --json " + qs("two_finger")), R"("combination": [{"contact": 0, "edge": "left", "weight": "1"})");
+}
+
+TEST(Newcomer, EquilibriumHoldAndLabelsShowDecimalsBesideFractions) {
+  has(run("equilibrium " + qs("block_in_corner")), "load: the wrench (0, -1, -1/2) ≈ (0, -1, -0.5) (force");
+  has(run("equilibrium --json " + qs("block_in_corner")), R"("load": ["0", "-1", "-1/2"], "load_approx": [0, -1, -0.5])");
+  has(run("hold " + qs("pinned_part")), "load: the wrench (-1, 1/4, 1/4) ≈ (-1, 0.25, 0.25) on the body");
+  const std::string push = eq_golden("block_corner_mu_1_2_push_down_at_3_1");
+  has(run("hold " + push), "the body moves: a clockwise rotation about (4/3, -2/3) ≈ (1.33333, -0.666667) (twist (2, 4, -3))");
+  has(run("hold --json " + push), R"("center": ["4/3", "-2/3"], "center_approx": [1.3333333333333333, -0.66666666666666663])");
+  has(run("labels " + golden("square_aligned")), "the single point (1/2, 1) ≈ (0.5, 1)");
+  has(run("labels --json " + qs("block_in_corner")), R"("wrench": ["0", "-1", "-1/2"], "wrench_approx": [0, -1, -0.5])");
+}
+
+TEST(Newcomer, SupportAnswersShowDecimalsAndTwistsAsSmallIntegers) {
+  // The table's translation slip was (2, 0, 0) and the plate's (13, 0, 0): a direction, so (1, 0, 0) in text and JSON.
+  has(run("limit-surface " + qs("table") + " --load 1,0,0"), "the twist (1, 0, 0), a translation along (1, 0)");
+  has(run("limit-surface " + qs("plate") + " --load 1,0,0"), "the twist (1, 0, 0), a translation along (1, 0)");
+  has(run("limit-surface --json " + qs("table") + " --load 1,0,0"), R"("impending_twist": ["1", "0", "0"])");
+  has(run("limit-surface " + qs("barbell") + " --load 1/3,1/7,1/5"),
+      "load (1/3, 1/7, 1/5) ≈ (0.333333, 0.142857, 0.2): sticks");
+  has(run("limit-surface " + qs("barbell") + " --load 1/2,0,1/2"), "lambda^2 = 28297631961/28574521561 (≈ 0.99031)");
+  has(run("limit-surface " + qs("plate") + " --load 0,0,0.5"),
+      "sticks with f = (1/2, 0, 0, 0, 1/2, 0, 0, 0, 0) ≈ (0.5, 0, 0, 0, 0.5, 0, 0, 0, 0)");
+  has(run("sliding " + qs("pinned_part") + " --twist 2,0,1"), "mu*f0 = 1/2 (≈ 0.5), friction centroid (0, 0)");
+  has(run("analyze " + qs("barbell")), "lambda^2 = 28297631961/28574521561 (≈ 0.99031), inner");
+  // A queried Reuleaux motion about (1/2, 1/3): the twist (1/3, -1/2, 1) as (2, -3, 6), the centre with decimals.
+  has(run("reuleaux " + qs("two_finger") + " --center 1/2,1/3"),
+      "twist (2, -3, 6) (a counter-clockwise rotation about (1/2, 1/3) ≈ (0.5, 0.333333)): infeasible");
+  has(run("reuleaux --json " + qs("two_finger") + " --center 1/2,1/3"), R"("query": {"twist": ["2", "-3", "6"])");
+}
+
+}  // namespace decimals
 
 }  // namespace
 }  // namespace wrenchkit

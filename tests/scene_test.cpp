@@ -3,12 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <random>
 
 #include "exact/io/input_error.h"
+#include "exact/numbers/decimal.h"
 #include "exact/numbers/rational.h"
 #include "exact/io/scene.h"
 #include "exact/io/streaming_scene_reader.h"
@@ -152,6 +155,36 @@ TEST(Numbers, PrimitiveVectors) {
   EXPECT_THROW(primitive(Z3{Integer(0), Integer(0), Integer(0)}), std::logic_error);
   EXPECT_THROW(primitive(Q3{Rational(0), Rational(0), Rational(0)}), std::logic_error);
   EXPECT_THROW(primitive(Rational(0), Rational(0)), std::logic_error);
+}
+
+// decimal_text: the decimal people read beside an exact value, correctly rounded in integers: against glibc's printf
+// %.Ng (exact on a double's binary value, ties to even) on random doubles, and beyond the doubles' range.
+TEST(Numbers, DecimalTextIsCorrectlyRoundedWithoutOverflow) {
+  EXPECT_EQ(decimal_text(Rational(1, 7)), "0.142857");
+  EXPECT_EQ(decimal_text(Rational(-1, 3)), "-0.333333");
+  EXPECT_EQ(decimal_text(Rational(0)), "0");
+  EXPECT_EQ(decimal_text(Rational(5)), "5");
+  EXPECT_EQ(decimal_text(Rational(1, 10000)), "0.0001");
+  EXPECT_EQ(decimal_text(Rational(1, 100000)), "1e-05");
+  EXPECT_EQ(decimal_text(Rational(1999999, 2)), "1e+06");  // a tie to the even 1000000
+  EXPECT_EQ(decimal_text(Rational(1999997, 2)), "999998");  // a tie to the even 999998
+  Integer big;
+  mpz_ui_pow_ui(big.get_mpz_t(), 10, 400);
+  EXPECT_EQ(decimal_text(Rational(big, 3)), "3.33333e+399");
+  EXPECT_EQ(decimal_text(Rational(Integer(-2), big)), "-2e-400");
+  EXPECT_EQ(decimal_text(Rational(2, 3), 12), "0.666666666667");
+  std::mt19937_64 rng(20261128);
+  for (int i = 0; i < 6000; ++i) {
+    double x;
+    const std::uint64_t bits = rng();
+    std::memcpy(&x, &bits, sizeof x);
+    if (!std::isfinite(x)) continue;
+    for (const int digits : {1, 6, 12, 17}) {
+      char text[64];
+      std::snprintf(text, sizeof text, "%.*g", digits, x);
+      EXPECT_EQ(decimal_text(Rational(x), digits), x == 0 ? std::string("0") : std::string(text)) << x;
+    }
+  }
 }
 
 // nearest_double: correctly rounded (ties to even), against glibc's strtod (correctly rounded) on decimals

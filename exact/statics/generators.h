@@ -26,22 +26,26 @@ struct Generator {
 // Exact; O(#contacts).
 std::vector<Generator> generators(const Scene& scene, Reading reading);
 
-// The force each contact exerts on the body under a certificate's weights on its generators (friction reading):
-// Σ_edges weight·(the edge's force); a wrench contact's wrench. One entry per contact that carries any weight, in
-// contact order — what a reader of the book wants to see instead of weights on unnormalised cone edges.
+// The force each contact exerts on the body under a certificate's weights on its generators (in `reading`: friction
+// for closure, equilibrium and hold, frictionless for form closure): Σ_edges weight·(the edge's force); a wrench
+// contact's wrench. One entry per contact that carries any weight, in contact order — what a reader of the book wants
+// to see instead of weights on unnormalised cone edges.
 struct Contact_force {
   std::size_t contact = 0;
   std::string name;  // the contact's `name`, or ""
   Vec3q wrench;      // (fx, fy, m about the origin); for a point contact (fx, fy) acts at its point
+  bool point = true;  // a point contact (else a wrench contact: its moment matters too)
 };
 template <class Ref>
-std::vector<Contact_force> contact_forces(const Scene& scene, const std::vector<std::pair<Ref, Rational>>& combination) {
-  const std::vector<Generator> gens = generators(scene, Reading::friction);
+std::vector<Contact_force> contact_forces(const Scene& scene, const std::vector<std::pair<Ref, Rational>>& combination,
+                                         Reading reading = Reading::friction) {
+  const std::vector<Generator> gens = generators(scene, reading);
   std::vector<Contact_force> out;
   for (const Generator& g : gens)
     for (const auto& [ref, weight] : combination) {
       if (ref.contact != g.contact || ref.edge != g.edge || weight == 0) continue;
-      if (out.empty() || out.back().contact != g.contact) out.push_back({g.contact, scene.contacts[g.contact].name, {}});
+      if (out.empty() || out.back().contact != g.contact)
+        out.push_back({g.contact, scene.contacts[g.contact].name, {}, scene.contacts[g.contact].kind == Contact::Kind::point});
       for (std::size_t k = 0; k < 3; ++k) out.back().wrench[k] += weight * g.w[k];
     }
   return out;
