@@ -7,17 +7,14 @@
 
 #include "cli/common.h"
 #include "cli/float_json.h"
+#include "exact/numbers/decimal.h"
 #include "exact/pipeline/quality_answer.h"
 
 namespace wrenchkit::cli {
 
 namespace {
 
-std::string decimal(const Rational& q, int digits) {
-  char b[48];
-  std::snprintf(b, sizeof b, "%.*g", digits, q.get_d());
-  return b;
-}
+std::string decimal(const Rational& q, int digits) { return decimal_text(q, digits); }
 
 // "the left edge of c0 (its name)", "c2's normal", "the wrench c3".
 std::string generator_name(const Scene& scene, const Generator_ref& g) {
@@ -32,9 +29,12 @@ std::string generator_name(const Scene& scene, const Generator_ref& g) {
   return c;
 }
 
-// Closure in the mode, then ε in exact arithmetic: hybrid when the closure was the twin's alone.
-Arithmetic decided_by(const Quality_answer& a) {
-  return a.closure.holds ? wrenchkit::decided_by(a.closure.decided_by(), Arithmetic::exact) : a.closure.decided_by();
+// Closure in the mode, then ε and μ* in exact arithmetic: hybrid when the closure was the twin's alone.
+Arithmetic decided_by(const Quality_item& r) {
+  const Quality_answer& a = r.answer;
+  if (r.certificate.empty()) return r.mode == Mode::exact ? Arithmetic::exact : Arithmetic::hybrid;  // μ* only
+  const bool exact_part = a.closure.holds || r.critical;
+  return exact_part ? wrenchkit::decided_by(a.closure.decided_by(), Arithmetic::exact) : a.closure.decided_by();
 }
 
 // The wrench space in words: "L1 (the contacts' normal forces sum to at most 1)", its normalisation and moments.
@@ -43,7 +43,7 @@ std::string space_text(const Quality_answer& a) {
   s << (a.query.norm == Quality_norm::l1 ? "L1: the hull of the friction-cone edges (normal forces summing to at most 1)"
                                          : "Linf: the sum of the contacts' cones (each normal force at most 1)")
     << "; forces " << normalization_name(a.query.normalize) << ", moments about "
-    << approx_vec_text({a.about.x, a.about.y}) << " times " << human_number(a.query.torque_scale);
+    << vec_text(a.about) << " times " << number_text(a.query.torque_scale);
   return s.str();
 }
 
@@ -57,7 +57,7 @@ Quality_query query_of(const Options& o) {
 // A facet normal: small integers as they are, else a unit vector in decimals.
 std::string normal_text(const Vec3q& n) {
   const Vec3q p = primitive_vec(n);
-  if (to_string(p[0]).size() + to_string(p[1]).size() + to_string(p[2]).size() <= 24) return vec_text(p);
+  if (to_string(p[0]).size() + to_string(p[1]).size() + to_string(p[2]).size() <= 24) return twist_text(p);
   const double x = p[0].get_d(), y = p[1].get_d(), z = p[2].get_d(), len = std::sqrt(x * x + y * y + z * z);
   char b[96];
   std::snprintf(b, sizeof b, "≈ (%.6g, %.6g, %.6g) (unit length)", x / len, y / len, z / len);
@@ -84,13 +84,13 @@ std::string critical_text(const Critical_mu& c, bool closure) {
     case Critical_kind::never:
       s << "never — no friction coefficient makes it " << property;
       if (c.limit_twist)
-        s << ": every contact allows " << motion_words(*c.limit_twist) << " (twist " << vec_text(primitive_vec(*c.limit_twist))
+        s << ": every contact allows " << motion_text(*c.limit_twist) << " (twist " << twist_text(*c.limit_twist)
           << ") whatever mu" << (closure ? "" : ", and the load drives it");
       else s << ": only an infinite mu would balance the load";
       break;
     case Critical_kind::value:
       if (c.exact())
-        s << "mu* = " << human_number(c.lower) << (c.lower.get_den() == 1 ? "" : " (≈ " + decimal(c.lower, 12) + ")") << " exactly — "
+        s << "mu* = " << number_text(c.lower) << " exactly — "
           << (closure ? "not closed at mu*, closed for every mu above it" : "balanced at mu* and above, not below");
       else
         s << "mu* ≈ " << decimal(c.lower, 12) << ", certified in [" << human_number(c.lower) << ", " << human_number(c.upper)
@@ -131,7 +131,7 @@ void write_quality(Json_writer& w, const Quality_item& r) {
     w.member("generators", a.refs.size());
     if (a.query.norm == Quality_norm::l1) w.member("hull_points", a.hull_points).member("hull_triangles", a.boundary.size());
   }
-  w.member("decided_by", arithmetic_name(decided_by(a)));
+  w.member("decided_by", arithmetic_name(decided_by(r)));
   if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
 }
 
@@ -152,8 +152,8 @@ std::string quality_human(const Quality_item& r) {
   s << "force closure: " << (a.closure.holds ? "yes" : "no") << "\n";
   s << "quality epsilon (" << space_text(a) << "):\n";
   if (!a.closure.holds) {
-    s << "  epsilon = 0: the grasp is not in force closure (the twist " << vec_text(a.closure.certificate.twist)
-      << " is allowed by every contact: " << motion_words(a.closure.certificate.twist) << ")\n";
+    s << "  epsilon = 0: the grasp is not in force closure (the twist " << twist_text(a.closure.certificate.twist)
+      << " is allowed by every contact: " << motion_text(a.closure.certificate.twist) << ")\n";
   } else {
     if (a.lower == a.upper) s << "  epsilon = " << human_number(a.lower) << " (≈ " << decimal(a.lower, 15) << "), exactly\n";
     else if (a.exact)
@@ -175,7 +175,7 @@ std::string quality_human(const Quality_item& r) {
       << (a.query.norm == Quality_norm::l1 ? "summing to at most 1" : "each at most 1") << "\n";
   }
   critical();
-  s << "decided by: " << arithmetic_name(decided_by(a)) << " (" << mode_name(r.mode) << " mode)\n";
+  s << "decided by: " << arithmetic_name(decided_by(r)) << " (" << mode_name(r.mode) << " mode)\n";
   s << (r.critical ? "certificates" : "certificate") << " accepted by the independent checker (exact arithmetic)\n";
   return s.str();
 }

@@ -378,7 +378,7 @@ TEST(CheckerMalformed, KeysAndTypes) {
               "wrenchkit_certificate: expected the integer 1, 2, 3 or 4");
   // Format 4 adds property "quality" (§3.4) and nothing else.
   EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": 4, "property": "force_closure", "holds": false, )" + twist + "}"),
-            R"(wrenchkit_certificate: format 4 is property "quality" only (expected 1, 2 or 3))");
+            R"(wrenchkit_certificate: format 4 is properties "quality" and "critical_mu" only (expected 1, 2 or 3))");
   // Format 3 names the boundary of motion and hold only: a closure certificate reads the same in 1, 2 and 3.
   for (const char* version : {"1", "2", "3"})
     EXPECT_EQ(check(block_corner, R"({"wrenchkit_certificate": )" + std::string(version) +
@@ -388,7 +388,7 @@ TEST(CheckerMalformed, KeysAndTypes) {
         << version;
   EXPECT_EQ(
       rejection(block_corner, R"({"wrenchkit_certificate": 1, "property": "closure", "holds": false, )" + twist + "}"),
-      R"(property: expected "force_closure", "form_closure", "equilibrium", "motion", "hold" or "quality")");
+      R"(property: expected "force_closure", "form_closure", "equilibrium", "motion", "hold", "quality" or "critical_mu")");
   EXPECT_EQ(rejection(block_corner,
                       R"({"wrenchkit_certificate": 1, "property": "force_closure", "holds": "false", )" + twist + "}"),
             R"(holds: expected true or false (or "impending" or "depends" for property "hold"))");

@@ -29,7 +29,8 @@ TEST(CliQuality, TwoFingersByHand) {
   EXPECT_NE(r.out.find("force closure: yes"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("epsilon^2 = 1/3 (≈ 0.333333333333333), exactly; epsilon ≈ 0.577350269189626"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("nearest facet: the left edge of c0 (left finger)"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("certificate accepted by the independent checker"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("certificates accepted by the independent checker"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("force closure: mu* = 0 exactly"), std::string::npos) << r.out;  // the fingers face each other
   const Cli_result linf = run("quality --json --norm Linf " + example("two_fingers_mu1"));
   ASSERT_EQ(linf.code, 0) << linf.err;
   EXPECT_NE(linf.out.find(R"("squared": "2/3")"), std::string::npos) << linf.out;
@@ -41,7 +42,7 @@ TEST(CliQuality, UnitForceIsABracket) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.out.find("\"squared\""), std::string::npos) << r.out;
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"re("lower_approx": ([0-9.e-]+), "upper_approx": ([0-9.e-]+))re")));
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"re("epsilon": \{[^}]*"lower_approx": ([0-9.e-]+), "upper_approx": ([0-9.e-]+))re")));
   const double lo = std::stod(m.str(1)), hi = std::stod(m.str(2)), eps = 1 / std::sqrt(6.0);
   EXPECT_LE(lo, eps);
   EXPECT_GE(hi, eps);
@@ -65,10 +66,13 @@ TEST(CliQuality, CertificateFileIsChecked) {
 }
 
 TEST(CliQuality, FloatModeHasNoTwinForEpsilon) {
-  const Cli_result closed = run("quality --mode float " + example("two_fingers_mu1"));
+  const Cli_result closed = run("quality --only epsilon --mode float " + example("two_fingers_mu1"));
   EXPECT_EQ(closed.code, 3);
   EXPECT_NE(closed.err.find("no float twin"), std::string::npos) << closed.err;
-  EXPECT_EQ(run("quality --mode float " + example("two_fingers_mu0")).code, 0);  // ε = 0, certified by the twist
+  EXPECT_EQ(run("quality --only epsilon --mode float " + example("two_fingers_mu0")).code, 0);  // ε = 0, by the twist
+  const Cli_result mu = run("quality --mode float " + example("two_fingers_mu0"));  // μ* is asked by default
+  EXPECT_EQ(mu.code, 3);
+  EXPECT_NE(mu.err.find("critical friction coefficient has no float twin"), std::string::npos) << mu.err;
 }
 
 TEST(CliQuality, BadOptionsNameTheOption) {
