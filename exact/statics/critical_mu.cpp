@@ -199,14 +199,17 @@ void search(Critical_mu& out, const std::vector<Poly>& P, Rational lo, Rational 
     }
   };
   // Exact: the simplest rational s of a narrow bracket that is a root of a minor and on μ*'s side (fails at s for
-  // closure, holds at s for balance), with the minors' signs constant on a one-sided interval beside it.
+  // closure, holds at s for balance), with the minors' signs constant on a one-sided interval beside it: tried from
+  // the first bracket's far end halving toward s, and then its simplest rational in the outer half (a readable μ).
+  const Rational far = holds_at_critical ? lo : hi;
   for (int bits : {32, 64, 128, 256}) {
     bisect_until((hi + 1) / two_to(bits));  // (absolute near 0: μ* may be 0)
     const Rational s = simplest(lo, hi);
     if (!is_root(P, s) || holds(s, false) != holds_at_critical) continue;
-    Rational other = holds_at_critical ? lo : hi;  // balance: [other, s) fails; closure: (s, other] holds
-    for (int t = 0; t < 64; ++t, other = (other + s) / 2) {
+    Rational other = far;  // balance: [other, s) fails; closure: (s, other] holds
+    for (int t = 0; t < 200 && other != s; ++t, other = (other + s) / 2) {
       if (!all_constant_on(P, s, other)) continue;
+      other = holds_at_critical ? simplest(other, (other + s) / 2) : simplest((other + s) / 2, other);
       if (holds(other, false) == holds_at_critical) break;  // the same answer on both sides: s is not μ*
       out.kind = Critical_kind::value;
       out.lower = out.upper = s;

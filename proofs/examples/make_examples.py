@@ -42,6 +42,9 @@ MAT_LEGS = {"wrenchkit": 1, "support": {"mu": "1/2", "weight": 5, "pressure_cent
 SQUARE_REGION = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 1}
 
 SCENES = {
+    "two_fingers_offset": {"wrenchkit": 1, "name": "two fingers at (-1, 0) and (1, 1), normals (1, 0) and (-1, 0): the contact line at tan 1/2", "contacts": [{"at": [-1, 0], "normal": [1, 0], "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "name": "right finger"}]},
+    "ladder_gravity": {"wrenchkit": 1, "name": "the leaning square (ladder) of theory.md section 9 under its weight", "body": {"outline": [["0", "0"], ["3", "4"], ["-1", "7"], ["-4", "3"]], "com": ["-1/2", "7/2"]}, "contacts": [{"at": ["0", "0"], "normal": ["0", "1"], "name": "floor"}, {"at": ["-4", "3"], "normal": ["1", "0"], "name": "wall"}], "load": {"gravity": 1}},
+    "two_fingers_same_way": {"wrenchkit": 1, "name": "two fingers pushing the same way, and a load along it", "contacts": [{"at": [-1, 0], "normal": [1, 0]}, {"at": [1, 1], "normal": [1, 0]}], "load": {"force": [1, 0], "at": [0, 0]}},
     "two_fingers_mu1": {
         "wrenchkit": 1,
         "name": "two fingers at (-1, 0) and (1, 0) pressing inward, mu = 1: the edges are alternate corners of the cube",
@@ -365,7 +368,41 @@ EXACT = [{"scale": "1", "error": "0", "bound": "7/4"}] * 2
 TETRA = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]
 ROOT2 = [{"scale": "181/256", "error": "1/256", "bound": "7/4"}] * 2
 
+# Critical friction (section 3.5), as the engine writes it: two fingers whose contact line makes tan 1/2 with both
+# normals (mu* = 1/2: not closed at 1/2, closed at 2/3, no minor changing sign between); the ladder of theory.md
+# section 9 under its weight (balanced at 1/7, not at 1/10, nothing changing between); two fingers pushing the same
+# way (never: the translation (1, 0) is orthogonal to every tangent wrench).
+CRIT_OFFSET = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "critical_mu": {"lower": "1/2", "upper": "1/2"}, "below": {"mu": "1/2", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": false, "twist": ["0", "1", "1"], "reading": {"label": "+", "point": ["-1", "0"]}}}, "above": {"mu": "2/3", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "7"}, {"contact": 0, "edge": "right", "weight": "1"}, {"contact": 1, "edge": "left", "weight": "7"}, {"contact": 1, "edge": "right", "weight": "1"}], "independent": [{"contact": 0, "edge": "left"}, {"contact": 0, "edge": "right"}, {"contact": 1, "edge": "left"}]}}, "constant": true}''')
+CRIT_LADDER_CLOSURE = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "critical_mu": {"lower": "4/3", "upper": "4/3"}, "below": {"mu": "4/3", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": false, "twist": ["3", "4", "1"], "reading": {"label": "+", "point": ["-4", "3"]}}}, "above": {"mu": "2", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "10"}, {"contact": 0, "edge": "right", "weight": "2"}, {"contact": 1, "edge": "left", "weight": "5"}, {"contact": 1, "edge": "right", "weight": "11"}], "independent": [{"contact": 0, "edge": "left"}, {"contact": 0, "edge": "right"}, {"contact": 1, "edge": "left"}]}}, "constant": true}''')
+CRIT_LADDER = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": {"lower": "1/7", "upper": "1/7"}, "below": {"mu": "1/10", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": false, "twist": ["340", "34", "101"], "reading": {"label": "+", "point": ["-34/101", "340/101"]}}}, "above": {"mu": "1/7", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "49/50"}, {"contact": 1, "edge": "left", "weight": "7/50"}]}}, "constant": true}''')
+CRIT_NEVER = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "critical_mu": "never", "limit_twist": ["1", "0", "0"]}''')
+CRIT_NEVER_LOAD = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": "never", "limit_twist": ["1", "0", "0"]}''')
+
+
+def crit(base, **changes):
+    cert = json.loads(json.dumps(base))
+    cert.update(changes)
+    return cert
+
+
 CERTS = [
+    ("two_fingers_offset", "critical_mu_half", "valid", CRIT_OFFSET),
+    ("ladder_gravity", "critical_mu_closure", "valid", CRIT_LADDER_CLOSURE),
+    ("ladder_gravity", "critical_mu_one_seventh", "valid", CRIT_LADDER),
+    ("two_fingers_same_way", "critical_mu_never", "valid", CRIT_NEVER),
+    ("two_fingers_same_way", "critical_mu_never_balanced", "valid", CRIT_NEVER_LOAD),
+    ("two_fingers_offset", "critical_mu_one_third", "invalid:constant|constant: a minor of the edges may change sign between 1/3 and 2/3",
+     crit(CRIT_OFFSET, critical_mu={"lower": "1/3", "upper": "1/3"}, below=dict(CRIT_OFFSET["below"], mu="1/3"))),
+    ("two_fingers_offset", "critical_mu_bracket_off", "invalid:bracket|critical_mu: a bracket is [below.mu, above.mu] = [1/2, 2/3]",
+     crit({k: v for k, v in CRIT_OFFSET.items() if k != "constant"}, critical_mu={"lower": "2/5", "upper": "2/3"})),
+    ("two_fingers_offset", "critical_mu_above_not_closed", "invalid:nested|above.certificate: combination: the weighted sum of the generators is",
+     crit(CRIT_OFFSET, above=dict(CRIT_OFFSET["above"], mu="1/3"))),
+    ("two_fingers_offset", "critical_mu_equilibrium_without_load", 'invalid:no load|of: "equilibrium", but the scene has no load',
+     crit(CRIT_OFFSET, of="equilibrium")),
+    ("two_fingers_same_way", "critical_mu_never_sideways", "invalid:limit_twist|limit_twist: power",
+     crit(CRIT_NEVER, limit_twist=["0", "1", "0"])),
+    ("ladder_gravity", "critical_mu_nested_format_4", "invalid:nested|above.certificate: expected a certificate of \"equilibrium\" in format 1, 2 or 3",
+     crit(CRIT_LADDER, above=dict(CRIT_LADDER["above"], certificate=dict(CRIT_LADDER["above"]["certificate"], wrenchkit_certificate=4)))),
     ("two_fingers_mu1", "quality_l1", "valid",
      quality("L1", "as-given", {"lower": "577/1000", "upper": "289/500", "squared": "1/3"}, scales=EXACT,
              boundary=TETRA, nearest=[0, 1, 2])),
@@ -1431,8 +1468,121 @@ def verify_quality(scene, cert):
     return None
 
 
+def verify_critical(scene, cert):
+    """Section 3.5: the critical friction coefficient; None if proved, else a short reason."""
+    if cert.get("wrenchkit_certificate") != 4:
+        return "header"
+    of = cert["of"]
+    balance = of == "equilibrium"
+    if balance and load_wrench(scene) is None:
+        return "no load"
+
+    def at_mu(mu):
+        s = json.loads(json.dumps(scene))
+        for c in s.get("contacts", []):
+            if "wrench" not in c:
+                c["mu"] = str(mu)
+        return s
+
+    def side(key, holds):
+        sd = cert[key]
+        c = sd["certificate"]
+        if c.get("property") != of or c.get("wrenchkit_certificate") not in (1, 2, 3) or c.get("holds") is not holds:
+            return "nested"
+        return None if verify(at_mu(rational(sd["mu"])), c) is None else "nested"
+
+    def families():
+        out = []
+        for c in scene.get("contacts", []):
+            if "wrench" in c:
+                out.append((tuple(number(v) for v in c["wrench"]), (0, 0, 0)))
+                continue
+            (px, py), (nx, ny) = (number(v) for v in c["at"]), (number(v) for v in c["normal"])
+            a, b = (nx, ny, px * ny - py * nx), (-ny, nx, px * nx + py * ny)
+            out += [(a, b), (a, tuple(-v for v in b))]
+        if balance:
+            out.append((load_wrench(scene), (0, 0, 0)))
+        return out
+
+    def minors():
+        F = families()
+        cr = lambda u, v: (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])  # noqa: E731
+        dt = lambda x, y, z: sum(p * q for p, q in zip(x, cr(y, z)))  # noqa: E731
+        out = [[f[0][k], f[1][k]] for f in F for k in range(3)]
+        for (A, a), (B, b) in itertools.combinations(F, 2):
+            c0, c2, u, v = cr(A, B), cr(a, b), cr(A, b), cr(a, B)
+            out += [[c0[k], u[k] + v[k], c2[k]] for k in range(3)]
+        for (A, a), (B, b), (C, c) in itertools.combinations(F, 3):
+            out.append([dt(A, B, C), dt(a, B, C) + dt(A, b, C) + dt(A, B, c), dt(A, b, c) + dt(a, B, c) + dt(a, b, C), dt(a, b, c)])
+        return out
+
+    def mul(p, q):
+        r = [F(0)] * (len(p) + len(q) - 1)
+        for i, x in enumerate(p):
+            for j, y in enumerate(q):
+                r[i + j] += x * y
+        return r
+
+    def one_sign(q):
+        signs = [x > 0 for x in q if x != 0]
+        return all(x == signs[0] for x in signs)
+
+    def value(p, x):
+        return sum(c * x ** k for k, c in enumerate(p))
+
+    def constant(p, l, h, closed_end):  # identically 0, or nonzero at closed_end and no root in (l, h) (Descartes)
+        if all(c == 0 for c in p):
+            return True
+        if value(p, closed_end) == 0:
+            return False
+        d, q = len(p) - 1, [F(0)] * len(p)
+        for k, c in enumerate(p):
+            t = [c]
+            for _ in range(k):
+                t = mul(t, [l, h])
+            for _ in range(d - k):
+                t = mul(t, [1, 1])
+            q = [x + y for x, y in zip(q, t)]
+        return one_sign(q)
+
+    claim = cert["critical_mu"]
+    if claim == "always":
+        return side("above", True) if rational(cert["above"]["mu"]) == 0 else "always"
+    if claim == "never":
+        if "limit_twist" not in cert:
+            return "never"
+        t = [rational(v) for v in cert["limit_twist"]]
+        dot = lambda x, y: sum(p * q for p, q in zip(x, y))  # noqa: E731
+        if not any(t) or any(dot(t, a) < 0 or dot(t, b) != 0 for a, b in families()[:len(families()) - balance]):
+            return "limit_twist"
+        if balance and dot(t, load_wrench(scene)) <= 0:
+            return "limit_twist"
+        return None
+    lower, upper = rational(claim["lower"]), rational(claim["upper"])
+    below, above = rational(cert["below"]["mu"]), rational(cert["above"]["mu"])
+    for key, holds in (("below", False), ("above", True)):
+        reason = side(key, holds)
+        if reason:
+            return reason
+    if not (0 <= lower <= upper) or below >= above:
+        return "bracket"
+    if not cert.get("constant"):
+        return None if (below, above) == (lower, upper) else "bracket"
+    mu = above if balance else below
+    if lower != upper or lower != mu:
+        return "bracket"
+    far = below if balance else above
+    l, h = min(mu, far), max(mu, far)
+    return None if all(constant(p, l, h, far) for p in minors()) else "constant"
+
+
 def verify(scene, cert):
     """Returns None if cert proves its claim for scene, else a short reason."""
+    if cert.get("property") == "critical_mu":
+        try:
+            return verify_critical(scene, cert)
+        except (ValueError, KeyError, TypeError) as e:
+            return f"malformed: {e}"
     if cert.get("property") == "quality":
         try:
             return verify_quality(scene, cert)
