@@ -238,13 +238,14 @@ const Option kDirection{"direction", "dx,dy",
                           if (all_zero(*o.direction)) throw Usage_error(n + ": the zero vector is no direction");
                         }};
 
-const Option kWhat{"what", "labels|dual|reuleaux|limit-surface|hold", "what to draw (required)", [](Options& o, S n, S v) {
+const Option kWhat{"what", "labels|dual|reuleaux|limit-surface|hold|quality", "what to draw (required)", [](Options& o, S n, S v) {
                      if (v == "labels") o.what = Picture::labels;
                      else if (v == "dual") o.what = Picture::dual;
                      else if (v == "reuleaux") o.what = Picture::reuleaux;
                      else if (v == "limit-surface") o.what = Picture::limit_surface;
                      else if (v == "hold") o.what = Picture::hold;
-                     else bad_value(n, v, "is not one of labels, dual, reuleaux, limit-surface, hold");
+                     else if (v == "quality") o.what = Picture::quality;
+                     else bad_value(n, v, "is not one of labels, dual, reuleaux, limit-surface, hold, quality");
                    }};
 const Option kOutput = file_option<&Options::output>("output,o", "write the SVG to FILE (default: standard output)");
 
@@ -384,8 +385,8 @@ std::vector<Command> make_table() {
        nullptr,
        prepare_reuleaux_json});
   t.push_back(
-      {"render", "an SVG picture: render SCENE.json --what labels|dual|reuleaux|limit-surface|hold -o FILE.svg",
-       "SCENE.json --what labels|dual|reuleaux|limit-surface|hold [-o FILE.svg]",
+      {"render", "an SVG picture: render SCENE.json --what labels|dual|reuleaux|limit-surface|hold|quality -o FILE.svg",
+       "SCENE.json --what labels|dual|reuleaux|limit-surface|hold|quality [-o FILE.svg]",
        "Draws the construction as an SVG picture (standard output without -o): the body, the\n"
        "contacts with their friction cones (or normals), the lines of force, the + / - regions\n"
        "shaded and clipped to a disc whose rim is the circle at infinity (labeled directions drawn\n"
@@ -397,9 +398,14 @@ std::vector<Command> make_table() {
        "\n"
        "With --what hold: the contacts, the support points (discs grow with mu*f), the load and, when it does\n"
        "not hold, the motion of the certificate's twist (its rotation centre and sense, or its direction),\n"
-       "decided as 'wrenchkit hold' (hybrid) decides it.\n",
+       "decided as 'wrenchkit hold' (hybrid) decides it.\n"
+       "\n"
+       "With --what quality: three slices of the grasp wrench space through the origin (m = 0, f_y = 0, f_x = 0)\n"
+       "with the ball of radius epsilon, as 'wrenchkit quality' computes them (--norm, --normalize,\n"
+       "--torque-scale, --about).\n",
        join({{kHelp, kWhat, kOutput,
-              with_help(kSides, "with --what limit-surface: polygon sides, even, 4..4096 (default 32)")},
+              with_help(kSides, "with --what limit-surface: polygon sides, even, 4..4096 (default 32)"), kNorm, kNormalize,
+              kTorqueScale, kAbout},
              kLimits}),
        {kScene},
        run_render});

@@ -32,7 +32,7 @@ namespace wrenchkit::cli {
 enum Exit { kAnswered = 0, kRejected = 1, kBadInput = 2, kUndecided = 3, kSelfCheck = 4, kInternal = 70 };
 
 // What `render --what` draws.
-enum class Picture { labels, dual, reuleaux, limit_surface, hold };
+enum class Picture { labels, dual, reuleaux, limit_surface, hold, quality };
 
 // The options of one command line, each validated where it is parsed (cli/command_table.cpp: the
 // exact numbers through parse_rational within the scene limits) into its typed field. A command
@@ -265,6 +265,7 @@ int run_check(const Options& o);
 int run_labels(const Options& o, const std::string& scene_text, const std::string& source);
 int run_quality(const Options& o, const std::string& scene_text, const std::string& source);
 Scene_answer prepare_quality_json(const Options& o);
+Quality_query quality_query(const Options& o);  // --only, --norm, --normalize, --torque-scale, --about, --tolerance
 void write_quality(Json_writer& w, const Quality_item& r);
 std::string quality_human(const Quality_item& r);
 int run_dual(const Options& o, const std::string& scene_text, const std::string& source);

@@ -47,13 +47,6 @@ std::string space_text(const Quality_answer& a) {
   return s.str();
 }
 
-// The question of the command line: --norm, --normalize, --torque-scale, --about, and --tolerance.
-Quality_query query_of(const Options& o) {
-  Quality_query q = o.quality;
-  if (o.tolerance) q.tolerance = *o.tolerance;
-  return q;
-}
-
 // A facet normal: small integers as they are, else a unit vector in decimals.
 std::string normal_text(const Vec3q& n) {
   const Vec3q p = primitive_vec(n);
@@ -180,14 +173,20 @@ std::string quality_human(const Quality_item& r) {
   return s.str();
 }
 
+Quality_query quality_query(const Options& o) {
+  Quality_query q = o.quality;
+  if (o.tolerance) q.tolerance = *o.tolerance;
+  return q;
+}
+
 Scene_answer prepare_quality_json(const Options& o) {
-  return [request = request_of(o), query = query_of(o)](Json_writer& w, const std::string& text, const std::string& source) {
+  return [request = request_of(o), query = quality_query(o)](Json_writer& w, const std::string& text, const std::string& source) {
     write_quality(w, answered(answer_quality(text, source, request, query)));
   };
 }
 
 int run_quality(const Options& o, const std::string& scene_text, const std::string& source) {
-  const Quality_item r = answered(answer_quality(scene_text, source, request_of(o), query_of(o)));
+  const Quality_item r = answered(answer_quality(scene_text, source, request_of(o), quality_query(o)));
   if (!o.certificate_file.empty()) {
     if (r.certificate.empty()) throw Usage_error("--certificate: epsilon was not asked (--only critical-mu): no certificate of it");
     write_file(o.certificate_file, r.certificate + "\n");

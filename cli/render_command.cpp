@@ -9,6 +9,7 @@
 #include "cli/common.h"
 #include "cli/render_limit_surface.h"
 #include "cli/svg_canvas.h"
+#include "exact/numbers/decimal.h"
 #include "exact/statics/force_dual.h"
 
 namespace wrenchkit::cli {
@@ -221,10 +222,56 @@ std::string render_hold(const Scene& s, const Hold_item& h, const std::string& s
   return c.finish();
 }
 
+// The grasp wrench space (render --what quality): three slices through the origin, each the polygon cut from the
+// space's supporting planes, with the disc of radius ε — the picture of docs/quality.md.
+std::vector<P2> slice(const Quality_answer& a, int fixed, double half) {
+  const int i = fixed == 0 ? 1 : 0, j = fixed == 2 ? 1 : 2;
+  std::vector<P2> poly = {{-half, -half}, {half, -half}, {half, half}, {-half, half}};
+  for (const auto& [n, b] : a.planes) {  // clip by n_i x + n_j y <= b (Sutherland–Hodgman)
+    const double nx = n[i].get_d(), ny = n[j].get_d(), off = b.get_d();
+    std::vector<P2> out;
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+      const P2 p = poly[k], q = poly[(k + 1) % poly.size()];
+      const double sp = nx * p.x + ny * p.y - off, sq = nx * q.x + ny * q.y - off;
+      if (sp <= 0) out.push_back(p);
+      if ((sp < 0 && sq > 0) || (sp > 0 && sq < 0)) {
+        const double t = sp / (sp - sq);
+        out.push_back({p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)});
+      }
+    }
+    poly = std::move(out);
+  }
+  return poly;
+}
+
+std::string render_quality(const Scene& s, const Quality_item& r, const std::string& source) {
+  const Quality_answer& a = r.answer;
+  const std::string t = quality_norm_name(a.query.norm);
+  Svg_panels pic(title_of(s, source), "the grasp wrench space (" + t + ", forces " + normalization_name(a.query.normalize) +
+                                           ", moments times " + to_string(a.query.torque_scale) + ") and its largest ball about the origin",
+                 a.closure.holds ? "epsilon = " + decimal_text(a.lower, 6) + ": every wrench in the ball is resisted"
+                                 : "not in force closure: epsilon = 0");
+  double half = 1;
+  for (const Vec3q& p : a.points)
+    for (const Rational& x : p) half = std::max(half, 2 * std::abs(x.get_d()));
+  if (t == "Linf") half *= static_cast<double>(s.contacts.size());
+  const char* names[3] = {"f_x", "f_y", "s*m"};
+  for (int fixed : {2, 1, 0}) {
+    const int i = fixed == 0 ? 1 : 0, j = fixed == 2 ? 1 : 2;
+    const int k = pic.panel(std::string("slice ") + names[fixed] + " = 0", names[i], names[j]);
+    if (!a.closure.holds) continue;
+    pic.polygon(k, slice(a, fixed, half), "fill=\"#2f6fd0\" fill-opacity=\"0.25\" stroke=\"#2f6fd0\" stroke-width=\"1.5\"");
+    pic.circle(k, a.lower.get_d(), "fill=\"#f0a030\" fill-opacity=\"0.45\" stroke=\"#b06a00\"");
+  }
+  pic.legend_box(0, "fill=\"#2f6fd0\" fill-opacity=\"0.25\" stroke=\"#2f6fd0\"", "the wrench space's slice");
+  pic.legend_box(260, "fill=\"#f0a030\" fill-opacity=\"0.45\" stroke=\"#b06a00\"", "the ball of radius epsilon");
+  return pic.finish();
+}
+
 }  // namespace
 
 std::string render_svg(const Options& o, const std::string& text, const std::string& source, bool* undecided) {
-  if (!o.what) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface|hold");
+  if (!o.what) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface|hold|quality");
   const Picture what = *o.what;
   if (o.sides && what != Picture::limit_surface) throw Usage_error("--sides goes with --what limit-surface");
   const Scene s = read_scene(text, o.limits, source);
@@ -234,6 +281,11 @@ std::string render_svg(const Options& o, const std::string& text, const std::str
     return render_hold(s, h, source);
   }
   if (what == Picture::limit_surface) return render_limit_surface_svg(s, o.sides.value_or(32));
+  if (what == Picture::quality) {
+    Quality_query q = o.quality;
+    q.critical_mu = false;
+    return render_quality(s, answered(answer_quality(text, source, request_of(o), q)), source);
+  }
   const bool frictionless = what == Picture::reuleaux;
   const std::vector<Generator> gens = generators(s, frictionless ? Reading::frictionless : Reading::friction);
   std::vector<Vec3q> ws;

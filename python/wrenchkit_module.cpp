@@ -480,6 +480,19 @@ std::string render(const Py_scene& s, const std::vector<std::string>& words) {
   }
 }
 
+// `wrenchkit quality --json` (its options in `words`): the answer's JSON text, written by the command's one writer.
+std::string quality(const Py_scene& s, const std::vector<std::string>& words, const std::string& mode) {
+  Quality_query q;
+  try {
+    q = cli::quality_query(command_options("quality", words, s.limits));
+  } catch (const cli::Usage_error& e) {
+    throw Input_error(e.what());
+  }
+  const Quality_item r = answer_quality(s.scene, s.text, request_of(mode, s.limits), q);
+  raise_unless_answered(r.status, r.message);
+  return cli::json_answer([&](Json_writer& w) { cli::write_quality(w, r); });
+}
+
 // `wrenchkit compare --json` (its options in `words`, CORPUS and ANSWERS last): the report's JSON text.
 std::string compare(const std::vector<std::string>& words) {
   const cli::Options o = command_options("compare", words, Input_limits{});
@@ -843,6 +856,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("reuleaux", &reuleaux);
   m.def("render", &render);
   m.def("compare", &compare);
+  m.def("quality", &quality);
   m.def("dual", &dual);
   m.def("limit_surface", &limit_surface);
   m.def("sliding", &sliding);

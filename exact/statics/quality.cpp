@@ -201,6 +201,8 @@ Rational epsilon_l1(const std::vector<Vec3q>& pts, Quality_answer& a) {
   a.hull_points = static_cast<std::size_t>(std::count(on.begin(), on.end(), 1));
   a.boundary = h.tri;
   a.nearest = h.tri[best];
+  a.planes.clear();
+  for (const Plane& p : h.plane) a.planes.push_back({{Rational(p.n[0]), Rational(p.n[1]), Rational(p.n[2])}, canonical(p.off, D)});
   for (int k = 0; k < 3; ++k) a.normal[k] = Rational(h.plane[best].n[k]);
   return distance_squared(h.plane[best], D);
 }
@@ -231,6 +233,7 @@ Rational epsilon_linf(const std::vector<Vec3q>& pts, const std::vector<Generator
         for (const P3& f : edges[j]) normals.push_back(cross3(e, f));
   bool found = false;
   Plane best;
+  a.planes.clear();
   for (P3& d : normals) {
     if (zero3(d)) continue;
     for (int sign = 0; sign < 2; ++sign) {
@@ -242,6 +245,7 @@ Rational epsilon_linf(const std::vector<Vec3q>& pts, const std::vector<Generator
         h += m;
       }
       if (h <= 0) throw std::logic_error("quality: the origin is not inside the wrench space of a closed grasp");
+      a.planes.push_back({{Rational(d[0]), Rational(d[1]), Rational(d[2])}, canonical(h, D)});
       Plane p{d, h};
       if (!found || closer(p, best)) best = std::move(p), found = true;
     }

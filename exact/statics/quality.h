@@ -70,6 +70,9 @@ struct Quality_answer {
   // ε > 0: the outward normal of a nearest facet (L1: of `nearest`; L∞: the candidate attaining the minimum)
   Vec3q normal;
   std::size_t hull_points = 0;  // L1: points on the hull (for the text)
+  // ε > 0: supporting planes n·x ≤ b whose intersection is the (rational) wrench space — L1 its facets' planes, L∞ the
+  // candidate normals with their support — for pictures (render --what quality).
+  std::vector<std::pair<Vec3q, Rational>> planes;
 };
 
 // The quality of the scene's contacts (the friction reading, each contact with its own μ). Closure is decided in

@@ -55,7 +55,7 @@ from . import _core  # noqa: E402  (the exception classes above are handed to th
 _core._set_exceptions(InputError, InternalError, UndecidedError)
 
 __all__ = ["Scene", "closure", "force_closure", "form_closure", "equilibrium", "hold", "labels", "dual", "reuleaux",
-           "limit_surface", "sliding", "render", "check", "reference", "compare", "batch", "closure_arrays",
+           "quality", "limit_surface", "sliding", "render", "check", "reference", "compare", "batch", "closure_arrays",
            "equilibrium_arrays", "stick_slide_arrays", "DECIDED_BY", "MOTION", "MOTION_DECIDED_BY", "InputError",
            "UndecidedError", "InternalError"]
 
@@ -272,9 +272,47 @@ def reuleaux(scene, *, center=None, sense=None, direction=None, twist=None, mode
     return _core.reuleaux(_scene(scene), words, mode)
 
 
+def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, tolerance=None, only=None,
+            mode="hybrid"):
+    """How good is the grasp (docs/quality.md), as `wrenchkit quality --json`: {"epsilon": {"lower", "upper",
+    "squared" (when epsilon^2 is rational), "lower_approx", "upper_approx", "norm", "normalize", "torque_scale",
+    "about"}, "force_closure", "nearest_facet", "critical_mu": {"closure": {"kind": "value" | "always" | "never",
+    "lower", "upper", "exact", "certificate"}, "equilibrium": {...} (with a load)}, "certificate", ...}. Exact numbers
+    are Fractions; every certificate was accepted by the independent checker.
+
+    norm: "L1" (default) or "Linf"; normalize: "unit-normal" (default), "unit-force" or "as-given"; torque_scale: the
+    moment's weight (default 1); about: (x, y), the moments' point (default body.com, else the origin); tolerance:
+    the brackets' relative width (default 1e-12); only: "epsilon" or "critical-mu". mode: "hybrid" or "exact"
+    ("float" raises UndecidedError: neither has a float twin).
+    """
+    words = []
+    for name, value in (("norm", norm), ("normalize", normalize), ("only", only)):
+        if value is not None:
+            words += ["--" + name, str(value)]
+    for name, value in (("torque-scale", torque_scale), ("tolerance", tolerance)):
+        if value is not None:
+            words += ["--" + name, _number_text(value, name)]
+    if about is not None:
+        words += ["--about", ",".join(_vec(about, "about"))]
+    r = _json.loads(_core.quality(_scene(scene), words, mode))
+
+    def exact(d, keys):
+        for k in keys:
+            if k in d and isinstance(d[k], str):
+                d[k] = _fractions.Fraction(d[k])
+
+    if "epsilon" in r:
+        exact(r["epsilon"], ("lower", "upper", "squared", "torque_scale"))
+        r["epsilon"]["about"] = tuple(_fractions.Fraction(x) for x in r["epsilon"]["about"])
+    for c in r.get("critical_mu", {}).values():
+        exact(c, ("lower", "upper"))
+    return r
+
+
 def render(scene, what, *, sides=None):
     """The SVG picture of `wrenchkit render --what WHAT` (docs/gallery.md), as text: what is "labels", "dual",
-    "reuleaux", "limit-surface" or "hold"; sides (even, with "limit-surface") the polygons' sides (default 32).
+    "reuleaux", "limit-surface", "hold" or "quality" (docs/quality.md); sides (even, with "limit-surface") the
+    polygons' sides (default 32).
     """
     words = ["--what", str(what)]
     if sides is not None:

@@ -1,0 +1,52 @@
+"""wrenchkit.quality: the Ferrari-Canny epsilon and the critical friction coefficient from Python (docs/quality.md),
+the same answers as `wrenchkit quality --json`: the two fingers of proofs/examples (epsilon^2 = 1/3 by hand), the
+unit-force bracket around 1/sqrt(6), the ladder's mu* = 1/7 (theory.md section 9), options validated by the command's
+own table, float mode undecided."""
+import math
+from fractions import Fraction
+
+import pytest
+
+import wrenchkit
+
+TWO_FINGERS = {"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": 1},
+                                             {"at": [1, 0], "normal": [-1, 0], "mu": 1}]}
+LADDER = {"wrenchkit": 1, "body": {"com": ["-1/2", "7/2"]},
+          "contacts": [{"at": [0, 0], "normal": [0, 1]}, {"at": [-4, 3], "normal": [1, 0]}], "load": {"gravity": 1}}
+
+
+def test_epsilon_by_hand():
+    r = wrenchkit.quality(TWO_FINGERS, normalize="as-given", about=(0, 0))
+    assert r["force_closure"] is True
+    assert r["epsilon"]["squared"] == Fraction(1, 3)
+    assert r["epsilon"]["lower"] ** 2 <= Fraction(1, 3) <= r["epsilon"]["upper"] ** 2
+    assert r["certificate_checked"] is True and r["certificate"]["property"] == "quality"
+    assert wrenchkit.quality(TWO_FINGERS, norm="Linf")["epsilon"]["squared"] == Fraction(2, 3)
+
+
+def test_unit_force_bracket():
+    e = wrenchkit.quality(TWO_FINGERS, normalize="unit-force", tolerance="1/1000", only="epsilon")["epsilon"]
+    assert "squared" not in e
+    assert e["lower"] <= Fraction(1 / math.sqrt(6)) * (1 + Fraction(1, 10**12))
+    assert e["upper"] >= Fraction(1 / math.sqrt(6)) * (1 - Fraction(1, 10**12))
+    assert e["upper"] - e["lower"] <= Fraction(1, 1000) * e["lower"]
+
+
+def test_critical_mu_of_the_ladder():
+    r = wrenchkit.quality(LADDER, only="critical-mu")
+    assert "epsilon" not in r
+    assert r["critical_mu"]["closure"]["lower"] == Fraction(4, 3) and r["critical_mu"]["closure"]["exact"] is True
+    eq = r["critical_mu"]["equilibrium"]
+    assert eq["kind"] == "value" and eq["lower"] == eq["upper"] == Fraction(1, 7)
+    assert eq["certificate"]["property"] == "critical_mu"
+
+
+def test_options_and_modes():
+    with pytest.raises(wrenchkit.InputError, match="--norm"):
+        wrenchkit.quality(TWO_FINGERS, norm="L3")
+    with pytest.raises(wrenchkit.InputError, match="--torque-scale"):
+        wrenchkit.quality(TWO_FINGERS, torque_scale=0)
+    with pytest.raises(wrenchkit.UndecidedError):
+        wrenchkit.quality(TWO_FINGERS, mode="float")
+    assert wrenchkit.quality(TWO_FINGERS, mode="exact")["epsilon"] == wrenchkit.quality(TWO_FINGERS)["epsilon"]
+    assert "<svg" in wrenchkit.render(TWO_FINGERS, "quality")
