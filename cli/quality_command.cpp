@@ -63,6 +63,7 @@ void write_critical(Json_writer& w, const Critical_mu& c, const std::string& cer
     w.member("lower", c.lower).member("upper", c.upper);
     w.key("lower_approx").raw(float_number(c.lower.get_d())).key("upper_approx").raw(float_number(c.upper.get_d()));
     w.member("exact", c.exact());
+    if (c.exact()) w.member("holds_at_critical", c.holds_at_critical);
   }
   w.member("decisions", c.decisions).member("certificate_checked", true).key("certificate").raw(certificate).end_object();
 }
@@ -84,7 +85,9 @@ std::string critical_text(const Critical_mu& c, bool closure) {
     case Critical_kind::value:
       if (c.exact())
         s << "mu* = " << number_text(c.lower) << " exactly — "
-          << (closure ? "not closed at mu*, closed for every mu above it" : "balanced at mu* and above, not below");
+          << (closure                ? "not closed at mu*, closed for every mu above it"
+              : c.holds_at_critical ? "balanced at mu* and above, not below"
+                                    : "balanced for every mu above mu*, not at mu* itself (nor below)");
       else
         s << "mu* ≈ " << decimal(c.lower, 12) << ", certified in [" << human_number(c.lower) << ", " << human_number(c.upper)
           << "] (not a rational of small height: its bracket)";

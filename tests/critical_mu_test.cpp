@@ -86,6 +86,20 @@ TEST(CriticalMuGolden, NeverAndAlways) {
   EXPECT_EQ(rejected(f, critical_mu_certificate(c.closure, true)), "");
 }
 
+// A pure moment on the offset fingers: at mu = 1/2 their edges lie on one line (the cone holds it) and the moment is
+// not balanced; above 1/2 the grasp is closed. mu* = 1/2, balanced only above it.
+TEST(CriticalMuGolden, BalancedOnlyAboveTheCritical) {
+  const char* t = R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0]}, {"at": [1, 1], "normal": [-1, 0]}],
+                     "load": {"wrench": [0, 0, 1]}})";
+  const Critical_answer a = answer(t);
+  ASSERT_TRUE(a.equilibrium);
+  EXPECT_TRUE(a.equilibrium->exact());
+  EXPECT_EQ(a.equilibrium->lower, Rational(1, 2));
+  EXPECT_FALSE(a.equilibrium->holds_at_critical);
+  EXPECT_FALSE(balanced(scene_of(t), Rational(1, 2)));
+  EXPECT_EQ(rejected(t, critical_mu_certificate(*a.equilibrium, false)), "");
+}
+
 // Random grasps (2–4 contacts pressing roughly inward, a load now and then): the theorem's own statement at μ* and
 // 10⁻⁹ beside it, and the checker.
 TEST(CriticalMuProperty, RandomGraspsMeetTheirThreshold) {
@@ -135,7 +149,8 @@ TEST(CriticalMuProperty, RandomGraspsMeetTheirThreshold) {
     const Critical_mu& e = *a.equilibrium;
     ASSERT_EQ(rejected(text, critical_mu_certificate(e, false)), "") << dump_failure(text, "critical_mu");
     if (e.kind == Critical_kind::value) {
-      ASSERT_TRUE(balanced(s, e.upper)) << dump_failure(text, "critical_mu");
+      ASSERT_EQ(balanced(s, e.upper), !e.exact() || e.holds_at_critical) << dump_failure(text, "critical_mu");
+      ASSERT_TRUE(balanced(s, e.upper * (1 + step) + step)) << dump_failure(text, "critical_mu");
       ASSERT_FALSE(balanced(s, e.lower * (1 - step))) << dump_failure(text, "critical_mu");
       if (!e.exact()) {
         ASSERT_FALSE(balanced(s, e.lower)) << dump_failure(text, "critical_mu");

@@ -188,36 +188,41 @@ Rational two_to(int bits) {
 }
 
 // The search both properties share. `holds(μ, certify)`: the property at μ (certify: keep its certificate as the
-// `below` or `above` evidence). Closure holds on (μ*, ∞), balance on [μ*, ∞): `closed_at_critical` says which.
+// `below` or `above` evidence). Closure holds on an open half-line (μ*, ∞) (`open_set`); balance on [μ*, ∞) or, where
+// the cone at μ* holds a line, (μ*, ∞).
 template <class Holds>
-void search(Critical_mu& out, const std::vector<Poly>& P, Rational lo, Rational hi, const Rational& tol,
-            bool holds_at_critical, Holds holds) {
+void search(Critical_mu& out, const std::vector<Poly>& P, Rational lo, Rational hi, const Rational& tol, bool open_set,
+            Holds holds) {
   const auto bisect_until = [&](const Rational& width) {
     while (hi - lo > width) {
       const Rational mid = (lo + hi) / 2;
       (holds(mid, false) ? hi : lo) = mid;
     }
   };
-  // Exact: the simplest rational s of a narrow bracket that is a root of a minor and on μ*'s side (fails at s for
-  // closure, holds at s for balance), with the minors' signs constant on a one-sided interval beside it: tried from
-  // the first bracket's far end halving toward s, and then its simplest rational in the outer half (a readable μ).
-  const Rational far = holds_at_critical ? lo : hi;
+  // Exact: the simplest rational s of a narrow bracket that is a root of a minor, with the minors' signs constant on
+  // a one-sided interval beside it — (s, other] where the property fails at s and holds at other, [other, s) where it
+  // holds at s and fails at other —, tried from the first bracket's far end halving toward s, then its simplest
+  // rational in the outer half (a readable μ).
+  const Rational lo0 = lo, hi0 = hi;
   for (int bits : {32, 64, 128, 256}) {
     bisect_until((hi + 1) / two_to(bits));  // (absolute near 0: μ* may be 0)
     const Rational s = simplest(lo, hi);
-    if (!is_root(P, s) || holds(s, false) != holds_at_critical) continue;
-    Rational other = far;  // balance: [other, s) fails; closure: (s, other] holds
+    if (!is_root(P, s)) continue;
+    const bool at_s = holds(s, false);
+    if (at_s && open_set) continue;  // (closed at s: s is above μ*)
+    Rational other = at_s ? lo0 : hi0;
     for (int t = 0; t < 200 && other != s; ++t, other = (other + s) / 2) {
       if (!all_constant_on(P, s, other)) continue;
-      other = holds_at_critical ? simplest(other, (other + s) / 2) : simplest((other + s) / 2, other);
-      if (holds(other, false) == holds_at_critical) break;  // the same answer on both sides: s is not μ*
+      other = at_s ? simplest(other, (other + s) / 2) : simplest((other + s) / 2, other);
+      if (holds(other, false) == at_s) break;  // the same answer on both sides: s is not μ*
       out.kind = Critical_kind::value;
       out.lower = out.upper = s;
       out.constant = true;
+      out.holds_at_critical = at_s;
       holds(s, true);
       holds(other, true);
-      (holds_at_critical ? out.above_mu : out.below_mu) = s;
-      (holds_at_critical ? out.below_mu : out.above_mu) = other;
+      (at_s ? out.above_mu : out.below_mu) = s;
+      (at_s ? out.below_mu : out.above_mu) = other;
       return;
     }
   }
@@ -254,7 +259,7 @@ Critical_mu closure_mu(const Scene& scene, Mode mode, const Rational& tol) {
     if (guard > 100000) throw std::logic_error("critical mu: closure never reached although the limit cone closes");
     lo = hi, hi *= 2;
   }
-  search(out, minors(families(scene, false)), lo, hi, tol, false, closed);
+  search(out, minors(families(scene, false)), lo, hi, tol, true, closed);
   return out;
 }
 
@@ -292,7 +297,7 @@ Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
   }
   Rational lo = 0, hi = 1;
   while (!balanced(hi, false)) lo = hi, hi = std::min(Rational(hi * 2), M);
-  search(out, P, lo, hi, tol, true, balanced);
+  search(out, P, lo, hi, tol, false, balanced);
   return out;
 }
 

@@ -29,7 +29,8 @@ const char* critical_kind_name(Critical_kind k);  // "value", "always", "never"
 
 // μ* of one property. value: μ* ∈ [lower, upper] (lower = upper: exact). The evidence: the property fails at
 // `below_mu` (a twist) and holds at `above_mu` (a combination); `constant`: the minors keep their signs strictly
-// between them and at the end that is not μ* (the exact case). always: holds at μ = 0 (above). never: a twist with
+// between them and at the end that is not μ* (the exact case: μ* is below_mu, the property failing at μ* and holding
+// just above it — closure, or balance when the cone at μ* holds a line —, or above_mu, holding at μ*). always: holds at μ = 0 (above). never: a twist with
 // power ≥ 0 against every a_i, 0 against every b_i (and > 0 against the load) — `limit_twist` —, or, for the load, it
 // fails at below_mu and the minors keep their signs on [below_mu, ∞) (`constant_beyond`).
 struct Critical_mu {
@@ -40,6 +41,7 @@ struct Critical_mu {
   Closure_certificate below_closure, above_closure;          // of force closure
   Equilibrium_certificate below_balance, above_balance;      // of equilibrium
   bool constant = false, constant_beyond = false;
+  bool holds_at_critical = false;  // exact: the property holds at μ* itself (balance on [μ*, ∞)), or only above it
   std::optional<Vec3q> limit_twist;
   std::size_t decisions = 0;  // closure or equilibrium decisions made
 };

@@ -203,13 +203,13 @@ void check_critical_mu(const Certificate& c, const Scene& scene, const Limits& l
       throw Failure{"critical_mu: a bracket is [below.mu, above.mu] = [" + show(cm.below.mu) + ", " + show(cm.above.mu) + "]"};
     return;
   }
-  // exact: closure fails at μ* = below.mu and the minors keep their signs on (μ*, above.mu]; balance holds at
-  // μ* = above.mu and they keep their signs on [below.mu, μ*)
+  // exact: μ* = below.mu (the property fails there) and the minors keep their signs on (μ*, above.mu] — it holds on
+  // all of it —, or μ* = above.mu (it holds there) and they keep their signs on [below.mu, μ*) — it fails on all of it
   if (cm.lower != cm.upper) throw Failure{"critical_mu: \"constant\" proves one value, but lower != upper"};
-  const Q& mu = balance ? cm.above.mu : cm.below.mu;
-  if (cm.lower != mu)
-    throw Failure{"critical_mu: " + show(cm.lower) + " is not " + (balance ? "above.mu" : "below.mu") + " = " + show(mu)};
-  check_constant(minors(families(scene, balance, lim)), mu, balance ? cm.below.mu : cm.above.mu);
+  if (cm.lower != cm.below.mu && cm.lower != cm.above.mu)
+    throw Failure{"critical_mu: " + show(cm.lower) + " is neither below.mu nor above.mu"};
+  const bool at_below = cm.lower == cm.below.mu;
+  check_constant(minors(families(scene, balance, lim)), cm.lower, at_below ? cm.above.mu : cm.below.mu);
 }
 
 }  // namespace wrenchkit_checker::detail

@@ -42,6 +42,7 @@ MAT_LEGS = {"wrenchkit": 1, "support": {"mu": "1/2", "weight": 5, "pressure_cent
 SQUARE_REGION = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 1}
 
 SCENES = {
+    "two_fingers_offset_moment": {"wrenchkit": 1, "name": "the offset fingers against a pure moment: balanced only above mu = 1/2", "contacts": [{"at": [-1, 0], "normal": [1, 0], "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "name": "right finger"}], "load": {"wrench": [0, 0, 1]}},
     "two_fingers_offset": {"wrenchkit": 1, "name": "two fingers at (-1, 0) and (1, 1), normals (1, 0) and (-1, 0): the contact line at tan 1/2", "contacts": [{"at": [-1, 0], "normal": [1, 0], "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "name": "right finger"}]},
     "ladder_gravity": {"wrenchkit": 1, "name": "the leaning square (ladder) of theory.md section 9 under its weight", "body": {"outline": [["0", "0"], ["3", "4"], ["-1", "7"], ["-4", "3"]], "com": ["-1/2", "7/2"]}, "contacts": [{"at": ["0", "0"], "normal": ["0", "1"], "name": "floor"}, {"at": ["-4", "3"], "normal": ["1", "0"], "name": "wall"}], "load": {"gravity": 1}},
     "two_fingers_same_way": {"wrenchkit": 1, "name": "two fingers pushing the same way, and a load along it", "contacts": [{"at": [-1, 0], "normal": [1, 0]}, {"at": [1, 1], "normal": [1, 0]}], "load": {"force": [1, 0], "at": [0, 0]}},
@@ -375,6 +376,7 @@ ROOT2 = [{"scale": "181/256", "error": "1/256", "bound": "7/4"}] * 2
 CRIT_OFFSET = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "critical_mu": {"lower": "1/2", "upper": "1/2"}, "below": {"mu": "1/2", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": false, "twist": ["0", "1", "1"], "reading": {"label": "+", "point": ["-1", "0"]}}}, "above": {"mu": "2/3", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "7"}, {"contact": 0, "edge": "right", "weight": "1"}, {"contact": 1, "edge": "left", "weight": "7"}, {"contact": 1, "edge": "right", "weight": "1"}], "independent": [{"contact": 0, "edge": "left"}, {"contact": 0, "edge": "right"}, {"contact": 1, "edge": "left"}]}}, "constant": true}''')
 CRIT_LADDER_CLOSURE = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "critical_mu": {"lower": "4/3", "upper": "4/3"}, "below": {"mu": "4/3", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": false, "twist": ["3", "4", "1"], "reading": {"label": "+", "point": ["-4", "3"]}}}, "above": {"mu": "2", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "10"}, {"contact": 0, "edge": "right", "weight": "2"}, {"contact": 1, "edge": "left", "weight": "5"}, {"contact": 1, "edge": "right", "weight": "11"}], "independent": [{"contact": 0, "edge": "left"}, {"contact": 0, "edge": "right"}, {"contact": 1, "edge": "left"}]}}, "constant": true}''')
 CRIT_LADDER = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": {"lower": "1/7", "upper": "1/7"}, "below": {"mu": "1/10", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": false, "twist": ["340", "34", "101"], "reading": {"label": "+", "point": ["-34/101", "340/101"]}}}, "above": {"mu": "1/7", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "49/50"}, {"contact": 1, "edge": "left", "weight": "7/50"}]}}, "constant": true}''')
+CRIT_MOMENT = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": {"lower": "1/2", "upper": "1/2"}, "below": {"mu": "1/2", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": false, "twist": ["0", "1", "1"], "reading": {"label": "+", "point": ["-1", "0"]}}}, "above": {"mu": "2/3", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "3"}, {"contact": 1, "edge": "left", "weight": "3"}]}}, "constant": true}''')
 CRIT_NEVER = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "critical_mu": "never", "limit_twist": ["1", "0", "0"]}''')
 CRIT_NEVER_LOAD = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": "never", "limit_twist": ["1", "0", "0"]}''')
 
@@ -390,6 +392,8 @@ CERTS = [
     ("ladder_gravity", "critical_mu_closure", "valid", CRIT_LADDER_CLOSURE),
     ("ladder_gravity", "critical_mu_one_seventh", "valid", CRIT_LADDER),
     ("two_fingers_same_way", "critical_mu_never", "valid", CRIT_NEVER),
+    # balanced only above mu* = 1/2 (at 1/2 the fingers' edges lie on one line, and a pure moment is not balanced)
+    ("two_fingers_offset_moment", "critical_mu_half_open", "valid", CRIT_MOMENT),
     ("two_fingers_same_way", "critical_mu_never_balanced", "valid", CRIT_NEVER_LOAD),
     ("two_fingers_offset", "critical_mu_one_third", "invalid:constant|constant: a minor of the edges may change sign between 1/3 and 2/3",
      crit(CRIT_OFFSET, critical_mu={"lower": "1/3", "upper": "1/3"}, below=dict(CRIT_OFFSET["below"], mu="1/3"))),
@@ -1568,10 +1572,10 @@ def verify_critical(scene, cert):
         return "bracket"
     if not cert.get("constant"):
         return None if (below, above) == (lower, upper) else "bracket"
-    mu = above if balance else below
-    if lower != upper or lower != mu:
+    if lower != upper or lower not in (below, above):
         return "bracket"
-    far = below if balance else above
+    mu = lower
+    far = above if mu == below else below
     l, h = min(mu, far), max(mu, far)
     return None if all(constant(p, l, h, far) for p in minors()) else "constant"
 
