@@ -123,7 +123,10 @@ void write_quality(Json_writer& w, const Quality_item& r) {
         w.object().member("contact", a.refs[k].contact).member("edge", edge_name(a.refs[k].edge)).end_object();
       w.end_array();
     }
-    w.key("normal").rationals(primitive(a.normal)).end_object();
+    w.key("normal").rationals(primitive(a.normal));
+    const double nx = a.normal[0].get_d(), ny = a.normal[1].get_d(), nz = a.normal[2].get_d(), len = std::sqrt(nx * nx + ny * ny + nz * nz);
+    w.key("normal_approx").array().raw(float_number(nx / len)).raw(float_number(ny / len)).raw(float_number(nz / len)).end_array();
+    w.end_object();
     w.member("generators", a.refs.size());
     if (a.query.norm == Quality_norm::l1) w.member("hull_points", a.hull_points).member("hull_triangles", a.boundary.size());
   }
@@ -195,7 +198,10 @@ int run_quality(const Options& o, const std::string& scene_text, const std::stri
     write_file(o.certificate_file, r.certificate + "\n");
   }
   return write_answer(o, [&](Json_writer& w) { write_quality(w, r); },
-                      [&] { return scene_line(r.scene.name, source) + frictionless_note(r.scene) + quality_human(r); });
+                      [&] {  // (the scene's μ matter to ε, not to μ*)
+                        return scene_line(r.scene.name, source) + (r.certificate.empty() ? "" : frictionless_note(r.scene)) +
+                               quality_human(r);
+                      });
 }
 
 }  // namespace wrenchkit::cli

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""CTest quickstart_doc: every command of docs/quickstart.md, run from the checkout root with the built CLI, prints
-exactly the output the page shows (and exits 0). Usage: quickstart_doc.py CLI SOURCE_DIR"""
+"""CTest quickstart_doc (and quality_doc): every command of docs/quickstart.md (or of PAGE), run from the checkout root
+with the built CLI, prints exactly the output the page shows (and exits 0); at least MIN commands (default 10).
+Usage: quickstart_doc.py CLI SOURCE_DIR [PAGE [MIN]]"""
 import os
 import shlex
 import subprocess
@@ -23,9 +24,10 @@ def blocks(text):
 
 def main():
     cli, root = sys.argv[1], sys.argv[2]
-    page = os.path.join(root, "docs", "quickstart.md")
+    page = os.path.join(root, sys.argv[3] if len(sys.argv) > 3 else os.path.join("docs", "quickstart.md"))
+    least = int(sys.argv[4]) if len(sys.argv) > 4 else 10
     found = blocks(open(page, encoding="utf-8").read())
-    if len(found) < 10:
+    if len(found) < least:
         print(f"quickstart_doc: only {len(found)} commands found in {page}")
         return 1
     bad = 0
@@ -36,7 +38,7 @@ def main():
             bad += 1
             print(f"quickstart_doc: `{command}` exit {r.returncode}\n--- the page shows:\n{want}--- it prints:\n"
                   f"{r.stdout}{r.stderr}")
-    print(f"quickstart_doc: {len(found) - bad} of {len(found)} commands print what docs/quickstart.md shows")
+    print(f"quickstart_doc: {len(found) - bad} of {len(found)} commands print what {page} shows")
     return 1 if bad else 0
 
 
