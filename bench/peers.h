@@ -31,6 +31,10 @@ Verdict qhull_graspit(const std::vector<Wrench_d>& g);
 // The plain qhull test: "Qt" (no joggle), origin strictly inside with an absolute tolerance:
 // every facet offset < −1e-12. A qhull error (flat input: QH6154) is a failure.
 Verdict qhull_strict(const std::vector<Wrench_d>& g);
+// GraspIt!'s epsilon quality (src/quality/qualEpsilon.cpp over src/gws.cpp's hull): qhull "Pp n Qx QJ C-0.0001" on
+// the (already scaled) wrenches, ε = min over facets of −offset (the normals are unit); −1 when some −offset is
+// negative (not force closure) or qhull fails ("0 volume, quick exit").
+double qhull_graspit_epsilon(const std::vector<Wrench_d>& g);
 // cddlib with GMP rationals: the exact H-representation of pos{g_i} (V-representation: the
 // origin and the rays g_i); closure iff it has no inequality or equation with a nonzero normal.
 Verdict cdd_gmp(const std::vector<Wrench_q>& g);

@@ -1,4 +1,5 @@
 // qhull peers (bench/peers.h): GraspIt!'s call and the plain strict test, with libqhull_r.
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -47,6 +48,17 @@ Verdict run_qhull(const std::vector<Wrench_d>& g, const char* flags, Decide&& de
 
 Verdict qhull_graspit(const std::vector<Wrench_d>& g) {
   return run_qhull(g, "qhull Pp n Qx QJ C-0.0001", [](double offset) { return !(offset > 0); });
+}
+
+double qhull_graspit_epsilon(const std::vector<Wrench_d>& g) {
+  double eps = 1e300;
+  bool negative = false;
+  const Verdict v = run_qhull(g, "qhull Pp n Qx QJ C-0.0001", [&](double offset) {
+    if (-offset < 0) negative = true;
+    eps = std::min(eps, -offset);
+    return true;
+  });
+  return v == Verdict::failure || negative ? -1.0 : eps;
 }
 
 Verdict qhull_strict(const std::vector<Wrench_d>& g) {

@@ -32,7 +32,10 @@
 #include <vector>
 
 #include "bench/peers.h"
+#include "exact/certificates/certificates.h"
 #include "exact/statics/closure.h"
+#include "exact/statics/critical_mu.h"
+#include "exact/statics/quality.h"
 #include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/region_sliding.h"
@@ -531,6 +534,52 @@ void register_regions() {
   })->Unit(benchmark::kMillisecond);
 }
 
+// quality/6/METHOD: the grasp quality of 6 frictional contacts pressing inward on a hexagon (issue 31's targets):
+// ε (L1, unit-normal) with and without its certificate's JSON, for normals of rational length (ε² exact) and of
+// irrational length (a bracket to 1e-12), GraspIt!'s qhull ε on the same generators in double, and μ* (closure).
+void register_quality() {
+  const auto scene_text = [](bool rational_normals) {
+    // points on a hexagon; normals toward the centre, of length 5 ((3, 4)-type) or not ((1, 1)-type)
+    const int at[6][2] = {{4, 0}, {2, 3}, {-2, 3}, {-4, 0}, {-2, -3}, {2, -3}};
+    const int n5[6][2] = {{-4, -3}, {-3, -4}, {4, -3}, {4, 3}, {3, 4}, {-3, 4}};
+    const int n2[6][2] = {{-1, 0}, {-1, -1}, {1, -1}, {1, 0}, {1, 1}, {-1, 1}};
+    std::string t = R"({"wrenchkit": 1, "contacts": [)";
+    for (int i = 0; i < 6; ++i) {
+      const int* n = rational_normals ? n5[i] : n2[i];
+      t += (i ? ", " : "") + std::string("{\"at\": [") + std::to_string(at[i][0]) + ", " + std::to_string(at[i][1]) +
+           "], \"normal\": [" + std::to_string(n[0]) + ", " + std::to_string(n[1]) + "], \"mu\": \"1/2\"}";
+    }
+    return t + "]}";
+  };
+  for (const bool rational : {true, false}) {
+    const std::string base = std::string("quality/6/") + (rational ? "rational_normals/" : "irrational_normals/");
+    const auto scene = std::make_shared<Scene>(read_scene(scene_text(rational), Input_limits{}));
+    for (const bool certify : {false, true})
+      benchmark::RegisterBenchmark((base + (certify ? "epsilon_hybrid_certificate" : "epsilon_hybrid")).c_str(),
+                                   [scene, certify](benchmark::State& st) {
+                                     for (auto _ : st) {
+                                       const Quality_answer a = decide_quality(*scene, Quality_query{}, Mode::hybrid);
+                                       if (certify) benchmark::DoNotOptimize(certificate_json(a));
+                                       benchmark::DoNotOptimize(a.lower);
+                                     }
+                                   })
+          ->Unit(benchmark::kMicrosecond);
+    // GraspIt!'s ε on the same unit-normal generators, in double
+    std::vector<peers::Wrench_d> g;
+    for (const Generator& gen : generators(*scene, Reading::friction)) {
+      const Contact& c = scene->contacts[gen.contact];
+      const double len = std::sqrt(dot(c.normal, c.normal).get_d());
+      g.push_back({gen.w[0].get_d() / len, gen.w[1].get_d() / len, gen.w[2].get_d() / len});
+    }
+    benchmark::RegisterBenchmark((base + "qhull_graspit_epsilon").c_str(), [g](benchmark::State& st) {
+      for (auto _ : st) benchmark::DoNotOptimize(peers::qhull_graspit_epsilon(g));
+    })->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark((base + "critical_mu_closure").c_str(), [scene](benchmark::State& st) {
+      for (auto _ : st) benchmark::DoNotOptimize(decide_critical_mu(*scene, Mode::hybrid, Rational(1, 1000000000000ul)));
+    })->Unit(benchmark::kMicrosecond);
+  }
+}
+
 int main(int argc, char** argv) {
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
@@ -547,6 +596,7 @@ int main(int argc, char** argv) {
   register_sliding();
   register_hold();
   register_regions();
+  register_quality();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   if (g_failed) std::fprintf(stderr, "wrenchkit_bench: a certified method was wrong (see above)\n");

@@ -174,5 +174,42 @@ TEST(QualityOracle, RandomGraspsAgainstBruteForce) {
   EXPECT_GT(closed, 40);
 }
 
+// The fast path (small numbers, rational scales: integers only) and the general one (rationals; taken when the query
+// keeps the planes) give the same ε², the same nearest distance and accepted certificates, for every normalisation and
+// both norms, on grasps whose normals have rational length (3-4-5, 5-12-13, axes), about body.com or the origin.
+TEST(QualityOracle, FastPathAgreesWithTheGeneralOne) {
+  std::mt19937_64 rng(seed(20261130));
+  const int normals[][2] = {{0, 1}, {1, 0}, {0, -1}, {-1, 0}, {3, 4}, {-4, 3}, {-3, -4}, {4, -3}, {5, 12}, {-12, 5}, {12, -5}};
+  const char* mus[] = {"", "1/2", "3/4", "1/3", "2"};
+  int fast_closed = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    std::vector<Contact_spec> cs;
+    const int n = 2 + static_cast<int>(rng() % 4);
+    for (int i = 0; i < n; ++i) {
+      const auto& nn = normals[rng() % 11];
+      cs.push_back({std::to_string(static_cast<int>(rng() % 7) - 3) + "/" + std::to_string(1 + rng() % 3),
+                    std::to_string(static_cast<int>(rng() % 7) - 3), std::to_string(nn[0]), std::to_string(nn[1]),
+                    mus[rng() % 5]});
+    }
+    const std::string text = scene_json(cs);
+    const Scene scene = scene_of(text);
+    for (Quality_norm norm : {Quality_norm::l1, Quality_norm::linf})
+      for (Force_normalization f : {Force_normalization::unit_normal, Force_normalization::unit_force, Force_normalization::as_given}) {
+        Quality_query q = query(norm, f);
+        if (trial % 2) q.torque_scale = Rational(1, 3), q.about = Vec2{Rational(1, 2), Rational(-1)};
+        const Quality_answer fast = decide_quality(scene, q, Mode::hybrid);
+        q.keep_planes = true;
+        const Quality_answer general = decide_quality(scene, q, Mode::exact);
+        ASSERT_EQ(fast.closure.holds, general.closure.holds) << dump_failure(text, "quality_fast");
+        ASSERT_EQ(fast.exact, general.exact) << dump_failure(text, "quality_fast");
+        ASSERT_EQ(fast.squared, general.squared) << quality_norm_name(norm) << " " << normalization_name(f) << " "
+                                                 << dump_failure(text, "quality_fast");
+        ASSERT_EQ(rejected(text, fast), "") << dump_failure(text, "quality_fast");
+        fast_closed += fast.closure.holds;
+      }
+  }
+  EXPECT_GT(fast_closed, 60);
+}
+
 }  // namespace
 }  // namespace wrenchkit

@@ -3,11 +3,13 @@
 #include "exact/statics/quality.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <unordered_map>
 
 #include "exact/io/input_error.h"
+#include "exact/numbers/wide_int.h"
 
 namespace wrenchkit {
 
@@ -88,12 +90,7 @@ Rational upper_root(const Rational& x) {
 }
 
 using P3 = std::array<Integer, 3>;
-P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-P3 cross3(const P3& a, const P3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 Integer dot3(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-bool zero3(const P3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
 
 // The points times a common positive denominator D: integers (the hull and the distances scale by D).
 std::vector<P3> integer_points(const std::vector<Vec3q>& pts, Integer& D) {
@@ -119,42 +116,67 @@ Rational distance_squared(const Plane& p, const Integer& D) {
 }
 
 // The convex hull of integer points with a nonempty interior, by exact incremental insertion: its boundary as
-// triangles of point indices, each oriented outward (the interior behind it). Points on the boundary but not
-// extreme may be left out. O(points · facets) predicates.
+// triangles of point indices, each oriented outward (the interior behind it), with their planes. Points on the
+// boundary but not extreme may be left out. O(points · facets) predicates. Coordinates C, products W: GMP's integers,
+// or (every coordinate within 2^20) 64-bit coordinates with 128-bit products — a difference is within 2^21, a normal
+// coordinate within 2^43, an offset within 3·2^63.
+template <class W>
 struct Hull {
   std::vector<std::array<std::size_t, 3>> tri;
-  std::vector<Plane> plane;
+  std::vector<std::array<W, 3>> n;
+  std::vector<W> off;
 };
-Hull convex_hull(const std::vector<P3>& P) {
+template <class C, class W>
+Hull<W> convex_hull(const std::vector<std::array<C, 3>>& P) {
+  using V = std::array<W, 3>;
+  const auto diff = [&](std::size_t b, std::size_t a) { return V{W(P[b][0]) - W(P[a][0]), W(P[b][1]) - W(P[a][1]), W(P[b][2]) - W(P[a][2])}; };
+  const auto cross = [](const V& a, const V& b) {
+    return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  const auto dot = [](const V& a, const auto& b) { return W(a[0] * W(b[0]) + a[1] * W(b[1]) + a[2] * W(b[2])); };
+  const auto zero = [](const V& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; };
   const std::size_t n = P.size();
   std::size_t i1 = n, i2 = n, i3 = n;
   for (std::size_t i = 1; i < n && i1 == n; ++i)
-    if (!zero3(sub(P[i], P[0]))) i1 = i;
+    if (!zero(diff(i, 0))) i1 = i;
   for (std::size_t i = 1; i1 < n && i < n && i2 == n; ++i)
-    if (!zero3(cross3(sub(P[i1], P[0]), sub(P[i], P[0])))) i2 = i;
+    if (!zero(cross(diff(i1, 0), diff(i, 0)))) i2 = i;
   for (std::size_t i = 1; i2 < n && i < n && i3 == n; ++i)
-    if (dot3(cross3(sub(P[i1], P[0]), sub(P[i2], P[0])), sub(P[i], P[0])) != 0) i3 = i;
+    if (dot(cross(diff(i1, 0), diff(i2, 0)), diff(i, 0)) != 0) i3 = i;
   if (i3 == n) throw std::logic_error("quality: the wrench space of a grasp in closure is flat");
-  P3 inside;  // four times the first tetrahedron's centroid: interior to every later hull
-  for (int k = 0; k < 3; ++k) inside[k] = P[0][k] + P[i1][k] + P[i2][k] + P[i3][k];
+  V inside;  // four times the first tetrahedron's centroid: interior to every later hull
+  for (int k = 0; k < 3; ++k) inside[k] = W(P[0][k]) + W(P[i1][k]) + W(P[i2][k]) + W(P[i3][k]);
 
-  Hull h;
+  Hull<W> h;
   std::vector<char> alive;
-  std::unordered_map<std::uint64_t, std::size_t> edge;  // directed edge (u, v) → its facet
+  // directed edge (u, v) → its facet: a flat table for up to 512 points, a hash map beyond
+  const bool flat = n <= 512;
+  std::vector<std::size_t> table(flat ? n * n : 0);
+  std::unordered_map<std::uint64_t, std::size_t> map;
   const auto key = [](std::size_t u, std::size_t v) { return (static_cast<std::uint64_t>(u) << 32) | v; };
+  const auto set_edge = [&](std::size_t u, std::size_t v, std::size_t f) {
+    if (flat) table[u * n + v] = f;
+    else map[key(u, v)] = f;
+  };
+  const auto edge_of = [&](std::size_t u, std::size_t v) { return flat ? table[u * n + v] : map.at(key(u, v)); };
+  const auto drop_edge = [&](std::size_t u, std::size_t v) {
+    if (!flat) map.erase(key(u, v));
+  };
+  h.tri.reserve(4 * n), h.n.reserve(4 * n), h.off.reserve(4 * n), alive.reserve(4 * n);
   const auto add = [&](std::size_t a, std::size_t b, std::size_t c) {
-    Plane p{cross3(sub(P[b], P[a]), sub(P[c], P[a])), 0};
-    p.off = dot3(p.n, P[a]);
-    if (dot3(p.n, inside) > 4 * p.off) {  // facing inward: turn it
+    V nv = cross(diff(b, a), diff(c, a));
+    W off = dot(nv, P[a]);
+    if (dot(nv, inside) > 4 * off) {  // facing inward: turn it
       std::swap(b, c);
-      for (Integer& x : p.n) x = -x;
-      p.off = -p.off;
+      for (W& x : nv) x = -x;
+      off = -off;
     }
     const std::size_t f = h.tri.size();
     h.tri.push_back({a, b, c});
-    h.plane.push_back(std::move(p));
+    h.n.push_back(std::move(nv));
+    h.off.push_back(std::move(off));
     alive.push_back(1);
-    edge[key(a, b)] = f, edge[key(b, c)] = f, edge[key(c, a)] = f;
+    set_edge(a, b, f), set_edge(b, c, f), set_edge(c, a, f);
   };
   add(0, i1, i2), add(0, i1, i3), add(0, i2, i3), add(i1, i2, i3);
 
@@ -166,93 +188,278 @@ Hull convex_hull(const std::vector<P3>& P) {
     visible.clear();
     seen.assign(h.tri.size(), 0);
     for (std::size_t f = 0; f < h.tri.size(); ++f)
-      if (alive[f] && dot3(h.plane[f].n, P[p]) > h.plane[f].off) visible.push_back(f), seen[f] = 1;
+      if (alive[f] && dot(h.n[f], P[p]) > h.off[f]) visible.push_back(f), seen[f] = 1;
     if (visible.empty()) continue;  // inside or on the boundary
     horizon.clear();
     for (std::size_t f : visible)
       for (int k = 0; k < 3; ++k) {
         const std::size_t u = h.tri[f][k], v = h.tri[f][(k + 1) % 3];
-        if (!seen[edge.at(key(v, u))]) horizon.push_back({u, v});
+        if (!seen[edge_of(v, u)]) horizon.push_back({u, v});
       }
     for (std::size_t f : visible) {
       alive[f] = 0;
-      for (int k = 0; k < 3; ++k) edge.erase(key(h.tri[f][k], h.tri[f][(k + 1) % 3]));
+      for (int k = 0; k < 3; ++k) drop_edge(h.tri[f][k], h.tri[f][(k + 1) % 3]);
     }
     for (const auto& [u, v] : horizon) add(u, v, p);
   }
-  Hull out;
+  Hull<W> out;
   for (std::size_t f = 0; f < h.tri.size(); ++f)
-    if (alive[f]) out.tri.push_back(h.tri[f]), out.plane.push_back(std::move(h.plane[f]));
+    if (alive[f]) out.tri.push_back(h.tri[f]), out.n.push_back(std::move(h.n[f])), out.off.push_back(std::move(h.off[f]));
   return out;
 }
 
-// ε̃² of L1: the hull's nearest facet. Fills the boundary (indices into the points) and the nearest facet.
-Rational epsilon_l1(const std::vector<Vec3q>& pts, Quality_answer& a) {
-  Integer D;
-  const std::vector<P3> P = integer_points(pts, D);
-  Hull h = convex_hull(P);
+// The wrench space's points as integers over one positive denominator D (the hull and the distances scale by D):
+// GMP's integers, and when every coordinate is within 2^20 also 64-bit ones (the small tier: 128-bit products).
+struct Int_points {
+  Integer D = 1;
+  std::vector<P3> big;
+  std::vector<std::array<std::int64_t, 3>> small;
+  bool is_small = false;
+};
+Int_points int_points(const std::vector<Vec3q>& pts) {
+  Int_points r;
+  r.big = integer_points(pts, r.D);
+  const Integer limit = Integer(1) << 20;
+  r.is_small = true;
+  for (const P3& p : r.big)
+    for (const Integer& x : p) r.is_small = r.is_small && abs(x) <= limit;
+  if (r.is_small) {
+    r.small.resize(r.big.size());
+    for (std::size_t i = 0; i < r.big.size(); ++i)
+      for (int k = 0; k < 3; ++k) r.small[i][k] = r.big[i][k].get_si();
+  }
+  return r;
+}
+Integer big_of(const Integer& x) { return x; }
+Integer big_of(wide::i128 x) { return integer_of(x); }
+long double approx(const Integer& x) { return static_cast<long double>(x.get_d()); }
+long double approx(wide::i128 x) { return static_cast<long double>(x); }
+
+// (off/|n|)² of plane a below that of plane b (offsets > 0): with `filter`, in long double when the two differ by more
+// than 1e-9 relative; else, or without it, exactly in GMP's integers.
+template <class W>
+bool nearer(const W& off_a, const std::array<W, 3>& n_a, const W& off_b, const std::array<W, 3>& n_b, bool filter) {
+  if (filter) {
+    const auto ratio = [](const W& o, const std::array<W, 3>& n) {
+      const long double x = approx(o);
+      return x * x / (approx(n[0]) * approx(n[0]) + approx(n[1]) * approx(n[1]) + approx(n[2]) * approx(n[2]));
+    };
+    const long double a = ratio(off_a, n_a), b = ratio(off_b, n_b);
+    if (a < b * (1 - 1e-9L)) return true;
+    if (a > b * (1 + 1e-9L)) return false;
+  }
+  return closer(Plane{{big_of(n_a[0]), big_of(n_a[1]), big_of(n_a[2])}, big_of(off_a)},
+                Plane{{big_of(n_b[0]), big_of(n_b[1]), big_of(n_b[2])}, big_of(off_b)});
+}
+
+void inside_check(bool inside) {
+  if (!inside) throw std::logic_error("quality: the origin is not inside the wrench space of a closed grasp");
+}
+
+// ε̃² of L1: the hull's nearest facet. Fills the boundary (indices into the points), the nearest facet and its
+// normal, and (the query keeping them) every facet's plane.
+template <class C, class W>
+Rational epsilon_l1_tier(const std::vector<std::array<C, 3>>& P, const Integer& D, Quality_answer& a, bool filter) {
+  Hull<W> h = convex_hull<C, W>(P);
   std::size_t best = 0;
   for (std::size_t f = 0; f < h.tri.size(); ++f) {
-    if (h.plane[f].off <= 0) throw std::logic_error("quality: the origin is not inside the wrench space of a closed grasp");
-    if (closer(h.plane[f], h.plane[best])) best = f;
+    inside_check(h.off[f] > 0);
+    if (f && nearer(h.off[f], h.n[f], h.off[best], h.n[best], filter)) best = f;
   }
   std::vector<char> on(P.size(), 0);
   for (const auto& t : h.tri) on[t[0]] = on[t[1]] = on[t[2]] = 1;
   a.hull_points = static_cast<std::size_t>(std::count(on.begin(), on.end(), 1));
-  a.boundary = h.tri;
   a.nearest = h.tri[best];
   a.planes.clear();
-  for (const Plane& p : h.plane) a.planes.push_back({{Rational(p.n[0]), Rational(p.n[1]), Rational(p.n[2])}, canonical(p.off, D)});
-  for (int k = 0; k < 3; ++k) a.normal[k] = Rational(h.plane[best].n[k]);
-  return distance_squared(h.plane[best], D);
+  if (a.query.keep_planes)
+    for (std::size_t f = 0; f < h.tri.size(); ++f)
+      a.planes.push_back({{Rational(big_of(h.n[f][0])), Rational(big_of(h.n[f][1])), Rational(big_of(h.n[f][2]))},
+                          canonical(big_of(h.off[f]), D)});
+  const Plane nearest{{big_of(h.n[best][0]), big_of(h.n[best][1]), big_of(h.n[best][2])}, big_of(h.off[best])};
+  a.boundary = std::move(h.tri);
+  for (int k = 0; k < 3; ++k) a.normal[k] = Rational(nearest.n[k]);
+  return distance_squared(nearest, D);
 }
 
 // ε̃² of L∞: the minimum of h(d)²/|d|² over the candidate normals d (each triangle's normal, and the cross products
 // of two contacts' edge directions), h(d) = Σ_i max(0, d·g over contact i's points).
-Rational epsilon_linf(const std::vector<Vec3q>& pts, const std::vector<Generator_ref>& refs, Quality_answer& a) {
-  Integer D;
-  const std::vector<P3> P = integer_points(pts, D);
+template <class C, class W>
+Rational epsilon_linf_tier(const std::vector<std::array<C, 3>>& P, const Integer& D, const std::vector<Generator_ref>& refs,
+                           Quality_answer& a, bool filter) {
+  using V = std::array<W, 3>;
+  const auto cross = [](const V& x, const V& y) {
+    return V{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+  };
   std::vector<std::vector<std::size_t>> group;  // the points of each contact, in order
   for (std::size_t j = 0; j < refs.size(); ++j) {
     if (j == 0 || refs[j].contact != refs[j - 1].contact) group.emplace_back();
     group.back().push_back(j);
   }
-  std::vector<P3> normals;
-  std::vector<std::vector<P3>> edges(group.size());
+  const auto point = [&P](std::size_t j) { return V{W(P[j][0]), W(P[j][1]), W(P[j][2])}; };
+  std::vector<V> normals;
+  std::vector<std::vector<V>> edges(group.size());
   for (std::size_t i = 0; i < group.size(); ++i) {
-    for (std::size_t j : group[i]) edges[i].push_back(P[j]);
+    for (std::size_t j : group[i]) edges[i].push_back(point(j));
     if (group[i].size() == 2) {
-      const P3 &l = P[group[i][0]], &r = P[group[i][1]];
-      edges[i].push_back(sub(l, r));
-      normals.push_back(cross3(l, r));
+      const V l = point(group[i][0]), r = point(group[i][1]);
+      edges[i].push_back({l[0] - r[0], l[1] - r[1], l[2] - r[2]});
+      normals.push_back(cross(l, r));
     }
   }
   for (std::size_t i = 0; i < group.size(); ++i)
     for (std::size_t j = i + 1; j < group.size(); ++j)
-      for (const P3& e : edges[i])
-        for (const P3& f : edges[j]) normals.push_back(cross3(e, f));
+      for (const V& e : edges[i])
+        for (const V& f : edges[j]) normals.push_back(cross(e, f));
   bool found = false;
-  Plane best;
+  V best_d;
+  W best_h = 0;
   a.planes.clear();
-  for (P3& d : normals) {
-    if (zero3(d)) continue;
+  for (V& d : normals) {
+    if (d[0] == 0 && d[1] == 0 && d[2] == 0) continue;
     for (int sign = 0; sign < 2; ++sign) {
-      if (sign) for (Integer& x : d) x = -x;
-      Integer h = 0;
+      if (sign) for (W& x : d) x = -x;
+      W h = 0;
       for (const auto& g : group) {
-        Integer m = 0;
-        for (std::size_t j : g) m = std::max(m, Integer(dot3(d, P[j])));
+        W m = 0;
+        for (std::size_t j : g) {
+          const W v = d[0] * W(P[j][0]) + d[1] * W(P[j][1]) + d[2] * W(P[j][2]);
+          if (v > m) m = v;
+        }
         h += m;
       }
-      if (h <= 0) throw std::logic_error("quality: the origin is not inside the wrench space of a closed grasp");
-      a.planes.push_back({{Rational(d[0]), Rational(d[1]), Rational(d[2])}, canonical(h, D)});
-      Plane p{d, h};
-      if (!found || closer(p, best)) best = std::move(p), found = true;
+      inside_check(h > 0);
+      if (a.query.keep_planes)
+        a.planes.push_back({{Rational(big_of(d[0])), Rational(big_of(d[1])), Rational(big_of(d[2]))}, canonical(big_of(h), D)});
+      if (!found || nearer(h, d, best_h, best_d, filter)) best_d = d, best_h = h, found = true;
     }
   }
   if (!found) throw std::logic_error("quality: no facet normal for a closed grasp");
-  for (int k = 0; k < 3; ++k) a.normal[k] = Rational(best.n[k]);
-  return distance_squared(best, D);
+  for (int k = 0; k < 3; ++k) a.normal[k] = Rational(big_of(best_d[k]));
+  return distance_squared(Plane{{big_of(best_d[0]), big_of(best_d[1]), big_of(best_d[2])}, big_of(best_h)}, D);
+}
+
+Rational epsilon_of(const Int_points& P, const std::vector<Generator_ref>& refs, Quality_answer& a, bool filter) {
+  const bool l1 = a.query.norm == Quality_norm::l1;
+  if (P.is_small)
+    return l1 ? epsilon_l1_tier<std::int64_t, wide::i128>(P.small, P.D, a, filter)
+              : epsilon_linf_tier<std::int64_t, wide::i128>(P.small, P.D, refs, a, filter);
+  return l1 ? epsilon_l1_tier<Integer, Integer>(P.big, P.D, a, filter)
+            : epsilon_linf_tier<Integer, Integer>(P.big, P.D, refs, a, filter);
+}
+
+// The fast path (hybrid and exact alike: integer arithmetic, no rationals) for the common scene: small numbers and
+// rational scales. A contact's scaled edge g = c·u does not change when its normal n is multiplied by a positive
+// number under unit-normal or unit-force (c = 1/|n|, 1/|edge|), so each contact's normal is made integral first. Every
+// point comes out as integers over its own denominator, then over their least common multiple D; any number past
+// 2^62 (before a product) or a coordinate past 2^20 (the hull's small tier) gives up: the general path answers.
+struct Too_big {};
+using wide::i128;
+constexpr i128 kLimit62 = i128(1) << 62;
+i128 checked(i128 x) {
+  if (x > kLimit62 || x < -kLimit62) throw Too_big{};
+  return x;
+}
+i128 mul(i128 a, i128 b) { return checked(checked(a) * checked(b)); }  // (|a|, |b| ≤ 2^62: no overflow; the product ≤ 2^62)
+i128 small_of(const Integer& z) {
+  if (!mpz_fits_slong_p(z.get_mpz_t())) throw Too_big{};
+  return checked(z.get_si());
+}
+std::uint64_t gcd64(std::uint64_t a, std::uint64_t b) {
+  while (b) a %= b, std::swap(a, b);
+  return a;
+}
+i128 gcd(i128 a, i128 b) { return gcd64(static_cast<std::uint64_t>(a < 0 ? -a : a), static_cast<std::uint64_t>(b < 0 ? -b : b)); }
+i128 lcm(i128 a, i128 b) { return mul(a / gcd(a, b), b); }
+// √x for an integer x ≥ 0 that is a perfect square, or -1.
+i128 exact_root(i128 x) {
+  if (x < 0) return -1;
+  i128 r = static_cast<i128>(std::sqrt(static_cast<long double>(x)));
+  while (r > 0 && r * r > x) --r;
+  while ((r + 1) * (r + 1) <= x) ++r;
+  return r * r == x ? r : -1;
+}
+
+// Fills a.refs, a.scales (exact: error 0; bound an integer ≥ |u|) and the points; false when the scene is not small
+// or a scale is irrational.
+bool fast_points(const Scene& scene, const Quality_query& q, Quality_answer& a, Int_points& out) {
+  try {
+    const i128 t1 = small_of(q.torque_scale.get_num()), t2 = small_of(q.torque_scale.get_den());
+    struct Pt {
+      i128 x, y, z, den;
+    };
+    std::vector<Pt> pts;
+    a.refs.clear();
+    a.scales.assign(scene.contacts.size(), {});
+    for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
+      const Contact& c = scene.contacts[i];
+      if (c.kind != Contact::Kind::point) return false;  // (wrench contacts: the general path)
+      // r = p − about over dr; the normal made integral (N), or kept over its denominator (as given)
+      const Rational rx = c.at.x - a.about.x, ry = c.at.y - a.about.y;
+      const i128 dr = lcm(small_of(rx.get_den()), small_of(ry.get_den()));
+      const i128 RX = mul(small_of(rx.get_num()), dr / small_of(rx.get_den())), RY = mul(small_of(ry.get_num()), dr / small_of(ry.get_den()));
+      const i128 dnx = small_of(c.normal.x.get_den()), dny = small_of(c.normal.y.get_den());
+      const i128 Nx = mul(small_of(c.normal.x.get_num()), dny), Ny = mul(small_of(c.normal.y.get_num()), dnx);  // n·dnx·dny
+      const i128 M = small_of(c.mu.get_num()), dm = small_of(c.mu.get_den());
+      const i128 N2 = checked(mul(Nx, Nx) + mul(Ny, Ny)), S2 = checked(mul(dm, dm) + mul(M, M));
+      // the edges F = dm·N ± M·rot90 N = dm·dnx·dny·(n ± μ rot90 n); K = dm·dnx·dny; the scale's denominator `sc` (g = u·K/sc)
+      const i128 K = mul(mul(dm, dnx), dny);
+      i128 sc = K;  // as given: g = u = F/K
+      Quality_scale& s = a.scales[i];
+      s.error = 0;
+      if (q.normalize == Force_normalization::unit_normal) {
+        const i128 r = exact_root(N2);  // |n| = r/(dnx dny): c = dnx dny / r; g = F/(dm·r)
+        if (r <= 0) return false;
+        sc = mul(dm, r);
+        s.q = canonical(big_of(N2), big_of(mul(dnx, dny)) * big_of(mul(dnx, dny)));
+        s.scale = canonical(big_of(mul(dnx, dny)), big_of(r));
+      } else if (q.normalize == Force_normalization::unit_force) {
+        const i128 r = exact_root(N2), r2 = exact_root(S2);  // |edge| = r·r2/K: g = F/(r·r2)
+        if (r <= 0 || r2 <= 0) return false;
+        sc = mul(r, r2);
+        const i128 qd = mul(mul(dnx, dny), dm);
+        s.q = canonical(big_of(N2) * big_of(S2), big_of(qd) * big_of(qd));
+        s.scale = canonical(big_of(qd), big_of(mul(r, r2)));
+      } else {
+        s.q = 1, s.scale = 1;
+      }
+      const bool frictional = M != 0;
+      const int count = frictional ? 2 : 1;
+      Integer bound = 0;
+      for (int e = 0; e < count; ++e) {
+        const i128 sign = e == 0 ? 1 : -1;  // left: N + μ rot90 N, right: N − μ rot90 N (rot90 N = (−Ny, Nx))
+        const i128 Fx = frictional ? checked(mul(dm, Nx) - sign * mul(M, Ny)) : Nx;
+        const i128 Fy = frictional ? checked(mul(dm, Ny) + sign * mul(M, Nx)) : Ny;
+        const i128 k = frictional ? K : mul(dnx, dny);  // F = k·f
+        const i128 s_den = frictional ? sc : (q.normalize == Force_normalization::as_given ? k : sc / dm);
+        // u = (F/k, F/k, t1 (RX Fy − RY Fx)/(t2 dr k)); g = u·k/s_den = (F, t1 (RX Fy − RY Fx)/(t2 dr)) / s_den
+        const i128 m = checked(mul(RX, Fy) - mul(RY, Fx));
+        const i128 den = mul(mul(t2, dr), s_den);
+        pts.push_back({mul(mul(Fx, t2), dr), mul(mul(Fy, t2), dr), mul(t1, m), den});
+        a.refs.push_back({i, frictional ? (e == 0 ? Edge::left : Edge::right) : Edge::normal});
+        // |u| ≤ |ux| + |uy| + |uz|, each rounded up: an integer bound
+        const auto ceil_abs = [](i128 n, i128 d) { n = n < 0 ? -n : n; return (n + d - 1) / d; };
+        const Integer b = big_of(ceil_abs(Fx, k) + ceil_abs(Fy, k) + ceil_abs(mul(t1, m), mul(mul(t2, dr), k)));
+        if (b > bound) bound = b;
+      }
+      s.bound = bound;
+    }
+    i128 D = 1;
+    for (const Pt& p : pts) D = lcm(D, p.den);
+    out.D = big_of(D);
+    out.is_small = true;
+    out.small.resize(pts.size());
+    const i128 limit = i128(1) << 20;
+    for (std::size_t j = 0; j < pts.size(); ++j) {
+      const i128 f = D / pts[j].den, v[3] = {mul(pts[j].x, f), mul(pts[j].y, f), mul(pts[j].z, f)};
+      for (int k = 0; k < 3; ++k) {
+        if (v[k] > limit || v[k] < -limit) return false;
+        out.small[j][k] = static_cast<std::int64_t>(v[k]);
+      }
+    }
+    return true;
+  } catch (const Too_big&) {
+    return false;
+  }
 }
 
 }  // namespace
@@ -265,13 +472,28 @@ Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mo
   Quality_answer a;
   a.query = query;
   a.about = query.about ? *query.about : scene.body.com ? *scene.body.com : Vec2{};
-  a.closure = decide_closure(scene, Property::force_closure, mode, true);
+  a.closure = decide_closure(scene, Property::force_closure, mode, false);  // (a certificate only when open)
   if (!a.closure.decided) return a;
+  if (!a.closure.holds) a.closure = decide_closure(scene, Property::force_closure, mode, true);
   if (!a.closure.holds) {  // ε = 0: the closure's twist shows the origin on the boundary or outside
     a.exact = true;
     return a;
   }
   if (mode == Mode::float_only) return a;  // ε has no float twin: the caller says undecided
+  Int_points fast;
+  if (!query.keep_planes && fast_points(scene, query, a, fast)) {  // every scale rational, every number small
+    a.exact = true;
+    a.squared = epsilon_of(fast, a.refs, a, mode != Mode::exact);
+    unsigned bits = 16;
+    for (Rational t = query.tolerance; t < 1 && bits < 4096; t *= 2) ++bits;
+    for (;; bits *= 2) {
+      const auto [lo, hi] = sqrt_bracket(a.squared, bits);
+      a.lower = lo, a.upper = hi;
+      if (hi - lo <= query.tolerance * lo || bits >= (1u << 16)) return a;
+    }
+  }
+  a.refs.clear();
+  a.scales.clear();
   const std::vector<Generator> gens = generators(scene, Reading::friction);
   std::vector<Vec3q> unscaled;
   for (const Generator& g : gens) {
@@ -307,7 +529,7 @@ Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mo
         const Rational& c = a.scales[a.refs[j].contact].scale;
         for (int k = 0; k < 3; ++k) a.points[j][k] = c * unscaled[j][k];
       }
-      eps2 = query.norm == Quality_norm::l1 ? epsilon_l1(a.points, a) : epsilon_linf(a.points, a.refs, a);
+      eps2 = epsilon_of(int_points(a.points), a.refs, a, mode != Mode::exact);
       a.exact = exact;
       built = true;
     }

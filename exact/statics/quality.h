@@ -45,6 +45,7 @@ struct Quality_query {
   Rational tolerance{1ul, 1000000000000ul};  // the bracket's width relative to its lower end (ε not rational)
   // What to answer (the quality command): ε, and the critical friction coefficient μ* (critical_mu.h)
   bool epsilon = true, critical_mu = true;
+  bool keep_planes = false;  // keep the wrench space's supporting planes in the answer (pictures)
 };
 
 // One contact's scale: its edges are multiplied by `scale` (c̃_i); the true c_i = 1/√q_i lies within `error` of it
@@ -71,7 +72,7 @@ struct Quality_answer {
   Vec3q normal;
   std::size_t hull_points = 0;  // L1: points on the hull (for the text)
   // ε > 0: supporting planes n·x ≤ b whose intersection is the (rational) wrench space — L1 its facets' planes, L∞ the
-  // candidate normals with their support — for pictures (render --what quality).
+  // candidate normals with their support — for pictures (render --what quality), when the query keeps them.
   std::vector<std::pair<Vec3q, Rational>> planes;
 };
 
