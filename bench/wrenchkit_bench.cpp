@@ -574,8 +574,26 @@ void register_quality() {
     benchmark::RegisterBenchmark((base + "qhull_graspit_epsilon").c_str(), [g](benchmark::State& st) {
       for (auto _ : st) benchmark::DoNotOptimize(peers::qhull_graspit_epsilon(g));
     })->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark((base + "critical_mu_closure").c_str(), [scene](benchmark::State& st) {
-      for (auto _ : st) benchmark::DoNotOptimize(decide_critical_mu(*scene, Mode::hybrid, Rational(1, 1000000000000ul)));
+  }
+  // μ* of 6 contacts whose normals are turned off the centre (a pinwheel: free to turn without friction, closed above
+  // a threshold): its closure's value (exact or bracketed), all decisions and certificates included
+  for (const int turn : {1, 2}) {
+    const int at[6][2] = {{4, 0}, {2, 3}, {-2, 3}, {-4, 0}, {-2, -3}, {2, -3}};
+    std::string t = R"({"wrenchkit": 1, "contacts": [)";
+    for (int i = 0; i < 6; ++i) {  // n = −p + rot90(p)/turn·(1 or 2): rational or not
+      const int nx = -at[i][0] * 2 - at[i][1] * turn, ny = -at[i][1] * 2 + at[i][0] * turn;
+      t += (i ? ", " : "") + std::string("{\"at\": [") + std::to_string(at[i][0]) + ", " + std::to_string(at[i][1]) +
+           "], \"normal\": [" + std::to_string(nx) + ", " + std::to_string(ny) + "]}";
+    }
+    const auto scene = std::make_shared<Scene>(read_scene(t + "]}", Input_limits{}));
+    const Critical_answer probe = decide_critical_mu(*scene, Mode::hybrid, Rational(1, 1000000000000ul));
+    const std::string name = std::string("quality/6/pinwheel_") + std::to_string(turn) + "/critical_mu_" +
+                             (probe.closure.exact() ? "exact" : "bracket");
+    benchmark::RegisterBenchmark(name.c_str(), [scene](benchmark::State& st) {
+      for (auto _ : st) {
+        const Critical_answer a = decide_critical_mu(*scene, Mode::hybrid, Rational(1, 1000000000000ul));
+        benchmark::DoNotOptimize(critical_mu_certificate(a.closure, true));
+      }
     })->Unit(benchmark::kMicrosecond);
   }
 }

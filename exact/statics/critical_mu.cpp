@@ -2,10 +2,14 @@
 #include "exact/statics/critical_mu.h"
 
 #include <algorithm>
+#include <optional>
+#include <type_traits>
 #include <stdexcept>
 #include <vector>
 
 #include "exact/io/input_error.h"
+#include "exact/numbers/wide_int.h"
+#include "float/bounded.h"
 
 namespace wrenchkit {
 
@@ -30,9 +34,6 @@ namespace {
 // Polynomials in μ with rational coefficients, lowest degree first.
 using Poly = std::vector<Rational>;
 
-void trim(Poly& p) {
-  while (!p.empty() && p.back() == 0) p.pop_back();
-}
 Rational eval(const Poly& p, const Rational& x) {
   Rational v = 0;
   for (std::size_t k = p.size(); k-- > 0;) v = v * x + p[k];
@@ -87,6 +88,65 @@ bool constant_on(const Poly& p, const Rational& excluded, const Rational& includ
   if (eval(p, included) == 0) return false;
   return no_root_between(p, std::min(excluded, included), std::max(excluded, included));
 }
+
+// The same tests first in certified doubles (float/bounded.h: every sign it gives is the exact one), the exact ones
+// only where a sign is uncertain — the hybrid mode's filter. A minor with its certified-double coefficients.
+struct Minor {
+  Poly p;
+  std::vector<fl::Bounded> b;
+};
+fl::Bounded eval(const std::vector<fl::Bounded>& p, const fl::Bounded& x) {
+  fl::Bounded v;
+  for (std::size_t k = p.size(); k-- > 0;) v = v * x + p[k];
+  return v;
+}
+// Certain: the sign of p(x) (positive, negative) when the doubles tell; Sign::uncertain otherwise.
+Sign sign_at(const Minor& m, const fl::Bounded& x) { return eval(m.b, x).sign(); }
+// Descartes' transform in certified doubles: true/false when every coefficient's sign is certain, else nothing.
+std::optional<bool> no_root_between(const std::vector<fl::Bounded>& p, const fl::Bounded& l, const fl::Bounded& h) {
+  const std::size_t d = p.size() - 1;
+  std::vector<fl::Bounded> q(d + 1);
+  for (std::size_t k = 0; k <= d; ++k) {
+    std::vector<fl::Bounded> t{p[k]};
+    const auto times = [&t](const fl::Bounded& c0, const fl::Bounded& c1) {
+      std::vector<fl::Bounded> r(t.size() + 1);
+      for (std::size_t i = 0; i < t.size(); ++i) r[i] = r[i] + t[i] * c0, r[i + 1] = r[i + 1] + t[i] * c1;
+      t = std::move(r);
+    };
+    for (std::size_t i = 0; i < k; ++i) times(l, h);
+    for (std::size_t i = k; i < d; ++i) times(fl::Bounded::exact(1), fl::Bounded::exact(1));
+    for (std::size_t i = 0; i < t.size(); ++i) q[i] = q[i] + t[i];
+  }
+  int last = 0;
+  bool variation = false;
+  for (const fl::Bounded& c : q) {
+    const Sign g = c.sign();
+    if (g == Sign::uncertain) return std::nullopt;
+    if (g == Sign::zero) continue;
+    const int v = g == Sign::positive ? 1 : -1;
+    variation = variation || (last != 0 && v != last);
+    last = v;
+  }
+  return !variation;
+}
+// The interval's ends as certified doubles, made once for every minor.
+struct Ends {
+  fl::Bounded l, h, included;
+  Ends(const Rational& excluded, const Rational& in)
+      : l(to_bounded(std::min(excluded, in))), h(to_bounded(std::max(excluded, in))), included(to_bounded(in)) {}
+};
+bool constant_on(const Minor& m, const Rational& excluded, const Rational& included, const Ends* filter) {
+  if (m.p.empty()) return true;
+  if (filter) {
+    const Sign at = sign_at(m, filter->included);
+    if (at == Sign::zero) return false;
+    if (at != Sign::uncertain) {
+      const std::optional<bool> r = no_root_between(m.b, filter->l, filter->h);
+      if (r) return *r;
+    }
+  }
+  return constant_on(m.p, excluded, included);
+}
 // A bound on the absolute values of p's roots (Cauchy): 1 + max |c_k / c_lead|.
 Rational root_bound(const Poly& p) {
   Rational m = 0;
@@ -122,39 +182,99 @@ std::vector<Family> families(const Scene& scene, bool with_load) {
   if (with_load) out.push_back({load_wrench(scene), {0, 0, 0}});
   return out;
 }
-Rational det(const Vec3q& x, const Vec3q& y, const Vec3q& z) { return dot(x, cross(y, z)); }
 // Every minor of the families' matrix that is not identically zero: their coordinates (1×1), the coordinates of
 // their cross products (2×2) and their determinants (3×3), as polynomials in μ.
-std::vector<Poly> minors(const std::vector<Family>& F) {
-  std::vector<Poly> out;
-  const auto keep = [&out](Poly p) {
-    trim(p);
-    if (!p.empty()) out.push_back(std::move(p));
+// Each family times a positive integer that makes it integral (a minor is then a positive multiple of the original:
+// the same signs and roots), in 64-bit integers when every entry is within 2^30 (a 3×3 determinant of such is
+// within 6·2^90: 128 bits), else GMP's.
+fl::Bounded bounded_of(const Integer& x) { return to_bounded(Rational(x)); }
+fl::Bounded bounded_of(wide::i128 x) {  // the nearest double below, and the exact error
+  const double v = static_cast<double>(x);
+  const wide::i128 back = static_cast<wide::i128>(v), err = x - back;
+  return {v, static_cast<double>(err < 0 ? -err : err) * (1 + 0x1p-50)};
+}
+
+template <class T>
+std::vector<Minor> minors_in(const std::vector<std::array<std::array<T, 3>, 2>>& F) {
+  using V = std::array<T, 3>;
+  const auto cross = [](const V& x, const V& y) {
+    return V{T(x[1] * y[2] - x[2] * y[1]), T(x[2] * y[0] - x[0] * y[2]), T(x[0] * y[1] - x[1] * y[0])};
   };
-  for (const Family& f : F)
-    for (int k = 0; k < 3; ++k) keep({f.a[k], f.b[k]});
+  const auto det = [&cross](const V& x, const V& y, const V& z) {
+    const V c = cross(y, z);
+    return T(x[0] * c[0] + x[1] * c[1] + x[2] * c[2]);
+  };
+  const auto q = [](const T& x) {
+    if constexpr (std::is_same_v<T, Integer>) return Rational(x);
+    else return Rational(integer_of(x));
+  };
+  std::vector<Minor> out;
+  const auto keep = [&](std::initializer_list<T> coefficients) {
+    std::vector<T> c(coefficients);
+    while (!c.empty() && c.back() == 0) c.pop_back();
+    if (c.empty()) return;
+    Minor m;
+    for (const T& x : c) m.p.push_back(q(x)), m.b.push_back(bounded_of(x));
+    out.push_back(std::move(m));
+  };
+  for (const auto& f : F)
+    for (int k = 0; k < 3; ++k) keep({f[0][k], f[1][k]});
   for (std::size_t i = 0; i < F.size(); ++i)
     for (std::size_t j = i + 1; j < F.size(); ++j) {
-      const Vec3q c0 = cross(F[i].a, F[j].a), c2 = cross(F[i].b, F[j].b), u = cross(F[i].a, F[j].b), v = cross(F[i].b, F[j].a);
-      for (int k = 0; k < 3; ++k) keep({c0[k], u[k] + v[k], c2[k]});
+      const V c0 = cross(F[i][0], F[j][0]), c2 = cross(F[i][1], F[j][1]), u = cross(F[i][0], F[j][1]), v = cross(F[i][1], F[j][0]);
+      for (int k = 0; k < 3; ++k) keep({c0[k], T(u[k] + v[k]), c2[k]});
     }
   for (std::size_t i = 0; i < F.size(); ++i)
     for (std::size_t j = i + 1; j < F.size(); ++j)
       for (std::size_t k = j + 1; k < F.size(); ++k) {
-        const Vec3q &A = F[i].a, &B = F[j].a, &C = F[k].a, &a = F[i].b, &b = F[j].b, &c = F[k].b;
-        keep({det(A, B, C), det(a, B, C) + det(A, b, C) + det(A, B, c), det(A, b, c) + det(a, B, c) + det(a, b, C),
-              det(a, b, c)});
+        const V &A = F[i][0], &B = F[j][0], &C = F[k][0], &a = F[i][1], &b = F[j][1], &c = F[k][1];
+        keep({det(A, B, C), T(det(a, B, C) + det(A, b, C) + det(A, B, c)), T(det(A, b, c) + det(a, B, c) + det(a, b, C)), det(a, b, c)});
       }
   return out;
 }
-bool all_constant_on(const std::vector<Poly>& P, const Rational& excluded, const Rational& included) {
-  for (const Poly& p : P)
-    if (!constant_on(p, excluded, included)) return false;
+std::vector<Minor> minors(const std::vector<Family>& families) {
+  std::vector<std::array<std::array<Integer, 3>, 2>> F;
+  bool small = true;
+  const Integer limit = Integer(1) << 30;
+  for (const Family& f : families) {
+    Integer L = 1;
+    for (const Vec3q* v : {&f.a, &f.b})
+      for (const Rational& x : *v) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), x.get_den().get_mpz_t());
+    auto& g = F.emplace_back();
+    for (int r = 0; r < 2; ++r)
+      for (int k = 0; k < 3; ++k) {
+        const Rational& x = r == 0 ? f.a[k] : f.b[k];
+        g[r][k] = x.get_num() * (L / x.get_den());
+        small = small && abs(g[r][k]) <= limit;
+      }
+  }
+  if (!small) return minors_in(F);
+  std::vector<std::array<std::array<wide::i128, 3>, 2>> S(F.size());
+  for (std::size_t i = 0; i < F.size(); ++i)
+    for (int r = 0; r < 2; ++r)
+      for (int k = 0; k < 3; ++k) S[i][r][k] = F[i][r][k].get_si();
+  return minors_in(S);
+}
+// Every minor keeps its sign: the one that failed last is tried first (it usually fails again).
+bool all_constant_on(const std::vector<Minor>& P, const Rational& excluded, const Rational& included, bool filter,
+                     std::size_t& last_failed) {
+  const Ends ends(excluded, included);
+  const Ends* f = filter ? &ends : nullptr;
+  if (last_failed < P.size() && !constant_on(P[last_failed], excluded, included, f)) return false;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (i != last_failed && !constant_on(P[i], excluded, included, f)) return last_failed = i, false;
   return true;
 }
-bool is_root(const std::vector<Poly>& P, const Rational& x) {
-  for (const Poly& p : P)
-    if (eval(p, x) == 0) return true;
+bool is_root(const std::vector<Minor>& P, const Rational& x, bool filter) {
+  const fl::Bounded xb = to_bounded(x);
+  for (const Minor& m : P) {
+    if (m.p.empty()) continue;
+    if (filter) {
+      const Sign g = sign_at(m, xb);
+      if (g == Sign::positive || g == Sign::negative) continue;
+    }
+    if (eval(m.p, x) == 0) return true;
+  }
   return false;
 }
 
@@ -191,8 +311,8 @@ Rational two_to(int bits) {
 // `below` or `above` evidence). Closure holds on an open half-line (μ*, ∞) (`open_set`); balance on [μ*, ∞) or, where
 // the cone at μ* holds a line, (μ*, ∞).
 template <class Holds>
-void search(Critical_mu& out, const std::vector<Poly>& P, Rational lo, Rational hi, const Rational& tol, bool open_set,
-            Holds holds) {
+void search(Critical_mu& out, const std::vector<Minor>& P, Rational lo, Rational hi, const Rational& tol, bool open_set,
+            bool filter, Holds holds) {
   const auto bisect_until = [&](const Rational& width) {
     while (hi - lo > width) {
       const Rational mid = (lo + hi) / 2;
@@ -207,12 +327,16 @@ void search(Critical_mu& out, const std::vector<Poly>& P, Rational lo, Rational 
   for (int bits : {32, 64, 128, 256}) {
     bisect_until((hi + 1) / two_to(bits));  // (absolute near 0: μ* may be 0)
     const Rational s = simplest(lo, hi);
-    if (!is_root(P, s)) continue;
+    if (!is_root(P, s, filter)) continue;
     const bool at_s = holds(s, false);
     if (at_s && open_set) continue;  // (closed at s: s is above μ*)
+    // from the first bracket's far end, halving a few times, then from this bracket's end (close to s: it passes
+    // unless a root of another minor lies between) halving further
     Rational other = at_s ? lo0 : hi0;
+    std::size_t last_failed = P.size();
     for (int t = 0; t < 200 && other != s; ++t, other = (other + s) / 2) {
-      if (!all_constant_on(P, s, other)) continue;
+      if (t == 6 && (at_s ? lo : hi) != s) other = at_s ? lo : hi;
+      if (!all_constant_on(P, s, other, filter, last_failed)) continue;
       other = at_s ? simplest(other, (other + s) / 2) : simplest((other + s) / 2, other);
       if (holds(other, false) == at_s) break;  // the same answer on both sides: s is not μ*
       out.kind = Critical_kind::value;
@@ -259,7 +383,7 @@ Critical_mu closure_mu(const Scene& scene, Mode mode, const Rational& tol) {
     if (guard > 100000) throw std::logic_error("critical mu: closure never reached although the limit cone closes");
     lo = hi, hi *= 2;
   }
-  search(out, minors(families(scene, false)), lo, hi, tol, true, closed);
+  search(out, minors(families(scene, false)), lo, hi, tol, true, mode != Mode::exact, closed);
   return out;
 }
 
@@ -283,12 +407,12 @@ Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
     out.limit_twist = limit.certificate.twist;
     return out;
   }
-  const std::vector<Poly> P = minors(families(scene, true));
+  const std::vector<Minor> P = minors(families(scene, true));
   Rational M = 1;
-  for (const Poly& p : P) M = std::max(M, root_bound(p));
+  for (const Minor& m : P) M = std::max(M, root_bound(m.p));
   M += 1;  // beyond every minor's roots (complex ones too): the answer there is the answer for every larger μ
-  for (const Poly& p : P)
-    if (eval(p, M) == 0 || !no_root_beyond(p, M)) throw std::logic_error("critical mu: a minor has a root beyond its bound");
+  for (const Minor& m : P)
+    if (eval(m.p, M) == 0 || !no_root_beyond(m.p, M)) throw std::logic_error("critical mu: a minor has a root beyond its bound");
   if (!balanced(M, true)) {  // the load is on the limit cone's boundary: reached by no finite μ
     out.kind = Critical_kind::never;
     out.below_mu = M;
@@ -297,7 +421,7 @@ Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
   }
   Rational lo = 0, hi = 1;
   while (!balanced(hi, false)) lo = hi, hi = std::min(Rational(hi * 2), M);
-  search(out, P, lo, hi, tol, false, balanced);
+  search(out, P, lo, hi, tol, false, mode != Mode::exact, balanced);
   return out;
 }
 
