@@ -96,6 +96,23 @@ std::string critical_text(const Critical_mu& c, bool closure) {
   return s.str();
 }
 
+std::string margin_text(const Critical_mu& c) {
+  switch (c.kind) {
+    case Critical_kind::always: return "closed even without friction: any t";
+    case Critical_kind::never: return "never closed, whatever t: " + critical_text(c, true).substr(8);
+    case Critical_kind::value: break;
+  }
+  std::ostringstream s;
+  const std::string t = c.exact() ? "t* = " + number_text(c.lower) + " exactly" : "t* ≈ " + decimal(c.lower, 12) + " (bracketed)";
+  s << t << " — closed for every t above it; ";
+  if (c.upper == 0) s << "any friction at all keeps the grasp closed";
+  else if (c.upper < 1)
+    s << "margin: every mu may shrink to just above " << decimal(c.upper, 6) << " of its value and the grasp stays closed";
+  else if (c.lower >= 1) s << "the scene's friction (t = 1) is not enough: every mu must grow past " << decimal(c.lower, 6) << " times its value";
+  else s << "the scene's friction is at the threshold";
+  return s.str();
+}
+
 }  // namespace
 
 void write_quality(Json_writer& w, const Quality_item& r) {
@@ -106,6 +123,7 @@ void write_quality(Json_writer& w, const Quality_item& r) {
     write_critical(w, r.critical->closure, r.closure_mu_certificate);
     if (r.critical->equilibrium) write_critical(w.key("equilibrium"), *r.critical->equilibrium, r.balance_mu_certificate);
     w.end_object();
+    if (r.critical->margin) write_critical(w.key("friction_margin"), *r.critical->margin, r.margin_certificate);
   }
   if (r.certificate.empty()) return;  // ε not asked
   w.member("force_closure", a.closure.holds);
@@ -142,6 +160,7 @@ std::string quality_human(const Quality_item& r) {
     s << "critical friction (one mu for every point contact):\n";
     s << "  force closure: " << critical_text(r.critical->closure, true) << "\n";
     if (r.critical->equilibrium) s << "  equilibrium of the load: " << critical_text(*r.critical->equilibrium, false) << "\n";
+    if (r.critical->margin) s << "friction margin (every contact's own mu times one factor t): " << margin_text(*r.critical->margin) << "\n";
   };
   if (r.certificate.empty()) {
     critical();

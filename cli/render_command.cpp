@@ -284,6 +284,7 @@ std::string render_svg(const Options& o, const std::string& text, const std::str
   if (what == Picture::quality) {
     Quality_query q = o.quality;
     q.critical_mu = false;
+    q.keep_planes = true;
     return render_quality(s, answered(answer_quality(text, source, request_of(o), q)), source);
   }
   const bool frictionless = what == Picture::reuleaux;

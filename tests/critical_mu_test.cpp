@@ -86,6 +86,24 @@ TEST(CriticalMuGolden, NeverAndAlways) {
   EXPECT_EQ(rejected(f, critical_mu_certificate(c.closure, true)), "");
 }
 
+// The friction margin: μ = 1 and 3/4 on the offset fingers (each needs 1/2): closed for every factor above 2/3 on
+// the scene's own μ; the larger one has room to spare, the smaller one sets it.
+TEST(CriticalMuGolden, FrictionMargin) {
+  const char* t = R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": 1}, {"at": [1, 1], "normal": [-1, 0], "mu": "3/4"}]})";
+  const Critical_answer a = answer(t);
+  ASSERT_TRUE(a.margin);
+  EXPECT_EQ(a.margin->scaling, Friction_scaling::proportional);
+  EXPECT_TRUE(a.margin->exact());
+  EXPECT_EQ(a.margin->lower, Rational(2, 3));
+  EXPECT_EQ(rejected(t, critical_mu_certificate(*a.margin, true)), "");
+  const Scene s = scene_of(t);
+  EXPECT_FALSE(decide_closure(at_mu(s, Rational(2, 3), Friction_scaling::proportional), Property::force_closure, Mode::exact, false).holds);
+  EXPECT_TRUE(decide_closure(at_mu(s, Rational(2, 3) + Rational(1, 1000000), Friction_scaling::proportional), Property::force_closure,
+                             Mode::exact, false).holds);
+  // frictionless contacts only: no margin to give
+  EXPECT_FALSE(answer(R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0]}, {"at": [1, 1], "normal": [-1, 0]}]})").margin);
+}
+
 // A pure moment on the offset fingers: at mu = 1/2 their edges lie on one line (the cone holds it) and the moment is
 // not balanced; above 1/2 the grasp is closed. mu* = 1/2, balanced only above it.
 TEST(CriticalMuGolden, BalancedOnlyAboveTheCritical) {
@@ -123,6 +141,7 @@ TEST(CriticalMuProperty, RandomGraspsMeetTheirThreshold) {
     const Scene s = scene_of(text);
     const Critical_answer a = decide_critical_mu(s, Mode::hybrid, kTol);
     ASSERT_EQ(rejected(text, critical_mu_certificate(a.closure, true)), "") << dump_failure(text, "critical_mu");
+    ASSERT_TRUE(a.margin.has_value() == false);  // (these contacts have no μ of their own: no margin)
     const Rational step(1, 1000000000);
     if (a.closure.kind == Critical_kind::value) {
       ++values;
@@ -164,6 +183,41 @@ TEST(CriticalMuProperty, RandomGraspsMeetTheirThreshold) {
   EXPECT_GT(values, 20);
   EXPECT_GT(exact, 5);
   RecordProperty("brackets", brackets);
+}
+
+// The margin on random grasps with their own μ: fails at t* (or below the bracket), holds just above, and the checker.
+TEST(CriticalMuProperty, RandomMarginsMeetTheirThreshold) {
+  std::mt19937_64 rng(seed(20261201));
+  const char* mus[] = {"1/4", "1/2", "3/4", "1", "2", "1/3"};
+  int values = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    std::string text = R"({"wrenchkit": 1, "contacts": [)";
+    const int n = 2 + static_cast<int>(rng() % 3);
+    for (int i = 0; i < n; ++i) {
+      int x = 0, y = 0;
+      while (x == 0 && y == 0) x = static_cast<int>(rng() % 7) - 3, y = static_cast<int>(rng() % 7) - 3;
+      int nx = -x + static_cast<int>(rng() % 5) - 2, ny = -y + static_cast<int>(rng() % 5) - 2;
+      if (nx == 0 && ny == 0) nx = 1;
+      text += (i ? ", " : "") + std::string("{\"at\": [") + std::to_string(x) + ", " + std::to_string(y) + "], \"normal\": [" +
+              std::to_string(nx) + ", " + std::to_string(ny) + "], \"mu\": \"" + mus[rng() % 6] + "\"}";
+    }
+    text += "]}";
+    const Scene s = scene_of(text);
+    const Critical_answer a = decide_critical_mu(s, Mode::hybrid, kTol);
+    ASSERT_TRUE(a.margin) << dump_failure(text, "margin");
+    const Critical_mu& m = *a.margin;
+    ASSERT_EQ(rejected(text, critical_mu_certificate(m, true)), "") << dump_failure(text, "margin");
+    const auto closed_at = [&](const Rational& t) {
+      return decide_closure(at_mu(s, t, Friction_scaling::proportional), Property::force_closure, Mode::exact, false).holds;
+    };
+    const Rational step(1, 1000000000);
+    if (m.kind != Critical_kind::value) continue;
+    ++values;
+    ASSERT_FALSE(closed_at(m.lower)) << dump_failure(text, "margin");
+    ASSERT_TRUE(closed_at(m.upper * (1 + step) + step)) << dump_failure(text, "margin");
+    // the margin and the common mu agree where every contact has the same mu
+  }
+  EXPECT_GT(values, 20);
 }
 
 }  // namespace

@@ -22,6 +22,7 @@ std::string critical_mu_certificate(const Critical_mu& c, bool closure) {
   Json_writer w(1024);
   w.object().member("wrenchkit_certificate", 4).member("property", "critical_mu");
   w.member("of", closure ? "force_closure" : "equilibrium");
+  if (c.scaling == Friction_scaling::proportional) w.member("scaling", "proportional");
   switch (c.kind) {
     case Critical_kind::always:
       w.member("critical_mu", "always");

@@ -27,6 +27,10 @@ void decide(std::string_view text, const Request& request, const Quality_query& 
       r.balance_mu_certificate = critical_mu_certificate(*r.critical->equilibrium, false);
       certificates.push_back(r.balance_mu_certificate);
     }
+    if (r.critical->margin) {
+      r.margin_certificate = critical_mu_certificate(*r.critical->margin, true);
+      certificates.push_back(r.margin_certificate);
+    }
   }
   std::string why = check_certificates(text, certificates, request);
   if (!why.empty()) {

@@ -26,7 +26,7 @@ struct Quality_item {
   Quality_answer answer;     // query.epsilon
   std::string certificate;  // the certificate the independent checker accepted
   std::optional<Critical_answer> critical;                // query.critical_mu
-  std::string closure_mu_certificate, balance_mu_certificate;  // accepted by the checker
+  std::string closure_mu_certificate, balance_mu_certificate, margin_certificate;  // accepted by the checker
 };
 
 // Reads `text` (eagerly) and answers; never throws.

@@ -22,10 +22,11 @@ const char* critical_kind_name(Critical_kind k) {
   return "?";
 }
 
-Scene at_common_mu(const Scene& scene, const Rational& mu) {
+Scene at_mu(const Scene& scene, const Rational& t, Friction_scaling scaling) {
   Scene s = scene;
   for (Contact& c : s.contacts)
-    if (c.kind == Contact::Kind::point) c.mu = mu, c.mu_given = true, c.has_twin = false;
+    if (c.kind == Contact::Kind::point)
+      c.mu = scaling == Friction_scaling::common ? t : Rational(t * c.mu), c.mu_given = true, c.has_twin = false;
   return s;
 }
 
@@ -168,14 +169,17 @@ Rational simplest(const Rational& l, const Rational& h) {
 struct Family {
   Vec3q a, b;
 };
-std::vector<Family> families(const Scene& scene, bool with_load) {
+std::vector<Family> families(const Scene& scene, bool with_load, Friction_scaling scaling) {
   std::vector<Family> out;
   for (const Contact& c : scene.contacts) {
     if (c.kind == Contact::Kind::wrench) {
       out.push_back({c.wrench, {0, 0, 0}});
       continue;
     }
-    const Vec3q a = wrench_at(c.at, c.normal), b = wrench_at(c.at, {-c.normal.y, c.normal.x});
+    const Vec3q a = wrench_at(c.at, c.normal);
+    Vec3q b = wrench_at(c.at, {-c.normal.y, c.normal.x});
+    if (scaling == Friction_scaling::proportional)
+      for (Rational& x : b) x *= c.mu;  // μ_i·t: the tangent wrench weighed by the contact's own μ
     out.push_back({a, b});
     out.push_back({a, {-b[0], -b[1], -b[2]}});
   }
@@ -278,8 +282,9 @@ bool is_root(const std::vector<Minor>& P, const Rational& x, bool filter) {
   return false;
 }
 
-// The limit cone pos{a_i, ±b_i, wrenches} as a scene of wrench contacts (with the load, for balance).
-Scene limit_scene(const Scene& scene) {
+// The limit cone pos{a_i, ±b_i, wrenches} as a scene of wrench contacts (with the load, for balance); scaled, ±b_i
+// only where μ_i > 0.
+Scene limit_scene(const Scene& scene, Friction_scaling scaling) {
   Scene s;
   s.name = scene.name;
   s.load = scene.load;
@@ -296,7 +301,8 @@ Scene limit_scene(const Scene& scene) {
       continue;
     }
     const Vec3q b = wrench_at(c.at, {-c.normal.y, c.normal.x});
-    add(wrench_at(c.at, c.normal)), add(b), add({-b[0], -b[1], -b[2]});
+    add(wrench_at(c.at, c.normal));
+    if (scaling == Friction_scaling::common || c.mu != 0) add(b), add({-b[0], -b[1], -b[2]});
   }
   return s;
 }
@@ -358,11 +364,12 @@ void search(Critical_mu& out, const std::vector<Minor>& P, Rational lo, Rational
   out.below_mu = lo, out.above_mu = hi;
 }
 
-Critical_mu closure_mu(const Scene& scene, Mode mode, const Rational& tol) {
+Critical_mu closure_mu(const Scene& scene, Mode mode, const Rational& tol, Friction_scaling scaling) {
   Critical_mu out;
+  out.scaling = scaling;
   const auto closed = [&](const Rational& mu, bool certify) {
     ++out.decisions;
-    const Closure_answer a = decide_closure(at_common_mu(scene, mu), Property::force_closure, mode, certify);
+    const Closure_answer a = decide_closure(at_mu(scene, mu, scaling), Property::force_closure, mode, certify);
     if (certify) (a.holds ? out.above_closure : out.below_closure) = a.certificate;
     return a.holds;
   };
@@ -371,7 +378,7 @@ Critical_mu closure_mu(const Scene& scene, Mode mode, const Rational& tol) {
     out.above_mu = Rational(0);
     return out;
   }
-  const Closure_answer limit = decide_closure(limit_scene(scene), Property::force_closure, mode, true);
+  const Closure_answer limit = decide_closure(limit_scene(scene, scaling), Property::force_closure, mode, true);
   ++out.decisions;
   if (!limit.holds) {  // no μ closes: a twist orthogonal to every b_i
     out.kind = Critical_kind::never;
@@ -383,7 +390,7 @@ Critical_mu closure_mu(const Scene& scene, Mode mode, const Rational& tol) {
     if (guard > 100000) throw std::logic_error("critical mu: closure never reached although the limit cone closes");
     lo = hi, hi *= 2;
   }
-  search(out, minors(families(scene, false)), lo, hi, tol, true, mode != Mode::exact, closed);
+  search(out, minors(families(scene, false, scaling)), lo, hi, tol, true, mode != Mode::exact, closed);
   return out;
 }
 
@@ -391,7 +398,7 @@ Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
   Critical_mu out;
   const auto balanced = [&](const Rational& mu, bool certify) {
     ++out.decisions;
-    const Equilibrium_answer a = decide_equilibrium(at_common_mu(scene, mu), mode, certify);
+    const Equilibrium_answer a = decide_equilibrium(at_mu(scene, mu, Friction_scaling::common), mode, certify);
     if (certify) (a.balanced ? out.above_balance : out.below_balance) = a.certificate;
     return a.balanced;
   };
@@ -400,14 +407,14 @@ Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
     out.above_mu = Rational(0);
     return out;
   }
-  const Equilibrium_answer limit = decide_equilibrium(limit_scene(scene), mode, true);
+  const Equilibrium_answer limit = decide_equilibrium(limit_scene(scene, Friction_scaling::common), mode, true);
   ++out.decisions;
   if (!limit.balanced) {
     out.kind = Critical_kind::never;
     out.limit_twist = limit.certificate.twist;
     return out;
   }
-  const std::vector<Minor> P = minors(families(scene, true));
+  const std::vector<Minor> P = minors(families(scene, true, Friction_scaling::common));
   Rational M = 1;
   for (const Minor& m : P) M = std::max(M, root_bound(m.p));
   M += 1;  // beyond every minor's roots (complex ones too): the answer there is the answer for every larger μ
@@ -433,8 +440,11 @@ Critical_answer decide_critical_mu(const Scene& scene, Mode mode, const Rational
   if (!point) throw Input_error("contacts: no point contact, so no friction coefficient to find");
   if (tolerance <= 0) throw Input_error("--tolerance: " + to_string(tolerance) + " is not positive");
   Critical_answer a;
-  a.closure = closure_mu(scene, mode, tolerance);
+  a.closure = closure_mu(scene, mode, tolerance, Friction_scaling::common);
   if (scene.load) a.equilibrium = balance_mu(scene, mode, tolerance);
+  bool friction = false;  // the margin: a factor on the scene's own μ (none to scale without any)
+  for (const Contact& c : scene.contacts) friction = friction || (c.kind == Contact::Kind::point && c.mu != 0);
+  if (friction) a.margin = closure_mu(scene, mode, tolerance, Friction_scaling::proportional);
   return a;
 }
 

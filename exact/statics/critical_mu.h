@@ -25,6 +25,9 @@
 namespace wrenchkit {
 
 enum class Critical_kind { value, always, never };
+// common: one μ for every point contact (the scene's own set aside); proportional: every contact's own μ times one
+// factor t (the friction margin: closed for every t above t*).
+enum class Friction_scaling { common, proportional };
 const char* critical_kind_name(Critical_kind k);  // "value", "always", "never"
 
 // μ* of one property. value: μ* ∈ [lower, upper] (lower = upper: exact). The evidence: the property fails at
@@ -34,6 +37,7 @@ const char* critical_kind_name(Critical_kind k);  // "value", "always", "never"
 // power ≥ 0 against every a_i, 0 against every b_i (and > 0 against the load) — `limit_twist` —, or, for the load, it
 // fails at below_mu and the minors keep their signs on [below_mu, ∞) (`constant_beyond`).
 struct Critical_mu {
+  Friction_scaling scaling = Friction_scaling::common;  // (μ, or the factor t on the scene's μ)
   Critical_kind kind = Critical_kind::value;
   Rational lower, upper;
   bool exact() const { return kind == Critical_kind::value && lower == upper; }
@@ -47,12 +51,17 @@ struct Critical_mu {
 };
 
 struct Critical_answer {
-  Critical_mu closure;                     // force closure
+  Critical_mu closure;                     // force closure, one μ for every point contact
   std::optional<Critical_mu> equilibrium;  // the scene's load, when it has one
+  // The friction margin: the least factor t* on every contact's own μ at which the grasp is closed (t* < 1: the μs may
+  // shrink to t* of theirs and it stays closed), when some contact has friction.
+  std::optional<Critical_mu> margin;
 };
 
-// The scene with every point contact's μ set to `mu` (a contact frictionless in the scene included).
-Scene at_common_mu(const Scene& scene, const Rational& mu);
+// The scene with every point contact's μ set to `t` (common; a contact frictionless in the scene included) or
+// multiplied by `t` (proportional).
+Scene at_mu(const Scene& scene, const Rational& t, Friction_scaling scaling);
+inline Scene at_common_mu(const Scene& scene, const Rational& mu) { return at_mu(scene, mu, Friction_scaling::common); }
 
 // Throws Input_error for a scene without point contacts. `tolerance`: the bracket's width relative to its upper end
 // when μ* is not found rational. Mode::float_only is not offered (the caller says undecided); hybrid and exact decide

@@ -324,6 +324,10 @@ Certificate read_certificate(Reader& r) {
       const std::string_view v = r.peek() == Kind::string ? r.string_view() : "";
       if (v != "force_closure" && v != "equilibrium") r.fail("expected \"force_closure\" or \"equilibrium\"");
       c.cm().of = v;
+    } else if (key == "scaling") {
+      const std::string_view v = r.peek() == Kind::string ? r.string_view() : "";
+      if (v != "common" && v != "proportional") r.fail("expected \"common\" or \"proportional\"");
+      c.cm().proportional = v == "proportional";
     } else if (key == "critical_mu") {
       if (r.peek() == Kind::string) {
         c.cm().word = r.string_view();
@@ -391,7 +395,7 @@ void check_keys(const Certificate& c) {
   static const char* const quality_keys[] = {"norm",   "normalize", "torque_scale", "about",    "scales",
                                              "epsilon", "boundary", "nearest",     "normal",   "of",
                                              "critical_mu", "below", "above", "constant", "constant_beyond",
-                                             "limit_twist"};
+                                             "limit_twist", "scaling"};
   static const std::uint64_t quality_mask = Key_set::mask(quality_keys);
   if (c.keys.any(quality_mask))
     for (const char* key : quality_keys)

@@ -78,7 +78,7 @@ class Key_set {
                                              "sliding", "holding", "failing", "regions", "norm", "normalize",
                                              "torque_scale", "about", "scales", "epsilon", "boundary", "nearest",
                                              "normal", "of", "critical_mu", "below", "above", "constant",
-                                             "constant_beyond", "limit_twist"};
+                                             "constant_beyond", "limit_twist", "scaling"};
     for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
       if (known[i] == key) return i;
     return -1;
@@ -122,6 +122,7 @@ struct Quality_part {
 struct Certificate;
 struct Critical_part {
   std::string_view of;       // "force_closure" or "equilibrium"
+  bool proportional = false;  // "scaling": "proportional" (μ_i·t, force closure only); "common" (the default): μ = t
   std::string_view word;     // "always" or "never"; empty: a value {"lower", "upper"}
   Q lower, upper;
   struct Side {

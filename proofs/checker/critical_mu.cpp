@@ -1,6 +1,7 @@
 // proofs/checker/critical_mu.cpp - the critical friction coefficient μ*, certificate-format.md §3.5 (theory:
-// proofs/notes/QL-2-critical-friction.md). With μ common to the point contacts, contact i's edges are a_i ± μ·b_i; the
-// claim is about force closure (holds on (μ*, ∞)) or the load's equilibrium (holds on [μ*, ∞)). The certificates on
+// proofs/notes/QL-2-critical-friction.md). With μ common to the point contacts, contact i's edges are a_i ± μ·b_i (or,
+// "proportional", a_i ± t·μ_i·b_i with the contacts' own μ_i); the claim is about force closure (holds on (μ*, ∞)) or
+// the load's equilibrium (holds on [μ*, ∞) or (μ*, ∞)). The certificates on
 // either side are those of §3.1–§3.3, checked by their own checks against the scene with every point contact's μ set.
 #include <algorithm>
 
@@ -17,8 +18,9 @@ V3 cross(const V3& a, const V3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b
 Q dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Q det(const V3& a, const V3& b, const V3& c) { return dot(a, cross(b, c)); }
 
-// The scene with every point contact's μ set to `mu` (the numbers kept as values).
-Scene at_mu(const Scene& scene, const Q& mu, const Limits& lim) {
+// The scene with every point contact's μ set to `mu` — or, proportional, its own μ times `mu` (the numbers kept as
+// values).
+Scene at_mu(const Scene& scene, const Q& mu, bool proportional, const Limits& lim) {
   Scene s;
   s.longest = scene.longest;
   s.has_load = scene.has_load;
@@ -27,17 +29,18 @@ Scene at_mu(const Scene& scene, const Q& mu, const Limits& lim) {
   for (Contact& c : s.contacts) {
     if (c.wrench) continue;
     std::vector<Q> v = contact_numbers(c, lim);
-    v[4] = mu;
+    v[4] = proportional ? Q(v[4] * mu) : mu;
     c.fixed = false, c.text.clear(), c.value = std::move(v), c.frictional = sgn(mu) > 0;
   }
   return s;
 }
 
-// The edges as families a + μ b (left a + μb, right a − μb; a wrench contact's wrench and the load with b = 0).
+// The edges as families a + t b (left a + tb, right a − tb; a wrench contact's wrench and the load with b = 0); b is
+// the tangent wrench, times the contact's own μ when proportional.
 struct Family {
   V3 a, b;
 };
-std::vector<Family> families(const Scene& scene, bool with_load, const Limits& lim) {
+std::vector<Family> families(const Scene& scene, bool with_load, bool proportional, const Limits& lim) {
   std::vector<Family> out;
   for (const Contact& c : scene.contacts) {
     const std::vector<Q> v = contact_numbers(c, lim);
@@ -45,7 +48,9 @@ std::vector<Family> families(const Scene& scene, bool with_load, const Limits& l
       out.push_back({{v[0], v[1], v[2]}, {0, 0, 0}});
       continue;
     }
-    const V3 a = at(v[0], v[1], v[2], v[3]), b = at(v[0], v[1], -v[3], v[2]);
+    const V3 a = at(v[0], v[1], v[2], v[3]);
+    V3 b = at(v[0], v[1], -v[3], v[2]);
+    if (proportional) b = {b[0] * v[4], b[1] * v[4], b[2] * v[4]};
     out.push_back({a, b});
     out.push_back({a, {-b[0], -b[1], -b[2]}});
   }
@@ -131,7 +136,7 @@ void check_side(const Critical_part::Side& side, const char* key, bool holds, co
     check_keys(c);
     if (c.holds != holds)
       throw Failure{std::string("\"holds\" is ") + (c.holds ? "true" : "false") + ", expected " + (holds ? "true" : "false")};
-    const Scene s = at_mu(scene, side.mu, lim);
+    const Scene s = at_mu(scene, side.mu, cm.proportional, lim);
     if (c.equilibrium) check_equilibrium(c, s, lim);
     else check_closure(c, s, lim);
   } catch (const Failure& f) {
@@ -159,6 +164,7 @@ void check_critical_mu(const Certificate& c, const Scene& scene, const Limits& l
   const Critical_part& cm = *c.critical_members;
   const bool balance = cm.of == "equilibrium";
   if (balance && !scene.has_load) throw Failure{"of: \"equilibrium\", but the scene has no load"};
+  if (balance && cm.proportional) throw Failure{"scaling: \"proportional\" is a claim of force closure only"};
   const auto no = [&c](const char* key, const char* when) {
     if (c.keys.count(key)) throw Failure{std::string("key \"") + key + "\" is not allowed " + when};
   };
@@ -174,7 +180,7 @@ void check_critical_mu(const Certificate& c, const Scene& scene, const Limits& l
       no("below", "with \"limit_twist\""), no("constant_beyond", "with \"limit_twist\"");
       const V3 t = {cm.limit_twist[0], cm.limit_twist[1], cm.limit_twist[2]};
       if (sgn(t[0]) == 0 && sgn(t[1]) == 0 && sgn(t[2]) == 0) throw Failure{"limit_twist: the zero twist proves nothing"};
-      const std::vector<Family> F = families(scene, false, lim);
+      const std::vector<Family> F = families(scene, false, cm.proportional, lim);
       for (std::size_t k = 0; k < F.size(); ++k) {
         if (sgn(dot(t, F[k].a)) < 0) throw Failure{"limit_twist: power " + show(dot(t, F[k].a)) + " against a contact's normal wrench"};
         if (sgn(dot(t, F[k].b)) != 0) throw Failure{"limit_twist: power " + show(dot(t, F[k].b)) + " against a contact's tangent wrench, not 0"};
@@ -186,7 +192,7 @@ void check_critical_mu(const Certificate& c, const Scene& scene, const Limits& l
     if (!balance || !cm.constant_beyond)  // the load on the limit cone's boundary: fails beyond every minor's root
       throw Failure{"never: expected \"limit_twist\"" + std::string(balance ? ", or \"below\" with \"constant_beyond\"" : "")};
     check_side(cm.below, "below", false, cm, scene, lim);
-    for (const Poly& p : minors(families(scene, true, lim)))
+    for (const Poly& p : minors(families(scene, true, false, lim)))
       if (!zero(p) && (sgn(value(p, cm.below.mu)) == 0 || !no_root_beyond(p, cm.below.mu)))
         throw Failure{"constant_beyond: a minor of the edges may change sign beyond " + show(cm.below.mu)};
     return;
@@ -209,7 +215,7 @@ void check_critical_mu(const Certificate& c, const Scene& scene, const Limits& l
   if (cm.lower != cm.below.mu && cm.lower != cm.above.mu)
     throw Failure{"critical_mu: " + show(cm.lower) + " is neither below.mu nor above.mu"};
   const bool at_below = cm.lower == cm.below.mu;
-  check_constant(minors(families(scene, balance, lim)), cm.lower, at_below ? cm.above.mu : cm.below.mu);
+  check_constant(minors(families(scene, balance, cm.proportional, lim)), cm.lower, at_below ? cm.above.mu : cm.below.mu);
 }
 
 }  // namespace wrenchkit_checker::detail

@@ -42,6 +42,7 @@ MAT_LEGS = {"wrenchkit": 1, "support": {"mu": "1/2", "weight": 5, "pressure_cent
 SQUARE_REGION = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 1}
 
 SCENES = {
+    "two_fingers_offset_own_mu": {"wrenchkit": 1, "name": "the offset fingers with their own friction, mu = 1 and 3/4: closed while both keep more than 2/3 of it", "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": 1, "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "mu": "3/4", "name": "right finger"}]},
     "two_fingers_offset_moment": {"wrenchkit": 1, "name": "the offset fingers against a pure moment: balanced only above mu = 1/2", "contacts": [{"at": [-1, 0], "normal": [1, 0], "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "name": "right finger"}], "load": {"wrench": [0, 0, 1]}},
     "two_fingers_offset": {"wrenchkit": 1, "name": "two fingers at (-1, 0) and (1, 1), normals (1, 0) and (-1, 0): the contact line at tan 1/2", "contacts": [{"at": [-1, 0], "normal": [1, 0], "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "name": "right finger"}]},
     "ladder_gravity": {"wrenchkit": 1, "name": "the leaning square (ladder) of theory.md section 9 under its weight", "body": {"outline": [["0", "0"], ["3", "4"], ["-1", "7"], ["-4", "3"]], "com": ["-1/2", "7/2"]}, "contacts": [{"at": ["0", "0"], "normal": ["0", "1"], "name": "floor"}, {"at": ["-4", "3"], "normal": ["1", "0"], "name": "wall"}], "load": {"gravity": 1}},
@@ -377,6 +378,7 @@ CRIT_OFFSET = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_
 CRIT_LADDER_CLOSURE = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "critical_mu": {"lower": "4/3", "upper": "4/3"}, "below": {"mu": "4/3", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": false, "twist": ["3", "4", "1"], "reading": {"label": "+", "point": ["-4", "3"]}}}, "above": {"mu": "2", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "10"}, {"contact": 0, "edge": "right", "weight": "2"}, {"contact": 1, "edge": "left", "weight": "5"}, {"contact": 1, "edge": "right", "weight": "11"}], "independent": [{"contact": 0, "edge": "left"}, {"contact": 0, "edge": "right"}, {"contact": 1, "edge": "left"}]}}, "constant": true}''')
 CRIT_LADDER = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": {"lower": "1/7", "upper": "1/7"}, "below": {"mu": "1/10", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": false, "twist": ["340", "34", "101"], "reading": {"label": "+", "point": ["-34/101", "340/101"]}}}, "above": {"mu": "1/7", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "49/50"}, {"contact": 1, "edge": "left", "weight": "7/50"}]}}, "constant": true}''')
 CRIT_MOMENT = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": {"lower": "1/2", "upper": "1/2"}, "below": {"mu": "1/2", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": false, "twist": ["0", "1", "1"], "reading": {"label": "+", "point": ["-1", "0"]}}}, "above": {"mu": "2/3", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "3"}, {"contact": 1, "edge": "left", "weight": "3"}]}}, "constant": true}''')
+CRIT_MARGIN = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "scaling": "proportional", "critical_mu": {"lower": "2/3", "upper": "2/3"}, "below": {"mu": "2/3", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": false, "twist": ["0", "1", "1"], "reading": {"label": "+", "point": ["-1", "0"]}}}, "above": {"mu": "1", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "9"}, {"contact": 0, "edge": "right", "weight": "3"}, {"contact": 1, "edge": "left", "weight": "10"}, {"contact": 1, "edge": "right", "weight": "2"}], "independent": [{"contact": 0, "edge": "left"}, {"contact": 0, "edge": "right"}, {"contact": 1, "edge": "left"}]}}, "constant": true}''')
 CRIT_NEVER = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "critical_mu": "never", "limit_twist": ["1", "0", "0"]}''')
 CRIT_NEVER_LOAD = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": "never", "limit_twist": ["1", "0", "0"]}''')
 
@@ -392,6 +394,10 @@ CERTS = [
     ("ladder_gravity", "critical_mu_closure", "valid", CRIT_LADDER_CLOSURE),
     ("ladder_gravity", "critical_mu_one_seventh", "valid", CRIT_LADDER),
     ("two_fingers_same_way", "critical_mu_never", "valid", CRIT_NEVER),
+    # the friction margin: each contact's own mu times t; closed for every t above 2/3
+    ("two_fingers_offset_own_mu", "friction_margin", "valid", CRIT_MARGIN),
+    ("two_fingers_offset_own_mu", "friction_margin_as_common", "invalid:nested|below.certificate: twist: power",
+     crit({k: v for k, v in CRIT_MARGIN.items() if k != "scaling"})),
     # balanced only above mu* = 1/2 (at 1/2 the fingers' edges lie on one line, and a pure moment is not balanced)
     ("two_fingers_offset_moment", "critical_mu_half_open", "valid", CRIT_MOMENT),
     ("two_fingers_same_way", "critical_mu_never_balanced", "valid", CRIT_NEVER_LOAD),
@@ -1481,11 +1487,15 @@ def verify_critical(scene, cert):
     if balance and load_wrench(scene) is None:
         return "no load"
 
+    proportional = cert.get("scaling", "common") == "proportional"
+    if proportional and balance:
+        return "scaling"
+
     def at_mu(mu):
         s = json.loads(json.dumps(scene))
         for c in s.get("contacts", []):
             if "wrench" not in c:
-                c["mu"] = str(mu)
+                c["mu"] = str(mu * number(c.get("mu", 0)) if proportional else mu)
         return s
 
     def side(key, holds):
@@ -1502,7 +1512,8 @@ def verify_critical(scene, cert):
                 out.append((tuple(number(v) for v in c["wrench"]), (0, 0, 0)))
                 continue
             (px, py), (nx, ny) = (number(v) for v in c["at"]), (number(v) for v in c["normal"])
-            a, b = (nx, ny, px * ny - py * nx), (-ny, nx, px * nx + py * ny)
+            w = number(c.get("mu", 0)) if proportional else 1
+            a, b = (nx, ny, px * ny - py * nx), (-ny * w, nx * w, (px * nx + py * ny) * w)
             out += [(a, b), (a, tuple(-v for v in b))]
         if balance:
             out.append((load_wrench(scene), (0, 0, 0)))

@@ -41,6 +41,13 @@ def test_critical_mu_of_the_ladder():
     assert eq["certificate"]["property"] == "critical_mu"
 
 
+def test_friction_margin():
+    fingers = {"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": 1},
+                                            {"at": [1, 1], "normal": [-1, 0], "mu": "3/4"}]}
+    m = wrenchkit.quality(fingers, only="critical-mu")["friction_margin"]
+    assert m["lower"] == m["upper"] == Fraction(2, 3) and m["certificate"]["scaling"] == "proportional"
+
+
 def test_options_and_modes():
     with pytest.raises(wrenchkit.InputError, match="--norm"):
         wrenchkit.quality(TWO_FINGERS, norm="L3")

@@ -277,7 +277,8 @@ def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, 
     """How good is the grasp (docs/quality.md), as `wrenchkit quality --json`: {"epsilon": {"lower", "upper",
     "squared" (when epsilon^2 is rational), "lower_approx", "upper_approx", "norm", "normalize", "torque_scale",
     "about"}, "force_closure", "nearest_facet", "critical_mu": {"closure": {"kind": "value" | "always" | "never",
-    "lower", "upper", "exact", "certificate"}, "equilibrium": {...} (with a load)}, "certificate", ...}. Exact numbers
+    "lower", "upper", "exact", "certificate"}, "equilibrium": {...} (with a load)}, "friction_margin": {...} (the
+    least factor on the contacts' own mu that closes the grasp), "certificate", ...}. Exact numbers
     are Fractions; every certificate was accepted by the independent checker.
 
     norm: "L1" (default) or "Linf"; normalize: "unit-normal" (default), "unit-force" or "as-given"; torque_scale: the
@@ -304,7 +305,7 @@ def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, 
     if "epsilon" in r:
         exact(r["epsilon"], ("lower", "upper", "squared", "torque_scale"))
         r["epsilon"]["about"] = tuple(_fractions.Fraction(x) for x in r["epsilon"]["about"])
-    for c in r.get("critical_mu", {}).values():
+    for c in list(r.get("critical_mu", {}).values()) + ([r["friction_margin"]] if "friction_margin" in r else []):
         exact(c, ("lower", "upper"))
     return r
 
