@@ -128,6 +128,7 @@ struct Analysis {
   std::optional<Equilibrium_item> equilibrium;
   std::optional<Ls_summary> limit_surface;
   std::optional<Hold_item> hold;  // contacts, a support and an in-plane load: the two together
+  std::optional<Quality_item> quality;  // point contacts: ε and μ* (docs/quality.md)
   std::vector<std::pair<std::string, std::string>> skipped;
   // Some answer is undecided (the exit code is 3).
   bool undecided() const {
@@ -157,6 +158,21 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
   // the contacts; hold is both together (docs/fixtures.md).
   if (!a.scene.contacts.empty() && a.scene.support && a.scene.load)
     a.hold = answered(answer_hold(a.scene, scene_text, request));
+  // How good the grasp is and how much friction it needs (the defaults of `wrenchkit quality`); μ* for up to 16 point
+  // contacts (its minors grow as the cube of their number)
+  std::size_t points = 0;
+  for (const Contact& c : a.scene.contacts) points += c.kind == Contact::Kind::point;
+  if (points > 0 && o.mode == Mode::float_only) {
+    a.skipped.push_back({"quality", "epsilon and the critical friction have no float twin: use --mode hybrid or exact"});
+  } else if (points > 0) {
+    Quality_query q;
+    if (points > 16) {
+      q.critical_mu = false;
+      a.skipped.push_back({"critical_mu", std::to_string(points) + " point contacts (analyze finds the critical friction "
+                                          "for up to 16): use 'wrenchkit quality --only critical-mu'"});
+    }
+    a.quality = answered(answer_quality(a.scene, scene_text, request, q));
+  }
   return a;
 }
 
@@ -171,6 +187,10 @@ void write_analysis(Json_writer& w, const Options& o, const Analysis& a, const c
   if (a.limit_surface) w.key("limit_surface").raw(a.limit_surface->json);
   if (a.hold) {
     write_hold(w.key("hold").object(), *a.hold);
+    w.end_object();
+  }
+  if (a.quality) {
+    write_quality(w.key("quality").object(), *a.quality);
     w.end_object();
   }
   w.key("skipped").array();
@@ -204,6 +224,12 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
     std::cout << "hold — the contacts and the support's friction together (equilibrium above is the contacts alone, the "
                  "load on the support the support alone):\n"
               << hold_human(*a.hold);
+  if (a.quality) {  // (its own closure line and last lines are the analysis's)
+    std::string q = quality_human(*a.quality);
+    q = q.substr(q.find('\n') + 1);
+    q = q.substr(0, q.rfind("decided by: "));
+    std::cout << q;
+  }
   for (const auto& [what, why] : a.skipped) std::cout << "skipped " << what << ": " << why << "\n";
   if (contacts)
     std::cout << "decided by: " << arithmetic_name(a.closure.decided_by()) << " for closure"
