@@ -13,9 +13,12 @@
 #include <cstdlib>
 #include <iostream>
 #include <string>
+#include <optional>
 #include <string_view>
 
 #include "exact/statics/closure.h"
+#include "exact/statics/critical_mu.h"
+#include "exact/statics/quality.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
@@ -155,6 +158,62 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (a.motion != wrenchkit::fl::Motion_twin::undecided &&
         (a.motion == wrenchkit::fl::Motion_twin::sticks) != (claim == "sticks")) {
       std::cerr << "checker accepted \"" << claim << "\"; the certified float search decides the opposite\n";
+      std::abort();
+    }
+    return 0;
+  }
+  if (property == "\"quality\"" || property == "\"critical_mu\"") {  // format 4: the engine's answer must agree
+    if (scene.contacts.empty() || scene.contacts.size() > 8) return 0;  // (ε = 0 of no contacts; μ*'s cost grows as n³)
+    const wrenchkit::json::Value c = wrenchkit::json::parse(cert, limits, "certificate");
+    const auto q = [](const wrenchkit::json::Value* v) {  // a certificate rational "p/q" (the checker read it)
+      wrenchkit::Rational r(v->text);
+      r.canonicalize();
+      return r;
+    };
+    const auto overlap = [](const wrenchkit::Rational& a0, const wrenchkit::Rational& a1, const wrenchkit::Rational& b0,
+                            const wrenchkit::Rational& b1) { return a0 <= b1 && b0 <= a1; };
+    if (property == "\"quality\"") {
+      wrenchkit::Quality_query query;
+      query.critical_mu = false;
+      const std::string norm = c.find("norm")->text, normalize = c.find("normalize")->text;
+      query.norm = norm == "L1" ? wrenchkit::Quality_norm::l1 : wrenchkit::Quality_norm::linf;
+      query.normalize = normalize == "unit-normal"  ? wrenchkit::Force_normalization::unit_normal
+                        : normalize == "unit-force" ? wrenchkit::Force_normalization::unit_force
+                                                    : wrenchkit::Force_normalization::as_given;
+      query.torque_scale = q(c.find("torque_scale"));
+      query.about = wrenchkit::Vec2{q(&c.find("about")->items[0]), q(&c.find("about")->items[1])};
+      const wrenchkit::json::Value* e = c.find("epsilon");
+      const wrenchkit::Rational lo = q(e->find("lower")), hi = q(e->find("upper"));
+      const wrenchkit::Quality_answer a = wrenchkit::decide_quality(scene, query, wrenchkit::Mode::exact);
+      if (!overlap(lo, hi, a.lower, a.upper)) {
+        std::cerr << "checker accepted epsilon in [" << lo << ", " << hi << "]; the engine finds [" << a.lower << ", "
+                  << a.upper << "]\n";
+        std::abort();
+      }
+      return 0;
+    }
+    const bool balance = c.find("of")->text == "equilibrium";
+    if (balance && !scene.load) {
+      std::cerr << "checker accepted a critical mu of equilibrium on a scene without load\n";
+      std::abort();
+    }
+    bool point = false;
+    for (const auto& k : scene.contacts) point = point || k.kind == wrenchkit::Contact::Kind::point;
+    if (!point) return 0;
+    const wrenchkit::Critical_answer a = wrenchkit::decide_critical_mu(scene, wrenchkit::Mode::exact, wrenchkit::Rational(1, 1000000));
+    const wrenchkit::json::Value* scaling = c.find("scaling");
+    const bool proportional = scaling && scaling->text == "proportional";
+    const std::optional<wrenchkit::Critical_mu> engine = balance ? a.equilibrium : proportional ? a.margin : a.closure;
+    if (!engine) return 0;  // (no friction to scale: the checker's claim is about closure at any t)
+    const wrenchkit::json::Value* claim = c.find("critical_mu");
+    const std::string kind = claim->type == wrenchkit::json::Type::string ? claim->text : "value";
+    if (kind != wrenchkit::critical_kind_name(engine->kind)) {
+      std::cerr << "checker accepted critical mu \"" << kind << "\"; the engine finds " << wrenchkit::critical_kind_name(engine->kind) << "\n";
+      std::abort();
+    }
+    if (kind == "value" && !overlap(q(claim->find("lower")), q(claim->find("upper")), engine->lower, engine->upper)) {
+      std::cerr << "checker accepted critical mu in [" << claim->find("lower")->text << ", " << claim->find("upper")->text
+                << "]; the engine finds [" << engine->lower << ", " << engine->upper << "]\n";
       std::abort();
     }
     return 0;
