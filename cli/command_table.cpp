@@ -219,6 +219,15 @@ const Option kOnly{"only", "epsilon|critical-mu",
                      else if (v == "critical-mu") o.quality.epsilon = false;
                      else bad_value(n, v, "is not one of epsilon, critical-mu");
                    }};
+const Option kPreset{"preset", "graspit|dexnet",
+                     "a peer's conventions: graspit — L1, unit-normal edges, moments about body.com divided by the body's "
+                     "largest radius from it (its outline's farthest vertex; certified when irrational); dexnet — L1, "
+                     "unit-normal edges, moments about body.com times --torque-scale (Dex-Net's torque_scaling)",
+                     [](Options& o, S n, S v) {
+                       if (v == "graspit") o.quality.preset = Quality_preset::graspit;
+                       else if (v == "dexnet") o.quality.preset = Quality_preset::dexnet;
+                       else bad_value(n, v, "is not one of graspit, dexnet");
+                     }};
 const Option kAbout{"about", "x,y", "the point the moments are taken about (default: body.com if the scene has one, else the origin)",
                     [](Options& o, S n, S v) {
                       const std::array<Rational, 2> p = exact_values<2>(o, n, v, "x,y");
@@ -544,7 +553,7 @@ std::vector<Command> make_table() {
        "exact when rational (the two-finger grasp: the tangent of the contact line's angle), else a bracket of\n"
        "relative width --tolerance; \"always\" (closed without friction) or \"never\" said as such; certificates on\n"
        "both sides (the property failing just below and holding at or above, each re-verified).\n",
-       join({{kHelp, kJson, kOnly, kNorm, kNormalize, kTorqueScale, kAbout,
+       join({{kHelp, kJson, kOnly, kPreset, kNorm, kNormalize, kTorqueScale, kAbout,
               with_help(kTolerance, "the bracket's width relative to its lower end when epsilon is irrational (EPS > 0, "
                                     "exact: 1e-12 (the default), 1/1000)"),
               with_help(kMode,

@@ -42,8 +42,10 @@ std::string space_text(const Quality_answer& a) {
   std::ostringstream s;
   s << (a.query.norm == Quality_norm::l1 ? "L1: the hull of the friction-cone edges (normal forces summing to at most 1)"
                                          : "Linf: the sum of the contacts' cones (each normal force at most 1)")
-    << "; forces " << normalization_name(a.query.normalize) << ", moments about "
-    << vec_text(a.about) << " times " << number_text(a.query.torque_scale);
+    << "; forces " << normalization_name(a.query.normalize) << ", moments about " << vec_text(a.about) << " times "
+    << (a.query.torque_radius_squared && a.torque_scale_error != 0
+            ? "1/sqrt(" + human_number(*a.query.torque_radius_squared) + ") ≈ " + decimal(a.query.torque_scale, 9)
+            : number_text(a.query.torque_scale));
   return s.str();
 }
 
@@ -131,7 +133,10 @@ void write_quality(Json_writer& w, const Quality_item& r) {
   if (a.exact) w.member("squared", a.squared);
   w.key("lower_approx").raw(float_number(a.lower.get_d())).key("upper_approx").raw(float_number(a.upper.get_d()));
   w.member("norm", quality_norm_name(a.query.norm)).member("normalize", normalization_name(a.query.normalize));
-  w.member("torque_scale", a.query.torque_scale).key("about").rationals(std::array<Rational, 2>{a.about.x, a.about.y});
+  w.member("torque_scale", a.query.torque_scale);
+  if (a.query.torque_radius_squared) w.member("torque_radius_squared", *a.query.torque_radius_squared);
+  if (a.torque_scale_error != 0) w.member("torque_scale_error", a.torque_scale_error);
+  w.key("about").rationals(std::array<Rational, 2>{a.about.x, a.about.y});
   w.end_object();
   if (a.closure.holds) {
     w.key("nearest_facet").object();
@@ -201,6 +206,9 @@ std::string quality_human(const Quality_item& r) {
 Quality_query quality_query(const Options& o) {
   Quality_query q = o.quality;
   if (o.tolerance) q.tolerance = *o.tolerance;
+  if (q.preset == Quality_preset::graspit && (q.about || q.torque_scale != 1))
+    throw Usage_error("--preset graspit sets the moments' point (body.com) and their scale (1/maxRadius): drop --about and --torque-scale");
+  if (q.preset == Quality_preset::dexnet && q.about) throw Usage_error("--preset dexnet takes moments about body.com: drop --about");
   return q;
 }
 

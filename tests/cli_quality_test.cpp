@@ -85,6 +85,19 @@ TEST(CliQuality, BadOptionsNameTheOption) {
   }
 }
 
+TEST(CliQuality, Presets) {
+  const Cli_result g = run("quality --only epsilon --preset graspit " + example("square_side_middles"));
+  ASSERT_EQ(g.code, 0) << g.err;
+  EXPECT_NE(g.out.find("moments about (0, 0) times 1/sqrt(2) ≈ 0.707106781"), std::string::npos) << g.out;
+  EXPECT_NE(g.out.find("epsilon ≈ 0.0707106781186548"), std::string::npos) << g.out;
+  const Cli_result no_com = run("quality --preset dexnet " + example("two_fingers_mu1"));
+  EXPECT_EQ(no_com.code, 2);
+  EXPECT_NE(no_com.err.find("body.com"), std::string::npos) << no_com.err;
+  const Cli_result clash = run("quality --preset graspit --about 0,0 " + example("square_side_middles"));
+  EXPECT_EQ(clash.code, 2);
+  EXPECT_NE(clash.err.find("--preset graspit"), std::string::npos) << clash.err;
+}
+
 TEST(CliQuality, Batch) {
   std::ifstream a(example("two_fingers_mu1")), b(example("two_fingers_mu0"));
   std::string sa((std::istreambuf_iterator<char>(a)), {}), sb((std::istreambuf_iterator<char>(b)), {});

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "exact/certificates/certificates.h"
+#include "exact/io/input_error.h"
 #include "exact/io/scene.h"
 #include "exact/statics/generators.h"
 #include "exact/statics/quality.h"
@@ -146,6 +147,34 @@ std::string inward_grasp(std::mt19937_64& rng, int n) {
     cs.push_back({std::to_string(x), std::to_string(y), std::to_string(nx), std::to_string(ny), mus[rng() % 6]});
   }
   return scene_json(cs);
+}
+
+// GraspIt!'s conventions: the square [-1, 1]² held at its side middles with μ = 1/10; every edge's moment about the
+// centre is ±μ, and divided by the largest radius √2 the L1 space's nearest facets are the planes m = ±μ/√2: ε² = 1/200
+// exactly, ε itself irrational — a bracket whose certificate carries the torque scale's error and moment bounds.
+TEST(QualityGolden, GraspItPresetDividesMomentsByTheLargestRadius) {
+  const std::string t = R"({"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "com": [0, 0]},
+    "contacts": [{"at": [0, -1], "normal": [0, 1], "mu": "1/10"}, {"at": [0, 1], "normal": [0, -1], "mu": "1/10"},
+                 {"at": [-1, 0], "normal": [1, 0], "mu": "1/10"}, {"at": [1, 0], "normal": [-1, 0], "mu": "1/10"}]})";
+  Quality_query q;
+  q.preset = Quality_preset::graspit;
+  const Quality_answer a = decide_quality(scene_of(t), q, Mode::hybrid);
+  EXPECT_FALSE(a.exact);
+  EXPECT_LE(a.lower * a.lower, Rational(1, 200));
+  EXPECT_GE(a.upper * a.upper, Rational(1, 200));
+  EXPECT_LE(a.upper - a.lower, a.query.tolerance * a.lower);
+  EXPECT_EQ(*a.query.torque_radius_squared, 2);
+  EXPECT_EQ(rejected(t, a), "");
+  // Dex-Net's and GraspIt!'s presets take moments about the centre of mass: a scene without one is refused
+  EXPECT_THROW(decide_quality(scene_of(kTwoFingers), q, Mode::hybrid), Input_error);
+  // a rational radius (a 3-4-5 body) keeps ε² exact
+  const std::string r = R"({"wrenchkit": 1, "body": {"outline": [[-3, -4], [3, -4], [3, 4], [-3, 4]], "com": [0, 0]},
+    "contacts": [{"at": [0, -4], "normal": [0, 1], "mu": "1/2"}, {"at": [0, 4], "normal": [0, -1], "mu": "1/2"},
+                 {"at": [-3, 0], "normal": [1, 0], "mu": "1/2"}, {"at": [3, 0], "normal": [-1, 0], "mu": "1/2"}]})";
+  const Quality_answer b = decide_quality(scene_of(r), q, Mode::hybrid);
+  EXPECT_TRUE(b.exact);
+  EXPECT_EQ(b.query.torque_scale, Rational(1, 5));
+  EXPECT_EQ(rejected(r, b), "");
 }
 
 // Both norms against the brute force on random grasps (the contacts' own μ, as given, moments about the origin).

@@ -8,7 +8,11 @@ namespace wrenchkit {
 void write_certificate(Json_writer& w, const Quality_answer& a) {
   w.object().member("wrenchkit_certificate", 4).member("property", "quality");
   w.member("norm", quality_norm_name(a.query.norm)).member("normalize", normalization_name(a.query.normalize));
-  w.member("torque_scale", a.query.torque_scale).key("about").rationals(std::array<Rational, 2>{a.about.x, a.about.y});
+  w.member("torque_scale", a.query.torque_scale);
+  const bool radius = a.closure.holds && a.torque_scale_error != 0;  // s = 1/√r2, irrational: within its error
+  if (radius)
+    w.member("torque_radius_squared", *a.query.torque_radius_squared).member("torque_scale_error", a.torque_scale_error);
+  w.key("about").rationals(std::array<Rational, 2>{a.about.x, a.about.y});
   w.key("epsilon").object().member("lower", a.lower).member("upper", a.upper);
   if (a.exact) w.member("squared", a.squared);
   w.end_object();
@@ -18,8 +22,11 @@ void write_certificate(Json_writer& w, const Quality_answer& a) {
     return;
   }
   w.key("scales").array();
-  for (const Quality_scale& s : a.scales)
-    w.object().member("scale", s.scale).member("error", s.error).member("bound", s.bound).end_object();
+  for (const Quality_scale& s : a.scales) {
+    w.object().member("scale", s.scale).member("error", s.error).member("bound", s.bound);
+    if (radius) w.member("moment_bound", s.moment_bound);
+    w.end_object();
+  }
   w.end_array();
   const auto triple = [&w](const std::array<std::size_t, 3>& t) {
     w.array().integer(t[0]).integer(t[1]).integer(t[2]).end_array();

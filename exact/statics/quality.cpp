@@ -464,14 +464,47 @@ bool fast_points(const Scene& scene, const Quality_query& q, Quality_answer& a, 
 
 }  // namespace
 
-Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mode mode) {
+namespace {
+// The query with its preset resolved against the scene (the centre of mass and the outline it needs).
+Quality_query resolved(const Scene& scene, Quality_query q) {
+  if (q.preset == Quality_preset::none) return q;
+  const char* name = q.preset == Quality_preset::graspit ? "graspit" : "dexnet";
+  if (!scene.body.com)
+    throw Input_error(std::string("body.com: --preset ") + name + " takes moments about the centre of mass; the scene has none (add body.com)");
+  q.normalize = Force_normalization::unit_normal;  // (the norm is the query's: GraspIt! has both, Dex-Net L1)
+  q.about = *scene.body.com;
+  if (q.preset == Quality_preset::graspit) {
+    if (scene.body.outline.empty())
+      throw Input_error("body.outline: --preset graspit divides moments by the body's largest radius from body.com; the scene has no outline");
+    Rational r2 = 0;
+    for (const Vec2& v : scene.body.outline) {
+      const Vec2 d{v.x - scene.body.com->x, v.y - scene.body.com->y};
+      r2 = std::max(r2, dot(d, d));
+    }
+    if (r2 == 0) throw Input_error("body.outline: every vertex is at body.com (no radius to divide moments by)");
+    q.torque_radius_squared = r2;
+  }
+  return q;
+}
+}  // namespace
+
+Quality_answer decide_quality(const Scene& scene, const Quality_query& asked, Mode mode) {
   if (scene.contacts.empty()) throw Input_error("contacts: the scene has no contacts, so no grasp to measure");
+  const Quality_query query = resolved(scene, asked);
   if (query.torque_scale <= 0)
     throw Input_error("--torque-scale: " + to_string(query.torque_scale) + " is not positive (the moment's weight)");
   if (query.tolerance <= 0) throw Input_error("--tolerance: " + to_string(query.tolerance) + " is not positive");
   Quality_answer a;
   a.query = query;
   a.about = query.about ? *query.about : scene.body.com ? *scene.body.com : Vec2{};
+  const bool radius = query.torque_radius_squared.has_value();
+  Quality_scale torque;  // s = 1/√r2: exact when r2 is a rational square
+  if (radius) {
+    torque.q = *query.torque_radius_squared;
+    set_scale(torque, 64);
+    if (torque.error == 0) a.query.torque_scale = torque.scale;
+  }
+  const bool irrational_torque = radius && torque.error != 0;
   a.closure = decide_closure(scene, Property::force_closure, mode, false);  // (a certificate only when open)
   if (!a.closure.decided) return a;
   if (!a.closure.holds) a.closure = decide_closure(scene, Property::force_closure, mode, true);
@@ -481,7 +514,7 @@ Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mo
   }
   if (mode == Mode::float_only) return a;  // ε has no float twin: the caller says undecided
   Int_points fast;
-  if (!query.keep_planes && fast_points(scene, query, a, fast)) {  // every scale rational, every number small
+  if (!query.keep_planes && !irrational_torque && fast_points(scene, a.query, a, fast)) {  // rational scales, small numbers
     a.exact = true;
     a.squared = epsilon_of(fast, a.refs, a, mode != Mode::exact);
     unsigned bits = 16;
@@ -495,10 +528,11 @@ Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mo
   a.refs.clear();
   a.scales.clear();
   const std::vector<Generator> gens = generators(scene, Reading::friction);
-  std::vector<Vec3q> unscaled;
+  // each edge's force and moment about `about` (the torque scale applied below)
+  std::vector<Vec3q> fm;
   for (const Generator& g : gens) {
     a.refs.push_back({g.contact, g.edge});
-    unscaled.push_back(quality_wrench(g.w, 1, query.torque_scale, a.about));
+    fm.push_back(quality_wrench(g.w, 1, 1, a.about));
   }
   a.scales.resize(scene.contacts.size());
   for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
@@ -509,12 +543,13 @@ Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mo
           : query.normalize == Force_normalization::unit_force                               ? n2 * (1 + c.mu * c.mu)
                                                                                               : n2;
   }
-  for (std::size_t j = 0; j < unscaled.size(); ++j) {
-    Quality_scale& s = a.scales[a.refs[j].contact];
-    s.bound = std::max(s.bound, upper_root(dot(unscaled[j], unscaled[j])));
-  }
-  // Scales to `bits` of precision, ε̃² of the rational polytope, and the bracket; more bits until the bracket is
-  // within the tolerance (the exact case needs only the square root's bits).
+  if (irrational_torque)
+    for (std::size_t j = 0; j < fm.size(); ++j) {
+      Quality_scale& s = a.scales[a.refs[j].contact];
+      s.moment_bound = std::max(s.moment_bound, upper_root(fm[j][2] * fm[j][2]));
+    }
+  // Scales (and an irrational torque scale) to `bits` of precision, ε̃² of the rational polytope, and the bracket; more
+  // bits until the bracket is within the tolerance (the exact case needs only the square root's bits).
   Rational eps2;
   bool built = false;
   // start from the bits the tolerance asks (its binary digits and a margin), at least 16
@@ -523,11 +558,24 @@ Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mo
   for (unsigned bits = start;; bits *= 2) {
     bool exact = true;
     if (!built || !a.exact) {
+      if (irrational_torque) {
+        set_scale(torque, bits);
+        a.query.torque_scale = torque.scale;
+        a.torque_scale_error = torque.error;
+        exact = false;
+      }
+      const Rational& ts = a.query.torque_scale;
+      const Rational top = ts + a.torque_scale_error;  // |u(s)| for the true s ≤ this with s ≤ top
+      for (Quality_scale& s : a.scales) s.bound = 0;
+      for (std::size_t j = 0; j < fm.size(); ++j) {
+        Quality_scale& s = a.scales[a.refs[j].contact];
+        s.bound = std::max(s.bound, upper_root(fm[j][0] * fm[j][0] + fm[j][1] * fm[j][1] + top * top * fm[j][2] * fm[j][2]));
+      }
       for (Quality_scale& s : a.scales) set_scale(s, bits), exact = exact && s.error == 0;
-      a.points.resize(unscaled.size());
-      for (std::size_t j = 0; j < unscaled.size(); ++j) {
+      a.points.resize(fm.size());
+      for (std::size_t j = 0; j < fm.size(); ++j) {
         const Rational& c = a.scales[a.refs[j].contact].scale;
-        for (int k = 0; k < 3; ++k) a.points[j][k] = c * unscaled[j][k];
+        a.points[j] = {c * fm[j][0], c * fm[j][1], c * ts * fm[j][2]};
       }
       eps2 = epsilon_of(int_points(a.points), a.refs, a, mode != Mode::exact);
       a.exact = exact;
@@ -535,7 +583,7 @@ Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mo
     }
     Rational delta = 0;
     for (const Quality_scale& s : a.scales) {
-      const Rational d = s.error * s.bound;
+      const Rational d = s.error * s.bound + s.scale * s.moment_bound * a.torque_scale_error;
       delta = query.norm == Quality_norm::l1 ? std::max(delta, d) : delta + d;
     }
     const auto [lo, hi] = sqrt_bracket(eps2, bits);

@@ -33,6 +33,10 @@
 namespace wrenchkit {
 
 enum class Quality_norm { l1, linf };
+// The peers' conventions in one word: GraspIt! (unit-normal edges, moments about the body's centre of mass divided by
+// its largest radius — the largest distance from body.com to a vertex of body.outline; L1 or L∞ as asked) and Dex-Net
+// (unit-normal edges, moments about the centre of mass, its `torque_scaling` as the torque scale; its metric is L1).
+enum class Quality_preset { none, graspit, dexnet };
 enum class Force_normalization { unit_normal, unit_force, as_given };
 const char* quality_norm_name(Quality_norm n);            // "L1", "Linf"
 const char* normalization_name(Force_normalization n);    // "unit-normal", "unit-force", "as-given"
@@ -41,6 +45,9 @@ struct Quality_query {
   Quality_norm norm = Quality_norm::l1;
   Force_normalization normalize = Force_normalization::unit_normal;
   Rational torque_scale = 1;       // s > 0: the moment's weight against a force
+  // s = 1/√r2 instead (GraspIt!'s 1/maxRadius): exact when r2 is a rational square, else certified within an error
+  std::optional<Rational> torque_radius_squared;
+  Quality_preset preset = Quality_preset::none;  // resolved against the scene by decide_quality
   std::optional<Vec2> about;       // the moments' point; default body.com when the scene has one, else the origin
   Rational tolerance{1ul, 1000000000000ul};  // the bracket's width relative to its lower end (ε not rational)
   // What to answer (the quality command): ε, and the critical friction coefficient μ* (critical_mu.h)
@@ -52,10 +59,12 @@ struct Quality_query {
 // (0: exact); `bound` ≥ |u| for each of its unscaled edges u (as wrenches about `about` with the torque scale).
 struct Quality_scale {
   Rational q, scale, error, bound;
+  Rational moment_bound;  // (an irrational torque scale) ≥ |m − about × f| for its edges
 };
 
 struct Quality_answer {
-  Quality_query query;
+  Quality_query query;  // (the preset resolved: norm, normalize, about, torque scale or radius)
+  Rational torque_scale_error;  // with query.torque_radius_squared: |s − query.torque_scale| ≤ it (0: exact)
   Vec2 about;                   // resolved
   Closure_answer closure;       // force closure of the contacts: ε > 0 exactly when it holds
   bool exact = false;           // ε² is rational and `squared` is it

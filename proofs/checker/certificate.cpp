@@ -57,6 +57,7 @@ void read_scales(Reader& r, Quality_part& q) {
       if (key == "scale") keys |= 1, s.scale = read_rational(r);
       else if (key == "error") keys |= 2, s.error = read_rational(r);
       else if (key == "bound") keys |= 4, s.bound = read_rational(r);
+      else if (key == "moment_bound") s.has_moment_bound = true, s.moment_bound = read_rational(r);
       else r.fail("unknown key " + quote(key), true);
     }
     if (keys != 7) r.fail("expected the keys \"scale\", \"error\" and \"bound\"");
@@ -309,6 +310,10 @@ Certificate read_certificate(Reader& r) {
       (key == "norm" ? c.q().norm : c.q().normalize) = v;
     } else if (key == "torque_scale") {
       c.q().torque_scale = read_rational(r);
+    } else if (key == "torque_radius_squared") {
+      c.q().has_radius = true, c.q().radius_squared = read_rational(r);
+    } else if (key == "torque_scale_error") {
+      c.q().torque_error = read_rational(r);
     } else if (key == "about") {
       read_fixed(r, 2, "an array of two rationals [x, y]", [&](std::size_t k) { c.q().about[k] = read_rational(r); });
     } else if (key == "scales") {
@@ -395,7 +400,8 @@ void check_keys(const Certificate& c) {
   static const char* const quality_keys[] = {"norm",   "normalize", "torque_scale", "about",    "scales",
                                              "epsilon", "boundary", "nearest",     "normal",   "of",
                                              "critical_mu", "below", "above", "constant", "constant_beyond",
-                                             "limit_twist", "scaling"};
+                                             "limit_twist", "scaling", "torque_radius_squared",
+                                             "torque_scale_error"};
   static const std::uint64_t quality_mask = Key_set::mask(quality_keys);
   if (c.keys.any(quality_mask))
     for (const char* key : quality_keys)

@@ -78,7 +78,8 @@ class Key_set {
                                              "sliding", "holding", "failing", "regions", "norm", "normalize",
                                              "torque_scale", "about", "scales", "epsilon", "boundary", "nearest",
                                              "normal", "of", "critical_mu", "below", "above", "constant",
-                                             "constant_beyond", "limit_twist", "scaling"};
+                                             "constant_beyond", "limit_twist", "scaling", "torque_radius_squared",
+                                             "torque_scale_error"};
     for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
       if (known[i] == key) return i;
     return -1;
@@ -106,8 +107,11 @@ struct Motion_part {
 struct Quality_part {
   std::string_view norm, normalize;  // "L1" or "Linf"; "unit-normal", "unit-force" or "as-given"
   Q torque_scale, about[2];
+  bool has_radius = false;  // "torque_radius_squared" r2 and "torque_scale_error" η: s = 1/√r2 within η of torque_scale
+  Q radius_squared, torque_error;
   struct Scale {
-    Q scale, error, bound;
+    Q scale, error, bound, moment_bound;
+    bool has_moment_bound = false;
   };
   std::vector<Scale> scales;
   Q lower, upper, squared;  // epsilon

@@ -39,10 +39,12 @@ std::vector<Point> scaled_points(const Quality_part& q, const std::vector<Contac
     const Quality_part::Scale& s = q.scales[i];
     const Generators<Z> gen = generators<Z>(contacts[i], Reading::friction, lim);
     V3 u[2];
+    Q moment[2];  // m − about × f, before the torque scale
     for (int k = 0; k < gen.count; ++k) {
       const Z& d = gen.w[k].d;
       const Q fx = value(gen.w[k].v[0], d), fy = value(gen.w[k].v[1], d), m = value(gen.w[k].v[2], d);  // lowest terms
-      u[k] = {fx, fy, q.torque_scale * (m - (q.about[0] * fy - q.about[1] * fx))};
+      moment[k] = m - (q.about[0] * fy - q.about[1] * fx);
+      u[k] = {fx, fy, q.torque_scale * moment[k]};
     }
     Q sq = 1;  // q: c = 1/√q
     if (!contacts[i].wrench && q.normalize != "as-given") {
@@ -58,9 +60,14 @@ std::vector<Point> scaled_points(const Quality_part& q, const std::vector<Contac
       if (sgn(low) < 0 || low * low * sq > 1 || high * high * sq < 1)
         throw Failure{at + ": 1/√" + show(sq) + " is not within " + show(s.error) + " of " + show(s.scale)};
     }
+    // the edge's length at the true torque scale s ≤ torque_scale + its error (rule 2; 7 with a radius)
+    const Q top = q.torque_scale + (q.has_radius ? q.torque_error : Q(0));
+    if (q.has_radius && !s.has_moment_bound) throw Failure{at + ": missing \"moment_bound\" (the torque scale is not exact)"};
     for (int k = 0; k < gen.count; ++k) {
-      if (s.bound * s.bound < dot(u[k], u[k]))
+      if (s.bound * s.bound < u[k][0] * u[k][0] + u[k][1] * u[k][1] + top * top * moment[k] * moment[k])
         throw Failure{at + ".bound: " + show(s.bound) + " is shorter than the edge " + show3(u[k])};
+      if (q.has_radius && s.moment_bound * s.moment_bound < moment[k] * moment[k])
+        throw Failure{at + ".moment_bound: " + show(s.moment_bound) + " is below the moment " + show(moment[k])};
       out.push_back({i, {s.scale * u[k][0], s.scale * u[k][1], s.scale * u[k][2]}});
     }
   }
@@ -179,17 +186,27 @@ void check_quality(const Certificate& c, const Scene& scene, const Limits& lim) 
   ban("twist", "when epsilon is positive"), ban("reading", "when epsilon is positive");
   need("scales");
   const bool l1 = q.norm == "L1";
+  if (q.has_radius) {  // rule 7: the torque scale 1/√r2 within its error
+    need("torque_scale_error");
+    const Q &s = q.torque_scale, &eta = q.torque_error, &r2 = q.radius_squared;
+    if (sgn(r2) <= 0 || sgn(eta) < 0) throw Failure{"torque_radius_squared and torque_scale_error: expected r2 > 0, error >= 0"};
+    const Q low = s - eta, high = s + eta;
+    if (sgn(eta) == 0 ? s * s * r2 != 1 : (sgn(low) < 0 || low * low * r2 > 1 || high * high * r2 < 1))
+      throw Failure{"torque_scale: 1/sqrt(" + show(r2) + ") is not within " + show(eta) + " of " + show(s)};
+  } else if (c.keys.count("torque_scale_error")) {
+    throw Failure{"key \"torque_scale_error\" is not allowed without \"torque_radius_squared\""};
+  }
   if (l1) need("boundary"), need("nearest"), ban("normal", "for norm \"L1\"");
   else need("normal"), ban("boundary", "for norm \"Linf\""), ban("nearest", "for norm \"Linf\"");
   const std::vector<Point> P = scaled_points(q, scene.contacts, lim);
   const Q e2 = l1 ? l1_epsilon_squared(q, P) : linf_epsilon_squared(q, P, scene.contacts.size());
   // The bracket (rule 6): ε̃ = √e2 of the rational wrench space, within δ of ε (δ: the largest displacement of a
   // generator for L1, their sum over the contacts for L∞).
-  bool exact = true;
+  bool exact = !q.has_radius || sgn(q.torque_error) == 0;
   Q delta = 0;
   for (const Quality_part::Scale& s : q.scales) {
     exact = exact && sgn(s.error) == 0;
-    const Q d = s.error * s.bound;
+    const Q d = s.error * s.bound + (q.has_radius ? Q(s.scale * s.moment_bound * q.torque_error) : Q(0));
     delta = l1 ? std::max(delta, d) : Q(delta + d);
   }
   if (exact != q.has_squared)

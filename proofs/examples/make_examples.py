@@ -42,6 +42,7 @@ MAT_LEGS = {"wrenchkit": 1, "support": {"mu": "1/2", "weight": 5, "pressure_cent
 SQUARE_REGION = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 1}
 
 SCENES = {
+    "square_side_middles": {"wrenchkit": 1, "name": "the square held at its side middles, mu = 1/10 (GraspIt!'s torque scale 1/sqrt 2)", "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "com": [0, 0]}, "contacts": [{"at": [0, -1], "normal": [0, 1], "mu": "1/10"}, {"at": [0, 1], "normal": [0, -1], "mu": "1/10"}, {"at": [-1, 0], "normal": [1, 0], "mu": "1/10"}, {"at": [1, 0], "normal": [-1, 0], "mu": "1/10"}]},
     "two_fingers_offset_own_mu": {"wrenchkit": 1, "name": "the offset fingers with their own friction, mu = 1 and 3/4: closed while both keep more than 2/3 of it", "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": 1, "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "mu": "3/4", "name": "right finger"}]},
     "two_fingers_offset_moment": {"wrenchkit": 1, "name": "the offset fingers against a pure moment: balanced only above mu = 1/2", "contacts": [{"at": [-1, 0], "normal": [1, 0], "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "name": "right finger"}], "load": {"wrench": [0, 0, 1]}},
     "two_fingers_offset": {"wrenchkit": 1, "name": "two fingers at (-1, 0) and (1, 1), normals (1, 0) and (-1, 0): the contact line at tan 1/2", "contacts": [{"at": [-1, 0], "normal": [1, 0], "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "name": "right finger"}]},
@@ -379,6 +380,7 @@ CRIT_LADDER_CLOSURE = json.loads(r'''{"wrenchkit_certificate": 4, "property": "c
 CRIT_LADDER = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": {"lower": "1/7", "upper": "1/7"}, "below": {"mu": "1/10", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": false, "twist": ["340", "34", "101"], "reading": {"label": "+", "point": ["-34/101", "340/101"]}}}, "above": {"mu": "1/7", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "49/50"}, {"contact": 1, "edge": "left", "weight": "7/50"}]}}, "constant": true}''')
 CRIT_MOMENT = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": {"lower": "1/2", "upper": "1/2"}, "below": {"mu": "1/2", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": false, "twist": ["0", "1", "1"], "reading": {"label": "+", "point": ["-1", "0"]}}}, "above": {"mu": "2/3", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "3"}, {"contact": 1, "edge": "left", "weight": "3"}]}}, "constant": true}''')
 CRIT_MARGIN = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "scaling": "proportional", "critical_mu": {"lower": "2/3", "upper": "2/3"}, "below": {"mu": "2/3", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": false, "twist": ["0", "1", "1"], "reading": {"label": "+", "point": ["-1", "0"]}}}, "above": {"mu": "1", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "9"}, {"contact": 0, "edge": "right", "weight": "3"}, {"contact": 1, "edge": "left", "weight": "10"}, {"contact": 1, "edge": "right", "weight": "2"}], "independent": [{"contact": 0, "edge": "left"}, {"contact": 0, "edge": "right"}, {"contact": 1, "edge": "left"}]}}, "constant": true}''')
+GRASPIT_SQUARE = json.loads(r'''{"wrenchkit_certificate": 4, "property": "quality", "norm": "L1", "normalize": "unit-normal", "torque_scale": "189812531/268435456", "torque_radius_squared": "2", "torque_scale_error": "1/268435456", "about": ["0", "0"], "epsilon": {"lower": "12148001919/171798691840", "upper": "12148002049/171798691840"}, "scales": [{"scale": "1", "error": "0", "bound": "17/16", "moment_bound": "13/128"}, {"scale": "1", "error": "0", "bound": "17/16", "moment_bound": "13/128"}, {"scale": "1", "error": "0", "bound": "17/16", "moment_bound": "13/128"}, {"scale": "1", "error": "0", "bound": "17/16", "moment_bound": "13/128"}], "boundary": [[0, 1, 4], [2, 0, 4], [1, 3, 5], [4, 1, 5], [3, 2, 5], [2, 4, 5], [0, 2, 6], [2, 3, 6], [3, 1, 7], [6, 3, 7], [1, 0, 7], [0, 6, 7]], "nearest": [2, 0, 4]}''')
 CRIT_NEVER = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "critical_mu": "never", "limit_twist": ["1", "0", "0"]}''')
 CRIT_NEVER_LOAD = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": "never", "limit_twist": ["1", "0", "0"]}''')
 
@@ -413,6 +415,10 @@ CERTS = [
      crit(CRIT_NEVER, limit_twist=["0", "1", "0"])),
     ("ladder_gravity", "critical_mu_nested_format_4", "invalid:nested|above.certificate: expected a certificate of \"equilibrium\" in format 1, 2 or 3",
      crit(CRIT_LADDER, above=dict(CRIT_LADDER["above"], certificate=dict(CRIT_LADDER["above"]["certificate"], wrenchkit_certificate=4)))),
+    # GraspIt!'s torque scale 1/sqrt 2 (the square's largest radius): epsilon^2 = 1/200, bracketed with the scale's error
+    ("square_side_middles", "quality_graspit", "valid", GRASPIT_SQUARE),
+    ("square_side_middles", "quality_graspit_scale_off", "invalid:torque|torque_scale: 1/sqrt(2) is not within",
+     dict(GRASPIT_SQUARE, torque_scale="7/10")),
     ("two_fingers_mu1", "quality_l1", "valid",
      quality("L1", "as-given", {"lower": "577/1000", "upper": "289/500", "squared": "1/3"}, scales=EXACT,
              boundary=TETRA, nearest=[0, 1, 2])),
@@ -1387,6 +1393,13 @@ def verify_quality(scene, cert):
     if cert.get("wrenchkit_certificate") != 4:
         return "header"
     norm, normalize, s = cert["norm"], cert["normalize"], rational(cert["torque_scale"])
+    radius = "torque_radius_squared" in cert  # s = 1/sqrt(r2) within its error
+    eta = rational(cert["torque_scale_error"]) if radius else F(0)
+    if radius:
+        r2 = rational(cert["torque_radius_squared"])
+        if r2 <= 0 or eta < 0 or (eta == 0 and s * s * r2 != 1) or (
+                eta > 0 and (s - eta < 0 or (s - eta) ** 2 * r2 > 1 or (s + eta) ** 2 * r2 < 1)):
+            return "torque"
     ax, ay = (rational(v) for v in cert["about"])
     eps = cert["epsilon"]
     lower, upper = rational(eps["lower"]), rational(eps["upper"])
@@ -1411,7 +1424,8 @@ def verify_quality(scene, cert):
     for i, (c, g) in enumerate(zip(contacts, gens)):
         sc, err, bound = (rational(scales[i][k]) for k in ("scale", "error", "bound"))
         edges = [g[e] for e in ("left", "right", "normal", "wrench") if e in g]
-        u = [(fx, fy, s * (m - (ax * fy - ay * fx))) for fx, fy, m in edges]
+        moments = [m - (ax * fy - ay * fx) for fx, fy, m in edges]
+        u = [(fx, fy, s * mm) for (fx, fy, _), mm in zip(edges, moments)]
         if "wrench" in c or normalize == "as-given":
             q = F(1)
         elif normalize == "unit-force":
@@ -1424,10 +1438,15 @@ def verify_quality(scene, cert):
                 return "scale"
         elif sc - err < 0 or (sc - err) ** 2 * q > 1 or (sc + err) ** 2 * q < 1:
             return "scale"
-        if any(bound * bound < dot(x, x) for x in u):
+        top = s + eta
+        if any(bound * bound < x[0] ** 2 + x[1] ** 2 + top * top * mm * mm for x, mm in zip(u, moments)):
             return "bound"
-        exact = exact and err == 0
-        delta_max, delta_sum = max(delta_max, err * bound), delta_sum + err * bound
+        mb = rational(scales[i]["moment_bound"]) if radius else F(0)
+        if radius and any(mb * mb < mm * mm for mm in moments):
+            return "bound"
+        exact = exact and err == 0 and eta == 0
+        d = err * bound + sc * mb * eta
+        delta_max, delta_sum = max(delta_max, d), delta_sum + d
         for x in u:
             points.append(tuple(sc * v for v in x))
             owner.append(i)

@@ -273,7 +273,7 @@ def reuleaux(scene, *, center=None, sense=None, direction=None, twist=None, mode
 
 
 def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, tolerance=None, only=None,
-            mode="hybrid"):
+            preset=None, mode="hybrid"):
     """How good is the grasp (docs/quality.md), as `wrenchkit quality --json`: {"epsilon": {"lower", "upper",
     "squared" (when epsilon^2 is rational), "lower_approx", "upper_approx", "norm", "normalize", "torque_scale",
     "about"}, "force_closure", "nearest_facet", "critical_mu": {"closure": {"kind": "value" | "always" | "never",
@@ -283,11 +283,12 @@ def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, 
 
     norm: "L1" (default) or "Linf"; normalize: "unit-normal" (default), "unit-force" or "as-given"; torque_scale: the
     moment's weight (default 1); about: (x, y), the moments' point (default body.com, else the origin); tolerance:
-    the brackets' relative width (default 1e-12); only: "epsilon" or "critical-mu". mode: "hybrid" or "exact"
+    the brackets' relative width (default 1e-12); only: "epsilon" or "critical-mu"; preset: "graspit" or "dexnet" (the
+    peers' conventions, docs/quality.md). mode: "hybrid" or "exact"
     ("float" raises UndecidedError: neither has a float twin).
     """
     words = []
-    for name, value in (("norm", norm), ("normalize", normalize), ("only", only)):
+    for name, value in (("norm", norm), ("normalize", normalize), ("only", only), ("preset", preset)):
         if value is not None:
             words += ["--" + name, str(value)]
     for name, value in (("torque-scale", torque_scale), ("tolerance", tolerance)):
@@ -303,7 +304,7 @@ def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, 
                 d[k] = _fractions.Fraction(d[k])
 
     if "epsilon" in r:
-        exact(r["epsilon"], ("lower", "upper", "squared", "torque_scale"))
+        exact(r["epsilon"], ("lower", "upper", "squared", "torque_scale", "torque_radius_squared", "torque_scale_error"))
         r["epsilon"]["about"] = tuple(_fractions.Fraction(x) for x in r["epsilon"]["about"])
     for c in list(r.get("critical_mu", {}).values()) + ([r["friction_margin"]] if "friction_margin" in r else []):
         exact(c, ("lower", "upper"))
