@@ -158,19 +158,15 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
   // the contacts; hold is both together (docs/fixtures.md).
   if (!a.scene.contacts.empty() && a.scene.support && a.scene.load)
     a.hold = answered(answer_hold(a.scene, scene_text, request));
-  // How good the grasp is and how much friction it needs (the defaults of `wrenchkit quality`); μ* for up to 16 point
-  // contacts (its minors grow as the cube of their number)
+  // How good the grasp is (ε with the defaults of `wrenchkit quality`); the critical friction is `quality`'s own
+  // question: ~1 ms of exact decisions per scene, a hundred times analyze's other answers (bench/performance-notes.md)
   std::size_t points = 0;
   for (const Contact& c : a.scene.contacts) points += c.kind == Contact::Kind::point;
   if (points > 0 && o.mode == Mode::float_only) {
-    a.skipped.push_back({"quality", "epsilon and the critical friction have no float twin: use --mode hybrid or exact"});
+    a.skipped.push_back({"quality", "epsilon has no float twin: use --mode hybrid or exact"});
   } else if (points > 0) {
     Quality_query q;
-    if (points > 16) {
-      q.critical_mu = false;
-      a.skipped.push_back({"critical_mu", std::to_string(points) + " point contacts (analyze finds the critical friction "
-                                          "for up to 16): use 'wrenchkit quality --only critical-mu'"});
-    }
+    q.critical_mu = false;
     a.quality = answered(answer_quality(a.scene, scene_text, request, q));
   }
   return a;
@@ -228,7 +224,7 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
     std::string q = quality_human(*a.quality);
     q = q.substr(q.find('\n') + 1);
     q = q.substr(0, q.rfind("decided by: "));
-    std::cout << q;
+    std::cout << q << "  (the friction it needs: wrenchkit quality --only critical-mu)\n";
   }
   for (const auto& [what, why] : a.skipped) std::cout << "skipped " << what << ": " << why << "\n";
   if (contacts)
