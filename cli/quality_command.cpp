@@ -32,7 +32,7 @@ std::string generator_name(const Scene& scene, const Generator_ref& g) {
 // Closure in the mode, then ε and μ* in exact arithmetic: hybrid when the closure was the twin's alone.
 Arithmetic decided_by(const Quality_item& r) {
   const Quality_answer& a = r.answer;
-  if (r.certificate.empty()) return r.mode == Mode::exact ? Arithmetic::exact : Arithmetic::hybrid;  // μ* only
+  if (!r.epsilon) return r.mode == Mode::exact ? Arithmetic::exact : Arithmetic::hybrid;  // μ* only
   const bool exact_part = a.closure.holds || r.critical;
   return exact_part ? wrenchkit::decided_by(a.closure.decided_by(), Arithmetic::exact) : a.closure.decided_by();
 }
@@ -127,7 +127,7 @@ void write_quality(Json_writer& w, const Quality_item& r) {
     w.end_object();
     if (r.critical->margin) write_critical(w.key("friction_margin"), *r.critical->margin, r.margin_certificate);
   }
-  if (r.certificate.empty()) return;  // ε not asked
+  if (!r.epsilon) return;  // ε not asked
   w.member("force_closure", a.closure.holds);
   w.key("epsilon").object().member("lower", a.lower).member("upper", a.upper);
   if (a.exact) w.member("squared", a.squared);
@@ -167,7 +167,7 @@ std::string quality_human(const Quality_item& r) {
     if (r.critical->equilibrium) s << "  equilibrium of the load: " << critical_text(*r.critical->equilibrium, false) << "\n";
     if (r.critical->margin) s << "friction margin (every contact's own mu times one factor t): " << margin_text(*r.critical->margin) << "\n";
   };
-  if (r.certificate.empty()) {
+  if (!r.epsilon) {
     critical();
     s << "certificates accepted by the independent checker (exact arithmetic)\n";
     return s.str();
@@ -221,12 +221,12 @@ Scene_answer prepare_quality_json(const Options& o) {
 int run_quality(const Options& o, const std::string& scene_text, const std::string& source) {
   const Quality_item r = answered(answer_quality(scene_text, source, request_of(o), quality_query(o)));
   if (!o.certificate_file.empty()) {
-    if (r.certificate.empty()) throw Usage_error("--certificate: epsilon was not asked (--only critical-mu): no certificate of it");
+    if (!r.epsilon) throw Usage_error("--certificate: epsilon was not asked (--only critical-mu): no certificate of it");
     write_file(o.certificate_file, r.certificate + "\n");
   }
   return write_answer(o, [&](Json_writer& w) { write_quality(w, r); },
                       [&] {  // (the scene's μ matter to ε, not to μ*)
-                        return scene_line(r.scene.name, source) + (r.certificate.empty() ? "" : frictionless_note(r.scene)) +
+                        return scene_line(r.scene.name, source) + (r.epsilon ? frictionless_note(r.scene) : "") +
                                quality_human(r);
                       });
 }

@@ -9,6 +9,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -21,6 +22,7 @@
 #include "exact/io/scene_writer.h"
 #include "exact/pipeline/ordered_map.h"
 #include "exact/pipeline/pipeline.h"
+#include "exact/pipeline/quality_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "python/convert.h"
 
@@ -285,9 +287,62 @@ py::dict stick_slide_arrays(const Doubles& points, const Doubles& forces, const 
   return out;
 }
 
+// The grasp quality of each row (docs/quality.md): ε's bracket as doubles rounded outward (lower down, upper up, so
+// [lower, upper] still holds ε), force closure, and with critical_mu the critical friction of closure (its bracket,
+// NaN for "never", 0 for "always"); every certificate checked (the pipeline's quality item).
+py::dict quality_arrays(const Doubles& points, const Doubles& normals, const Doubles& mu, const Counts& counts,
+                        const std::string& norm, const std::string& normalize, const std::string& mode, bool critical,
+                        bool certificates, unsigned jobs) {
+  const Contact_rows in = contact_rows(points, normals, mu, counts);
+  const Request request = request_for(mode, certificates);
+  Quality_query query;
+  query.critical_mu = critical;
+  query.norm = norm == "Linf" ? Quality_norm::linf : Quality_norm::l1;
+  query.normalize = normalize == "unit-force" ? Force_normalization::unit_force
+                    : normalize == "as-given" ? Force_normalization::as_given
+                                              : Force_normalization::unit_normal;
+  query.about = Vec2{};  // the origin: array rows have no centre of mass
+  auto closed = vector_of<bool>(in.rows);
+  auto lower = vector_of<double>(in.rows), upper = vector_of<double>(in.rows);
+  auto mu_lo = vector_of<double>(in.rows), mu_hi = vector_of<double>(in.rows);
+  bool* c = closed.mutable_data();
+  double *lo = lower.mutable_data(), *hi = upper.mutable_data(), *ml = mu_lo.mutable_data(), *mh = mu_hi.mutable_data();
+  const auto down = [](const Rational& q) { const double d = q.get_d(); return Rational(d) > q ? std::nextafter(d, -INFINITY) : d; };
+  const auto up = [](const Rational& q) { const double d = q.get_d(); return Rational(d) < q ? std::nextafter(d, INFINITY) : d; };
+  struct Item {
+    Quality_item item;
+  };
+  map_rows<Item>(
+      in.rows, jobs,
+      [&](Worker& w, std::size_t row, Item& out) {
+        in.fill(w.scene, row);
+        if (certificates) w.text = write_scene(w.scene);
+        out.item = answer_quality(w.scene, w.text, request, query);
+      },
+      [&](std::size_t row, Item& o) {
+        const Quality_item& r = o.item;
+        if (r.status != Status::answered) throw std::runtime_error("row " + std::to_string(row) + ": " + r.message);
+        c[row] = r.answer.closure.holds;
+        lo[row] = down(r.answer.lower), hi[row] = up(r.answer.upper);
+        ml[row] = mh[row] = NAN;
+        if (r.critical && r.critical->closure.kind != Critical_kind::never) {
+          const Critical_mu& m = r.critical->closure;
+          ml[row] = m.kind == Critical_kind::always ? 0 : down(m.lower);
+          mh[row] = m.kind == Critical_kind::always ? 0 : up(m.upper);
+        }
+      });
+  py::dict out;
+  out["force_closure"] = closed;
+  out["epsilon_lower"] = lower;
+  out["epsilon_upper"] = upper;
+  if (critical) out["critical_mu_lower"] = mu_lo, out["critical_mu_upper"] = mu_hi;
+  return out;
+}
+
 }  // namespace
 
 void register_arrays(py::module_& m) {
+  m.def("quality_arrays", &quality_arrays);
   m.def("closure_arrays", &closure_arrays);
   m.def("equilibrium_arrays", &equilibrium_arrays);
   m.def("stick_slide_arrays", &stick_slide_arrays);

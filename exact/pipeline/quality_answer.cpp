@@ -9,27 +9,29 @@ namespace {
 void decide(std::string_view text, const Request& request, const Quality_query& query, Quality_item& r) {
   r.mode = request.mode;
   std::vector<std::string_view> certificates;
+  r.epsilon = query.epsilon;
   if (query.epsilon) {
     r.answer = decide_quality(r.scene, query, request.mode);
     if (!r.answer.closure.decided) throw Undecided_error("force closure is undecided by the float twin alone");
     if (request.mode == Mode::float_only && r.answer.closure.holds)
       throw Undecided_error("the grasp is in force closure; its quality ε has no float twin (ε is exact arithmetic)");
-    r.certificate = certificate_json(r.answer);
-    certificates.push_back(r.certificate);
+    if (request.certify) r.certificate = certificate_json(r.answer), certificates.push_back(r.certificate);
   }
   if (query.critical_mu) {
     if (request.mode == Mode::float_only)
       throw Undecided_error("the critical friction coefficient has no float twin (it is exact arithmetic)");
     r.critical = decide_critical_mu(r.scene, request.mode, query.tolerance);
-    r.closure_mu_certificate = critical_mu_certificate(r.critical->closure, true);
-    certificates.push_back(r.closure_mu_certificate);
-    if (r.critical->equilibrium) {
-      r.balance_mu_certificate = critical_mu_certificate(*r.critical->equilibrium, false);
-      certificates.push_back(r.balance_mu_certificate);
-    }
-    if (r.critical->margin) {
-      r.margin_certificate = critical_mu_certificate(*r.critical->margin, true);
-      certificates.push_back(r.margin_certificate);
+    if (request.certify) {
+      r.closure_mu_certificate = critical_mu_certificate(r.critical->closure, true);
+      certificates.push_back(r.closure_mu_certificate);
+      if (r.critical->equilibrium) {
+        r.balance_mu_certificate = critical_mu_certificate(*r.critical->equilibrium, false);
+        certificates.push_back(r.balance_mu_certificate);
+      }
+      if (r.critical->margin) {
+        r.margin_certificate = critical_mu_certificate(*r.critical->margin, true);
+        certificates.push_back(r.margin_certificate);
+      }
     }
   }
   std::string why = check_certificates(text, certificates, request);

@@ -6,7 +6,8 @@
 //   float          force closure by the twin; ε = 0 when it is not closed (certified by its twist), else undecided
 //                  (Status::undecided, exit 3): ε has no float twin; nor has μ*, undecided whenever asked.
 // The critical friction coefficient μ* (exact/statics/critical_mu.h, §3.5) of closure and, with a load, of
-// equilibrium, when the query asks (the default).
+// equilibrium, when the query asks (the default). Request::certify false (the array API's default) writes and checks
+// no certificate: the same answers, for throughput.
 #pragma once
 
 #include <string>
@@ -23,7 +24,8 @@ struct Quality_item {
   std::string message;
   Scene scene;
   Mode mode = Mode::hybrid;
-  Quality_answer answer;     // query.epsilon
+  bool epsilon = false;      // ε was asked (query.epsilon): `answer` holds it
+  Quality_answer answer;
   std::string certificate;  // the certificate the independent checker accepted
   std::optional<Critical_answer> critical;                // query.critical_mu
   std::string closure_mu_certificate, balance_mu_certificate, margin_certificate;  // accepted by the checker

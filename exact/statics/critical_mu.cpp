@@ -434,7 +434,15 @@ Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
 
 }  // namespace
 
-Critical_answer decide_critical_mu(const Scene& scene, Mode mode, const Rational& tolerance) {
+Critical_answer decide_critical_mu(const Scene& given, Mode mode, const Rational& tolerance) {
+  // contacts read lazily (the array API's doubles, the streaming reader) get their rationals first
+  std::optional<Scene> built;
+  for (std::size_t i = 0; i < given.contacts.size(); ++i)
+    if (given.contacts[i].exact_pending) {
+      if (!built) built = given;
+      built->contacts[i] = exact_contact(given.contacts[i]);
+    }
+  const Scene& scene = built ? *built : given;
   bool point = false;
   for (const Contact& c : scene.contacts) point = point || c.kind == Contact::Kind::point;
   if (!point) throw Input_error("contacts: no point contact, so no friction coefficient to find");

@@ -3,6 +3,7 @@
 #include "exact/statics/quality.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -488,7 +489,15 @@ Quality_query resolved(const Scene& scene, Quality_query q) {
 }
 }  // namespace
 
-Quality_answer decide_quality(const Scene& scene, const Quality_query& asked, Mode mode) {
+Quality_answer decide_quality(const Scene& given, const Quality_query& asked, Mode mode) {
+  // contacts read lazily (the array API's doubles, the streaming reader) get their rationals first
+  std::optional<Scene> read;
+  for (std::size_t i = 0; i < given.contacts.size(); ++i)
+    if (given.contacts[i].exact_pending) {
+      if (!read) read = given;
+      read->contacts[i] = exact_contact(given.contacts[i]);
+    }
+  const Scene& scene = read ? *read : given;
   if (scene.contacts.empty()) throw Input_error("contacts: the scene has no contacts, so no grasp to measure");
   const Quality_query query = resolved(scene, asked);
   if (query.torque_scale <= 0)

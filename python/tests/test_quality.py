@@ -57,3 +57,27 @@ def test_options_and_modes():
         wrenchkit.quality(TWO_FINGERS, mode="float")
     assert wrenchkit.quality(TWO_FINGERS, mode="exact")["epsilon"] == wrenchkit.quality(TWO_FINGERS)["epsilon"]
     assert "<svg" in wrenchkit.render(TWO_FINGERS, "quality")
+
+
+def test_quality_arrays_agree_with_quality():
+    import numpy as np
+    rng = np.random.default_rng(31)
+    B, K = 40, 3
+    ang = rng.uniform(0, 2 * np.pi, (B, K))
+    pts = np.stack([np.cos(ang), np.sin(ang)], -1)
+    nrm = -pts + rng.uniform(-0.3, 0.3, (B, K, 2))
+    r = wrenchkit.quality_arrays(pts, nrm, 0.5, critical_mu=True)
+    c = wrenchkit.quality_arrays(pts, nrm, 0.5, certificates=True)
+    assert (r["epsilon_lower"] == c["epsilon_lower"]).all() and (r["force_closure"] == c["force_closure"]).all()
+    assert (r["force_closure"] == wrenchkit.closure_arrays(pts, nrm, 0.5)["force_closure"]).all()
+    for i in range(0, B, 7):
+        scene = {"wrenchkit": 1, "contacts": [{"at": [pts[i, k, 0], pts[i, k, 1]], "normal": [nrm[i, k, 0], nrm[i, k, 1]],
+                                               "mu": 0.5} for k in range(K)]}
+        q = wrenchkit.quality(scene, about=(0, 0))
+        e = q["epsilon"]
+        assert Fraction(r["epsilon_lower"][i]) <= e["lower"] and e["upper"] <= Fraction(r["epsilon_upper"][i])
+        m = q["critical_mu"]["closure"]
+        if m["kind"] == "value":
+            assert Fraction(r["critical_mu_lower"][i]) <= m["lower"] and m["upper"] <= Fraction(r["critical_mu_upper"][i])
+    with pytest.raises(ValueError, match="norm"):
+        wrenchkit.quality_arrays(pts, nrm, 0.5, norm="L2")

@@ -56,7 +56,7 @@ _core._set_exceptions(InputError, InternalError, UndecidedError)
 
 __all__ = ["Scene", "closure", "force_closure", "form_closure", "equilibrium", "hold", "labels", "dual", "reuleaux",
            "quality", "limit_surface", "sliding", "render", "check", "reference", "compare", "batch", "closure_arrays",
-           "equilibrium_arrays", "stick_slide_arrays", "DECIDED_BY", "MOTION", "MOTION_DECIDED_BY", "InputError",
+           "equilibrium_arrays", "quality_arrays", "stick_slide_arrays", "DECIDED_BY", "MOTION", "MOTION_DECIDED_BY", "InputError",
            "UndecidedError", "InternalError"]
 
 
@@ -481,4 +481,4 @@ def batch(command, scenes, *options, jobs=None, first_line=1, chunk=None, as_dic
 
 
 from .arrays import (DECIDED_BY, MOTION, MOTION_DECIDED_BY, closure_arrays,  # noqa: E402
-                     equilibrium_arrays, stick_slide_arrays)
+                     equilibrium_arrays, quality_arrays, stick_slide_arrays)

@@ -118,6 +118,29 @@ def closure_arrays(points, normals, mu, counts=None, *, mode="hybrid", certifica
     return _core.closure_arrays(p, n, m, c, _mode(mode), bool(certificates), _jobs(jobs))
 
 
+def quality_arrays(points, normals, mu, counts=None, *, norm="L1", normalize="unit-normal", critical_mu=False,
+                   mode="hybrid", certificates=False, jobs=None):
+    """The grasp quality of B grasps given as arrays of doubles (docs/quality.md), moments about the origin.
+
+    Contacts as closure_arrays. Returns a dict of NumPy arrays of length B: "force_closure" (bool), "epsilon_lower"
+    and "epsilon_upper" (float64: the certified bracket of the Ferrari-Canny epsilon rounded outward, so that
+    lower <= epsilon <= upper still holds; equal to within a few ulps); with critical_mu=True also
+    "critical_mu_lower", "critical_mu_upper" (the least common mu that closes the grasp: 0 when closed without
+    friction, NaN when no mu does). norm: "L1" or "Linf"; normalize: "unit-normal", "unit-force" or "as-given".
+    certificates=True writes every row's certificates and has the independent checker accept them first (the answers
+    are the same; about 2.5x the time). mode: "hybrid" or "exact".
+    """
+    if norm not in ("L1", "Linf"):
+        raise ValueError(f'norm: {norm!r} is not one of "L1", "Linf"')
+    if normalize not in ("unit-normal", "unit-force", "as-given"):
+        raise ValueError(f'normalize: {normalize!r} is not one of "unit-normal", "unit-force", "as-given"')
+    if mode == "float":
+        raise ValueError('mode: "float" is not offered by quality_arrays (epsilon has no float twin); use "hybrid" or "exact"')
+    p, n, m, c = _contacts(points, normals, mu, counts)
+    return _core.quality_arrays(p, n, m, c, norm, normalize, _mode(mode), bool(critical_mu), bool(certificates),
+                                _jobs(jobs))
+
+
 def equilibrium_arrays(points, normals, mu, loads, counts=None, *, mode="hybrid", certificates=False, jobs=None):
     """Can the contacts balance each row's load? loads: (B, 3) wrenches (fx, fy, m about the origin).
 
