@@ -7,10 +7,12 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <type_traits>
 #include <unordered_map>
 
 #include "exact/io/input_error.h"
 #include "exact/numbers/wide_int.h"
+#include "float/bounded.h"
 
 namespace wrenchkit {
 
@@ -127,9 +129,23 @@ struct Hull {
   std::vector<std::array<W, 3>> n;
   std::vector<W> off;
 };
+// GMP's integer as a certified double: truncated, within one unit of its 53rd bit (exact below 2^53).
+fl::Bounded bounded(const Integer& x) {
+  const double d = mpz_get_d(x.get_mpz_t());
+  return {d, mpz_sizeinbase(x.get_mpz_t(), 2) > 53 ? std::fabs(d) * 0x1p-51 : 0.0};
+}
+
 template <class C, class W>
-Hull<W> convex_hull(const std::vector<std::array<C, 3>>& P) {
+Hull<W> convex_hull(const std::vector<std::array<C, 3>>& P, bool filter) {
   using V = std::array<W, 3>;
+  // GMP's tier, hybrid: each visibility sign first in certified doubles (float/bounded.h), exactly when uncertain
+  constexpr bool big = std::is_same_v<W, Integer>;
+  using B3 = std::array<fl::Bounded, 3>;
+  std::vector<B3> Pb, nb;
+  std::vector<fl::Bounded> offb;
+  if constexpr (big)
+    if (filter)
+      for (const auto& p : P) Pb.push_back({bounded(p[0]), bounded(p[1]), bounded(p[2])});
   const auto diff = [&](std::size_t b, std::size_t a) { return V{W(P[b][0]) - W(P[a][0]), W(P[b][1]) - W(P[a][1]), W(P[b][2]) - W(P[a][2])}; };
   const auto cross = [](const V& a, const V& b) {
     return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
@@ -173,6 +189,8 @@ Hull<W> convex_hull(const std::vector<std::array<C, 3>>& P) {
       off = -off;
     }
     const std::size_t f = h.tri.size();
+    if constexpr (big)
+      if (filter) nb.push_back({bounded(nv[0]), bounded(nv[1]), bounded(nv[2])}), offb.push_back(bounded(off));
     h.tri.push_back({a, b, c});
     h.n.push_back(std::move(nv));
     h.off.push_back(std::move(off));
@@ -188,8 +206,16 @@ Hull<W> convex_hull(const std::vector<std::array<C, 3>>& P) {
     if (p == i1 || p == i2 || p == i3) continue;
     visible.clear();
     seen.assign(h.tri.size(), 0);
+    const auto sees = [&](std::size_t f) {
+      if constexpr (big)
+        if (filter) {
+          const Sign g = (nb[f][0] * Pb[p][0] + nb[f][1] * Pb[p][1] + nb[f][2] * Pb[p][2] - offb[f]).sign();
+          if (g != Sign::uncertain) return g == Sign::positive;
+        }
+      return dot(h.n[f], P[p]) > h.off[f];
+    };
     for (std::size_t f = 0; f < h.tri.size(); ++f)
-      if (alive[f] && dot(h.n[f], P[p]) > h.off[f]) visible.push_back(f), seen[f] = 1;
+      if (alive[f] && sees(f)) visible.push_back(f), seen[f] = 1;
     if (visible.empty()) continue;  // inside or on the boundary
     horizon.clear();
     for (std::size_t f : visible)
@@ -261,7 +287,7 @@ void inside_check(bool inside) {
 // normal, and (the query keeping them) every facet's plane.
 template <class C, class W>
 Rational epsilon_l1_tier(const std::vector<std::array<C, 3>>& P, const Integer& D, Quality_answer& a, bool filter) {
-  Hull<W> h = convex_hull<C, W>(P);
+  Hull<W> h = convex_hull<C, W>(P, filter);
   std::size_t best = 0;
   for (std::size_t f = 0; f < h.tri.size(); ++f) {
     inside_check(h.off[f] > 0);
