@@ -118,23 +118,29 @@ TEST(CriticalMuGolden, BalancedOnlyAboveTheCritical) {
   EXPECT_EQ(rejected(t, critical_mu_certificate(*a.equilibrium, false)), "");
 }
 
+// 2–4 contacts at small integer points pressing roughly inward; each with a μ drawn from `mus` when given.
+std::string random_contacts_text(std::mt19937_64& rng, const std::vector<const char*>& mus) {
+  std::string text = R"({"wrenchkit": 1, "contacts": [)";
+  const int n = 2 + static_cast<int>(rng() % 3);
+  for (int i = 0; i < n; ++i) {
+    int x = 0, y = 0;
+    while (x == 0 && y == 0) x = static_cast<int>(rng() % 7) - 3, y = static_cast<int>(rng() % 7) - 3;
+    int nx = -x + static_cast<int>(rng() % 5) - 2, ny = -y + static_cast<int>(rng() % 5) - 2;
+    if (nx == 0 && ny == 0) nx = 1;
+    text += (i ? ", " : "") + std::string("{\"at\": [") + std::to_string(x) + ", " + std::to_string(y) + "], \"normal\": [" +
+            std::to_string(nx) + ", " + std::to_string(ny) + "]" +
+            (mus.empty() ? std::string() : std::string(", \"mu\": \"") + mus[rng() % mus.size()] + "\"") + "}";
+  }
+  return text + "]";
+}
+
 // Random grasps (2–4 contacts pressing roughly inward, a load now and then): the theorem's own statement at μ* and
 // 10⁻⁹ beside it, and the checker.
 TEST(CriticalMuProperty, RandomGraspsMeetTheirThreshold) {
   std::mt19937_64 rng(seed(20261129));
   int values = 0, exact = 0, brackets = 0;
   for (int trial = 0; trial < 80; ++trial) {
-    std::string text = R"({"wrenchkit": 1, "contacts": [)";
-    const int n = 2 + static_cast<int>(rng() % 3);
-    for (int i = 0; i < n; ++i) {
-      int x = 0, y = 0;
-      while (x == 0 && y == 0) x = static_cast<int>(rng() % 7) - 3, y = static_cast<int>(rng() % 7) - 3;
-      int nx = -x + static_cast<int>(rng() % 5) - 2, ny = -y + static_cast<int>(rng() % 5) - 2;
-      if (nx == 0 && ny == 0) nx = 1;
-      text += (i ? ", " : "") + std::string("{\"at\": [") + std::to_string(x) + ", " + std::to_string(y) + "], \"normal\": [" +
-              std::to_string(nx) + ", " + std::to_string(ny) + "]}";
-    }
-    text += "]";
+    std::string text = random_contacts_text(rng, {});
     if (trial % 2) text += R"(, "load": {"force": [)" + std::to_string(static_cast<int>(rng() % 5) - 2) + ", -3], \"at\": [" +
                            std::to_string(static_cast<int>(rng() % 3) - 1) + ", 0]}";
     text += "}";
@@ -188,20 +194,9 @@ TEST(CriticalMuProperty, RandomGraspsMeetTheirThreshold) {
 // The margin on random grasps with their own μ: fails at t* (or below the bracket), holds just above, and the checker.
 TEST(CriticalMuProperty, RandomMarginsMeetTheirThreshold) {
   std::mt19937_64 rng(seed(20261201));
-  const char* mus[] = {"1/4", "1/2", "3/4", "1", "2", "1/3"};
   int values = 0;
   for (int trial = 0; trial < 60; ++trial) {
-    std::string text = R"({"wrenchkit": 1, "contacts": [)";
-    const int n = 2 + static_cast<int>(rng() % 3);
-    for (int i = 0; i < n; ++i) {
-      int x = 0, y = 0;
-      while (x == 0 && y == 0) x = static_cast<int>(rng() % 7) - 3, y = static_cast<int>(rng() % 7) - 3;
-      int nx = -x + static_cast<int>(rng() % 5) - 2, ny = -y + static_cast<int>(rng() % 5) - 2;
-      if (nx == 0 && ny == 0) nx = 1;
-      text += (i ? ", " : "") + std::string("{\"at\": [") + std::to_string(x) + ", " + std::to_string(y) + "], \"normal\": [" +
-              std::to_string(nx) + ", " + std::to_string(ny) + "], \"mu\": \"" + mus[rng() % 6] + "\"}";
-    }
-    text += "]}";
+    const std::string text = random_contacts_text(rng, {"1/4", "1/2", "3/4", "1", "2", "1/3"}) + "}";
     const Scene s = scene_of(text);
     const Critical_answer a = decide_critical_mu(s, Mode::hybrid, kTol);
     ASSERT_TRUE(a.margin) << dump_failure(text, "margin");

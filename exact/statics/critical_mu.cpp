@@ -35,89 +35,47 @@ namespace {
 // Polynomials in μ with rational coefficients, lowest degree first.
 using Poly = std::vector<Rational>;
 
-Rational eval(const Poly& p, const Rational& x) {
-  Rational v = 0;
+// Horner's rule and Descartes' transforms, once for exact rationals and certified doubles (T = Rational, fl::Bounded).
+template <class T>
+T number(int k) {
+  if constexpr (std::is_same_v<T, fl::Bounded>) return fl::Bounded::exact(k);
+  else return T(k);
+}
+template <class T>
+T eval(const std::vector<T>& p, const T& x) {
+  T v = number<T>(0);
   for (std::size_t k = p.size(); k-- > 0;) v = v * x + p[k];
   return v;
 }
-Poly mul(const Poly& a, const Poly& b) {
-  if (a.empty() || b.empty()) return {};
-  Poly r(a.size() + b.size() - 1);
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < b.size(); ++j) r[i + j] += a[i] * b[j];
-  return r;
-}
-int variations(const Poly& p) {
-  int v = 0, last = 0;
-  for (const Rational& c : p) {
-    const int s = sgn(c);
-    if (s == 0) continue;
-    if (last != 0 && s != last) ++v;
-    last = s;
-  }
-  return v;
-}
-// Descartes' rule on (l, h): the roots of p there are the positive roots of (1 + x)^d p((l + h x)/(1 + x)); no sign
-// variation, no root.
-bool no_root_between(const Poly& p, const Rational& l, const Rational& h) {
-  const std::size_t d = p.size() - 1;
-  Poly q;
-  for (std::size_t k = 0; k <= d; ++k) {
-    Poly term{p[k]};
-    for (std::size_t i = 0; i < k; ++i) term = mul(term, {l, h});
-    for (std::size_t i = k; i < d; ++i) term = mul(term, {1, 1});
-    if (q.size() < term.size()) q.resize(term.size());
-    for (std::size_t i = 0; i < term.size(); ++i) q[i] += term[i];
-  }
-  return variations(q) == 0;
-}
-// No root > M: p(M + x) has no sign variation.
-bool no_root_beyond(const Poly& p, const Rational& M) {
-  Poly q;
+// Σ_k p_k (c0 + c1 x)^k (1 + x)^(pad − k), pad ≥ deg p: with (c0, c1) = (l, h) and pad = deg p, the polynomial whose
+// positive roots are p's roots in (l, h) (Descartes on an interval); with (M, 1) and pad 0 (no (1 + x) factors), p(M + x).
+template <class T>
+std::vector<T> transform(const std::vector<T>& p, const T& c0, const T& c1, std::size_t pad) {
+  std::vector<T> q(std::max(pad, p.size() - 1) + 1, number<T>(0));
   for (std::size_t k = 0; k < p.size(); ++k) {
-    Poly term{p[k]};
-    for (std::size_t i = 0; i < k; ++i) term = mul(term, {M, 1});
-    if (q.size() < term.size()) q.resize(term.size());
-    for (std::size_t i = 0; i < term.size(); ++i) q[i] += term[i];
-  }
-  return variations(q) == 0;
-}
-// p keeps one sign on the interval between `excluded` and `included` (that end included): p ≡ 0, or p(included) ≠ 0
-// and no root strictly between.
-bool constant_on(const Poly& p, const Rational& excluded, const Rational& included) {
-  if (p.empty()) return true;
-  if (eval(p, included) == 0) return false;
-  return no_root_between(p, std::min(excluded, included), std::max(excluded, included));
-}
-
-// The same tests first in certified doubles (float/bounded.h: every sign it gives is the exact one), the exact ones
-// only where a sign is uncertain — the hybrid mode's filter. A minor with its certified-double coefficients.
-struct Minor {
-  Poly p;
-  std::vector<fl::Bounded> b;
-};
-fl::Bounded eval(const std::vector<fl::Bounded>& p, const fl::Bounded& x) {
-  fl::Bounded v;
-  for (std::size_t k = p.size(); k-- > 0;) v = v * x + p[k];
-  return v;
-}
-// Certain: the sign of p(x) (positive, negative) when the doubles tell; Sign::uncertain otherwise.
-Sign sign_at(const Minor& m, const fl::Bounded& x) { return eval(m.b, x).sign(); }
-// Descartes' transform in certified doubles: true/false when every coefficient's sign is certain, else nothing.
-std::optional<bool> no_root_between(const std::vector<fl::Bounded>& p, const fl::Bounded& l, const fl::Bounded& h) {
-  const std::size_t d = p.size() - 1;
-  std::vector<fl::Bounded> q(d + 1);
-  for (std::size_t k = 0; k <= d; ++k) {
-    std::vector<fl::Bounded> t{p[k]};
-    const auto times = [&t](const fl::Bounded& c0, const fl::Bounded& c1) {
-      std::vector<fl::Bounded> r(t.size() + 1);
-      for (std::size_t i = 0; i < t.size(); ++i) r[i] = r[i] + t[i] * c0, r[i + 1] = r[i + 1] + t[i] * c1;
+    std::vector<T> t{p[k]};
+    const auto times = [&t](const T& a, const T& b) {  // t ← t · (a + b x)
+      std::vector<T> r(t.size() + 1, number<T>(0));
+      for (std::size_t i = 0; i < t.size(); ++i) r[i] = r[i] + t[i] * a, r[i + 1] = r[i + 1] + t[i] * b;
       t = std::move(r);
     };
-    for (std::size_t i = 0; i < k; ++i) times(l, h);
-    for (std::size_t i = k; i < d; ++i) times(fl::Bounded::exact(1), fl::Bounded::exact(1));
+    for (std::size_t i = 0; i < k; ++i) times(c0, c1);
+    for (std::size_t i = k; i < pad; ++i) times(number<T>(1), number<T>(1));
     for (std::size_t i = 0; i < t.size(); ++i) q[i] = q[i] + t[i];
   }
+  return q;
+}
+// The coefficients' signs have no variation: true or false, or nothing when a certified double's sign is uncertain.
+std::optional<bool> one_sign(const std::vector<Rational>& q) {
+  int last = 0;
+  for (const Rational& c : q)
+    if (sgn(c) != 0) {
+      if (last != 0 && sgn(c) != last) return false;
+      last = sgn(c);
+    }
+  return true;
+}
+std::optional<bool> one_sign(const std::vector<fl::Bounded>& q) {
   int last = 0;
   bool variation = false;
   for (const fl::Bounded& c : q) {
@@ -130,6 +88,28 @@ std::optional<bool> no_root_between(const std::vector<fl::Bounded>& p, const fl:
   }
   return !variation;
 }
+// Descartes' rule on (l, h): no sign variation, no root there; beyond M: p(M + x) without variation, no root > M.
+template <class T>
+std::optional<bool> no_root_between(const std::vector<T>& p, const T& l, const T& h) {
+  return one_sign(transform(p, l, h, p.size() - 1));
+}
+bool no_root_beyond(const Poly& p, const Rational& M) { return *one_sign(transform(p, M, Rational(1), 0)); }
+// p keeps one sign on the interval between `excluded` and `included` (that end included): p ≡ 0, or p(included) ≠ 0
+// and no root strictly between.
+bool constant_on(const Poly& p, const Rational& excluded, const Rational& included) {
+  if (p.empty()) return true;
+  if (eval(p, included) == 0) return false;
+  return *no_root_between(p, std::min(excluded, included), std::max(excluded, included));
+}
+
+// The same tests first in certified doubles (float/bounded.h: every sign it gives is the exact one), the exact ones
+// only where a sign is uncertain — the hybrid mode's filter. A minor with its certified-double coefficients.
+struct Minor {
+  Poly p;
+  std::vector<fl::Bounded> b;
+};
+// Certain: the sign of p(x) (positive, negative) when the doubles tell; Sign::uncertain otherwise.
+Sign sign_at(const Minor& m, const fl::Bounded& x) { return eval(m.b, x).sign(); }
 // The interval's ends as certified doubles, made once for every minor.
 struct Ends {
   fl::Bounded l, h, included;
