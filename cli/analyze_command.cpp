@@ -164,6 +164,9 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
   for (const Contact& c : a.scene.contacts) points += c.kind == Contact::Kind::point;
   if (points > 0 && o.mode == Mode::float_only) {
     a.skipped.push_back({"quality", "epsilon has no float twin: use --mode hybrid or exact"});
+  } else if (points > 0 && 2 * a.scene.contacts.size() > kQualityMaxL1Edges) {
+    a.skipped.push_back({"quality", std::to_string(a.scene.contacts.size()) + " contacts: epsilon is computed for up to " +
+                                        std::to_string(kQualityMaxL1Edges / 2) + " (its hull grows as their square)"});
   } else if (points > 0) {
     Quality_query q;
     q.critical_mu = false;

@@ -321,6 +321,7 @@ py::dict quality_arrays(const Doubles& points, const Doubles& normals, const Dou
       },
       [&](std::size_t row, Item& o) {
         const Quality_item& r = o.item;
+        if (r.status == Status::bad_input) throw std::invalid_argument("row " + std::to_string(row) + ": " + r.message);
         if (r.status != Status::answered) throw std::runtime_error("row " + std::to_string(row) + ": " + r.message);
         c[row] = r.answer.closure.holds;
         lo[row] = down(r.answer.lower), hi[row] = up(r.answer.upper);

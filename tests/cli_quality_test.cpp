@@ -98,6 +98,29 @@ TEST(CliQuality, Presets) {
   EXPECT_NE(clash.err.find("--preset graspit"), std::string::npos) << clash.err;
 }
 
+// Bounded work: thirty contacts pressing at a point (no friction closes nothing... every μ > 0 closes) — the critical
+// friction is refused past 24 point contacts with the reason and the way out; ε alone answers.
+TEST(CliQuality, WorkIsBounded) {
+  std::string scene = R"({"wrenchkit": 1, "contacts": [)";
+  const int pts[][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  for (int i = 0; i < 30; ++i) {
+    const auto& p = pts[i % 12];
+    const int k = 1 + i / 12;
+    scene += (i ? ", " : "") + std::string("{\"at\": [") + std::to_string(k * p[0]) + ", " + std::to_string(k * p[1]) +
+             "], \"normal\": [" + std::to_string(-p[0]) + ", " + std::to_string(-p[1]) + "], \"mu\": \"1/2\"}";
+  }
+  scene += "]}";
+  const std::string file = (fs::path(test::scratch_dir("cli_quality_test")) / "thirty.json").string();
+  std::ofstream(file) << scene;
+  const Cli_result mu = run("quality " + file);
+  EXPECT_EQ(mu.code, 2);
+  EXPECT_NE(mu.err.find("more than 24"), std::string::npos) << mu.err;
+  EXPECT_NE(mu.err.find("--only epsilon"), std::string::npos) << mu.err;
+  EXPECT_EQ(mu.out, "");
+  EXPECT_EQ(run("quality --only epsilon " + file).code, 0);
+  EXPECT_EQ(run("analyze " + file).code, 0);
+}
+
 TEST(CliQuality, Batch) {
   std::ifstream a(example("two_fingers_mu1")), b(example("two_fingers_mu0"));
   std::string sa((std::istreambuf_iterator<char>(a)), {}), sb((std::istreambuf_iterator<char>(b)), {});

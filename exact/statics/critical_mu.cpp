@@ -414,6 +414,16 @@ Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
 
 }  // namespace
 
+void check_critical_size(const Scene& scene) {
+  std::size_t points = 0;
+  for (const Contact& c : scene.contacts) points += c.kind == Contact::Kind::point;
+  if (points == 0) throw Input_error("contacts: no point contact, so no friction coefficient to find");
+  if (points > kCriticalMaxPointContacts)
+    throw Input_error("contacts: the critical friction of " + std::to_string(points) + " point contacts, more than " +
+                      std::to_string(kCriticalMaxPointContacts) + " (its minors grow as the cube of their number); ask "
+                      "for epsilon alone (--only epsilon)");
+}
+
 Critical_answer decide_critical_mu(const Scene& given, Mode mode, const Rational& tolerance) {
   // contacts read lazily (the array API's doubles, the streaming reader) get their rationals first
   std::optional<Scene> built;
@@ -423,9 +433,7 @@ Critical_answer decide_critical_mu(const Scene& given, Mode mode, const Rational
       built->contacts[i] = exact_contact(given.contacts[i]);
     }
   const Scene& scene = built ? *built : given;
-  bool point = false;
-  for (const Contact& c : scene.contacts) point = point || c.kind == Contact::Kind::point;
-  if (!point) throw Input_error("contacts: no point contact, so no friction coefficient to find");
+  check_critical_size(scene);
   if (tolerance <= 0) throw Input_error("--tolerance: " + to_string(tolerance) + " is not positive");
   Critical_answer a;
   a.closure = closure_mu(scene, mode, tolerance, Friction_scaling::common);

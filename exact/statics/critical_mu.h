@@ -66,6 +66,10 @@ inline Scene at_common_mu(const Scene& scene, const Rational& mu) { return at_mu
 // Throws Input_error for a scene without point contacts. `tolerance`: the bracket's width relative to its upper end
 // when μ* is not found rational. Mode::float_only is not offered (the caller says undecided); hybrid and exact decide
 // each step in that mode.
+// Bounded work: refused (Input_error naming the bound) past 24 point contacts — the minors grow as the cube of their
+// number (40 contacts take a second and 50 MB).
+constexpr std::size_t kCriticalMaxPointContacts = 24;
+void check_critical_size(const Scene& scene);  // the bound and the no-point-contact case, as decide_critical_mu refuses
 Critical_answer decide_critical_mu(const Scene& scene, Mode mode, const Rational& tolerance);
 
 }  // namespace wrenchkit

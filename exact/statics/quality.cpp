@@ -548,6 +548,12 @@ Quality_answer decide_quality(const Scene& given, const Quality_query& asked, Mo
     return a;
   }
   if (mode == Mode::float_only) return a;  // ε has no float twin: the caller says undecided
+  if (query.norm == Quality_norm::l1 && a.closure.generators > kQualityMaxL1Edges)
+    throw Input_error("contacts: epsilon (L1) of " + std::to_string(a.closure.generators) + " friction-cone edges, more than " +
+                      std::to_string(kQualityMaxL1Edges) + " (its hull grows as their square); the grasp is in force closure");
+  if (query.norm == Quality_norm::linf && scene.contacts.size() > kQualityMaxLinfContacts)
+    throw Input_error("contacts: epsilon (Linf) of " + std::to_string(scene.contacts.size()) + " contacts, more than " +
+                      std::to_string(kQualityMaxLinfContacts) + " (its candidate facets grow as the cube); use --norm L1");
   Int_points fast;
   if (!query.keep_planes && !irrational_torque && fast_points(scene, a.query, a, fast)) {  // rational scales, small numbers
     a.exact = true;

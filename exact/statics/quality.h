@@ -88,6 +88,11 @@ struct Quality_answer {
 // The quality of the scene's contacts (the friction reading, each contact with its own μ). Closure is decided in
 // `mode` (Mode::float_only may leave it undecided: closure.decided false and nothing else set); ε itself is exact
 // arithmetic, not computed in Mode::float_only (a closed grasp's ε is then left unset: no float twin). Throws Input_error for a scene without contacts or a question that does not apply (torque scale ≤ 0).
+//
+// Bounded work: ε of a closed grasp is refused (Input_error naming the bound) past 1024 friction-cone edges for L1
+// (the hull grows as their square: 1 000 contacts take seconds) and past 48 contacts for L∞ (its candidates grow as
+// the cube). Closure, and ε = 0 of an open grasp, have no such bound.
+constexpr std::size_t kQualityMaxL1Edges = 1024, kQualityMaxLinfContacts = 48;
 Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mode mode);
 
 // The scaled wrench of a §1 generator g of a contact with scale c: c·(fx, fy, s·(m − about × f)).
