@@ -164,13 +164,12 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
   for (const Contact& c : a.scene.contacts) points += c.kind == Contact::Kind::point;
   if (points > 0 && o.mode == Mode::float_only) {
     a.skipped.push_back({"quality", "epsilon has no float twin: use --mode hybrid or exact"});
-  } else if (points > 0 && 2 * a.scene.contacts.size() > kQualityMaxL1Edges) {
-    a.skipped.push_back({"quality", std::to_string(a.scene.contacts.size()) + " contacts: epsilon is computed for up to " +
-                                        std::to_string(kQualityMaxL1Edges / 2) + " (its hull grows as their square)"});
   } else if (points > 0) {
     Quality_query q;
     q.critical_mu = false;
-    a.quality = answered(answer_quality(a.scene, scene_text, request, q));
+    Quality_item item = answer_quality(a.scene, scene_text, request, q);
+    if (item.status == Status::bad_input) a.skipped.push_back({"quality", item.message});  // past its work bound
+    else a.quality = answered(std::move(item));
   }
   return a;
 }
@@ -223,12 +222,7 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
     std::cout << "hold — the contacts and the support's friction together (equilibrium above is the contacts alone, the "
                  "load on the support the support alone):\n"
               << hold_human(*a.hold);
-  if (a.quality) {  // (its own closure line and last lines are the analysis's)
-    std::string q = quality_human(*a.quality);
-    q = q.substr(q.find('\n') + 1);
-    q = q.substr(0, q.rfind("decided by: "));
-    std::cout << q << "  (the friction it needs: wrenchkit quality --only critical-mu)\n";
-  }
+  if (a.quality) std::cout << quality_body(*a.quality) << "  (the friction it needs: wrenchkit quality --only critical-mu)\n";
   for (const auto& [what, why] : a.skipped) std::cout << "skipped " << what << ": " << why << "\n";
   if (contacts)
     std::cout << "decided by: " << arithmetic_name(a.closure.decided_by()) << " for closure"

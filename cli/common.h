@@ -268,6 +268,7 @@ Scene_answer prepare_quality_json(const Options& o);
 Quality_query quality_query(const Options& o);  // --only, --norm, --normalize, --torque-scale, --about, --tolerance
 void write_quality(Json_writer& w, const Quality_item& r);
 std::string quality_human(const Quality_item& r);
+std::string quality_body(const Quality_item& r);  // ε and μ* without the command's closure and closing lines
 int run_dual(const Options& o, const std::string& scene_text, const std::string& source);
 int run_reuleaux(const Options& o, const std::string& scene_text, const std::string& source);
 int run_render(const Options& o, const std::string& scene_text, const std::string& source);

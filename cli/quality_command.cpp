@@ -14,7 +14,6 @@ namespace wrenchkit::cli {
 
 namespace {
 
-std::string decimal(const Rational& q, int digits) { return decimal_text(q, digits); }
 
 // "the left edge of c0 (its name)", "c2's normal", "the wrench c3".
 std::string generator_name(const Scene& scene, const Generator_ref& g) {
@@ -44,7 +43,7 @@ std::string space_text(const Quality_answer& a) {
                                          : "Linf: the sum of the contacts' cones (each normal force at most 1)")
     << "; forces " << normalization_name(a.query.normalize) << ", moments about " << vec_text(a.about) << " times "
     << (a.query.torque_radius_squared && a.torque_scale_error != 0
-            ? "1/sqrt(" + human_number(*a.query.torque_radius_squared) + ") ≈ " + decimal(a.query.torque_scale, 9)
+            ? "1/sqrt(" + human_number(*a.query.torque_radius_squared) + ") ≈ " + decimal_text(a.query.torque_scale, 9)
             : number_text(a.query.torque_scale));
   return s.str();
 }
@@ -91,7 +90,7 @@ std::string critical_text(const Critical_mu& c, bool closure) {
               : c.holds_at_critical ? "balanced at mu* and above, not below"
                                     : "balanced for every mu above mu*, not at mu* itself (nor below)");
       else
-        s << "mu* ≈ " << decimal(c.lower, 12) << ", certified in [" << human_number(c.lower) << ", " << human_number(c.upper)
+        s << "mu* ≈ " << decimal_text(c.lower, 12) << ", certified in [" << human_number(c.lower) << ", " << human_number(c.upper)
           << "] (not a rational of small height: its bracket)";
       break;
   }
@@ -105,12 +104,12 @@ std::string margin_text(const Critical_mu& c) {
     case Critical_kind::value: break;
   }
   std::ostringstream s;
-  const std::string t = c.exact() ? "t* = " + number_text(c.lower) + " exactly" : "t* ≈ " + decimal(c.lower, 12) + " (bracketed)";
+  const std::string t = c.exact() ? "t* = " + number_text(c.lower) + " exactly" : "t* ≈ " + decimal_text(c.lower, 12) + " (bracketed)";
   s << t << " — closed for every t above it; ";
   if (c.upper == 0) s << "any friction at all keeps the grasp closed";
   else if (c.upper < 1)
-    s << "margin: every mu may shrink to just above " << decimal(c.upper, 6) << " of its value and the grasp stays closed";
-  else if (c.lower >= 1) s << "the scene's friction (t = 1) is not enough: every mu must grow past " << decimal(c.lower, 6) << " times its value";
+    s << "margin: every mu may shrink to just above " << decimal_text(c.upper, 6) << " of its value and the grasp stays closed";
+  else if (c.lower >= 1) s << "the scene's friction (t = 1) is not enough: every mu must grow past " << decimal_text(c.lower, 6) << " times its value";
   else s << "the scene's friction is at the threshold";
   return s.str();
 }
@@ -157,7 +156,8 @@ void write_quality(Json_writer& w, const Quality_item& r) {
   if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
 }
 
-std::string quality_human(const Quality_item& r) {
+// The answers without the command's frame (its closure line, decided by, certificates): what analyze shows too.
+std::string quality_body(const Quality_item& r) {
   const Quality_answer& a = r.answer;
   std::ostringstream s;
   const auto critical = [&] {
@@ -169,22 +169,20 @@ std::string quality_human(const Quality_item& r) {
   };
   if (!r.epsilon) {
     critical();
-    s << "certificates accepted by the independent checker (exact arithmetic)\n";
     return s.str();
   }
-  s << "force closure: " << (a.closure.holds ? "yes" : "no") << "\n";
   s << "quality epsilon (" << space_text(a) << "):\n";
   if (!a.closure.holds) {
     s << "  epsilon = 0: the grasp is not in force closure (the twist " << twist_text(a.closure.certificate.twist)
       << " is allowed by every contact: " << motion_text(a.closure.certificate.twist) << ")\n";
   } else {
-    if (a.lower == a.upper) s << "  epsilon = " << human_number(a.lower) << " (≈ " << decimal(a.lower, 15) << "), exactly\n";
+    if (a.lower == a.upper) s << "  epsilon = " << human_number(a.lower) << " (≈ " << decimal_text(a.lower, 15) << "), exactly\n";
     else if (a.exact)
-      s << "  epsilon^2 = " << human_number(a.squared) << " (≈ " << decimal(a.squared, 15) << "), exactly; epsilon ≈ "
-        << decimal(a.lower, 15) << "\n";
+      s << "  epsilon^2 = " << human_number(a.squared) << " (≈ " << decimal_text(a.squared, 15) << "), exactly; epsilon ≈ "
+        << decimal_text(a.lower, 15) << "\n";
     else
-      s << "  epsilon ≈ " << decimal(a.lower, 15) << " (irrational with these scales; certified within "
-        << decimal(Rational(a.upper - a.lower), 2) << " in a rational bracket, given with --json)\n";
+      s << "  epsilon ≈ " << decimal_text(a.lower, 15) << " (irrational with these scales; certified within "
+        << decimal_text(Rational(a.upper - a.lower), 2) << " in a rational bracket, given with --json)\n";
     if (a.query.norm == Quality_norm::l1) {
       s << "  nearest facet: ";
       for (std::size_t k = 0; k < 3; ++k) s << (k ? ", " : "") << generator_name(r.scene, a.refs[a.nearest[k]]);
@@ -198,7 +196,14 @@ std::string quality_human(const Quality_item& r) {
       << (a.query.norm == Quality_norm::l1 ? "summing to at most 1" : "each at most 1") << "\n";
   }
   critical();
-  s << "decided by: " << arithmetic_name(decided_by(r)) << " (" << mode_name(r.mode) << " mode)\n";
+  return s.str();
+}
+
+std::string quality_human(const Quality_item& r) {
+  std::ostringstream s;
+  if (r.epsilon) s << "force closure: " << (r.answer.closure.holds ? "yes" : "no") << "\n";
+  s << quality_body(r);
+  if (r.epsilon) s << "decided by: " << arithmetic_name(decided_by(r)) << " (" << mode_name(r.mode) << " mode)\n";
   s << (r.critical ? "certificates" : "certificate") << " accepted by the independent checker (exact arithmetic)\n";
   return s.str();
 }

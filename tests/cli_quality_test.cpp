@@ -98,8 +98,8 @@ TEST(CliQuality, Presets) {
   EXPECT_NE(clash.err.find("--preset graspit"), std::string::npos) << clash.err;
 }
 
-// Bounded work: thirty contacts pressing at a point (no friction closes nothing... every μ > 0 closes) — the critical
-// friction is refused past 24 point contacts with the reason and the way out; ε alone answers.
+// Bounded work: thirty contacts on three rings pressing toward the centre — the critical friction is refused past 24
+// point contacts with the reason and the way out; ε alone answers, and analyze.
 TEST(CliQuality, WorkIsBounded) {
   std::string scene = R"({"wrenchkit": 1, "contacts": [)";
   const int pts[][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};

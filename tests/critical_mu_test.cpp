@@ -100,6 +100,12 @@ TEST(CriticalMuGolden, FrictionMargin) {
   EXPECT_FALSE(decide_closure(at_mu(s, Rational(2, 3), Friction_scaling::proportional), Property::force_closure, Mode::exact, false).holds);
   EXPECT_TRUE(decide_closure(at_mu(s, Rational(2, 3) + Rational(1, 1000000), Friction_scaling::proportional), Property::force_closure,
                              Mode::exact, false).holds);
+  // every contact with the same μ0: the margin is the common μ* over μ0 (here μ0 = 1: both 1/2)
+  const char* same = R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": 1}, {"at": [1, 1], "normal": [-1, 0], "mu": 1}]})";
+  const Critical_answer b = answer(same);
+  ASSERT_TRUE(b.margin);
+  EXPECT_EQ(b.margin->lower, b.closure.lower);
+  EXPECT_EQ(b.margin->lower, Rational(1, 2));
   // frictionless contacts only: no margin to give
   EXPECT_FALSE(answer(R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0]}, {"at": [1, 1], "normal": [-1, 0]}]})").margin);
 }
@@ -210,7 +216,6 @@ TEST(CriticalMuProperty, RandomMarginsMeetTheirThreshold) {
     ++values;
     ASSERT_FALSE(closed_at(m.lower)) << dump_failure(text, "margin");
     ASSERT_TRUE(closed_at(m.upper * (1 + step) + step)) << dump_failure(text, "margin");
-    // the margin and the common mu agree where every contact has the same mu
   }
   EXPECT_GT(values, 20);
 }

@@ -422,6 +422,15 @@ class Reader {
 
 }  // namespace
 
+const Scene& exact_contacts(const Scene& s, std::optional<Scene>& storage) {
+  for (std::size_t i = 0; i < s.contacts.size(); ++i)
+    if (s.contacts[i].exact_pending) {
+      if (!storage) storage = s;
+      storage->contacts[i] = exact_contact(s.contacts[i]);
+    }
+  return storage ? *storage : s;
+}
+
 Contact exact_contact(const Contact& c) {
   if (!c.exact_pending) return c;
   Contact e = c;

@@ -123,6 +123,9 @@ struct Scene {
   std::optional<Support> support;
 };
 
+// The scene with every contact's rationals filled: `s` itself when none was read lazily, else a copy kept in `storage`.
+const Scene& exact_contacts(const Scene& s, std::optional<Scene>& storage);
+
 // Reads and validates a scene: the one scene reader of the engine. Throws Input_error naming the JSON path
 // and the offending text (or "SOURCE:LINE:COL: invalid JSON: …"). `source` names the input in messages.
 // `lazy`: contacts keep their numbers as text and certified doubles (for the float twin) and build

@@ -1,6 +1,8 @@
 // [RF-1] Distance of a scene to a degenerate boundary (exact/statics/boundary_distance.h).
 #include "exact/statics/boundary_distance.h"
 
+#include "exact/statics/critical_mu.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -8,6 +10,7 @@
 #include <vector>
 
 #include "core/dual_cone.h"
+#include "exact/statics/critical_mu.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/statics/generators.h"
 
@@ -196,16 +199,6 @@ Predicate_margin predicate_margin(const Scene& scene, Reading reading, const Vec
   return kl.margin();
 }
 
-Scene scale_friction(const Scene& scene, const Rational& s) {
-  Scene out = scene;
-  for (Contact& c : out.contacts) {
-    if (c.kind != Contact::Kind::point) continue;
-    c = exact_contact(c);
-    c.mu *= s;
-    c.has_twin = false;  // the twin is derived from the new rationals
-  }
-  return out;
-}
 
 Boundary_distance boundary_distance(const Scene& scene) {
   Boundary_distance b;
@@ -218,11 +211,11 @@ Boundary_distance boundary_distance(const Scene& scene) {
   }
   if (has_friction(scene)) {
     b.closure_flip = find_flip([&](const Rational& s) {
-      return decide_closure(scale_friction(scene, s), Property::force_closure, Mode::hybrid, false).holds;
+      return decide_closure(at_mu(scene, s, Friction_scaling::proportional), Property::force_closure, Mode::hybrid, false).holds;
     });
     if (scene.load)
       b.equilibrium_flip = find_flip([&](const Rational& s) {
-        return decide_equilibrium(scale_friction(scene, s), Mode::hybrid, false).balanced;
+        return decide_equilibrium(at_mu(scene, s, Friction_scaling::proportional), Mode::hybrid, false).balanced;
       });
   }
   auto consider = [&](std::optional<double> d, const char* what) {

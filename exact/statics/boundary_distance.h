@@ -58,7 +58,6 @@ Boundary_distance boundary_distance(const Scene& scene);
 // and rank W = 3).
 Predicate_margin predicate_margin(const Scene& scene, Reading reading, const Vec3q* load = nullptr);
 
-// The scene with every contact's μ multiplied by s ≥ 0 (support friction unchanged).
-Scene scale_friction(const Scene& scene, const Rational& s);
+// (The scene with every contact's μ multiplied by s: at_mu(scene, s, Friction_scaling::proportional), critical_mu.h.)
 
 }  // namespace wrenchkit

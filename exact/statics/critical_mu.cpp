@@ -24,9 +24,13 @@ const char* critical_kind_name(Critical_kind k) {
 
 Scene at_mu(const Scene& scene, const Rational& t, Friction_scaling scaling) {
   Scene s = scene;
-  for (Contact& c : s.contacts)
-    if (c.kind == Contact::Kind::point)
-      c.mu = scaling == Friction_scaling::common ? t : Rational(t * c.mu), c.mu_given = true, c.has_twin = false;
+  for (Contact& c : s.contacts) {
+    if (c.kind != Contact::Kind::point) continue;
+    c = exact_contact(c);
+    c.mu = scaling == Friction_scaling::common ? t : Rational(t * c.mu);
+    c.mu_given = true;
+    c.has_twin = false;  // the twin is derived from the new rationals
+  }
   return s;
 }
 
@@ -426,13 +430,8 @@ void check_critical_size(const Scene& scene) {
 
 Critical_answer decide_critical_mu(const Scene& given, Mode mode, const Rational& tolerance) {
   // contacts read lazily (the array API's doubles, the streaming reader) get their rationals first
-  std::optional<Scene> built;
-  for (std::size_t i = 0; i < given.contacts.size(); ++i)
-    if (given.contacts[i].exact_pending) {
-      if (!built) built = given;
-      built->contacts[i] = exact_contact(given.contacts[i]);
-    }
-  const Scene& scene = built ? *built : given;
+  std::optional<Scene> storage;
+  const Scene& scene = exact_contacts(given, storage);
   check_critical_size(scene);
   if (tolerance <= 0) throw Input_error("--tolerance: " + to_string(tolerance) + " is not positive");
   Critical_answer a;

@@ -263,7 +263,8 @@ long double approx(const Integer& x) { return static_cast<long double>(x.get_d()
 long double approx(wide::i128 x) { return static_cast<long double>(x); }
 
 // (off/|n|)² of plane a below that of plane b (offsets > 0): with `filter`, in long double when the two differ by more
-// than 1e-9 relative; else, or without it, exactly in GMP's integers.
+// than 1e-9 relative (each ratio is within 3e-15 of the true one; an overflow gives NaN or ∞ and falls through:
+// proofs/notes/QL-1-quality.md §3, the engine's filters); else, or without it, exactly in GMP's integers.
 template <class W>
 bool nearer(const W& off_a, const std::array<W, 3>& n_a, const W& off_b, const std::array<W, 3>& n_b, bool filter) {
   if (filter) {
@@ -517,13 +518,8 @@ Quality_query resolved(const Scene& scene, Quality_query q) {
 
 Quality_answer decide_quality(const Scene& given, const Quality_query& asked, Mode mode) {
   // contacts read lazily (the array API's doubles, the streaming reader) get their rationals first
-  std::optional<Scene> read;
-  for (std::size_t i = 0; i < given.contacts.size(); ++i)
-    if (given.contacts[i].exact_pending) {
-      if (!read) read = given;
-      read->contacts[i] = exact_contact(given.contacts[i]);
-    }
-  const Scene& scene = read ? *read : given;
+  std::optional<Scene> storage;
+  const Scene& scene = exact_contacts(given, storage);
   if (scene.contacts.empty()) throw Input_error("contacts: the scene has no contacts, so no grasp to measure");
   const Quality_query query = resolved(scene, asked);
   if (query.torque_scale <= 0)
