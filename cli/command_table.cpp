@@ -219,6 +219,10 @@ const Option kOnly{"only", "epsilon|critical-mu",
                      else if (v == "critical-mu") o.quality.epsilon = false;
                      else bad_value(n, v, "is not one of epsilon, critical-mu");
                    }};
+const Option kContactMargins{"contact-margins", nullptr,
+                             "also each contact's distance to a degenerate configuration: the least relative volume "
+                             "|det|/(|u||v||w|) of three friction-cone edges holding one of its edges (exact, squared)",
+                             [](Options& o, S, S) { o.quality.contact_margins = true; }};
 const Option kPreset{"preset", "graspit|dexnet",
                      "a peer's conventions: graspit — L1, unit-normal edges, moments about body.com divided by the body's "
                      "largest radius from it (its outline's farthest vertex; certified when irrational); dexnet — L1, "
@@ -553,7 +557,7 @@ std::vector<Command> make_table() {
        "exact when rational (the two-finger grasp: the tangent of the contact line's angle), else a bracket of\n"
        "relative width --tolerance; \"always\" (closed without friction) or \"never\" said as such; certificates on\n"
        "both sides (the property failing just below and holding at or above, each re-verified).\n",
-       join({{kHelp, kJson, kOnly, kPreset, kNorm, kNormalize, kTorqueScale, kAbout,
+       join({{kHelp, kJson, kOnly, kContactMargins, kPreset, kNorm, kNormalize, kTorqueScale, kAbout,
               with_help(kTolerance, "the bracket's width relative to its lower end when epsilon is irrational (EPS > 0, "
                                     "exact: 1e-12 (the default), 1/1000)"),
               with_help(kMode,

@@ -126,6 +126,24 @@ void write_quality(Json_writer& w, const Quality_item& r) {
     w.end_object();
     if (r.critical->margin) write_critical(w.key("friction_margin"), *r.critical->margin, r.margin_certificate);
   }
+  if (r.contact_margins) {
+    const Contact_margins& m = *r.contact_margins;
+    w.key("contact_margins").object().member("exact", m.exact).member("torque_scale", m.torque_scale);
+    w.key("about").rationals(std::array<Rational, 2>{m.about.x, m.about.y});
+    w.key("contacts").array();
+    for (const Contact_margin& c : m.contacts) {
+      w.object().member("contact", c.contact).member("name", r.scene.contacts[c.contact].name);
+      if (c.squared) {
+        w.member("squared", *c.squared).key("relative_volume_approx").raw(float_number(std::sqrt(c.squared->get_d())));
+        w.key("nearest").array();
+        for (const Generator_ref& g : c.nearest)
+          w.object().member("contact", g.contact).member("edge", edge_name(g.edge)).end_object();
+        w.end_array();
+      }
+      w.member("degenerate_triples", c.zeros).member("triples", c.triples).end_object();
+    }
+    w.end_array().end_object();
+  }
   if (!r.epsilon) return;  // ε not asked
   w.member("force_closure", a.closure.holds);
   w.key("epsilon").object().member("lower", a.lower).member("upper", a.upper);
@@ -167,8 +185,30 @@ std::string quality_body(const Quality_item& r) {
     if (r.critical->equilibrium) s << "  equilibrium of the load: " << critical_text(*r.critical->equilibrium, false) << "\n";
     if (r.critical->margin) s << "friction margin (every contact's own mu times one factor t): " << margin_text(*r.critical->margin) << "\n";
   };
+  const auto margins = [&] {
+    if (!r.contact_margins) return;
+    const Contact_margins& m = *r.contact_margins;
+    s << "contact margins (the least relative volume |det|/(|u||v||w|) of three edges holding the contact's own; 0: "
+         "degenerate now; moments about "
+      << vec_text(m.about) << " times " << (m.exact ? number_text(m.torque_scale) : "≈ " + decimal_text(m.torque_scale, 9))
+      << "):\n";
+    for (const Contact_margin& c : m.contacts) {
+      const std::string& name = r.scene.contacts[c.contact].name;
+      s << "  c" << c.contact << (name.empty() ? "" : " (" + name + ")") << ": ";
+      if (!c.squared) {
+        s << "no three edges to measure\n";
+        continue;
+      }
+      if (*c.squared == 0) s << "0 — degenerate: " << c.zeros << " of its " << c.triples << " triples are coplanar, e.g. ";
+      else s << "≈ " << decimal_text(Rational(c.squared->get_d() > 0 ? std::sqrt(c.squared->get_d()) : 0.0), 6)
+             << " (squared " << human_number(*c.squared) << (m.exact ? ", exactly" : "") << "), nearest: ";
+      for (std::size_t k = 0; k < 3; ++k) s << (k ? ", " : "") << generator_name(r.scene, c.nearest[k]);
+      s << "\n";
+    }
+  };
   if (!r.epsilon) {
     critical();
+    margins();
     return s.str();
   }
   s << "quality epsilon (" << space_text(a) << "):\n";
@@ -196,6 +236,7 @@ std::string quality_body(const Quality_item& r) {
       << (a.query.norm == Quality_norm::l1 ? "summing to at most 1" : "each at most 1") << "\n";
   }
   critical();
+  margins();
   return s.str();
 }
 

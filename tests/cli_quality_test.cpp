@@ -21,6 +21,11 @@ using test::Cli_result;
 Cli_result run(const std::string& args, const std::string& stdin_text = "") {
   return test::run_cli(WRENCHKIT_CLI, "", args, stdin_text, "cli_quality_test");
 }
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
 std::string example(const std::string& name) { return test::source_dir() + "/proofs/examples/" + name + ".scene.json"; }
 
 TEST(CliQuality, TwoFingersByHand) {
@@ -119,6 +124,39 @@ TEST(CliQuality, WorkIsBounded) {
   EXPECT_EQ(mu.out, "");
   EXPECT_EQ(run("quality --only epsilon " + file).code, 0);
   EXPECT_EQ(run("analyze " + file).code, 0);
+}
+
+// Contact margins worked by hand (moments about the origin, torque scale 1): three frictionless contacts whose
+// wrenches (1, 0, 0), (1, 0, −1), (0, 1, 1) have determinant 1 and squared lengths 1, 2, 2 — 1/4 for each; a
+// frictional contact at the origin (its plane: W = (0, 1, 0), (−1, 0, 0)) and a frictionless one at (1, 0) pushing up
+// ((0, 1, 1)) — 1/2; the second moved to (0, 1) pushing down: its line passes through the first contact — 0.
+TEST(CliQuality, ContactMarginsByHand) {
+  const auto margins = [](const std::string& contacts, const std::string& extra = "") {
+    const std::string file = (fs::path(test::scratch_dir("cli_quality_test")) / "margins.json").string();
+    std::ofstream(file) << R"({"wrenchkit": 1, "contacts": [)" + contacts + "]}";
+    return run("quality --json --only epsilon --contact-margins" + extra + " " + file);
+  };
+  const Cli_result a = margins(R"({"at": [0, 0], "normal": [1, 0]}, {"at": [0, 1], "normal": [1, 0]}, {"at": [1, 0], "normal": [0, 1]})");
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_EQ(count(a.out, R"("squared": "1/4")"), 3u) << a.out;
+  EXPECT_NE(a.out.find(R"("relative_volume_approx": 0.5,)"), std::string::npos) << a.out;
+  const Cli_result b = margins(R"({"at": [0, 0], "normal": [0, 1], "mu": 1}, {"at": [1, 0], "normal": [0, 1]})");
+  ASSERT_EQ(b.code, 0) << b.err;
+  EXPECT_EQ(count(b.out, R"("squared": "1/2")"), 2u) << b.out;
+  const Cli_result c = margins(R"({"at": [0, 0], "normal": [0, 1], "mu": 1}, {"at": [0, 1], "normal": [0, -1]})");
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_EQ(count(c.out, R"("squared": "0", "relative_volume_approx": 0,)"), 2u) << c.out;
+  EXPECT_EQ(count(c.out, R"("degenerate_triples": 1)"), 2u) << c.out;
+  const Cli_result text = run("quality --only critical-mu --contact-margins " + example("two_fingers_mu1"));
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("contact margins (the least relative volume"), std::string::npos) << text.out;
+  // bounded: 49 frictional contacts are 98 edges
+  std::string many;
+  for (int i = 0; i < 49; ++i) many += (i ? ", " : "") + std::string(R"({"at": [)") + std::to_string(i) + R"(, 0], "normal": [0, 1], "mu": 1})";
+  const Cli_result big = margins(many);
+  EXPECT_EQ(big.code, 2);
+  EXPECT_NE(big.err.find("more than 96"), std::string::npos) << big.err;
+  EXPECT_EQ(big.out, "");
 }
 
 TEST(CliQuality, Batch) {

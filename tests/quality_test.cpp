@@ -240,5 +240,75 @@ TEST(QualityOracle, FastPathAgreesWithTheGeneralOne) {
   EXPECT_GT(fast_closed, 60);
 }
 
+
+// [QL-1 §6] Contact margins: against a brute force in doubles written from the definition (every triple of edges, a
+// contact's two edges replaced by its normal and tangent wrenches), and invariant — exactly — under a rigid motion of
+// the scene that carries the moments' point along (the rotation by (3/5, 4/5) and a translation) and under scaling
+// every normal.
+TEST(QualityOracle, ContactMarginsAgainstTheirDefinition) {
+  std::mt19937_64 rng(seed(20261129));
+  const auto moved = [](const Scene& s) {
+    Scene t = s;
+    const Rational c(3, 5), d(4, 5);
+    for (Contact& k : t.contacts) {
+      k = exact_contact(k);
+      k.at = {c * k.at.x - d * k.at.y + 7, d * k.at.x + c * k.at.y - 2};
+      k.normal = {3 * (c * k.normal.x - d * k.normal.y), 3 * (d * k.normal.x + c * k.normal.y)};
+      k.has_twin = false;
+    }
+    return t;
+  };
+  int zeros = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 2 + static_cast<int>(rng() % 4);
+    const std::string text = inward_grasp(rng, n);
+    const Scene scene = scene_of(text);
+    if (scene.contacts.empty()) continue;
+    Quality_query q;
+    q.about = Vec2{0, 0};
+    const Contact_margins m = contact_margins(scene, q);
+    Quality_query q2;
+    q2.about = Vec2{7, -2};
+    const Contact_margins m2 = contact_margins(moved(scene), q2);
+    ASSERT_TRUE(m.exact);
+    // the brute force
+    struct D { double x, y, z; };
+    const auto w = [](double px, double py, double fx, double fy) { return D{fx, fy, px * fy - py * fx}; };
+    const auto vol2 = [](D a, D b, D c) {
+      const double det = a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+      const auto n2 = [](D v) { return v.x * v.x + v.y * v.y + v.z * v.z; };
+      return det * det / (n2(a) * n2(b) * n2(c));
+    };
+    std::vector<std::pair<std::size_t, D>> edges;
+    std::vector<std::array<D, 2>> plane;
+    for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
+      const Contact& k = exact_contact(scene.contacts[i]);
+      const double px = k.at.x.get_d(), py = k.at.y.get_d(), nx = k.normal.x.get_d(), ny = k.normal.y.get_d(), mu = k.mu.get_d();
+      plane.push_back({w(px, py, nx, ny), w(px, py, -ny, nx)});
+      if (mu == 0) edges.push_back({i, w(px, py, nx, ny)});
+      else edges.push_back({i, w(px, py, nx - mu * ny, ny + mu * nx)}), edges.push_back({i, w(px, py, nx + mu * ny, ny - mu * nx)});
+    }
+    std::vector<double> best(scene.contacts.size(), 2.0);
+    for (std::size_t a = 0; a < edges.size(); ++a)
+      for (std::size_t b = a + 1; b < edges.size(); ++b)
+        for (std::size_t c = b + 1; c < edges.size(); ++c) {
+          const std::size_t ca = edges[a].first, cb = edges[b].first, cc = edges[c].first;
+          const double v = ca == cb   ? vol2(plane[ca][0], plane[ca][1], edges[c].second)
+                           : cb == cc ? vol2(edges[a].second, plane[cb][0], plane[cb][1])
+                                      : vol2(edges[a].second, edges[b].second, edges[c].second);
+          for (std::size_t k : {ca, cb, cc}) best[k] = std::min(best[k], v);
+        }
+    for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
+      ASSERT_EQ(m.contacts[i].squared.has_value(), best[i] <= 1.0) << dump_failure(text, "contact_margins");
+      if (!m.contacts[i].squared) continue;
+      EXPECT_NEAR(m.contacts[i].squared->get_d(), best[i], 1e-12) << i << " " << dump_failure(text, "contact_margins");
+      ASSERT_EQ(*m.contacts[i].squared, *m2.contacts[i].squared) << i << " " << dump_failure(text, "contact_margins");
+      zeros += *m.contacts[i].squared == 0;
+      ASSERT_EQ(*m.contacts[i].squared == 0, m.contacts[i].zeros > 0) << dump_failure(text, "contact_margins");
+    }
+  }
+  EXPECT_GT(zeros, 0);  // (the small integer grid meets degenerate triples)
+}
+
 }  // namespace
 }  // namespace wrenchkit

@@ -11,6 +11,7 @@ void decide(std::string_view text, const Request& request, const Quality_query& 
   std::vector<std::string_view> certificates;
   r.epsilon = query.epsilon;
   if (query.critical_mu) check_critical_size(r.scene);  // (before ε's work, which would be thrown away)
+  if (query.contact_margins) r.contact_margins = contact_margins(r.scene, query);  // (its bound refused first too)
   if (query.epsilon) {
     r.answer = decide_quality(r.scene, query, request.mode);
     if (!r.answer.closure.decided) throw Undecided_error("force closure is undecided by the float twin alone");

@@ -29,6 +29,7 @@ struct Quality_item {
   std::string certificate;  // the certificate the independent checker accepted
   std::optional<Critical_answer> critical;                // query.critical_mu
   std::string closure_mu_certificate, balance_mu_certificate, margin_certificate;  // accepted by the checker
+  std::optional<Contact_margins> contact_margins;  // query.contact_margins: a measurement, exact (no certificate)
 };
 
 // Reads `text` (eagerly) and answers; never throws.

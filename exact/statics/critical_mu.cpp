@@ -2,6 +2,8 @@
 #include "exact/statics/critical_mu.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <optional>
 #include <type_traits>
 #include <stdexcept>
@@ -55,17 +57,24 @@ T eval(const std::vector<T>& p, const T& x) {
 // positive roots are p's roots in (l, h) (Descartes on an interval); with (M, 1) and pad 0 (no (1 + x) factors), p(M + x).
 template <class T>
 std::vector<T> transform(const std::vector<T>& p, const T& c0, const T& c1, std::size_t pad) {
-  std::vector<T> q(std::max(pad, p.size() - 1) + 1, number<T>(0));
+  constexpr std::size_t kMax = 5;  // (degree ≤ 3 here: minors of 3×3 at most)
+  const std::size_t n = std::max(pad, p.size() - 1) + 1;
+  if (n > kMax - 1) throw std::logic_error("critical mu: a polynomial beyond degree 3");
+  std::vector<T> q(n, number<T>(0));
+  std::array<T, kMax> t, r;
   for (std::size_t k = 0; k < p.size(); ++k) {
-    std::vector<T> t{p[k]};
-    const auto times = [&t](const T& a, const T& b) {  // t ← t · (a + b x)
-      std::vector<T> r(t.size() + 1, number<T>(0));
-      for (std::size_t i = 0; i < t.size(); ++i) r[i] = r[i] + t[i] * a, r[i + 1] = r[i + 1] + t[i] * b;
-      t = std::move(r);
+    std::size_t m = 1;
+    t[0] = p[k];
+    const auto times = [&](const T& a, const T& b) {  // t ← t · (a + b x)
+      r[m] = t[m - 1] * b;
+      for (std::size_t i = m - 1; i > 0; --i) r[i] = t[i] * a + t[i - 1] * b;
+      r[0] = t[0] * a;
+      ++m;
+      std::swap(t, r);
     };
     for (std::size_t i = 0; i < k; ++i) times(c0, c1);
     for (std::size_t i = k; i < pad; ++i) times(number<T>(1), number<T>(1));
-    for (std::size_t i = 0; i < t.size(); ++i) q[i] = q[i] + t[i];
+    for (std::size_t i = 0; i < m; ++i) q[i] = q[i] + t[i];
   }
   return q;
 }
@@ -108,9 +117,17 @@ bool constant_on(const Poly& p, const Rational& excluded, const Rational& includ
 
 // The same tests first in certified doubles (float/bounded.h: every sign it gives is the exact one), the exact ones
 // only where a sign is uncertain — the hybrid mode's filter. A minor with its certified-double coefficients.
+// The rationals are made when an exact test first asks for them (the doubles decide most tests): from 128-bit
+// integers for a small scene, else given at once.
 struct Minor {
-  Poly p;
   std::vector<fl::Bounded> b;
+  std::vector<wide::i128> small;
+  mutable Poly exact;
+  const Poly& p() const {
+    if (exact.empty())
+      for (const wide::i128 x : small) exact.push_back(Rational(integer_of(x)));
+    return exact;
+  }
 };
 // Certain: the sign of p(x) (positive, negative) when the doubles tell; Sign::uncertain otherwise.
 Sign sign_at(const Minor& m, const fl::Bounded& x) { return eval(m.b, x).sign(); }
@@ -121,7 +138,6 @@ struct Ends {
       : l(to_bounded(std::min(excluded, in))), h(to_bounded(std::max(excluded, in))), included(to_bounded(in)) {}
 };
 bool constant_on(const Minor& m, const Rational& excluded, const Rational& included, const Ends* filter) {
-  if (m.p.empty()) return true;
   if (filter) {
     const Sign at = sign_at(m, filter->included);
     if (at == Sign::zero) return false;
@@ -130,7 +146,7 @@ bool constant_on(const Minor& m, const Rational& excluded, const Rational& inclu
       if (r) return *r;
     }
   }
-  return constant_on(m.p, excluded, included);
+  return constant_on(m.p(), excluded, included);
 }
 // A bound on the absolute values of p's roots (Cauchy): 1 + max |c_k / c_lead|.
 Rational root_bound(const Poly& p) {
@@ -192,17 +208,17 @@ std::vector<Minor> minors_in(const std::vector<std::array<std::array<T, 3>, 2>>&
     const V c = cross(y, z);
     return T(x[0] * c[0] + x[1] * c[1] + x[2] * c[2]);
   };
-  const auto q = [](const T& x) {
-    if constexpr (std::is_same_v<T, Integer>) return Rational(x);
-    else return Rational(integer_of(x));
-  };
   std::vector<Minor> out;
   const auto keep = [&](std::initializer_list<T> coefficients) {
     std::vector<T> c(coefficients);
     while (!c.empty() && c.back() == 0) c.pop_back();
     if (c.empty()) return;
     Minor m;
-    for (const T& x : c) m.p.push_back(q(x)), m.b.push_back(bounded_of(x));
+    for (const T& x : c) {
+      m.b.push_back(bounded_of(x));
+      if constexpr (std::is_same_v<T, Integer>) m.exact.push_back(Rational(x));
+      else m.small.push_back(x);
+    }
     out.push_back(std::move(m));
   };
   for (const auto& f : F)
@@ -256,12 +272,11 @@ bool all_constant_on(const std::vector<Minor>& P, const Rational& excluded, cons
 bool is_root(const std::vector<Minor>& P, const Rational& x, bool filter) {
   const fl::Bounded xb = to_bounded(x);
   for (const Minor& m : P) {
-    if (m.p.empty()) continue;
     if (filter) {
       const Sign g = sign_at(m, xb);
       if (g == Sign::positive || g == Sign::negative) continue;
     }
-    if (eval(m.p, x) == 0) return true;
+    if (eval(m.p(), x) == 0) return true;
   }
   return false;
 }
@@ -297,12 +312,112 @@ Rational two_to(int bits) {
   return Rational(p);
 }
 
+// Where the search looks first: the minors' positive real roots, approximately, in doubles — each monotone piece of a
+// minor (split at its critical points, up to its Cauchy bound) with a sign change is solved by Newton's steps kept
+// inside a shrinking bracket. Only hints: every answer is still decided and proved exactly, a wrong hint costs time.
+void positive_roots(const std::vector<fl::Bounded>& b, std::vector<double>& out) {
+  double c[4] = {0, 0, 0, 0};
+  std::size_t n = std::min<std::size_t>(b.size(), 4);
+  for (std::size_t k = 0; k < n; ++k) c[k] = b[k].v;
+  while (n > 0 && c[n - 1] == 0) --n;
+  if (n < 2) return;
+  const std::size_t deg = n - 1;
+  const auto f = [&](double x) { double v = 0; for (std::size_t k = n; k-- > 0;) v = v * x + c[k]; return v; };
+  const auto df = [&](double x) { double v = 0; for (std::size_t k = n; k-- > 1;) v = v * x + k * c[k]; return v; };
+  double bound = 0;
+  for (std::size_t k = 0; k < deg; ++k) bound = std::max(bound, std::abs(c[k] / c[deg]));
+  bound = 1 + bound;
+  if (!std::isfinite(bound)) return;
+  double pts[4] = {0, bound, bound, bound};
+  std::size_t np = 1;
+  const auto critical = [&](double x) { if (x > 0 && x < bound) pts[np++] = x; };
+  if (deg == 2) critical(-c[1] / (2 * c[2]));
+  if (deg == 3) {  // f' = 3c3 x² + 2c2 x + c1
+    const double A = 3 * c[3], B = 2 * c[2], C = c[1], disc = B * B - 4 * A * C;
+    if (disc >= 0) {
+      const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+      if (q != 0) critical(C / q);
+      critical(q / A);
+    }
+  }
+  pts[np++] = bound;
+  for (std::size_t i = 1; i < np; ++i)  // (insertion: at most four points)
+    for (std::size_t j = i; j > 0 && pts[j] < pts[j - 1]; --j) std::swap(pts[j], pts[j - 1]);
+  for (std::size_t i = 0; i + 1 < np; ++i) {
+    double lo = pts[i], hi = pts[i + 1], flo = f(lo), fhi = f(hi);
+    if (flo == 0) {
+      if (lo > 0) out.push_back(lo);
+      continue;
+    }
+    if ((flo < 0) == (fhi < 0) || fhi == 0) continue;  // (a root at hi is the next piece's lo, or the bound's: none)
+    double x = (lo + hi) / 2;
+    for (int it = 0; it < 100; ++it) {
+      const double fx = f(x);
+      if (fx == 0) break;
+      ((fx < 0) == (flo < 0) ? lo : hi) = x;
+      const double d = df(x), step = d != 0 ? fx / d : 0, next = x - step;
+      const double y = (d != 0 && next > lo && next < hi) ? next : (lo + hi) / 2;
+      if (std::abs(y - x) <= 1e-16 * std::abs(x) || hi - lo <= 1e-16 * hi) { x = y; break; }
+      x = y;
+    }
+    out.push_back(x);
+  }
+}
+std::vector<double> root_hints(const std::vector<Minor>& P) {
+  std::vector<double> r;
+  for (const Minor& m : P) positive_roots(m.b, r);
+  std::sort(r.begin(), r.end());
+  std::vector<double> u;
+  for (const double x : r)
+    if (std::isfinite(x) && (u.empty() || x - u.back() > 1e-12 * std::max(1.0, x))) u.push_back(x);
+  return u;
+}
+
+// The first bracket from the hints r: the property fails at lo (0) and, by a binary search over points in the gaps
+// between consecutive hints (one decision per halving), fails at the last gap point below a hint and holds at the next
+// gap point; the hint between them is returned. `top`: a point known to hold (balance's bound), else the point beyond
+// the last hint is decided, and past it, when it fails (a root the doubles missed), doubling takes over (no hint).
+template <class Holds>
+std::optional<double> narrow(const std::vector<double>& r, Rational& lo, Rational& hi, const std::optional<Rational>& top,
+                             Holds holds) {
+  const std::size_t K = r.size();
+  const auto gap = [&](std::size_t j) -> Rational {  // a simple rational between r[j−1] and r[j] (j = K: beyond)
+    if (j == K) return top ? *top : Rational(std::ceil(2 * r[K - 1] + 1));
+    const double w = r[j] - (j ? r[j - 1] : 0.0);
+    return simplest(Rational(r[j] - 3 * w / 4), Rational(r[j] - w / 4));
+  };
+  if (K > 0) {
+    hi = gap(K);
+    if (top || holds(hi, false)) {
+      std::size_t L = 0, H = K;  // fails at gap(L) (0 for L = 0), holds at gap(H)
+      while (H - L > 1) {
+        const std::size_t mid = (L + H) / 2;
+        const Rational g = gap(mid);
+        if (g <= lo || g >= hi) break;  // (hints too close for the doubles: the search below goes on from here)
+        (holds(g, false) ? H : L) = mid;
+        (H == mid ? hi : lo) = g;
+      }
+      if (H - L == 1) return r[H - 1];
+      return std::nullopt;
+    }
+    lo = hi;
+  }
+  if (top) return hi = *top, std::nullopt;
+  hi = lo == 0 ? Rational(1) : Rational(lo * 2);
+  for (int guard = 0; !holds(hi, false); ++guard) {
+    if (guard > 100000) throw std::logic_error("critical mu: the property never holds although the limit cone does");
+    lo = hi, hi *= 2;
+  }
+  return std::nullopt;
+}
+
 // The search both properties share. `holds(μ, certify)`: the property at μ (certify: keep its certificate as the
 // `below` or `above` evidence). Closure holds on an open half-line (μ*, ∞) (`open_set`); balance on [μ*, ∞) or, where
-// the cone at μ* holds a line, (μ*, ∞).
+// the cone at μ* holds a line, (μ*, ∞). `hint`: μ* approximately (a root of a minor in doubles, the only one between
+// lo and hi as far as the doubles tell).
 template <class Holds>
 void search(Critical_mu& out, const std::vector<Minor>& P, Rational lo, Rational hi, const Rational& tol, bool open_set,
-            bool filter, Holds holds) {
+            bool filter, Holds holds, std::optional<double> hint) {
   const auto bisect_until = [&](const Rational& width) {
     while (hi - lo > width) {
       const Rational mid = (lo + hi) / 2;
@@ -314,12 +429,10 @@ void search(Critical_mu& out, const std::vector<Minor>& P, Rational lo, Rational
   // holds at s and fails at other —, tried from the first bracket's far end halving toward s, then its simplest
   // rational in the outer half (a readable μ).
   const Rational lo0 = lo, hi0 = hi;
-  for (int bits : {32, 64, 128, 256}) {
-    bisect_until((hi + 1) / two_to(bits));  // (absolute near 0: μ* may be 0)
-    const Rational s = simplest(lo, hi);
-    if (!is_root(P, s, filter)) continue;
-    const bool at_s = holds(s, false);
-    if (at_s && open_set) continue;  // (closed at s: s is above μ*)
+  const auto exact_at = [&](const Rational& s) {
+    if (!is_root(P, s, filter)) return false;
+    const bool at_s = holds(s, true);  // (certified at once: a later answer overwrites the evidence it leaves)
+    if (at_s && open_set) return false;  // (closed at s: s is above μ*)
     // from the first bracket's far end, halving a few times, then from this bracket's end (close to s: it passes
     // unless a root of another minor lies between) halving further
     Rational other = at_s ? lo0 : hi0;
@@ -328,17 +441,27 @@ void search(Critical_mu& out, const std::vector<Minor>& P, Rational lo, Rational
       if (t == 6 && (at_s ? lo : hi) != s) other = at_s ? lo : hi;
       if (!all_constant_on(P, s, other, filter, last_failed)) continue;
       other = at_s ? simplest(other, (other + s) / 2) : simplest((other + s) / 2, other);
-      if (holds(other, false) == at_s) break;  // the same answer on both sides: s is not μ*
+      if (holds(other, true) == at_s) return false;  // the same answer on both sides: s is not μ*
       out.kind = Critical_kind::value;
       out.lower = out.upper = s;
       out.constant = true;
       out.holds_at_critical = at_s;
-      holds(s, true);
-      holds(other, true);
       (at_s ? out.above_mu : out.below_mu) = s;
       (at_s ? out.below_mu : out.above_mu) = other;
-      return;
+      return true;
     }
+    return false;
+  };
+  // the hint first: the simplest rational within a few ulps' worth of it (a rational μ* of small height is found at
+  // once), then the bracket's own halvings
+  if (hint && std::isfinite(*hint)) {
+    const double d = std::abs(*hint) * 0x1p-30 + 0x1p-60;
+    const Rational a = std::max(lo, Rational(*hint - d)), b = std::min(hi, Rational(*hint + d));
+    if (a <= b && exact_at(simplest(a, b))) return;
+  }
+  for (int bits : {32, 64, 128, 256}) {
+    bisect_until((hi + 1) / two_to(bits));  // (absolute near 0: μ* may be 0)
+    if (exact_at(simplest(lo, hi))) return;
   }
   bisect_until(tol * (hi + 1 / two_to(64)));
   out.kind = Critical_kind::value;
@@ -369,12 +492,10 @@ Critical_mu closure_mu(const Scene& scene, Mode mode, const Rational& tol, Frict
     out.limit_twist = limit.certificate.twist;
     return out;
   }
+  const std::vector<Minor> P = minors(families(scene, false, scaling));
   Rational lo = 0, hi = 1;
-  for (int guard = 0; !closed(hi, false); ++guard) {
-    if (guard > 100000) throw std::logic_error("critical mu: closure never reached although the limit cone closes");
-    lo = hi, hi *= 2;
-  }
-  search(out, minors(families(scene, false, scaling)), lo, hi, tol, true, mode != Mode::exact, closed);
+  const std::optional<double> hint = narrow(root_hints(P), lo, hi, std::nullopt, closed);
+  search(out, P, lo, hi, tol, true, mode != Mode::exact, closed, hint);
   return out;
 }
 
@@ -400,10 +521,10 @@ Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
   }
   const std::vector<Minor> P = minors(families(scene, true, Friction_scaling::common));
   Rational M = 1;
-  for (const Minor& m : P) M = std::max(M, root_bound(m.p));
+  for (const Minor& m : P) M = std::max(M, root_bound(m.p()));
   M += 1;  // beyond every minor's roots (complex ones too): the answer there is the answer for every larger μ
   for (const Minor& m : P)
-    if (eval(m.p, M) == 0 || !no_root_beyond(m.p, M)) throw std::logic_error("critical mu: a minor has a root beyond its bound");
+    if (eval(m.p(), M) == 0 || !no_root_beyond(m.p(), M)) throw std::logic_error("critical mu: a minor has a root beyond its bound");
   if (!balanced(M, true)) {  // the load is on the limit cone's boundary: reached by no finite μ
     out.kind = Critical_kind::never;
     out.below_mu = M;
@@ -411,8 +532,10 @@ Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
     return out;
   }
   Rational lo = 0, hi = 1;
-  while (!balanced(hi, false)) lo = hi, hi = std::min(Rational(hi * 2), M);
-  search(out, P, lo, hi, tol, false, mode != Mode::exact, balanced);
+  std::vector<double> r = root_hints(P);
+  while (!r.empty() && r.back() >= M.get_d()) r.pop_back();  // (the bound is beyond every root: a hint past it is off)
+  const std::optional<double> hint = narrow(r, lo, hi, M, balanced);
+  search(out, P, lo, hi, tol, false, mode != Mode::exact, balanced, hint);
   return out;
 }
 

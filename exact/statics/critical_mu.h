@@ -8,8 +8,9 @@
 // constant, and so are both answers: μ* is a root of such a minor — an algebraic number of degree at most 3.
 //
 // Decision: μ = 0 decides "always"; the limit cone pos{a_i, ±b_i} decides "never" for closure (and for balance when
-// the load is outside it; else balance beyond the minors' root bound); otherwise doubling and bisection on rationals,
-// each step an exact closure or equilibrium decision. μ* is exact when it is rational: the simplest rational of a narrow
+// the load is outside it; else balance beyond the minors' root bound); otherwise a binary search over the gaps between
+// the minors' roots found in doubles (hints only), then bisection on rationals, each step an exact closure or
+// equilibrium decision. μ* is exact when it is rational: the simplest rational of a narrow
 // bracket that is a root of a minor and lies on the right side, proved by the minors' constant signs on a one-sided
 // interval beside it (Descartes' rule); otherwise a bracket of the tolerance's width. Certificates on both sides.
 #pragma once

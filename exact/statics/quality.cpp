@@ -632,4 +632,77 @@ Quality_answer decide_quality(const Scene& given, const Quality_query& asked, Mo
   return a;
 }
 
+Contact_margins contact_margins(const Scene& given, const Quality_query& asked) {
+  std::optional<Scene> storage;
+  const Scene& scene = exact_contacts(given, storage);
+  if (scene.contacts.empty()) throw Input_error("contacts: the scene has no contacts, so no grasp to measure");
+  const Quality_query query = resolved(scene, asked);
+  Contact_margins out;
+  out.about = query.about ? *query.about : scene.body.com ? *scene.body.com : Vec2{};
+  out.torque_scale = query.torque_scale;
+  if (query.torque_radius_squared) {
+    Quality_scale torque;
+    torque.q = *query.torque_radius_squared;
+    set_scale(torque, 64);
+    out.torque_scale = torque.scale;
+    out.exact = torque.error == 0;
+  }
+  if (out.torque_scale <= 0)
+    throw Input_error("--torque-scale: " + to_string(out.torque_scale) + " is not positive (the moment's weight)");
+  const std::vector<Generator> gens = generators(scene, Reading::friction);
+  if (gens.size() > kContactMarginsMaxEdges)
+    throw Input_error("contacts: the contact margins of " + std::to_string(gens.size()) + " friction-cone edges, more than " +
+                      std::to_string(kContactMarginsMaxEdges) + " (every triple of them is measured); ask without --contact-margins");
+  // each edge as a primitive integer vector (the measure is invariant under positive scaling) and its squared length;
+  // a point contact with friction also as its normal and tangent wrenches W(p, n), W(p, rot90 n) — the plane of its
+  // two edges, measured without the cone's width
+  using Iv = std::array<Integer, 3>;
+  const auto integral = [](const Vec3q& w) { return sgn(w[0]) == 0 && sgn(w[1]) == 0 && sgn(w[2]) == 0 ? Iv{} : primitive(w); };
+  const auto len2 = [](const Iv& v) { return Integer(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
+  std::vector<Iv> u;
+  std::vector<Integer> n2;
+  for (const Generator& g : gens) {
+    u.push_back(integral(quality_wrench(g.w, 1, out.torque_scale, out.about)));
+    n2.push_back(len2(u.back()));
+  }
+  std::vector<std::array<Iv, 2>> plane(scene.contacts.size());
+  std::vector<std::array<Integer, 2>> plane2(scene.contacts.size());
+  for (std::size_t c = 0; c < scene.contacts.size(); ++c) {
+    const Contact& k = scene.contacts[c];
+    if (k.kind != Contact::Kind::point) continue;
+    plane[c][0] = integral(quality_wrench(wrench_at(k.at, k.normal), 1, out.torque_scale, out.about));
+    plane[c][1] = integral(quality_wrench(wrench_at(k.at, {-k.normal.y, k.normal.x}), 1, out.torque_scale, out.about));
+    plane2[c] = {len2(plane[c][0]), len2(plane[c][1])};
+  }
+  out.contacts.resize(scene.contacts.size());
+  for (std::size_t i = 0; i < out.contacts.size(); ++i) out.contacts[i].contact = i;
+  Integer d;
+  Rational r2;
+  for (std::size_t i = 0; i < u.size(); ++i)
+    for (std::size_t j = i + 1; j < u.size(); ++j)
+      for (std::size_t k = j + 1; k < u.size(); ++k) {
+        const Iv *x = &u[i], *y = &u[j], *z = &u[k];
+        Integer den = n2[i] * n2[j] * n2[k];
+        const std::size_t ci = gens[i].contact, cj = gens[j].contact, ck = gens[k].contact;
+        if (ci == cj) x = &plane[ci][0], y = &plane[ci][1], den = plane2[ci][0] * plane2[ci][1] * n2[k];
+        else if (cj == ck) y = &plane[cj][0], z = &plane[cj][1], den = n2[i] * plane2[cj][0] * plane2[cj][1];
+        const Iv& X = *x;
+        const Iv& Y = *y;
+        const Iv& Z = *z;
+        d = (X[1] * Y[2] - X[2] * Y[1]) * Z[0] + (X[2] * Y[0] - X[0] * Y[2]) * Z[1] + (X[0] * Y[1] - X[1] * Y[0]) * Z[2];
+        if (sgn(d) == 0) r2 = 0;
+        else r2 = Rational(d * d, den), r2.canonicalize();
+        const std::array<Generator_ref, 3> triple{{{ci, gens[i].edge}, {cj, gens[j].edge}, {ck, gens[k].edge}}};
+        const std::size_t cs[3] = {ci, cj, ck};
+        for (std::size_t t = 0; t < 3; ++t) {
+          if ((t >= 1 && cs[t] == cs[0]) || (t == 2 && cs[2] == cs[1])) continue;  // (each contact once)
+          Contact_margin& m = out.contacts[cs[t]];
+          ++m.triples;
+          m.zeros += sgn(d) == 0;
+          if (!m.squared || r2 < *m.squared) m.squared = r2, m.nearest = triple;
+        }
+      }
+  return out;
+}
+
 }  // namespace wrenchkit

@@ -53,6 +53,7 @@ struct Quality_query {
   // What to answer (the quality command): ε, and the critical friction coefficient μ* (critical_mu.h)
   bool epsilon = true, critical_mu = true;
   bool keep_planes = false;  // keep the wrench space's supporting planes in the answer (pictures)
+  bool contact_margins = false;  // also each contact's distance to a degenerate configuration (contact_margins)
 };
 
 // One contact's scale: its edges are multiplied by `scale` (c̃_i); the true c_i = 1/√q_i lies within `error` of it
@@ -94,6 +95,34 @@ struct Quality_answer {
 // the cube). Closure, and ε = 0 of an open grasp, have no such bound.
 constexpr std::size_t kQualityMaxL1Edges = 1024, kQualityMaxLinfContacts = 48;
 Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mode mode);
+
+// [QL-1 §6] How near each contact is to a degenerate configuration — the per-contact form of `compare`'s smallest
+// deciding determinant (boundary_distance.h), over every triple of friction-cone edges rather than those one decision
+// happens to evaluate. The edges as wrenches (fx, fy, s·m about `about`, the query's torque scale s and point, as ε
+// takes them; no normalisation: the measure is invariant under each edge's scale); for three of them the relative
+// volume |det(u, v, w)| / (|u||v||w|) ∈ [0, 1] (1: orthogonal, 0: coplanar); where two of them are one contact's
+// edges, its normal and tangent wrenches W(p, n), W(p, rot90 n) stand for them (the same plane: the measure does not
+// shrink with the cone's width; 0 when the third edge's line passes through the contact point). A verdict of closure (with friction) can
+// change only where some such determinant passes through zero, so a contact whose every triple stays away from 0 is
+// away from any change of the grasp's combinatorics. Per contact: the least relative volume, squared — rational,
+// exact —, over the triples that hold one of its edges, the triple attaining it, and how many of its triples are
+// exactly zero (it is in a degenerate configuration now). With an irrational torque scale (GraspIt!'s 1/√r2) the
+// scale is a rational within 2^-64 of it and `exact` is false. Bounded work: refused (Input_error) past 96 edges
+// (C(96, 3) = 142 880 determinants).
+struct Contact_margin {
+  std::size_t contact = 0;
+  std::optional<Rational> squared;  // none: fewer than three edges in the scene
+  std::array<Generator_ref, 3> nearest{};
+  std::size_t zeros = 0, triples = 0;
+};
+struct Contact_margins {
+  bool exact = true;
+  Rational torque_scale;
+  Vec2 about;
+  std::vector<Contact_margin> contacts;
+};
+constexpr std::size_t kContactMarginsMaxEdges = 96;
+Contact_margins contact_margins(const Scene& scene, const Quality_query& query);
 
 // The scaled wrench of a §1 generator g of a contact with scale c: c·(fx, fy, s·(m − about × f)).
 Vec3q quality_wrench(const Vec3q& g, const Rational& c, const Rational& s, const Vec2& about);

@@ -273,7 +273,7 @@ def reuleaux(scene, *, center=None, sense=None, direction=None, twist=None, mode
 
 
 def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, tolerance=None, only=None,
-            preset=None, mode="hybrid"):
+            preset=None, contact_margins=False, mode="hybrid"):
     """How good is the grasp (docs/quality.md), as `wrenchkit quality --json`: {"epsilon": {"lower", "upper",
     "squared" (when epsilon^2 is rational), "lower_approx", "upper_approx", "norm", "normalize", "torque_scale",
     "about"}, "force_closure", "nearest_facet", "critical_mu": {"closure": {"kind": "value" | "always" | "never",
@@ -284,7 +284,8 @@ def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, 
     norm: "L1" (default) or "Linf"; normalize: "unit-normal" (default), "unit-force" or "as-given"; torque_scale: the
     moment's weight (default 1); about: (x, y), the moments' point (default body.com, else the origin); tolerance:
     the brackets' relative width (default 1e-12); only: "epsilon" or "critical-mu"; preset: "graspit" or "dexnet" (the
-    peers' conventions, docs/quality.md). mode: "hybrid" or "exact"
+    peers' conventions, docs/quality.md); contact_margins=True: also "contact_margins" (each contact's least relative
+    volume of three friction-cone edges, "squared" a Fraction, docs/quality.md). mode: "hybrid" or "exact"
     ("float" raises UndecidedError: neither has a float twin).
     """
     words = []
@@ -296,6 +297,8 @@ def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, 
             words += ["--" + name, _number_text(value, name)]
     if about is not None:
         words += ["--about", ",".join(_vec(about, "about"))]
+    if contact_margins:
+        words += ["--contact-margins"]
     r = _json.loads(_core.quality(_scene(scene), words, mode))
 
     def exact(d, keys):
@@ -308,6 +311,11 @@ def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, 
         r["epsilon"]["about"] = tuple(_fractions.Fraction(x) for x in r["epsilon"]["about"])
     for c in list(r.get("critical_mu", {}).values()) + ([r["friction_margin"]] if "friction_margin" in r else []):
         exact(c, ("lower", "upper"))
+    if "contact_margins" in r:
+        exact(r["contact_margins"], ("torque_scale",))
+        r["contact_margins"]["about"] = tuple(_fractions.Fraction(x) for x in r["contact_margins"]["about"])
+        for c in r["contact_margins"]["contacts"]:
+            exact(c, ("squared",))
     return r
 
 
