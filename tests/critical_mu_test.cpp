@@ -6,6 +6,7 @@
 // by the independent checker.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -195,6 +196,39 @@ TEST(CriticalMuProperty, RandomGraspsMeetTheirThreshold) {
   EXPECT_GT(values, 20);
   EXPECT_GT(exact, 5);
   RecordProperty("brackets", brackets);
+}
+
+// Grasps read from doubles (17 significant digits, as the array API and float tools give them): μ* is irrational or of
+// great height, bracketed by one minor's sign between the roots' hints — the theorem's statement at the bracket's ends
+// (fails at lower, holds at upper), its width, the checker; and the search's cost: one exact decision per halving of
+// the gaps between the hints and a few to prove the ends, not one per bit (it took 261 before the hints).
+TEST(CriticalMuProperty, DoubleGraspsBracketedFromTheHints) {
+  std::mt19937_64 rng(seed(20261201));
+  std::uniform_real_distribution<double> u(-1, 1);
+  int brackets = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    std::string text = R"({"wrenchkit": 1, "mu": "1/2", "contacts": [)";
+    const int n = 3 + static_cast<int>(rng() % 3);
+    char b[256];
+    for (int i = 0; i < n; ++i) {
+      const double x = u(rng), y = u(rng);
+      std::snprintf(b, sizeof b, R"(%s{"at": ["%.17g", "%.17g"], "normal": ["%.17g", "%.17g"]})", i ? ", " : "", x, y,
+                    -x + 0.4 * u(rng), -y + 0.4 * u(rng));
+      text += b;
+    }
+    text += "]}";
+    const Scene s = scene_of(text);
+    const Critical_answer a = decide_critical_mu(s, Mode::hybrid, kTol);
+    ASSERT_EQ(rejected(text, critical_mu_certificate(a.closure, true)), "") << dump_failure(text, "critical_mu_doubles");
+    const Critical_mu& c = a.closure;
+    if (c.kind != Critical_kind::value || c.exact()) continue;
+    ++brackets;
+    ASSERT_FALSE(closed(s, c.lower)) << dump_failure(text, "critical_mu_doubles");
+    ASSERT_TRUE(closed(s, c.upper)) << dump_failure(text, "critical_mu_doubles");
+    ASSERT_LE(c.upper - c.lower, kTol * c.upper + kTol) << dump_failure(text, "critical_mu_doubles");
+    EXPECT_LE(c.decisions, 24u) << dump_failure(text, "critical_mu_doubles");
+  }
+  EXPECT_GT(brackets, 10);
 }
 
 // The margin on random grasps with their own μ: fails at t* (or below the bracket), holds just above, and the checker.

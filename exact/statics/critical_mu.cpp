@@ -374,8 +374,8 @@ std::vector<double> root_hints(const std::vector<Minor>& P) {
 }
 
 // The first bracket from the hints r: the property fails at lo (0) and, by a binary search over points in the gaps
-// between consecutive hints (one decision per halving), fails at the last gap point below a hint and holds at the next
-// gap point; the hint between them is returned. `top`: a point known to hold (balance's bound), else the point beyond
+// between consecutive hints (one decision per halving), fails at the last gap point below a hint (or at 0) and holds
+// at the next gap point; the hint between them is returned (0 when it holds below the first hint). `top`: a point known to hold (balance's bound), else the point beyond
 // the last hint is decided, and past it, when it fails (a root the doubles missed), doubling takes over (no hint).
 template <class Holds>
 std::optional<double> narrow(const std::vector<double>& r, Rational& lo, Rational& hi, const std::optional<Rational>& top,
@@ -389,15 +389,16 @@ std::optional<double> narrow(const std::vector<double>& r, Rational& lo, Rationa
   if (K > 0) {
     hi = gap(K);
     if (top || holds(hi, false)) {
-      std::size_t L = 0, H = K;  // fails at gap(L) (0 for L = 0), holds at gap(H)
+      // indices: −1 is lo (0: fails), j ≥ 0 the point gap(j) below hint j (j = K: beyond the last); holds at gap(H)
+      long L = -1, H = static_cast<long>(K);
       while (H - L > 1) {
-        const std::size_t mid = (L + H) / 2;
-        const Rational g = gap(mid);
+        const long mid = (L + H) / 2;
+        const Rational g = gap(static_cast<std::size_t>(mid));
         if (g <= lo || g >= hi) break;  // (hints too close for the doubles: the search below goes on from here)
         (holds(g, false) ? H : L) = mid;
         (H == mid ? hi : lo) = g;
       }
-      if (H - L == 1) return r[H - 1];
+      if (H - L == 1) return H == 0 ? 0.0 : r[static_cast<std::size_t>(H - 1)];  // (H = 0: μ* is 0, the only root below)
       return std::nullopt;
     }
     lo = hi;
@@ -418,11 +419,38 @@ std::optional<double> narrow(const std::vector<double>& r, Rational& lo, Rationa
 template <class Holds>
 void search(Critical_mu& out, const std::vector<Minor>& P, Rational lo, Rational hi, const Rational& tol, bool open_set,
             bool filter, Holds holds, std::optional<double> hint) {
-  const auto bisect_until = [&](const Rational& width) {
+  // With a hint, the bracket is narrowed by the sign of one minor that changes sign across it (the hint's root: no
+  // decision per halving); the property is decided at the ends before they are claimed, and where it disagrees (that
+  // root is not μ*) the property itself narrows again from the first bracket. A halving point where the minor vanishes
+  // is returned: a rational root, tried as μ* at once.
+  const auto exact_sign = [&](const Minor& m, const Rational& x) {
+    const Sign g = filter ? sign_at(m, to_bounded(x)) : Sign::uncertain;
+    if (g == Sign::positive) return 1;
+    if (g == Sign::negative) return -1;
+    return sgn(eval(m.p(), x));
+  };
+  const Minor* tracker = nullptr;
+  int tracker_lo = 0;
+  if (hint)
+    for (const Minor& m : P) {
+      const int a = exact_sign(m, lo), b = exact_sign(m, hi);
+      if (a * b < 0) {
+        tracker = &m, tracker_lo = a;
+        break;
+      }
+    }
+  const auto bisect_until = [&](const Rational& width) -> std::optional<Rational> {
     while (hi - lo > width) {
       const Rational mid = (lo + hi) / 2;
-      (holds(mid, false) ? hi : lo) = mid;
+      if (!tracker) {
+        (holds(mid, false) ? hi : lo) = mid;
+        continue;
+      }
+      const int g = exact_sign(*tracker, mid);
+      if (g == 0) return mid;
+      (g == tracker_lo ? lo : hi) = mid;
     }
+    return std::nullopt;
   };
   // Exact: the simplest rational s of a narrow bracket that is a root of a minor, with the minors' signs constant on
   // a one-sided interval beside it — (s, other] where the property fails at s and holds at other, [other, s) where it
@@ -460,14 +488,27 @@ void search(Critical_mu& out, const std::vector<Minor>& P, Rational lo, Rational
     if (a <= b && exact_at(simplest(a, b))) return;
   }
   for (int bits : {32, 64, 128, 256}) {
-    bisect_until((hi + 1) / two_to(bits));  // (absolute near 0: μ* may be 0)
+    if (const std::optional<Rational> root = bisect_until((hi + 1) / two_to(bits))) {  // (absolute near 0: μ* may be 0)
+      if (exact_at(*root)) return;
+      tracker = nullptr;  // (a root of the tracked minor, not μ*: the property narrows from the first bracket)
+      lo = lo0, hi = hi0;
+      bisect_until((hi + 1) / two_to(bits));
+    }
     if (exact_at(simplest(lo, hi))) return;
   }
-  bisect_until(tol * (hi + 1 / two_to(64)));
-  out.kind = Critical_kind::value;
-  out.lower = lo, out.upper = hi;
-  holds(lo, true);
-  holds(hi, true);
+  for (;;) {
+    if (const std::optional<Rational> root = bisect_until(tol * (hi + 1 / two_to(64)))) {
+      tracker = nullptr;  // (not μ*, or exact_at would have found it above: narrow by the property)
+      lo = lo0, hi = hi0;
+      continue;
+    }
+    out.kind = Critical_kind::value;
+    out.lower = lo, out.upper = hi;
+    if (!holds(lo, true) && holds(hi, true)) break;
+    if (!tracker) throw std::logic_error("critical mu: the property is not monotone in mu");
+    tracker = nullptr;  // the tracked minor's root is not μ*
+    lo = lo0, hi = hi0;
+  }
   out.below_mu = lo, out.above_mu = hi;
 }
 
