@@ -46,8 +46,11 @@ struct Ref {
   std::string hold;                      // true, impending, false, depends; empty: no certified answer (or refused)
   const json::Value* labels = nullptr;
   const json::Value* limit_surface = nullptr;
+  bool has_quality = false;                // the line has "quality" (contacts)
+  const json::Value* quality_epsilon = nullptr;  // quality.epsilon {lower, upper, …}; none: refused (too much work)
   Field_distance distance_of(const std::string& field) const {
-    const auto it = fields.find(field == "labels" ? "force_closure" : field);  // labels: the friction reading
+    // labels and ε: the friction reading's (ε is 0 exactly where force closure fails)
+    const auto it = fields.find(field == "labels" || field == "epsilon" ? "force_closure" : field);
     return it == fields.end() ? Field_distance{} : it->second;
   }
 };
@@ -80,7 +83,7 @@ struct Field_tally {
 };
 
 const char* const kFields[] = {"force_closure", "form_closure", "equilibrium", "hold", "motion",
-                               "center_of_friction", "power", "power_range", "labels"};
+                               "center_of_friction", "power", "power_range", "labels", "epsilon"};
 bool is_verdict(const std::string& f) { return f == "force_closure" || f == "form_closure" || f == "equilibrium"; }
 
 // The words of a wrong verdict: unsafe (the answer claims closure, balance, holding or sticking that does not
@@ -101,8 +104,8 @@ const char* lost_words(const std::string& f) {
          : f == "hold"      ? "falsely fails, impending or depends"
                             : "falsely open";
 }
-// Fields with a safety split (unsafe / lost): the verdicts, motion and hold.
-bool has_split(const std::string& f) { return is_verdict(f) || f == "motion" || f == "hold"; }
+// Fields with a safety split (unsafe / lost): the verdicts, motion, hold and epsilon (across 0).
+bool has_split(const std::string& f) { return is_verdict(f) || f == "motion" || f == "hold" || f == "epsilon"; }
 
 Rational exact_number(const json::Value& v, const std::string& where) {
   std::string why;
@@ -196,6 +199,10 @@ Corpus read_corpus(const std::string& path, Read_file read) {
     r.labels = v.find("labels");
     r.limit_surface = v.find("limit_surface");
     if (r.limit_surface && r.limit_surface->type != json::Type::object) r.limit_surface = nullptr;  // refused
+    if (const json::Value* q = v.find("quality")) {
+      r.has_quality = true;
+      if (q->type == json::Type::object) r.quality_epsilon = q->find("epsilon");
+    }
     if (const json::Value* m = v.find("motion")) {
       r.has_motion = true;
       if (m->type == json::Type::string) r.motion = m->text;
@@ -262,7 +269,7 @@ std::vector<Answer> read_jsonl_answers(const std::string& path, const std::strin
       } else if (std::find(std::begin(kFields), std::end(kFields), k) == std::end(kFields)) {
         throw Input_error(where + ": " + json::quote(k) +
                           ": unknown field (known: id, force_closure, form_closure, equilibrium, hold, motion, "
-                          "center_of_friction, power, power_range, labels, error; fields starting with _ are ignored)");
+                          "center_of_friction, power, power_range, labels, epsilon, error; fields starting with _ are ignored)");
       } else {
         a.fields.emplace_back(k, std::move(x));
       }
@@ -461,6 +468,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
                               : field == "hold"                                       ? ref.has_hold
                               : field == "center_of_friction" || field == "power"     ? ref.limit_surface != nullptr
                               : field == "power_range"                                ? ref.limit_surface != nullptr
+                              : field == "epsilon"                                    ? ref.has_quality
                                                                                       : true;
       if (v.type == json::Type::null) {
         // No answer; not counted where the scene has nothing to answer (equilibrium without a load).
@@ -590,6 +598,28 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
           d.answer = json::text_of(v);
           disagree(std::move(d));
         }
+      } else if (field == "epsilon") {
+        // ε within the tolerance of the certified bracket [lower, upper]; wrong across ε = 0 is a wrong closure
+        // verdict (a positive ε for an open grasp: unsafe; zero for a closed one: lost), else a wrong value
+        if (!ref.has_quality) throw Input_error(where + ": scene \"" + a.id + "\" has no contacts (no epsilon answer)");
+        if (!ref.quality_epsilon) continue;  // refused by the engine's work bound: nothing to compare with
+        const Rational h = exact_number(v, where);
+        const Rational lo = exact_number(*ref.quality_epsilon->find("lower"), "reference");
+        const Rational hi = exact_number(*ref.quality_epsilon->find("upper"), "reference");
+        const Rational slack = tol.atol + tol.rtol * abs(hi);
+        count(&Field_tally::compared);
+        if (h >= lo - slack && h <= hi + slack) {
+          count(&Field_tally::agree);
+          continue;
+        }
+        Disagreement d;
+        d.kind = "value";
+        if (hi == 0 && h > slack) d.kind = "falsely closed", d.unsafe = true;
+        else if (lo > 0 && h <= slack) d.kind = "falsely open";
+        d.reference = "[" + ref.quality_epsilon->find("lower")->text + ", " + ref.quality_epsilon->find("upper")->text + "]";
+        d.reference_value = ref.quality_epsilon;
+        d.answer = json::text_of(v);
+        disagree(std::move(d));
       } else if (field == "labels") {
         if (v.type != json::Type::object) throw Input_error(where + ": " + json::text_of(v) + " is not an object");
         count(&Field_tally::compared);
@@ -640,7 +670,7 @@ std::string distance_text(const Disagreement& d) {
           : d.field == "hold"   ? " (over a support, how close the load is to holding is not measured)"
                               : " (a value: compared within --rtol/--atol)");
   else if (f.distance)
-    s << d.field << " distance " << *f.distance << " (" << f.nearest << ")";
+    s << (d.field == "epsilon" ? "force closure (where epsilon becomes 0)" : d.field) << " distance " << *f.distance << " (" << f.nearest << ")";
   else
     s << d.field << " distance unknown (no nonzero deciding determinant and no friction scale that flips it)";
   if (f.exact_zeros) s << ", " << f.exact_zeros << " exactly degenerate determinant" << (f.exact_zeros == 1 ? "" : "s");
@@ -855,6 +885,10 @@ Compare_report compare_answers(const std::string& corpus_path, const std::string
         if (d.kind != "value") s << d.kind << (d.unsafe ? " (unsafe)" : " (lost)") << ": ";
         if (d.power.empty()) {
           s << "reference " << d.reference;
+          if (d.field == "epsilon") {  // its size is the distance of the wrench space's boundary to the origin
+            const std::optional<double> up = nearest_double(exact_number(*d.reference_value->find("upper"), "reference"));
+            if (up) s << " (≈ " << *up << (*up == 0 ? ": the grasp is not in force closure" : ": its boundary's distance to the origin") << ")";
+          }
           if (d.field == "center_of_friction") {  // the exact point also as nearest doubles
             Json_writer a(64);
             write_approx(a, *d.reference_value);

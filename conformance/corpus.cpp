@@ -14,6 +14,7 @@
 #include "exact/io/scene_writer.h"
 #include "exact/pipeline/answer_json.h"
 #include "exact/pipeline/hold_answer.h"
+#include "exact/pipeline/quality_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/limit_surface.h"
 #include "exact/sliding/sliding.h"
@@ -388,7 +389,31 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
       else hold.verdict.empty() ? void(w.null()) : void(w.string(hold.verdict));
       if (!hold.why.empty()) w.member("hold_uncertified", hold.why);
     }
+    // The grasp's quality ε (docs/quality.md) in the default conventions — L1, unit-normal edges, moments about
+    // body.com (else the origin) with torque scale 1 —, exact or bracketed to 10^-12, certified; refused past the
+    // work bound (the line says why).
+    Quality_item quality;
+    if (!parsed.contacts.empty()) {
+      Quality_query q;
+      q.critical_mu = false;
+      quality = answer_quality(parsed, text, request, q);
+      if (quality.status == Status::check_failed) {
+        b.status = quality.status, b.message = quality.message;
+        return;
+      }
+      if (quality.status == Status::answered) {
+        const Quality_answer& a = quality.answer;
+        w.key("quality").object().key("epsilon").object().member("lower", a.lower).member("upper", a.upper);
+        if (a.exact) w.member("squared", a.squared);
+        w.member("norm", quality_norm_name(a.query.norm)).member("normalize", normalization_name(a.query.normalize));
+        w.member("torque_scale", a.query.torque_scale).key("about").rationals(std::array<Rational, 2>{a.about.x, a.about.y});
+        w.end_object().end_object();
+      } else {
+        w.key("quality").null().member("quality_refused", quality.message);
+      }
+    }
     w.key("certificates").object().key("force_closure").raw(c.force_certificate);
+    if (!quality.certificate.empty()) w.key("quality").raw(quality.certificate);
     w.key("form_closure").raw(c.form_certificate);
     if (eq) w.key("equilibrium").raw(eq->certificate);
     if (!motion.certificate.empty()) w.key("motion").raw(motion.certificate);
@@ -397,7 +422,7 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
     // Every exact number of the answers again as its nearest double (docs/reference-format.md §2).
     const json::Value line = json::parse(w.str() + "}", Input_limits{}, e.id);
     w.key("approx").object();
-    for (const char* k : {"scene", "load", "labels", "limit_surface"})
+    for (const char* k : {"scene", "load", "labels", "limit_surface", "quality"})
       if (const json::Value* x = line.find(k)) write_approx(w.key(k), *x);
     const json::Value& fs = *line.find("boundary")->find("friction_scale");
     w.key("friction_scale").object();
@@ -407,7 +432,7 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
     }
     w.end_object().end_object();
     b.line = w.end_object().take();
-    b.certificates = (eq ? 3 : 2) + !motion.certificate.empty() + !hold.certificate.empty();
+    b.certificates = (eq ? 3 : 2) + !motion.certificate.empty() + !hold.certificate.empty() + !quality.certificate.empty();
     b.csv = e.id + "," + (c.force.holds ? "true" : "false") + "," + (c.form.holds ? "true" : "false") + "," +
             (eq ? (eq->answer.balanced ? "true" : "false") : "") + "," + hold.verdict;
   });

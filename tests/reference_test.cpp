@@ -541,6 +541,61 @@ TEST_F(Corpus, CompareReadsHoldAndSplitsUnsafeFromLost) {
   }
 }
 
+// ε in the corpus (docs/reference-format.md §2): every line with contacts has `quality` — its bracket agreeing with
+// force closure (ε > 0 exactly when closed), in the default conventions, its certificate among the line's — and
+// compare reads a peer's `epsilon`: the reference's nearest doubles agree; a positive ε for an open grasp is unsafe
+// ("falsely closed"), 0 for a closed one lost ("falsely open"), a closed grasp's ε off by 1 % a wrong value; a
+// scene without contacts has no epsilon to answer (exit 2).
+TEST_F(Corpus, EpsilonIsInTheCorpusAndCompared) {
+  std::string good, bad;
+  std::string open_id, closed_id, no_contacts;
+  std::size_t with = 0;
+  for (const json::Value& v : lines_) {
+    const std::string id = v.find("id")->text;
+    const json::Value* q = v.find("quality");
+    const json::Value* contacts = v.find("scene")->find("contacts");
+    const bool has_contacts = contacts && !contacts->items.empty();
+    ASSERT_EQ(q != nullptr, has_contacts) << id;
+    if (!q) {
+      if (no_contacts.empty()) no_contacts = id;
+      continue;
+    }
+    ASSERT_EQ(q->type, json::Type::object) << id;  // (none past the work bound in the default corpus)
+    ++with;
+    const json::Value& e = *q->find("epsilon");
+    EXPECT_EQ(e.find("norm")->text, "L1") << id;
+    EXPECT_EQ(e.find("normalize")->text, "unit-normal") << id;
+    EXPECT_EQ(e.find("torque_scale")->text, "1") << id;
+    const Rational lo(e.find("lower")->text), hi(e.find("upper")->text);
+    ASSERT_LE(lo, hi) << id;
+    EXPECT_EQ(hi > 0, v.find("force_closure")->boolean) << id;
+    ASSERT_NE(v.find("certificates")->find("quality"), nullptr) << id;
+    const std::string approx = v.find("approx")->find("quality")->find("epsilon")->find("lower")->text;
+    good += "{\"id\": \"" + id + "\", \"epsilon\": " + approx + "}\n";
+    if (hi == 0 && open_id.empty()) open_id = id, bad += "{\"id\": \"" + id + "\", \"epsilon\": 0.001}\n";
+    if (lo > Rational(1, 1000) && closed_id.empty()) closed_id = id, bad += "{\"id\": \"" + id + "\", \"epsilon\": 0}\n";
+  }
+  ASSERT_GT(with, 300u);
+  ASSERT_FALSE(open_id.empty() || closed_id.empty() || no_contacts.empty());
+  Cli_result r = run("compare --json '" + dir_ + "' -", good);
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("\"epsilon\": {\"compared\": " + std::to_string(with) + ", \"agree\": " + std::to_string(with) + ","),
+            std::string::npos) << r.out;
+  r = run("compare --json '" + dir_ + "' -", bad);
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  const json::Value rep = json::parse(r.out, Input_limits{}, "report");
+  EXPECT_EQ(rep.find("fields")->find("epsilon")->find("unsafe")->text, "1");
+  EXPECT_EQ(rep.find("fields")->find("epsilon")->find("lost")->text, "1");
+  for (const json::Value& d : rep.find("disagreements")->items) {
+    const std::string id = d.find("id")->text;
+    EXPECT_EQ(d.find("kind")->text, id == open_id ? "falsely closed" : "falsely open") << id;
+    EXPECT_EQ(d.find("field")->text, "epsilon");
+  }
+  r = run("compare '" + dir_ + "' -", "{\"id\": \"" + no_contacts + "\", \"epsilon\": 1}\n");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("has no contacts (no epsilon answer)"), std::string::npos) << r.err;
+}
+
 TEST_F(Corpus, CompareBadInputNamesLineAndField) {
   struct Case {
     std::string name, text, message;

@@ -375,11 +375,12 @@ def test_reference_of_own_scenes_is_the_command_s_corpus(tmp_path):
         + json.dumps({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [1, 0]}],
                       "load": {"wrench": [-1, 0, 0]}}) + "\n")
     summary = wrenchkit.reference(scenes, tmp_path / "py")
-    # 2 (closure) + 3 (closure, equilibrium) + 1 (hold: the scene with a load)
-    assert summary["scenes"] == 2 and summary["certificates_checked"] == 6
+    # 2 (closure) + 3 (closure, equilibrium) + 1 (hold: the scene with a load) + 2 (quality: both have contacts)
+    assert summary["scenes"] == 2 and summary["certificates_checked"] == 8
     lines = [json.loads(l) for l in (tmp_path / "py" / "reference.jsonl").read_text().splitlines()]
     assert [l["id"] for l in lines] == ["pinch", "line.2"]
     assert lines[0]["force_closure"] is True and lines[1]["equilibrium"] is True
+    assert lines[0]["quality"]["epsilon"]["norm"] == "L1" and lines[1]["quality"]["epsilon"]["upper"] == "0"
     assert lines[0]["approx"]["scene"]["contacts"][0]["mu"] == 0.3
     if CLI:
         subprocess.run([CLI, "reference", "--scenes", str(scenes), "--out", str(tmp_path / "cli")], check=True,

@@ -7,7 +7,9 @@ torque scale 1) disagrees with
   * peers.py's brute-force rational reference (--exact): eps^2 and closure, on every scene;
   * the hand formulas for the square [-1,1]^2 held at its side middles with friction mu (handcheck.py):
     L1 eps = mu, Linf eps^2 = 16 mu^2 (1+mu^2) / (1+3mu^2), and eps = 0 at mu = 0;
-or when the comparison's wiring is off: on the square with mu > 0 every peer (Dex-Net with cvxopt when
+or when the corpus route fails: the square as a corpus of one's own (`wrenchkit reference --scenes`), the ports'
+answers by corpus_answers.py, `wrenchkit compare --rtol 1e-3` agreeing on every square; or when the comparison's
+wiring is off: on the square with mu > 0 every peer (Dex-Net with cvxopt when
 importable, else nnls; GraspIt! L1 and Linf) must be within 1e-3 relative of wrenchkit's eps (cvxopt's early stop
 gives up to 7e-5; a convention mismatch between the two sides would show as an O(1) error).
 
@@ -16,7 +18,9 @@ Needs NumPy and SciPy (Debian's python3-numpy, python3-scipy); cvxopt is optiona
 """
 import json
 import os
+import subprocess
 import sys
+import tempfile
 import time
 from fractions import Fraction as Fr
 
@@ -77,6 +81,27 @@ def main():
                         failures.append('square mu=%s: %s gives %r, wrenchkit eps in [%s, %s] (rel. err %.3g): the '
                                         'two sides do not compute the same wrench space' % (mu, label, v, r['lo'],
                                                                                            r['hi'], err))
+
+    # the corpus route: the square's scenes as a corpus of one's own (`reference --scenes`), the ports' answers by
+    # corpus_answers.py, and `wrenchkit compare` within 1e-3 (the QP's precision): every one agrees
+    with tempfile.TemporaryDirectory() as tmp:
+        own = os.path.join(tmp, 'square.jsonl')
+        with open(own, 'w') as f:
+            for mu in SQUARE_MUS:
+                f.write(json.dumps({'id': 'square.' + str(mu).replace('/', '_'), 'scene': square_scene(mu)}) + '\n')
+        corpus, out = os.path.join(tmp, 'corpus'), os.path.join(tmp, 'answers')
+        steps = [[cli, 'reference', '--scenes', own, '--out', corpus],
+                 [sys.executable, os.path.join(HERE, 'corpus_answers.py'), corpus, out]]
+        steps += [[cli, 'compare', '--json', '--rtol', '1e-3', corpus, os.path.join(out, p + '.jsonl')]
+                  for p in ('dexnet', 'graspit_l1')]
+        for step in steps:
+            r = subprocess.run(step, capture_output=True, text=True)
+            if r.returncode != 0:
+                failures.append('%s: exit %d\n%s%s' % (' '.join(step[:3]), r.returncode, r.stdout[-2000:], r.stderr))
+            elif step[1] == 'compare':
+                t = json.loads(r.stdout)['fields'].get('epsilon', {})
+                if t.get('agree') != len(SQUARE_MUS):
+                    failures.append('compare on the square corpus: %s (want %d agreeing)' % (t, len(SQUARE_MUS)))
 
     stats, wrong = compare.compare(scenes, wk, pr)
     print(compare.markdown_table(stats, {}))
