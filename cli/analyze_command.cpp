@@ -176,6 +176,15 @@ Analysis analyze(const Options& o, const std::optional<Rational>& tolerance, con
 
 void write_analysis(Json_writer& w, const Options& o, const Analysis& a, const char* command) {
   w.member("command", command).member("name", a.scene.name);
+  if (!a.scene.body.outline.empty() && a.scene.warnings.empty())  // the outline as checked (exact/io/outline.h)
+    w.key("outline").object().member("vertices", a.scene.body.outline.size())
+        .member("orientation", a.scene.body.outline_ccw ? "counter-clockwise" : "clockwise")
+        .member("convex", a.scene.body.outline_convex).end_object();
+  if (!a.scene.warnings.empty()) {
+    w.key("warnings").array();
+    for (const std::string& x : a.scene.warnings) w.string(x);
+    w.end_array();
+  }
   write_closure(w.key("closure").object(), o, a.closure, "closure");
   w.end_object();
   if (a.equilibrium) {
@@ -212,7 +221,14 @@ int run_analyze(const Options& o, const std::string& scene_text, const std::stri
   }
   // No contacts: closure and equilibrium have nothing to say (their JSON keeps the trivial answers); say so in words.
   const bool contacts = !a.scene.contacts.empty();
-  std::cout << "scene: " << (a.scene.name.empty() ? source : a.scene.name) << "\n" << frictionless_note(a.scene)
+  const Body& body = a.scene.body;
+  if (!body.outline.empty() && a.scene.warnings.empty())
+    std::cout << scene_line(a.scene, source) << "outline: " << body.outline.size() << " vertices, "
+              << (body.outline_ccw ? "counter-clockwise" : "clockwise") << ", " << (body.outline_convex ? "convex" : "not convex")
+              << "; every contact on it, its normal pointing into the body\n";
+  else
+    std::cout << scene_line(a.scene, source);
+  std::cout << frictionless_note(a.scene)
             << (contacts ? closure_human(a.closure, a.scene)
                          : std::string("contacts: none (closure and equilibrium are questions about contacts") +
                                (a.scene.support ? "; the support's friction is below)\n" : ")\n"));

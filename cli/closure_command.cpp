@@ -82,7 +82,7 @@ int run_closure(const Options& o, const std::string& scene_text, const std::stri
   if (o.json) {
     std::cout << json_answer([&](Json_writer& w) { write_closure(w, o, r, command); }) << "\n";
   } else {
-    std::cout << "scene: " << (r.name.empty() ? source : r.name) << "\n" << frictionless_note(scene)
+    std::cout << scene_line(scene, source) << frictionless_note(scene)
               << closure_human(r, scene)
               << "decided by: " << arithmetic_name(r.decided_by()) << " (" << r.force.exact_predicates + r.form.exact_predicates
               << " of " << r.force.predicates + r.form.predicates << " predicates in exact arithmetic)\n"

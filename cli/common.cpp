@@ -155,8 +155,10 @@ int write_answer(const Options& o, const std::function<void(Json_writer&)>& json
 
 std::string undecided_advice(Mode mode) { return mode == Mode::float_only ? "; use --mode hybrid or exact" : ""; }
 
-std::string scene_line(const std::string& name, const std::string& source) {
-  return "scene: " + (name.empty() ? source : name) + "\n";
+std::string scene_line(const Scene& scene, const std::string& source) {
+  std::string s = "scene: " + (scene.name.empty() ? source : scene.name) + "\n";
+  for (const std::string& w : scene.warnings) s += "warning: " + w.substr(0, w.find("; or pass --lenient")) + " (kept: --lenient)\n";
+  return s;
 }
 
 std::string region_sentence(const std::string& shape, const std::vector<std::string>& v,

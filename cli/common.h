@@ -147,7 +147,8 @@ void write_power_over(Json_writer& w, const Support_item& r);
 // The regions' part of the power over F ("" without regions or a twist), a text line.
 std::string regions_power_text(const Support_item& r);
 // "scene: NAME" (or the source when the scene has no name), the first line of every text answer.
-std::string scene_line(const std::string& name, const std::string& source);
+// "scene: NAME (or the source)", and a line per warning a --lenient reading let through (exact/io/outline.h).
+std::string scene_line(const Scene& scene, const std::string& source);
 
 // Reads a whole file (or standard input for "-"), refusing more than `limit` bytes.
 std::string read_input(const std::string& path, std::size_t limit);

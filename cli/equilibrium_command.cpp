@@ -59,7 +59,7 @@ int run_equilibrium(const Options& o, const std::string& scene_text, const std::
   if (o.json) {
     std::cout << json_answer([&](Json_writer& w) { write_equilibrium(w, o, r, "equilibrium"); }) << "\n";
   } else {
-    std::cout << "scene: " << (r.name.empty() ? source : r.name) << "\n" << frictionless_note(scene)
+    std::cout << scene_line(scene, source) << frictionless_note(scene)
               << equilibrium_human(r) << "certificate accepted by the independent checker (exact arithmetic)\n";
   }
   return kAnswered;

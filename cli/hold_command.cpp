@@ -193,7 +193,7 @@ int run_hold(const Options& o, const std::string& scene_text, const std::string&
     write_file(o.certificate_file, r.certificate + "\n");
   }
   return write_answer(o, [&](Json_writer& w) { write_hold(w, r); },
-                      [&] { return scene_line(r.scene.name, source) + frictionless_note(r.scene) + hold_human(r); },
+                      [&] { return scene_line(r.scene, source) + frictionless_note(r.scene) + hold_human(r); },
                       r.answer.verdict == Hold_verdict::undecided);
 }
 

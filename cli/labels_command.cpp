@@ -314,7 +314,7 @@ namespace {
 
 std::string labels_text(const Labels_item& s, const Labels_query& q, const std::string& source) {
   std::ostringstream out;
-  out << scene_line(s.scene.name, source) << "moment labels of the contact wrench cone (with friction"
+  out << scene_line(s.scene, source) << "moment labels of the contact wrench cone (with friction"
       << (s.mode == Mode::float_only ? "" : "; exact") << "):\n"
       << human_labels(s) << closure_line(s);
   if (q.resultant)
@@ -326,7 +326,7 @@ std::string labels_text(const Labels_item& s, const Labels_query& q, const std::
 std::string dual_text(const Labels_item& s, const std::string& source) {
   const bool fm = s.mode == Mode::float_only;
   std::ostringstream out;
-  out << scene_line(s.scene.name, source) << "force dual of the contact wrench cone (D(w) = (-fy, fx, m)"
+  out << scene_line(s.scene, source) << "force dual of the contact wrench cone (D(w) = (-fy, fx, m)"
       << (fm ? "" : "; exact") << "):\n";
   const auto sheets = [&](bool covers_all, const std::string& plus, const std::string& minus, const std::string& inf) {
     out << "covers the whole two-sided plane: " << (covers_all ? "yes (force closure)" : "no") << "\n"
@@ -350,7 +350,7 @@ std::string dual_text(const Labels_item& s, const std::string& source) {
 
 std::string reuleaux_text(const Labels_item& s, const Labels_query& q, const std::string& source) {
   std::ostringstream out;
-  out << scene_line(s.scene.name, source) << "Reuleaux's method: the contacts read frictionless\n" << human_labels(s)
+  out << scene_line(s.scene, source) << "Reuleaux's method: the contacts read frictionless\n" << human_labels(s)
       << "first-order form closure: " << (s.closed() ? "yes (no feasible rotation centre or translation)" : "no")
       << "\n";
   if (q.motion) {

@@ -330,7 +330,7 @@ std::string limit_surface_human(const Ls_options& lo, const Support_item& r, con
   const Ls_support& sup = model.support();
   const Sliding_answer& sa = r.sliding;
   std::ostringstream s;
-  s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
+  s << scene_line(r.scene, source)
     << "support: " << sup.points.size() << " distinct point(s) with mu*f > 0 (of " << r.scene.support->points.size()
     << " given)" << (sup.collinear ? ", collinear" : "") << ", mu*f0 = " << number_text(sa.mu_f0)
     << ", centre of friction " << vec_text(sa.center_of_friction) << "\n"
@@ -407,7 +407,7 @@ std::string limit_surface_float_human(const Ls_options& lo, const Support_item& 
   const fl::Directions_twin& d = *r.twin_directions;
   const fl::Point2& cof = r.twin_center_of_friction;
   std::ostringstream s;
-  s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
+  s << scene_line(r.scene, source)
     << "support: " << r.twin.size() << " point(s) with mu*f > 0 (of " << r.scene.support->points.size()
     << " given), centre of friction (" << bounded_text(cof.x) << ", " << bounded_text(cof.y) << ")\n"
     << "sides: " << lo.query.sides << ", lambda^2 = " << bounded_text(d.lambda_sq) << " (the float twin's direction set)\n"

@@ -272,7 +272,7 @@ int run_quality(const Options& o, const std::string& scene_text, const std::stri
   }
   return write_answer(o, [&](Json_writer& w) { write_quality(w, r); },
                       [&] {  // (the scene's μ matter to ε, not to μ*)
-                        return scene_line(r.scene.name, source) + (r.epsilon ? frictionless_note(r.scene) : "") +
+                        return scene_line(r.scene, source) + (r.epsilon ? frictionless_note(r.scene) : "") +
                                quality_human(r);
                       });
 }

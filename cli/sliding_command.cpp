@@ -60,7 +60,7 @@ std::string region_lines(const Support& s) {
 
 std::string unknown_support_text(const Support_item& r, const std::string& source) {
   const Admissible& a = *r.admissible;
-  std::string s = scene_line(r.scene.name, source) + "support: " + std::to_string(r.scene.support->points.size()) +
+  std::string s = scene_line(r.scene, source) + "support: " + std::to_string(r.scene.support->points.size()) +
                   " points, the forces of " + std::to_string(a.unknown.size()) + " not given; weight " +
                   number_text(r.weight) + ", centre of pressure " + vec_text(r.pressure_center);
   if (a.unknown.size() <= kMaxEnumeratedUnknowns)
@@ -147,7 +147,7 @@ std::string region_statics_text(const Support_item& r, const std::string& source
   const Support& s = *r.scene.support;
   const Region_sliding& a = *r.regions;
   std::ostringstream o;
-  o << scene_line(r.scene.name, source) << "support: " << s.points.size() << " point(s) and " << s.regions.size()
+  o << scene_line(r.scene, source) << "support: " << s.points.size() << " point(s) and " << s.regions.size()
     << " region(s) with a continuous pressure\n" << region_lines(s);
   o << "total normal force " << number_text(a.total_force) << ", centre of friction " << vec_text(a.center_of_pressure)
     << " (exact)\nmu*f0 = " << number_text(a.mu_f0) << ", friction centroid " << vec_text(a.friction_centroid) << "\n";
@@ -243,7 +243,7 @@ void write_sliding_float(Json_writer& w, const Support_query& q, const Support_i
 std::string sliding_float_human(const Support_query& q, const Support_item& r, const std::string& source) {
   const fl::Point2& cof = r.twin_center_of_friction;
   std::ostringstream s;
-  s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
+  s << scene_line(r.scene, source)
     << "centre of friction: (" << float_value_text(cof.x) << ", " << float_value_text(cof.y) << ")\n";
   if (q.twist)
     s << "twist " << vec_text(*q.twist) << ":\n"
@@ -305,7 +305,7 @@ void write_sliding(Json_writer& w, const Support_query& q, const Support_item& r
 std::string sliding_human(const Support_query& q, const Support_item& r, const std::string& source) {
   const Sliding_answer& a = r.sliding;
   std::ostringstream s;
-  s << "scene: " << (r.scene.name.empty() ? source : r.scene.name) << "\n"
+  s << scene_line(r.scene, source)
     << "centre of friction: " << vec_text(a.center_of_friction) << "\n"
     << "mu*f0 = " << number_text(a.mu_f0) << ", friction centroid " << vec_text(a.friction_centroid) << "\n";
   if (a.has_twist) {

@@ -825,5 +825,37 @@ TEST(Cli, UndecidedExitsThreeInEveryForm) {
   EXPECT_EQ(fl_ls.code, 3) << fl_ls.out << fl_ls.err;
 }
 
+// The outline as geometry end to end (exact/io/outline.h): an outward normal and an off-outline contact are refused
+// with exit 2, the message naming the contact and the fix, nothing on stdout, for every command that reads the scene;
+// --lenient answers with the warnings in the text; a placed contact's scene and its certificate pass `check`;
+// analyze states the outline.
+TEST(Cli, OutlineChecksRefuseOrWarn) {
+  const fs::path bad = scratch() / "outline_bad.json", placed = scratch() / "outline_placed.json";
+  std::ofstream(bad) << R"({"wrenchkit": 1, "body": {"outline": [[0, 0], [4, 0], [0, 4]]}, "contacts": [
+    {"at": [2, 0], "normal": [0, -1], "mu": 1}, {"at": [5, 5], "normal": [-1, -1]}, {"at": [0, 2], "normal": [1, 0]}]})";
+  for (const char* command : {"closure", "labels", "quality", "analyze"}) {
+    const Cli_result r = run(std::string(command) + " " + bad.string());
+    EXPECT_EQ(r.code, 2) << command;
+    EXPECT_EQ(r.out, "") << command;
+    EXPECT_NE(r.err.find("contacts[0].normal: (0, -1) does not point into the body at edge 0"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("flip its sign?; or pass --lenient"), std::string::npos) << r.err;
+  }
+  const Cli_result lenient = run("closure --lenient " + bad.string());
+  EXPECT_EQ(lenient.code, 0) << lenient.err;
+  EXPECT_NE(lenient.out.find("warning: contacts[0].normal: (0, -1) does not point into the body"), std::string::npos) << lenient.out;
+  EXPECT_NE(lenient.out.find("warning: contacts[1].at: (5, 5) is not on body.outline"), std::string::npos) << lenient.out;
+  EXPECT_NE(lenient.out.find("(kept: --lenient)"), std::string::npos) << lenient.out;
+  std::ofstream(placed) << R"({"wrenchkit": 1, "mu": "1/2", "body": {"outline": [[0, 0], [4, 0], [0, 4]]},
+    "contacts": [{"edge": 0, "s": "1/2"}, {"edge": 1, "s": "1/2"}, {"edge": 2, "s": "1/4"}]})";
+  const fs::path cert = scratch() / "outline_placed.cert.json";
+  const Cli_result c = run("closure --certificate " + cert.string() + " " + placed.string());
+  EXPECT_EQ(c.code, 0) << c.err;
+  EXPECT_NE(c.out.find("force closure: yes"), std::string::npos) << c.out;
+  const Cli_result k = run("check " + placed.string() + " " + cert.string());
+  EXPECT_EQ(k.code, 0) << k.out << k.err;
+  const Cli_result a = run("analyze " + placed.string());
+  EXPECT_NE(a.out.find("outline: 3 vertices, counter-clockwise, convex; every contact on it"), std::string::npos) << a.out;
+}
+
 }  // namespace
 }  // namespace wrenchkit

@@ -1,4 +1,6 @@
 #include "exact/io/scene.h"
+
+#include "exact/io/outline.h"
 #include "exact/io/support_check.h"
 
 #include <algorithm>
@@ -36,6 +38,7 @@ class Reader {
       s.name = v->text;
     }
     if (const Value* v = root.find("body")) s.body = body(*v);
+    outline_ = &s.body.outline;
     // The scene-wide μ: every point contact's coefficient unless it writes its own (docs/scene-format.md).
     scene_mu_ = root.find("mu");
     if (scene_mu_) nonnegative(*scene_mu_, "mu");
@@ -52,6 +55,7 @@ class Reader {
     if (const Value* v = root.find("support")) s.support = support(*v);
     const std::string why = support_inadmissible(s);
     if (!why.empty()) throw Input_error(why);
+    check_outline(s, limits_.lenient);
     return s;
   }
 
@@ -59,6 +63,7 @@ class Reader {
   const Input_limits& limits_;
   bool lazy_;
   const Value* scene_mu_ = nullptr;  // the scene-wide "mu", while its contacts are read
+  const std::vector<Vec2>* outline_ = nullptr;  // body.outline (read before the contacts)
 
   [[noreturn]] static void fail(const std::string& path, const std::string& what) {
     throw Input_error(path + ": " + what);
@@ -220,6 +225,7 @@ class Reader {
       expect(*n, Type::string, path + ".name", "a string");
       c.name = n->text;
     }
+    if (v.find("edge") || v.find("s")) return placed_contact(v, path, std::move(c));
     if (lazy_) return lazy_contact(v, path, std::move(c));
     if (v.find("wrench")) {
       keys(v, path, {"wrench", "name"});
@@ -249,6 +255,46 @@ class Reader {
     c.twin.nx = n[0];
     c.twin.ny = n[1];
     c.twin.frictional = c.mu != 0;  // decided exactly
+    c.has_twin = true;
+    return c;
+  }
+
+  // A point contact placed on body.outline: {"edge": i, "s": t, "normal"?, "mu"?, "name"?} (exact/io/outline.h) —
+  // its point v_i + t·(v_{i+1} − v_i) and, unless given, the edge's inward normal, exact (also when lazy).
+  Contact placed_contact(const Value& v, const std::string& path, Contact c) const {
+    if (v.find("at")) fail(path, "give either \"at\" or {\"edge\", \"s\"} (a place on body.outline), not both");
+    keys(v, path, {"edge", "s", "normal", "mu", "name"});
+    const std::size_t n = outline_ ? outline_->size() : 0;
+    const Value& ev = required(v, path, "edge");
+    if (n == 0) fail(path + ".edge", "needs body.outline (edge i is its side from vertex i to vertex i + 1)");
+    const Rational e = number(ev, path + ".edge");
+    if (e.get_den() != 1 || e < 0 || e >= static_cast<long>(n))
+      fail(path + ".edge", display(ev) + " is not an edge of body.outline (an integer from 0 to " + std::to_string(n - 1) +
+                               ": edge i runs from vertex i to vertex i + 1)");
+    const Value& sv = required(v, path, "s");
+    const Rational t = number(sv, path + ".s");
+    if (t < 0 || t > 1) fail(path + ".s", display(sv) + " is not in [0, 1] (the place along the edge: 0 at its first vertex, 1 at its last)");
+    c.kind = Contact::Kind::point;
+    c.edge = static_cast<std::size_t>(e.get_num().get_ui());
+    c.s = t;
+    c.at = edge_point(*outline_, *c.edge, t);
+    if (const Value* nv = v.find("normal")) {
+      c.normal = vec2(*nv, path + ".normal");
+      if (c.normal.x == 0 && c.normal.y == 0) fail(path + ".normal", "zero vector");
+    } else {
+      const int orientation = outline_orientation(*outline_);
+      if (orientation == 0) fail("body.outline", "has zero area: no inward normal for " + path);
+      c.normal = edge_inward_normal(*outline_, *c.edge, orientation);
+    }
+    const Value* own = v.find("mu");
+    if (const Value* mu = own ? own : scene_mu_) c.mu = nonnegative(*mu, own ? path + ".mu" : "mu");
+    c.mu_given = own || scene_mu_;
+    c.twin.ax = to_bounded(c.at.x);
+    c.twin.ay = to_bounded(c.at.y);
+    c.twin.nx = to_bounded(c.normal.x);
+    c.twin.ny = to_bounded(c.normal.y);
+    c.twin.mu = to_bounded(c.mu);
+    c.twin.frictional = c.mu != 0;
     c.has_twin = true;
     return c;
   }

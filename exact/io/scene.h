@@ -23,6 +23,9 @@ struct Contact {
   bool mu_given = false;  // point contact: "mu" was written (else it is frictionless by default, said in the output)
   Vec3q wrench;    // wrench generator: nonzero
   std::string name;
+  // Placed on body.outline as {"edge": i, "s": t} (exact/io/outline.h): `at` and `normal` are filled from it.
+  std::optional<std::size_t> edge;
+  Rational s;
   // The same contact as certified doubles for the float twin [FL-4], computed by read_scene from
   // the digits; `has_twin` false (a scene built in code) means: derive it from the rationals.
   fl::Bounded_contact twin;
@@ -113,6 +116,8 @@ struct Support {
 struct Body {
   std::vector<Vec2> outline;
   std::optional<Vec2> com;
+  // Stated by check_outline (exact/io/outline.h) when there is an outline.
+  bool outline_ccw = true, outline_convex = false;
 };
 
 struct Scene {
@@ -121,6 +126,8 @@ struct Scene {
   std::vector<Contact> contacts;
   std::optional<Load> load;
   std::optional<Support> support;
+  // What a lenient reading let through (exact/io/outline.h): each a violation the strict reading refuses.
+  std::vector<std::string> warnings;
 };
 
 // The scene with every contact's rationals filled: `s` itself when none was read lazily, else a copy kept in `storage`.

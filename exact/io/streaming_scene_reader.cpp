@@ -1,4 +1,6 @@
 #include "exact/io/streaming_scene_reader.h"
+
+#include "exact/io/outline.h"
 #include "exact/io/support_check.h"
 
 #include <algorithm>
@@ -39,6 +41,7 @@ void reset(Contact& c) {
   for (Rational* q : {&c.at.x, &c.at.y, &c.normal.x, &c.normal.y, &c.mu, &c.wrench[0], &c.wrench[1], &c.wrench[2]})
     zero(*q);
   c.name.clear();
+  c.edge.reset();
   c.twin = fl::Bounded_contact{};
   c.has_twin = false;
   c.exact_pending = c.from_doubles = false;
@@ -112,6 +115,7 @@ class Stream {
     if (!(seen & kBody)) {
       out.body.outline.clear();
       out.body.com.reset();
+      out.body.outline_ccw = true, out.body.outline_convex = false;
     }
     out.contacts.resize(contacts);
     if (!(seen & kLoad)) out.load.reset();
@@ -550,12 +554,15 @@ bool read_scene_into(Scene& scene, std::string_view text, const Input_limits& li
                      bool lazy) {
   try {
     Stream(text, limits, source, lazy).scene(scene);
-    return true;
   } catch (const Defer&) {
+    scene = read_scene_tree(text, limits, source, lazy);
+    return false;
   } catch (const Input_error&) {  // a malformed string: read_scene_tree reports it in its place
+    scene = read_scene_tree(text, limits, source, lazy);
+    return false;
   }
-  scene = read_scene_tree(text, limits, source, lazy);
-  return false;
+  check_outline(scene, limits.lenient);  // (the tree reader checks its own)
+  return true;
 }
 
 Scene read_scene(std::string_view text, const Input_limits& limits, std::string_view source, bool lazy) {

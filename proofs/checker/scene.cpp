@@ -140,16 +140,32 @@ Contact make_contact(bool wrench, const Read_number* n, std::size_t count, const
   return c;
 }
 
-// {at, normal, mu?, name?} (normal != 0, mu >= 0) or {wrench, name?} (wrench != 0). A point contact without mu
-// leaves its numbers in *no_mu (when given): the scene-wide "mu", which may come later, replaces its "0".
-Contact read_contact(Reader& r, const Limits& lim, std::optional<std::array<Read_number, 5>>* no_mu = nullptr) {
+// A point contact placed on body.outline, {"edge": i, "s": t, "normal"?, "mu"?, "name"?} (docs/scene-format.md,
+// "The outline"): its point v_i + t (v_{i+1} - v_i) and, unless given, the edge's inward normal are made once the
+// whole scene is read (the outline may come after the contacts).
+struct Placed {
+  std::size_t index = 0;
+  Q edge, s;
+  bool has_normal = false, has_mu = false;
+  Read_number normal[2], mu;
+};
+
+// {at, normal, mu?, name?} (normal != 0, mu >= 0) or {wrench, name?} (wrench != 0), or placed (*placed set; the
+// contact returned is a stand-in). A point contact without mu leaves its numbers in *no_mu (when given): the
+// scene-wide "mu", which may come later, replaces its "0".
+Contact read_contact(Reader& r, const Limits& lim, std::optional<std::array<Read_number, 5>>* no_mu = nullptr,
+                     std::optional<Placed>* placed = nullptr) {
   begin_object(r, "expected an object {\"at\", \"normal\", \"mu\"?, \"name\"?} or {\"wrench\", \"name\"?}");
   Read_number point[5], wrench[3];  // x, y, nx, ny, mu ("0" if absent); fx, fy, m
   std::string_view key;
-  enum : unsigned { kAt = 1, kNormal = 2, kMu = 4, kWrench = 8 };
+  enum : unsigned { kAt = 1, kNormal = 2, kMu = 4, kWrench = 8, kEdge = 16, kS = 32 };
   unsigned keys = 0;  // the keys present (a bit set: cheaper than a set of strings, read per contact)
+  Q edge, s;
   while (r.next_key(key)) {
-    if (key == "at") {
+    if ((key == "edge" || key == "s") && placed) {
+      keys |= key == "edge" ? kEdge : kS;
+      (key == "edge" ? edge : s) = read_number(r, lim);
+    } else if (key == "at") {
       keys |= kAt;
       read_numbers(r, lim, 2, point);
     } else if (key == "normal") {
@@ -167,6 +183,15 @@ Contact read_contact(Reader& r, const Limits& lim, std::optional<std::array<Read
     } else {
       r.fail("unknown key " + quote(key), true);
     }
+  }
+  if (keys & (kEdge | kS)) {
+    if (keys & (kAt | kWrench)) r.fail("a placed contact has \"edge\" and \"s\", not \"at\" or \"wrench\"");
+    if (!(keys & kEdge) || !(keys & kS)) r.fail("a placed contact needs both \"edge\" and \"s\"");
+    Placed& p = placed->emplace();
+    p.edge = edge, p.s = s;
+    p.has_normal = keys & kNormal, p.has_mu = keys & kMu;
+    p.normal[0] = point[2], p.normal[1] = point[3], p.mu = point[4];
+    return Contact{};
   }
   const bool is_point = keys & (kAt | kNormal | kMu);
   if (keys & kWrench) {
@@ -194,26 +219,32 @@ void read_vector(Reader& r, const Limits& lim, std::size_t n, Q* out) {
              [&](std::size_t k) { out[k] = read_number(r, lim); });
 }
 
-// {"outline"?: [points], "com"?: [x, y]}. Only com is used (by a gravity load); outline must be an
-// array, its points are not interpreted (the checker draws nothing).
-void read_body(Reader& r, const Limits& lim, bool& has_com, Q (&com)[2]) {
+// {"outline"?: [points], "com"?: [x, y]}. com is used by a gravity load, the outline by placed contacts (the
+// engine checks the outline and every contact against it; the checker draws nothing).
+void read_body(Reader& r, const Limits& lim, bool& has_com, Q (&com)[2], std::vector<std::array<Q, 2>>& outline,
+               bool& outline_valid) {
   begin_object(r, "expected an object");
   std::string_view key;
   while (r.next_key(key)) {
-    if (key == "outline") {  // not interpreted, but limited and counted in the budget like every point
+    if (key == "outline") {  // limited and counted in the budget like every point; kept for placed contacts
       begin_array(r, "expected an array of points");
+      outline.clear();
+      outline_valid = true;
       for (std::size_t points = 0; r.next_item(); ++points) {
         if (points == lim.max_contacts)
           throw Failure{"body.outline: more than " + std::to_string(lim.max_contacts) + " points"};
         if (r.peek() != Kind::array) {
           r.skip();
+          outline_valid = false;
           continue;
         }
         r.begin_array();
+        std::vector<Q> xy;
         while (r.next_item()) {
           const Kind k = r.peek();
           if (k != Kind::number && k != Kind::string) {
             r.skip();
+            outline_valid = false;
             continue;
           }
           const std::string_view s = k == Kind::number ? r.number() : r.string_view();
@@ -221,6 +252,7 @@ void read_body(Reader& r, const Limits& lim, bool& has_com, Q (&com)[2]) {
           try {  // a valid number counts (the engine refuses an invalid one; the checker ignores it)
             t = number_text(s, lim, "");
           } catch (const Failure&) {
+            outline_valid = false;
             continue;
           }
           try {
@@ -228,7 +260,10 @@ void read_body(Reader& r, const Limits& lim, bool& has_com, Q (&com)[2]) {
           } catch (const Failure& f) {
             throw Failure{r.path() + f.message};
           }
+          xy.push_back(scene_number(s, lim, ""));
         }
+        if (xy.size() == 2) outline.push_back({xy[0], xy[1]});
+        else outline_valid = false;
       }
     } else if (key == "com") {
       read_vector(r, lim, 2, com);
@@ -484,6 +519,41 @@ void settle_support(Support& s, bool has_com, const Q (&com)[2], const Limits& l
   throw Failure{none + "the points without a given force must carry the remaining weight " + show(s.rest_weight) +
                 " with its centre at " + show(cx, cy) + ", which is outside their convex hull"};
 }
+// A placed contact made: edge i of the outline (an integer 0..n-1), t in [0, 1], the point v_i + t (v_{i+1} - v_i),
+// the normal as given or rot90(v_{i+1} - v_i) toward the inside (the outline's signed area tells the side), mu as
+// written, else the scene's, else 0 — the engine's rule (exact/io/outline.h).
+void place_contact(Contact& c, const Placed& p, const std::vector<std::array<Q, 2>>& V, bool valid,
+                   const std::optional<Read_number>& scene_mu, const Limits& lim) {
+  const std::string path = "contacts[" + std::to_string(p.index) + "]";
+  if (V.size() < 3 || !valid) throw Failure{path + ".edge: needs body.outline, a polygon of points"};
+  if (p.edge.get_den() != 1 || sgn(p.edge) < 0 || p.edge >= static_cast<long>(V.size()))
+    throw Failure{path + ".edge: " + show(p.edge) + " is not an edge of body.outline"};
+  if (sgn(p.s) < 0 || p.s > 1) throw Failure{path + ".s: " + show(p.s) + " is not in [0, 1]"};
+  const std::size_t i = p.edge.get_num().get_ui(), j = (i + 1) % V.size();
+  const Q dx = V[j][0] - V[i][0], dy = V[j][1] - V[i][1];
+  std::string text[5] = {Q(V[i][0] + p.s * dx).get_str(), Q(V[i][1] + p.s * dy).get_str(), "", "", "0"};
+  if (p.has_normal) {
+    text[2] = std::string(p.normal[0].text), text[3] = std::string(p.normal[1].text);
+  } else {
+    Q area2 = 0;
+    for (std::size_t k = 0; k < V.size(); ++k) area2 += V[k][0] * V[(k + 1) % V.size()][1] - V[(k + 1) % V.size()][0] * V[k][1];
+    if (sgn(area2) == 0) throw Failure{"body.outline: zero area (no inward normal for " + path + ")"};
+    text[2] = Q(sgn(area2) > 0 ? -dy : dy).get_str(), text[3] = Q(sgn(area2) > 0 ? dx : -dx).get_str();
+  }
+  if (p.has_mu) text[4] = std::string(p.mu.text);
+  else if (scene_mu) text[4] = std::string(scene_mu->text);
+  Read_number n[5];
+  for (int k = 0; k < 5; ++k) {
+    const Number_text t = number_text(text[k], lim, path);
+    n[k].text = text[k];
+    n[k].zero = is_zero(t);
+    n[k].negative = t.negative && !n[k].zero;
+    n[k].fits = small_value(t, n[k].value);
+  }
+  if (n[2].zero && n[3].zero) throw Failure{path + ".normal: zero vector"};
+  c = make_contact(false, n, 5, lim);
+}
+
 // The top-level scene object. body is read for body.com, load for w_ext, support for the sliding
 // certificates (§6); an empty admissible set F is a bad scene.
 Scene read_scene(Reader& r, const Limits& lim) {
@@ -497,6 +567,9 @@ Scene read_scene(Reader& r, const Limits& lim) {
   std::optional<Load> load;
   std::optional<Read_number> scene_mu;  // the scene-wide "mu" (docs/scene-format.md)
   std::vector<std::pair<std::size_t, std::array<Read_number, 5>>> without_mu;  // point contacts that take it
+  std::vector<Placed> placed;
+  std::vector<std::array<Q, 2>> outline;
+  bool outline_valid = false;
   std::string_view key;
   while (r.next_key(key)) {
     if (key == "mu") {
@@ -510,7 +583,7 @@ Scene read_scene(Reader& r, const Limits& lim) {
     } else if (key == "name") {
       read_string(r);
     } else if (key == "body") {
-      read_body(r, lim, has_com, body.emplace().com);
+      read_body(r, lim, has_com, body.emplace().com, outline, outline_valid);
     } else if (key == "load") {
       load = read_load(r, lim);
     } else if (key == "support") {
@@ -522,8 +595,10 @@ Scene read_scene(Reader& r, const Limits& lim) {
           throw Failure{"contacts: more than " + std::to_string(lim.max_contacts) + " contacts"};
         if (Tally::reading) Tally::reading->entry("contacts", scene.contacts.size(), lim);
         std::optional<std::array<Read_number, 5>> no_mu;
-        scene.contacts.push_back(read_contact(r, lim, &no_mu));
+        std::optional<Placed> place;
+        scene.contacts.push_back(read_contact(r, lim, &no_mu, &place));
         if (no_mu) without_mu.emplace_back(scene.contacts.size() - 1, *no_mu);
+        if (place) place->index = scene.contacts.size() - 1, placed.push_back(std::move(*place));
       }
     } else {
       r.fail("unknown key " + quote(key), true);
@@ -535,6 +610,7 @@ Scene read_scene(Reader& r, const Limits& lim) {
       numbers[4] = *scene_mu;
       scene.contacts[i] = make_contact(false, numbers.data(), 5, lim);
     }
+  for (const Placed& p : placed) place_contact(scene.contacts[p.index], p, outline, outline_valid, scene_mu, lim);
   // Gravity beside a support is the weight pressing the body on it (scene-format.md): it sets W and, at body.com,
   // the centre of pressure c, and pushes nothing in the plane. A written weight or pressure_center must agree.
   const bool across = scene.support && load && load->form == Load::Form::gravity;

@@ -445,3 +445,14 @@ def test_regions_with_forces_not_given():
     lo, hi = s["regions_power_bracket"]
     assert lo <= mat * (1 + 1e-12) and mat * (1 - 1e-12) <= hi
     assert abs(float(s["power"][0] - lo)) < 1e-15 and abs(float(s["power"][1] - hi) - 4) < 1e-15
+
+
+def test_outline_is_geometry_placed_contacts_and_refusals():
+    # contacts placed on the outline by edge and parameter; their normals the edges' inward normals, exactly
+    part = {"wrenchkit": 1, "mu": "1/2", "body": {"outline": [[0, 0], [4, 0], [0, 4]]},
+            "contacts": [{"edge": 0, "s": "1/2"}, {"edge": 1, "s": "1/2"}, {"edge": 2, "s": "1/4"}]}
+    assert wrenchkit.closure(part)["force_closure"] is True
+    bad = {"wrenchkit": 1, "body": {"outline": [[0, 0], [4, 0], [0, 4]]},
+           "contacts": [{"at": [2, 0], "normal": [0, -1]}]}
+    with pytest.raises(wrenchkit.InputError, match=r"contacts\[0\]\.normal: \(0, -1\) does not point into the body"):
+        wrenchkit.closure(bad)
