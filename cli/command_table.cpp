@@ -227,6 +227,27 @@ const Option kContactMargins{"contact-margins", nullptr,
                              "also each contact's distance to a degenerate configuration: the least relative volume "
                              "|det|/(|u||v||w|) of three friction-cone edges holding one of its edges (exact, squared)",
                              [](Options& o, S, S) { o.quality.contact_margins = true; }};
+const Option kFingerMu{"mu", "M", "the fingers' friction coefficient (exact, >= 0: 1/2, 0.3; default: the scene's \"mu\")",
+                       [](Options& o, S n, S v) { o.regions.mu = non_negative(o, n, v); }};
+const Option kEdges{"edges", "i,j,...", "pair only these edges of body.outline (edge i from vertex i to i + 1; default: all)",
+                    [](Options& o, S n, S v) {
+                      o.regions.edges.clear();
+                      std::string part;
+                      for (std::size_t k = 0; k <= v.size(); ++k) {
+                        if (k < v.size() && v[k] != ',') {
+                          part += v[k];
+                          continue;
+                        }
+                        if (part.empty() || part.size() > 9 || part.find_first_not_of("0123456789") != std::string::npos)
+                          bad_value(n, v, "is not a list of edge indices i,j,... (non-negative integers)");
+                        o.regions.edges.push_back(static_cast<std::size_t>(std::stoul(part)));
+                        part.clear();
+                      }
+                    }};
+const Option kFingers{"fingers", "2", "how many fingers (2: Nguyen's regions; three fingers are not answered yet)",
+                      [](Options&, S n, S v) {
+                        if (v != "2") bad_value(n, v, v == "3" ? "three fingers are not answered yet (only 2)" : "is not 2");
+                      }};
 const Option kPreset{"preset", "graspit|dexnet",
                      "a peer's conventions: graspit — L1, unit-normal edges, moments about body.com divided by the body's "
                      "largest radius from it (its outline's farthest vertex; certified when irrational); dexnet — L1, "
@@ -573,6 +594,24 @@ std::vector<Command> make_table() {
        run_quality,
        nullptr,
        prepare_quality_json});
+  t.push_back(
+      {"grasp-regions",
+       "where two fingers may go: every edge pair's exact force-closure region on a polygon part, with a certificate",
+       "[OPTIONS] PART.json",
+       "Two frictional fingers on body.outline, each pushing along its edge's inward normal with friction --mu: a\n"
+       "finger on edge i (from vertex i to i + 1) at v_i + s (v_{i+1} - v_i), the other on edge j at t. By Nguyen's\n"
+       "theorem the pair is in force closure exactly when the segment between the fingers lies strictly inside both\n"
+       "friction cones: four strict linear inequalities in (s, t). So each edge pair's region is a convex polygon in\n"
+       "the unit square of (s, t), exact, with rational corners (its sides on the cones' lines excluded). Every pair\n"
+       "i < j is answered (\"closed\": [] when no placement closes); the certificate (the regions) is re-derived and\n"
+       "accepted by the independent checker first. The scene's contacts are not used.\n",
+       join({{kHelp, kJson, kFingerMu, kEdges, kFingers,
+              with_help(kCertificate, "write the certificate to FILE (checked first)")},
+             kLimits}),
+       {"PART.json"},
+       run_grasp_regions,
+       nullptr,
+       prepare_grasp_regions_json});
   t.push_back(
       {"analyze",
        "everything the scene calls for: closure, equilibrium when it has a load, a summary of the limit surface "

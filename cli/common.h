@@ -18,6 +18,7 @@
 #include "exact/io/json_writer.h"
 #include "exact/pipeline/pipeline.h"
 #include "exact/pipeline/hold_answer.h"
+#include "exact/pipeline/grasp_regions_answer.h"
 #include "exact/pipeline/quality_answer.h"
 #include "exact/pipeline/labels_answer.h"
 #include "exact/pipeline/support_answer.h"
@@ -66,6 +67,8 @@ struct Options {
   Compare_options compare;
   // quality: --norm, --normalize, --torque-scale, --about (its --tolerance is the field above).
   Quality_query quality;
+  // grasp-regions: --mu, --edges i,j,…, --fingers (2).
+  Grasp_regions_query regions;
   // reference: --out DIR, --seed, --cases, --random, --sides (4..64).
   std::string out_dir;
   Reference_options reference;
@@ -265,6 +268,9 @@ int run_check(const Options& o);
 // labels_command.cpp: labels, dual, reuleaux;  render_command.cpp: render
 int run_labels(const Options& o, const std::string& scene_text, const std::string& source);
 int run_quality(const Options& o, const std::string& scene_text, const std::string& source);
+int run_grasp_regions(const Options& o, const std::string& scene_text, const std::string& source);
+void write_grasp_regions(Json_writer& w, const Grasp_regions_item& r);  // grasp-regions --json
+Scene_answer prepare_grasp_regions_json(const Options& o);
 Scene_answer prepare_quality_json(const Options& o);
 Quality_query quality_query(const Options& o);  // --only, --norm, --normalize, --torque-scale, --about, --tolerance
 void write_quality(Json_writer& w, const Quality_item& r);

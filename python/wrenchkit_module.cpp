@@ -493,6 +493,19 @@ std::string quality(const Py_scene& s, const std::vector<std::string>& words, co
   return cli::json_answer([&](Json_writer& w) { cli::write_quality(w, r); });
 }
 
+// `wrenchkit grasp-regions --json` (--mu, --edges, --fingers in `words`): the answer's JSON text.
+std::string grasp_regions(const Py_scene& s, const std::vector<std::string>& words) {
+  cli::Options o;
+  try {
+    o = command_options("grasp-regions", words, s.limits);
+  } catch (const cli::Usage_error& e) {
+    throw Input_error(e.what());
+  }
+  const Grasp_regions_item r = answer_grasp_regions(s.text, s.source, request_of("hybrid", s.limits), o.regions);
+  raise_unless_answered(r.status, r.message);
+  return cli::json_answer([&](Json_writer& w) { cli::write_grasp_regions(w, r); });
+}
+
 // `wrenchkit compare --json` (its options in `words`, CORPUS and ANSWERS last): the report's JSON text.
 std::string compare(const std::vector<std::string>& words) {
   const cli::Options o = command_options("compare", words, Input_limits{});
@@ -857,6 +870,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("render", &render);
   m.def("compare", &compare);
   m.def("quality", &quality);
+  m.def("grasp_regions", &grasp_regions);
   m.def("dual", &dual);
   m.def("limit_surface", &limit_surface);
   m.def("sliding", &sliding);

@@ -372,10 +372,13 @@ TEST(CheckerMalformed, KeysAndTypes) {
             R"(missing required key "holds")");
   EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": 1, "holds": false, )" + twist + "}"),
             R"(missing required key "property")");
-  for (const char* version : {"5", "0", "2.0", "1.0", "1e0", "\"1\"", "true"})
+  for (const char* version : {"6", "0", "2.0", "1.0", "1e0", "\"1\"", "true"})
     EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": )" + std::string(version) +
                                           R"(, "property": "force_closure", "holds": false, )" + twist + "}"),
-              "wrenchkit_certificate: expected the integer 1, 2, 3 or 4");
+              "wrenchkit_certificate: expected the integer 1, 2, 3, 4 or 5");
+  // Format 5 is property "grasp_regions" (§3.6) and nothing else.
+  EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": 5, "property": "force_closure", "holds": false, )" + twist + "}"),
+            R"(wrenchkit_certificate: format 5 is property "grasp_regions" only)");
   // Format 4 adds property "quality" (§3.4) and nothing else.
   EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": 4, "property": "force_closure", "holds": false, )" + twist + "}"),
             R"(wrenchkit_certificate: format 4 is properties "quality" and "critical_mu" only (expected 1, 2 or 3))");
@@ -388,7 +391,7 @@ TEST(CheckerMalformed, KeysAndTypes) {
         << version;
   EXPECT_EQ(
       rejection(block_corner, R"({"wrenchkit_certificate": 1, "property": "closure", "holds": false, )" + twist + "}"),
-      R"(property: expected "force_closure", "form_closure", "equilibrium", "motion", "hold", "quality" or "critical_mu")");
+      R"(property: expected "force_closure", "form_closure", "equilibrium", "motion", "hold", "quality", "critical_mu" or "grasp_regions")");
   EXPECT_EQ(rejection(block_corner,
                       R"({"wrenchkit_certificate": 1, "property": "force_closure", "holds": "false", )" + twist + "}"),
             R"(holds: expected true or false (or "impending" or "depends" for property "hold"))");

@@ -194,7 +194,7 @@ TEST(Cli, EveryCommandOfTheTableHasHelpAndRefusesAnUnknownMode) {
   for (const char* c : {"closure", "check", "render", "batch", "reference", "compare", "demo", "limit-surface"})
     EXPECT_NE(std::find(commands.begin(), commands.end(), c), commands.end()) << c;
   const std::vector<std::string> per_scene = batch_commands_of_help();
-  EXPECT_EQ(per_scene.size(), 10u);  // hold joined (issue 16), quality (issue 31)
+  EXPECT_EQ(per_scene.size(), 11u);  // hold joined (issue 16), quality (issue 31), grasp-regions (issue 32)
   std::vector<std::string> lines;  // every command line, batch with each of its commands
   for (const std::string& c : commands) {
     const Cli_result h = run(c + " --help");
@@ -855,6 +855,37 @@ TEST(Cli, OutlineChecksRefuseOrWarn) {
   EXPECT_EQ(k.code, 0) << k.out << k.err;
   const Cli_result a = run("analyze " + placed.string());
   EXPECT_NE(a.out.find("outline: 3 vertices, counter-clockwise, convex; every contact on it"), std::string::npos) << a.out;
+}
+
+// grasp-regions end to end: the JSON a script counts on ("pairs": [{"edges": [i, j], "closed": [[[s, t], …]]}]), the
+// certificate written and accepted by `check`, batch, and the refusals (no mu, no outline, an edge out of range,
+// three fingers) with exit 2 and nothing on stdout.
+TEST(Cli, GraspRegionsJsonCertificateAndRefusals) {
+  const fs::path square = scratch() / "gr_square.json", cert = scratch() / "gr_square.cert.json";
+  std::ofstream(square) << R"({"wrenchkit": 1, "body": {"outline": [[0, 0], [1, 0], [1, 1], [0, 1]]}})";
+  const Cli_result r = run("grasp-regions --json --fingers 2 --mu 1/2 --certificate " + cert.string() + " " + square.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find(R"("pairs": [{"edges": [0, 1], "closed": []}, {"edges": [0, 2], "closed": [[["1/2", "0"], ["1", "0"], )"
+                       R"(["1", "1/2"], ["1/2", "1"], ["0", "1"], ["0", "1/2"]]]})"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(R"("closed_pairs": 2)"), std::string::npos) << r.out;
+  const Cli_result k = run("check " + square.string() + " " + cert.string());
+  EXPECT_EQ(k.code, 0) << k.out << k.err;
+  const Cli_result text = run("grasp-regions --mu 1/2 " + square.string());
+  EXPECT_NE(text.out.find("for 2 of 6 edge pairs"), std::string::npos) << text.out;
+  const Cli_result batch = run("batch grasp-regions --mu 2", R"({"wrenchkit": 1, "body": {"outline": [[0, 0], [4, 0], [0, 3]]}})" "\n");
+  EXPECT_EQ(batch.code, 0) << batch.err;
+  EXPECT_NE(batch.out.find(R"("line": 1, "command": "grasp-regions")"), std::string::npos) << batch.out;
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {square.string(), "--mu: missing"},
+           {"--mu 1 --edges 0,9 " + square.string(), "--edges: 9 is not an edge of body.outline (0 to 3)"},
+           {"--mu 1 --fingers 3 " + square.string(), "three fingers are not answered yet"},
+           {"--mu 1 -", "body.outline: missing"}}) {
+    const Cli_result e = run("grasp-regions " + args, R"({"wrenchkit": 1})");
+    EXPECT_EQ(e.code, 2) << args;
+    EXPECT_EQ(e.out, "") << args;
+    EXPECT_NE(e.err.find(message), std::string::npos) << e.err;
+  }
 }
 
 }  // namespace

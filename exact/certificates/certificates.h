@@ -6,6 +6,7 @@
 //   equilibrium.cpp  §3.3       equilibrium of the load (a combination; a twist the load drives)
 //   quality.cpp      §3.4       the grasp quality ε (a twist; the closed boundary of the wrench space; a facet normal)
 //   critical_mu.cpp  §3.5       the critical friction coefficient (§3.1–§3.3 certificates at a common μ on each side)
+//   grasp_regions.cpp §3.6      two-finger force-closure regions on a polygon's edge pairs
 //   motion.cpp       §6         stick / slide / depends on a support (§6.4 regions, §6.5 format 2)
 //   hold.cpp         §7         fixtures on a support (§7.4 regions, §7.5 format 2)
 //   witnesses.cpp    §6.1 §6.4  the parts §6 and §7 share: support forces, stick and slide witnesses, region blocks
@@ -24,6 +25,7 @@
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/statics/critical_mu.h"
+#include "exact/statics/grasp_regions.h"
 #include "exact/statics/quality.h"
 
 namespace wrenchkit {
@@ -41,6 +43,10 @@ std::string certificate_json(const Quality_answer& a);
 
 // §3.5 (format 4): the certificate of μ* of force closure (`closure`) or of the scene's load's equilibrium.
 std::string critical_mu_certificate(const Critical_mu& c, bool closure);
+
+// §3.6 (format 5): the regions of every edge pair asked; write_region_pairs: its "pairs" array (the answer's too).
+void write_region_pairs(Json_writer& w, const Grasp_regions& g);
+std::string grasp_regions_certificate(const Grasp_regions& g);
 
 // §6: the certificate of a decided motion (not undecided) of the load p on the model's support. Format 1, or 2 where
 // format 1 has none (regions together with a point force not given, §6.5).

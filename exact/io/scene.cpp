@@ -41,7 +41,7 @@ class Reader {
     outline_ = &s.body.outline;
     // The scene-wide μ: every point contact's coefficient unless it writes its own (docs/scene-format.md).
     scene_mu_ = root.find("mu");
-    if (scene_mu_) nonnegative(*scene_mu_, "mu");
+    if (scene_mu_) s.mu = nonnegative(*scene_mu_, "mu");
     if (const Value* v = root.find("contacts")) {
       expect(*v, Type::array, "contacts", "an array");
       if (v->items.size() > limits_.max_contacts)

@@ -128,6 +128,8 @@ struct Scene {
   std::optional<Support> support;
   // What a lenient reading let through (exact/io/outline.h): each a violation the strict reading refuses.
   std::vector<std::string> warnings;
+  // The scene-wide "mu" as written (its point contacts have it already; grasp-regions' fingers take it).
+  std::optional<Rational> mu;
 };
 
 // The scene with every contact's rationals filled: `s` itself when none was read lazily, else a copy kept in `storage`.

@@ -102,6 +102,11 @@ class Stream {
     });
     if (!(seen & kVersion)) defer();
     if (peek() != kEnd) defer();  // data after the scene
+    out.mu.reset();
+    if (seen & kSceneMu) {  // the scene's own, exact (a lazy reading kept its text)
+      std::string why;
+      out.mu = lazy_ ? *parse_rational(scene_mu_.number_text[4], scene_mu_.number_is_json[4], limits_, why) : scene_mu_.mu;
+    }
     if (seen & kSceneMu)  // every point contact without its own mu takes the scene's (wherever the key stood)
       for (const std::size_t k : without_mu_) {
         Contact& c = out.contacts[k];

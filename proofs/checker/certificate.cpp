@@ -236,14 +236,14 @@ Certificate read_certificate(Reader& r) {
     c.keys.insert(key);
     if (key == "wrenchkit_certificate") {
       const std::string_view v = r.peek() == Kind::number ? r.number() : "";
-      if (v != "1" && v != "2" && v != "3" && v != "4") r.fail("expected the integer 1, 2, 3 or 4");
+      if (v != "1" && v != "2" && v != "3" && v != "4" && v != "5") r.fail("expected the integer 1, 2, 3, 4 or 5");
       c.version = v[0] - '0';
     } else if (key == "property") {
       const std::string_view p = r.peek() == Kind::string ? r.string_view() : "";
       if (p != "force_closure" && p != "form_closure" && p != "equilibrium" && p != "motion" && p != "hold" &&
-          p != "quality" && p != "critical_mu")
-        r.fail("expected \"force_closure\", \"form_closure\", \"equilibrium\", \"motion\", \"hold\", \"quality\" or "
-               "\"critical_mu\"");
+          p != "quality" && p != "critical_mu" && p != "grasp_regions")
+        r.fail("expected \"force_closure\", \"form_closure\", \"equilibrium\", \"motion\", \"hold\", \"quality\", "
+               "\"critical_mu\" or \"grasp_regions\"");
       c.property = p;
       c.reading = p == "form_closure" ? Reading::frictionless : Reading::friction;
       c.equilibrium = p == "equilibrium";
@@ -251,6 +251,9 @@ Certificate read_certificate(Reader& r) {
       c.hold = p == "hold";
       c.quality = p == "quality";
       c.critical = p == "critical_mu";
+      c.regions = p == "grasp_regions";
+    } else if (key == "fingers" || key == "mu" || key == "edges" || key == "pairs") {
+      read_region_member(r, key, c);
     } else if (key == "holds") {
       if (r.peek() == Kind::string) {  // property "hold" only (checked once the property is known)
         const std::string_view v = r.string_view();
@@ -393,6 +396,20 @@ void check_keys(const Certificate& c) {
       throw Failure{"key \"independent\" is not allowed when \"property\" is \"equilibrium\""};
   };
   need("wrenchkit_certificate"), need("property");
+  if ((c.version == 5) != c.regions)
+    throw Failure{c.regions ? "wrenchkit_certificate: property \"grasp_regions\" is format 5 (expected the integer 5)"
+                            : "wrenchkit_certificate: format 5 is property \"grasp_regions\" only"};
+  static const char* const region_keys[] = {"fingers", "mu", "edges", "pairs"};
+  if (c.regions) {
+    need("fingers"), need("mu"), need("pairs");
+    for (const std::string_view key : {"holds", "combination", "independent", "twist", "reading"})
+      if (c.keys.count(key)) throw Failure{"key " + quote(key) + " is not allowed when \"property\" is \"grasp_regions\""};
+    return;
+  }
+  if (c.keys.any(Key_set::mask(region_keys)))
+    for (const char* key : region_keys)
+      if (c.keys.count(key))
+        throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is " + quote(c.property)};
   if ((c.version == 4) != (c.quality || c.critical))
     throw Failure{c.quality || c.critical ? "wrenchkit_certificate: property " + quote(c.property) + " is format 4 (expected the integer 4)"
                             : "wrenchkit_certificate: format 4 is properties \"quality\" and \"critical_mu\" only (expected 1, 2 or 3)"};

@@ -79,7 +79,7 @@ class Key_set {
                                              "torque_scale", "about", "scales", "epsilon", "boundary", "nearest",
                                              "normal", "of", "critical_mu", "below", "above", "constant",
                                              "constant_beyond", "limit_twist", "scaling", "torque_radius_squared",
-                                             "torque_scale_error"};
+                                             "torque_scale_error", "fingers", "mu", "edges", "pairs"};
     for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
       if (known[i] == key) return i;
     return -1;
@@ -139,6 +139,19 @@ struct Critical_part {
   Q limit_twist[3];
 };
 
+// The members of property "grasp_regions" (§3.6, format 5): each pair's claimed polygons.
+struct Regions_part {
+  std::size_t fingers = 0;
+  Q mu;
+  bool has_edges = false;
+  std::vector<std::size_t> edges;  // "edges": the edges asked (else every edge of the outline)
+  struct Pair {
+    std::size_t i = 0, j = 0;
+    std::vector<std::vector<std::array<Q, 2>>> closed;
+  };
+  std::vector<Pair> pairs;
+};
+
 struct Certificate {
   Key_set keys;  // the keys present
   std::string_view property;
@@ -148,6 +161,7 @@ struct Certificate {
   bool hold = false;         // property "hold" (§7), read with friction
   bool quality = false;      // property "quality" (§3.4, format 4), read with friction
   bool critical = false;     // property "critical_mu" (§3.5, format 4)
+  bool regions = false;      // property "grasp_regions" (§3.6, format 5)
   bool holds = false;
   bool depends = false;      // "holds": "depends" (property "hold" only)
   bool impending = false;    // "holds": "impending" (property "hold", format 3 only)
@@ -169,6 +183,11 @@ struct Certificate {
   Critical_part& cm() {
     if (!critical_members) critical_members = std::make_unique<Critical_part>();
     return *critical_members;
+  }
+  std::unique_ptr<Regions_part> regions_members;  // allocated by g() when a member of §3.6 is read
+  Regions_part& g() {
+    if (!regions_members) regions_members = std::make_unique<Regions_part>();
+    return *regions_members;
   }
   std::unique_ptr<Quality_part> quality_members;  // allocated by q() when a member of §3.4 is read
   Quality_part& q() {
@@ -192,5 +211,7 @@ void check_motion(const Certificate& c, const Scene& scene, const Limits& lim);
 void check_hold(const Certificate& c, const Scene& scene, const Limits& lim);
 void check_quality(const Certificate& c, const Scene& scene, const Limits& lim);  // quality.cpp (§3.4)
 void check_critical_mu(const Certificate& c, const Scene& scene, const Limits& lim);  // critical_mu.cpp (§3.5)
+void read_region_member(Reader& r, std::string_view key, Certificate& c);  // grasp_regions.cpp (§3.6): a member
+void check_grasp_regions(const Certificate& c, const Scene& scene, const Limits& lim);  // grasp_regions.cpp (§3.6)
 
 }  // namespace wrenchkit_checker::detail

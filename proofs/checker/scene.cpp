@@ -611,6 +611,7 @@ Scene read_scene(Reader& r, const Limits& lim) {
       scene.contacts[i] = make_contact(false, numbers.data(), 5, lim);
     }
   for (const Placed& p : placed) place_contact(scene.contacts[p.index], p, outline, outline_valid, scene_mu, lim);
+  scene.outline = std::move(outline), scene.outline_valid = outline_valid;
   // Gravity beside a support is the weight pressing the body on it (scene-format.md): it sets W and, at body.com,
   // the centre of pressure c, and pushes nothing in the plane. A written weight or pressure_center must agree.
   const bool across = scene.support && load && load->form == Load::Form::gravity;

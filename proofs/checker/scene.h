@@ -58,6 +58,8 @@ struct Support {
 
 struct Scene {
   std::size_t longest = 0;  // digits of the longest number (as the budget counts them)
+  std::vector<std::array<Q, 2>> outline;  // body.outline's points; outline_valid: every one read as a point
+  bool outline_valid = false;
   std::vector<Contact> contacts;
   bool has_load = false;
   std::optional<Wrench> load;  // w_ext (certificate-format.md §3.3), if has_load

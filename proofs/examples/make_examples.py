@@ -42,6 +42,7 @@ MAT_LEGS = {"wrenchkit": 1, "support": {"mu": "1/2", "weight": 5, "pressure_cent
 SQUARE_REGION = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 1}
 
 SCENES = {
+    "square_part": {"wrenchkit": 1, "name": "the unit square as a part for two fingers (no contacts)", "body": {"outline": [[0, 0], [1, 0], [1, 1], [0, 1]]}},
     "square_side_middles": {"wrenchkit": 1, "name": "the square held at its side middles, mu = 1/10 (GraspIt!'s torque scale 1/sqrt 2)", "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "com": [0, 0]}, "contacts": [{"at": [0, -1], "normal": [0, 1], "mu": "1/10"}, {"at": [0, 1], "normal": [0, -1], "mu": "1/10"}, {"at": [-1, 0], "normal": [1, 0], "mu": "1/10"}, {"at": [1, 0], "normal": [-1, 0], "mu": "1/10"}]},
     "two_fingers_offset_own_mu": {"wrenchkit": 1, "name": "the offset fingers with their own friction, mu = 1 and 3/4: closed while both keep more than 2/3 of it", "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": 1, "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "mu": "3/4", "name": "right finger"}]},
     "two_fingers_offset_moment": {"wrenchkit": 1, "name": "the offset fingers against a pure moment: balanced only above mu = 1/2", "contacts": [{"at": [-1, 0], "normal": [1, 0], "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "name": "right finger"}], "load": {"wrench": [0, 0, 1]}},
@@ -385,6 +386,18 @@ CRIT_NEVER = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_m
 CRIT_NEVER_LOAD = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": "never", "limit_twist": ["1", "0", "0"]}''')
 
 
+# grasp regions (§3.6): the unit square's opposite sides close for |1 - s - t| < 1/2 with mu = 1/2
+SQ_REGION = [["1/2", "0"], ["1", "0"], ["1", "1/2"], ["1/2", "1"], ["0", "1"], ["0", "1/2"]]
+
+
+def regions_cert(pairs, mu="1/2", **rest):
+    return dict({"wrenchkit_certificate": 5, "property": "grasp_regions", "fingers": 2, "mu": mu}, **rest, pairs=pairs)
+
+
+SQ_PAIRS = [{"edges": [i, j], "closed": [SQ_REGION] if (i, j) in ((0, 2), (1, 3)) else []}
+            for i in range(4) for j in range(i + 1, 4)]
+
+
 def crit(base, **changes):
     cert = json.loads(json.dumps(base))
     cert.update(changes)
@@ -392,6 +405,17 @@ def crit(base, **changes):
 
 
 CERTS = [
+    ("square_part", "grasp_regions_half", "valid", regions_cert(SQ_PAIRS)),
+    ("square_part", "grasp_regions_opposite", "valid", regions_cert([SQ_PAIRS[1]], edges=[0, 2])),
+    ("square_part", "grasp_regions_adjacent_at_mu_1", "valid", regions_cert([{"edges": [0, 1], "closed": []}], mu="1", edges=[0, 1])),
+    ("square_part", "grasp_regions_corner_moved", "invalid:region|pairs[1].closed: not the force-closure region of edges 0 and 2",
+     regions_cert([dict(p, closed=[[["1/3", "0"]] + SQ_REGION[1:]]) if p["edges"] == [0, 2] else p for p in SQ_PAIRS])),
+    ("square_part", "grasp_regions_pair_missing", "invalid:pairs|pairs[0]: expected edges [0, 1]",
+     regions_cert(SQ_PAIRS[1:])),
+    ("square_part", "grasp_regions_adjacent_claimed", "invalid:region|pairs[0].closed: not the force-closure region of edges 0 and 1",
+     regions_cert([{"edges": [0, 1], "closed": [[["1/2", "1/2"], ["1", "1/2"], ["1", "1"]]]}], mu="1", edges=[0, 1])),
+    ("square_part", "grasp_regions_format_4", "invalid:header|property \"grasp_regions\" is format 5",
+     dict(regions_cert(SQ_PAIRS), wrenchkit_certificate=4)),
     ("two_fingers_offset", "critical_mu_half", "valid", CRIT_OFFSET),
     ("ladder_gravity", "critical_mu_closure", "valid", CRIT_LADDER_CLOSURE),
     ("ladder_gravity", "critical_mu_one_seventh", "valid", CRIT_LADDER),
@@ -1610,8 +1634,62 @@ def verify_critical(scene, cert):
     return None if all(constant(p, l, h, far) for p in minors()) else "constant"
 
 
+def verify_regions(scene, cert):
+    """§3.6: every pair asked, in order, with Nguyen's region (written here from angles' signs: the segment between
+    the fingers strictly inside both cones), cut from the unit square; its own clipping, not the checker's."""
+    if cert.get("wrenchkit_certificate") != 5 or cert.get("fingers") != 2:
+        return "header"
+    V = [(F(x), F(y)) for x, y in scene["body"]["outline"]]
+    n, mu = len(V), F(cert["mu"])
+    area2 = sum(V[k][0] * V[(k + 1) % n][1] - V[(k + 1) % n][0] * V[k][1] for k in range(n))
+
+    def inward(k):
+        dx, dy = V[(k + 1) % n][0] - V[k][0], V[(k + 1) % n][1] - V[k][1]
+        return (-dy, dx) if area2 > 0 else (dy, -dx)
+
+    def closes(i, s, j, t):
+        p = (V[i][0] + s * (V[(i + 1) % n][0] - V[i][0]), V[i][1] + s * (V[(i + 1) % n][1] - V[i][1]))
+        q = (V[j][0] + t * (V[(j + 1) % n][0] - V[j][0]), V[j][1] + t * (V[(j + 1) % n][1] - V[j][1]))
+        ok = True
+        for nn, d in ((inward(i), (q[0] - p[0], q[1] - p[1])), (inward(j), (p[0] - q[0], p[1] - q[1]))):
+            along, side = nn[0] * d[0] + nn[1] * d[1], nn[0] * d[1] - nn[1] * d[0]
+            ok = ok and along > 0 and abs(side) < mu * along
+        return ok
+
+    edges = cert.get("edges", list(range(n)))
+    want = [(i, j) for a, i in enumerate(edges) for j in edges[a + 1:]]
+    if [tuple(p["edges"]) for p in cert["pairs"]] != want:
+        return "pairs"
+    for p in cert["pairs"]:
+        i, j = p["edges"]
+        # the claim: the open polygon is the closure set. Test it on a grid of the square: a point strictly inside a
+        # claimed polygon closes, a point outside every claimed polygon (and off their sides) does not
+        polys = [[(F(a), F(b)) for a, b in poly] for poly in p["closed"]]
+
+        def where(s, t):
+            for poly in polys:
+                signs = [(b[0] - a[0]) * (t - a[1]) - (b[1] - a[1]) * (s - a[0]) for a, b in zip(poly, poly[1:] + poly[:1])]
+                if all(x > 0 for x in signs):
+                    return "in"
+                if all(x >= 0 for x in signs):
+                    return "side"
+            return "out"
+        for a in range(0, 25):
+            for b in range(0, 25):
+                s, t = F(a, 24), F(b, 24)
+                w = where(s, t)
+                if w != "side" and (w == "in") != closes(i, s, j, t):
+                    return "region"
+    return None
+
+
 def verify(scene, cert):
     """Returns None if cert proves its claim for scene, else a short reason."""
+    if cert.get("property") == "grasp_regions":
+        try:
+            return verify_regions(scene, cert)
+        except (ValueError, KeyError, TypeError) as e:
+            return f"malformed: {e}"
     if cert.get("property") == "critical_mu":
         try:
             return verify_critical(scene, cert)

@@ -456,3 +456,17 @@ def test_outline_is_geometry_placed_contacts_and_refusals():
            "contacts": [{"at": [2, 0], "normal": [0, -1]}]}
     with pytest.raises(wrenchkit.InputError, match=r"contacts\[0\]\.normal: \(0, -1\) does not point into the body"):
         wrenchkit.closure(bad)
+
+
+def test_grasp_regions_square_opposite_sides():
+    square = {"wrenchkit": 1, "body": {"outline": [[0, 0], [1, 0], [1, 1], [0, 1]]}}
+    r = wrenchkit.grasp_regions(square, mu="1/2")
+    assert [p["edges"] for p in r["pairs"]] == [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]]
+    closed = {tuple(p["edges"]): p["closed"] for p in r["pairs"]}
+    # bottom finger at x = s, top finger at x = 1 - t: |1 - s - t| < 1/2
+    assert closed[(0, 2)][0][0] == (Fraction(1, 2), Fraction(0))
+    assert closed[(0, 1)] == []
+    assert r["largest"]["area"] == Fraction(3, 4) and r["certificate_checked"] is True
+    assert wrenchkit.grasp_regions(square, mu=1, edges=[0, 1])["pairs"][0]["closed"] == []  # the boundary: empty
+    with pytest.raises(wrenchkit.InputError, match="--mu: missing"):
+        wrenchkit.grasp_regions(square)

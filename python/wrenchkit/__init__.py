@@ -55,7 +55,7 @@ from . import _core  # noqa: E402  (the exception classes above are handed to th
 _core._set_exceptions(InputError, InternalError, UndecidedError)
 
 __all__ = ["Scene", "closure", "force_closure", "form_closure", "equilibrium", "hold", "labels", "dual", "reuleaux",
-           "quality", "limit_surface", "sliding", "render", "check", "reference", "compare", "batch", "closure_arrays",
+           "quality", "grasp_regions", "limit_surface", "sliding", "render", "check", "reference", "compare", "batch", "closure_arrays",
            "equilibrium_arrays", "quality_arrays", "stick_slide_arrays", "DECIDED_BY", "MOTION", "MOTION_DECIDED_BY", "InputError",
            "UndecidedError", "InternalError"]
 
@@ -316,6 +316,29 @@ def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, 
         r["contact_margins"]["about"] = tuple(_fractions.Fraction(x) for x in r["contact_margins"]["about"])
         for c in r["contact_margins"]["contacts"]:
             exact(c, ("squared",))
+    return r
+
+
+def grasp_regions(part, *, mu=None, edges=None):
+    """Where two fingers may go (docs/grasp-regions.md), as `wrenchkit grasp-regions --json`: for every pair i < j of
+    body.outline's edges (edge i from vertex i to i + 1), "closed": the polygons in (s, t) — a finger at
+    v_i + s (v_{i+1} - v_i), the other at t on edge j — where the two frictional fingers are in force closure (corners
+    as Fraction pairs, counter-clockwise; [] when none), with "areas", "largest", "outline" and the "certificate" the
+    independent checker accepted. mu: the fingers' friction (default: the scene's "mu"); edges: the edges to pair.
+    """
+    words = []
+    if mu is not None:
+        words += ["--mu", _number_text(mu, "mu")]
+    if edges is not None:
+        words += ["--edges", ",".join(str(int(e)) for e in edges)]
+    r = _json.loads(_core.grasp_regions(_scene(part), words))
+    r["mu"] = _fractions.Fraction(r["mu"])
+    for p in r["pairs"]:
+        p["closed"] = [[tuple(_fractions.Fraction(x) for x in c) for c in poly] for poly in p["closed"]]
+    for a in r["areas"]:
+        a["area"] = _fractions.Fraction(a["area"])
+    if "largest" in r:
+        r["largest"]["area"] = _fractions.Fraction(r["largest"]["area"])
     return r
 
 

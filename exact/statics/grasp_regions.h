@@ -1,0 +1,53 @@
+// [GR-1] Where two fingers may go: the exact force-closure regions of two frictional fingers on a polygon's edges
+// (docs/grasp-regions.md, proofs/notes/GR-1-two-finger-regions.md, proofs/certificate-format.md §3.6).
+//
+// Fingers on edges i and j of body.outline (edge k from vertex k to k + 1), at p_i(s) = v_i + s·d_i and
+// p_j(t) = v_j + t·d_j, (s, t) ∈ [0, 1]², each pushing along its edge's inward normal n with friction μ (the cone
+// pos{n − μ·rot90 n, n + μ·rot90 n}). Nguyen's theorem: two frictional point contacts are in force closure exactly
+// when the segment between them lies strictly inside both friction cones — p_j − p_i in the open cone at p_i and
+// p_i − p_j in the open cone at p_j. Each of the four strict conditions is cross(e, v) > 0 with v affine in (s, t):
+// a strict linear inequality. So the closure set of a pair is the unit square cut by four open half-planes — a convex
+// polygon, exact, with rational corners; it is empty or has positive area (an open set meeting the square meets its
+// interior). Exact arithmetic only (no square root): the edges' normals are rot90 of the edge vectors, not unit.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "exact/io/scene.h"
+
+namespace wrenchkit {
+
+// a·s + b·t + c > 0 (strict: its line is outside the closure set)
+struct Region_constraint {
+  Rational a, b, c;
+};
+
+struct Pair_region {
+  std::size_t i = 0, j = 0;                    // i < j
+  std::array<Region_constraint, 4> cones;      // finger i's cone (right, left edge), then finger j's
+  std::vector<std::array<Rational, 2>> polygon;  // the closure set's closure in (s, t), counter-clockwise, no three
+                                                 // corners collinear; empty: no placement closes
+  Rational area;                               // of the polygon (0 when empty)
+};
+
+struct Grasp_regions {
+  Rational mu;
+  std::size_t edges = 0;
+  bool ccw = true, convex = false;  // the outline's (exact/io/outline.h)
+  std::vector<std::size_t> asked;   // the edges paired, increasing, when not every edge
+  std::vector<Pair_region> pairs;  // every pair i < j of the edges asked (all by default), in order
+  std::size_t closed_pairs() const;
+};
+
+// Throws Input_error for a scene without body.outline (or an outline that is not a simple polygon), μ < 0, an edge
+// index out of range. `only`: the edges to pair (empty: every edge). Bounded work: refused past 2 000 edges (the
+// pairs grow as the square: 2 million).
+constexpr std::size_t kGraspRegionsMaxEdges = 2000;
+Grasp_regions two_finger_regions(const Scene& scene, const Rational& mu, const std::vector<std::size_t>& only = {});
+
+// The pair's four constraints at (s, t) — Nguyen's closure test of the placement, exact.
+bool closed_at(const Pair_region& r, const Rational& s, const Rational& t);
+
+}  // namespace wrenchkit

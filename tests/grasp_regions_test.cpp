@@ -1,0 +1,149 @@
+// [GR-1] Two-finger force-closure regions: golden cases worked by hand (the square's opposite sides with μ = 1/2:
+// 1/2 < s + t < 3/2, area 3/4; adjacent sides: empty up to μ = 1 — the boundary itself — and a triangle above it);
+// the theorem's own statement on random polygons: every sampled placement, on a grid and 10⁻ᵏ beside each corner, is
+// inside the region exactly when the engine's closure decision of the two contacts says closed (an independent
+// oracle: the dual-cone decision, not Nguyen's test), and Nguyen's criterion written here from angles' signs agrees;
+// the independent checker accepts every answer and refuses a moved corner.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+
+#include "exact/certificates/certificates.h"
+#include "exact/io/input_error.h"
+#include "exact/io/outline.h"
+#include "exact/io/scene.h"
+#include "exact/statics/closure.h"
+#include "exact/statics/grasp_regions.h"
+#include "proofs/checker/checker.h"
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+
+std::string part(const std::string& outline) { return R"({"wrenchkit": 1, "body": {"outline": )" + outline + "}}"; }
+Scene scene_of(const std::string& text) { return read_scene(text, Input_limits{}); }
+const char* kSquare = "[[0, 0], [1, 0], [1, 1], [0, 1]]";
+
+// Is (s, t) strictly inside the convex counter-clockwise polygon?
+bool strictly_inside(const std::vector<std::array<Rational, 2>>& P, const Rational& s, const Rational& t) {
+  if (P.empty()) return false;
+  for (std::size_t k = 0; k < P.size(); ++k) {
+    const auto &a = P[k], &b = P[(k + 1) % P.size()];
+    if (sgn((b[0] - a[0]) * (t - a[1]) - (b[1] - a[1]) * (s - a[0])) <= 0) return false;
+  }
+  return true;
+}
+
+TEST(GraspRegionsGolden, SquareOppositeSides) {
+  const Grasp_regions g = two_finger_regions(scene_of(part(kSquare)), Rational(1, 2));
+  ASSERT_EQ(g.pairs.size(), 6u);
+  EXPECT_EQ(g.closed_pairs(), 2u);
+  for (const Pair_region& p : g.pairs) {
+    const bool opposite = (p.i == 0 && p.j == 2) || (p.i == 1 && p.j == 3);
+    EXPECT_EQ(!p.polygon.empty(), opposite) << p.i << " " << p.j;
+    if (!opposite) continue;
+    // bottom finger at x = s, top at x = 1 − t: |1 − s − t| < 1/2
+    EXPECT_EQ(p.area, Rational(3, 4));
+    EXPECT_EQ(p.polygon.size(), 6u);
+    EXPECT_TRUE(closed_at(p, Rational(1, 2), Rational(1, 2)));
+    EXPECT_FALSE(closed_at(p, Rational(1, 4), Rational(1, 4)));  // s + t = 1/2 exactly: on the cone's edge
+    EXPECT_TRUE(closed_at(p, Rational(1, 4), Rational(1, 4) + Rational(1, 1000000000)));
+  }
+  EXPECT_EQ(two_finger_regions(scene_of(part(kSquare)), 0).closed_pairs(), 0u);  // frictionless: never
+}
+
+TEST(GraspRegionsGolden, AdjacentSidesNeedMoreThanOne) {
+  // fingers at (s, 0) and (1, t): the segment (1 − s, t) must be within 45°·(μ = 1) of both normals: t > 1 − s and
+  // t < 1 − s — exactly on the boundary at μ = 1, so empty; with μ = 2 a region
+  for (const auto& [mu, closed] : {std::pair<Rational, bool>{1, false}, {2, true}}) {
+    const Grasp_regions g = two_finger_regions(scene_of(part(kSquare)), mu, {0, 1});
+    ASSERT_EQ(g.pairs.size(), 1u);
+    EXPECT_EQ(!g.pairs[0].polygon.empty(), closed) << to_string(mu);
+  }
+  EXPECT_THROW(two_finger_regions(scene_of(part(kSquare)), 1, {0, 4}), Input_error);
+  EXPECT_THROW(two_finger_regions(scene_of(R"({"wrenchkit": 1})"), 1), Input_error);
+}
+
+// The placements of a pair as a scene of two placed contacts with μ (the engine's own closure decides it).
+std::string two_fingers(const std::string& outline, std::size_t i, const Rational& s, std::size_t j, const Rational& t,
+                        const Rational& mu) {
+  return R"({"wrenchkit": 1, "mu": ")" + to_string(mu) + R"(", "body": {"outline": )" + outline +
+         R"(}, "contacts": [{"edge": )" + std::to_string(i) + R"(, "s": ")" + to_string(s) + R"("}, {"edge": )" +
+         std::to_string(j) + R"(, "s": ")" + to_string(t) + R"("}]})";
+}
+
+// Nguyen written here from its statement: d = p_j − p_i strictly inside cone i and −d strictly inside cone j, a cone
+// {n + x·rot90 n : |x| < μ} — d·n > 0 and |cross(n, d)| < μ (d·n), with n each edge's inward normal.
+bool nguyen(const std::vector<Vec2>& V, std::size_t i, const Rational& s, std::size_t j, const Rational& t,
+            const Rational& mu) {
+  const int o = outline_orientation(V);
+  const Vec2 pi = edge_point(V, i, s), pj = edge_point(V, j, t), d{pj.x - pi.x, pj.y - pi.y};
+  const auto inside = [&](const Vec2& n, const Vec2& v) {
+    const Rational along = dot(n, v), side = cross(n, v);
+    return sgn(along) > 0 && abs(side) < mu * along;
+  };
+  return inside(edge_inward_normal(V, i, o), d) && inside(edge_inward_normal(V, j, o), Vec2{-d.x, -d.y});
+}
+
+TEST(GraspRegionsOracle, RegionsAgreeWithClosureAndNguyen) {
+  const char* outlines[] = {"[[0, 0], [4, 0], [0, 3]]", "[[0, 0], [6, 0], [6, 2], [2, 2], [2, 5], [0, 5]]",
+                            "[[0, 0], [3, 0], [5, 2], [4, 5], [1, 4]]", "[[0, 0], [0, 4], [4, 4], [4, 0]]"};
+  const Rational mus[] = {Rational(1, 4), Rational(1, 2), Rational(1), Rational(3, 2)};
+  std::mt19937_64 rng(test::seed(20261129));
+  int inside = 0, outside = 0, near = 0;
+  for (const char* o : outlines)
+    for (const Rational& mu : mus) {
+      const Scene sc = scene_of(part(o));
+      const Grasp_regions g = two_finger_regions(sc, mu);
+      const auto rejected = wrenchkit_checker::check(part(o), grasp_regions_certificate(g), wrenchkit_checker::Limits{});
+      ASSERT_EQ(rejected.outcome, wrenchkit_checker::Outcome::accepted) << rejected.message;
+      for (const Pair_region& p : g.pairs) {
+        std::vector<std::pair<Rational, Rational>> samples;
+        for (int k = 0; k < 6; ++k) samples.push_back({Rational(1 + rng() % 15, 16), Rational(1 + rng() % 15, 16)});
+        for (const auto& c : p.polygon)  // beside each corner, 10^-9 toward and away from the centre
+          for (const int dir : {1, -1}) {
+            const Rational e(dir, 1000000000);
+            samples.push_back({c[0] + e * (Rational(1, 2) - c[0]), c[1] + e * (Rational(1, 2) - c[1])});
+          }
+        for (const auto& [s, t] : samples) {
+          if (s < 0 || s > 1 || t < 0 || t > 1) continue;
+          const bool in = strictly_inside(p.polygon, s, t);
+          const std::string text = two_fingers(o, p.i, s, p.j, t, mu);
+          const bool closed = decide_closure(scene_of(text), Property::force_closure, Mode::exact, false).holds;
+          ASSERT_EQ(in, closed) << test::dump_failure(text, "grasp_regions");
+          ASSERT_EQ(closed_at(p, s, t), closed) << test::dump_failure(text, "grasp_regions");
+          ASSERT_EQ(nguyen(sc.body.outline, p.i, s, p.j, t, mu), closed) << test::dump_failure(text, "grasp_regions");
+          (in ? inside : outside) += 1;
+          near += !p.polygon.empty() && samples.size() > 6;
+        }
+      }
+    }
+  EXPECT_GT(inside, 50);
+  EXPECT_GT(outside, 200);
+}
+
+TEST(GraspRegionsChecker, RefusesAMovedCornerAMissingPairAndAClaimedEmptyRegion) {
+  const Grasp_regions g = two_finger_regions(scene_of(part(kSquare)), Rational(1, 2));
+  const std::string good = grasp_regions_certificate(g);
+  const auto check = [&](std::string cert) {
+    return wrenchkit_checker::check(part(kSquare), cert, wrenchkit_checker::Limits{}).message;
+  };
+  EXPECT_EQ(check(good), "accepted");
+  std::string moved = good;
+  moved.replace(moved.find("[\"1/2\", \"0\"]"), 12, "[\"1/3\", \"0\"]");
+  EXPECT_NE(check(moved).find("pairs[1].closed: not the force-closure region of edges 0 and 2"), std::string::npos);
+  std::string missing = good;
+  missing.erase(missing.find("{\"edges\": [0, 1]"), std::string("{\"edges\": [0, 1], \"closed\": []}, ").size());
+  EXPECT_NE(check(missing).find("pairs[0]: expected edges [0, 1]"), std::string::npos) << check(missing);
+  std::string empty = good;
+  const std::size_t a = empty.find("[[[\"1/2\""), b = empty.find("]]]", a) + 3;
+  empty.replace(a, b - a, "[]");
+  EXPECT_NE(check(empty).find("not the force-closure region"), std::string::npos);
+  std::string wrong_mu = good;
+  wrong_mu.replace(wrong_mu.find("\"mu\": \"1/2\""), 11, "\"mu\": \"1/3\"");
+  EXPECT_NE(check(wrong_mu).find("not the force-closure region"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace wrenchkit
