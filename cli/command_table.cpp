@@ -276,14 +276,15 @@ const Option kDirection{"direction", "dx,dy",
                           if (all_zero(*o.direction)) throw Usage_error(n + ": the zero vector is no direction");
                         }};
 
-const Option kWhat{"what", "labels|dual|reuleaux|limit-surface|hold|quality", "what to draw (required)", [](Options& o, S n, S v) {
+const Option kWhat{"what", "labels|dual|reuleaux|limit-surface|hold|quality|grasp-regions", "what to draw (required)", [](Options& o, S n, S v) {
                      if (v == "labels") o.what = Picture::labels;
                      else if (v == "dual") o.what = Picture::dual;
                      else if (v == "reuleaux") o.what = Picture::reuleaux;
                      else if (v == "limit-surface") o.what = Picture::limit_surface;
                      else if (v == "hold") o.what = Picture::hold;
                      else if (v == "quality") o.what = Picture::quality;
-                     else bad_value(n, v, "is not one of labels, dual, reuleaux, limit-surface, hold, quality");
+                     else if (v == "grasp-regions") o.what = Picture::grasp_regions;
+                     else bad_value(n, v, "is not one of labels, dual, reuleaux, limit-surface, hold, quality, grasp-regions");
                    }};
 const Option kOutput = file_option<&Options::output>("output,o", "write the SVG to FILE (default: standard output)");
 
@@ -440,10 +441,14 @@ std::vector<Command> make_table() {
        "\n"
        "With --what quality: three slices of the grasp wrench space through the origin (m = 0, f_y = 0, f_x = 0)\n"
        "with the ball of radius epsilon, as 'wrenchkit quality' computes them (--norm, --normalize,\n"
-       "--torque-scale, --about).\n",
+       "--torque-scale, --about).\n"
+       "\n"
+       "With --what grasp-regions: the part with the largest two-finger region's reach on its two edges, and the\n"
+       "(s, t) squares of the largest regions with their force-closure polygons, as 'wrenchkit grasp-regions'\n"
+       "computes them (--mu, --edges).\n",
        join({{kHelp, kWhat, kOutput,
               with_help(kSides, "with --what limit-surface: polygon sides, even, 4..4096 (default 32)"), kNorm, kNormalize,
-              kTorqueScale, kAbout},
+              kTorqueScale, kAbout, kFingerMu, kEdges},
              kLimits}),
        {kScene},
        run_render});

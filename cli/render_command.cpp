@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/common.h"
+#include "exact/io/outline.h"
 #include "cli/render_limit_surface.h"
 #include "cli/svg_canvas.h"
 #include "exact/numbers/decimal.h"
@@ -268,10 +269,52 @@ std::string render_quality(const Scene& s, const Quality_item& r, const std::str
   return pic.finish();
 }
 
+// The part with the largest region's placements on its two edges (one colour per finger), and the (s, t) squares of
+// the largest regions (up to three) with their closure polygons.
+std::string render_grasp_regions(const Scene& s, const Grasp_regions_item& r, const std::string& source) {
+  const Grasp_regions& g = r.regions;
+  std::vector<const Pair_region*> closed;
+  for (const Pair_region& p : g.pairs)
+    if (!p.polygon.empty()) closed.push_back(&p);
+  std::stable_sort(closed.begin(), closed.end(), [](const Pair_region* a, const Pair_region* b) { return a->area > b->area; });
+  Svg_panels pic(title_of(s, source), "where two fingers may go: force closure with mu = " + to_string(g.mu) + " (Nguyen)",
+                 std::to_string(g.closed_pairs()) + " of " + std::to_string(g.pairs.size()) +
+                     " edge pairs close; a finger on edge i at s (0 at vertex i, 1 at vertex i + 1)");
+  const std::vector<Vec2>& V = s.body.outline;
+  const std::string finger[2] = {"#2f6fd0", "#d0602f"};
+  const int part = pic.panel("the part" + std::string(closed.empty() ? "" : ": the largest region's edges"), "x", "y");
+  std::vector<P2> outline;
+  for (const Vec2& v : V) outline.push_back(to_p2(v));
+  pic.polygon(part, outline, "fill=\"#e8e8e8\" stroke=\"#444\" stroke-width=\"1.5\"");
+  if (!closed.empty()) {
+    const Pair_region& p = *closed.front();
+    for (int f = 0; f < 2; ++f) {  // the range of s (t) over the region: each finger's reach on its edge
+      Rational lo = 1, hi = 0;
+      for (const auto& c : p.polygon) lo = std::min(lo, c[f]), hi = std::max(hi, c[f]);
+      const std::size_t e = f == 0 ? p.i : p.j;
+      pic.polygon(part, {to_p2(edge_point(V, e, lo)), to_p2(edge_point(V, e, hi))},
+                  "fill=\"none\" stroke=\"" + finger[f] + "\" stroke-width=\"5\"");
+    }
+  }
+  for (std::size_t k = 0; k < closed.size() && k < 3; ++k) {
+    const Pair_region& p = *closed[k];
+    const int i = pic.panel("edges " + std::to_string(p.i) + " and " + std::to_string(p.j) + ": area " + decimal_text(p.area, 3),
+                            "s (edge " + std::to_string(p.i) + ")", "t (edge " + std::to_string(p.j) + ")");
+    pic.polygon(i, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "fill=\"none\" stroke=\"#888\" stroke-dasharray=\"4 3\"");
+    std::vector<P2> poly;
+    for (const auto& c : p.polygon) poly.push_back({c[0].get_d(), c[1].get_d()});
+    pic.polygon(i, poly, "fill=\"#2f9f5f\" fill-opacity=\"0.35\" stroke=\"#2f9f5f\" stroke-width=\"1.5\"");
+  }
+  pic.legend_line(0, "stroke=\"" + finger[0] + "\" stroke-width=\"5\"", "finger 1's reach");
+  pic.legend_line(200, "stroke=\"" + finger[1] + "\" stroke-width=\"5\"", "finger 2's reach");
+  pic.legend_box(400, "fill=\"#2f9f5f\" fill-opacity=\"0.35\" stroke=\"#2f9f5f\"", "force closure in (s, t)");
+  return pic.finish();
+}
+
 }  // namespace
 
 std::string render_svg(const Options& o, const std::string& text, const std::string& source, bool* undecided) {
-  if (!o.what) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface|hold|quality");
+  if (!o.what) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface|hold|quality|grasp-regions");
   const Picture what = *o.what;
   if (o.sides && what != Picture::limit_surface) throw Usage_error("--sides goes with --what limit-surface");
   const Scene s = read_scene(text, o.limits, source);
@@ -281,6 +324,8 @@ std::string render_svg(const Options& o, const std::string& text, const std::str
     return render_hold(s, h, source);
   }
   if (what == Picture::limit_surface) return render_limit_surface_svg(s, o.sides.value_or(32));
+  if (what == Picture::grasp_regions)
+    return render_grasp_regions(s, answered(answer_grasp_regions(text, source, request_of(o), o.regions)), source);
   if (what == Picture::quality) {
     Quality_query q = o.quality;
     q.critical_mu = false;

@@ -871,6 +871,9 @@ TEST(Cli, GraspRegionsJsonCertificateAndRefusals) {
   EXPECT_NE(r.out.find(R"("closed_pairs": 2)"), std::string::npos) << r.out;
   const Cli_result k = run("check " + square.string() + " " + cert.string());
   EXPECT_EQ(k.code, 0) << k.out << k.err;
+  const Cli_result svg = run("render --what grasp-regions --mu 1/2 " + square.string());
+  EXPECT_EQ(svg.code, 0) << svg.err;
+  EXPECT_NE(svg.out.find("force closure in (s, t)"), std::string::npos);
   const Cli_result text = run("grasp-regions --mu 1/2 " + square.string());
   EXPECT_NE(text.out.find("for 2 of 6 edge pairs"), std::string::npos) << text.out;
   const Cli_result batch = run("batch grasp-regions --mu 2", R"({"wrenchkit": 1, "body": {"outline": [[0, 0], [4, 0], [0, 3]]}})" "\n");
