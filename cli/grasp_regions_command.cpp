@@ -20,16 +20,20 @@ void write_grasp_regions(Json_writer& w, const Grasp_regions_item& r) {
   w.member("closed_pairs", g.closed_pairs());
   // each region's area (of the unit square of (s, t)) and the largest
   w.key("areas").array();
-  const Pair_region* best = nullptr;
+  const Pair_region *best = nullptr, *robust = nullptr;
   for (const Pair_region& p : g.pairs) {
     if (p.polygon.empty()) continue;
     w.object().key("edges").array().integer(p.i).integer(p.j).end_array().member("area", p.area);
-    w.key("area_approx").raw(float_number(p.area.get_d())).end_object();
+    w.key("area_approx").raw(float_number(p.area.get_d())).member("independent_side", p.side);
+    w.key("independent_side_approx").raw(float_number(p.side.get_d())).end_object();
     if (!best || p.area > best->area) best = &p;
+    if (!robust || p.side > robust->side) robust = &p;
   }
   w.end_array();
   if (best) w.key("largest").object().key("edges").array().integer(best->i).integer(best->j).end_array()
                  .member("area", best->area).end_object();
+  if (robust) w.key("most_independent").object().key("edges").array().integer(robust->i).integer(robust->j).end_array()
+                   .member("independent_side", robust->side).end_object();
   if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
 }
 
@@ -54,6 +58,12 @@ std::string regions_human(const Grasp_regions_item& r, const std::string& source
     s << "  " << edge_text(r.scene, p.i) << " and " << edge_text(r.scene, p.j) << ": (s, t) inside the polygon ";
     for (std::size_t k = 0; k < p.polygon.size(); ++k) s << (k ? " " : "") << vec_text(Vec2{p.polygon[k][0], p.polygon[k][1]});
     s << " (its sides on the cones' lines excluded), area " << number_text(p.area) << " of the unit square\n";
+    if (p.box) {
+      const auto& b = *p.box;
+      s << "    independent: every s in [" << decimal_text(b[0][0], 4) << ", " << decimal_text(b[0][1], 4) << "] with every t in ["
+        << decimal_text(b[1][0], 4) << ", " << decimal_text(b[1][1], 4) << "] closes (the largest such square has side "
+        << number_text(p.side) << ", not attained; the box's exact corners are in --json)\n";
+    }
   }
   if (g.closed_pairs() == 0) s << "  none: no two placements of the fingers close the grasp with this mu\n";
   s << "certificate accepted by the independent checker (exact arithmetic)\n";

@@ -117,6 +117,27 @@ TEST(GraspRegionsOracle, RegionsAgreeWithClosureAndNguyen) {
           (in ? inside : outside) += 1;
           near += !p.polygon.empty() && samples.size() > 6;
         }
+        // the independent box: its corners and centre close (the engine's closure decision), and no axis-aligned
+        // square of a side 1/1000 larger than its supremum fits the region (its four corners cannot all be inside)
+        ASSERT_EQ(p.box.has_value(), !p.polygon.empty());
+        if (!p.box) continue;
+        const auto& b = *p.box;
+        for (const Rational& s : {b[0][0], b[0][1], Rational((b[0][0] + b[0][1]) / 2)})
+          for (const Rational& t : {b[1][0], b[1][1], Rational((b[1][0] + b[1][1]) / 2)}) {
+            const std::string text = two_fingers(o, p.i, s, p.j, t, mu);
+            ASSERT_TRUE(decide_closure(scene_of(text), Property::force_closure, Mode::exact, false).holds)
+                << test::dump_failure(text, "grasp_regions_box");
+          }
+        const Rational big = p.side * Rational(1001, 1000);
+        for (int a = 0; a <= 40; ++a)
+          for (int c = 0; c <= 40; ++c) {
+            const Rational s0 = Rational(a, 40) * (1 - big), t0 = Rational(c, 40) * (1 - big);
+            if (big > 1) break;
+            bool all = true;
+            for (const Rational& s : {s0, Rational(s0 + big)})
+              for (const Rational& t : {t0, Rational(t0 + big)}) all = all && closed_at(p, s, t);
+            ASSERT_FALSE(all) << "a square of side " << to_string(big) << " fits at " << to_string(s0) << ", " << to_string(t0);
+          }
       }
     }
   EXPECT_GT(inside, 50);
@@ -140,6 +161,11 @@ TEST(GraspRegionsChecker, RefusesAMovedCornerAMissingPairAndAClaimedEmptyRegion)
   const std::size_t a = empty.find("[[[\"1/2\""), b = empty.find("]]]", a) + 3;
   empty.replace(a, b - a, "[]");
   EXPECT_NE(check(empty).find("not the force-closure region"), std::string::npos);
+  std::string big_box = good;
+  const std::size_t at = big_box.find("\"independent\": [[");
+  ASSERT_NE(at, std::string::npos);
+  big_box.replace(at, big_box.find("]]", at) + 2 - at, "\"independent\": [[\"0\", \"1/2\"], [\"1/2\", \"1\"]]");
+  EXPECT_NE(check(big_box).find(".independent: the corner (0, 1/2) does not close the grasp"), std::string::npos) << check(big_box);
   std::string wrong_mu = good;
   wrong_mu.replace(wrong_mu.find("\"mu\": \"1/2\""), 11, "\"mu\": \"1/3\"");
   EXPECT_NE(check(wrong_mu).find("not the force-closure region"), std::string::npos);

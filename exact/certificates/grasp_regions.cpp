@@ -15,7 +15,9 @@ void write_region_pairs(Json_writer& w, const Grasp_regions& g) {
       for (const auto& c : p.polygon) w.rationals(c);
       w.end_array();
     }
-    w.end_array().end_object();
+    w.end_array();
+    if (p.box) w.key("independent").array().rationals((*p.box)[0]).rationals((*p.box)[1]).end_array();
+    w.end_object();
   }
   w.end_array();
 }

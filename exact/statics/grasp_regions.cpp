@@ -54,6 +54,50 @@ std::vector<Corner> strict(std::vector<Corner> P, Rational& area) {
   return P;
 }
 
+// The largest axis-aligned square [s0, s0 + a] × [t0, t0 + a] in the closed region: maximise a subject to every
+// corner satisfying every cone's closed half-plane (its worst corner: a_h s0 + b_h t0 + (min(a_h, 0) + min(b_h, 0)) a
+// + c_h ≥ 0) and the unit square; the LP's optimum is at a vertex, an intersection of three constraint planes, so every
+// triple is solved exactly (Cramer) and the feasible one with the largest a kept (ties: the least s0, then t0).
+void independent(Pair_region& r) {
+  struct Plane {
+    Rational s, t, a, c;  // s·s0 + t·t0 + a·a + c ≥ 0
+  };
+  std::vector<Plane> P;
+  for (const Region_constraint& h : r.cones)
+    P.push_back({h.a, h.b, Rational(std::min(h.a, Rational(0)) + std::min(h.b, Rational(0))), h.c});
+  P.push_back({1, 0, 0, 0}), P.push_back({0, 1, 0, 0}), P.push_back({0, 0, 1, 0});
+  P.push_back({-1, 0, -1, 1}), P.push_back({0, -1, -1, 1});
+  std::optional<std::array<Rational, 3>> best;
+  const auto det3 = [](const std::array<std::array<Rational, 3>, 3>& m) -> Rational {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  };
+  for (std::size_t x = 0; x < P.size(); ++x)
+    for (std::size_t y = x + 1; y < P.size(); ++y)
+      for (std::size_t z = y + 1; z < P.size(); ++z) {
+        const Plane* q[3] = {&P[x], &P[y], &P[z]};
+        std::array<std::array<Rational, 3>, 3> m;
+        for (int k = 0; k < 3; ++k) m[k] = {q[k]->s, q[k]->t, q[k]->a};
+        const Rational d = det3(m);
+        if (d == 0) continue;
+        std::array<Rational, 3> v;
+        for (int col = 0; col < 3; ++col) {
+          auto mc = m;
+          for (int k = 0; k < 3; ++k) mc[k][col] = -q[k]->c;
+          v[col] = det3(mc) / d;
+        }
+        bool feasible = true;
+        for (const Plane& p : P) feasible = feasible && sgn(p.s * v[0] + p.t * v[1] + p.a * v[2] + p.c) >= 0;
+        if (!feasible) continue;
+        if (!best || v[2] > (*best)[2] || (v[2] == (*best)[2] && (v[0] < (*best)[0] || (v[0] == (*best)[0] && v[1] < (*best)[1]))))
+          best = v;
+      }
+  if (!best || sgn((*best)[2]) <= 0) return;
+  r.side = (*best)[2];
+  const Rational a = r.side * Rational(1023, 1024), cs = (*best)[0] + r.side / 2, ct = (*best)[1] + r.side / 2;
+  r.box = std::array<std::array<Rational, 2>, 2>{{{cs - a / 2, cs + a / 2}, {ct - a / 2, ct + a / 2}}};
+}
+
 }  // namespace
 
 std::size_t Grasp_regions::closed_pairs() const {
@@ -124,6 +168,7 @@ Grasp_regions two_finger_regions(const Scene& scene, const Rational& mu, const s
         for (const Region_constraint& h : r.cones)
           if (!P.empty()) P = clip(P, h);
         r.polygon = strict(std::move(P), r.area);
+        if (!r.polygon.empty()) independent(r);
       }
       g.pairs.push_back(std::move(r));
     }

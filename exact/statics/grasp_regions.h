@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "exact/io/scene.h"
@@ -30,6 +31,13 @@ struct Pair_region {
   std::vector<std::array<Rational, 2>> polygon;  // the closure set's closure in (s, t), counter-clockwise, no three
                                                  // corners collinear; empty: no placement closes
   Rational area;                               // of the polygon (0 when empty)
+  // Independent contact regions: `side` the supremum of the sides of the axis-aligned squares [s0, s0 + a] ×
+  // [t0, t0 + a] inside the region (exact: a 3-variable LP solved at its vertices; the square of that side touches
+  // the region's open sides, so it is not attained), and `box` = [[s0, s1], [t0, t1]] the square of side
+  // (1 − 2⁻¹⁰)·side about the same centre: every placement in it closes (the region is convex and the box's corners
+  // lie strictly inside). None when the region is empty.
+  Rational side;
+  std::optional<std::array<std::array<Rational, 2>, 2>> box;
 };
 
 struct Grasp_regions {

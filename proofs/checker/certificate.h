@@ -148,6 +148,8 @@ struct Regions_part {
   struct Pair {
     std::size_t i = 0, j = 0;
     std::vector<std::vector<std::array<Q, 2>>> closed;
+    bool has_box = false;
+    Q box[2][2];  // "independent": [[s0, s1], [t0, t1]]
   };
   std::vector<Pair> pairs;
 };

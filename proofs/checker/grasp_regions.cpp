@@ -32,9 +32,10 @@ std::vector<P> cut(const std::vector<P>& in, const Q& a, const Q& b, const Q& c)
   return out;
 }
 
-// The pair's closure polygon: corners counter-clockwise, none repeated or collinear, from the first the cutting
-// leaves; empty when its area is 0 (then the strict inequalities hold nowhere on the square).
-std::vector<P> region(const std::vector<P>& V, std::size_t i, std::size_t j, const Q& mu) {
+using Half = std::array<Q, 3>;  // a s + b t + c > 0
+
+// Nguyen's four strict inequalities of the pair, in the order finger i's R, L, then finger j's.
+std::array<Half, 4> cones(const std::vector<P>& V, std::size_t i, std::size_t j, const Q& mu) {
   const std::size_t n = V.size();
   Q area2 = 0;
   for (std::size_t k = 0; k < n; ++k) area2 += cross(V[k], V[(k + 1) % n]);
@@ -46,10 +47,20 @@ std::vector<P> region(const std::vector<P>& V, std::size_t i, std::size_t j, con
   const auto ei = edge(i), ej = edge(j);
   const P c0{ej[0][0] - ei[0][0], ej[0][1] - ei[0][1]};
   // sign * cross(e, v) with v = c0 + t d_j - s d_i: (-sign cross(e, d_i)) s + (sign cross(e, d_j)) t + sign cross(e, c0)
-  const std::array<std::pair<const P*, int>, 4> cones{{{&ei[2], 1}, {&ei[3], -1}, {&ej[2], -1}, {&ej[3], 1}}};
+  const std::array<std::pair<const P*, int>, 4> sides{{{&ei[2], 1}, {&ei[3], -1}, {&ej[2], -1}, {&ej[3], 1}}};
+  std::array<Half, 4> out;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const auto& [e, sign] = sides[k];
+    out[k] = {Q(-sign * cross(*e, ei[1])), Q(sign * cross(*e, ej[1])), Q(sign * cross(*e, c0))};
+  }
+  return out;
+}
+
+// The pair's closure polygon: corners counter-clockwise, none repeated or collinear, from the first the cutting
+// leaves; empty when its area is 0 (then the strict inequalities hold nowhere on the square).
+std::vector<P> region(const std::array<Half, 4>& H) {
   std::vector<P> poly{{Q(0), Q(0)}, {Q(1), Q(0)}, {Q(1), Q(1)}, {Q(0), Q(1)}};
-  for (const auto& [e, sign] : cones) {
-    const Q a = -sign * cross(*e, ei[1]), b = sign * cross(*e, ej[1]), c = sign * cross(*e, c0);
+  for (const auto& [a, b, c] : H) {
     if (sgn(a) == 0 && sgn(b) == 0 && sgn(c) <= 0) return {};
     if (!poly.empty()) poly = cut(poly, a, b, c);
   }
@@ -101,6 +112,11 @@ void read_region_member(Reader& r, std::string_view key, Certificate& c) {
           std::size_t e[2];
           read_fixed(r, 2, "an array of two edge indices [i, j]", [&](std::size_t m) { e[m] = read_index(r, "edge index"); });
           p.i = e[0], p.j = e[1];
+        } else if (k == "independent") {
+          p.has_box = true;
+          read_fixed(r, 2, "[[s0, s1], [t0, t1]]", [&](std::size_t m) {
+            read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t e) { p.box[m][e] = read_rational(r); });
+          });
         } else if (k == "closed") {
           seen |= 2;
           begin_array(r, "expected an array of polygons");
@@ -138,12 +154,25 @@ void check_grasp_regions(const Certificate& c, const Scene& scene, const Limits&
       const Regions_part::Pair& p = g.pairs[at];
       if (p.i != edges[x] || p.j != edges[y])
         throw Failure{pair + ": expected edges [" + std::to_string(edges[x]) + ", " + std::to_string(edges[y]) + "]"};
-      const std::vector<P> want = region(V, p.i, p.j, g.mu);
+      const std::array<Half, 4> H = cones(V, p.i, p.j, g.mu);
+      const std::vector<P> want = region(H);
       const bool same = want.empty() ? p.closed.empty() : p.closed.size() == 1 && p.closed[0] == want;
       if (!same)
         throw Failure{pair + ".closed: not the force-closure region of edges " + std::to_string(p.i) + " and " +
                       std::to_string(p.j) + (want.empty() ? " (no placement closes: expected [])" : " (expected " +
                       std::to_string(want.size()) + " corners from " + show(want[0][0], want[0][1]) + ")")};
+      // an independent box: inside the square, and each corner strictly inside the four half-planes (the region is
+      // convex, so the whole box is)
+      if (p.has_box) {
+        const Q(&b)[2][2] = p.box;
+        if (!(sgn(b[0][0]) >= 0 && b[0][0] < b[0][1] && b[0][1] <= 1 && sgn(b[1][0]) >= 0 && b[1][0] < b[1][1] && b[1][1] <= 1))
+          throw Failure{pair + ".independent: not a box [[s0, s1], [t0, t1]] with 0 <= s0 < s1 <= 1, 0 <= t0 < t1 <= 1"};
+        for (const Q& s : b[0])
+          for (const Q& t : b[1])
+            for (const auto& [a, bb, c] : H)
+              if (sgn(Q(a * s + bb * t + c)) <= 0)
+                throw Failure{pair + ".independent: the corner " + show(s, t) + " does not close the grasp"};
+      }
     }
   if (at != g.pairs.size()) throw Failure{"pairs: more than the edge pairs asked"};
 }

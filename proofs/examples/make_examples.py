@@ -408,6 +408,10 @@ CERTS = [
     ("square_part", "grasp_regions_half", "valid", regions_cert(SQ_PAIRS)),
     ("square_part", "grasp_regions_opposite", "valid", regions_cert([SQ_PAIRS[1]], edges=[0, 2])),
     ("square_part", "grasp_regions_adjacent_at_mu_1", "valid", regions_cert([{"edges": [0, 1], "closed": []}], mu="1", edges=[0, 1])),
+    ("square_part", "grasp_regions_independent", "valid",
+     regions_cert([dict(SQ_PAIRS[1], independent=[["1/4", "1/2"], ["1/2", "3/4"]])], edges=[0, 2])),
+    ("square_part", "grasp_regions_independent_too_big", "invalid:independent|.independent: the corner (0, 1/2) does not close the grasp",
+     regions_cert([dict(SQ_PAIRS[1], independent=[["0", "1/2"], ["1/2", "1"]])], edges=[0, 2])),
     ("square_part", "grasp_regions_corner_moved", "invalid:region|pairs[1].closed: not the force-closure region of edges 0 and 2",
      regions_cert([dict(p, closed=[[["1/3", "0"]] + SQ_REGION[1:]]) if p["edges"] == [0, 2] else p for p in SQ_PAIRS])),
     ("square_part", "grasp_regions_pair_missing", "invalid:pairs|pairs[0]: expected edges [0, 1]",
@@ -1665,6 +1669,12 @@ def verify_regions(scene, cert):
         # the claim: the open polygon is the closure set. Test it on a grid of the square: a point strictly inside a
         # claimed polygon closes, a point outside every claimed polygon (and off their sides) does not
         polys = [[(F(a), F(b)) for a, b in poly] for poly in p["closed"]]
+        if "independent" in p:  # every corner closes (the region is convex)
+            (s0, s1), (t0, t1) = [(F(a), F(b)) for a, b in p["independent"]]
+            if not (0 <= s0 < s1 <= 1 and 0 <= t0 < t1 <= 1):
+                return "independent"
+            if not all(closes(i, s, j, t) for s in (s0, s1) for t in (t0, t1)):
+                return "independent"
 
         def where(s, t):
             for poly in polys:

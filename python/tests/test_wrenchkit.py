@@ -467,6 +467,8 @@ def test_grasp_regions_square_opposite_sides():
     assert closed[(0, 2)][0][0] == (Fraction(1, 2), Fraction(0))
     assert closed[(0, 1)] == []
     assert r["largest"]["area"] == Fraction(3, 4) and r["certificate_checked"] is True
+    (s0, s1), (t0, t1) = [p for p in r["pairs"] if p["edges"] == [0, 2]][0]["independent"]
+    assert s1 - s0 == t1 - t0 == Fraction(1, 2) * Fraction(1023, 1024)  # the largest square has side 1/2
     assert wrenchkit.grasp_regions(square, mu=1, edges=[0, 1])["pairs"][0]["closed"] == []  # the boundary: empty
     with pytest.raises(wrenchkit.InputError, match="--mu: missing"):
         wrenchkit.grasp_regions(square)

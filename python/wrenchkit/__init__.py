@@ -323,7 +323,8 @@ def grasp_regions(part, *, mu=None, edges=None):
     """Where two fingers may go (docs/grasp-regions.md), as `wrenchkit grasp-regions --json`: for every pair i < j of
     body.outline's edges (edge i from vertex i to i + 1), "closed": the polygons in (s, t) — a finger at
     v_i + s (v_{i+1} - v_i), the other at t on edge j — where the two frictional fingers are in force closure (corners
-    as Fraction pairs, counter-clockwise; [] when none), with "areas", "largest", "outline" and the "certificate" the
+    as Fraction pairs, counter-clockwise; [] when none) and "independent" ([(s0, s1), (t0, t1)]: every placement in
+    that box closes), with "areas", "largest", "most_independent", "outline" and the "certificate" the
     independent checker accepted. mu: the fingers' friction (default: the scene's "mu"); edges: the edges to pair.
     """
     words = []
@@ -335,10 +336,15 @@ def grasp_regions(part, *, mu=None, edges=None):
     r["mu"] = _fractions.Fraction(r["mu"])
     for p in r["pairs"]:
         p["closed"] = [[tuple(_fractions.Fraction(x) for x in c) for c in poly] for poly in p["closed"]]
+        if "independent" in p:
+            p["independent"] = [tuple(_fractions.Fraction(x) for x in iv) for iv in p["independent"]]
     for a in r["areas"]:
         a["area"] = _fractions.Fraction(a["area"])
+        a["independent_side"] = _fractions.Fraction(a["independent_side"])
     if "largest" in r:
         r["largest"]["area"] = _fractions.Fraction(r["largest"]["area"])
+    if "most_independent" in r:
+        r["most_independent"]["independent_side"] = _fractions.Fraction(r["most_independent"]["independent_side"])
     return r
 
 
