@@ -43,7 +43,9 @@
 #include "exact/statics/moment_labels.h"
 #include "testing/stress_families.h"
 #include "testing/twin_agreement.h"
+#include "exact/io/outline.h"
 #include "exact/io/to_float.h"
+#include "exact/pipeline/grasp_regions_answer.h"
 #include "float/closure_twin.h"
 #include "float/labels_twin.h"
 #include "float/limit_surface_twin.h"
@@ -598,6 +600,64 @@ void register_quality() {
   }
 }
 
+// grasp_regions/100gon/…: every edge pair of a 100-gon (rational points near a circle, μ = 1/2) — the exact regions
+// with their certificate checked (issue 32's target: ≤ 1 s), and the naive double Nguyen test (the guess a float tool
+// makes) on placements 10⁻ᵏ beside every region corner, toward the region and away from it: the counter
+// "naive_wrong_per_1000" is how often it contradicts the exact region (it may guess; nothing certified uses it).
+void register_grasp_regions() {
+  std::string outline;
+  for (int k = 0; k < 100; ++k) {
+    const double th = -M_PI + 2 * M_PI * (k + 0.5) / 100;
+    const Rational t(std::lround(std::tan(th / 2) * 1000), 1000);  // a rational point exactly on the circle
+    const Rational x = (1 - t * t) / (1 + t * t), y = 2 * t / (1 + t * t);
+    outline += (k ? ", " : "") + std::string("[\"") + to_string(x) + "\", \"" + to_string(y) + "\"]";
+  }
+  const auto text = std::make_shared<std::string>(R"({"wrenchkit": 1, "mu": "1/2", "body": {"outline": [)" + outline + "]}}");
+  benchmark::RegisterBenchmark("grasp_regions/100gon/exact_with_certificate", [text](benchmark::State& st) {
+    std::size_t closed = 0;
+    for (auto _ : st) {
+      const Grasp_regions_item r = answer_grasp_regions(*text, "100-gon", Request{}, Grasp_regions_query{});
+      if (r.status != Status::answered) throw std::logic_error("grasp regions: " + r.message);
+      closed = r.regions.closed_pairs();
+    }
+    st.counters["closed_pairs"] = static_cast<double>(closed);
+  })->Unit(benchmark::kMillisecond)->Iterations(g_smoke ? 1 : 3);
+  benchmark::RegisterBenchmark("grasp_regions/100gon/naive_double_near_corners", [text](benchmark::State& st) {
+    const Scene scene = read_scene(*text, Input_limits{});
+    const Grasp_regions g = two_finger_regions(scene, Rational(1, 2));
+    std::size_t tried = 0, wrong = 0;
+    for (auto _ : st) {
+      tried = wrong = 0;
+      const std::vector<Vec2>& V = scene.body.outline;
+      const int o = outline_orientation(V);
+      for (const Pair_region& p : g.pairs)
+        for (const auto& c : p.polygon)
+          for (const int k : {6, 9, 12, 15})
+            for (const int dir : {1, -1}) {
+              Integer ten;
+              mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(k));
+              const Rational e = Rational(dir) / Rational(ten);
+              const Rational s = c[0] + e * (Rational(1, 2) - c[0]), t = c[1] + e * (Rational(1, 2) - c[1]);
+              if (s < 0 || s > 1 || t < 0 || t > 1) continue;
+              // the naive test in doubles: the segment inside both cones, |cross(n, d)| < mu (n . d)
+              const Vec2 pi = edge_point(V, p.i, s), pj = edge_point(V, p.j, t);
+              const Vec2 ni = edge_inward_normal(V, p.i, o), nj = edge_inward_normal(V, p.j, o);
+              const double dx = pj.x.get_d() - pi.x.get_d(), dy = pj.y.get_d() - pi.y.get_d();
+              const auto inside = [](double nx, double ny, double vx, double vy) {
+                const double along = nx * vx + ny * vy, side = nx * vy - ny * vx;
+                return along > 0 && std::abs(side) < 0.5 * along;
+              };
+              const bool guess = inside(ni.x.get_d(), ni.y.get_d(), dx, dy) && inside(nj.x.get_d(), nj.y.get_d(), -dx, -dy);
+              ++tried;
+              wrong += guess != closed_at(p, s, t);
+            }
+      benchmark::DoNotOptimize(wrong);
+    }
+    st.counters["placements"] = static_cast<double>(tried);
+    st.counters["naive_wrong_per_1000"] = tried ? 1000.0 * static_cast<double>(wrong) / static_cast<double>(tried) : 0;
+  })->Unit(benchmark::kMillisecond)->Iterations(1);
+}
+
 int main(int argc, char** argv) {
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
@@ -615,6 +675,7 @@ int main(int argc, char** argv) {
   register_hold();
   register_regions();
   register_quality();
+  register_grasp_regions();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   if (g_failed) std::fprintf(stderr, "wrenchkit_bench: a certified method was wrong (see above)\n");
