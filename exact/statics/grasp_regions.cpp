@@ -65,27 +65,33 @@ void independent(Pair_region& r) {
   std::vector<Plane> P;
   for (const Region_constraint& h : r.cones)
     P.push_back({h.a, h.b, Rational(std::min(h.a, Rational(0)) + std::min(h.b, Rational(0))), h.c});
-  P.push_back({1, 0, 0, 0}), P.push_back({0, 1, 0, 0}), P.push_back({0, 0, 1, 0});
+  P.push_back({1, 0, 0, 0}), P.push_back({0, 1, 0, 0});
   P.push_back({-1, 0, -1, 1}), P.push_back({0, -1, -1, 1});
+  P.push_back({0, 0, 1, 0});  // a ≥ 0: last (below)
   std::optional<std::array<Rational, 3>> best;
   const auto det3 = [](const std::array<std::array<Rational, 3>, 3>& m) -> Rational {
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
   };
-  for (std::size_t x = 0; x < P.size(); ++x)
-    for (std::size_t y = x + 1; y < P.size(); ++y)
-      for (std::size_t z = y + 1; z < P.size(); ++z) {
+  // (a ≥ 0, the last plane, is never tight at an optimum with a > 0: its triples are skipped; a vertex whose a is
+  // below the best so far is dropped before its s0, t0 and its feasibility are computed)
+  const std::size_t m = P.size() - 1;
+  for (std::size_t x = 0; x < m; ++x)
+    for (std::size_t y = x + 1; y < m; ++y)
+      for (std::size_t z = y + 1; z < m; ++z) {
         const Plane* q[3] = {&P[x], &P[y], &P[z]};
-        std::array<std::array<Rational, 3>, 3> m;
-        for (int k = 0; k < 3; ++k) m[k] = {q[k]->s, q[k]->t, q[k]->a};
-        const Rational d = det3(m);
+        std::array<std::array<Rational, 3>, 3> mat;
+        for (int k = 0; k < 3; ++k) mat[k] = {q[k]->s, q[k]->t, q[k]->a};
+        const Rational d = det3(mat);
         if (d == 0) continue;
-        std::array<Rational, 3> v;
-        for (int col = 0; col < 3; ++col) {
-          auto mc = m;
+        const auto solve = [&](int col) {
+          auto mc = mat;
           for (int k = 0; k < 3; ++k) mc[k][col] = -q[k]->c;
-          v[col] = det3(mc) / d;
-        }
+          return Rational(det3(mc) / d);
+        };
+        const Rational a = solve(2);
+        if (sgn(a) <= 0 || (best && a < (*best)[2])) continue;
+        const std::array<Rational, 3> v{solve(0), solve(1), a};
         bool feasible = true;
         for (const Plane& p : P) feasible = feasible && sgn(p.s * v[0] + p.t * v[1] + p.a * v[2] + p.c) >= 0;
         if (!feasible) continue;
