@@ -723,6 +723,20 @@ TEST(HoldRegions, FinerCellsForTheWitness) {
 
 // Bad input: no load; too many unknown forces is an Input_error of decide_hold; float mode with an unknown
 // distribution is undecided (no LP over F in the twin).
+// Float mode, no support, generators summing to the zero wrench (±e1, ±e2, ±e3): the push toward the interior along
+// their sum has nothing to push with — any δ serves (fuzz_structured found 0/0 here, a zero load). Holds with margin,
+// certified, for a zero load and for another.
+TEST(HoldInput, FloatModeWithGeneratorsSummingToZero) {
+  for (const char* load : {"[0, 0, 0]", "[1, -2, 3]"}) {
+    const std::string scene = std::string(R"({"wrenchkit": 1, "contacts": [{"wrench": [1, 0, 0]}, {"wrench": [-1, 0, 0]},
+      {"wrench": [0, 1, 0]}, {"wrench": [0, -1, 0]}, {"wrench": [0, 0, 1]}, {"wrench": [0, 0, -1]}], "load": {"wrench": )") +
+                              load + "}}";
+    const Hold_item h = hold_of(scene, Mode::float_only);
+    ASSERT_EQ(h.status, Status::answered) << h.message;
+    EXPECT_EQ(h.answer.verdict, Hold_verdict::holds) << load;
+  }
+}
+
 TEST(HoldInput, NoLoadAndFloatOverF) {
   const Hold_item none = hold_of(R"({"wrenchkit": 1, "contacts": [{"at": [0, 0], "normal": [0, 1]}]})", Mode::hybrid);
   EXPECT_EQ(none.status, Status::bad_input);
