@@ -91,7 +91,7 @@ TEST(GraspRegionsOracle, RegionsAgreeWithClosureAndNguyen) {
                             "[[0, 0], [3, 0], [5, 2], [4, 5], [1, 4]]", "[[0, 0], [0, 4], [4, 4], [4, 0]]"};
   const Rational mus[] = {Rational(1, 4), Rational(1, 2), Rational(1), Rational(3, 2)};
   std::mt19937_64 rng(test::seed(20261129));
-  int inside = 0, outside = 0, near = 0;
+  int inside = 0, outside = 0, near_in = 0, near_out = 0;
   for (const char* o : outlines)
     for (const Rational& mu : mus) {
       const Scene sc = scene_of(part(o));
@@ -106,7 +106,8 @@ TEST(GraspRegionsOracle, RegionsAgreeWithClosureAndNguyen) {
             const Rational e(dir, 1000000000);
             samples.push_back({c[0] + e * (Rational(1, 2) - c[0]), c[1] + e * (Rational(1, 2) - c[1])});
           }
-        for (const auto& [s, t] : samples) {
+        for (std::size_t k = 0; k < samples.size(); ++k) {
+          const auto& [s, t] = samples[k];
           if (s < 0 || s > 1 || t < 0 || t > 1) continue;
           const bool in = strictly_inside(p.polygon, s, t);
           const std::string text = two_fingers(o, p.i, s, p.j, t, mu);
@@ -115,7 +116,7 @@ TEST(GraspRegionsOracle, RegionsAgreeWithClosureAndNguyen) {
           ASSERT_EQ(closed_at(p, s, t), closed) << test::dump_failure(text, "grasp_regions");
           ASSERT_EQ(nguyen(sc.body.outline, p.i, s, p.j, t, mu), closed) << test::dump_failure(text, "grasp_regions");
           (in ? inside : outside) += 1;
-          near += !p.polygon.empty() && samples.size() > 6;
+          if (k >= 6) (in ? near_in : near_out) += 1;  // (beside a corner)
         }
         // the independent box: its corners and centre close (the engine's closure decision), and no axis-aligned
         // square of a side 1/1000 larger than its supremum fits the region (its four corners cannot all be inside)
@@ -142,6 +143,8 @@ TEST(GraspRegionsOracle, RegionsAgreeWithClosureAndNguyen) {
     }
   EXPECT_GT(inside, 50);
   EXPECT_GT(outside, 200);
+  EXPECT_GT(near_in, 20);  // the samples beside the corners fall on both sides of the regions' boundaries
+  EXPECT_GT(near_out, 20);
 }
 
 TEST(GraspRegionsChecker, RefusesAMovedCornerAMissingPairAndAClaimedEmptyRegion) {

@@ -74,7 +74,8 @@ void check_outline(Scene& s, bool lenient) {
       s.body.outline_convex = false;
   for (std::size_t k = 0; k < s.contacts.size(); ++k) {
     if (s.contacts[k].kind != Contact::Kind::point) continue;
-    const Contact c = exact_contact(s.contacts[k]);  // (a lazily read contact: its rationals, for the check only)
+    std::optional<Contact> filled;  // (a lazily read contact: its rationals, for the check only; others as they are)
+    const Contact& c = s.contacts[k].exact_pending ? filled.emplace(exact_contact(s.contacts[k])) : s.contacts[k];
     const std::string path = "contacts[" + std::to_string(k) + "]";
     // where it lies: a vertex, else an edge's interior
     std::optional<std::size_t> vertex, edge;

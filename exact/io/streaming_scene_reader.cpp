@@ -105,7 +105,8 @@ class Stream {
     out.mu.reset();
     if (seen & kSceneMu) {  // the scene's own, exact (a lazy reading kept its text)
       std::string why;
-      out.mu = lazy_ ? *parse_rational(scene_mu_.number_text[4], scene_mu_.number_is_json[4], limits_, why) : scene_mu_.mu;
+      if (!lazy_) out.mu = scene_mu_.mu;
+      else if (!(out.mu = parse_rational(scene_mu_.number_text[4], scene_mu_.number_is_json[4], limits_, why))) defer();
     }
     if (seen & kSceneMu)  // every point contact without its own mu takes the scene's (wherever the key stood)
       for (const std::size_t k : without_mu_) {
