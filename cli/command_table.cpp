@@ -618,6 +618,23 @@ std::vector<Command> make_table() {
        nullptr,
        prepare_grasp_regions_json});
   t.push_back(
+      {"push",
+       "which way a pushed body turns, for every pressure distribution: Mason's voting theorem, exact, with a certificate",
+       "[OPTIONS] SCENE.json",
+       "The scene's \"pusher\" (a point contact on the body: at, inward normal, mu, and its velocity into the body)\n"
+       "pushes the body sliding quasi-statically on its \"support\". Three directed lines through the pusher vote:\n"
+       "the friction cone's two edges and the velocity, each ccw or cw by the side of the centre of friction c it\n"
+       "passes. The edges voting alike decide; voting apart, the velocity decides (Mason 1986). Every tie (a line\n"
+       "through c) is answered: \"none\" (a translation) where the theorem says so. Exact signs; with support forces\n"
+       "not given, every admissible distribution is covered by the exact LP over them (\"depends\", with two\n"
+       "distributions that turn the body apart, when c moves with them). The certificate is accepted by the\n"
+       "independent checker first. Exit 3 when undecided (the reason is said).\n",
+       join({{kHelp, kJson, with_help(kCertificate, "write the certificate to FILE (checked first)")}, kLimits}),
+       {kScene},
+       run_push,
+       nullptr,
+       prepare_push_json});
+  t.push_back(
       {"analyze",
        "everything the scene calls for: closure, equilibrium when it has a load, a summary of the limit surface "
        "when it has a support",

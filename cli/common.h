@@ -19,6 +19,7 @@
 #include "exact/pipeline/pipeline.h"
 #include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/grasp_regions_answer.h"
+#include "exact/pipeline/push_answer.h"
 #include "exact/pipeline/quality_answer.h"
 #include "exact/pipeline/labels_answer.h"
 #include "exact/pipeline/support_answer.h"
@@ -271,6 +272,9 @@ int run_quality(const Options& o, const std::string& scene_text, const std::stri
 int run_grasp_regions(const Options& o, const std::string& scene_text, const std::string& source);
 void write_grasp_regions(Json_writer& w, const Grasp_regions_item& r);  // grasp-regions --json
 Scene_answer prepare_grasp_regions_json(const Options& o);
+int run_push(const Options& o, const std::string& scene_text, const std::string& source);
+void write_push(Json_writer& w, const Push_item& r);  // push --json
+Scene_answer prepare_push_json(const Options& o);
 Scene_answer prepare_quality_json(const Options& o);
 Quality_query quality_query(const Options& o);  // --only, --norm, --normalize, --torque-scale, --about, --tolerance
 void write_quality(Json_writer& w, const Quality_item& r);

@@ -7,6 +7,7 @@
 //   quality.cpp      §3.4       the grasp quality ε (a twist; the closed boundary of the wrench space; a facet normal)
 //   critical_mu.cpp  §3.5       the critical friction coefficient (§3.1–§3.3 certificates at a common μ on each side)
 //   grasp_regions.cpp §3.6      two-finger force-closure regions on a polygon's edge pairs
+//   push.cpp         §8         which way a pushed body turns (the voting theorem over F)
 //   motion.cpp       §6         stick / slide / depends on a support (§6.4 regions, §6.5 format 2)
 //   hold.cpp         §7         fixtures on a support (§7.4 regions, §7.5 format 2)
 //   witnesses.cpp    §6.1 §6.4  the parts §6 and §7 share: support forces, stick and slide witnesses, region blocks
@@ -22,6 +23,7 @@
 #include "exact/fixture/hold.h"
 #include "exact/io/json_writer.h"
 #include "exact/sliding/motion.h"
+#include "exact/sliding/pushing.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/statics/critical_mu.h"
@@ -47,6 +49,9 @@ std::string critical_mu_certificate(const Critical_mu& c, bool closure);
 // §3.6 (format 5): the regions of every edge pair asked; write_region_pairs: its "pairs" array (the answer's too).
 void write_region_pairs(Json_writer& w, const Grasp_regions& g);
 std::string grasp_regions_certificate(const Grasp_regions& g);
+
+// §8 (format 6): the certificate of a decided rotation sense (ccw, cw, none or depends; not undecided).
+std::string push_certificate(const Push_answer& a);
 
 // §6: the certificate of a decided motion (not undecided) of the load p on the model's support. Format 1, or 2 where
 // format 1 has none (regions together with a point force not given, §6.5).

@@ -1,6 +1,7 @@
 // [OL-1] The body's outline as geometry: see outline.h.
 #include "exact/io/outline.h"
 
+#include <functional>
 #include <optional>
 
 #include "exact/io/input_error.h"
@@ -31,6 +32,47 @@ Rational distance2(const std::vector<Vec2>& V, std::size_t i, const Vec2& p) {
   if (t > 1) t = 1;
   const Vec2 q{ap.x - t * d.x, ap.y - t * d.y};
   return dot(q, q);
+}
+
+// One point contact (or the pusher) against the outline: on it, its normal pointing into the body.
+void check_on_outline(const Contact& c, const std::string& path, const std::vector<Vec2>& V, int orientation,
+                      const std::function<void(const std::string&)>& violation) {
+  const std::size_t n = V.size();
+  // where it lies: a vertex, else an edge's interior
+  std::optional<std::size_t> vertex, edge;
+  for (std::size_t i = 0; i < n && !vertex; ++i) {
+    if (c.at.x == V[i].x && c.at.y == V[i].y) {
+      vertex = i;
+      break;
+    }
+    const Vec2 d = minus(V[(i + 1) % n], V[i]), ap = minus(c.at, V[i]);
+    if (sgn(cross(d, ap)) == 0 && sgn(dot(d, ap)) > 0 && dot(d, ap) < dot(d, d)) edge = i;
+  }
+  if (!vertex && !edge) {
+    std::size_t near = 0;
+    Rational best = distance2(V, 0, c.at);
+    for (std::size_t i = 1; i < n; ++i)
+      if (const Rational d = distance2(V, i, c.at); d < best) best = d, near = i;
+    violation(path + ".at: " + point(c.at) + " is not on body.outline (a contact touches the body's boundary); the "
+              "nearest edge is " + std::to_string(near) + ", from " + point(V[near]) + " to " + point(V[(near + 1) % n]) +
+              ": place the contact on it, e.g. {\"edge\": " + std::to_string(near) + ", \"s\": \"1/2\"}");
+    return;
+  }
+  if (edge) {
+    const Vec2 in = edge_inward_normal(V, *edge, orientation);
+    if (sgn(dot(c.normal, in)) <= 0)
+      violation(path + ".normal: " + point(c.normal) + " does not point into the body at edge " + std::to_string(*edge) +
+                " (from " + point(V[*edge]) + " to " + point(V[(*edge + 1) % n]) + ", inward normal " + point(in) +
+                "); a contact's normal points into the body — " +
+                (sgn(dot(c.normal, in)) < 0 ? "flip its sign?" : "it is tangent to the edge here"));
+    return;
+  }
+  const std::size_t j = *vertex;
+  const Vec2 u = edge_inward_normal(V, (j + n - 1) % n, orientation), w = edge_inward_normal(V, j, orientation);
+  if (!in_cone(c.normal, u, w))
+    violation(path + ".normal: " + point(c.normal) + " is not in the cone of inward normals at vertex " +
+              std::to_string(j) + " " + point(V[j]) + " (between " + point(u) + " and " + point(w) +
+              "); a contact's normal points into the body");
 }
 
 }  // namespace
@@ -76,43 +118,9 @@ void check_outline(Scene& s, bool lenient) {
     if (s.contacts[k].kind != Contact::Kind::point) continue;
     std::optional<Contact> filled;  // (a lazily read contact: its rationals, for the check only; others as they are)
     const Contact& c = s.contacts[k].exact_pending ? filled.emplace(exact_contact(s.contacts[k])) : s.contacts[k];
-    const std::string path = "contacts[" + std::to_string(k) + "]";
-    // where it lies: a vertex, else an edge's interior
-    std::optional<std::size_t> vertex, edge;
-    for (std::size_t i = 0; i < n && !vertex; ++i) {
-      if (c.at.x == V[i].x && c.at.y == V[i].y) {
-        vertex = i;
-        break;
-      }
-      const Vec2 d = minus(V[(i + 1) % n], V[i]), ap = minus(c.at, V[i]);
-      if (sgn(cross(d, ap)) == 0 && sgn(dot(d, ap)) > 0 && dot(d, ap) < dot(d, d)) edge = i;
-    }
-    if (!vertex && !edge) {
-      std::size_t near = 0;
-      Rational best = distance2(V, 0, c.at);
-      for (std::size_t i = 1; i < n; ++i)
-        if (const Rational d = distance2(V, i, c.at); d < best) best = d, near = i;
-      violation(path + ".at: " + point(c.at) + " is not on body.outline (a contact touches the body's boundary); the "
-                "nearest edge is " + std::to_string(near) + ", from " + point(V[near]) + " to " + point(V[(near + 1) % n]) +
-                ": place the contact on it, e.g. {\"edge\": " + std::to_string(near) + ", \"s\": \"1/2\"}");
-      continue;
-    }
-    if (edge) {
-      const Vec2 in = edge_inward_normal(V, *edge, orientation);
-      if (sgn(dot(c.normal, in)) <= 0)
-        violation(path + ".normal: " + point(c.normal) + " does not point into the body at edge " + std::to_string(*edge) +
-                  " (from " + point(V[*edge]) + " to " + point(V[(*edge + 1) % n]) + ", inward normal " + point(in) +
-                  "); a contact's normal points into the body — " +
-                  (sgn(dot(c.normal, in)) < 0 ? "flip its sign?" : "it is tangent to the edge here"));
-      continue;
-    }
-    const std::size_t j = *vertex;
-    const Vec2 u = edge_inward_normal(V, (j + n - 1) % n, orientation), w = edge_inward_normal(V, j, orientation);
-    if (!in_cone(c.normal, u, w))
-      violation(path + ".normal: " + point(c.normal) + " is not in the cone of inward normals at vertex " +
-                std::to_string(j) + " " + point(V[j]) + " (between " + point(u) + " and " + point(w) +
-                "); a contact's normal points into the body");
+    check_on_outline(c, "contacts[" + std::to_string(k) + "]", V, orientation, violation);
   }
+  if (s.pusher) check_on_outline(s.pusher->contact, "pusher", V, orientation, violation);
 }
 
 }  // namespace wrenchkit

@@ -27,7 +27,7 @@ class Reader {
 
   Scene scene(const Value& root) {
     expect(root, Type::object, "scene", "an object");
-    keys(root, "", {"wrenchkit", "name", "body", "contacts", "load", "support", "mu"});
+    keys(root, "", {"wrenchkit", "name", "body", "contacts", "load", "support", "mu", "pusher"});
     const Value* version = root.find("wrenchkit");
     if (!version) fail("scene", "missing key \"wrenchkit\" (the format version, 1)");
     if (number(*version, "wrenchkit") != 1)
@@ -53,6 +53,7 @@ class Reader {
     }
     if (const Value* v = root.find("load")) s.load = load(*v, s.body);
     if (const Value* v = root.find("support")) s.support = support(*v);
+    if (const Value* v = root.find("pusher")) s.pusher = pusher(*v);
     const std::string why = support_inadmissible(s);
     if (!why.empty()) throw Input_error(why);
     check_outline(s, limits_.lenient);
@@ -218,7 +219,7 @@ class Reader {
     return b;
   }
 
-  Contact contact(const Value& v, const std::string& path) const {
+  Contact contact(const Value& v, const std::string& path, bool eager = false) const {
     expect(v, Type::object, path, "an object");
     Contact c;
     if (const Value* n = v.find("name")) {
@@ -226,7 +227,7 @@ class Reader {
       c.name = n->text;
     }
     if (v.find("edge") || v.find("s")) return placed_contact(v, path, std::move(c));
-    if (lazy_) return lazy_contact(v, path, std::move(c));
+    if (lazy_ && !eager) return lazy_contact(v, path, std::move(c));
     if (v.find("wrench")) {
       keys(v, path, {"wrench", "name"});
       c.kind = Contact::Kind::wrench;
@@ -257,6 +258,39 @@ class Reader {
     c.twin.frictional = c.mu != 0;  // decided exactly
     c.has_twin = true;
     return c;
+  }
+
+  // The pusher: a point contact (at or {edge, s}; normal; mu, else the scene's) with "velocity", which pushes into
+  // the body. Read eagerly (one contact).
+  Pusher pusher(const Value& v) const {
+    expect(v, Type::object, "pusher", "an object");
+    if (v.find("wrench"))
+      fail("pusher", "is a point contact {\"at\", \"normal\", \"mu\", \"velocity\"}, not a wrench");
+    Value rest = v;  // the contact's own keys (velocity read here)
+    rest.members.erase(std::remove_if(rest.members.begin(), rest.members.end(),
+                                      [](const auto& m) { return m.first == "velocity"; }),
+                       rest.members.end());
+    Pusher p;
+    const Value& vel = required(v, "pusher", "velocity");
+    if (v.find("edge") || v.find("s")) {
+      Contact c;
+      if (const Value* n = v.find("name")) {
+        expect(*n, Type::string, "pusher.name", "a string");
+        c.name = n->text;
+      }
+      p.contact = placed_contact(rest, "pusher", std::move(c));
+    } else {
+      p.contact = contact(rest, "pusher", /*eager=*/true);
+    }
+    p.velocity = vec2(vel, "pusher.velocity");
+    const Rational push = dot(p.velocity, p.contact.normal);
+    const auto point_text = [](const Vec2& a) { return "(" + a.x.get_str() + ", " + a.y.get_str() + ")"; };
+    if (push <= 0)
+      fail("pusher.velocity", point_text(p.velocity) + (push == 0 ? " is tangent to the contact (velocity · normal = 0)"
+                                                                  : " moves away from the body (velocity · normal < 0)") +
+                                  ": a pusher moves into the body, along its inward normal " +
+                                  point_text(p.contact.normal) + " — flip the velocity or the normal?");
+    return p;
   }
 
   // A point contact placed on body.outline: {"edge": i, "s": t, "normal"?, "mu"?, "name"?} (exact/io/outline.h) —

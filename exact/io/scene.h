@@ -120,12 +120,21 @@ struct Body {
   bool outline_ccw = true, outline_convex = false;
 };
 
+// A pusher (docs/scene-format.md "The pusher"; docs/pushing.md): a point contact on the body — its point, inward
+// normal and Coulomb coefficient, read as contacts[] are (placed by {"edge", "s"} too) — moving with `velocity`
+// (velocity · normal > 0: it pushes into the body).
+struct Pusher {
+  Contact contact;
+  Vec2 velocity;
+};
+
 struct Scene {
   std::string name;
   Body body;
   std::vector<Contact> contacts;
   std::optional<Load> load;
   std::optional<Support> support;
+  std::optional<Pusher> pusher;
   // What a lenient reading let through (exact/io/outline.h): each a violation the strict reading refuses.
   std::vector<std::string> warnings;
   // The scene-wide "mu" as written (its point contacts have it already; grasp-regions' fingers take it).

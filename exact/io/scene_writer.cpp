@@ -96,6 +96,13 @@ std::string write_scene(const Scene& s) {
     }
     o += "}";
   }
+  if (s.pusher) {  // as a point contact at its place (a placed pusher's point and normal written out)
+    const Contact& c = s.pusher->contact;
+    o += ",\n \"pusher\": {\"at\": " + pt(c.at) + ", \"normal\": " + pt(c.normal) + ", \"mu\": " + q(c.mu) +
+         ", \"velocity\": " + pt(s.pusher->velocity);
+    if (!c.name.empty()) o += ", \"name\": " + json::quote(c.name);
+    o += "}";
+  }
   return o + "}\n";
 }
 

@@ -236,14 +236,15 @@ Certificate read_certificate(Reader& r) {
     c.keys.insert(key);
     if (key == "wrenchkit_certificate") {
       const std::string_view v = r.peek() == Kind::number ? r.number() : "";
-      if (v != "1" && v != "2" && v != "3" && v != "4" && v != "5") r.fail("expected the integer 1, 2, 3, 4 or 5");
+      if (v != "1" && v != "2" && v != "3" && v != "4" && v != "5" && v != "6")
+        r.fail("expected the integer 1, 2, 3, 4, 5 or 6");
       c.version = v[0] - '0';
     } else if (key == "property") {
       const std::string_view p = r.peek() == Kind::string ? r.string_view() : "";
       if (p != "force_closure" && p != "form_closure" && p != "equilibrium" && p != "motion" && p != "hold" &&
-          p != "quality" && p != "critical_mu" && p != "grasp_regions")
+          p != "quality" && p != "critical_mu" && p != "grasp_regions" && p != "push")
         r.fail("expected \"force_closure\", \"form_closure\", \"equilibrium\", \"motion\", \"hold\", \"quality\", "
-               "\"critical_mu\" or \"grasp_regions\"");
+               "\"critical_mu\", \"grasp_regions\" or \"push\"");
       c.property = p;
       c.reading = p == "form_closure" ? Reading::frictionless : Reading::friction;
       c.equilibrium = p == "equilibrium";
@@ -252,8 +253,11 @@ Certificate read_certificate(Reader& r) {
       c.quality = p == "quality";
       c.critical = p == "critical_mu";
       c.regions = p == "grasp_regions";
+      c.push = p == "push";
     } else if (key == "fingers" || key == "mu" || key == "edges" || key == "pairs") {
       read_region_member(r, key, c);
+    } else if (key == "rotation" || key == "friction" || key == "votes" || key == "center" || key == "turns") {
+      read_push_member(r, key, c);
     } else if (key == "holds") {
       if (r.peek() == Kind::string) {  // property "hold" only (checked once the property is known)
         const std::string_view v = r.string_view();
@@ -396,6 +400,20 @@ void check_keys(const Certificate& c) {
       throw Failure{"key \"independent\" is not allowed when \"property\" is \"equilibrium\""};
   };
   need("wrenchkit_certificate"), need("property");
+  static const char* const push_keys[] = {"rotation", "friction", "votes", "center", "turns"};
+  if ((c.version == 6) != c.push)
+    throw Failure{c.push ? "wrenchkit_certificate: property \"push\" is format 6 (expected the integer 6)"
+                         : "wrenchkit_certificate: format 6 is property \"push\" only"};
+  if (c.push) {
+    need("rotation"), need("friction");
+    for (const std::string_view key : {"holds", "combination", "independent", "twist", "reading", "load", "motion"})
+      if (c.keys.count(key)) throw Failure{"key " + quote(key) + " is not allowed when \"property\" is \"push\""};
+    return;  // check_push() decides which of "votes" and "turns" its claim needs
+  }
+  if (c.keys.any(Key_set::mask(push_keys)))
+    for (const char* key : push_keys)
+      if (c.keys.count(key))
+        throw Failure{std::string("key \"") + key + "\" is not allowed when \"property\" is " + quote(c.property)};
   if ((c.version == 5) != c.regions)
     throw Failure{c.regions ? "wrenchkit_certificate: property \"grasp_regions\" is format 5 (expected the integer 5)"
                             : "wrenchkit_certificate: format 5 is property \"grasp_regions\" only"};

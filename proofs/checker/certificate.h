@@ -79,7 +79,8 @@ class Key_set {
                                              "torque_scale", "about", "scales", "epsilon", "boundary", "nearest",
                                              "normal", "of", "critical_mu", "below", "above", "constant",
                                              "constant_beyond", "limit_twist", "scaling", "torque_radius_squared",
-                                             "torque_scale_error", "fingers", "mu", "edges", "pairs"};
+                                             "torque_scale_error", "fingers", "mu", "edges", "pairs",
+                                             "rotation", "friction", "votes", "center", "turns"};
     for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
       if (known[i] == key) return i;
     return -1;
@@ -154,6 +155,25 @@ struct Regions_part {
   std::vector<Pair> pairs;
 };
 
+// The members of property "push" (§8, format 6): bounds over F of the friction under the body and of the three votes
+// (left edge, right edge, velocity), each with the LP's dual when some force is not given; "depends": two
+// distributions.
+struct Push_part {
+  std::string_view rotation;  // "ccw", "cw", "none" or "depends"
+  struct Range {
+    Q lower, upper;
+    bool has_upper = false, has_dual_lower = false, has_dual_upper = false;
+    Q dual_lower[3], dual_upper[3];
+  };
+  bool has_friction = false;
+  Range friction;
+  std::vector<Range> votes;
+  bool has_center = false;
+  Q center[2];
+  bool has_turns = false;
+  std::vector<Q> turns_ccw, turns_cw;
+};
+
 struct Certificate {
   Key_set keys;  // the keys present
   std::string_view property;
@@ -164,6 +184,7 @@ struct Certificate {
   bool quality = false;      // property "quality" (§3.4, format 4), read with friction
   bool critical = false;     // property "critical_mu" (§3.5, format 4)
   bool regions = false;      // property "grasp_regions" (§3.6, format 5)
+  bool push = false;         // property "push" (§8, format 6)
   bool holds = false;
   bool depends = false;      // "holds": "depends" (property "hold" only)
   bool impending = false;    // "holds": "impending" (property "hold", format 3 only)
@@ -191,6 +212,11 @@ struct Certificate {
     if (!regions_members) regions_members = std::make_unique<Regions_part>();
     return *regions_members;
   }
+  std::unique_ptr<Push_part> push_members;  // allocated by pu() when a member of §8 is read
+  Push_part& pu() {
+    if (!push_members) push_members = std::make_unique<Push_part>();
+    return *push_members;
+  }
   std::unique_ptr<Quality_part> quality_members;  // allocated by q() when a member of §3.4 is read
   Quality_part& q() {
     if (!quality_members) quality_members = std::make_unique<Quality_part>();
@@ -215,5 +241,7 @@ void check_quality(const Certificate& c, const Scene& scene, const Limits& lim);
 void check_critical_mu(const Certificate& c, const Scene& scene, const Limits& lim);  // critical_mu.cpp (§3.5)
 void read_region_member(Reader& r, std::string_view key, Certificate& c);  // grasp_regions.cpp (§3.6): a member
 void check_grasp_regions(const Certificate& c, const Scene& scene, const Limits& lim);  // grasp_regions.cpp (§3.6)
+void read_push_member(Reader& r, std::string_view key, Certificate& c);  // push.cpp (§8): a member
+void check_push(const Certificate& c, const Scene& scene, const Limits& lim);  // push.cpp (§8)
 
 }  // namespace wrenchkit_checker::detail

@@ -28,6 +28,7 @@ Result check_certificate(const Scene& scene, std::string_view certificate_json, 
     else if (c.quality) check_quality(c, scene, limits);
     else if (c.critical) check_critical_mu(c, scene, limits);
     else if (c.regions) check_grasp_regions(c, scene, limits);
+    else if (c.push) check_push(c, scene, limits);
     else check_closure(c, scene, limits);
     return {Outcome::accepted, "accepted"};
   } catch (const Failure& f) {

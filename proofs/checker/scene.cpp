@@ -153,8 +153,11 @@ struct Placed {
 // {at, normal, mu?, name?} (normal != 0, mu >= 0) or {wrench, name?} (wrench != 0), or placed (*placed set; the
 // contact returned is a stand-in). A point contact without mu leaves its numbers in *no_mu (when given): the
 // scene-wide "mu", which may come later, replaces its "0".
+void read_vector(Reader& r, const Limits& lim, std::size_t n, Q* out);
+
+// The pusher's contact (`velocity` given) reads its "velocity" too: *has_velocity tells whether it was there.
 Contact read_contact(Reader& r, const Limits& lim, std::optional<std::array<Read_number, 5>>* no_mu = nullptr,
-                     std::optional<Placed>* placed = nullptr) {
+                     std::optional<Placed>* placed = nullptr, Q* velocity = nullptr, bool* has_velocity = nullptr) {
   begin_object(r, "expected an object {\"at\", \"normal\", \"mu\"?, \"name\"?} or {\"wrench\", \"name\"?}");
   Read_number point[5], wrench[3];  // x, y, nx, ny, mu ("0" if absent); fx, fy, m
   std::string_view key;
@@ -180,6 +183,9 @@ Contact read_contact(Reader& r, const Limits& lim, std::optional<std::array<Read
       if (read_numbers(r, lim, 3, wrench)) r.fail("zero wrench");
     } else if (key == "name") {
       read_string(r);
+    } else if (key == "velocity" && velocity) {
+      read_vector(r, lim, 2, velocity);
+      *has_velocity = true;
     } else {
       r.fail("unknown key " + quote(key), true);
     }
@@ -523,8 +529,8 @@ void settle_support(Support& s, bool has_com, const Q (&com)[2], const Limits& l
 // the normal as given or rot90(v_{i+1} - v_i) toward the inside (the outline's signed area tells the side), mu as
 // written, else the scene's, else 0 — the engine's rule (exact/io/outline.h).
 void place_contact(Contact& c, const Placed& p, const std::vector<std::array<Q, 2>>& V, bool valid,
-                   const std::optional<Read_number>& scene_mu, const Limits& lim) {
-  const std::string path = "contacts[" + std::to_string(p.index) + "]";
+                   const std::optional<Read_number>& scene_mu, const Limits& lim, const char* name = nullptr) {
+  const std::string path = name ? std::string(name) : "contacts[" + std::to_string(p.index) + "]";
   if (V.size() < 3 || !valid) throw Failure{path + ".edge: needs body.outline, a polygon of points"};
   if (p.edge.get_den() != 1 || sgn(p.edge) < 0 || p.edge >= static_cast<long>(V.size()))
     throw Failure{path + ".edge: " + show(p.edge) + " is not an edge of body.outline"};
@@ -568,6 +574,8 @@ Scene read_scene(Reader& r, const Limits& lim) {
   std::optional<Read_number> scene_mu;  // the scene-wide "mu" (docs/scene-format.md)
   std::vector<std::pair<std::size_t, std::array<Read_number, 5>>> without_mu;  // point contacts that take it
   std::vector<Placed> placed;
+  std::optional<std::array<Read_number, 5>> pusher_no_mu;
+  std::optional<Placed> pusher_place;
   std::vector<std::array<Q, 2>> outline;
   bool outline_valid = false;
   std::string_view key;
@@ -588,6 +596,12 @@ Scene read_scene(Reader& r, const Limits& lim) {
       load = read_load(r, lim);
     } else if (key == "support") {
       scene.support = read_support(r, lim);
+    } else if (key == "pusher") {  // a point contact with "velocity" (docs/scene-format.md "The pusher")
+      bool has_velocity = false;
+      Pusher& p = scene.pusher.emplace();
+      p.contact = read_contact(r, lim, &pusher_no_mu, &pusher_place, p.velocity, &has_velocity);
+      if (!has_velocity) r.fail("missing required key \"velocity\"");
+      if (p.contact.wrench) r.fail("the pusher is a point contact, not a wrench");
     } else if (key == "contacts") {
       begin_array(r, "expected an array");
       while (r.next_item()) {
@@ -611,6 +625,13 @@ Scene read_scene(Reader& r, const Limits& lim) {
       scene.contacts[i] = make_contact(false, numbers.data(), 5, lim);
     }
   for (const Placed& p : placed) place_contact(scene.contacts[p.index], p, outline, outline_valid, scene_mu, lim);
+  if (scene.pusher) {
+    if (scene_mu && pusher_no_mu) {
+      (*pusher_no_mu)[4] = *scene_mu;
+      scene.pusher->contact = make_contact(false, pusher_no_mu->data(), 5, lim);
+    }
+    if (pusher_place) place_contact(scene.pusher->contact, *pusher_place, outline, outline_valid, scene_mu, lim, "pusher");
+  }
   scene.outline = std::move(outline), scene.outline_valid = outline_valid;
   // Gravity beside a support is the weight pressing the body on it (scene-format.md): it sets W and, at body.com,
   // the centre of pressure c, and pushes nothing in the plane. A written weight or pressure_center must agree.

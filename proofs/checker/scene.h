@@ -56,6 +56,12 @@ struct Support {
   Q W, c[2], rest_weight, rest_moment[2];  // (W: not set when every force is given and no weight is written)
 };
 
+// The pusher (docs/scene-format.md "The pusher"): a point contact moving with `velocity`.
+struct Pusher {
+  Contact contact;
+  Q velocity[2];
+};
+
 struct Scene {
   std::size_t longest = 0;  // digits of the longest number (as the budget counts them)
   std::vector<std::array<Q, 2>> outline;  // body.outline's points; outline_valid: every one read as a point
@@ -64,6 +70,7 @@ struct Scene {
   bool has_load = false;
   std::optional<Wrench> load;  // w_ext (certificate-format.md §3.3), if has_load
   std::optional<Support> support;
+  std::optional<Pusher> pusher;
 };
 
 // The scene, or false and the bad_scene result that check() gives for it.

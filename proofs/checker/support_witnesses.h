@@ -184,22 +184,36 @@ class Support_witnesses {
                    const Q* dual, const std::vector<Block>* blocks = nullptr) const {
     const std::string path = prefix + "speed_bounds";
     size(u.size(), path);
-    Q bound = 0;
+    std::vector<Q> coef(u.size());
     for (std::size_t i = 0; i < u.size(); ++i) {
       Point_values scratch;
       const Point_values& v = values(s_.points[i], lim_, scratch);
       speed_bound(u[i], q, v.x, v.y, path, i, "v_i(q)");
-      const Q mu_u = v.mu * u[i];
-      if (!dual || s_.points[i].known) {
-        bound += mu_u * f[i];
-      } else if (mu_u > dual[0] + dual[1] * v.x + dual[2] * v.y) {
-        throw Failure{"dual: mu_i u_i = " + show(mu_u) + " is more than y0 + yx x_i + yy y_i = " +
-                      show(Q(dual[0] + dual[1] * v.x + dual[2] * v.y)) + " at " + point_name(i)};
-      }
+      coef[i] = v.mu * u[i];
     }
-    if (dual) bound += dual[0] * s_.rest_weight + dual[1] * s_.rest_moment[0] + dual[2] * s_.rest_moment[1];
+    Q bound = linear_bound(coef, f, dual, "mu_i u_i");
     if (blocks)  // each region's bound on mu times the integral of |v| p
       for (std::size_t k = 0; k < blocks->size(); ++k) bound += slide_block_bound(s_.regions[k], (*blocks)[k], q);
+    return bound;
+  }
+
+  // A bound on sum_i coef_i f_i (one coefficient per point): the sum itself for the distribution f, or, with the LP
+  // dual (y0, yx, yy) of F's three rows (every f in F; f then holds the given forces), sum_known coef_i f_i + y0 W' +
+  // yx M'x + yy M'y, where coef_i <= y0 + yx x_i + yy y_i for every unknown i (else the Failure naming `what`).
+  Q linear_bound(const std::vector<Q>& coef, const std::vector<Q>& f, const Q* dual, const char* what) const {
+    Q bound = 0;
+    for (std::size_t i = 0; i < coef.size(); ++i) {
+      if (!dual || s_.points[i].known) {
+        bound += coef[i] * f[i];
+        continue;
+      }
+      Point_values scratch;
+      const Point_values& v = values(s_.points[i], lim_, scratch);
+      if (coef[i] > dual[0] + dual[1] * v.x + dual[2] * v.y)
+        throw Failure{std::string("dual: ") + what + " = " + show(coef[i]) + " is more than y0 + yx x_i + yy y_i = " +
+                      show(Q(dual[0] + dual[1] * v.x + dual[2] * v.y)) + " at " + point_name(i)};
+    }
+    if (dual) bound += dual[0] * s_.rest_weight + dual[1] * s_.rest_moment[0] + dual[2] * s_.rest_moment[1];
     return bound;
   }
 

@@ -1,0 +1,97 @@
+// wrenchkit push: which way a pushed body turns, whatever its pressure distribution — Mason's voting theorem over the
+// support's admissible distributions, exact, with a checked certificate (docs/pushing.md, exact/sliding/pushing.h).
+#include <sstream>
+#include <string>
+
+#include "cli/common.h"
+#include "exact/certificates/certificates.h"
+
+namespace wrenchkit::cli {
+
+namespace {
+
+const char* vote_word(const Push_vote& v) {
+  const std::optional<int> s = v.sign();
+  if (!s) return "varies";
+  return *s > 0 ? "ccw" : *s < 0 ? "cw" : "through";
+}
+
+std::string vote_sentence(const Push_vote& v) {
+  const std::optional<int> s = v.sign();
+  if (!s) return "changes with the distribution (its side of the centre of friction is not the same for all)";
+  if (*s > 0) return "ccw (the centre of friction is on its left)";
+  if (*s < 0) return "cw (the centre of friction is on its right)";
+  return "passes through the centre of friction";
+}
+
+}  // namespace
+
+void write_push(Json_writer& w, const Push_item& r) {
+  const Push_answer& a = r.push;
+  w.member("command", "push").member("name", r.scene.name);
+  w.key("pusher").object();
+  w.key("at").array().rational(a.at.x).rational(a.at.y).end_array();
+  w.key("normal").array().rational(a.normal.x).rational(a.normal.y).end_array();
+  w.member("mu", a.mu);
+  w.key("velocity").array().rational(a.velocity.x).rational(a.velocity.y).end_array();
+  w.end_object();
+  w.member("distribution", a.known ? "known" : "unknown");
+  if (a.center) {
+    w.key("center_of_friction").array().rational(a.center->x).rational(a.center->y).end_array();
+    write_approx(w, "center_of_friction", {a.center->x, a.center->y});
+  } else {
+    w.key("center_of_friction").null();
+  }
+  w.key("votes").array();
+  for (const Push_vote& v : a.votes) {
+    w.object().member("line", push_line_name(v.line));
+    w.key("direction").array().rational(v.direction.x).rational(v.direction.y).end_array();
+    w.member("vote", vote_word(v)).end_object();
+  }
+  w.end_array();
+  w.member("rotation", rotation_name(a.rotation)).member("why", a.why);
+  if (a.rotation == Rotation::depends)
+    w.key("witnesses").object().key("ccw").rationals(a.turns_ccw).key("cw").rationals(a.turns_cw).end_object();
+  if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
+}
+
+namespace {
+
+std::string push_human(const Push_item& r, const std::string& source) {
+  const Push_answer& a = r.push;
+  std::ostringstream s;
+  s << scene_line(r.scene, source);
+  s << "pusher at " << vec_text(a.at) << ", inward normal " << vec_text(a.normal) << ", mu = " << number_text(a.mu)
+    << ", moving " << vec_text(a.velocity) << "\n";
+  if (a.center)
+    s << "centre of friction: " << vec_text(*a.center)
+      << (a.known ? "" : " (the centre of pressure: the same for every distribution, every coefficient being equal)") << "\n";
+  else
+    s << "centre of friction: moves with the distribution (the support's coefficients differ and some forces are not given)\n";
+  s << "votes (the side of the centre of friction each directed line through the pusher passes):\n";
+  for (const Push_vote& v : a.votes)
+    s << "  " << push_line_name(v.line) << " " << vec_text(v.direction) << ": " << vote_sentence(v) << "\n";
+  s << "rotation: " << rotation_name(a.rotation) << " — " << a.why << "\n";
+  if (a.rotation == Rotation::depends)
+    s << "  turns ccw under the forces " << vec_text(a.turns_ccw) << "\n  turns cw under the forces "
+      << vec_text(a.turns_cw) << "\n";
+  if (!r.certificate.empty()) s << "certificate accepted by the independent checker (exact arithmetic)\n";
+  return s.str();
+}
+
+}  // namespace
+
+Scene_answer prepare_push_json(const Options& o) {
+  return [request = request_of(o)](Json_writer& w, const std::string& text, const std::string& source) {
+    write_push(w, answered(answer_push(text, source, request)));
+  };
+}
+
+int run_push(const Options& o, const std::string& scene_text, const std::string& source) {
+  const Push_item r = answered(answer_push(scene_text, source, request_of(o)));
+  if (!o.certificate_file.empty() && !r.certificate.empty()) write_file(o.certificate_file, r.certificate + "\n");
+  return write_answer(o, [&](Json_writer& w) { write_push(w, r); }, [&] { return push_human(r, source); },
+                      r.push.rotation == Rotation::undecided);
+}
+
+}  // namespace wrenchkit::cli

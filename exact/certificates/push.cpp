@@ -1,0 +1,39 @@
+// proofs/certificate-format.md §8 (format 6): which way a pushed body turns. The bounds of the friction under the
+// body and of the three votes over F (exact; with the LP's duals when some force is not given), the rule's verdict,
+// and for "depends" two distributions of F that turn the body opposite ways. The checker's side:
+// proofs/checker/push.cpp (it computes the votes from the scene, checks the duals, and applies the rule itself).
+#include "exact/certificates/certificates.h"
+
+namespace wrenchkit {
+
+namespace {
+
+void write_range(Json_writer& w, const F_range& r, bool lower_only) {
+  w.object().member("lower", r.lower);
+  if (r.dual_lower) w.key("dual_lower").rationals(*r.dual_lower);
+  if (!lower_only) {
+    w.member("upper", r.upper);
+    if (r.dual_upper) w.key("dual_upper").rationals(*r.dual_upper);
+  }
+  w.end_object();
+}
+
+}  // namespace
+
+std::string push_certificate(const Push_answer& a) {
+  Json_writer w(512);
+  w.object().member("wrenchkit_certificate", 6).member("property", "push").member("rotation", rotation_name(a.rotation));
+  w.key("friction");
+  write_range(w, a.friction, true);
+  if (a.rotation == Rotation::depends) {
+    w.key("turns").object().key("ccw").rationals(a.turns_ccw).key("cw").rationals(a.turns_cw).end_object();
+  } else {
+    w.key("votes").array();
+    for (const Push_vote& v : a.votes) write_range(w, v.value, false);
+    w.end_array();
+  }
+  if (a.center) w.key("center").array().rational(a.center->x).rational(a.center->y).end_array();
+  return w.end_object().take();
+}
+
+}  // namespace wrenchkit

@@ -1,0 +1,29 @@
+#include "exact/pipeline/push_answer.h"
+
+#include "exact/certificates/certificates.h"
+#include "exact/io/input_error.h"
+
+namespace wrenchkit {
+
+Push_item answer_push(std::string_view text, std::string_view source, const Request& request) {
+  return answer_into_item<Push_item>(text, source, request.limits, [&](Push_item& r) {
+    r.mode = request.mode;
+    if (!r.scene.pusher)
+      throw Input_error("pusher: missing (push needs \"pusher\": {\"at\": [x, y], \"normal\": [nx, ny], \"mu\": m, "
+                        "\"velocity\": [vx, vy]}, a point contact on the body moving into it)");
+    if (!r.scene.support)
+      throw Input_error("support: missing (push needs the support the body slides on: its points or regions with "
+                        "their friction, as limit-surface reads them)");
+    const Support_model model(r.scene);
+    r.push = decide_push(model, *r.scene.pusher);
+    if (!request.certify || r.push.rotation == Rotation::undecided) return;
+    r.certificate = push_certificate(r.push);
+    std::string why = check_certificates(text, {r.certificate}, request);
+    if (!why.empty()) {
+      r.status = Status::check_failed;
+      r.message = std::move(why);
+    }
+  });
+}
+
+}  // namespace wrenchkit

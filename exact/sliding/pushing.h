@@ -1,0 +1,82 @@
+// [PU-1] Pushing (Mason ch. 7; docs/pushing.md): which way a pushed body turns, whatever its pressure distribution —
+// Mason's voting theorem, exact, over the support's admissible distributions F (exact/sliding/motion.h's one model).
+//
+// A pusher (scene "pusher": a point contact p with inward normal n, coefficient μ, moving with velocity v, v·n > 0)
+// pushes a body sliding quasi-statically on its support. Three directed lines through p vote: the friction cone's
+// edges n + μ·rot90 n ("left") and n − μ·rot90 n ("right"), and v. A line along d votes by the side of the centre
+// of friction c it passes — counter-clockwise when (p − c) × d > 0, clockwise when < 0, "through" c when 0 — where
+//
+//   c(f) = (Σ_i μ_i f_i r_i + Σ_R μ_R ∫_R r p) / D(f),   D(f) = Σ_i μ_i f_i + Σ_R μ_R W_R  (> 0: friction under the body)
+//
+// so each vote is the sign of N_d(f) = Σ_i μ_i f_i (p − r_i) × d + Σ_R μ_R (W_R p − M_R) × d, linear in f: constant
+// on a known distribution, bracketed over F by the exact LP (distribution.h maximise_over, its dual the proof).
+//
+// The rule (proofs/notes/PU-1-voting-theorem.md proves it, with every tie):
+//   the edges vote alike (both ccw or both cw)     → that sense;
+//   the edges vote apart (one ccw, one cw)         → the velocity's vote; "none" (a translation) when v passes c;
+//   one edge through c, the other votes s         → s when the velocity votes s, else "none" (a translation along pc);
+//   both edges through c (μ = 0 along pc, or c = p) → "none".
+// "none" holds for every distribution whose friction does not lie on one line through c (then the translation's
+// limit-surface point is smooth); where F admits such a distribution, "undecided" with that reason. When a vote's
+// sign changes over F (the coefficients μ differ and some forces are not given), the rule at the LP's extreme
+// distributions may find two that turn opposite ways: "depends", with both as witnesses; else "undecided".
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "exact/sliding/motion.h"
+
+namespace wrenchkit {
+
+enum class Rotation { ccw, cw, none, depends, undecided };
+const char* rotation_name(Rotation r);  // "ccw", "cw", "none", "depends", "undecided"
+
+// A linear function of the distribution over F, Σ_i coef_i f_i + constant: its range [lower, upper], exact (equal
+// when F is one distribution), each bound with the distribution attaining it and, some force not given, the LP's
+// dual (y0, yx, yy): coef_i ≤ y0 + yx x_i + yy y_i for every unknown i proves upper; (−coef) the same proves lower.
+struct F_range {
+  Rational lower, upper;
+  std::vector<Rational> argmin, argmax;
+  std::optional<std::array<Rational, 3>> dual_lower, dual_upper;
+  int lower_sign() const { return sgn(lower); }
+  int upper_sign() const { return sgn(upper); }
+};
+
+enum class Push_line { left, right, velocity };
+const char* push_line_name(Push_line l);  // "left edge", "right edge", "velocity"
+
+struct Push_vote {
+  Push_line line;
+  Vec2 direction;  // d
+  F_range value;   // N_d over F
+  // The vote over F: +1 ccw, −1 cw, 0 through c (the same for every distribution), or nullopt (it changes over F).
+  std::optional<int> sign() const;
+};
+
+struct Push_answer {
+  Vec2 at, normal, velocity;
+  Rational mu;
+  bool known = true;               // F is one distribution
+  F_range friction;                // D over F: its lower bound > 0
+  std::optional<Vec2> center;      // c, when every distribution of F has the same (always when known)
+  std::array<Push_vote, 3> votes;  // left edge, right edge, velocity
+  Rotation rotation = Rotation::undecided;
+  std::string why;                 // the rule that decided, in words; undecided: the reason
+  // depends: two distributions of F and the senses they turn (ccw, cw)
+  std::vector<Rational> turns_ccw, turns_cw;
+  // "none": whether a distribution of F may put all its friction on one line through c (then not "none" but undecided)
+  bool line_friction_possible = false;
+};
+
+// The rotation sense of the body pushed by `pusher` on `model`'s support. Throws Input_error when some distribution
+// of F has no friction (D = 0: nothing resists the push, the motion is not quasi-static).
+Push_answer decide_push(const Support_model& model, const Pusher& pusher);
+
+// The voting rule on one distribution's three votes (left edge, right edge, velocity; +1, −1, 0), for a support
+// whose friction does not lie on one line through c: ccw, cw or none.
+Rotation voting_rule(int left, int right, int velocity);
+
+}  // namespace wrenchkit

@@ -1,0 +1,244 @@
+// proofs/checker/push.cpp - certificate-format.md §8 (format 6): which way a pushed body turns, by Mason's voting
+// theorem over the support's admissible distributions F (proofs/notes/PU-1-voting-theorem.md). The checker computes
+// the three lines through the pusher's point p from the scene (the friction cone's edges n + mu rot90 n, n - mu
+// rot90 n, and the velocity v), and for a line along d the vote's numerator
+//
+//   N_d(f) = sum_i mu_i f_i (p - r_i) x d + sum_R mu_R (W_R p - M_R) x d,
+//
+// linear in the distribution f (its sign is the side of the centre of friction the line passes); D(f) = sum_i mu_i
+// f_i + sum_R mu_R W_R is the friction under the body. The certificate's bounds are accepted only when proven: the
+// value itself when every force is given, else by the LP dual over F (Support_witnesses::linear_bound). The rule is
+// applied to every combination of the signs the bounds allow; the claim must be the one outcome. "depends": two
+// distributions of F whose votes turn the body ccw and cw.
+#include "proofs/checker/certificate.h"
+#include "proofs/checker/generators.h"
+#include "proofs/checker/support_witnesses.h"
+
+namespace wrenchkit_checker::detail {
+
+namespace {
+
+Q cross(const Q& ax, const Q& ay, const Q& bx, const Q& by) { return ax * by - ay * bx; }
+
+void read_dual(Reader& r, Q (&out)[3]) {
+  read_fixed(r, 3, "an array of three rationals [y0, yx, yy]", [&](std::size_t k) { out[k] = read_rational(r); });
+}
+
+Push_part::Range read_range(Reader& r, bool lower_only) {
+  Push_part::Range g;
+  begin_object(r, lower_only ? "expected an object {\"lower\", \"dual_lower\"?}"
+                             : "expected an object {\"lower\", \"upper\", \"dual_lower\"?, \"dual_upper\"?}");
+  std::string_view k;
+  bool lower = false;
+  while (r.next_key(k)) {
+    if (k == "lower") lower = true, g.lower = read_rational(r);
+    else if (k == "upper" && !lower_only) g.has_upper = true, g.upper = read_rational(r);
+    else if (k == "dual_lower") g.has_dual_lower = true, read_dual(r, g.dual_lower);
+    else if (k == "dual_upper" && !lower_only) g.has_dual_upper = true, read_dual(r, g.dual_upper);
+    else r.fail("unknown key " + quote(k), true);
+  }
+  if (!lower) r.fail("missing required key \"lower\"");
+  if (!lower_only && !g.has_upper) r.fail("missing required key \"upper\"");
+  return g;
+}
+
+std::vector<Q> read_distribution(Reader& r) {
+  std::vector<Q> f;
+  begin_array(r, "expected an array of forces, one per support point");
+  while (r.next_item()) f.push_back(read_rational(r));
+  return f;
+}
+
+// The rule on one distribution's votes (+1 ccw, -1 cw, 0 through c); 2 stands for "none".
+int rule(int left, int right, int v) {
+  if (left != 0 && left == right) return left;
+  if (left != 0 && right != 0) return v == 0 ? 2 : v;
+  if (left == 0 && right == 0) return 2;
+  const int s = left != 0 ? left : right;
+  return v == s ? s : 2;
+}
+const char* word(int o) { return o == 1 ? "ccw" : o == -1 ? "cw" : "none"; }
+
+}  // namespace
+
+void read_push_member(Reader& r, std::string_view key, Certificate& c) {
+  Push_part& p = c.pu();
+  if (key == "rotation") {
+    if (r.peek() != Reader::Kind::string) r.fail("expected \"ccw\", \"cw\", \"none\" or \"depends\"");
+    p.rotation = r.string_view();
+    if (p.rotation != "ccw" && p.rotation != "cw" && p.rotation != "none" && p.rotation != "depends")
+      r.fail("expected \"ccw\", \"cw\", \"none\" or \"depends\"");
+  } else if (key == "friction") {
+    p.has_friction = true;
+    p.friction = read_range(r, true);
+  } else if (key == "votes") {
+    read_fixed(r, 3, "an array of three ranges (left edge, right edge, velocity)",
+               [&](std::size_t) { p.votes.push_back(read_range(r, false)); });
+  } else if (key == "center") {
+    p.has_center = true;
+    read_fixed(r, 2, "a point [x, y]", [&](std::size_t k) { p.center[k] = read_rational(r); });
+  } else {  // turns
+    p.has_turns = true;
+    begin_object(r, "expected an object {\"ccw\": [forces], \"cw\": [forces]}");
+    std::string_view k;
+    unsigned seen = 0;
+    while (r.next_key(k)) {
+      if (k == "ccw") seen |= 1, p.turns_ccw = read_distribution(r);
+      else if (k == "cw") seen |= 2, p.turns_cw = read_distribution(r);
+      else r.fail("unknown key " + quote(k), true);
+    }
+    if (seen != 3) r.fail("expected both \"ccw\" and \"cw\"");
+  }
+}
+
+void check_push(const Certificate& c, const Scene& scene, const Limits& lim) {
+  const Push_part& p = *c.push_members;
+  if (!scene.pusher) throw Failure{"push: the scene has no pusher"};
+  if (!scene.support) throw Failure{"push: the scene has no support"};
+  const Support& s = *scene.support;
+  const Support_witnesses sw(s, lim);
+  const std::vector<Q> pn = contact_numbers(scene.pusher->contact, lim);  // x, y, nx, ny, mu
+  const Q &px = pn[0], &py = pn[1], &nx = pn[2], &ny = pn[3], &mu = pn[4];
+  const Q(&v)[2] = scene.pusher->velocity;
+  if (sgn(Q(v[0] * nx + v[1] * ny)) <= 0) throw Failure{"pusher.velocity: does not push into the body (v . n <= 0)"};
+  const Q dir[3][2] = {{nx - mu * ny, ny + mu * nx}, {nx + mu * ny, ny - mu * nx}, {v[0], v[1]}};
+  const bool known = s.unknown == 0;
+  const std::vector<Q> given = sw.given();
+  const std::size_t n = s.points.size();
+  // A claimed range [lower, upper] of sum coef_i f_i + K over F, proven: lower <= min, upper >= max.
+  const auto proven = [&](const std::vector<Q>& coef, const Q& K, const Push_part::Range& g, bool lower_only,
+                          const std::string& path) {
+    if (!known && (!g.has_dual_lower || (!lower_only && !g.has_dual_upper)))
+      throw Failure{path + ": some support force is not given, so each bound needs its LP dual over F"};
+    if (known && (g.has_dual_lower || g.has_dual_upper))
+      throw Failure{path + ": every support force is given: no dual (the bounds are the value)"};
+    std::vector<Q> neg(coef.size());
+    for (std::size_t i = 0; i < coef.size(); ++i) neg[i] = -coef[i];
+    const Q min = K - sw.linear_bound(neg, given, known ? nullptr : g.dual_lower, "-coef_i");
+    if (g.lower > min) throw Failure{path + ".lower: " + show(g.lower) + " is more than the proven " + show(min)};
+    if (lower_only) return;
+    const Q max = K + sw.linear_bound(coef, given, known ? nullptr : g.dual_upper, "coef_i");
+    if (g.upper < max) throw Failure{path + ".upper: " + show(g.upper) + " is less than the proven " + show(max)};
+  };
+  // D(f) > 0: friction under the body for every distribution.
+  std::vector<Q> coef(n);
+  Q K = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    Point_values scratch;
+    coef[i] = values(s.points[i], lim, scratch).mu;
+  }
+  for (const Region& g : s.regions) K += g.mu * g.W;
+  proven(coef, K, p.friction, true, "friction");
+  if (sgn(p.friction.lower) <= 0)
+    throw Failure{"friction.lower: " + show(p.friction.lower) + " is not positive (the claim needs friction under the body)"};
+  // The votes' numerators for one distribution f.
+  std::array<std::vector<Q>, 3> vcoef;
+  std::array<Q, 3> vK;
+  for (int k = 0; k < 3; ++k) {
+    vcoef[k].resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      Point_values scratch;
+      const Point_values& pv = values(s.points[i], lim, scratch);
+      vcoef[k][i] = pv.mu * cross(px - pv.x, py - pv.y, dir[k][0], dir[k][1]);
+    }
+    vK[k] = 0;
+    for (const Region& g : s.regions)
+      vK[k] += g.mu * cross(g.W * px - g.M[0], g.W * py - g.M[1], dir[k][0], dir[k][1]);
+  }
+  const auto at = [&](int k, const std::vector<Q>& f) {
+    Q x = vK[k];
+    for (std::size_t i = 0; i < n; ++i) x += vcoef[k][i] * f[i];
+    return sgn(x);
+  };
+  if (p.has_center) {  // c = (sum mu_i f_i r_i + sum mu_R M_R) / D: the given forces', or, when every coefficient is
+    // the same, the centre of pressure c of F (the same for every distribution); else c moves and is not claimed
+    Q m[2] = {0, 0}, d = 0;
+    bool same_mu = true;
+    const Q* mu0 = nullptr;
+    std::vector<Q> mus;
+    for (std::size_t i = 0; i < n; ++i) {
+      Point_values scratch;
+      const Point_values& pv = values(s.points[i], lim, scratch);
+      m[0] += pv.mu * pv.f * pv.x, m[1] += pv.mu * pv.f * pv.y, d += pv.mu * pv.f;
+      mus.push_back(pv.mu);
+    }
+    for (const Region& g : s.regions) m[0] += g.mu * g.M[0], m[1] += g.mu * g.M[1], d += g.mu * g.W, mus.push_back(g.mu);
+    for (const Q& x : mus) same_mu = same_mu && (!mu0 || x == *mu0), mu0 = mu0 ? mu0 : &x;
+    if (known) {
+      if (p.center[0] * d != m[0] || p.center[1] * d != m[1])
+        throw Failure{"center: " + show(p.center[0], p.center[1]) + " is not the centre of friction " +
+                      show(Q(m[0] / d), Q(m[1] / d))};
+    } else if (!same_mu) {
+      throw Failure{"center: the support's coefficients differ and some force is not given, so the centre of friction "
+                    "moves with the distribution (no one centre to claim)"};
+    } else if (p.center[0] != s.c[0] || p.center[1] != s.c[1]) {
+      throw Failure{"center: " + show(p.center[0], p.center[1]) + " is not the centre of pressure " + show(s.c[0], s.c[1]) +
+                    " (every coefficient is the same: the centre of friction)"};
+    }
+  }
+  if (p.rotation == "depends") {
+    if (!p.has_turns) throw Failure{"missing required key \"turns\" (two distributions that turn the body apart)"};
+    if (!p.votes.empty()) throw Failure{"key \"votes\" is not allowed when \"rotation\" is \"depends\""};
+    sw.in_f(p.turns_ccw, "turns.ccw");
+    sw.in_f(p.turns_cw, "turns.cw");
+    if (rule(at(0, p.turns_ccw), at(1, p.turns_ccw), at(2, p.turns_ccw)) != 1)
+      throw Failure{"turns.ccw: its votes do not turn the body ccw"};
+    if (rule(at(0, p.turns_cw), at(1, p.turns_cw), at(2, p.turns_cw)) != -1)
+      throw Failure{"turns.cw: its votes do not turn the body cw"};
+    return;
+  }
+  if (p.has_turns) throw Failure{"key \"turns\" is allowed only when \"rotation\" is \"depends\""};
+  if (p.votes.size() != 3) throw Failure{"missing required key \"votes\""};
+  static const char* const names[3] = {"votes[0]", "votes[1]", "votes[2]"};
+  std::vector<int> signs[3];
+  for (int k = 0; k < 3; ++k) {
+    proven(vcoef[k], vK[k], p.votes[k], false, names[k]);
+    for (int t = -1; t <= 1; ++t)
+      if (sgn(p.votes[k].lower) <= t && t <= sgn(p.votes[k].upper)) signs[k].push_back(t);
+  }
+  const int claim = p.rotation == "ccw" ? 1 : p.rotation == "cw" ? -1 : 2;
+  bool smooth = false;  // a "none" that rests on a smooth translation point (PU-1 section 4)
+  for (int l : signs[0])
+    for (int r : signs[1])
+      for (int w : signs[2]) {
+        const int o = rule(l, r, w);
+        if (o != claim)
+          throw Failure{std::string("rotation: \"") + std::string(p.rotation) + "\", but votes " +
+                        word(l == 0 ? 2 : l) + "/" + word(r == 0 ? 2 : r) + "/" + word(w == 0 ? 2 : w) +
+                        " (left edge, right edge, velocity; \"none\" = through c) allowed by the bounds give \"" +
+                        word(o) + "\""};
+        smooth |= o == 2 && !(l != 0 && r != 0 && l != r);
+      }
+  if (!smooth) return;
+  // "none" from an edge through c: no distribution may put all its friction on one line through c. A region with
+  // friction spreads it over an area; else every force is given and some point with friction is off that line.
+  for (const Region& g : s.regions)
+    if (sgn(g.mu) > 0) return;
+  if (!known) throw Failure{"rotation: \"none\" needs a support whose friction is not on one line (a region with mu > 0, "
+                            "or every force given)"};
+  Q m[2] = {0, 0}, d = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    Point_values scratch;
+    const Point_values& pv = values(s.points[i], lim, scratch);
+    m[0] += pv.mu * pv.f * pv.x, m[1] += pv.mu * pv.f * pv.y, d += pv.mu * pv.f;
+  }
+  const Q cx = m[0] / d, cy = m[1] / d, dx = cx - px, dy = cy - py;
+  bool first = true;
+  Q lx, ly;
+  for (std::size_t i = 0; i < n; ++i) {
+    Point_values scratch;
+    const Point_values& pv = values(s.points[i], lim, scratch);
+    if (sgn(pv.mu) == 0 || sgn(pv.f) == 0) continue;
+    const Q rx = pv.x - cx, ry = pv.y - cy;
+    if (sgn(dx) != 0 || sgn(dy) != 0) {
+      if (sgn(Q(rx * dx + ry * dy)) != 0) return;
+    } else if (sgn(rx) != 0 || sgn(ry) != 0) {
+      if (first) lx = rx, ly = ry, first = false;
+      else if (sgn(cross(lx, ly, rx, ry)) != 0) return;
+    }
+  }
+  throw Failure{"rotation: \"none\", but the support's friction lies on one line through the centre of friction, where "
+                "the limit surface turns at the translation: the votes do not decide"};
+}
+
+}  // namespace wrenchkit_checker::detail
