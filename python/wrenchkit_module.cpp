@@ -506,6 +506,13 @@ std::string grasp_regions(const Py_scene& s, const std::vector<std::string>& wor
   return cli::json_answer([&](Json_writer& w) { cli::write_grasp_regions(w, r); });
 }
 
+// `wrenchkit push --json`: the answer's JSON text ("rotation": "undecided" is an answer here; the command exits 3).
+std::string push(const Py_scene& s) {
+  const Push_item r = answer_push(s.text, s.source, request_of("hybrid", s.limits));
+  raise_unless_answered(r.status, r.message);
+  return cli::json_answer([&](Json_writer& w) { cli::write_push(w, r); });
+}
+
 // `wrenchkit compare --json` (its options in `words`, CORPUS and ANSWERS last): the report's JSON text.
 std::string compare(const std::vector<std::string>& words) {
   const cli::Options o = command_options("compare", words, Input_limits{});
@@ -871,6 +878,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("compare", &compare);
   m.def("quality", &quality);
   m.def("grasp_regions", &grasp_regions);
+  m.def("push", &push);
   m.def("dual", &dual);
   m.def("limit_surface", &limit_surface);
   m.def("sliding", &sliding);

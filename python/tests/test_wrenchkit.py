@@ -472,3 +472,21 @@ def test_grasp_regions_square_opposite_sides():
     assert wrenchkit.grasp_regions(square, mu=1, edges=[0, 1])["pairs"][0]["closed"] == []  # the boundary: empty
     with pytest.raises(wrenchkit.InputError, match="--mu: missing"):
         wrenchkit.grasp_regions(square)
+
+
+def test_push_voting_theorem():
+    square = {"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]},
+              "support": {"mu": "1/2", "points": [{"at": [x, y], "force": 1} for x, y in
+                                                  [(-1, -1), (1, -1), (1, 1), (-1, 1)]]}}
+    # mu 1 at (1/2, -1): the edges vote apart, the velocity decides
+    square["pusher"] = {"at": ["1/2", -1], "normal": [0, 1], "mu": 1, "velocity": [1, 1]}
+    r = wrenchkit.push(square)
+    assert r["rotation"] == "ccw" and r["certificate_checked"] is True
+    assert r["center_of_friction"] == (0, 0)
+    assert [v["vote"] for v in r["votes"]] == ["cw", "ccw", "ccw"]
+    assert r["votes"][0]["direction"] == (-1, 1) and r["pusher"]["at"] == (Fraction(1, 2), -1)
+    square["pusher"]["velocity"] = [-1, 2]  # along p -> c: a translation
+    assert wrenchkit.push(square)["rotation"] == "none"
+    square["pusher"]["velocity"] = [0, -1]
+    with pytest.raises(wrenchkit.InputError, match=r"pusher\.velocity: \(0, -1\) moves away from the body"):
+        wrenchkit.push(square)

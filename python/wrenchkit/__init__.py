@@ -55,7 +55,7 @@ from . import _core  # noqa: E402  (the exception classes above are handed to th
 _core._set_exceptions(InputError, InternalError, UndecidedError)
 
 __all__ = ["Scene", "closure", "force_closure", "form_closure", "equilibrium", "hold", "labels", "dual", "reuleaux",
-           "quality", "grasp_regions", "limit_surface", "sliding", "render", "check", "reference", "compare", "batch", "closure_arrays",
+           "quality", "grasp_regions", "push", "limit_surface", "sliding", "render", "check", "reference", "compare", "batch", "closure_arrays",
            "equilibrium_arrays", "quality_arrays", "stick_slide_arrays", "DECIDED_BY", "MOTION", "MOTION_DECIDED_BY", "InputError",
            "UndecidedError", "InternalError"]
 
@@ -316,6 +316,28 @@ def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, 
         r["contact_margins"]["about"] = tuple(_fractions.Fraction(x) for x in r["contact_margins"]["about"])
         for c in r["contact_margins"]["contacts"]:
             exact(c, ("squared",))
+    return r
+
+
+def push(scene):
+    """Which way a pushed body turns (docs/pushing.md), as `wrenchkit push --json`: the scene's "pusher" (a point
+    contact with a "velocity" into the body) pushing it over its "support". "rotation": "ccw", "cw", "none" (a
+    translation), "depends" (with "witnesses": two distributions of the support's forces that turn it apart) or
+    "undecided" (with "why"), for every admissible pressure distribution — Mason's voting theorem, exact; "votes":
+    each line's ("left edge", "right edge", "velocity") direction and vote; "center_of_friction" (Fractions, None when
+    it moves with the distribution); the "certificate" the independent checker accepted.
+    """
+    r = _json.loads(_core.push(_scene(scene)))
+    fr = _fractions.Fraction
+    for k in ("at", "normal", "velocity"):
+        r["pusher"][k] = tuple(fr(x) for x in r["pusher"][k])
+    r["pusher"]["mu"] = fr(r["pusher"]["mu"])
+    if r["center_of_friction"] is not None:
+        r["center_of_friction"] = tuple(fr(x) for x in r["center_of_friction"])
+    for v in r["votes"]:
+        v["direction"] = tuple(fr(x) for x in v["direction"])
+    if "witnesses" in r:
+        r["witnesses"] = {k: [fr(x) for x in f] for k, f in r["witnesses"].items()}
     return r
 
 
