@@ -276,7 +276,7 @@ const Option kDirection{"direction", "dx,dy",
                           if (all_zero(*o.direction)) throw Usage_error(n + ": the zero vector is no direction");
                         }};
 
-const Option kWhat{"what", "labels|dual|reuleaux|limit-surface|hold|quality|grasp-regions", "what to draw (required)", [](Options& o, S n, S v) {
+const Option kWhat{"what", "labels|dual|reuleaux|limit-surface|hold|quality|grasp-regions|push", "what to draw (required)", [](Options& o, S n, S v) {
                      if (v == "labels") o.what = Picture::labels;
                      else if (v == "dual") o.what = Picture::dual;
                      else if (v == "reuleaux") o.what = Picture::reuleaux;
@@ -284,7 +284,8 @@ const Option kWhat{"what", "labels|dual|reuleaux|limit-surface|hold|quality|gras
                      else if (v == "hold") o.what = Picture::hold;
                      else if (v == "quality") o.what = Picture::quality;
                      else if (v == "grasp-regions") o.what = Picture::grasp_regions;
-                     else bad_value(n, v, "is not one of labels, dual, reuleaux, limit-surface, hold, quality, grasp-regions");
+                     else if (v == "push") o.what = Picture::push;
+                     else bad_value(n, v, "is not one of labels, dual, reuleaux, limit-surface, hold, quality, grasp-regions, push");
                    }};
 const Option kOutput = file_option<&Options::output>("output,o", "write the SVG to FILE (default: standard output)");
 
@@ -445,7 +446,10 @@ std::vector<Command> make_table() {
        "\n"
        "With --what grasp-regions: the part with the largest two-finger region's reach on its two edges, and the\n"
        "(s, t) squares of the largest regions with their force-closure polygons, as 'wrenchkit grasp-regions'\n"
-       "computes them (--mu, --edges).\n",
+       "computes them (--mu, --edges).\n"
+       "\n"
+       "With --what push: the body on its support, the centre of friction, the pusher with its friction cone and\n"
+       "velocity, and the three voting lines through it coloured by their votes, as 'wrenchkit push' decides.\n",
        join({{kHelp, kWhat, kOutput,
               with_help(kSides, "with --what limit-surface: polygon sides, even, 4..4096 (default 32)"), kNorm, kNormalize,
               kTorqueScale, kAbout, kFingerMu, kEdges},

@@ -34,7 +34,7 @@ namespace wrenchkit::cli {
 enum Exit { kAnswered = 0, kRejected = 1, kBadInput = 2, kUndecided = 3, kSelfCheck = 4, kInternal = 70 };
 
 // What `render --what` draws.
-enum class Picture { labels, dual, reuleaux, limit_surface, hold, quality, grasp_regions };
+enum class Picture { labels, dual, reuleaux, limit_surface, hold, quality, grasp_regions, push };
 
 // The options of one command line, each validated where it is parsed (cli/command_table.cpp: the
 // exact numbers through parse_rational within the scene limits) into its typed field. A command

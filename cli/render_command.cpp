@@ -4,6 +4,7 @@
 // arrows where regions run off to infinity, the load, a legend. Computed exactly, drawn in double.
 #include <cmath>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include "cli/common.h"
@@ -311,10 +312,105 @@ std::string render_grasp_regions(const Scene& s, const Grasp_regions_item& r, co
   return pic.finish();
 }
 
+
+// --what push: the body, its support (discs ∝ μf, hollow where the force is unknown; regions shaded), the centre of
+// friction, the pusher with its friction cone and velocity, and the three voting lines through it — blue where the
+// line votes ccw (c on its left), red cw, black dashed through c — as in Mason's figures of the voting theorem.
+std::string render_push(const Scene& s, const Push_item& r, const std::string& source) {
+  const Push_answer& a = r.push;
+  Bounds b;
+  add_scene_bounds(b, s);
+  b.add(to_p2(a.at));
+  for (const Support_point& p : s.support->points) b.add(to_p2(p.at));
+  for (const Support_region& g : s.support->regions)
+    for (const Vec2& v : g.outline) b.add(to_p2(v));
+  if (a.center) b.add(to_p2(*a.center));
+  Svg_canvas c = b.canvas(title_of(s, source), "push: which way the body turns, for every pressure distribution");
+  if (s.body.outline.size() >= 2) {
+    std::vector<P2> o;
+    for (const Vec2& v : s.body.outline) o.push_back(to_p2(v));
+    c.polygon(o, "fill=\"#d8d8d8\" fill-opacity=\"0.55\" stroke=\"#333\" stroke-width=\"2\"");
+  }
+  for (const Support_region& g : s.support->regions) {
+    std::vector<P2> o;
+    for (const Vec2& v : g.outline) o.push_back(to_p2(v));
+    c.polygon(o, swatch(kSupport, 0.25));
+  }
+  Rational most;
+  for (const Support_point& p : s.support->points) {
+    const Rational mu = s.support->mu_of(p);
+    if (p.force && mu * *p.force > most) most = mu * *p.force;
+  }
+  for (const Support_point& p : s.support->points) {
+    const Rational mu = s.support->mu_of(p);
+    const double rad = p.force && most > 0 ? 4 + 8 * std::sqrt(Rational(mu * *p.force / most).get_d()) : 6;
+    c.dot(to_p2(p.at), rad, p.force ? "fill=\"" + std::string(kSupport) + "\" fill-opacity=\"0.5\" stroke=\"#222\""
+                                    : "fill=\"none\" stroke=\"" + std::string(kSupport) + "\" stroke-width=\"2\"");
+  }
+  const double L = 0.13 * c.world_radius();
+  const P2 p = to_p2(a.at), n = unit(to_p2(a.normal));
+  const std::string colour[3] = {kMinus, kBoth, kPlus};  // cw, through, ccw
+  for (const Push_vote& v : a.votes) {
+    const std::optional<int> sign = v.sign();
+    const std::string col = sign ? colour[*sign + 1] : std::string(kInfinity);
+    const std::string dash = v.line == Push_line::velocity ? "" : " stroke-dasharray=\"8 5\"";
+    c.full_line(p, unit(to_p2(v.direction)), "stroke=\"" + col + "\" stroke-width=\"1.5\"" + dash);
+  }
+  const double mu = a.mu.get_d();
+  if (mu > 0) {
+    const P2 t{-n.y, n.x};
+    const P2 eL = unit({n.x + mu * t.x, n.y + mu * t.y}), eR = unit({n.x - mu * t.x, n.y - mu * t.y});
+    c.polygon({p, {p.x + 1.6 * L * eL.x, p.y + 1.6 * L * eL.y}, {p.x + 1.6 * L * eR.x, p.y + 1.6 * L * eR.y}},
+              "fill=\"" + std::string(kCone) + "\" fill-opacity=\"0.55\" stroke=\"" + kCone + "\"");
+  }
+  const P2 vel = unit(to_p2(a.velocity));
+  c.arrow({p.x - 1.5 * L * vel.x, p.y - 1.5 * L * vel.y}, p, kLoad, 3);
+  c.dot(p, 4, "fill=\"#222\"");
+  c.text(p, "pusher", "fill=\"#222\"");
+  if (a.center) {
+    const P2 ctr = to_p2(*a.center);
+    c.dot(ctr, 6, "fill=\"white\" stroke=\"#222\" stroke-width=\"2\"");
+    const std::string turn = a.rotation == Rotation::ccw ? " \u21ba" : a.rotation == Rotation::cw ? " \u21bb" : "";
+    c.text(ctr, "centre of friction" + turn, "fill=\"#222\"");
+  }
+  c.legend("stroke=\"" + std::string(kPlus) + "\" fill=\"" + kPlus + "\"", "a line that votes ccw (the centre of friction on its left)");
+  c.legend("stroke=\"" + std::string(kMinus) + "\" fill=\"" + kMinus + "\"", "a line that votes cw; black: through the centre");
+  if (!a.center) c.legend("stroke=\"" + std::string(kInfinity) + "\" fill=\"" + kInfinity + "\"", "a vote that changes with the distribution");
+  c.legend(swatch(kCone, 0.55), "the pusher's friction cone (dashed lines: its edges); green: its velocity");
+  c.legend(swatch(kSupport, 0.5), "support: discs grow with mu*f (hollow: force unknown)");
+  if (a.rotation == Rotation::depends) {  // where c is under the two witnesses
+    for (int k = 0; k < 2; ++k) {
+      const std::vector<Rational>& f = k == 0 ? a.turns_ccw : a.turns_cw;
+      double mx = 0, my = 0, d = 0;
+      for (std::size_t i = 0; i < f.size(); ++i) {
+        const double w = Rational(s.support->mu_of(s.support->points[i]) * f[i]).get_d();
+        mx += w * s.support->points[i].at.x.get_d(), my += w * s.support->points[i].at.y.get_d(), d += w;
+      }
+      for (const Support_region& g : s.support->regions) {
+        const double mu = s.support->mu_of(g).get_d();
+        mx += mu * g.moment.x.get_d(), my += mu * g.moment.y.get_d(), d += mu * g.total.get_d();
+      }
+      const P2 ctr{mx / d, my / d};
+      c.dot(ctr, 5, "fill=\"white\" stroke=\"" + std::string(k == 0 ? kPlus : kMinus) + "\" stroke-width=\"2\"");
+      c.text(ctr, k == 0 ? "c under the forces that turn it \u21ba" : "c under the forces that turn it \u21bb",
+             "fill=\"" + std::string(k == 0 ? kPlus : kMinus) + "\"");
+    }
+  }
+  // the verdict and its reason, in lines that fit the page
+  std::string line = "rotation: " + std::string(rotation_name(a.rotation)) + " \u2014";
+  std::istringstream words(a.why);
+  for (std::string w; words >> w;) {
+    if (line.size() + w.size() > 85) c.caption(line), line = " ";
+    line += " " + w;
+  }
+  c.caption(line);
+  return c.finish();
+}
+
 }  // namespace
 
 std::string render_svg(const Options& o, const std::string& text, const std::string& source, bool* undecided) {
-  if (!o.what) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface|hold|quality|grasp-regions");
+  if (!o.what) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface|hold|quality|grasp-regions|push");
   const Picture what = *o.what;
   if (o.sides && what != Picture::limit_surface) throw Usage_error("--sides goes with --what limit-surface");
   const Scene s = read_scene(text, o.limits, source);
@@ -326,6 +422,11 @@ std::string render_svg(const Options& o, const std::string& text, const std::str
   if (what == Picture::limit_surface) return render_limit_surface_svg(s, o.sides.value_or(32));
   if (what == Picture::grasp_regions)
     return render_grasp_regions(s, answered(answer_grasp_regions(text, source, request_of(o), o.regions)), source);
+  if (what == Picture::push) {
+    const Push_item r = answered(answer_push(text, source, request_of(o)));
+    if (undecided) *undecided = r.push.rotation == Rotation::undecided;
+    return render_push(s, r, source);
+  }
   if (what == Picture::quality) {
     Quality_query q = o.quality;
     q.critical_mu = false;
