@@ -413,3 +413,103 @@ TEST(PushOracle, VotingTheoremAgainstAQuasiStaticSimulation) {
 
 }  // namespace
 }  // namespace wrenchkit
+
+namespace wrenchkit {
+namespace {
+
+// Over the admissible distributions: supports whose forces are not given (the weight and the centre of pressure of a
+// random distribution), with different coefficients, so that c moves. The engine's answer for all of F against the
+// simulation at random distributions of F (convex combinations of its vertices) and, for depends, at its witnesses.
+TEST(PushOracle, OverTheAdmissibleDistributions) {
+  const char* env = std::getenv("WRENCHKIT_PUSH_ORACLE_SCENES");
+  const int scenes = env ? std::atoi(env) / 2 : 150;
+  std::mt19937_64 rng(202611292);
+  std::uniform_int_distribution<int> coord(-10, 10), force(0, 10), tenth(1, 10), small(-5, 5), count(3, 6);
+  std::uniform_real_distribution<double> unit01(0, 1);
+  int checked = 0, answers[5] = {0, 0, 0, 0, 0};
+  for (int sc = 0; sc < scenes; ++sc) {
+    const std::uint64_t seed = rng();
+    std::mt19937_64 r(seed);
+    const int k = count(r);
+    std::vector<int> X(k), Y(k), M(k), F(k);
+    int W = 0, mx = 0, my = 0;
+    for (int i = 0; i < k; ++i) X[i] = coord(r), Y[i] = coord(r), M[i] = tenth(r), F[i] = force(r);
+    for (int i = 0; i < k; ++i) W += F[i], mx += F[i] * X[i], my += F[i] * Y[i];
+    if (W == 0) continue;
+    int nx = small(r), ny = small(r);
+    if (nx == 0 && ny == 0) ny = 1;
+    const int px = coord(r), py = coord(r), mup = tenth(r) - 1;
+    int vx = small(r), vy = small(r);
+    if (vx * nx + vy * ny <= 0) vx += 6 * nx, vy += 6 * ny;
+    if (vx * nx + vy * ny <= 0) continue;
+    std::ostringstream t;
+    t << R"({"wrenchkit": 1, "support": {"weight": )" << W << R"(, "pressure_center": [")" << mx << "/" << W << R"(", ")"
+      << my << "/" << W << R"("], "points": [)";
+    for (int i = 0; i < k; ++i)
+      t << (i ? ", " : "") << R"({"at": [)" << X[i] << ", " << Y[i] << R"(], "mu": ")" << M[i] << "/10\"}";
+    t << R"(]}, "pusher": {"at": [)" << px << ", " << py << R"(], "normal": [)" << nx << ", " << ny << R"(], "mu": ")"
+      << mup << R"(/10", "velocity": [)" << vx << ", " << vy << "]}}";
+    const std::string text = t.str();
+    const Push_item item = push(text);
+    ASSERT_EQ(item.status, Status::answered) << item.message << "\n" << text;
+    const Push_answer& a = item.push;
+    ++answers[static_cast<int>(a.rotation)];
+    const Scene scene = read_scene(text, Input_limits{});
+    const Support_model model(scene);
+    const std::vector<std::vector<Rational>>& V = model.extreme();
+    Sim s;
+    s.px = px, s.py = py, s.nx = nx, s.ny = ny, s.mu = mup / 10.0, s.vx = vx, s.vy = vy;
+    for (int i = 0; i < k; ++i) s.x.push_back(X[i]), s.y.push_back(Y[i]);
+    const auto simulate_at = [&](const std::vector<double>& f) -> double {
+      s.w.clear();
+      for (int i = 0; i < k; ++i) s.w.push_back(M[i] / 10.0 * f[i]);
+      // the votes in doubles, to leave near ties to the exact tests
+      double D = 0, cx = 0, cy = 0;
+      for (int i = 0; i < k; ++i) D += s.w[i], cx += s.w[i] * X[i], cy += s.w[i] * Y[i];
+      cx /= D, cy /= D;
+      const double nn = std::hypot(nx, ny), ux = nx / nn, uy = ny / nn;
+      const double dirs[3][2] = {{ux - s.mu * uy, uy + s.mu * ux}, {ux + s.mu * uy, uy - s.mu * ux}, {double(vx), double(vy)}};
+      for (const auto& d : dirs)
+        if (std::fabs(cross2(px - cx, py - cy, d[0], d[1])) < 1e-6 * (40 * std::hypot(d[0], d[1]))) return NAN;
+      const double om = simulate(s);
+      return std::fabs(om) < 1e-7 ? NAN : om;
+    };
+    if (a.rotation == Rotation::ccw || a.rotation == Rotation::cw) {
+      for (int d = 0; d < 20; ++d) {
+        std::vector<double> f(k, 0.0);
+        double total = 0;
+        for (int j = 0; j < 3; ++j) {
+          const double w = unit01(r);
+          total += w;
+          const std::vector<Rational>& v = V[std::uniform_int_distribution<std::size_t>(0, V.size() - 1)(r)];
+          for (int i = 0; i < k; ++i) f[i] += w * v[i].get_d();
+        }
+        for (double& x : f) x /= total;
+        const double om = simulate_at(f);
+        if (std::isnan(om)) continue;
+        ++checked;
+        ASSERT_EQ(om > 0 ? Rotation::ccw : Rotation::cw, a.rotation)
+            << "seed " << seed << ": a distribution of F turns the body " << (om > 0 ? "ccw" : "cw") << " (omega " << om
+            << "), the answer for every distribution is " << rotation_name(a.rotation) << "\nscene: " << text;
+      }
+    } else if (a.rotation == Rotation::depends) {
+      for (int side = 0; side < 2; ++side) {
+        const std::vector<Rational>& w = side == 0 ? a.turns_ccw : a.turns_cw;
+        std::vector<double> f;
+        for (const Rational& x : w) f.push_back(x.get_d());
+        const double om = simulate_at(f);
+        if (std::isnan(om)) continue;
+        ++checked;
+        ASSERT_EQ(om > 0, side == 0) << "seed " << seed << ": the witness that turns the body "
+                                     << (side == 0 ? "ccw" : "cw") << " is simulated turning it the other way\nscene: " << text;
+      }
+    }
+  }
+  std::printf("[ push oracle over F ] %d scenes: ccw %d, cw %d, none %d, depends %d, undecided %d; %d distributions "
+              "simulated, all agree\n", scenes, answers[0], answers[1], answers[2], answers[3], answers[4], checked);
+  EXPECT_GT(checked, scenes * 5);
+  EXPECT_GT(answers[3], 0);  // the family reaches depends
+}
+
+}  // namespace
+}  // namespace wrenchkit
