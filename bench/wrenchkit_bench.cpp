@@ -46,9 +46,11 @@
 #include "exact/io/outline.h"
 #include "exact/io/to_float.h"
 #include "exact/pipeline/grasp_regions_answer.h"
+#include "exact/pipeline/push_answer.h"
 #include "float/closure_twin.h"
 #include "float/labels_twin.h"
 #include "float/limit_surface_twin.h"
+#include "float/push_twin.h"
 #include "fuzz/families.h"
 
 namespace {
@@ -658,6 +660,131 @@ void register_grasp_regions() {
   })->Unit(benchmark::kMillisecond)->Iterations(1);
 }
 
+
+// push/…: which way a pushed body turns. A body on 10 legs with given decimal forces and coefficients, pushed at a
+// point with friction: the voting decision alone (the scene read once), the whole pipeline (read, decide, certificate,
+// the independent checker), and the same over F (forces not given, two coefficients: six exact LPs). And the near-tie
+// family: the pusher's velocity 10⁻ᵏ (k = 9, 12, 15 … 18) beside the line to the centre of friction, each side, on 50
+// supports of decimal numbers — the naive double vote (the guess a float tool makes) against the exact one: the
+// counter "naive_wrong_per_1000" (it may guess; nothing certified uses it); the twin abstains ("twin_uncertain_per_1000")
+// and is never wrong, nor is the hybrid (the exact sign where the twin abstains): a wrong one fails the run.
+void register_push() {
+  std::string legs;
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> milli(-2000, 2000), f(1, 900), m(10, 90);
+  for (int i = 0; i < 10; ++i)
+    legs += (i ? ", " : "") + std::string("{\"at\": [") + std::to_string(milli(rng) / 1000.0) + ", " +
+            std::to_string(milli(rng) / 1000.0) + "], \"force\": " + std::to_string(f(rng) / 100.0) + ", \"mu\": 0." +
+            std::to_string(m(rng)) + "}";
+  const auto known = std::make_shared<std::string>(
+      R"({"wrenchkit": 1, "support": {"points": [)" + legs +
+      R"(]}, "pusher": {"at": [0.25, -2.5], "normal": [0.1, 1], "mu": 0.3, "velocity": [0.4, 1]}})");
+  std::string unknown_legs;
+  for (int i = 0; i < 10; ++i)
+    unknown_legs += (i ? ", " : "") + std::string("{\"at\": [") + std::to_string(milli(rng) / 1000.0) + ", " +
+                    std::to_string(milli(rng) / 1000.0) + "], \"mu\": " + (i % 2 ? "0.3" : "0.6") + "}";
+  const auto unknown = std::make_shared<std::string>(
+      R"({"wrenchkit": 1, "support": {"weight": 10, "pressure_center": [0, 0], "points": [)" + unknown_legs +
+      R"(]}, "pusher": {"at": [0.25, -2.5], "normal": [0.1, 1], "mu": 0.3, "velocity": [0.4, 1]}})");
+  benchmark::RegisterBenchmark("push/10_legs/rotation_exact", [known](benchmark::State& st) {
+    const Scene scene = read_scene(*known, Input_limits{});
+    const Support_model model(scene);
+    for (auto _ : st) benchmark::DoNotOptimize(decide_push(model, *scene.pusher).rotation);
+  })->Unit(benchmark::kMicrosecond);
+  for (const auto& [name, text] : {std::pair{"push/10_legs/with_certificate", known},
+                                   std::pair{"push/10_legs_forces_not_given/with_certificate", unknown}})
+    benchmark::RegisterBenchmark(name, [text = text](benchmark::State& st) {
+      Rotation got = Rotation::undecided;
+      for (auto _ : st) {
+        const Push_item r = answer_push(*text, "legs", Request{});
+        if (r.status != Status::answered || r.certificate.empty()) throw std::logic_error("push: " + r.message);
+        got = r.push.rotation;
+      }
+      st.SetLabel(rotation_name(got));
+    })->Unit(benchmark::kMicrosecond);
+  // the twin alone on the 10 legs (its input as certified doubles, converted once: the robot-side cost)
+  benchmark::RegisterBenchmark("push/10_legs/rotation_twin", [known](benchmark::State& st) {
+    const Scene scene = read_scene(*known, Input_limits{});
+    const Support& s = *scene.support;
+    fl::Push_twin_input in;
+    for (const Support_point& p : s.points) {
+      in.x.push_back(to_bounded(p.at.x)), in.y.push_back(to_bounded(p.at.y));
+      in.w.push_back(to_bounded(s.mu_of(p)) * to_bounded(*p.force));
+    }
+    const Contact& c = scene.pusher->contact;
+    in.px = to_bounded(c.at.x), in.py = to_bounded(c.at.y), in.nx = to_bounded(c.normal.x), in.ny = to_bounded(c.normal.y);
+    in.mu = to_bounded(c.mu), in.vx = to_bounded(scene.pusher->velocity.x), in.vy = to_bounded(scene.pusher->velocity.y);
+    int rot = 0;
+    for (auto _ : st) {
+      const fl::Push_twin_answer a = fl::push_twin(in);
+      rot = a.certain ? a.rotation : 2;
+      benchmark::DoNotOptimize(rot);
+    }
+    st.SetLabel(rot == 1 ? "ccw" : rot == -1 ? "cw" : rot == 0 ? "none" : "uncertain");
+  })->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("push/near_tie/naive_twin_hybrid", [](benchmark::State& st) {
+    std::size_t tried = 0, wrong = 0, twin_uncertain = 0, twin_wrong = 0, hybrid_wrong = 0;
+    for (auto _ : st) {
+      tried = wrong = twin_uncertain = twin_wrong = hybrid_wrong = 0;
+      std::mt19937_64 r(11);
+      std::uniform_int_distribution<int> milli(-2000, 2000), f(1, 900), m(10, 90);
+      for (int sc = 0; sc < 50; ++sc) {
+        std::vector<Vec2> at(10);
+        std::vector<Rational> w(10);
+        Vec2 cm{0, 0};
+        Rational D = 0;
+        for (int i = 0; i < 10; ++i) {
+          at[i] = {Rational(milli(r), 1000), Rational(milli(r), 1000)};
+          w[i] = Rational(f(r), 100) * Rational(m(r), 100);  // mu_i f_i
+          cm.x += w[i] * at[i].x, cm.y += w[i] * at[i].y, D += w[i];
+        }
+        const Vec2 c{cm.x / D, cm.y / D}, p{Rational(1, 4), Rational(-5, 2)};
+        const Vec2 d{c.x - p.x, c.y - p.y};
+        for (const int k : {9, 12, 15, 16, 17, 18})
+          for (const int side : {1, -1}) {
+            Integer ten;
+            mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(k));
+            const Rational e = Rational(side) / Rational(ten);
+            const Vec2 v{d.x - e * d.y, d.y + e * d.x};  // d turned by about e: passes c 1e-k·|d| to one side
+            Rational N = 0;  // the exact vote: sum w_i (p - r_i) x v
+            for (int i = 0; i < 10; ++i) N += w[i] * cross(Vec2{p.x - at[i].x, p.y - at[i].y}, v);
+            // the naive double vote: c and the cross product in doubles from the numbers' nearest doubles
+            double cx = 0, cy = 0, dd = 0;
+            for (int i = 0; i < 10; ++i) {
+              const double wi = w[i].get_d();
+              cx += wi * at[i].x.get_d(), cy += wi * at[i].y.get_d(), dd += wi;
+            }
+            cx /= dd, cy /= dd;
+            const double naive = (p.x.get_d() - cx) * v.y.get_d() - (p.y.get_d() - cy) * v.x.get_d();
+            ++tried;
+            wrong += (naive > 0) != (sgn(N) > 0) || naive == 0;
+            // the twin's vote of the velocity (its certified sign), and the hybrid: the exact sign when uncertain
+            fl::Bounded Nt;
+            const fl::Bounded vx = to_bounded(v.x), vy = to_bounded(v.y), px = to_bounded(p.x), py = to_bounded(p.y);
+            for (int i = 0; i < 10; ++i)
+              Nt = Nt + to_bounded(w[i]) * ((px - to_bounded(at[i].x)) * vy - (py - to_bounded(at[i].y)) * vx);
+            const Sign t = Nt.sign();
+            if (t == Sign::uncertain) ++twin_uncertain;
+            else twin_wrong += static_cast<int>(t) != sgn(N);
+            const int hybrid = t == Sign::uncertain ? sgn(N) : static_cast<int>(t);
+            hybrid_wrong += hybrid != sgn(N);
+          }
+      }
+      benchmark::DoNotOptimize(wrong);
+    }
+    if (twin_wrong || hybrid_wrong) {
+      std::fprintf(stderr, "push/near_tie: the twin or the hybrid was wrong\n");
+      g_failed = true;
+    }
+    st.counters["votes"] = static_cast<double>(tried);
+    st.counters["naive_wrong_per_1000"] = tried ? 1000.0 * static_cast<double>(wrong) / static_cast<double>(tried) : 0;
+    st.counters["twin_uncertain_per_1000"] =
+        tried ? 1000.0 * static_cast<double>(twin_uncertain) / static_cast<double>(tried) : 0;
+    st.counters["twin_wrong"] = static_cast<double>(twin_wrong);
+    st.counters["hybrid_wrong"] = static_cast<double>(hybrid_wrong);
+  })->Unit(benchmark::kMillisecond)->Iterations(1);
+}
+
 int main(int argc, char** argv) {
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
@@ -676,6 +803,7 @@ int main(int argc, char** argv) {
   register_regions();
   register_quality();
   register_grasp_regions();
+  register_push();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   if (g_failed) std::fprintf(stderr, "wrenchkit_bench: a certified method was wrong (see above)\n");

@@ -633,7 +633,12 @@ std::vector<Command> make_table() {
        "not given, every admissible distribution is covered by the exact LP over them (\"depends\", with two\n"
        "distributions that turn the body apart, when c moves with them). The certificate is accepted by the\n"
        "independent checker first. Exit 3 when undecided (the reason is said).\n",
-       join({{kHelp, kJson, with_help(kCertificate, "write the certificate to FILE (checked first)")}, kLimits}),
+       join({{kHelp, kJson,
+              with_help(kMode, "exact or hybrid (the default): the votes in rationals, with the certificate; float: the "
+                               "float twin's certified signs (a support of points with every force given), no "
+                               "certificate, exit 3 when a sign is within its error bound"),
+              with_help(kCertificate, "write the certificate to FILE (checked first)")},
+             kLimits}),
        {kScene},
        run_push,
        nullptr,

@@ -42,8 +42,10 @@ void write_push(Json_writer& w, const Push_item& r) {
   } else {
     w.key("center_of_friction").null();
   }
+  if (a.by_twin) w.member("decided_by", "float twin");
   w.key("votes").array();
   for (const Push_vote& v : a.votes) {
+    if (!a.votes_known) break;
     w.object().member("line", push_line_name(v.line));
     w.key("direction").array().rational(v.direction.x).rational(v.direction.y).end_array();
     w.member("vote", vote_word(v)).end_object();
@@ -63,14 +65,18 @@ std::string push_human(const Push_item& r, const std::string& source) {
   s << scene_line(r.scene, source);
   s << "pusher at " << vec_text(a.at) << ", inward normal " << vec_text(a.normal) << ", mu = " << number_text(a.mu)
     << ", moving " << vec_text(a.velocity) << "\n";
-  if (a.center)
+  if (a.by_twin || !a.votes_known)
+    s << "centre of friction: not computed (the float twin decides the votes' signs without it)\n";
+  else if (a.center)
     s << "centre of friction: " << vec_text(*a.center)
       << (a.known ? "" : " (the centre of pressure: the same for every distribution, every coefficient being equal)") << "\n";
   else
     s << "centre of friction: moves with the distribution (the support's coefficients differ and some forces are not given)\n";
-  s << "votes (the side of the centre of friction each directed line through the pusher passes):\n";
-  for (const Push_vote& v : a.votes)
-    s << "  " << push_line_name(v.line) << " " << vec_text(v.direction) << ": " << vote_sentence(v) << "\n";
+  if (a.votes_known) {
+    s << "votes (the side of the centre of friction each directed line through the pusher passes):\n";
+    for (const Push_vote& v : a.votes)
+      s << "  " << push_line_name(v.line) << " " << vec_text(v.direction) << ": " << vote_sentence(v) << "\n";
+  }
   s << "rotation: " << rotation_name(a.rotation) << " — " << a.why << "\n";
   if (a.rotation == Rotation::depends)
     s << "  turns ccw under the forces " << vec_text(a.turns_ccw) << "\n  turns cw under the forces "

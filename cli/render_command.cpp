@@ -351,6 +351,7 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
   const P2 p = to_p2(a.at), n = unit(to_p2(a.normal));
   const std::string colour[3] = {kMinus, kBoth, kPlus};  // cw, through, ccw
   for (const Push_vote& v : a.votes) {
+    if (!a.votes_known) break;
     const std::optional<int> sign = v.sign();
     const std::string col = sign ? colour[*sign + 1] : std::string(kInfinity);
     const std::string dash = v.line == Push_line::velocity ? "" : " stroke-dasharray=\"8 5\"";

@@ -372,10 +372,13 @@ TEST(CheckerMalformed, KeysAndTypes) {
             R"(missing required key "holds")");
   EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": 1, "holds": false, )" + twist + "}"),
             R"(missing required key "property")");
-  for (const char* version : {"6", "0", "2.0", "1.0", "1e0", "\"1\"", "true"})
+  for (const char* version : {"7", "0", "2.0", "1.0", "1e0", "\"1\"", "true"})
     EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": )" + std::string(version) +
                                           R"(, "property": "force_closure", "holds": false, )" + twist + "}"),
-              "wrenchkit_certificate: expected the integer 1, 2, 3, 4 or 5");
+              "wrenchkit_certificate: expected the integer 1, 2, 3, 4, 5 or 6");
+  // Format 6 is property "push" (§8) and nothing else.
+  EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": 6, "property": "force_closure", "holds": false, )" + twist + "}"),
+            R"(wrenchkit_certificate: format 6 is property "push" only)");
   // Format 5 is property "grasp_regions" (§3.6) and nothing else.
   EXPECT_EQ(rejection(block_corner, R"({"wrenchkit_certificate": 5, "property": "force_closure", "holds": false, )" + twist + "}"),
             R"(wrenchkit_certificate: format 5 is property "grasp_regions" only)");
@@ -391,7 +394,7 @@ TEST(CheckerMalformed, KeysAndTypes) {
         << version;
   EXPECT_EQ(
       rejection(block_corner, R"({"wrenchkit_certificate": 1, "property": "closure", "holds": false, )" + twist + "}"),
-      R"(property: expected "force_closure", "form_closure", "equilibrium", "motion", "hold", "quality", "critical_mu" or "grasp_regions")");
+      R"(property: expected "force_closure", "form_closure", "equilibrium", "motion", "hold", "quality", "critical_mu", "grasp_regions" or "push")");
   EXPECT_EQ(rejection(block_corner,
                       R"({"wrenchkit_certificate": 1, "property": "force_closure", "holds": "false", )" + twist + "}"),
             R"(holds: expected true or false (or "impending" or "depends" for property "hold"))");

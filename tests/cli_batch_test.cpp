@@ -109,6 +109,8 @@ TEST(CliBatch, EveryCommandAnswersEachLineAsItsSingleCommandDoes) {
       {"hold", ex},
       {"hold --mode float", ex},
       {"hold --mode exact", some(ex, 12)},
+      {"push", golden("docs/pushing")},
+      {"push --mode float", golden("docs/pushing")},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.command);

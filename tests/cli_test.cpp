@@ -194,7 +194,7 @@ TEST(Cli, EveryCommandOfTheTableHasHelpAndRefusesAnUnknownMode) {
   for (const char* c : {"closure", "check", "render", "batch", "reference", "compare", "demo", "limit-surface"})
     EXPECT_NE(std::find(commands.begin(), commands.end(), c), commands.end()) << c;
   const std::vector<std::string> per_scene = batch_commands_of_help();
-  EXPECT_EQ(per_scene.size(), 11u);  // hold joined (issue 16), quality (issue 31), grasp-regions (issue 32)
+  EXPECT_EQ(per_scene.size(), 12u);  // hold joined (issue 16), quality (issue 31), grasp-regions (issue 32), push (33)
   std::vector<std::string> lines;  // every command line, batch with each of its commands
   for (const std::string& c : commands) {
     const Cli_result h = run(c + " --help");

@@ -18,6 +18,7 @@
 #include "exact/io/scene.h"
 #include "exact/io/scene_writer.h"
 #include "exact/pipeline/push_answer.h"
+#include "core/mode.h"
 #include "exact/sliding/pushing.h"
 #include "proofs/checker/checker.h"
 
@@ -185,6 +186,7 @@ TEST(PushCertificate, TamperedOnesAreRefused) {
   // the velocity's vote (1/2)(1) - (-1)(1) = 3/2 times D = 2: claim an upper bound below it
   refused(R"("upper": "3")", R"("upper": "-1")", "votes[2].upper");
   refused(R"("center": ["0", "0"])", R"("center": ["0", "1"])", "center: (0, 1) is not the centre of friction");
+  refused(R"("rotation": "ccw")", R"("rotation": "ccw", "mu": "1")", "key \"mu\" is not allowed when \"property\" is \"push\"");
   // depends with a distribution that is not the scene's
   const std::string two = square(R"({"at": ["-1/10", -1], "normal": [0, 1], "velocity": [0, 1]})",
                                  R"({"weight": 4, "pressure_center": [0, 0], "points": [{"at": [-1, 0], "mu": 1},
@@ -352,7 +354,7 @@ TEST(PushOracle, VotingTheoremAgainstAQuasiStaticSimulation) {
   const int per_scene = 20;
   std::mt19937_64 rng(20261129);
   std::uniform_int_distribution<int> coord(-10, 10), force(1, 10), tenth(1, 10), small(-5, 5), count(2, 7);
-  int decided = 0, cases = 0, certified = 0;
+  int decided = 0, cases = 0, certified = 0, twin_certain = 0;
   for (int sc = 0; sc < scenes; ++sc) {
     const std::uint64_t seed = rng();
     std::mt19937_64 r(seed);
@@ -385,6 +387,14 @@ TEST(PushOracle, VotingTheoremAgainstAQuasiStaticSimulation) {
       const Support_model model(scene);
       const Push_answer a = decide_push(model, *scene.pusher);
       ++cases;
+      // the float twin: certain only where it is right
+      const Push_answer twin = decide_push(model, *scene.pusher, Mode::float_only);
+      if (twin.rotation != Rotation::undecided) {
+        ++twin_certain;
+        ASSERT_TRUE(twin.by_twin);
+        ASSERT_EQ(twin.rotation, a.rotation) << "seed " << seed << ": the twin says " << rotation_name(twin.rotation)
+                                             << ", the exact rule " << rotation_name(a.rotation) << "\n" << text;
+      }
       const double om = simulate(s);
       // the oracle abstains near a tie of its own doubles (the exact tests cover ties)
       double dsum = 0;
@@ -406,8 +416,10 @@ TEST(PushOracle, VotingTheoremAgainstAQuasiStaticSimulation) {
     }
   }
   EXPECT_GE(decided, cases * 9 / 10) << decided << " of " << cases << " decided by the simulation";
+  EXPECT_GE(twin_certain, cases * 9 / 10) << "the twin decided " << twin_certain << " of " << cases;
   std::printf("[ push oracle ] %d scenes x %d distributions: %d cases, %d decided by the simulation, all agree; %d "
-              "certificates checked\n", scenes, per_scene, cases, decided, certified);
+              "certificates checked; the float twin certain on %d, all equal to the exact rule\n", scenes, per_scene,
+              cases, decided, certified, twin_certain);
   EXPECT_GT(certified, scenes / 2);
 }
 

@@ -15,8 +15,11 @@ Push_item answer_push(std::string_view text, std::string_view source, const Requ
       throw Input_error("support: missing (push needs the support the body slides on: its points or regions with "
                         "their friction, as limit-surface reads them)");
     const Support_model model(r.scene);
-    r.push = decide_push(model, *r.scene.pusher);
-    if (!request.certify || r.push.rotation == Rotation::undecided) return;
+    // float: the twin alone (no certificate: its signs are certified by their error bounds, FL-1); a certificate
+    // needs the exact values; hybrid without one: the twin first
+    const Mode mode = request.mode == Mode::float_only ? Mode::float_only : request.certify ? Mode::exact : request.mode;
+    r.push = decide_push(model, *r.scene.pusher, mode);
+    if (!request.certify || r.push.by_twin || r.push.rotation == Rotation::undecided) return;
     r.certificate = push_certificate(r.push);
     std::string why = check_certificates(text, {r.certificate}, request);
     if (!why.empty()) {

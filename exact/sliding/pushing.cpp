@@ -4,6 +4,8 @@
 #include <set>
 
 #include "core/contact_generators.h"
+#include "core/voting_rule.h"
+#include "float/push_twin.h"
 #include "exact/io/input_error.h"
 
 namespace wrenchkit {
@@ -34,28 +36,24 @@ std::optional<int> Push_vote::sign() const {
 }
 
 Rotation voting_rule(int left, int right, int velocity) {
-  const auto sense = [](int s) { return s > 0 ? Rotation::ccw : Rotation::cw; };
-  if (left != 0 && left == right) return sense(left);                                        // alike
-  if (left != 0 && right != 0) return velocity == 0 ? Rotation::none : sense(velocity);      // apart
-  if (left == 0 && right == 0) return Rotation::none;                                        // both through c
-  const int s = left != 0 ? left : right;                                                    // one through c
-  return velocity == s ? sense(s) : Rotation::none;
+  const int s = voting_rule_sense(left, right, velocity);
+  return s > 0 ? Rotation::ccw : s < 0 ? Rotation::cw : Rotation::none;
 }
 
 namespace {
 
-// Does the rule's "none" for these votes rest on a smooth translation point (PU-1 §4)? Not when the edges vote
-// strictly apart (then ω's sign is the velocity's for every distribution).
-bool none_needs_smooth(int left, int right) { return !(left != 0 && right != 0 && left != right); }
-
 // Σ coef_i f_i + constant over F.
 F_range range_over(const Support_model& model, const std::vector<Rational>& coef, const Rational& constant) {
   F_range r;
-  if (model.known()) {
-    Rational v = constant;
-    for (std::size_t i = 0; i < coef.size(); ++i) v += coef[i] * model.given()[i];
-    r.lower = r.upper = v;
-    r.argmin = r.argmax = model.given();
+  if (model.known()) {  // (argmin and argmax empty: the one distribution, model.given())
+    Rational& v = r.lower;
+    v = constant;
+    Rational t;
+    for (std::size_t i = 0; i < coef.size(); ++i) {
+      mpq_mul(t.get_mpq_t(), coef[i].get_mpq_t(), model.given()[i].get_mpq_t());
+      v += t;
+    }
+    r.upper = v;
     return r;
   }
   F_optimum hi = maximise_over(model.support(), model.admissible(), coef);
@@ -79,9 +77,39 @@ Rational value_at(const std::vector<Rational>& coef, const Rational& constant, c
 
 Vec2 minus(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
 
+// The twin on a support of points with every force given (the rationals rounded with certified bounds).
+std::optional<Push_answer> twin_push(const Support_model& model, const Pusher& pusher, Push_answer a,
+                                     const std::array<Vec2, 3>& dirs) {
+  const Support& s = model.support();
+  if (!a.known || !s.regions.empty()) return std::nullopt;
+  fl::Push_twin_input in;
+  const Contact& c = pusher.contact;
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    in.x.push_back(to_bounded(s.points[i].at.x));
+    in.y.push_back(to_bounded(s.points[i].at.y));
+    in.w.push_back(to_bounded(s.mu_of(s.points[i])) * to_bounded(model.given()[i]));
+  }
+  in.px = to_bounded(c.at.x), in.py = to_bounded(c.at.y), in.nx = to_bounded(c.normal.x), in.ny = to_bounded(c.normal.y);
+  in.mu = to_bounded(c.mu), in.vx = to_bounded(pusher.velocity.x), in.vy = to_bounded(pusher.velocity.y);
+  const fl::Push_twin_answer t = fl::push_twin(in);
+  if (!t.certain) return std::nullopt;
+  a.by_twin = true;
+  for (int k = 0; k < 3; ++k) {
+    const Rational v(static_cast<int>(t.votes[k]));
+    a.votes[k] = Push_vote{static_cast<Push_line>(k), dirs[k], F_range{v, v, {}, {}, {}, {}}};
+  }
+  const int l = static_cast<int>(t.votes[0]), r = static_cast<int>(t.votes[1]);
+  a.rotation = voting_rule(l, r, static_cast<int>(t.votes[2]));
+  a.why = "the float twin's certified signs (its error bounds decide every vote): " +
+          std::string(l == r && l != 0 ? "both edges vote alike"
+                      : l != 0 && r != 0 ? "the edges vote apart, the velocity decides"
+                                         : "an edge passes through the centre of friction");
+  return a;
+}
+
 }  // namespace
 
-Push_answer decide_push(const Support_model& model, const Pusher& pusher) {
+Push_answer decide_push(const Support_model& model, const Pusher& pusher, Mode mode) {
   const Support& s = model.support();
   const Contact& pc = pusher.contact;
   Push_answer a;
@@ -94,6 +122,18 @@ Push_answer decide_push(const Support_model& model, const Pusher& pusher) {
                              edge[e == Edge::left ? 0 : 1] = Vec2{fx, fy};
                            });
   const std::array<Vec2, 3> dirs{edge[0], edge[1], pusher.velocity};
+  if (mode != Mode::exact) {
+    if (std::optional<Push_answer> t = twin_push(model, pusher, a, dirs)) return *t;
+    if (mode == Mode::float_only) {
+      a.rotation = Rotation::undecided;
+      a.votes_known = false;
+      a.why = a.known && s.regions.empty()
+                  ? "the float twin cannot decide (a vote within its error bound, or a translation that needs the "
+                    "support's shape): use --mode hybrid or exact"
+                  : "the float twin answers a support of points with every force given: use --mode hybrid or exact";
+      return a;
+    }
+  }
   const std::size_t n = s.points.size();
   // D(f): the friction under the body.
   std::vector<Rational> coef(n);
@@ -124,7 +164,7 @@ Push_answer decide_push(const Support_model& model, const Pusher& pusher) {
     }
     return Vec2{m.x / d, m.y / d};
   };
-  if (a.known || mus.size() == 1) a.center = center_of(a.friction.argmax);
+  if (a.known || mus.size() == 1) a.center = center_of(a.known ? model.given() : a.friction.argmax);
   // The votes: N_d(f) = Σ μ_i f_i (p − r_i) × d + Σ_R μ_R (W_R p − M_R) × d.
   std::array<std::vector<Rational>, 3> vote_coef;
   std::array<Rational, 3> vote_constant;
@@ -206,7 +246,7 @@ Push_answer decide_push(const Support_model& model, const Pusher& pusher) {
     return a;
   }
   // The votes change over F: the rule at the extreme distributions that bound them.
-  std::vector<const std::vector<Rational>*> tried;
+  std::vector<const std::vector<Rational>*> tried;  // (F has more than one distribution here: the LPs' optima)
   for (const Push_vote& v : a.votes) tried.push_back(&v.value.argmin), tried.push_back(&v.value.argmax);
   for (const std::vector<Rational>* f : tried) {
     int t[3];

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "core/mode.h"
 #include "exact/sliding/motion.h"
 
 namespace wrenchkit {
@@ -35,7 +36,7 @@ enum class Rotation { ccw, cw, none, depends, undecided };
 const char* rotation_name(Rotation r);  // "ccw", "cw", "none", "depends", "undecided"
 
 // A linear function of the distribution over F, Σ_i coef_i f_i + constant: its range [lower, upper], exact (equal
-// when F is one distribution), each bound with the distribution attaining it and, some force not given, the LP's
+// when F is one distribution), and, some force not given, each bound with the distribution attaining it and the LP's
 // dual (y0, yx, yy): coef_i ≤ y0 + yx x_i + yy y_i for every unknown i proves upper; (−coef) the same proves lower.
 struct F_range {
   Rational lower, upper;
@@ -69,14 +70,20 @@ struct Push_answer {
   std::vector<Rational> turns_ccw, turns_cw;
   // "none": whether a distribution of F may put all its friction on one line through c (then not "none" but undecided)
   bool line_friction_possible = false;
+  bool by_twin = false;  // decided by the float twin's certified signs (no exact values: no certificate from it)
+  bool votes_known = true;  // false: the float twin could not decide, `votes` is empty
 };
 
 // The rotation sense of the body pushed by `pusher` on `model`'s support. Throws Input_error when some distribution
 // of F has no friction (D = 0: nothing resists the push, the motion is not quasi-static).
-Push_answer decide_push(const Support_model& model, const Pusher& pusher);
+// The mode: exact (everything in rationals, what a certificate is written from); float_only — the float twin
+// (float/push_twin.h) on a support of points with every force given: its certified signs, or `undecided` (regions,
+// forces not given, or a sign its bounds cannot decide); hybrid — the twin first, the exact decision when it cannot
+// tell. An answer of the twin has `by_twin` set and its votes' ranges hold only their signs (−1, 0, 1).
+Push_answer decide_push(const Support_model& model, const Pusher& pusher, Mode mode = Mode::exact);
 
-// The voting rule on one distribution's three votes (left edge, right edge, velocity; +1, −1, 0), for a support
-// whose friction does not lie on one line through c: ccw, cw or none.
+// The voting rule (core/voting_rule.h) on one distribution's three votes (left edge, right edge, velocity; +1, −1,
+// 0), for a support whose friction does not lie on one line through c: ccw, cw or none.
 Rotation voting_rule(int left, int right, int velocity);
 
 }  // namespace wrenchkit

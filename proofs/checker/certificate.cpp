@@ -406,8 +406,16 @@ void check_keys(const Certificate& c) {
                          : "wrenchkit_certificate: format 6 is property \"push\" only"};
   if (c.push) {
     need("rotation"), need("friction");
-    for (const std::string_view key : {"holds", "combination", "independent", "twist", "reading", "load", "motion"})
-      if (c.keys.count(key)) throw Failure{"key " + quote(key) + " is not allowed when \"property\" is \"push\""};
+    static const char* const others[] = {
+        "holds", "combination", "independent", "twist", "reading", "load", "motion", "support_forces", "speed_bounds",
+        "dual", "vertices", "sticking", "sliding", "holding", "failing", "regions", "norm", "normalize", "torque_scale",
+        "about", "scales", "epsilon", "boundary", "nearest", "normal", "of", "critical_mu", "below", "above", "constant",
+        "constant_beyond", "limit_twist", "scaling", "torque_radius_squared", "torque_scale_error", "fingers", "mu",
+        "edges", "pairs"};
+    static const std::uint64_t others_mask = Key_set::mask(others);
+    if (c.keys.any(others_mask))
+      for (const char* key : others)
+        if (c.keys.count(key)) throw Failure{"key " + quote(key) + " is not allowed when \"property\" is \"push\""};
     return;  // check_push() decides which of "votes" and "turns" its claim needs
   }
   if (c.keys.any(Key_set::mask(push_keys)))

@@ -114,10 +114,10 @@ void check_push(const Certificate& c, const Scene& scene, const Limits& lim) {
       throw Failure{path + ": every support force is given: no dual (the bounds are the value)"};
     std::vector<Q> neg(coef.size());
     for (std::size_t i = 0; i < coef.size(); ++i) neg[i] = -coef[i];
-    const Q min = K - sw.linear_bound(neg, given, known ? nullptr : g.dual_lower, "-coef_i");
+    const Q min = K - sw.linear_bound(neg, given, known ? nullptr : g.dual_lower, (path + ".dual_lower: -coef_i").c_str());
     if (g.lower > min) throw Failure{path + ".lower: " + show(g.lower) + " is more than the proven " + show(min)};
     if (lower_only) return;
-    const Q max = K + sw.linear_bound(coef, given, known ? nullptr : g.dual_upper, "coef_i");
+    const Q max = K + sw.linear_bound(coef, given, known ? nullptr : g.dual_upper, (path + ".dual_upper: coef_i").c_str());
     if (g.upper < max) throw Failure{path + ".upper: " + show(g.upper) + " is less than the proven " + show(max)};
   };
   // D(f) > 0: friction under the body for every distribution.

@@ -191,7 +191,7 @@ class Support_witnesses {
       speed_bound(u[i], q, v.x, v.y, path, i, "v_i(q)");
       coef[i] = v.mu * u[i];
     }
-    Q bound = linear_bound(coef, f, dual, "mu_i u_i");
+    Q bound = linear_bound(coef, f, dual, "dual: mu_i u_i");
     if (blocks)  // each region's bound on mu times the integral of |v| p
       for (std::size_t k = 0; k < blocks->size(); ++k) bound += slide_block_bound(s_.regions[k], (*blocks)[k], q);
     return bound;
@@ -199,7 +199,7 @@ class Support_witnesses {
 
   // A bound on sum_i coef_i f_i (one coefficient per point): the sum itself for the distribution f, or, with the LP
   // dual (y0, yx, yy) of F's three rows (every f in F; f then holds the given forces), sum_known coef_i f_i + y0 W' +
-  // yx M'x + yy M'y, where coef_i <= y0 + yx x_i + yy y_i for every unknown i (else the Failure naming `what`).
+  // yx M'x + yy M'y, where coef_i <= y0 + yx x_i + yy y_i for every unknown i (else the Failure "<what> = …").
   Q linear_bound(const std::vector<Q>& coef, const std::vector<Q>& f, const Q* dual, const char* what) const {
     Q bound = 0;
     for (std::size_t i = 0; i < coef.size(); ++i) {
@@ -210,7 +210,7 @@ class Support_witnesses {
       Point_values scratch;
       const Point_values& v = values(s_.points[i], lim_, scratch);
       if (coef[i] > dual[0] + dual[1] * v.x + dual[2] * v.y)
-        throw Failure{std::string("dual: ") + what + " = " + show(coef[i]) + " is more than y0 + yx x_i + yy y_i = " +
+        throw Failure{std::string(what) + " = " + show(coef[i]) + " is more than y0 + yx x_i + yy y_i = " +
                       show(Q(dual[0] + dual[1] * v.x + dual[2] * v.y)) + " at " + point_name(i)};
     }
     if (dual) bound += dual[0] * s_.rest_weight + dual[1] * s_.rest_moment[0] + dual[2] * s_.rest_moment[1];

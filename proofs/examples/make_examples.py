@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes and verifies the worked examples of proofs/examples/ (certificate formats 1 to 3).
+"""Writes and verifies the worked examples of proofs/examples/ (certificate formats 1 to 6).
 
 Every scene and certificate is written from the tables below, then read back from disk and checked
 by a small exact checker written here with Python's fractions (a second implementation, independent
@@ -39,6 +39,8 @@ MAT_LEGS = {"wrenchkit": 1, "support": {"mu": "1/2", "weight": 5, "pressure_cent
                                       "points": [{"at": [-2, 0]}, {"at": [0, 0]}, {"at": [2, 0]}],
                                       "regions": [{"outline": [["-1/2", "-1/2"], ["1/2", "-1/2"], ["1/2", "1/2"],
                                                                ["-1/2", "1/2"]], "pressure": "uniform", "force": 1}]}}
+SQUARE_OUTLINE = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]}
+CORNERS = [[-1, -1], [1, -1], [1, 1], [-1, 1]]
 SQUARE_REGION = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 1}
 
 SCENES = {
@@ -206,6 +208,34 @@ SCENES = {
                                           "holes": [[[-1, -1], [1, -1], [1, 1], [-1, 1]]],
                                           "pressure": "uniform", "force": 1}]},
     },
+    # Pushing (certificate-format.md section 8, format 6): the square [-1,1]^2 sliding on its support, pushed at
+    # its bottom edge y = -1 (inward normal (0, 1)).
+    "push_square": {"wrenchkit": 1, "name": "the square on four legs (force 1 each, mu = 1/2), pushed at (1/2, -1) with "
+                    "mu = 1 along (1, 1): the edges vote apart, the velocity ccw", "body": SQUARE_OUTLINE,
+                    "support": {"mu": "1/2", "points": [{"at": at, "force": 1} for at in CORNERS]},
+                    "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": 1, "velocity": [1, 1]}},
+    "push_depends": {"wrenchkit": 1, "name": "the square on four points of different mu, forces not given (W = 4 at "
+                     "the origin), pushed frictionless along x = -1/10: ccw under (2, 2, 0, 0), cw under (0, 0, 2, 2)",
+                     "body": SQUARE_OUTLINE,
+                     "support": {"weight": 4, "pressure_center": [0, 0],
+                                 "points": [{"at": [-1, 0], "mu": 1}, {"at": [1, 0], "mu": "1/10"},
+                                            {"at": [0, 1], "mu": "1/2"}, {"at": [0, -1], "mu": "1/2"}]},
+                     "pusher": {"at": ["-1/10", -1], "normal": [0, 1], "velocity": [0, 1]}},
+    "push_square_unknown": {"wrenchkit": 1, "name": "the square on four legs of unknown force (W = 4 at the origin, "
+                            "mu = 1/2), pushed at (1/2, -1) with mu = 1/4 along y: both edges vote ccw",
+                            "body": SQUARE_OUTLINE,
+                            "support": {"mu": "1/2", "weight": 4, "pressure_center": [0, 0],
+                                        "points": [{"at": at} for at in CORNERS]},
+                            "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": "1/4", "velocity": [0, 1]}},
+    "push_square_centre": {"wrenchkit": 1, "name": "the square on four legs pushed frictionless at (0, -1) along "
+                           "(1, 1): both edges pass through the centre of friction, the body translates",
+                           "body": SQUARE_OUTLINE,
+                           "support": {"mu": "1/2", "points": [{"at": at, "force": 1} for at in CORNERS]},
+                           "pusher": {"at": [0, -1], "normal": [0, 1], "velocity": [1, 1]}},
+    "push_barbell": {"wrenchkit": 1, "name": "the square on two legs (-1, 0), (1, 0) pushed frictionless at (0, -1): "
+                     "the friction lies on one line through c, so the votes do not decide", "body": SQUARE_OUTLINE,
+                     "support": {"mu": "1/2", "points": [{"at": [-1, 0], "force": 1}, {"at": [1, 0], "force": 1}]},
+                     "pusher": {"at": [0, -1], "normal": [0, 1], "velocity": [1, 1]}},
 }
 
 # ----------------------------------------------------------------------------------------------
@@ -396,6 +426,32 @@ def regions_cert(pairs, mu="1/2", **rest):
 
 SQ_PAIRS = [{"edges": [i, j], "closed": [SQ_REGION] if (i, j) in ((0, 2), (1, 3)) else []}
             for i in range(4) for j in range(i + 1, 4)]
+
+
+# Pushing (section 8), as `wrenchkit push --certificate` writes them. push_square: D = 4 (1/2) = 2; the lines through
+# (1/2, -1) along (-1, 1), (1, 1), (1, 1) have N = (1/2) (4p - sum r_i) x d = (1, -2) x d: -1, 3, 3 (c = 0).
+PUSH_SQUARE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2"}, "votes": [{"lower": "-1", "upper": "-1"}, {"lower": "3", "upper": "3"}, {"lower": "3", "upper": "3"}], "center": ["0", "0"]}''')
+# push_depends: every line is x = -1/10 upward; D = 2 + f0/10 >= 2 over F (f0 = f1, f2 + f3 = 4 - 2 f0).
+PUSH_DEPENDS = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "depends", "friction": {"lower": "2", "dual_lower": ["-1/2", "2/5", "0"]}, "turns": {"ccw": ["2", "2", "0", "0"], "cw": ["0", "0", "2", "2"]}}''')
+# push_square_unknown: one coefficient, so c = (0, 0) for every f in F and each vote is constant over F (its duals
+# prove both bounds): N = (1/2) (4p - W c) x d = (1, -2) x d for d = (-1/4, 1), (1/4, 1), (0, 1): 1/2, 3/2, 1.
+PUSH_UNKNOWN = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2", "dual_lower": ["-1/2", "0", "0"]}, "votes": [{"lower": "1/2", "dual_lower": ["-1/8", "1/2", "1/8"], "upper": "1/2", "dual_upper": ["1/8", "-1/2", "-1/8"]}, {"lower": "3/2", "dual_lower": ["-3/8", "1/2", "-1/8"], "upper": "3/2", "dual_upper": ["3/8", "-1/2", "1/8"]}, {"lower": "1", "dual_lower": ["-1/4", "1/2", "0"], "upper": "1", "dual_upper": ["1/4", "-1/2", "0"]}], "center": ["0", "0"]}''')
+# push_square_centre: both edges along (0, 1) through c = 0 (votes 0), the velocity ccw: "none"; the legs' friction is
+# off the line through c perpendicular to pc (the x-axis), so the tie is decided.
+PUSH_CENTRE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "2"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "0", "upper": "0"}, {"lower": "2", "upper": "2"}], "center": ["0", "0"]}''')
+
+
+def tamper(base, path, value):
+    """A copy of a certificate with the member at `path` (keys and indices) replaced by value (None: removed)."""
+    cert = json.loads(json.dumps(base))
+    at = cert
+    for k in path[:-1]:
+        at = at[k]
+    if value is None:
+        del at[path[-1]]
+    else:
+        at[path[-1]] = value
+    return cert
 
 
 def crit(base, **changes):
@@ -881,6 +937,39 @@ CERTS = [
      hold2("depends", holding=MAT_HOLDING, failing=MAT_FAILING, regions=[block(MAT_2, forces=[["0", "0"], ["0", "0"]])])),
     ("barbell_known", "blocks_without_regions", 'invalid:keys|key "regions" is not allowed when "motion" is "sticks" and the support has no regions',
      motion("sticks", [F(1, 4), 0, 0], support_forces=[["1/8", "0"], ["1/8", "0"]], regions=[])),
+
+    # pushing (certificate-format.md section 8, format 6)
+    ("push_square", "ccw", "valid", PUSH_SQUARE),
+    ("push_square", "wrong_rotation", 'invalid:rotation|rotation: "cw", but votes cw/ccw/ccw (left edge, right edge, velocity; "none" = through c) allowed by the bounds give "ccw"',
+     tamper(PUSH_SQUARE, ["rotation"], "cw")),
+    ("push_square", "short_bound", "invalid:bound|votes[2].upper: 2 is less than the proven 3",
+     tamper(PUSH_SQUARE, ["votes", 2, "upper"], "2")),
+    # sound but loose: the velocity's range [-1, 3] allows every sign, and with the edges apart so does the rule
+    ("push_square", "loose_bounds", 'invalid:rotation|rotation: "ccw", but votes cw/ccw/cw (left edge, right edge, velocity; "none" = through c) allowed by the bounds give "cw"',
+     tamper(PUSH_SQUARE, ["votes", 2, "lower"], "-1")),
+    ("push_square", "wrong_center", "invalid:center|center: (1/2, 0) is not the centre of friction (0, 0)",
+     tamper(PUSH_SQUARE, ["center"], ["1/2", "0"])),
+    ("push_square", "in_format_5", 'invalid:header|wrenchkit_certificate: property "push" is format 6 (expected the integer 6)',
+     tamper(PUSH_SQUARE, ["wrenchkit_certificate"], 5)),
+    ("push_depends", "depends", "valid", PUSH_DEPENDS),
+    # (1, 1, 0, 0) would turn the body ccw as well, but it carries 2, not the weight 4
+    ("push_depends", "not_in_f", "invalid:F|turns.ccw: the forces sum to 2, not the weight 4",
+     tamper(PUSH_DEPENDS, ["turns", "ccw"], ["1", "1", "0", "0"])),
+    ("push_depends", "same_way", "invalid:turns|turns.cw: its votes do not turn the body cw",
+     tamper(PUSH_DEPENDS, ["turns", "cw"], ["2", "2", "0", "0"])),
+    ("push_depends", "center_moves", "invalid:center|center: the support's coefficients differ and some force is not given",
+     tamper(PUSH_DEPENDS, ["center"], ["0", "0"])),
+    ("push_square_unknown", "ccw", "valid", PUSH_UNKNOWN),
+    ("push_square_unknown", "weak_dual", "invalid:bound|friction.lower: 2 is more than the proven 1",
+     tamper(PUSH_UNKNOWN, ["friction", "dual_lower"], ["-1/4", "0", "0"])),
+    ("push_square_unknown", "dual_violated", "invalid:dual|votes[2].dual_lower: -coef_i = -3/4 is more than y0 + yx x_i + yy y_i = -7/4 at support.points[0]",
+     tamper(PUSH_UNKNOWN, ["votes", 2, "dual_lower"], ["-1/4", "1/2", "1"])),
+    ("push_square_unknown", "without_dual", "invalid:dual|votes[1]: some support force is not given, so each bound needs its LP dual over F",
+     tamper(PUSH_UNKNOWN, ["votes", 1, "dual_upper"], None)),
+    ("push_square_centre", "none", "valid", PUSH_CENTRE),
+    # the same tie on the barbell (D = 1; the velocity's N = 1): the engine answers "undecided" and writes nothing
+    ("push_barbell", "none_on_a_line", "invalid:line|the support's friction lies on one line through the centre of friction",
+     json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "1"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "0", "upper": "0"}, {"lower": "1", "upper": "1"}], "center": ["0", "0"]}''')),
 ]
 
 # ----------------------------------------------------------------------------------------------
@@ -1693,6 +1782,126 @@ def verify_regions(scene, cert):
     return None
 
 
+def verify_push(scene, cert):
+    """Section 8 (format 6): which way a pushed body turns, by the voting rule of PU-1 section 4 over F. None if
+    proved, else a short reason. Support points only (no regions); the pusher written with "at" and "normal"."""
+    if cert.get("wrenchkit_certificate") != 6:
+        return "header"
+    keys = set(cert)
+    if keys - {"wrenchkit_certificate", "property", "rotation", "friction", "votes", "center", "turns"} or not (
+            {"rotation", "friction"} <= keys) or ({"turns"} if cert["rotation"] == "depends" else {"votes"}) - keys:
+        return "keys"
+    sup, pu = scene.get("support"), scene.get("pusher")
+    if sup is None or pu is None:
+        return "no pusher"
+    if sup.get("regions") or "at" not in pu:
+        return "unsupported"  # regions and placed pushers are the C++ checker's alone
+    pts = [(number(q["at"][0]), number(q["at"][1]), number(q.get("mu", sup.get("mu"))),
+            None if "force" not in q else number(q["force"])) for q in sup.get("points", [])]
+    known = all(q[3] is not None for q in pts)
+    given = [q[3] or F(0) for q in pts]
+    (px, py), (nx, ny), (vx, vy) = ([number(a) for a in pu[k]] for k in ("at", "normal", "velocity"))
+    mu = number(pu.get("mu", scene.get("mu", 0)))
+    if vx * nx + vy * ny <= 0:
+        return "velocity"
+    cross = lambda a, b: a[0] * b[1] - a[1] * b[0]  # noqa: E731
+    dirs = [(nx - mu * ny, ny + mu * nx), (nx + mu * ny, ny - mu * nx), (vx, vy)]  # n +- mu rot90(n), v
+    fric = [q[2] for q in pts]  # D(f) = sum mu_i f_i, N_k(f) = sum mu_i f_i (p - r_i) x d_k
+    votes = [[q[2] * cross((px - q[0], py - q[1]), d) for q in pts] for d in dirs]
+    value = lambda coef, f: sum(a * b for a, b in zip(coef, f))  # noqa: E731
+    if known:
+        W, c = sum(given), None
+    else:
+        W = number(sup["weight"])
+        c = [number(v) for v in sup.get("pressure_center", scene.get("body", {}).get("com"))]
+        rest = [W - sum(given)] + [W * c[k] - sum(f * q[k] for f, q in zip(given, pts)) for k in range(2)]
+
+    def most(coef, dual):  # max of coef.f over F by the dual [y0, yx, yy] (None if it is not feasible)
+        y = [rational(v) for v in dual]
+        if any(q[3] is None and a > y[0] + y[1] * q[0] + y[2] * q[1] for a, q in zip(coef, pts)):
+            return None
+        return value(coef, given) + sum(a * b for a, b in zip(y, rest))
+
+    def bounds(coef, rng, lower_only):  # (L, U) proven over F, or a reason
+        if set(rng) - {"lower", "dual_lower"} - (set() if lower_only else {"upper", "dual_upper"}):
+            return "keys"
+        duals = {"dual_lower"} | (set() if lower_only else {"dual_upper"})
+        if (known and duals & set(rng)) or (not known and duals - set(rng)):
+            return "dual"
+        lo = hi = value(coef, given)
+        if not known:
+            lo, hi = most([-a for a in coef], rng["dual_lower"]), None if lower_only else most(coef, rng["dual_upper"])
+            if lo is None or (hi is None and not lower_only):
+                return "dual"
+            lo = -lo
+        L, U = rational(rng["lower"]), None if lower_only else rational(rng["upper"])
+        return "bound" if L > lo or (U is not None and U < hi) else (L, U)
+
+    def in_F(f):
+        return (len(f) == len(pts) and all(v >= 0 for v in f) and all(q[3] is None or q[3] == v for q, v in zip(pts, f))
+                and sum(f) == W and (known or all(value(f, [q[k] for q in pts]) == W * c[k] for k in range(2))))
+
+    def rule(l, r, v):  # +1 ccw, -1 cw, 0 none (PU-1 section 4)
+        if l and l == r:
+            return l
+        if l and r:
+            return v
+        s = l or r
+        return s if s and v == s else 0
+
+    sign = lambda x: (x > 0) - (x < 0)  # noqa: E731
+    fr = bounds(fric, cert["friction"], True)
+    if isinstance(fr, str):
+        return fr
+    if fr[0] <= 0:
+        return "friction"
+    if "center" in cert:
+        cx, cy = (rational(v) for v in cert["center"])
+        if known:
+            D = value(fric, given)
+            if (cx * D, cy * D) != tuple(sum(q[2] * f * q[k] for q, f in zip(pts, given)) for k in range(2)):
+                return "center"
+        elif len(set(fric)) > 1 or [cx, cy] != c:
+            return "center"
+    if cert["rotation"] == "depends":
+        if "votes" in cert:
+            return "keys"
+        turns = cert["turns"]
+        if set(turns) != {"ccw", "cw"}:
+            return "keys"
+        for want, name in ((1, "ccw"), (-1, "cw")):
+            f = [rational(v) for v in turns[name]]
+            if not in_F(f):
+                return "F"
+            if rule(*(sign(value(coef, f)) for coef in votes)) != want:
+                return "turns"
+        return None
+    if "turns" in cert or len(cert["votes"]) != 3:
+        return "keys"
+    signs = []
+    for coef, rng in zip(votes, cert["votes"]):
+        b = bounds(coef, rng, False)
+        if isinstance(b, str):
+            return b
+        signs.append([t for t in (-1, 0, 1) if sign(b[0]) <= t <= sign(b[1])])
+    claim = {"ccw": 1, "cw": -1, "none": 0}[cert["rotation"]]
+    combos = list(itertools.product(*signs))
+    if any(rule(*t) != claim for t in combos):
+        return "rotation"
+    if not any(rule(l, r, v) == 0 and not (l and r and l != r) for l, r, v in combos):
+        return None
+    # "none" from an edge through c: the support's friction must not lie on one line through c (every force given)
+    if not known:
+        return "line"
+    D = value(fric, given)
+    c = [sum(q[2] * f * q[k] for q, f in zip(pts, given)) / D for k in range(2)]
+    arms = [(q[0] - c[0], q[1] - c[1]) for q, f in zip(pts, given) if q[2] * f > 0]
+    d = (c[0] - px, c[1] - py)
+    if any(d):
+        return None if any(a[0] * d[0] + a[1] * d[1] != 0 for a in arms) else "line"
+    return None if any(cross(a, b) != 0 for a, b in itertools.combinations(arms, 2)) else "line"
+
+
 def verify(scene, cert):
     """Returns None if cert proves its claim for scene, else a short reason."""
     if cert.get("property") == "grasp_regions":
@@ -1708,6 +1917,11 @@ def verify(scene, cert):
     if cert.get("property") == "quality":
         try:
             return verify_quality(scene, cert)
+        except (ValueError, KeyError, TypeError) as e:
+            return f"malformed: {e}"
+    if cert.get("property") == "push":
+        try:
+            return verify_push(scene, cert)
         except (ValueError, KeyError, TypeError) as e:
             return f"malformed: {e}"
     keys = set(cert)
