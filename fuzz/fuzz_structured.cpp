@@ -187,6 +187,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (load.empty() && b.next(2))
     load = ", \"load\": {\"wrench\": [" + num(b.small(-3, 3)) + ", " + num(b.small(-3, 3)) + ", " +
            num(b.small(-3, 3)) + "]}";
+  // [PU-1] A pusher on a support (families 6 and 7): grid points, normals and velocities, so that its lines pass
+  // through the centre of friction often, and a velocity ε beside one of its cone's edges.
+  if ((family == 6 || family == 7) && b.next(2)) {
+    int nx = b.small(-2, 2), ny = b.small(-2, 2);
+    if (nx == 0 && ny == 0) ny = 1;
+    const std::string mu = mus[b.next(6)];
+    int vx = b.small(-2, 2), vy = b.small(-2, 2);
+    if (vx * nx + vy * ny <= 0) vx += 3 * nx, vy += 3 * ny;
+    std::string vxs = num(vx);
+    if (vx > 0 && b.next(2)) vxs = frac(vx, 1, b);  // near a tie: vx ± ε (v · n stays > 0: |ε nx| < 1)
+    load += ", \"pusher\": {\"at\": [" + num(b.small(-4, 4)) + ", " + num(b.small(-4, 4)) + "], \"normal\": [" +
+            num(nx) + ", " + num(ny) + "], \"mu\": " + mu + ", \"velocity\": [" + vxs + ", " + num(vy) + "]}";
+  }
   const std::string text = "{\"wrenchkit\": 1, \"contacts\": [" + contacts + "]" + load + "}";
   if (!check_scene_text(text)) {
     std::cerr << "structured scene rejected:\n" << text << "\n";

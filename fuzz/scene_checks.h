@@ -41,6 +41,7 @@
 #include "exact/io/scene_writer.h"
 #include "exact/pipeline/pipeline.h"
 #include "exact/sliding/motion.h"
+#include "exact/sliding/pushing.h"
 #include "exact/sliding/region_sliding.h"
 #include "exact/sliding/sliding.h"
 #include "exact/sliding/strategies.h"
@@ -133,6 +134,11 @@ inline std::string scene_difference(const wrenchkit::Scene& a, const wrenchkit::
     return true;
   };
   if (!same_optional(a.support, b.support, same_support)) return "support";
+  const auto same_pusher = [](const Pusher& x, const Pusher& y) {
+    return same_vec(x.contact.at, y.contact.at) && same_vec(x.contact.normal, y.contact.normal) &&
+           x.contact.mu == y.contact.mu && x.contact.name == y.contact.name && same_vec(x.velocity, y.velocity);
+  };
+  if (!same_optional(a.pusher, b.pusher, same_pusher)) return "pusher";
   return "";
 }
 
@@ -390,6 +396,21 @@ inline bool check_scene_text(std::string_view text) {
       }
     }
   }
+  std::string push_certificate;  // [PU-1] a pushed body on its support: the rotation's certificate (below)
+  if (scene.pusher && scene.support && scene.support->points.size() <= 8) {
+    try {
+      const wrenchkit::Support_model model(scene);
+      const auto e = wrenchkit::decide_push(model, *scene.pusher, wrenchkit::Mode::exact);
+      const auto f = wrenchkit::decide_push(model, *scene.pusher, wrenchkit::Mode::float_only);
+      if (f.rotation != wrenchkit::Rotation::undecided && f.rotation != e.rotation) {
+        std::cerr << "push: the float twin certified " << wrenchkit::rotation_name(f.rotation) << ", exact says "
+                  << wrenchkit::rotation_name(e.rotation) << "\n" << printed;
+        std::abort();
+      }
+      if (e.rotation != wrenchkit::Rotation::undecided) push_certificate = wrenchkit::push_certificate(e);
+    } catch (const wrenchkit::Input_error&) {  // no friction under the body: refused, as the command refuses it
+    }
+  }
   wrenchkit_checker::Limits cl;
   cl.max_digits = limits.max_digits;
   cl.max_exponent = limits.max_exponent;
@@ -397,6 +418,7 @@ inline bool check_scene_text(std::string_view text) {
   cl.max_region_vertices = limits.max_region_vertices;
   std::vector<std::string> certs;
   if (!region_certificate.empty()) certs.push_back(region_certificate);
+  if (!push_certificate.empty()) certs.push_back(push_certificate);
   for (auto p : {wrenchkit::Property::force_closure, wrenchkit::Property::form_closure})
     for (auto m : {wrenchkit::Mode::exact, wrenchkit::Mode::hybrid})
       certs.push_back(wrenchkit::certificate_json(wrenchkit::decide_closure(scene, p, m).certificate));

@@ -20,6 +20,7 @@
 #include "exact/pipeline/push_answer.h"
 #include "core/mode.h"
 #include "exact/sliding/pushing.h"
+#include "fuzz/scene_checks.h"
 #include "proofs/checker/checker.h"
 
 namespace wrenchkit {
@@ -159,6 +160,50 @@ TEST(PushScene, WrittenBackReadsTheSame) {
   EXPECT_EQ(t.pusher->velocity.y, 1);
   EXPECT_EQ(t.pusher->contact.name, "finger");
   EXPECT_EQ(write_scene(t), write_scene(s));
+}
+
+// Every reader reads the pusher alike (the one-pass reader in one pass, the tree reader, eager and lazy, into fresh
+// and reused scenes), refuses alike, and the scene-wide budget counts its numbers the same at its boundary. (A pusher
+// placed by {"edge", "s"} is read by the tree reader, as placed contacts are: PushRefusals above.)
+TEST(PushScene, EveryReaderAlikeAndTheBudgetCountsIt) {
+  Scene reused_eager, reused_lazy;
+  const std::vector<std::string> texts = {
+      square(R"({"at": ["1/2", -1], "normal": [0, 1], "mu": "1/4", "velocity": [0, 1], "name": "finger"})"),
+      square(R"({"at": ["1/2", -1], "normal": [0, 1], "velocity": ["1e-30", 1]})"),  // no mu: frictionless
+      R"({"wrenchkit": 1, "mu": "1/3", "pusher": {"at": [0, 0], "normal": [0, 1], "velocity": [1, 1]},
+          "support": {"mu": 1, "points": [{"at": [0, 1], "force": 1}, {"at": [1, 1], "force": 2}]}})",  // the scene's mu
+      R"({"wrenchkit": 1, "pusher": {"velocity": [1, 1], "mu": 0.25, "normal": [0, 1], "at": [0.5, 0]}, "mu": 2})",
+      square(R"({"at": ["1/2", -1], "normal": [0, 1], "velocity": [1, 0]})"),   // tangent: refused
+      square(R"({"at": ["1/2", -1], "normal": [0, 1], "mu": 1})"),               // no velocity: refused
+      square(R"({"wrench": [0, 1, 0], "velocity": [0, 1]})"),                   // a wrench: refused
+      square(R"({"at": ["1/2", -1], "normal": [0, 1], "velocity": [0, 1], "speed": 2})"),  // unknown key: refused
+      square(R"({"at": ["1/2", -1], "normal": [0, 0], "velocity": [0, 1]})"),   // zero normal: refused
+  };
+  for (const std::string& t : texts) {
+    EXPECT_EQ(readers_disagree(t, Input_limits{}, reused_eager, reused_lazy), "") << t;
+    bool valid = true;
+    try {
+      read_scene(t, Input_limits{});
+    } catch (const Input_error&) {
+      valid = false;
+    }
+    if (valid) {
+      EXPECT_EQ(budget_boundary_broken(t, Input_limits{}, reused_eager, reused_lazy), "") << t;
+      const Scene s = read_scene(t, Input_limits{});
+      EXPECT_TRUE(s.pusher) << t;
+    }
+  }
+  // the pusher's numbers count in the scene-wide budget: 10 000 digits in its velocity are refused under 9 999
+  Input_limits tight;
+  tight.max_total_digits = 9999;
+  const std::string big = square(R"({"at": ["1/2", -1], "normal": [0, 1], "velocity": [")" + std::string(5000, '7') +
+                                 "/" + std::string(5000, '3') + R"(", 1]})");
+  try {
+    read_scene(big, tight);
+    ADD_FAILURE() << "a pusher over the digit budget was read";
+  } catch (const Input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("--max-total-digits"), std::string::npos) << e.what();
+  }
 }
 
 TEST(PushCertificate, TamperedOnesAreRefused) {

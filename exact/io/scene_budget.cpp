@@ -44,10 +44,11 @@ Place member(Place object, std::string_view key) {
              : key == "contacts" ? Place::contacts
              : key == "load"     ? Place::load
              : key == "support"  ? Place::support
+             : key == "pusher"   ? Place::contact  // (with its "velocity", below)
                                  : Place::other;
     case Place::body: return key == "outline" ? Place::outline : key == "com" ? Place::numbers : Place::other;
     case Place::contact:
-      return key == "at" || key == "normal" || key == "wrench" ? Place::numbers
+      return key == "at" || key == "normal" || key == "wrench" || key == "velocity" ? Place::numbers
              : key == "mu"                                     ? Place::number
                                                                : Place::other;
     case Place::load:

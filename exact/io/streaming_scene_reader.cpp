@@ -62,7 +62,9 @@ class Stream {
 
   void scene(Scene& out) {
     if (s_.size() > limits_.max_file_bytes) defer();
-    enum : unsigned { kVersion = 1, kName = 2, kBody = 4, kContacts = 8, kLoad = 16, kSupport = 32, kSceneMu = 64 };
+    enum : unsigned {
+      kVersion = 1, kName = 2, kBody = 4, kContacts = 8, kLoad = 16, kSupport = 32, kSceneMu = 64, kPusher = 128
+    };
     unsigned seen = 0;
     std::size_t contacts = 0;
     int scene_mu_sign = 0;
@@ -76,6 +78,7 @@ class Stream {
                            : key == "load"      ? kLoad
                            : key == "support"   ? kSupport
                            : key == "mu"        ? kSceneMu
+                           : key == "pusher"    ? kPusher
                                                 : 0u;
       if (bit == 0 || (seen & bit)) defer();  // unknown or duplicate key (a scene-wide "mu" too: read_scene_tree)
       seen |= bit;
@@ -94,6 +97,12 @@ class Stream {
           break;
         case kLoad: load(out.load ? *out.load : out.load.emplace()); break;
         case kSupport: support(out.support ? *out.support : out.support.emplace()); break;
+        case kPusher: {  // a point contact with its velocity (scene.cpp's pusher(): read eagerly)
+          Pusher& p = out.pusher ? *out.pusher : out.pusher.emplace();
+          if (!contact(p.contact, 2, &p.velocity)) defer();
+          if (lazy_) p.contact = exact_contact(p.contact);
+          break;
+        }
         case kSceneMu:  // the scene-wide μ (read_scene_tree's message when negative)
           scene_mu_sign = contact_number(scene_mu_, 4, scene_mu_.mu, scene_mu_.twin.mu);
           if (scene_mu_sign < 0) defer();
@@ -118,6 +127,15 @@ class Stream {
         c.number_is_json[4] = scene_mu_.number_is_json[4];
         c.mu_given = true;
       }
+    if (!(seen & kPusher)) {
+      out.pusher.reset();
+    } else {
+      Contact& c = out.pusher->contact;
+      if (!c.mu_given && out.mu) c.mu = *out.mu, c.mu_given = true, c.twin.mu = to_bounded(*out.mu);
+      c.twin.frictional = c.mu != 0;
+      c.exact_pending = false;
+      if (sgn(dot(out.pusher->velocity, c.normal)) <= 0) defer();  // read_scene_tree says why
+    }
     if (!(seen & kBody)) {
       out.body.outline.clear();
       out.body.com.reset();
@@ -314,10 +332,11 @@ class Stream {
   }
 
   // A point contact {at, normal, mu?, name?} or a wrench generator {wrench, name?} (scene.cpp's
-  // contact() and lazy_contact()).
-  void contact(Contact& c, std::size_t level) {
+  // contact() and lazy_contact()); with `velocity`, the pusher's point contact and its "velocity" (required; false
+  // for a wrench or without it).
+  bool contact(Contact& c, std::size_t level, Vec2* velocity = nullptr) {
     reset(c);
-    enum : unsigned { kAt = 1, kNormal = 2, kMu = 4, kWrench = 8, kName = 16 };
+    enum : unsigned { kAt = 1, kNormal = 2, kMu = 4, kWrench = 8, kName = 16, kVelocity = 32 };
     unsigned seen = 0;
     int mu_sign = 0;
     bool zero_normal = false, zero_wrench = false;
@@ -327,6 +346,7 @@ class Stream {
                            : key == "mu"     ? kMu
                            : key == "wrench" ? kWrench
                            : key == "name"   ? kName
+                           : key == "velocity" && velocity ? kVelocity
                                              : 0u;
       if (bit == 0 || (seen & bit)) defer();
       seen |= bit;
@@ -352,15 +372,17 @@ class Stream {
           break;
         }
         case kName: c.name.assign(string_value()); break;
+        case kVelocity: vec2(*velocity, level + 1); break;
       }
     });
     c.has_twin = true;
     c.exact_pending = lazy_;
+    if (velocity && (!(seen & kVelocity) || (seen & kWrench))) return false;
     if (seen & kWrench) {
       if (zero_wrench) defer();
       c.kind = Contact::Kind::wrench;
       c.twin.is_wrench = true;
-      return;
+      return true;
     }
     if ((seen & (kAt | kNormal)) != (kAt | kNormal) || zero_normal || mu_sign < 0) defer();
     c.mu_given = (seen & kMu) != 0;
@@ -371,6 +393,7 @@ class Stream {
       c.twin.mu = fl::Bounded::exact(0);
     }
     c.twin.frictional = mu_sign != 0;
+    return true;
   }
 
   // Exactly one of {"force", "at"}, {"wrench"}, {"gravity"} (scene.cpp's load(); gravity's body.com
