@@ -46,6 +46,8 @@ struct Ref {
   std::string hold;                      // true, impending, false, depends; empty: no certified answer (or refused)
   const json::Value* labels = nullptr;
   const json::Value* limit_surface = nullptr;
+  bool has_push = false;                   // the line has "push" (a pusher on a support)
+  std::string rotation;                    // ccw, cw, none, depends; empty: no certified answer (undecided or refused)
   bool has_quality = false;                // the line has "quality" (contacts)
   const json::Value* quality_epsilon = nullptr;  // quality.epsilon {lower, upper, …}; none: refused (too much work)
   Field_distance distance_of(const std::string& field) const {
@@ -83,7 +85,7 @@ struct Field_tally {
 };
 
 const char* const kFields[] = {"force_closure", "form_closure", "equilibrium", "hold", "motion",
-                               "center_of_friction", "power", "power_range", "labels", "epsilon"};
+                               "center_of_friction", "power", "power_range", "labels", "epsilon", "rotation"};
 bool is_verdict(const std::string& f) { return f == "force_closure" || f == "form_closure" || f == "equilibrium"; }
 
 // The words of a wrong verdict: unsafe (the answer claims closure, balance, holding or sticking that does not
@@ -96,16 +98,20 @@ const char* unsafe_words(const std::string& f) {
   return f == "equilibrium" ? "falsely balanced"
          : f == "motion"    ? "falsely sticks or impending"
          : f == "hold"      ? "falsely holds or impending"
+         : f == "rotation"  ? "a rotation sense claimed that does not hold for every distribution"
                             : "falsely closed";
 }
 const char* lost_words(const std::string& f) {
   return f == "equilibrium" ? "falsely unbalanced"
          : f == "motion"    ? "falsely slides, impending or depends"
          : f == "hold"      ? "falsely fails, impending or depends"
+         : f == "rotation"  ? "depends or undecided where the rotation is certain"
                             : "falsely open";
 }
 // Fields with a safety split (unsafe / lost): the verdicts, motion, hold and epsilon (across 0).
-bool has_split(const std::string& f) { return is_verdict(f) || f == "motion" || f == "hold" || f == "epsilon"; }
+bool has_split(const std::string& f) {
+  return is_verdict(f) || f == "motion" || f == "hold" || f == "epsilon" || f == "rotation";
+}
 
 Rational exact_number(const json::Value& v, const std::string& where) {
   std::string why;
@@ -207,6 +213,12 @@ Corpus read_corpus(const std::string& path, Read_file read) {
       r.has_motion = true;
       if (m->type == json::Type::string) r.motion = m->text;
     }
+    if (const json::Value* pu = v.find("push")) {
+      r.has_push = true;
+      if (pu->type == json::Type::object)
+        if (const json::Value* rot = pu->find("rotation"); rot && rot->type == json::Type::string && rot->text != "undecided")
+          r.rotation = rot->text;
+    }
     if (const json::Value* h = v.find("hold")) {
       r.has_hold = true;
       if (h->type == json::Type::boolean) r.hold = h->boolean ? "true" : "false";
@@ -269,7 +281,7 @@ std::vector<Answer> read_jsonl_answers(const std::string& path, const std::strin
       } else if (std::find(std::begin(kFields), std::end(kFields), k) == std::end(kFields)) {
         throw Input_error(where + ": " + json::quote(k) +
                           ": unknown field (known: id, force_closure, form_closure, equilibrium, hold, motion, "
-                          "center_of_friction, power, power_range, labels, epsilon, error; fields starting with _ are ignored)");
+                          "center_of_friction, power, power_range, labels, epsilon, rotation, error; fields starting with _ are ignored)");
       } else {
         a.fields.emplace_back(k, std::move(x));
       }
@@ -466,6 +478,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
       const bool applicable = field == "equilibrium"                                  ? ref.verdicts.count(field) != 0
                               : field == "motion"                                     ? ref.has_motion
                               : field == "hold"                                       ? ref.has_hold
+                              : field == "rotation"                                   ? ref.has_push
                               : field == "center_of_friction" || field == "power"     ? ref.limit_surface != nullptr
                               : field == "power_range"                                ? ref.limit_surface != nullptr
                               : field == "epsilon"                                    ? ref.has_quality
@@ -501,6 +514,27 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
         if (!ref.has_hold) throw Input_error(where + ": scene \"" + a.id + "\" has no load (no hold answer)");
         if (ref.hold.empty()) continue;  // the corpus has no certified answer (undecided or refused): nothing to compare
         outcome(ref.hold, h, "true", h == "true" ? "holds" : h == "false" ? "fails" : h);
+      } else if (field == "rotation") {
+        // Which way a pushed body turns (docs/pushing.md): unsafe where the answer claims a sense (ccw, cw or none)
+        // that is not the certain one — or any where the truth depends on the distribution —, lost where it says
+        // depends or undecided and the sense is certain.
+        if (v.type != json::Type::string || (v.text != "ccw" && v.text != "cw" && v.text != "none" &&
+                                             v.text != "depends" && v.text != "undecided"))
+          throw Input_error(where + ": " + json::text_of(v) +
+                            " is not \"ccw\", \"cw\", \"none\", \"depends\", \"undecided\" or null");
+        if (!ref.has_push) throw Input_error(where + ": scene \"" + a.id + "\" has no pusher on a support (no rotation answer)");
+        if (ref.rotation.empty()) continue;  // the corpus has no certified answer: nothing to compare with
+        count(&Field_tally::compared);
+        if (v.text == ref.rotation) {
+          count(&Field_tally::agree);
+        } else {
+          Disagreement d;
+          d.reference = ref.rotation;
+          d.answer = v.text;
+          d.unsafe = v.text != "depends" && v.text != "undecided";
+          d.kind = d.unsafe ? "a wrong rotation" : "an uncertain rotation";
+          disagree(std::move(d));
+        }
       } else if (field == "motion") {
         if (v.type != json::Type::string ||
             (v.text != "sticks" && v.text != "impending" && v.text != "slides" && v.text != "depends"))
@@ -668,6 +702,7 @@ std::string distance_text(const Disagreement& d) {
     s << "no boundary measure for " << d.field
       << (d.field == "motion" ? " (how close the load is to the limit surface is not measured)"
           : d.field == "hold"   ? " (over a support, how close the load is to holding is not measured)"
+          : d.field == "rotation" ? " (how close a voting line passes the centre of friction is not measured)"
                               : " (a value: compared within --rtol/--atol)");
   else if (f.distance)
     s << (d.field == "epsilon" ? "force closure (where epsilon becomes 0)" : d.field) << " distance " << *f.distance << " (" << f.nearest << ")";

@@ -14,6 +14,7 @@
 #include "exact/io/scene_writer.h"
 #include "exact/pipeline/answer_json.h"
 #include "exact/pipeline/hold_answer.h"
+#include "exact/pipeline/push_answer.h"
 #include "exact/pipeline/quality_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/sliding/limit_surface.h"
@@ -412,7 +413,27 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
         w.key("quality").null().member("quality_refused", quality.message);
       }
     }
+    // Which way a pushed body turns (docs/pushing.md), for a scene with a pusher on a support: the rotation for every
+    // admissible distribution, certified (the line says why when undecided or refused).
+    Push_item push;
+    if (parsed.pusher && parsed.support) {
+      push = answer_push(text, e.id, request);
+      if (push.status == Status::check_failed) {
+        b.status = push.status, b.message = push.message;
+        return;
+      }
+      if (push.status == Status::answered) {
+        w.key("push").object().member("rotation", rotation_name(push.push.rotation));
+        if (push.push.center)
+          w.key("center_of_friction").array().rational(push.push.center->x).rational(push.push.center->y).end_array();
+        if (push.push.rotation == Rotation::undecided) w.member("why", push.push.why);
+        w.end_object();
+      } else {
+        w.key("push").null().member("push_refused", push.message);
+      }
+    }
     w.key("certificates").object().key("force_closure").raw(c.force_certificate);
+    if (!push.certificate.empty()) w.key("push").raw(push.certificate);
     if (!quality.certificate.empty()) w.key("quality").raw(quality.certificate);
     w.key("form_closure").raw(c.form_certificate);
     if (eq) w.key("equilibrium").raw(eq->certificate);
@@ -432,7 +453,8 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
     }
     w.end_object().end_object();
     b.line = w.end_object().take();
-    b.certificates = (eq ? 3 : 2) + !motion.certificate.empty() + !hold.certificate.empty() + !quality.certificate.empty();
+    b.certificates = (eq ? 3 : 2) + !motion.certificate.empty() + !hold.certificate.empty() + !quality.certificate.empty() +
+                     !push.certificate.empty();
     b.csv = e.id + "," + (c.force.holds ? "true" : "false") + "," + (c.form.holds ? "true" : "false") + "," +
             (eq ? (eq->answer.balanced ? "true" : "false") : "") + "," + hold.verdict;
   });

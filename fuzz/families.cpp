@@ -25,6 +25,7 @@ const char* question_name(Question q) {
     case Question::stick_slide_over: return "stick_slide_over";
     case Question::hold: return "hold";
     case Question::stick_slide_region: return "stick_slide_region";
+    case Question::push: return "push";
   }
   return "?";
 }

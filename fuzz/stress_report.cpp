@@ -31,6 +31,7 @@
 #include "exact/certificates/certificates.h"
 #include "exact/pipeline/answer_json.h"
 #include "exact/pipeline/hold_answer.h"
+#include "exact/pipeline/push_answer.h"
 #include "exact/pipeline/support_answer.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/io/to_float.h"
@@ -49,15 +50,16 @@ const std::vector<double> kEpsilons = {1e-2,  1e-4,  1e-6,  1e-8,  1e-10, 1e-12,
 constexpr int kSides = 16;  // polygonal bounds of the exact stick/slide route (1/λ − 1 ≈ 2 %)
 
 // What a row measures: the family's verdict (closure / equilibrium), its moment labels, or stick/slide.
-enum class Measure { verdict, labels, motion, motion_over, hold };
+enum class Measure { verdict, labels, motion, motion_over, hold, push };
 const char* check_name(Measure c) {
   return c == Measure::verdict ? "verdict" : c == Measure::labels ? "labels" : c == Measure::motion ? "stick/slide"
-                                           : c == Measure::motion_over ? "stick/slide over F" : "hold";
+                                           : c == Measure::motion_over ? "stick/slide over F"
+                                           : c == Measure::hold ? "hold" : "rotation (push)";
 }
 // The questions without moment labels (a support's, or the support's and the contacts' together).
 bool is_motion(Question q) {
   return q == Question::stick_slide || q == Question::stick_slide_over || q == Question::hold ||
-         q == Question::stick_slide_region;
+         q == Question::stick_slide_region || q == Question::push;
 }
 
 struct Row {
@@ -319,6 +321,48 @@ void run_hold_case(const families::Case& k, std::uint64_t seed, long index, Row&
   if (wrong(exact, why_exact)) ++row.exact_wrong, report_wrong("hold exact", k, seed, index, why_exact);
 }
 
+// push (push_near_tie): exact through the pipeline (its certificate checked), the twin (--mode float) and hybrid
+// (the twin, exact where it abstains); naive: the velocity's vote in doubles read from the text — the centre of
+// friction and the cross product in raw double arithmetic (a guess). The truth by construction: ccw iff `above`.
+void run_push_case(const families::Case& k, std::uint64_t seed, long index, Row& row) {
+  const Scene scene = read_scene(k.text, Input_limits{});
+  const Support_model model(scene);
+  std::string why_exact;
+  Rotation exact = timed(row.t_exact, [&] {
+    const Push_item item = answer_push(k.text, "push_near_tie", Request{});
+    if (item.status != Status::answered) why_exact = item.message;
+    return item.status == Status::answered ? item.push.rotation : Rotation::undecided;
+  });
+  Rotation twin = timed(row.t_twin, [&] { return decide_push(model, *scene.pusher, Mode::float_only).rotation; });
+  Rotation hybrid = timed(row.t_hybrid, [&] { return decide_push(model, *scene.pusher, Mode::hybrid).rotation; });
+  const int naive = timed(row.t_naive, [&] {
+    double mx = 0, my = 0, d = 0;
+    const Support& s = *scene.support;
+    for (const Support_point& p : s.points) {
+      const double w = s.mu_of(p).get_d() * p.force->get_d();
+      mx += w * p.at.x.get_d(), my += w * p.at.y.get_d(), d += w;
+    }
+    const Pusher& ps = *scene.pusher;
+    const double v = (ps.contact.at.x.get_d() - mx / d) * ps.velocity.y.get_d() -
+                     (ps.contact.at.y.get_d() - my / d) * ps.velocity.x.get_d();
+    return v > 0 ? 1 : v < 0 ? -1 : 0;
+  });
+  const auto flip = [](Rotation v) { return v == Rotation::ccw ? Rotation::cw : Rotation::ccw; };
+  if (twin != Rotation::undecided && fault("twin")) twin = flip(twin);
+  if (hybrid != Rotation::undecided && fault("hybrid")) hybrid = flip(hybrid);
+  if (exact != Rotation::undecided && fault("exact")) exact = flip(exact);
+  const Rotation truth = k.above ? Rotation::ccw : Rotation::cw;
+  ++row.cases;
+  row.naive_wrong += naive != (k.above ? 1 : -1);
+  row.twin_undecided += twin == Rotation::undecided;
+  row.hybrid_undecided += hybrid == Rotation::undecided;
+  row.exact_undecided += exact == Rotation::undecided;
+  const auto wrong = [&](Rotation v) { return v != Rotation::undecided && v != truth; };
+  if (wrong(twin)) ++row.twin_wrong, report_wrong("push twin", k, seed, index, "");
+  if (wrong(hybrid)) ++row.hybrid_wrong, report_wrong("push hybrid", k, seed, index, "");
+  if (wrong(exact) || !why_exact.empty()) ++row.exact_wrong, report_wrong("push exact", k, seed, index, why_exact);
+}
+
 // stick/slide on a support with regions (region_support): each mode through the pipeline, the certificate checked
 // by the independent checker there (a rejected one, or any error, is a wrong answer); the truth is the side, by
 // construction. float has no twin of regions (always undecided); naive: the double search without bounds.
@@ -489,6 +533,7 @@ std::string table_row(const Row& r, const std::string& first) {
 const char* cross_check(const Family& f, Measure c) {
   const std::string n = f.name;
   if (c == Measure::motion) return "the answer by construction (p(q) on LS, load p(q)·(1 ± 10^-k))";
+  if (c == Measure::push) return "the rotation by construction (the velocity's vote) + the checker (exact's certificate)";
   if (c == Measure::motion_over)
     return "the answers left possible by construction + the checker (every certificate) + exact = hybrid";
   if (c == Measure::labels)
@@ -520,6 +565,7 @@ std::vector<Measure> checks_of(const Family& f) {
   if (f.question == Question::stick_slide || f.question == Question::stick_slide_region) return {Measure::motion};
   if (f.question == Question::stick_slide_over) return {Measure::motion_over};
   if (f.question == Question::hold) return {Measure::hold};
+  if (f.question == Question::push) return {Measure::push};
   return {Measure::verdict, Measure::labels};
 }
 
@@ -770,6 +816,7 @@ int main(int argc, char** argv) {
                           ? Measure::motion
                       : fam.question == Question::stick_slide_over ? Measure::motion_over
                       : fam.question == Question::hold             ? Measure::hold
+                      : fam.question == Question::push             ? Measure::push
                                                                    : Measure::verdict;
       labels.check = Measure::labels;
       for (long c = 0; c < n; ++c) {
@@ -777,6 +824,7 @@ int main(int argc, char** argv) {
         if (fam.question == Question::stick_slide) run_motion_case(k, seed, c, verdict);
         else if (fam.question == Question::stick_slide_over) run_motion_over_case(k, seed, c, verdict);
         else if (fam.question == Question::hold) run_hold_case(k, seed, c, verdict);
+        else if (fam.question == Question::push) run_push_case(k, seed, c, verdict);
         else if (fam.question == Question::stick_slide_region) run_region_case(k, seed, c, verdict);
         else run_contact_case(k, seed, c, verdict, labels);
       }

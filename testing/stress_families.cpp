@@ -907,6 +907,11 @@ const std::vector<Family>& report_only_families() {
        "exact rational normal), the push μW·(1 ± ε): holds iff below (a force through the centre of friction is in "
        "the closed limit surface iff it is at most μW)",
        Question::hold, true, true},
+      {"push_near_tie",
+       "push: 3–8 support points (3-decimal places, forces and coefficients), a pusher aimed at the centre of friction "
+       "c with its normal along p → c and μ = 1/2 (the edges vote apart), its velocity turned by ±ε off p → c: it turns "
+       "ccw iff above (the velocity decides, Mason's voting theorem)",
+       Question::push, true, true},
       {"region_support",
        "a support region (rectangle or triangle, maybe a hole, uniform or linear pressure, maybe a point); load "
        "p*·(1 ± ε) with p* the exact boundary load of a translation along a Pythagorean direction: slides iff above",
@@ -965,6 +970,38 @@ Family_scene fixture_pin(const Family& fam, double eps, Rng& r) {
   return out;
 }
 
+// Family "push_near_tie" (push, issue 33). Support points with 3-decimal places, forces and coefficients (every
+// force given): the centre of friction c exact. The pusher at a 3-decimal point p, its normal d = c − p (exact: the
+// line p → c is inside the cone) and μ = 1/2, so the edges vote apart and the velocity decides; the velocity
+// d + s·10^-k·rot90(d): (p − c) × v = −s·10^-k·|d|², so it votes ccw iff s < 0 (`above`: ccw).
+Family_scene push_near_tie(const Family& fam, double eps, Rng& r) {
+  const int k = decimal_exponent(eps);
+  Family_scene out;
+  out.family = fam.name;
+  out.epsilon = eps;
+  out.known = true;
+  out.above = r.coin();
+  const int n = r.integer(3, 8);
+  std::string points;
+  Rational mx = 0, my = 0, d = 0;
+  for (int i = 0; i < n; ++i) {
+    const Rational x = short_decimal(r, -2000, 2000, 3), y = short_decimal(r, -2000, 2000, 3);
+    const Rational f = short_decimal(r, 100, 900, 2), mu = short_decimal(r, 10, 90, 2);
+    mx += mu * f * x, my += mu * f * y, d += mu * f;
+    points += std::string(i ? ", " : "") + "{\"at\": [" + exact_text(x) + ", " + exact_text(y) + "], \"force\": " +
+              exact_text(f) + ", \"mu\": " + exact_text(mu) + "}";
+  }
+  const Rational cx = mx / d, cy = my / d;
+  const Rational px = short_decimal(r, -4000, 4000, 3), py = short_decimal(r, -4000, -2500, 3);
+  const Rational dx = cx - px, dy = cy - py;
+  const Rational e = Rational(out.above ? -1 : 1) * Rational(Integer(1), power_of_ten(k));
+  const Rational vx = dx - e * dy, vy = dy + e * dx;  // d + s ε rot90(d), rot90(d) = (−dy, dx)
+  out.text = "{\"wrenchkit\": 1, \"name\": \"push_near_tie\", \"support\": {\"points\": [" + points +
+             "]}, \"pusher\": {\"at\": [" + exact_text(px) + ", " + exact_text(py) + "], \"normal\": [" + exact_text(dx) +
+             ", " + exact_text(dy) + "], \"mu\": \"1/2\", \"velocity\": [" + exact_text(vx) + ", " + exact_text(vy) + "]}}";
+  return out;
+}
+
 std::string fixture_text(Rng& r, int contacts, int points, double load) {
   const auto d3 = [](double v) {  // 3 decimals (printf rounds correctly: the same text everywhere)
     char b[32];
@@ -1018,6 +1055,7 @@ Family_scene make_scene(const Family& family, double epsilon, Rng& rng) {
   if (name == "collinear_support") return collinear_support(family, epsilon, rng);
   if (name == "unknown_support") return unknown_support(family, epsilon, rng);
   if (name == "fixture_pin") return fixture_pin(family, epsilon, rng);
+  if (name == "push_near_tie") return push_near_tie(family, epsilon, rng);
   if (name == "region_support" || name == "region_legs") return region_support(family, epsilon, rng);
   if (name == "long_rational" || name == "rational_rotation" || name == "huge_scale" || name == "tiny_scale" ||
       name == "beyond_double" || name == "many_contacts")

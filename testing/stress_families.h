@@ -59,7 +59,7 @@ struct Gravity_spec {
 // `known` hold scene holds iff not `above`.
 // stick_slide_region: does the load stick or slide on a support with regions (continuous pressure) [RG-1]?
 enum class Question { force_closure, form_closure, equilibrium, all, stick_slide, stick_slide_over, hold,
-                      stick_slide_region };
+                      stick_slide_region, push };
 
 // stick_slide_over: the answers a scene's construction leaves possible (a bit set).
 enum Motion_answer : unsigned { answer_sticks = 1, answer_slides = 2, answer_depends = 4 };
@@ -87,7 +87,8 @@ const std::vector<Family>& families();
 // does not carry), "unknown_support" (stick/slide over every admissible distribution: random supports of
 // 4–8 points, the four-legged table and the dinner plate, loads 10^-k from the thresholds), "fixture_pin"
 // (hold: a frictionless pin pushing through the centre of friction of a symmetric support, the push
-// μW·(1 ± 10^-k): holds iff below).
+// μW·(1 ± 10^-k): holds iff below), "push_near_tie" (push: the pusher's velocity 10^-k beside the line to the
+// centre of friction, the cone's edges apart: it turns ccw iff above).
 const std::vector<Family>& report_only_families();
 const Family* find_family(std::string_view name);  // either list; nullptr when unknown
 

@@ -744,6 +744,47 @@ TEST(ReferenceScenes, OwnScenesGetTheCorpusFormatAndCompareAgrees) {
   EXPECT_NE(test::read_text((d / "dircorpus" / "reference.jsonl").string()).find("\"family\": \"clamps\""), std::string::npos);
 }
 
+// Pushing (docs/pushing.md) in the corpus and compare: docs/pushing's scenes get "push" with the rotation and its
+// certificate; a wrong sense is unsafe (also any sense where the truth depends on the distribution), depends where
+// the sense is certain is lost.
+TEST(ReferenceScenes, PushInTheCorpusAndCompared) {
+  const fs::path d = scratch() / "push";
+  fs::remove_all(d);
+  Cli_result r = run("reference --scenes '" + test::source_dir() + "/docs/pushing' --out '" + (d / "corpus").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::istringstream in(test::read_text((d / "corpus" / "reference.jsonl").string()));
+  std::map<std::string, json::Value> lines;
+  for (std::string line; std::getline(in, line);) {
+    json::Value v = json::parse(line, Input_limits{}, "push");
+    const std::string id = v.find("id")->text;
+    lines.emplace(id, std::move(v));
+  }
+  ASSERT_EQ(lines.size(), 4u);
+  const auto rotation = [&](const char* id) { return lines.at(id).find("push")->find("rotation")->text; };
+  EXPECT_EQ(rotation("square_apart"), "ccw");
+  EXPECT_EQ(rotation("square_tie"), "none");
+  EXPECT_EQ(rotation("two_coefficients"), "depends");
+  EXPECT_EQ(rotation("plate"), "ccw");
+  for (const auto& [id, v] : lines) {
+    const json::Value* cert = v.find("certificates")->find("push");
+    ASSERT_NE(cert, nullptr) << id;
+    EXPECT_TRUE(test::checker_accepts(json::text_of(*v.find("scene")), json::text_of(*cert))) << id;
+  }
+  r = run("compare --json '" + (d / "corpus").string() + "' -",
+          "{\"id\": \"square_apart\", \"rotation\": \"ccw\"}\n{\"id\": \"plate\", \"rotation\": \"cw\"}\n"
+          "{\"id\": \"square_tie\", \"rotation\": \"depends\"}\n{\"id\": \"two_coefficients\", \"rotation\": \"ccw\"}\n");
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  const json::Value rep = json::parse(r.out, Input_limits{}, "report");
+  const json::Value& f = *rep.find("fields")->find("rotation");
+  EXPECT_EQ(f.find("compared")->text, "4");
+  EXPECT_EQ(f.find("agree")->text, "1");
+  EXPECT_EQ(f.find("unsafe")->text, "2");  // plate cw (truth ccw); two_coefficients ccw (truth depends)
+  EXPECT_EQ(f.find("lost")->text, "1");    // square_tie depends (truth none)
+  r = run("compare '" + (d / "corpus").string() + "' -", "{\"id\": \"plate\", \"rotation\": \"left\"}\n");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("rotation: \"left\" is not \"ccw\""), std::string::npos) << r.err;
+}
+
 TEST(ReferenceScenes, BadScenesNameFileLineAndFieldAndWriteNothing) {
   const fs::path d = scratch() / "own_bad";
   fs::remove_all(d);
