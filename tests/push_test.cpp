@@ -313,8 +313,28 @@ bool pivot_chord(const Sim& s, int j, double fx, double fy, double m, double (&f
   return true;
 }
 
-// The body's ω under the push, or NaN when the simulation cannot tell (within its tolerances).
-double simulate(const Sim& s) {
+// The sticking candidate's ω (the twist with the pusher's velocity at p whose load passes through p) and the contact
+// mode it implies: 0 sticks, +1 slides left (its force beyond n + μ rot90 n), −1 slides right, 2 not told (a pivot,
+// or within 1e-9 of an edge).
+int sim_contact(const Sim& s, double& om) {
+  const double nn = std::hypot(s.nx, s.ny), ux = s.nx / nn, uy = s.ny / nn, tx = -uy, ty = ux;
+  const double eL[2] = {ux + s.mu * tx, uy + s.mu * ty}, eR[2] = {ux - s.mu * tx, uy - s.mu * ty};
+  double fx, fy, m;
+  int pivot;
+  om = omega_through_p(s, s.vx, s.vy, fx, fy, m, pivot);
+  if (pivot >= 0) return 2;
+  const double f = std::hypot(fx, fy), right = cross2(eR[0], eR[1], fx, fy), left = cross2(fx, fy, eL[0], eL[1]);
+  if (std::fabs(right) < 1e-9 * f || std::fabs(left) < 1e-9 * f) return 2;
+  if (right > 0 && left > 0) return 0;
+  return right < 0 ? -1 : 1;
+}
+
+// The body's ω under the push, or NaN when the simulation cannot tell (within its tolerances); *mode (if given): 0
+// sticks, +1 slides with its force on the left edge, −1 on the right edge, 2 not told.
+double simulate(const Sim& s, int* mode = nullptr) {
+  int unused;
+  int& out_mode = mode ? *mode : unused;
+  out_mode = 2;
   const double nn = std::hypot(s.nx, s.ny), ux = s.nx / nn, uy = s.ny / nn, tx = -uy, ty = ux;  // n̂, τ̂ = rot90 n̂
   const double eL[2] = {ux + s.mu * tx, uy + s.mu * ty}, eR[2] = {ux - s.mu * tx, uy - s.mu * ty};
   const auto in_cone = [&](double fx, double fy, double tol) {  // strictly inside pos{eR, eL} by tol·|f|
@@ -325,7 +345,7 @@ double simulate(const Sim& s) {
   int pivot;
   const double om = omega_through_p(s, s.vx, s.vy, fx, fy, m, pivot);
   if (pivot < 0) {
-    if (in_cone(fx, fy, 1e-9)) return om;  // sticks
+    if (in_cone(fx, fy, 1e-9)) return out_mode = 0, om;  // sticks
     if (in_cone(fx, fy, -1e-9)) return NAN;  // on an edge, within the tolerance
   } else {
     double f0[2], f1[2];
@@ -333,12 +353,13 @@ double simulate(const Sim& s) {
     // sticking at the pivot: some point of the chord inside the cone (both ends' sides tell)
     const double a0 = cross2(eR[0], eR[1], f0[0], f0[1]), a1 = cross2(eR[0], eR[1], f1[0], f1[1]);
     const double b0 = cross2(f0[0], f0[1], eL[0], eL[1]), b1 = cross2(f1[0], f1[1], eL[0], eL[1]);
-    if ((a0 > 0 && b0 > 0) || (a1 > 0 && b1 > 0)) return om;
+    if ((a0 > 0 && b0 > 0) || (a1 > 0 && b1 > 0)) return out_mode = 0, om;
     if ((a0 > 0) != (a1 > 0) && (b0 > 0) != (b1 > 0)) return NAN;  // (the chord may cross the cone: not decided here)
   }
   // slides, on one edge: the body slips along +τ̂ (edge R) or −τ̂ (edge L) relative to the pusher. Try both edges,
   // every root of the force's side of the edge over a grid of slip speeds; keep the admissible solutions.
   std::vector<double> found;
+  std::vector<int> edges;  // −1 right, +1 left, per solution found
   for (int which = 0; which < 2; ++which) {
     const double* e = which == 0 ? eR : eL;
     const double sigma = which == 0 ? 1 : -1;
@@ -368,7 +389,7 @@ double simulate(const Sim& s) {
         }
         const double fn = std::hypot(alo.fx, alo.fy);
         if (std::fabs(alo.side) < 1e-7 * fn && std::fabs(ahi.side) < 1e-7 * fn && alo.pivot < 0 && ahi.pivot < 0) {
-          if (alo.fx * e[0] + alo.fy * e[1] > 0) found.push_back(alo.om);  // along +e, not -e
+          if (alo.fx * e[0] + alo.fy * e[1] > 0) found.push_back(alo.om), edges.push_back(which == 0 ? -1 : 1);
         } else {
           // a jump: a pivot; admissible when some force of its chord lies along +e
           const At& pv = alo.pivot >= 0 ? alo : ahi;
@@ -377,7 +398,7 @@ double simulate(const Sim& s) {
             const double c0 = cross2(e[0], e[1], f0[0], f0[1]), c1 = cross2(e[0], e[1], f1[0], f1[1]);
             if ((c0 > 0) != (c1 > 0)) {
               const double t = c0 / (c0 - c1), gx = f0[0] + t * (f1[0] - f0[0]), gy = f0[1] + t * (f1[1] - f0[1]);
-              if (gx * e[0] + gy * e[1] > 0) found.push_back(pv.om);
+              if (gx * e[0] + gy * e[1] > 0) found.push_back(pv.om), edges.push_back(which == 0 ? -1 : 1);
             }
           } else if (pv.pivot < 0) {
             return NAN;  // a jump the simulation cannot explain
@@ -390,6 +411,9 @@ double simulate(const Sim& s) {
   if (found.empty()) return NAN;
   for (double o : found)
     if ((o > 0) != (found[0] > 0)) return NAN;  // (two solutions turning apart: not expected; the test counts it)
+  bool one_edge = true;
+  for (int e : edges) one_edge &= e == edges[0];
+  if (one_edge) out_mode = edges[0];
   return found[0];
 }
 
@@ -399,7 +423,7 @@ TEST(PushOracle, VotingTheoremAgainstAQuasiStaticSimulation) {
   const int per_scene = 20;
   std::mt19937_64 rng(20261129);
   std::uniform_int_distribution<int> coord(-10, 10), force(1, 10), tenth(1, 10), small(-5, 5), count(2, 7);
-  int decided = 0, cases = 0, certified = 0, twin_certain = 0;
+  int decided = 0, cases = 0, certified = 0, twin_certain = 0, modes_decided = 0, sticking_checked = 0;
   for (int sc = 0; sc < scenes; ++sc) {
     const std::uint64_t seed = rng();
     std::mt19937_64 r(seed);
@@ -440,7 +464,26 @@ TEST(PushOracle, VotingTheoremAgainstAQuasiStaticSimulation) {
         ASSERT_EQ(twin.rotation, a.rotation) << "seed " << seed << ": the twin says " << rotation_name(twin.rotation)
                                              << ", the exact rule " << rotation_name(a.rotation) << "\n" << text;
       }
-      const double om = simulate(s);
+      int sim_mode = 2;  // the mode of the solution the simulation found (sticking, or sliding on one edge)
+      const double om = simulate(s, &sim_mode);
+      // the contact mode (PU-2) against the simulation: the same mode, and ω* in the sticking bracket
+      {
+        const Push_contact pc = push_contact_mode(model, *scene.pusher, Rational(1, 1000000));
+        double om_s = 0;
+        sim_contact(s, om_s);  // the sticking candidate's ω
+        if (pc.mode != Push_mode::undecided) ++modes_decided;
+        if (pc.mode != Push_mode::undecided && sim_mode != 2) {
+          const int mode = pc.mode == Push_mode::sticks ? 0 : pc.mode == Push_mode::slides_left ? 1 : pc.mode == Push_mode::slides_right ? -1 : 3;
+          ASSERT_EQ(mode, sim_mode) << "seed " << seed << " distribution " << d << ": the engine says "
+                                    << push_mode_name(pc.mode) << "\nscene: " << text;
+          if (pc.mode == Push_mode::sticks) {
+            ++sticking_checked;
+            const double lo = pc.omega_lo.get_d(), hi = pc.omega_hi.get_d(), slack = 1e-9 * (1 + std::fabs(om_s));
+            ASSERT_TRUE(lo - slack <= om_s && om_s <= hi + slack)
+                << "seed " << seed << ": omega* " << om_s << " outside [" << lo << ", " << hi << "]\nscene: " << text;
+          }
+        }
+      }
       // the oracle abstains near a tie of its own doubles (the exact tests cover ties)
       double dsum = 0;
       for (double w : s.w) dsum += w;
@@ -463,8 +506,9 @@ TEST(PushOracle, VotingTheoremAgainstAQuasiStaticSimulation) {
   EXPECT_GE(decided, cases * 9 / 10) << decided << " of " << cases << " decided by the simulation";
   EXPECT_GE(twin_certain, cases * 9 / 10) << "the twin decided " << twin_certain << " of " << cases;
   std::printf("[ push oracle ] %d scenes x %d distributions: %d cases, %d decided by the simulation, all agree; %d "
-              "certificates checked; the float twin certain on %d, all equal to the exact rule\n", scenes, per_scene,
-              cases, decided, certified, twin_certain);
+              "certificates checked; the float twin certain on %d, all equal to the exact rule; contact mode decided on "
+              "%d (as simulated), omega* bracketed on %d sticking\n", scenes, per_scene,
+              cases, decided, certified, twin_certain, modes_decided, sticking_checked);
   EXPECT_GT(certified, scenes / 2);
 }
 
