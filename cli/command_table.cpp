@@ -179,6 +179,10 @@ const Option kTwist{"twist", "vx,vy,w", "the motion (exact numbers: 1, -1/2, 0.2
                     }};
 const Option kSides{"sides", "N", "polygon sides, even, 4..4096 (default 32)",
                     [](Options& o, S n, S v) { o.sides = sides_value(n, v, kMaxSides); }};
+const Option kPushContact{"contact", nullptr,
+                          "also the contact mode: sticks, slides left or right (a support of points with every force "
+                          "given), and the sticking motion's rotation rate, certified",
+                          [](Options& o, S, S) { o.push.contact = true; }};
 const Option kTolerance{"tolerance", "EPS",
                         "the limit surface's certified relative error 1/lambda - 1 <= EPS (EPS > 0, exact: 0.01, "
                         "1/100, 1e-3)",
@@ -637,6 +641,8 @@ std::vector<Command> make_table() {
               with_help(kMode, "exact or hybrid (the default): the votes in rationals, with the certificate; float: the "
                                "float twin's certified signs (a support of points with every force given), no "
                                "certificate, exit 3 when a sign is within its error bound"),
+              kPushContact,
+              with_help(kTolerance, "with --contact: the sticking rotation rate's relative bracket width (default 1e-12)"),
               with_help(kCertificate, "write the certificate to FILE (checked first)")},
              kLimits}),
        {kScene},

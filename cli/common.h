@@ -70,6 +70,8 @@ struct Options {
   Quality_query quality;
   // grasp-regions: --mu, --edges i,j,…, --fingers (2).
   Grasp_regions_query regions;
+  // push: --contact (its --tolerance is the field above).
+  Push_query push;
   // reference: --out DIR, --seed, --cases, --random, --sides (4..64).
   std::string out_dir;
   Reference_options reference;

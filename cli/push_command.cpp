@@ -5,6 +5,7 @@
 
 #include "cli/common.h"
 #include "exact/certificates/certificates.h"
+#include "exact/numbers/decimal.h"
 
 namespace wrenchkit::cli {
 
@@ -54,6 +55,17 @@ void write_push(Json_writer& w, const Push_item& r) {
   w.member("rotation", rotation_name(a.rotation)).member("why", a.why);
   if (a.rotation == Rotation::depends)
     w.key("witnesses").object().key("ccw").rationals(a.turns_ccw).key("cw").rationals(a.turns_cw).end_object();
+  if (a.contact) {
+    const Push_contact& c = *a.contact;
+    w.key("contact").object().member("mode", push_mode_name(c.mode));
+    if (c.mode == Push_mode::sticks || c.mode == Push_mode::impending) {
+      // the body moves with the pusher: its twist (vx + ω py, vy − ω px, ω) for ω in the bracket
+      w.key("omega").array().rational(c.omega_lo).rational(c.omega_hi).end_array();
+      write_approx(w, "omega", {c.omega_lo, c.omega_hi});
+    }
+    if (c.mode == Push_mode::undecided) w.member("why", c.why);
+    w.end_object();
+  }
   if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
 }
 
@@ -81,23 +93,56 @@ std::string push_human(const Push_item& r, const std::string& source) {
   if (a.rotation == Rotation::depends)
     s << "  turns ccw under the forces " << vec_text(a.turns_ccw) << "\n  turns cw under the forces "
       << vec_text(a.turns_cw) << "\n";
+  if (a.contact) {
+    const Push_contact& c = *a.contact;
+    s << "contact: " << push_mode_name(c.mode);
+    if (c.mode == Push_mode::sticks || c.mode == Push_mode::impending) {
+      s << (c.mode == Push_mode::sticks ? " — the body moves with the pusher" : " — the force on a cone edge exactly");
+      if (c.omega_lo == c.omega_hi) {
+        s << ", translating along the pusher's velocity (no rotation)\n";
+      } else {
+        s << ", turning at a rate in [" << decimal_text(c.omega_lo, 10) << ", " << decimal_text(c.omega_hi, 10)
+          << "] for the pusher's velocity " << vec_text(a.velocity);
+        if (sgn(c.omega_lo) == sgn(c.omega_hi)) {  // about a centre p + rot90(v)/ω, on a segment
+          const auto centre = [&](const Rational& w) {
+            return "(" + decimal_text(a.at.x - a.velocity.y / w, 6) + ", " + decimal_text(a.at.y + a.velocity.x / w, 6) + ")";
+          };
+          s << ", about a centre between " << centre(c.omega_lo) << " and " << centre(c.omega_hi);
+        }
+        s << "\n";
+      }
+    } else if (c.mode == Push_mode::undecided) {
+      s << " — " << c.why << "\n";
+    } else {
+      s << " — the contact slides, the pusher's force on the friction cone's " << (c.mode == Push_mode::slides_left ? "left" : "right")
+        << " edge\n";
+    }
+  }
   if (!r.certificate.empty()) s << "certificate accepted by the independent checker (exact arithmetic)\n";
   return s.str();
 }
 
 }  // namespace
 
+Push_query push_query(const Options& o) {
+  Push_query q = o.push;
+  if (o.tolerance) q.tolerance = *o.tolerance;
+  return q;
+}
+
 Scene_answer prepare_push_json(const Options& o) {
-  return [request = request_of(o)](Json_writer& w, const std::string& text, const std::string& source) {
-    write_push(w, answered(answer_push(text, source, request)));
+  return [request = request_of(o), query = push_query(o)](Json_writer& w, const std::string& text,
+                                                          const std::string& source) {
+    write_push(w, answered(answer_push(text, source, request, query)));
   };
 }
 
 int run_push(const Options& o, const std::string& scene_text, const std::string& source) {
-  const Push_item r = answered(answer_push(scene_text, source, request_of(o)));
+  const Push_item r = answered(answer_push(scene_text, source, request_of(o), push_query(o)));
   if (!o.certificate_file.empty() && !r.certificate.empty()) write_file(o.certificate_file, r.certificate + "\n");
-  return write_answer(o, [&](Json_writer& w) { write_push(w, r); }, [&] { return push_human(r, source); },
-                      r.push.rotation == Rotation::undecided);
+  const bool undecided = r.push.rotation == Rotation::undecided ||
+                         (r.push.contact && r.push.contact->mode == Push_mode::undecided);
+  return write_answer(o, [&](Json_writer& w) { write_push(w, r); }, [&] { return push_human(r, source); }, undecided);
 }
 
 }  // namespace wrenchkit::cli

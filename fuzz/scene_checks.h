@@ -407,7 +407,11 @@ inline bool check_scene_text(std::string_view text) {
                   << wrenchkit::rotation_name(e.rotation) << "\n" << printed;
         std::abort();
       }
-      if (e.rotation != wrenchkit::Rotation::undecided) push_certificate = wrenchkit::push_certificate(e);
+      if (e.rotation != wrenchkit::Rotation::undecided) {
+        wrenchkit::Push_answer with_contact = e;  // [PU-2] the contact mode's claim goes to the checker too
+        with_contact.contact = wrenchkit::push_contact_mode(model, *scene.pusher, wrenchkit::Rational(1, 1000000));
+        push_certificate = wrenchkit::push_certificate(with_contact);
+      }
     } catch (const wrenchkit::Input_error&) {  // no friction under the body: refused, as the command refuses it
     }
   }

@@ -248,6 +248,59 @@ TEST(PushCertificate, TamperedOnesAreRefused) {
   EXPECT_NE(v.message.find("turns.ccw"), std::string::npos) << v.message;
 }
 
+// [PU-2] The contact mode through the pipeline, certified: the square pushed with μ = 1 along (1, 1) sticks (the
+// body moves with the pusher, turning ccw at about 0.536 — the simulation's sticking rate is inside the bracket); with
+// μ = 1/2 along (−1, 1) it slides on the left edge (the force the sticking motion needs is beyond it); a region is not
+// answered yet (undecided, exit 3); tampered contact claims are refused.
+TEST(PushContact, GoldenModesAndTamperedClaims) {
+  Push_query q;
+  q.contact = true;
+  const std::string stick = square(R"({"at": ["1/2", -1], "normal": [0, 1], "mu": 1, "velocity": [1, 1]})");
+  const Push_item a = answer_push(stick, "test", Request{}, q);
+  ASSERT_EQ(a.status, Status::answered) << a.message;
+  ASSERT_TRUE(a.push.contact);
+  EXPECT_EQ(a.push.contact->mode, Push_mode::sticks);
+  EXPECT_LT(a.push.contact->omega_lo, a.push.contact->omega_hi);
+  EXPECT_GT(a.push.contact->omega_lo, Rational(536, 1000));
+  EXPECT_LT(a.push.contact->omega_hi, Rational(537, 1000));
+  EXPECT_LE(a.push.contact->omega_hi - a.push.contact->omega_lo, Rational(1, 1000000000));
+  const Push_item b = answer_push(square(R"({"at": ["1/2", -1], "normal": [0, 1], "mu": "1/2", "velocity": [-1, 1]})"),
+                                  "test", Request{}, q);
+  ASSERT_EQ(b.status, Status::answered) << b.message;
+  EXPECT_EQ(b.push.contact->mode, Push_mode::slides_left);
+  // through c exactly: a translation along (−1/2, 1), which is the left edge: on the edge (impending)
+  const Push_item e = answer_push(square(R"({"at": ["1/2", -1], "normal": [0, 1], "mu": "1/2", "velocity": [-1, 2]})"),
+                                  "test", Request{}, q);
+  ASSERT_EQ(e.status, Status::answered) << e.message;
+  EXPECT_EQ(e.push.contact->mode, Push_mode::impending);
+  EXPECT_EQ(e.push.contact->omega_lo, 0);
+  const std::string region =
+      R"({"mu": "1/2", "regions": [{"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 4}]})";
+  const Push_item g = answer_push(square(R"({"at": [0, -1], "normal": [0, 1], "velocity": [1, 1]})", region), "test",
+                                  Request{}, q);
+  EXPECT_EQ(g.push.contact->mode, Push_mode::undecided);
+  // the checker: each certificate accepted; a changed mode, a bracket end moved across the root, too few bits refused
+  const auto refused = [](const std::string& scene, std::string cert, const std::string& from, const std::string& to,
+                          const std::string& reason) {
+    const std::size_t at = cert.find(from);
+    ASSERT_NE(at, std::string::npos) << from << " in " << cert;
+    cert.replace(at, from.size(), to);
+    const wrenchkit_checker::Result v = wrenchkit_checker::check(scene, cert);
+    EXPECT_EQ(v.outcome, wrenchkit_checker::Outcome::rejected) << cert;
+    EXPECT_NE(v.message.find(reason), std::string::npos) << v.message;
+  };
+  EXPECT_EQ(wrenchkit_checker::check(stick, a.certificate).outcome, wrenchkit_checker::Outcome::accepted);
+  refused(stick, a.certificate, R"("mode": "sticks")", R"("mode": "slides left")", "needs \"tangent_omega\"");
+  const Rational near_hi = a.push.contact->omega_hi - (a.push.contact->omega_hi - a.push.contact->omega_lo) / 10;
+  refused(stick, a.certificate, "\"omega\": [\"" + to_string(a.push.contact->omega_lo) + "\"",
+          "\"omega\": [\"" + to_string(near_hi) + "\"", "not certainly negative");
+  refused(stick, a.certificate, R"("bits": 64)", R"("bits": 3)", "expected bits from 16 to 4096");
+  const std::string slide = square(R"({"at": ["1/2", -1], "normal": [0, 1], "mu": "1/2", "velocity": [-1, 1]})");
+  EXPECT_EQ(wrenchkit_checker::check(slide, b.certificate).outcome, wrenchkit_checker::Outcome::accepted);
+  refused(slide, b.certificate, R"("mode": "slides left")", R"("mode": "slides right")", "not certainly beyond");
+  refused(slide, b.certificate, R"("mode": "slides left")", R"("mode": "sticks")", "not certainly inside");
+}
+
 // ---- the oracle: a quasi-static push in doubles (proofs/notes/PU-1 §7) ----
 
 struct Sim {
@@ -496,8 +549,10 @@ TEST(PushOracle, VotingTheoremAgainstAQuasiStaticSimulation) {
       ASSERT_EQ(a.rotation, want) << "seed " << seed << " distribution " << d << ": the simulation turns the body "
                                   << (om > 0 ? "ccw" : "cw") << " (omega " << om << "), the rule says "
                                   << rotation_name(a.rotation) << " (" << a.why << ")\nscene: " << text;
-      if (d == 0) {  // the pipeline's certificate, checked, on one distribution per scene
-        const Push_item item = push(text);
+      if (d == 0) {  // the pipeline's certificate, checked (the contact mode's too), on one distribution per scene
+        Push_query with_contact;
+        with_contact.contact = true;
+        const Push_item item = answer_push(text, "test", Request{}, with_contact);
         ASSERT_EQ(item.status, Status::answered) << item.message << "\n" << text;
         ++certified;
       }

@@ -33,6 +33,13 @@ std::string push_certificate(const Push_answer& a) {
     w.end_array();
   }
   if (a.center) w.key("center").array().rational(a.center->x).rational(a.center->y).end_array();
+  if (a.contact && a.contact->mode != Push_mode::undecided) {  // §8.2: the contact mode
+    const Push_contact& c = *a.contact;
+    w.key("contact").object().member("mode", push_mode_name(c.mode)).member("bits", c.bits);
+    w.key("omega").array().rational(c.omega_lo).rational(c.omega_hi).end_array();
+    if (c.has_tangent) w.key("tangent_omega").array().rational(c.tangent_lo).rational(c.tangent_hi).end_array();
+    w.end_object();
+  }
   return w.end_object().take();
 }
 

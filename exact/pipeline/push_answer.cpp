@@ -5,7 +5,7 @@
 
 namespace wrenchkit {
 
-Push_item answer_push(std::string_view text, std::string_view source, const Request& request) {
+Push_item answer_push(std::string_view text, std::string_view source, const Request& request, const Push_query& query) {
   return answer_into_item<Push_item>(text, source, request.limits, [&](Push_item& r) {
     r.mode = request.mode;
     if (!r.scene.pusher)
@@ -19,6 +19,7 @@ Push_item answer_push(std::string_view text, std::string_view source, const Requ
     // needs the exact values; hybrid without one: the twin first
     const Mode mode = request.mode == Mode::float_only ? Mode::float_only : request.certify ? Mode::exact : request.mode;
     r.push = decide_push(model, *r.scene.pusher, mode);
+    if (query.contact) r.push.contact = push_contact_mode(model, *r.scene.pusher, query.tolerance);
     if (!request.certify || r.push.by_twin || r.push.rotation == Rotation::undecided) return;
     r.certificate = push_certificate(r.push);
     std::string why = check_certificates(text, {r.certificate}, request);

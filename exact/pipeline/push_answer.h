@@ -11,6 +11,13 @@
 
 namespace wrenchkit {
 
+// What to answer besides the rotation: the contact mode (sticks, slides left or right) and the sticking motion's
+// rotation rate, bracketed to `tolerance` (relative).
+struct Push_query {
+  bool contact = false;
+  Rational tolerance = Rational(1, 1000000000000);
+};
+
 struct Push_item {
   Status status = Status::answered;
   std::string message;
@@ -22,6 +29,7 @@ struct Push_item {
 
 // Reads `text` and answers; never throws. Input_error (exit 2) without "pusher" or "support", or when nothing under
 // the body has friction.
-Push_item answer_push(std::string_view text, std::string_view source, const Request& request);
+Push_item answer_push(std::string_view text, std::string_view source, const Request& request,
+                      const Push_query& query = {});
 
 }  // namespace wrenchkit

@@ -86,11 +86,6 @@ int g_sign(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& u, cons
 
 }  // namespace
 
-bool push_load_interval(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& u, const Vec2& l,
-                        const Rational& lo, const Rational& hi, int bits, Rational& out_lo, Rational& out_hi) {
-  return interval_sum(pts, p, u, l, false, lo, hi, bits, out_lo, out_hi);
-}
-
 namespace {
 
 // The sticking candidate of a velocity u at p: ω* (the root of g, nondecreasing) in [lo, hi], certified; exact when
@@ -230,6 +225,10 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
     if (!moved && r.mode == Push_mode::undecided) break;
   }
   r.omega_lo = stick.lo(), r.omega_hi = stick.hi(), r.bits = stick.bits();
+  if (plus && (r.mode == Push_mode::slides_left || r.mode == Push_mode::slides_right)) {
+    r.has_tangent = true, r.tangent_lo = plus->lo(), r.tangent_hi = plus->hi();
+    r.bits = std::max(r.bits, plus->bits());
+  }
   if (r.mode == Push_mode::undecided && r.why.empty())
     r.why = "the sticking motion's force is within the resolution of a friction-cone edge (the boundary of sticking)";
   return r;

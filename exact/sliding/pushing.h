@@ -58,6 +58,32 @@ struct Push_vote {
   std::optional<int> sign() const;
 };
 
+// [PU-2] The contact mode for a support of points with every force given (proofs/notes/PU-2-contact-mode.md): the
+// sticking candidate — the twist whose velocity at p is the pusher's, v_p + ω·rot90(r − p) at r, and whose frictional
+// load passes through p — has ω* the root of g(ω) = Σ ρ_i ((r_i − p) × v_i(ω)) / |v_i(ω)| (ρ_i = μ_i f_i), which is
+// nondecreasing (the derivative of the convex power along the rotation about p). ω* is bracketed by exact signs of g
+// at rationals (square roots bracketed by rationals, `bits` of them), and the bracket narrowed until the load's
+// force F(ω*) is certified strictly inside the pusher's friction cone (sticks) or strictly beyond one edge (the
+// sticking motion would need more friction than the contact has: it slides, its force on the edge F passed within
+// the half-plane of forces whose normals push — "slides left" on n + μ·rot90 n, "slides right" on n − μ·rot90 n).
+// ω* = 0 exactly when v_p passes through the centre of friction (a translation, F along v_p: exact). Undecided: a
+// pivot (the root at a rotation about a support point, a facet of the limit surface), F within the resolution of a
+// cone edge after narrowing, regions, forces not given. `push --contact` (certificate §8.2).
+// impending: F exactly on a cone edge (only when exact: ω* = 0, a translation along v_p on the cone's edge).
+enum class Push_mode { sticks, impending, slides_left, slides_right, undecided };
+const char* push_mode_name(Push_mode m);  // "sticks", "impending", "slides left", "slides right", "undecided"
+
+struct Push_contact {
+  Push_mode mode = Push_mode::undecided;
+  Rational omega_lo, omega_hi;  // the sticking candidate's rotation rate: g(lo) < 0 < g(hi), or lo = hi = ω* exactly
+  // slides: the candidate of the tangent velocity t = rot90 n (its force F(t) bounds the pushing half-plane)
+  bool has_tangent = false;
+  Rational tangent_lo, tangent_hi;
+  int bits = 64;                // the square roots' precision every sign was certified at
+  std::string why;              // undecided: the reason
+};
+Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance);
+
 struct Push_answer {
   Vec2 at, normal, velocity;
   Rational mu;
@@ -72,6 +98,7 @@ struct Push_answer {
   // "none": whether a distribution of F may put all its friction on one line through c (then not "none" but undecided)
   bool line_friction_possible = false;
   bool by_twin = false;  // decided by the float twin's certified signs (no exact values: no certificate from it)
+  std::optional<Push_contact> contact;  // the contact mode, when asked (PU-2)
   bool votes_known = true;  // false: the float twin could not decide, `votes` is empty
 };
 
@@ -83,33 +110,7 @@ struct Push_answer {
 // tell. An answer of the twin has `by_twin` set and its votes' ranges hold only their signs (−1, 0, 1).
 Push_answer decide_push(const Support_model& model, const Pusher& pusher, Mode mode = Mode::exact);
 
-// [PU-2] The contact mode for a support of points with every force given (proofs/notes/PU-2-contact-mode.md): the
-// sticking candidate — the twist whose velocity at p is the pusher's, v_p + ω·rot90(r − p) at r, and whose frictional
-// load passes through p — has ω* the root of g(ω) = Σ ρ_i ((r_i − p) × v_i(ω)) / |v_i(ω)| (ρ_i = μ_i f_i), which is
-// nondecreasing (the derivative of the convex power along the rotation about p). ω* is bracketed by exact signs of g
-// at rationals (square roots bracketed by rationals, `bits` of them), and the bracket narrowed until the load's
-// force F(ω*) is certified strictly inside the pusher's friction cone (sticks) or strictly beyond one edge (the
-// sticking motion would need more friction than the contact has: it slides, its force on the edge F passed within
-// the half-plane of forces whose normals push — "slides left" on n + μ·rot90 n, "slides right" on n − μ·rot90 n).
-// ω* = 0 exactly when v_p passes through the centre of friction (a translation, F along v_p: exact). Undecided: a
-// pivot (the root at a rotation about a support point, a facet of the limit surface), F within the resolution of a
-// cone edge after narrowing, regions, forces not given. Not yet a command's answer (its certificate comes next).
-// impending: F exactly on a cone edge (only when exact: ω* = 0, a translation along v_p on the cone's edge).
-enum class Push_mode { sticks, impending, slides_left, slides_right, undecided };
-const char* push_mode_name(Push_mode m);  // "sticks", "impending", "slides left", "slides right", "undecided"
 
-struct Push_contact {
-  Push_mode mode = Push_mode::undecided;
-  Rational omega_lo, omega_hi;  // the sticking candidate's rotation rate: g(lo) < 0 < g(hi), or lo = hi = ω* exactly
-  int bits = 64;                // the square roots' precision the bracket's signs were certified at
-  std::string why;              // undecided: the reason
-};
-Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance);
-
-// The certified interval of Σ ρ_i (ℓ · v_i(ω)) / |v_i(ω)| over ω ∈ [lo, hi] (lo ≤ hi), v_i(ω) = u + ω·rot90(r_i − p)
-// (one source for the engine's narrowing; the checker has its own): false when some v_i may vanish on it.
-bool push_load_interval(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& u, const Vec2& l,
-                        const Rational& lo, const Rational& hi, int bits, Rational& out_lo, Rational& out_hi);
 
 // The voting rule (core/voting_rule.h) on one distribution's three votes (left edge, right edge, velocity; +1, −1,
 // 0), for a support whose friction does not lie on one line through c: ccw, cw or none.

@@ -256,7 +256,8 @@ Certificate read_certificate(Reader& r) {
       c.push = p == "push";
     } else if (key == "fingers" || key == "mu" || key == "edges" || key == "pairs") {
       read_region_member(r, key, c);
-    } else if (key == "rotation" || key == "friction" || key == "votes" || key == "center" || key == "turns") {
+    } else if (key == "rotation" || key == "friction" || key == "votes" || key == "center" || key == "turns" ||
+               key == "contact") {
       read_push_member(r, key, c);
     } else if (key == "holds") {
       if (r.peek() == Kind::string) {  // property "hold" only (checked once the property is known)
@@ -400,7 +401,7 @@ void check_keys(const Certificate& c) {
       throw Failure{"key \"independent\" is not allowed when \"property\" is \"equilibrium\""};
   };
   need("wrenchkit_certificate"), need("property");
-  static const char* const push_keys[] = {"rotation", "friction", "votes", "center", "turns"};
+  static const char* const push_keys[] = {"rotation", "friction", "votes", "center", "turns", "contact"};
   if ((c.version == 6) != c.push)
     throw Failure{c.push ? "wrenchkit_certificate: property \"push\" is format 6 (expected the integer 6)"
                          : "wrenchkit_certificate: format 6 is property \"push\" only"};

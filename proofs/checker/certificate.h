@@ -80,7 +80,8 @@ class Key_set {
                                              "normal", "of", "critical_mu", "below", "above", "constant",
                                              "constant_beyond", "limit_twist", "scaling", "torque_radius_squared",
                                              "torque_scale_error", "fingers", "mu", "edges", "pairs",
-                                             "rotation", "friction", "votes", "center", "turns"};
+                                             "rotation", "friction", "votes", "center", "turns",
+                                             "contact"};
     for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
       if (known[i] == key) return i;
     return -1;
@@ -172,6 +173,12 @@ struct Push_part {
   Q center[2];
   bool has_turns = false;
   std::vector<Q> turns_ccw, turns_cw;
+  // "contact" (§8.2): the contact mode, the sticking candidate's ω bracket and, sliding, the tangent's
+  bool has_contact = false;
+  std::string_view mode;
+  std::size_t bits = 0;
+  Q omega[2], tangent[2];
+  bool has_tangent = false;
 };
 
 struct Certificate {

@@ -14,6 +14,8 @@
 #include "proofs/checker/generators.h"
 #include "proofs/checker/support_witnesses.h"
 
+#include <algorithm>
+
 namespace wrenchkit_checker::detail {
 
 namespace {
@@ -59,6 +61,136 @@ int rule(int left, int right, int v) {
 }
 const char* word(int o) { return o == 1 ? "ccw" : o == -1 ? "cw" : "none"; }
 
+// ---- §8.2 the contact mode (proofs/notes/PU-2-contact-mode.md) ----
+
+// lo <= sqrt(s) <= hi for a rational s >= 0: the integer root of s's numerator times its denominator scaled by 4^B,
+// B = bits + the denominator's bit length (the engine's precision for the same bits; a finer one only tightens).
+void sqrt_bounds(const Q& s, std::size_t bits, Q& lo, Q& hi) {
+  if (sgn(s) == 0) return void(lo = 0), void(hi = 0);
+  const Z& p = s.get_num();
+  const Z& q = s.get_den();
+  const unsigned long B = bits + mpz_sizeinbase(q.get_mpz_t(), 2);
+  Z x = p * q, root;
+  mpz_mul_2exp(x.get_mpz_t(), x.get_mpz_t(), 2 * B);
+  mpz_sqrt(root.get_mpz_t(), x.get_mpz_t());
+  Z den = q;
+  mpz_mul_2exp(den.get_mpz_t(), den.get_mpz_t(), B);
+  lo = Q(root, den), hi = Q(root + (root * root == x ? 0 : 1), den);
+  lo.canonicalize(), hi.canonicalize();
+}
+
+struct Rho {
+  Q x, y, rho;  // a support point and mu f
+};
+
+// The interval of sum rho_i (l_i . v_i(w)) / |v_i(w)| over w in [a, b], v_i(w) = u + w rot90(r_i - p), l_i = l, or
+// rot90(r_i - p) for the moment about p. False when a speed may vanish on the interval.
+bool interval(const std::vector<Rho>& pts, const Q (&p)[2], const Q (&u)[2], const Q (&l)[2], bool moment, const Q& a,
+              const Q& b, std::size_t bits, Q& lo, Q& hi) {
+  lo = 0, hi = 0;
+  for (const Rho& q : pts) {
+    if (sgn(q.rho) == 0) continue;
+    const Q dx = q.x - p[0], dy = q.y - p[1], wx = -dy, wy = dx;
+    const Q lx = moment ? wx : l[0], ly = moment ? wy : l[1];
+    const Q c0 = lx * u[0] + ly * u[1], c1 = lx * wx + ly * wy;
+    Q n0 = c0 + a * c1, n1 = c0 + b * c1;
+    if (n0 > n1) std::swap(n0, n1);
+    const Q uu = u[0] * u[0] + u[1] * u[1], uw = u[0] * wx + u[1] * wy, dd = dx * dx + dy * dy;
+    const auto quad = [&](const Q& w) { return Q(uu + 2 * w * uw + w * w * dd); };
+    Q qmin = std::min(quad(a), quad(b)), qmax = std::max(quad(a), quad(b));
+    if (sgn(dd) != 0) {
+      const Q v = -uw / dd;
+      if (a <= v && v <= b) qmin = std::min(qmin, quad(v));
+    }
+    if (sgn(qmin) <= 0) return false;
+    Q s0, s1, t0, t1;
+    sqrt_bounds(qmin, bits, s0, s1);
+    const Q slo = s0;
+    sqrt_bounds(qmax, bits, s0, s1);
+    const Q shi = s1;
+    if (sgn(slo) <= 0) return false;
+    if (sgn(n0) >= 0) t0 = n0 / shi, t1 = n1 / slo;
+    else if (sgn(n1) <= 0) t0 = n0 / slo, t1 = n1 / shi;
+    else t0 = n0 / slo, t1 = n1 / slo;
+    lo += q.rho * t0, hi += q.rho * t1;
+  }
+  return true;
+}
+
+// A candidate's bracket [w0, w1] of the root of g (the moment about p of the load of u + w rotation about p),
+// nondecreasing: g(w0) < 0 < g(w1) certified; or w0 = w1 = 0 with g(0) = 0 exactly ((c - p) x u = 0).
+void bracket(const std::vector<Rho>& pts, const Q (&p)[2], const Q (&u)[2], const Q (&w)[2], std::size_t bits,
+             const std::string& path) {
+  const Q none[2] = {Q(0), Q(0)};
+  if (w[0] == w[1]) {
+    Q g0 = 0;
+    for (const Rho& q : pts) g0 += q.rho * ((q.x - p[0]) * u[1] - (q.y - p[1]) * u[0]);
+    if (sgn(w[0]) != 0 || sgn(g0) != 0)
+      throw Failure{path + ": a one-point bracket is only the translation through the centre of friction (omega 0 "
+                           "with the velocity through c)"};
+    return;
+  }
+  if (w[0] > w[1]) throw Failure{path + ": not an interval [lower, upper]"};
+  for (int k = 0; k < 2; ++k) {
+    Q lo, hi;
+    if (!interval(pts, p, u, none, true, w[k], w[k], bits, lo, hi))
+      throw Failure{path + ": a support point is at rest at omega " + show(w[k]) + " (a pivot: not a bracket end)"};
+    if (k == 0 ? !(hi < 0) : !(lo > 0))
+      throw Failure{path + ": the moment about the pusher at omega " + show(w[k]) + " is not certainly " +
+                    (k == 0 ? "negative" : "positive") + " (bits " + std::to_string(bits) + ")"};
+  }
+}
+
+// The sign of l . F over a candidate's bracket: +1, -1, or 0 when not certain (exact: F along u).
+int force_sign(const std::vector<Rho>& pts, const Q (&p)[2], const Q (&u)[2], const Q (&w)[2], const Q (&l)[2],
+               std::size_t bits) {
+  if (w[0] == w[1]) {
+    const Q v = l[0] * u[0] + l[1] * u[1];
+    return sgn(v) > 0 ? 1 : sgn(v) < 0 ? -1 : 3;
+  }
+  Q lo, hi;
+  if (!interval(pts, p, u, l, false, w[0], w[1], bits, lo, hi)) return 0;
+  return lo > 0 ? 1 : hi < 0 ? -1 : 0;
+}
+
+// §8.2: the contact mode claimed in "contact", for support points with every force given.
+void check_contact(const Push_part& c, const Support& s, const Limits& lim, const Q (&p)[2], const Q (&n)[2],
+                   const Q& mu, const Q (&v)[2]) {
+  if (!s.regions.empty() || s.unknown != 0)
+    throw Failure{"contact: the contact mode is claimed for support points with every force given"};
+  std::vector<Rho> pts;
+  for (const Support_point& sp : s.points) {
+    Point_values scratch;
+    const Point_values& pv = values(sp, lim, scratch);
+    pts.push_back({pv.x, pv.y, Q(pv.mu * pv.f)});
+  }
+  const Q eL[2] = {n[0] - mu * n[1], n[1] + mu * n[0]}, eR[2] = {n[0] + mu * n[1], n[1] - mu * n[0]};
+  const Q rl[2] = {-eL[1], eL[0]}, rr[2] = {-eR[1], eR[0]};  // rot90: rot90(a) . F = a x F
+  const Q lr[2] = {rr[0], rr[1]}, ll[2] = {-rl[0], -rl[1]};  // e_R x F > 0, F x e_L > 0: inside the cone
+  bracket(pts, p, v, c.omega, c.bits, "contact.omega");
+  const int right = force_sign(pts, p, v, c.omega, lr, c.bits), left = force_sign(pts, p, v, c.omega, ll, c.bits);
+  if (c.mode == "sticks") {
+    if (sgn(mu) == 0 || right != 1 || left != 1)
+      throw Failure{"contact: \"sticks\", but the sticking motion's force is not certainly inside the friction cone"};
+  } else if (c.mode == "impending") {
+    if (right != 3 && left != 3)
+      throw Failure{"contact: \"impending\" is the translation along a cone edge, exactly (omega 0 and the velocity "
+                    "along an edge)"};
+  } else {  // slides: the force outside the cone, beyond the claimed edge within the pushing half-plane
+    if (!c.has_tangent) throw Failure{"contact: a sliding claim needs \"tangent_omega\""};
+    if (right == 1 && left == 1 && sgn(mu) != 0) throw Failure{"contact: the sticking motion's force is inside the cone"};
+    const Q t[2] = {-n[1], n[0]};
+    bracket(pts, p, t, c.tangent, c.bits, "contact.tangent_omega");
+    const bool on_left = c.mode == "slides left";
+    const Q(&re)[2] = on_left ? rl : rr;
+    const int in_h = force_sign(pts, p, t, c.tangent, re, c.bits);  // e x F(t) > 0: e in the pushing half-plane
+    const int beyond = (on_left ? 1 : -1) * force_sign(pts, p, v, c.omega, re, c.bits);
+    if (in_h != 1 || beyond != 1)
+      throw Failure{std::string("contact: \"") + std::string(c.mode) + "\", but the sticking motion's force is not "
+                    "certainly beyond that edge of the cone within the forces that push"};
+  }
+}
+
 }  // namespace
 
 void read_push_member(Reader& r, std::string_view key, Certificate& c) {
@@ -77,6 +209,33 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c) {
   } else if (key == "center") {
     p.has_center = true;
     read_fixed(r, 2, "a point [x, y]", [&](std::size_t k) { p.center[k] = read_rational(r); });
+  } else if (key == "contact") {
+    p.has_contact = true;
+    begin_object(r, "expected an object {\"mode\", \"bits\", \"omega\", \"tangent_omega\"?}");
+    std::string_view k;
+    unsigned seen = 0;
+    while (r.next_key(k)) {
+      if (k == "mode") {
+        seen |= 1;
+        if (r.peek() != Reader::Kind::string) r.fail("expected \"sticks\", \"impending\", \"slides left\" or \"slides right\"");
+        p.mode = r.string_view();
+        if (p.mode != "sticks" && p.mode != "impending" && p.mode != "slides left" && p.mode != "slides right")
+          r.fail("expected \"sticks\", \"impending\", \"slides left\" or \"slides right\"");
+      } else if (k == "bits") {
+        seen |= 2;
+        p.bits = read_index(r, "number of bits");
+        if (p.bits < 16 || p.bits > 4096) r.fail("expected bits from 16 to 4096");
+      } else if (k == "omega") {
+        seen |= 4;
+        read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.omega[m] = read_rational(r); });
+      } else if (k == "tangent_omega") {
+        p.has_tangent = true;
+        read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.tangent[m] = read_rational(r); });
+      } else {
+        r.fail("unknown key " + quote(k), true);
+      }
+    }
+    if (seen != 7) r.fail("a contact needs \"mode\", \"bits\" and \"omega\"");
   } else {  // turns
     p.has_turns = true;
     begin_object(r, "expected an object {\"ccw\": [forces], \"cw\": [forces]}");
@@ -176,6 +335,7 @@ void check_push(const Certificate& c, const Scene& scene, const Limits& lim) {
                     " (every coefficient is the same: the centre of friction)"};
     }
   }
+  if (p.has_contact) check_contact(p, s, lim, {px, py}, {nx, ny}, mu, v);
   if (p.rotation == "depends") {
     if (!p.has_turns) throw Failure{"missing required key \"turns\" (two distributions that turn the body apart)"};
     if (!p.votes.empty()) throw Failure{"key \"votes\" is not allowed when \"rotation\" is \"depends\""};

@@ -485,6 +485,8 @@ def test_push_voting_theorem():
     assert r["center_of_friction"] == (0, 0)
     assert [v["vote"] for v in r["votes"]] == ["cw", "ccw", "ccw"]
     assert r["votes"][0]["direction"] == (-1, 1) and r["pusher"]["at"] == (Fraction(1, 2), -1)
+    c = wrenchkit.push(square, contact=True)["contact"]
+    assert c["mode"] == "sticks" and Fraction(536, 1000) < c["omega"][0] < c["omega"][1] < Fraction(537, 1000)
     square["pusher"]["velocity"] = [-1, 2]  # along p -> c: a translation
     assert wrenchkit.push(square)["rotation"] == "none"
     square["pusher"]["velocity"] = [0, -1]

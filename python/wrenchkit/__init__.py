@@ -319,15 +319,17 @@ def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, 
     return r
 
 
-def push(scene):
+def push(scene, *, contact=False):
     """Which way a pushed body turns (docs/pushing.md), as `wrenchkit push --json`: the scene's "pusher" (a point
     contact with a "velocity" into the body) pushing it over its "support". "rotation": "ccw", "cw", "none" (a
     translation), "depends" (with "witnesses": two distributions of the support's forces that turn it apart) or
     "undecided" (with "why"), for every admissible pressure distribution — Mason's voting theorem, exact; "votes":
     each line's ("left edge", "right edge", "velocity") direction and vote; "center_of_friction" (Fractions, None when
-    it moves with the distribution); the "certificate" the independent checker accepted.
+    it moves with the distribution); the "certificate" the independent checker accepted. contact=True: also
+    "contact": {"mode": "sticks" | "impending" | "slides left" | "slides right" | "undecided", "omega": (lo, hi) (the
+    sticking motion's rotation rate, Fractions), "why"} for a support of points with every force given.
     """
-    r = _json.loads(_core.push(_scene(scene)))
+    r = _json.loads(_core.push(_scene(scene), contact))
     fr = _fractions.Fraction
     for k in ("at", "normal", "velocity"):
         r["pusher"][k] = tuple(fr(x) for x in r["pusher"][k])
@@ -338,6 +340,8 @@ def push(scene):
         v["direction"] = tuple(fr(x) for x in v["direction"])
     if "witnesses" in r:
         r["witnesses"] = {k: [fr(x) for x in f] for k, f in r["witnesses"].items()}
+    if "contact" in r and "omega" in r["contact"]:
+        r["contact"]["omega"] = tuple(fr(x) for x in r["contact"]["omega"])
     return r
 
 
