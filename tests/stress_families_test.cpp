@@ -4,6 +4,8 @@
 // tool's own failure path (a wrong certified answer ⇒ exit 1) is proven by the CTest stress_report_fault.
 #include <gtest/gtest.h>
 
+#include "exact/sliding/pushing.h"
+
 #include "exact/pipeline/answer_json.h"
 #include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/labels_answer.h"
@@ -168,6 +170,12 @@ TEST(StressFamilies, KnownFamiliesLandOnTheirSideForEveryEpsilon) {
         sides.insert(s.above);
         if (f.question == stress::Question::equilibrium) {
           EXPECT_EQ(decide_equilibrium(scene_of(s.text)).balanced, s.above) << f.name << " " << eps << "\n" << s.text;
+          continue;
+        }
+        if (f.question == stress::Question::push) {  // ccw iff above, by the velocity's vote (PU-1)
+          const Scene sc = scene_of(s.text);
+          const Rotation r = decide_push(Support_model(sc), *sc.pusher).rotation;
+          EXPECT_EQ(r, s.above ? Rotation::ccw : Rotation::cw) << f.name << " " << eps << "\n" << s.text;
           continue;
         }
         EXPECT_EQ(closure(s.text), s.above) << f.name << " " << eps << "\n" << s.text;
