@@ -925,6 +925,16 @@ const std::vector<Family>& report_only_families() {
   return f;
 }
 
+// A scene of an exact family, its side drawn (the first draw of the case).
+Family_scene known_side(const Family& fam, double eps, Rng& r) {
+  Family_scene out;
+  out.family = fam.name;
+  out.epsilon = eps;
+  out.known = true;
+  out.above = r.coin();
+  return out;
+}
+
 // Family "fixture_pin" (hold, issue 16). A support symmetric about its centre of friction c: 2–4 pairs of points
 // c ± d_j with equal forces (integers 1–5) and one μ (1/2, 1, 1/3, 3/4), sometimes a point at c; a frictionless pin
 // at c − s·n̂ with the rational unit normal n̂ = ((1 − t²), 2t)/(1 + t²); the load κ n̂ at c, on the pin's line. The
@@ -933,11 +943,7 @@ const std::vector<Family>& report_only_families() {
 // rational witness μ f_i n̂ at every point). κ = μW·(1 ± 10^-k): holds iff below (`above`: it does not hold).
 Family_scene fixture_pin(const Family& fam, double eps, Rng& r) {
   const int k = decimal_exponent(eps);
-  Family_scene out;
-  out.family = fam.name;
-  out.epsilon = eps;
-  out.known = true;
-  out.above = r.coin();
+  Family_scene out = known_side(fam, eps, r);
   static const char* mus[] = {"1/2", "1", "1/3", "3/4"};
   const int which = r.integer(0, 3);
   const Rational mu = which == 0 ? Rational(1, 2) : which == 1 ? Rational(1) : which == 2 ? Rational(1, 3) : Rational(3, 4);
@@ -976,11 +982,7 @@ Family_scene fixture_pin(const Family& fam, double eps, Rng& r) {
 // d + s·10^-k·rot90(d): (p − c) × v = −s·10^-k·|d|², so it votes ccw iff s < 0 (`above`: ccw).
 Family_scene push_near_tie(const Family& fam, double eps, Rng& r) {
   const int k = decimal_exponent(eps);
-  Family_scene out;
-  out.family = fam.name;
-  out.epsilon = eps;
-  out.known = true;
-  out.above = r.coin();
+  Family_scene out = known_side(fam, eps, r);
   const int n = r.integer(3, 8);
   std::string points;
   Rational mx = 0, my = 0, d = 0;
