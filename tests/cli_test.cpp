@@ -860,6 +860,32 @@ TEST(Cli, OutlineChecksRefuseOrWarn) {
 // grasp-regions end to end: the JSON a script counts on ("pairs": [{"edges": [i, j], "closed": [[[s, t], …]]}]), the
 // certificate written and accepted by `check`, batch, and the refusals (no mu, no outline, an edge out of range,
 // three fingers) with exit 2 and nothing on stdout.
+// push end to end: JSON with the certificate (written, then accepted by `check`), the contact mode, the picture, the
+// float twin's abstention (exit 3), and bad input (exit 2, nothing on stdout).
+TEST(Cli, PushJsonCertificateContactPictureAndRefusals) {
+  const std::string scene = test::source_dir() + "/docs/pushing/square_apart.json";
+  const fs::path cert = scratch() / "push.cert.json";
+  const Cli_result r = run("push --json --contact --certificate " + cert.string() + " " + scene);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find(R"("rotation": "ccw")"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(R"("contact": {"mode": "sticks", "omega": [)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(R"("certificate_checked": true)"), std::string::npos) << r.out;
+  const Cli_result k = run("check " + scene + " " + cert.string());
+  EXPECT_EQ(k.code, 0) << k.out << k.err;
+  const Cli_result svg = run("render --what push " + scene);
+  EXPECT_EQ(svg.code, 0) << svg.err;
+  EXPECT_NE(svg.out.find("centre of friction"), std::string::npos);
+  EXPECT_NE(svg.out.find("<svg"), std::string::npos);
+  const Cli_result tie = run("push --mode float " + test::source_dir() + "/docs/pushing/square_tie.json");
+  EXPECT_EQ(tie.code, 3) << tie.out << tie.err;
+  EXPECT_NE(tie.out.find("rotation: undecided"), std::string::npos) << tie.out;
+  const Cli_result bad = run("push -", R"({"wrenchkit": 1, "support": {"mu": 1, "points": [{"at": [0, 0], "force": 1}]},
+      "pusher": {"at": [0, -1], "normal": [0, 1], "velocity": [0, -1]}})");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_EQ(bad.out, "");
+  EXPECT_NE(bad.err.find("pusher.velocity: (0, -1) moves away from the body"), std::string::npos) << bad.err;
+}
+
 TEST(Cli, GraspRegionsJsonCertificateAndRefusals) {
   const fs::path square = scratch() / "gr_square.json", cert = scratch() / "gr_square.cert.json";
   std::ofstream(square) << R"({"wrenchkit": 1, "body": {"outline": [[0, 0], [1, 0], [1, 1], [0, 1]]}})";
