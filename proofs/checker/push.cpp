@@ -156,6 +156,7 @@ int force_sign(const std::vector<Rho>& pts, const Q (&p)[2], const Q (&u)[2], co
 // §8.2: the contact mode claimed in "contact", for support points with every force given.
 void check_contact(const Push_part& c, const Support& s, const Limits& lim, const Q (&p)[2], const Q (&n)[2],
                    const Q& mu, const Q (&v)[2]) {
+  if (c.bits < 16 || c.bits > 4096) throw Failure{"contact.bits: expected bits from 16 to 4096"};
   if (!s.regions.empty() || s.unknown != 0)
     throw Failure{"contact: the contact mode is claimed for support points with every force given"};
   std::vector<Rho> pts;
@@ -223,8 +224,7 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c) {
           r.fail("expected \"sticks\", \"impending\", \"slides left\" or \"slides right\"");
       } else if (k == "bits") {
         seen |= 2;
-        p.bits = read_index(r, "number of bits");
-        if (p.bits < 16 || p.bits > 4096) r.fail("expected bits from 16 to 4096");
+        p.bits = read_index(r, "number of bits");  // (its range: check_contact, once the certificate is read)
       } else if (k == "omega") {
         seen |= 4;
         read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.omega[m] = read_rational(r); });

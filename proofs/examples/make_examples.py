@@ -8,6 +8,7 @@ table entry names. Run from anywhere:  python3 proofs/examples/make_examples.py
 """
 import itertools
 import json
+import math
 import os
 import re
 import sys
@@ -214,6 +215,11 @@ SCENES = {
                     "mu = 1 along (1, 1): the edges vote apart, the velocity ccw", "body": SQUARE_OUTLINE,
                     "support": {"mu": "1/2", "points": [{"at": at, "force": 1} for at in CORNERS]},
                     "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": 1, "velocity": [1, 1]}},
+    "push_slide": {"wrenchkit": 1, "name": "the square on four legs, pushed at (1/2, -1) with mu = 1/2 along (-1, 1): "
+                   "its left edge through c, a translation, the contact sliding on the left edge",
+                   "body": SQUARE_OUTLINE,
+                   "support": {"mu": "1/2", "points": [{"at": at, "force": 1} for at in CORNERS]},
+                   "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": "1/2", "velocity": [-1, 1]}},
     "push_depends": {"wrenchkit": 1, "name": "the square on four points of different mu, forces not given (W = 4 at "
                      "the origin), pushed frictionless along x = -1/10: ccw under (2, 2, 0, 0), cw under (0, 0, 2, 2)",
                      "body": SQUARE_OUTLINE,
@@ -431,6 +437,10 @@ SQ_PAIRS = [{"edges": [i, j], "closed": [SQ_REGION] if (i, j) in ((0, 2), (1, 3)
 # Pushing (section 8), as `wrenchkit push --certificate` writes them. push_square: D = 4 (1/2) = 2; the lines through
 # (1/2, -1) along (-1, 1), (1, 1), (1, 1) have N = (1/2) (4p - sum r_i) x d = (1, -2) x d: -1, 3, 3 (c = 0).
 PUSH_SQUARE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2"}, "votes": [{"lower": "-1", "upper": "-1"}, {"lower": "3", "upper": "3"}, {"lower": "3", "upper": "3"}], "center": ["0", "0"]}''')
+# The contact mode (section 8.2, `push --contact`): push_square sticks, its rotation rate bracketed near 0.53605;
+# push_slide slides on the left edge (the sticking force is beyond it, and the left edge is among the pushing forces).
+PUSH_SQUARE_CONTACT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2"}, "votes": [{"lower": "-1", "upper": "-1"}, {"lower": "3", "upper": "3"}, {"lower": "3", "upper": "3"}], "center": ["0", "0"], "contact": {"mode": "sticks", "bits": 64, "omega": ["147348867227/274877906944", "589395468909/1099511627776"]}}''')
+PUSH_SLIDE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "2"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "2", "upper": "2"}, {"lower": "-1", "upper": "-1"}], "center": ["0", "0"], "contact": {"mode": "slides left", "bits": 64, "omega": ["-1/4", "-1/8"], "tangent_omega": ["-1/2", "0"]}}''')
 # push_depends: every line is x = -1/10 upward; D = 2 + f0/10 >= 2 over F (f0 = f1, f2 + f3 = 4 - 2 f0).
 PUSH_DEPENDS = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "depends", "friction": {"lower": "2", "dual_lower": ["-1/2", "2/5", "0"]}, "turns": {"ccw": ["2", "2", "0", "0"], "cw": ["0", "0", "2", "2"]}}''')
 # push_square_unknown: one coefficient, so c = (0, 0) for every f in F and each vote is constant over F (its duals
@@ -967,6 +977,16 @@ CERTS = [
     ("push_square_unknown", "without_dual", "invalid:dual|votes[1]: some support force is not given, so each bound needs its LP dual over F",
      tamper(PUSH_UNKNOWN, ["votes", 1, "dual_upper"], None)),
     ("push_square_centre", "none", "valid", PUSH_CENTRE),
+    ("push_square", "contact_sticks", "valid", PUSH_SQUARE_CONTACT),
+    ("push_square", "contact_sticks_bracket_moved", "invalid:contact|contact.omega: the moment about the pusher at omega",
+     tamper(PUSH_SQUARE_CONTACT, ["contact", "omega", 0], "603540960162815/1125899906842624")),
+    ("push_square", "contact_claims_slide", "invalid:contact|contact: a sliding claim needs \"tangent_omega\"",
+     tamper(PUSH_SQUARE_CONTACT, ["contact", "mode"], "slides right")),
+    ("push_slide", "contact_slides_left", "valid", PUSH_SLIDE),
+    ("push_slide", "contact_slides_right", "invalid:contact|contact: \"slides right\", but the sticking motion's force is not certainly beyond",
+     tamper(PUSH_SLIDE, ["contact", "mode"], "slides right")),
+    ("push_slide", "contact_sticks", "invalid:contact|contact: \"sticks\", but the sticking motion's force is not certainly inside",
+     tamper(PUSH_SLIDE, ["contact", "mode"], "sticks")),
     # the same tie on the barbell (D = 1; the velocity's N = 1): the engine answers "undecided" and writes nothing
     ("push_barbell", "none_on_a_line", "invalid:line|the support's friction lies on one line through the centre of friction",
      json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "1"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "0", "upper": "0"}, {"lower": "1", "upper": "1"}], "center": ["0", "0"]}''')),
@@ -1782,13 +1802,93 @@ def verify_regions(scene, cert):
     return None
 
 
+def verify_contact(c, pts, known, p, n, mu, v):
+    """Section 8.2: the contact mode (PU-2), support points with every force given. None if proved, else a reason."""
+    if set(c) - {"mode", "bits", "omega", "tangent_omega"} or not {"mode", "bits", "omega"} <= set(c) or not known:
+        return "contact"
+    bits = c["bits"]
+
+    def root_bounds(s):  # lo <= sqrt(s) <= hi: isqrt(num den 4^B) / (den 2^B), B = bits + bit length of den
+        if s == 0:
+            return F(0), F(0)
+        b = bits + s.denominator.bit_length()
+        x = s.numerator * s.denominator << (2 * b)
+        r = math.isqrt(x)
+        return F(r, s.denominator << b), F(r + (r * r != x), s.denominator << b)
+
+    rho = [(q[0], q[1], q[2] * q[3]) for q in pts]
+
+    def interval(u, l, moment, a, b):  # sum rho (l . v(w)) / |v(w)| over w in [a, b]; None if a speed may vanish
+        lo = hi = F(0)
+        for x, y, r in rho:
+            if r == 0:
+                continue
+            dx, dy = x - p[0], y - p[1]
+            wx, wy = -dy, dx
+            lx, ly = (wx, wy) if moment else l
+            c0, c1 = lx * u[0] + ly * u[1], lx * wx + ly * wy
+            n0, n1 = sorted((c0 + a * c1, c0 + b * c1))
+            quad = lambda t: u[0] * u[0] + u[1] * u[1] + 2 * t * (u[0] * wx + u[1] * wy) + t * t * (dx * dx + dy * dy)  # noqa: E731
+            qs = [quad(a), quad(b)]
+            if dx * dx + dy * dy and a <= -(u[0] * wx + u[1] * wy) / (dx * dx + dy * dy) <= b:
+                qs.append(quad(-(u[0] * wx + u[1] * wy) / (dx * dx + dy * dy)))
+            if min(qs) <= 0:
+                return None
+            slo, shi = root_bounds(min(qs))[0], root_bounds(max(qs))[1]
+            if n0 >= 0:
+                t0, t1 = n0 / shi, n1 / slo
+            elif n1 <= 0:
+                t0, t1 = n0 / slo, n1 / shi
+            else:
+                t0, t1 = n0 / slo, n1 / slo
+            lo, hi = lo + r * t0, hi + r * t1
+        return lo, hi
+
+    def bracketed(u, w):  # the root of the moment about p in [w0, w1]: negative at w0, positive at w1
+        w0, w1 = (rational(x) for x in w)
+        if w0 == w1:
+            return w0 == 0 and sum(r * ((x - p[0]) * u[1] - (y - p[1]) * u[0]) for x, y, r in rho) == 0
+        if w0 > w1:
+            return False
+        g0, g1 = interval(u, None, True, w0, w0), interval(u, None, True, w1, w1)
+        return g0 is not None and g1 is not None and g0[1] < 0 and g1[0] > 0
+
+    def force_sign(u, w, l):
+        w0, w1 = (rational(x) for x in w)
+        if w0 == w1:
+            t = l[0] * u[0] + l[1] * u[1]
+            return 3 if t == 0 else (t > 0) - (t < 0)
+        iv = interval(u, l, False, w0, w1)
+        return 0 if iv is None else (1 if iv[0] > 0 else -1 if iv[1] < 0 else 0)
+
+    eL, eR = (n[0] - mu * n[1], n[1] + mu * n[0]), (n[0] + mu * n[1], n[1] - mu * n[0])
+    rl, rr = (-eL[1], eL[0]), (-eR[1], eR[0])  # rot90(e) . F = e x F
+    if not bracketed(v, c["omega"]):
+        return "contact"
+    right, left = force_sign(v, c["omega"], rr), force_sign(v, c["omega"], (-rl[0], -rl[1]))
+    mode = c["mode"]
+    if mode == "sticks":
+        return None if mu > 0 and right == 1 and left == 1 else "contact"
+    if mode == "impending":
+        return None if 3 in (right, left) else "contact"
+    if mode not in ("slides left", "slides right") or "tangent_omega" not in c:
+        return "contact"
+    t = (-n[1], n[0])
+    if not bracketed(t, c["tangent_omega"]):
+        return "contact"
+    e = rl if mode == "slides left" else rr
+    in_h = force_sign(t, c["tangent_omega"], e)
+    beyond = (1 if mode == "slides left" else -1) * force_sign(v, c["omega"], e)
+    return None if in_h == 1 and beyond == 1 else "contact"
+
+
 def verify_push(scene, cert):
     """Section 8 (format 6): which way a pushed body turns, by the voting rule of PU-1 section 4 over F. None if
     proved, else a short reason. Support points only (no regions); the pusher written with "at" and "normal"."""
     if cert.get("wrenchkit_certificate") != 6:
         return "header"
     keys = set(cert)
-    if keys - {"wrenchkit_certificate", "property", "rotation", "friction", "votes", "center", "turns"} or not (
+    if keys - {"wrenchkit_certificate", "property", "rotation", "friction", "votes", "center", "turns", "contact"} or not (
             {"rotation", "friction"} <= keys) or ({"turns"} if cert["rotation"] == "depends" else {"votes"}) - keys:
         return "keys"
     sup, pu = scene.get("support"), scene.get("pusher")
@@ -1850,6 +1950,10 @@ def verify_push(scene, cert):
         return s if s and v == s else 0
 
     sign = lambda x: (x > 0) - (x < 0)  # noqa: E731
+    if "contact" in cert:
+        why = verify_contact(cert["contact"], pts, known, (px, py), (nx, ny), mu, (vx, vy))
+        if why:
+            return why
     fr = bounds(fric, cert["friction"], True)
     if isinstance(fr, str):
         return fr
