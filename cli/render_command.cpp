@@ -381,17 +381,7 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
   c.legend(swatch(kSupport, 0.5), "support: discs grow with mu*f (hollow: force unknown)");
   if (a.rotation == Rotation::depends) {  // where c is under the two witnesses
     for (int k = 0; k < 2; ++k) {
-      const std::vector<Rational>& f = k == 0 ? a.turns_ccw : a.turns_cw;
-      double mx = 0, my = 0, d = 0;
-      for (std::size_t i = 0; i < f.size(); ++i) {
-        const double w = Rational(s.support->mu_of(s.support->points[i]) * f[i]).get_d();
-        mx += w * s.support->points[i].at.x.get_d(), my += w * s.support->points[i].at.y.get_d(), d += w;
-      }
-      for (const Support_region& g : s.support->regions) {
-        const double mu = s.support->mu_of(g).get_d();
-        mx += mu * g.moment.x.get_d(), my += mu * g.moment.y.get_d(), d += mu * g.total.get_d();
-      }
-      const P2 ctr{mx / d, my / d};
+      const P2 ctr = to_p2(friction_center(*s.support, k == 0 ? a.turns_ccw : a.turns_cw));
       c.dot(ctr, 5, "fill=\"white\" stroke=\"" + std::string(k == 0 ? kPlus : kMinus) + "\" stroke-width=\"2\"");
       c.text(ctr, k == 0 ? "c under the forces that turn it \u21ba" : "c under the forces that turn it \u21bb",
              "fill=\"" + std::string(k == 0 ? kPlus : kMinus) + "\"");

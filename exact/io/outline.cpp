@@ -12,7 +12,6 @@ namespace wrenchkit {
 
 namespace {
 
-Vec2 minus(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
 std::string point(const Vec2& p) { return "(" + to_string(p.x) + ", " + to_string(p.y) + ")"; }
 
 // n in the closed cone of u and w (two inward normals at a vertex; u ≠ −w for a simple polygon).

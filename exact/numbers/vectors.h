@@ -30,6 +30,9 @@ inline Rational dot(const Vec3q& a, const Vec3q& b) { return a[0] * b[0] + a[1] 
 inline Vec3q cross(const Vec3q& a, const Vec3q& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
+// a − b, and rot90(v) = (−vy, vx): v turned a quarter counter-clockwise.
+inline Vec2 minus(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
+inline Vec2 rot90(const Vec2& v) { return {-v.y, v.x}; }
 inline bool is_zero(const Vec2& v) { return v.x == 0 && v.y == 0; }
 inline bool is_zero(const Vec3q& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
 inline bool is_zero(const Vec3z& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }

@@ -15,11 +15,7 @@ Grasp_regions_item answer_grasp_regions(std::string_view text, std::string_view 
     r.regions = two_finger_regions(r.scene, *mu, query.edges);
     if (!request.certify) return;
     r.certificate = grasp_regions_certificate(r.regions);
-    std::string why = check_certificates(text, {r.certificate}, request);
-    if (!why.empty()) {
-      r.status = Status::check_failed;
-      r.message = std::move(why);
-    }
+    check_into(r, text, {r.certificate}, request);
   });
 }
 

@@ -14,11 +14,7 @@ void decide(std::string_view text, const Request& request, Hold_item& r) {
     return;
   }
   r.certificate = hold_certificate(r.answer);
-  std::string why = check_certificates(text, {r.certificate}, request);
-  if (!why.empty()) {
-    r.status = Status::check_failed;
-    r.message = std::move(why);
-  }
+  check_into(r, text, {r.certificate}, request);
 }
 
 }  // namespace

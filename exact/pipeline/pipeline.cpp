@@ -70,11 +70,7 @@ void decide_closure_item(const Scene& scene, std::string_view text, const Reques
   if (!r.certify) return;
   item.force_certificate = certificate_json(item.force.certificate);
   item.form_certificate = certificate_json(item.form.certificate);
-  std::string why = check_certificates(text, {item.force_certificate, item.form_certificate}, r);
-  if (!why.empty()) {
-    item.status = Status::check_failed;
-    item.message = std::move(why);
-  }
+  check_into(item, text, {item.force_certificate, item.form_certificate}, r);
 }
 
 void decide_equilibrium_item(const Scene& scene, std::string_view text, const Request& r, Equilibrium_item& item) {
@@ -89,11 +85,7 @@ void decide_equilibrium_item(const Scene& scene, std::string_view text, const Re
   if (item.answer.balanced) item.forces = contact_forces(scene, item.answer.certificate.combination);
   if (!r.certify) return;
   item.certificate = certificate_json(item.answer.certificate);
-  std::string why = check_certificates(text, {item.certificate}, r);
-  if (!why.empty()) {
-    item.status = Status::check_failed;
-    item.message = std::move(why);
-  }
+  check_into(item, text, {item.certificate}, r);
 }
 
 // Closure reads lazily (certified doubles from the digits, rationals only where an exact predicate needs

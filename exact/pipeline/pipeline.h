@@ -146,5 +146,12 @@ wrenchkit_checker::Limits checker_limits(const Input_limits& limits);
 // it to prove that a rejection reaches the user as exit 4).
 std::string check_certificates(std::string_view scene_text, const std::vector<std::string_view>& certificates,
                                const Request& request);
+// The same on an item: a rejection makes it check_failed with the reason (every answer's last step).
+template <class Item>
+void check_into(Item& item, std::string_view scene_text, const std::vector<std::string_view>& certificates,
+                const Request& request) {
+  std::string why = check_certificates(scene_text, certificates, request);
+  if (!why.empty()) item.status = Status::check_failed, item.message = std::move(why);
+}
 
 }  // namespace wrenchkit

@@ -22,11 +22,7 @@ Push_item answer_push(std::string_view text, std::string_view source, const Requ
     if (query.contact) r.push.contact = push_contact_mode(model, *r.scene.pusher, query.tolerance);
     if (!request.certify || r.push.by_twin || r.push.rotation == Rotation::undecided) return;
     r.certificate = push_certificate(r.push);
-    std::string why = check_certificates(text, {r.certificate}, request);
-    if (!why.empty()) {
-      r.status = Status::check_failed;
-      r.message = std::move(why);
-    }
+    check_into(r, text, {r.certificate}, request);
   });
 }
 

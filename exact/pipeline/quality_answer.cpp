@@ -36,11 +36,7 @@ void decide(std::string_view text, const Request& request, const Quality_query& 
       }
     }
   }
-  std::string why = check_certificates(text, certificates, request);
-  if (!why.empty()) {
-    r.status = Status::check_failed;
-    r.message = std::move(why);
-  }
+  check_into(r, text, certificates, request);
 }
 
 }  // namespace

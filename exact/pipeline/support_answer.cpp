@@ -160,11 +160,7 @@ void answer(std::string_view source, const Request& request, const Support_query
 // The independent checker on the motion's certificate (Status::check_failed if it ever rejects it).
 void check_motion(std::string_view text, const Request& request, Support_item& r) {
   if (r.certificate.empty()) return;
-  std::string why = check_certificates(text, {r.certificate}, request);
-  if (!why.empty()) {
-    r.status = Status::check_failed;
-    r.message = std::move(why);
-  }
+  check_into(r, text, {r.certificate}, request);
 }
 
 }  // namespace

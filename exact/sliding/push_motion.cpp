@@ -22,9 +22,6 @@ const char* push_mode_name(Push_mode m) {
 
 namespace {
 
-Vec2 rot90(const Vec2& a) { return {-a.y, a.x}; }
-Vec2 minus(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
-
 // The interval of Σ ρ_i (ℓ_i · v_i(ω)) / |v_i(ω)| over [lo, hi], ℓ_i = l, or rot90(r_i − p) when `moment` (then the
 // sum is the moment about p of the load). False when a speed may vanish on the interval.
 bool interval_sum(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& u, const Vec2& l, bool moment,

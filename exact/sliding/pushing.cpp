@@ -35,6 +35,20 @@ std::optional<int> Push_vote::sign() const {
   return std::nullopt;
 }
 
+Vec2 friction_center(const Support& s, const std::vector<Rational>& f) {
+  Vec2 m{0, 0};
+  Rational d = 0;
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Rational w = s.mu_of(s.points[i]) * f[i];
+    m.x += w * s.points[i].at.x, m.y += w * s.points[i].at.y, d += w;
+  }
+  for (const Support_region& r : s.regions) {
+    const Rational& mu = s.mu_of(r);
+    m.x += mu * r.moment.x, m.y += mu * r.moment.y, d += mu * r.total;
+  }
+  return {m.x / d, m.y / d};
+}
+
 Rotation voting_rule(int left, int right, int velocity) {
   const int s = voting_rule_sense(left, right, velocity);
   return s > 0 ? Rotation::ccw : s < 0 ? Rotation::cw : Rotation::none;
@@ -42,8 +56,9 @@ Rotation voting_rule(int left, int right, int velocity) {
 
 namespace {
 
-// Σ coef_i f_i + constant over F.
-F_range range_over(const Support_model& model, const std::vector<Rational>& coef, const Rational& constant) {
+// Σ coef_i f_i + constant over F (`lower_only`: its minimum alone, one LP; upper is then the lower bound too).
+F_range range_over(const Support_model& model, const std::vector<Rational>& coef, const Rational& constant,
+                   bool lower_only = false) {
   F_range r;
   if (model.known()) {  // (argmin and argmax empty: the one distribution, model.given())
     Rational& v = r.lower;
@@ -56,16 +71,20 @@ F_range range_over(const Support_model& model, const std::vector<Rational>& coef
     r.upper = v;
     return r;
   }
-  F_optimum hi = maximise_over(model.support(), model.admissible(), coef);
   std::vector<Rational> neg(coef.size());
   for (std::size_t i = 0; i < coef.size(); ++i) neg[i] = -coef[i];
   F_optimum lo = maximise_over(model.support(), model.admissible(), neg);
-  r.upper = hi.value + constant;
   r.lower = constant - lo.value;
-  r.argmax = std::move(hi.distribution);
   r.argmin = std::move(lo.distribution);
-  r.dual_upper = hi.dual;
   r.dual_lower = lo.dual;
+  if (lower_only) {
+    r.upper = r.lower;
+    return r;
+  }
+  F_optimum hi = maximise_over(model.support(), model.admissible(), coef);
+  r.upper = hi.value + constant;
+  r.argmax = std::move(hi.distribution);
+  r.dual_upper = hi.dual;
   return r;
 }
 
@@ -74,8 +93,6 @@ Rational value_at(const std::vector<Rational>& coef, const Rational& constant, c
   for (std::size_t i = 0; i < coef.size(); ++i) v += coef[i] * f[i];
   return v;
 }
-
-Vec2 minus(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
 
 // The twin on a support of points with every force given (the rationals rounded with certified bounds).
 std::optional<Push_answer> twin_push(const Support_model& model, const Pusher& pusher, Push_answer a,
@@ -140,7 +157,7 @@ Push_answer decide_push(const Support_model& model, const Pusher& pusher, Mode m
   Rational constant = 0;
   for (std::size_t i = 0; i < n; ++i) coef[i] = s.mu_of(s.points[i]);
   for (const Support_region& r : s.regions) constant += s.mu_of(r) * r.total;
-  a.friction = range_over(model, coef, constant);
+  a.friction = range_over(model, coef, constant, /*lower_only=*/true);  // (the certificate needs D > 0 only)
   if (a.friction.lower_sign() <= 0)
     throw Input_error(std::string("support: ") +
                       (a.known ? "no friction under the body (every support point with a force has mu = 0)"
@@ -151,20 +168,7 @@ Push_answer decide_push(const Support_model& model, const Pusher& pusher, Mode m
   std::set<Rational> mus;
   for (const Support_point& p : s.points) mus.insert(s.mu_of(p));
   for (const Support_region& r : s.regions) mus.insert(s.mu_of(r));
-  const auto center_of = [&](const std::vector<Rational>& f) {
-    Vec2 m{0, 0};
-    Rational d = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const Rational w = s.mu_of(s.points[i]) * f[i];
-      m.x += w * s.points[i].at.x, m.y += w * s.points[i].at.y, d += w;
-    }
-    for (const Support_region& r : s.regions) {
-      const Rational& mu = s.mu_of(r);
-      m.x += mu * r.moment.x, m.y += mu * r.moment.y, d += mu * r.total;
-    }
-    return Vec2{m.x / d, m.y / d};
-  };
-  if (a.known || mus.size() == 1) a.center = center_of(a.known ? model.given() : a.friction.argmax);
+  if (a.known || mus.size() == 1) a.center = friction_center(s, a.known ? model.given() : a.friction.argmin);
   // The votes: N_d(f) = Σ μ_i f_i (p − r_i) × d + Σ_R μ_R (W_R p − M_R) × d.
   std::array<std::vector<Rational>, 3> vote_coef;
   std::array<Rational, 3> vote_constant;

@@ -88,7 +88,7 @@ struct Push_answer {
   Vec2 at, normal, velocity;
   Rational mu;
   bool known = true;               // F is one distribution
-  F_range friction;                // D over F: its lower bound > 0
+  F_range friction;                // D over F: its lower bound > 0 (the minimum only: upper = lower)
   std::optional<Vec2> center;      // c, when every distribution of F has the same (always when known)
   std::array<Push_vote, 3> votes;  // left edge, right edge, velocity
   Rotation rotation = Rotation::undecided;
@@ -111,6 +111,10 @@ struct Push_answer {
 Push_answer decide_push(const Support_model& model, const Pusher& pusher, Mode mode = Mode::exact);
 
 
+
+// The centre of friction of the distribution f (one force per support point; the regions' pressure is known):
+// (Σ μ_i f_i r_i + Σ_R μ_R M_R) / D. Precondition: D > 0.
+Vec2 friction_center(const Support& s, const std::vector<Rational>& f);
 
 // The voting rule (core/voting_rule.h) on one distribution's three votes (left edge, right edge, velocity; +1, −1,
 // 0), for a support whose friction does not lie on one line through c: ccw, cw or none.

@@ -10,7 +10,6 @@ namespace {
 
 bool same(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
 Vec2 neg(const Vec2& v) { return {-v.x, -v.y}; }
-Vec2 rot90(const Vec2& v) { return {-v.y, v.x}; }
 
 // Upper half-plane first (y > 0, or y = 0 and x > 0), then by counter-clockwise angle.
 int half_of(const Vec2& v) { return (v.y > 0 || (v.y == 0 && v.x > 0)) ? 0 : 1; }

@@ -304,6 +304,16 @@ void check_push(const Certificate& c, const Scene& scene, const Limits& lim) {
     for (const Region& g : s.regions)
       vK[k] += g.mu * cross(g.W * px - g.M[0], g.W * py - g.M[1], dir[k][0], dir[k][1]);
   }
+  // The given forces' friction D and moment sum mu_i f_i r_i + sum mu_R M_R (0 where a force is unknown): the centre
+  // of friction when every force is given (checked by "center", and by a tied "none" below).
+  Q given_moment[2] = {0, 0}, given_friction = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    Point_values scratch;
+    const Point_values& pv = values(s.points[i], lim, scratch);
+    given_moment[0] += pv.mu * pv.f * pv.x, given_moment[1] += pv.mu * pv.f * pv.y, given_friction += pv.mu * pv.f;
+  }
+  for (const Region& g : s.regions)
+    given_moment[0] += g.mu * g.M[0], given_moment[1] += g.mu * g.M[1], given_friction += g.mu * g.W;
   const auto at = [&](int k, const std::vector<Q>& f) {
     Q x = vK[k];
     for (std::size_t i = 0; i < n; ++i) x += vcoef[k][i] * f[i];
@@ -311,18 +321,16 @@ void check_push(const Certificate& c, const Scene& scene, const Limits& lim) {
   };
   if (p.has_center) {  // c = (sum mu_i f_i r_i + sum mu_R M_R) / D: the given forces', or, when every coefficient is
     // the same, the centre of pressure c of F (the same for every distribution); else c moves and is not claimed
-    Q m[2] = {0, 0}, d = 0;
+    Point_values first_scratch;
+    const Q first_mu = n ? values(s.points[0], lim, first_scratch).mu : s.regions.front().mu;  // (points or regions)
     bool same_mu = true;
-    const Q* mu0 = nullptr;
-    std::vector<Q> mus;
     for (std::size_t i = 0; i < n; ++i) {
       Point_values scratch;
-      const Point_values& pv = values(s.points[i], lim, scratch);
-      m[0] += pv.mu * pv.f * pv.x, m[1] += pv.mu * pv.f * pv.y, d += pv.mu * pv.f;
-      mus.push_back(pv.mu);
+      same_mu = same_mu && values(s.points[i], lim, scratch).mu == first_mu;
     }
-    for (const Region& g : s.regions) m[0] += g.mu * g.M[0], m[1] += g.mu * g.M[1], d += g.mu * g.W, mus.push_back(g.mu);
-    for (const Q& x : mus) same_mu = same_mu && (!mu0 || x == *mu0), mu0 = mu0 ? mu0 : &x;
+    for (const Region& g : s.regions) same_mu = same_mu && g.mu == first_mu;
+    const Q(&m)[2] = given_moment;
+    const Q& d = given_friction;
     if (known) {
       if (p.center[0] * d != m[0] || p.center[1] * d != m[1])
         throw Failure{"center: " + show(p.center[0], p.center[1]) + " is not the centre of friction " +
@@ -376,13 +384,8 @@ void check_push(const Certificate& c, const Scene& scene, const Limits& lim) {
     if (sgn(g.mu) > 0) return;
   if (!known) throw Failure{"rotation: \"none\" needs a support whose friction is not on one line (a region with mu > 0, "
                             "or every force given)"};
-  Q m[2] = {0, 0}, d = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    Point_values scratch;
-    const Point_values& pv = values(s.points[i], lim, scratch);
-    m[0] += pv.mu * pv.f * pv.x, m[1] += pv.mu * pv.f * pv.y, d += pv.mu * pv.f;
-  }
-  const Q cx = m[0] / d, cy = m[1] / d, dx = cx - px, dy = cy - py;
+  // (every force given, no region with friction: the given forces' centre of friction)
+  const Q cx = given_moment[0] / given_friction, cy = given_moment[1] / given_friction, dx = cx - px, dy = cy - py;
   bool first = true;
   Q lx, ly;
   for (std::size_t i = 0; i < n; ++i) {
