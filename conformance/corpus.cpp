@@ -307,7 +307,7 @@ void write_approx(Json_writer& w, const json::Value& v) {
 Reference_item reference_item(const Reference_scene& e, int sides) {
   Reference_item b;
   const std::string where = e.where.empty() ? e.id : e.where;
-  guarded(b, [&] {
+  guarded(b, Input_limits{}, [&] {
     Request request;
     request.mode = Mode::exact;
     const Scene parsed = read_scene(e.text, request.limits, where);

@@ -76,6 +76,7 @@ Input_limits limits_of(const py::dict& l) {
   if (l.contains("max_digits_times_contacts"))
     x.max_digits_times_contacts = l["max_digits_times_contacts"].cast<std::size_t>();
   if (l.contains("max_region_vertices")) x.max_region_vertices = l["max_region_vertices"].cast<std::size_t>();
+  if (l.contains("max_work")) x.max_work = l["max_work"].cast<std::size_t>();
   return x;
 }
 
@@ -266,7 +267,7 @@ py::list distribution_list(const std::vector<Rational>& f) {
 // [HD-1] Can the contacts and the support's friction hold the body against the load? The same answer as
 // `wrenchkit hold --json`, with Fractions.
 py::dict hold(const Py_scene& s, const std::string& mode) {
-  const Hold_item r = answer_hold(s.scene, s.text, request_of(mode));
+  const Hold_item r = answer_hold(s.scene, s.text, request_of(mode, s.limits));
   raise_unless_answered(r.status, r.message);
   const Hold_answer& a = r.answer;
   py::dict d;

@@ -6,6 +6,8 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <array>
+#include <iterator>
 #include <cstdlib>
 #include <new>
 #include <cstdint>
@@ -17,7 +19,10 @@
 #include "exact/io/input_error.h"
 #include "exact/io/scene.h"
 #include "exact/io/scene_budget.h"
+#include "exact/numbers/rational.h"
+#include "exact/pipeline/hold_answer.h"
 #include "exact/pipeline/pipeline.h"
+#include "exact/pipeline/support_answer.h"
 #include "fuzz/scene_checks.h"
 #include "proofs/checker/checker.h"
 #include "testing/stress_families.h"
@@ -201,6 +206,71 @@ TEST(Budget, NoGoldenCorpusStressOrFuzzSceneIsRefusedByTheDefaults) {
             << largest_total.entries << " contacts), the largest digits x contacts "
             << largest_product.digits_times_contacts() << " (" << largest_product.longest << " x "
             << largest_product.entries << ")\n";
+}
+
+// [WORK] The default work budget answers every scene the project knows with a margin of 4: each golden and worked
+// example with a support, and every stress family's support scenes (3 seeds at every ε of the report), asked the
+// support's questions (limit-surface with the family's load, hold) under a quarter of the default budget, never end
+// undecided for want of work.
+TEST(Budget, DefaultWorkBudgetAnswersEveryKnownSupportSceneWithMarginFour) {
+  Request quarter;
+  quarter.check = Check::none;
+  quarter.limits.lenient = true;
+  quarter.limits.max_work = Input_limits{}.max_work / 4;
+  std::size_t asked = 0, most = 0;
+  std::string costliest;
+  const auto note = [&](const std::string& where) {
+    if (Work::last() > most) most = Work::last(), costliest = where;
+  };
+  const auto ask = [&](const std::string& text, const std::string& where, const std::array<std::string, 3>* load) {
+    if (text.find("\"support\"") == std::string::npos) return;
+    Support_query q;
+    q.polytopes = false;
+    if (load && !(*load)[0].empty()) {
+      Vec3q p;
+      for (std::size_t k = 0; k < 3; ++k) {
+        std::string why;
+        std::string t = (*load)[k];  // a JSON number or string
+        if (t.size() >= 2 && t.front() == '"') t = t.substr(1, t.size() - 2);
+        const std::optional<Rational> x = parse_rational(t, false, Input_limits{}, why);
+        ASSERT_TRUE(x.has_value()) << where << ": load " << t << " " << why;
+        p[k] = *x;
+      }
+      if (!is_zero(p)) q.load = p;
+    }
+    const Support_item a = answer_support(text, where, quarter, q);
+    note(where);
+    EXPECT_NE(a.message.rfind(kWorkBudget, 0), 0u) << where << ": " << a.message;
+    if (text.find("\"load\"") != std::string::npos) {
+      const Hold_item h = answer_hold(text, where, quarter);
+      note(where + " (hold)");
+      EXPECT_NE(h.message.rfind(kWorkBudget, 0), 0u) << where << ": " << h.message;
+    }
+    ++asked;
+  };
+  namespace fs = std::filesystem;
+  const std::string root = test::source_dir();
+  for (const std::string dir : {"/tests/golden", "/proofs/examples", "/docs"})
+    for (const auto& e : fs::recursive_directory_iterator(root + dir)) {
+      const std::string p = e.path().string();
+      if (e.is_regular_file() && p.size() > 5 && p.compare(p.size() - 5, 5, ".json") == 0 &&
+          p.find("expected") == std::string::npos)
+        ask(test::read_text(p), p, nullptr);
+    }
+  const double epsilons[] = {1e-2, 1e-6, 1e-12, 1e-16, 1e-40};
+  for (const auto* list : {&stress::families(), &stress::report_only_families()})
+    for (const stress::Family& f : *list)
+      for (std::uint64_t seed = 1; seed <= 3; ++seed)
+        for (const double eps : f.uses_epsilon ? std::vector<double>(std::begin(epsilons), std::end(epsilons))
+                                               : std::vector<double>{0}) {
+          const stress::Family_scene sc = stress::make_scene(f.name, eps, seed);
+          ask(sc.text, std::string(f.name) + " seed " + std::to_string(seed) + " eps " + std::to_string(eps),
+              &sc.load_text);
+        }
+  EXPECT_GT(asked, 100u);
+  EXPECT_LE(4 * most, Input_limits{}.max_work);
+  std::cout << "work budget: " << asked << " support scenes answered within a quarter of the default; the costliest, "
+            << costliest << ", " << most << " units\n";
 }
 
 // Within every limit, a balanced scene of six contacts of 10 000-digit fractions has equilibrium weights of

@@ -14,6 +14,9 @@ peak resident memory (the child's ru_maxrss):
     (the polygons' tables): refused with the table limit, not built;
   * out of memory within budget (300 contacts of 10 000-digit fractions under 32–44 MiB of address space,
     where GMP's allocations fail): exit 70 with "out of memory", never GMP's abort;
+  * issue 34: small scenes whose questions cost minutes (a region and 59 legs whose force is not given, 60 such
+    points at 10^9990, a 900-gon at 10^9990): undecided by the work budget (--max-work) or answered, within 10 s
+    of CPU, 2 GB and 10 MB of output; in batch an undecided line;
   * `batch closure` of 1 000 lines, every tenth the hostile scene: the 900 good lines answered exactly as when
     they are alone, the hostile ones error lines (exit_code 2), < 1 GB resident; and a batch where one line
     runs out of memory: that line an internal_error line (exit_code 70), the others answered, exit 70.
@@ -21,6 +24,7 @@ peak resident memory (the child's ru_maxrss):
 Every scene is generated here (nothing big is committed). Usage: hostile_input.py WRENCHKIT WORKDIR
 """
 import json
+import math
 import os
 import resource
 import subprocess
@@ -77,6 +81,34 @@ def write(path, text):
     with open(path, "w") as f:
         f.write(text)
     return path
+
+
+def ngon(n, radius):
+    """n integer points near a circle (a convex polygon, counter-clockwise)."""
+    return [[round(radius * math.cos(2 * math.pi * k / n)), round(radius * math.sin(2 * math.pi * k / n))]
+            for k in range(n)]
+
+
+def unknown_support(region_sides, legs, exponent=0, load=True):
+    """Issue 34's scenes: a region of `region_sides` (none when 0) beside `legs` points whose force is not given;
+    every coordinate times 10^exponent."""
+    def c(v):
+        return "%de%d" % (v, exponent) if exponent else v
+    support = {"mu": "1/2", "weight": 60, "pressure_center": [0, 0],
+               "points": [{"at": [c(x), c(y)]} for x, y in ngon(legs, 1500)]}
+    if region_sides:
+        support["regions"] = [{"outline": [[c(x), c(y)] for x, y in ngon(region_sides, 1000)],
+                               "pressure": "uniform", "force": 1}]
+    scene = {"wrenchkit": 1, "support": support}
+    if load:
+        scene["load"] = {"force": [10, 5], "at": [0, 0]}
+    return json.dumps(scene)
+
+
+def big_region(sides, exponent):
+    return json.dumps({"wrenchkit": 1, "support": {"mu": "1/2", "regions": [
+        {"outline": [["%de%d" % (x, exponent), "%de%d" % (y, exponent)] for x, y in ngon(sides, 10 ** 6)],
+         "pressure": "uniform", "force": 1}]}})
 
 
 def main():
@@ -180,6 +212,48 @@ def main():
     check(code == 70 and len(lines) == 5 and lines[2].get("exit_code") == 70 and "internal_error" in lines[2] and
           all("force_closure" in lines[k] for k in (0, 1, 3, 4)),
           "batch: the line out of memory is an internal_error line (70), the others answered, exit %d" % code)
+
+    # Issue 34: small scenes whose questions cost minutes and gigabytes, each within the work budget now: undecided
+    # (exit 3) with what it would cost and the option, or answered, within 10 s of CPU, 2 GB of address space and
+    # 10 MB of output.
+    GB2 = 2 * 1000 ** 3
+    load = ["--load", "10,5,20000"]
+    cases = [
+        ("a 40-gon region + 59 unknown legs, limit-surface --load", unknown_support(40, 59), ["limit-surface", "--json"] + load),
+        ("the same, hold", unknown_support(40, 59), ["hold", "--json"]),
+        ("a 400-gon region + 59 unknown legs", unknown_support(400, 59), ["limit-surface", "--json"] + load),
+        ("a triangle region + 59 unknown legs", unknown_support(3, 59), ["limit-surface", "--json"] + load),
+        ("60 unknown points at 10^9990, hold", unknown_support(0, 60, 9990), ["hold", "--json"]),
+        ("a 900-gon region at 10^9990", big_region(900, 9990), ["limit-surface", "--json"] + load),
+        ("60 unknown points on a circle, limit-surface --load", unknown_support(0, 60), ["limit-surface", "--json"] + load),
+    ]
+    for k, (what, text, args) in enumerate(cases):
+        path = write(os.path.join(work, "work_%d.json" % k), text)
+        code, out, err, rss = run([cli] + args + [path], as_bytes=GB2, cpu_seconds=10, wall_seconds=60)
+        check(code in (0, 3) and (code == 0 or ("--max-work" in err and "units" in err)) and len(out) <= 10 * MiB,
+              "%s (%d bytes): exit %d, %.0f MB resident, %d bytes out, %r" % (what, len(text), code, rss, len(out),
+                                                                          err.strip()[:160]))
+    # A moderate scene is answered by default; a small budget makes it undecided, naming the option; raised, answered.
+    moderate = write(os.path.join(work, "work_moderate.json"), unknown_support(40, 10))
+    code, out, err, rss = run([cli, "limit-surface", "--json"] + load + [moderate], as_bytes=GB2, cpu_seconds=10)
+    check(code == 0 and json.loads(out).get("motion") in ("sticks", "slides", "impending", "depends"),
+          "a 40-gon region + 10 unknown legs answered by default: exit %d %r" % (code, err.strip()[:160]))
+    code, out, err, rss = run([cli, "limit-surface", "--json", "--max-work", "1000"] + load + [moderate],
+                              as_bytes=GB2, cpu_seconds=10)
+    check(code == 3 and err.startswith("wrenchkit: undecided: the work budget of 1000 units (--max-work)") and
+          "use --mode" not in err and out == "",
+          "--max-work 1000: undecided, exit %d, %r" % (code, err.strip()[:200]))
+    # batch: the line over budget is an undecided line (exit_code 3), the others answered in order.
+    lines = [moderate_text + "\n" for moderate_text in [json.dumps(json.loads(unknown_support(40, 10)))]] * 2
+    hostile_line = json.dumps(json.loads(unknown_support(40, 59))) + "\n"
+    code, out, err, rss = run([cli, "batch", "hold", "--jobs", "1"],
+                              stdin_iter=iter([lines[0].encode(), hostile_line.encode(), lines[1].encode()]),
+                              as_bytes=GB2, cpu_seconds=20)
+    got = [json.loads(l) for l in out.splitlines()]
+    check(len(got) == 3 and got[1].get("exit_code") == 3 and "--max-work" in json.dumps(got[1]) and
+          all("holds" in got[i] for i in (0, 2)),
+          "batch hold: the line over the work budget is undecided (3), the others answered: exit %d, %r" %
+          (code, out[:300]))
 
     if FAILURES:
         print("%d check(s) failed" % len(FAILURES))

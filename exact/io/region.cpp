@@ -1,10 +1,13 @@
 // [RG-1] Support regions: validation (through region_cgal.cpp), exact measures, cells. No CGAL here.
 #include "exact/io/region.h"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <utility>
 
 #include "exact/io/input_error.h"
+#include "exact/numbers/work_budget.h"
 
 namespace wrenchkit {
 
@@ -108,9 +111,31 @@ void settle_region(Support_region& r, const std::string& path) {
   if (r.uniform) r.total = r.force;  // the same number (area · F/area), kept as written
   if (r.total <= 0)
     throw Input_error(path + ".pressure: the pressure is zero on the whole region (a region's total force must be > 0)");
+  Support_region::Doubles& d = r.d;
+  d = {};
+  for (const auto& ring : r.rings) {
+    d.rings.emplace_back();
+    for (const Vec2& v : ring) d.rings.back().push_back({v.x.get_d(), v.y.get_d()});
+  }
+  for (const Region_triangle& t : r.triangles)
+    d.triangles.push_back({t.a.x.get_d(), t.a.y.get_d(), t.b.x.get_d(), t.b.y.get_d(), t.c.x.get_d(), t.c.y.get_d()});
+  d.pressure = {r.pressure[0].get_d(), r.pressure[1].get_d(), r.pressure[2].get_d()};
+  d.total = r.total.get_d();
+  for (const auto& v : d.rings[0]) d.gx += v[0], d.gy += v[1];
+  d.gx /= static_cast<double>(d.rings[0].size()), d.gy /= static_cast<double>(d.rings[0].size());
+  for (const auto& v : d.rings[0]) d.radius = std::max(d.radius, std::hypot(v[0] - d.gx, v[1] - d.gy));
 }
 
 Region_cells region_cells(const Support_region& r, int m) {
+  {  // [WORK] kPerCell units per cell, times the size of the triangles' numbers
+    std::size_t size = 1;
+    for (const Region_triangle& t : r.triangles)
+      for (const Vec2* v : {&t.a, &t.b, &t.c}) size = std::max({size, Work::size(v->x), Work::size(v->y)});
+    const std::size_t cells = Work::times(r.triangles.size(), Work::times(static_cast<std::size_t>(m), m));
+    Work::charge(Work::times(Work::times(cells, kPerCell), size),
+                 "making " + std::to_string(cells) + " cells of a support region" +
+                     (size > 1 ? " (numbers of size " + std::to_string(size) + ")" : ""));
+  }
   Region_cells out;
   std::map<std::pair<Rational, Rational>, std::size_t> shared;  // vertices on the coarse triangles' edges
   const Rational step = Rational(1, m);

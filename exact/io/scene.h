@@ -86,6 +86,15 @@ struct Support_region {
   Rational total;                           // W_R = ∫ p dA > 0 (= force when uniform)
   Vec2 moment;                              // ∫ r p dA (the centre of pressure is moment / total)
   std::array<Rational, 3> second;           // ∫ x² p, ∫ x y p, ∫ y² p
+  // The same in double, for the searches that propose twists (region_power_double): converted once when settled
+  // (each search evaluates the power thousands of times; converting the rationals on every evaluation was most of
+  // the time of a region decision).
+  struct Doubles {
+    std::vector<std::vector<std::array<double, 2>>> rings;
+    std::vector<std::array<double, 6>> triangles;  // a, b, c
+    std::array<double, 3> pressure{};
+    double total = 0, gx = 0, gy = 0, radius = 0;  // the outline's vertex mean and the largest distance from it
+  } d;
 };
 
 // A support: its points, and when a force is unknown the total normal force W and the centre of pressure c

@@ -17,6 +17,8 @@ struct Input_limits {
   // [BUDGET] The scene-wide budget on exact arithmetic (docs/scene-format.md "Limits"; Budget_tally below):
   std::size_t max_total_digits = 20000000;       // the digits of all the scene's numbers together
   std::size_t max_digits_times_contacts = 10000000;  // longest number's digits × (contacts + support points)
+  // [WORK] What one question may cost, in the engine's work units (exact/numbers/work_budget.h): past it, undecided.
+  std::size_t max_work = 10000000;
   // Not a limit but the reading's one policy: a contact off body.outline or with an outward normal, or an outline
   // that is not a simple polygon, is kept as a warning instead of refused (--lenient; exact/io/outline.h).
   bool lenient = false;

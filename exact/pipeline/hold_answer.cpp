@@ -24,7 +24,7 @@ Hold_item answer_hold(std::string_view text, std::string_view source, const Requ
 }
 
 Hold_item answer_hold(const Scene& scene, std::string_view text, const Request& request) {
-  return answer_into_item<Hold_item>(scene, [&](Hold_item& r) { decide(text, request, r); });
+  return answer_into_item<Hold_item>(scene, request.limits, [&](Hold_item& r) { decide(text, request, r); });
 }
 
 }  // namespace wrenchkit

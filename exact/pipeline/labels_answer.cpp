@@ -104,7 +104,7 @@ Labels_item answer_labels(std::string_view text, std::string_view source, const 
 }
 
 Labels_item answer_labels(const Scene& scene, const Request& r, const Labels_query& q) {
-  return answer_into_item<Labels_item>(scene, [&](Labels_item& item) { decide_labels(item, r, q); });
+  return answer_into_item<Labels_item>(scene, r.limits, [&](Labels_item& item) { decide_labels(item, r, q); });
 }
 
 }  // namespace wrenchkit

@@ -97,7 +97,7 @@ template <class Item, class Decide>
 Item read_and_answer(std::string_view text, std::string_view source, const Request& r, Scene& scratch, bool lazy,
                      Decide decide) {
   Item item;
-  guarded(item, [&] {
+  guarded(item, r.limits, [&] {
     read_scene_into(scratch, text, r.limits, source, lazy);
     decide(scratch, text, r, item);
   });
@@ -107,7 +107,7 @@ Item read_and_answer(std::string_view text, std::string_view source, const Reque
 template <class Item, class Decide>
 Item answer_read_scene(const Scene& scene, std::string_view text, const Request& r, Decide decide) {
   Item item;
-  guarded(item, [&] { decide(scene, text, r, item); });
+  guarded(item, r.limits, [&] { decide(scene, text, r, item); });
   return item;
 }
 

@@ -28,6 +28,7 @@
 #include "exact/io/scene.h"
 #include "exact/io/streaming_scene_reader.h"
 #include "exact/numbers/limits.h"
+#include "exact/numbers/work_budget.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/equilibrium.h"
 #include "exact/statics/generators.h"
@@ -94,20 +95,24 @@ struct Undecided_error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Runs `decide` and turns what it throws into a status and a message on `item` (Input_error → bad_input,
-// Undecided_error → undecided, std::bad_alloc → internal_error "out of memory", any other exception →
-// internal_error): the one place where the engine's exceptions become answers.
+// Runs `decide` under the request's work budget (limits.max_work, exact/numbers/work_budget.h) and turns what it
+// throws into a status and a message on `item` (Input_error → bad_input, Undecided_error and Work_exhausted →
+// undecided, std::bad_alloc → internal_error "out of memory", any other exception → internal_error): the one place
+// where the engine's exceptions become answers.
 template <class Item, class F>
-void guarded(Item& item, F&& decide) {
+void guarded(Item& item, const Input_limits& limits, F&& decide) {
   const auto fail = [&](Status s, std::string m) {
     item.status = s;
     item.message = std::move(m);
   };
   try {
+    const Work_scope budget(limits.max_work);
     decide();
   } catch (const Input_error& e) {
     fail(Status::bad_input, e.what());
   } catch (const Undecided_error& e) {
+    fail(Status::undecided, e.what());
+  } catch (const Work_exhausted& e) {
     fail(Status::undecided, e.what());
   } catch (const std::bad_alloc&) {
     fail(Status::internal_error, "out of memory");
@@ -121,16 +126,16 @@ void guarded(Item& item, F&& decide) {
 template <class Item, class Decide>
 Item answer_into_item(std::string_view text, std::string_view source, const Input_limits& limits, Decide decide) {
   Item item;
-  guarded(item, [&] {
+  guarded(item, limits, [&] {
     read_scene_into(item.scene, text, limits, source, false);
     decide(item);
   });
   return item;
 }
 template <class Item, class Decide>
-Item answer_into_item(const Scene& scene, Decide decide) {
+Item answer_into_item(const Scene& scene, const Input_limits& limits, Decide decide) {
   Item item;
-  guarded(item, [&] {
+  guarded(item, limits, [&] {
     item.scene = scene;
     decide(item);
   });

@@ -49,7 +49,7 @@ Quality_item answer_quality(std::string_view text, std::string_view source, cons
 
 Quality_item answer_quality(const Scene& scene, std::string_view text, const Request& request,
                             const Quality_query& query) {
-  return answer_into_item<Quality_item>(scene, [&](Quality_item& r) { decide(text, request, query, r); });
+  return answer_into_item<Quality_item>(scene, request.limits, [&](Quality_item& r) { decide(text, request, query, r); });
 }
 
 }  // namespace wrenchkit

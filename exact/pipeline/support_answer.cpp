@@ -175,7 +175,7 @@ Support_item answer_support(std::string_view text, std::string_view source, cons
 
 Support_item answer_support(const Scene& scene, std::string_view text, std::string_view source, const Request& request,
                             const Support_query& query) {
-  return answer_into_item<Support_item>(scene, [&](Support_item& item) {
+  return answer_into_item<Support_item>(scene, request.limits, [&](Support_item& item) {
     answer(source, request, query, item);
     check_motion(text, request, item);
   });

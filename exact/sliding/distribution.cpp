@@ -1,11 +1,13 @@
 #include "exact/sliding/distribution.h"
 
 #include <algorithm>
+#include <set>
 #include <stdexcept>
 #include <string>
 
 #include "exact/io/support_check.h"
 #include "exact/numbers/exact_lp.h"
+#include "exact/numbers/work_budget.h"
 
 namespace wrenchkit {
 
@@ -120,16 +122,31 @@ std::vector<std::vector<Rational>> vertices(const Support& s, const Admissible& 
                             std::to_string(kMaxEnumeratedUnknowns));
   const Rows r = rows_of(s, a);
   const std::size_t k = a.unknown.size();
+  {  // [WORK] one unit per candidate basis, times the size of the rows' numbers
+    std::size_t size = 1;
+    for (const auto& col : r.col)
+      for (const Rational& x : col) size = std::max(size, Work::size(x));
+    for (const Rational& x : r.rhs) size = std::max(size, Work::size(x));
+    const std::size_t bases = k + k * (k - 1) / 2 + k * (k - 1) * (k - 2) / 6;
+    Work::charge(Work::times(bases, size), "enumerating the extreme distributions of the " + std::to_string(k) +
+                                               " support forces not given (" + std::to_string(bases) +
+                                               " candidate bases)");
+  }
   std::vector<std::vector<Rational>> out;
+  std::set<std::vector<std::pair<std::size_t, Rational>>> seen;  // each vertex's nonzero unknown forces, once
   const auto consider = [&](const std::vector<std::size_t>& B) {
     std::vector<Rational> z;
     if (!solve_basis(r, B, z)) return;
     for (const Rational& x : z)
       if (x < 0) return;
+    std::vector<std::pair<std::size_t, Rational>> nonzero;
+    for (std::size_t j = 0; j < B.size(); ++j)
+      if (z[j] != 0) nonzero.emplace_back(B[j], z[j]);
+    std::sort(nonzero.begin(), nonzero.end());
+    if (!seen.insert(nonzero).second) return;
     std::vector<Rational> u(k, Rational(0));
     for (std::size_t j = 0; j < B.size(); ++j) u[B[j]] = z[j];
-    std::vector<Rational> f = a.with(u);
-    if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(std::move(f));
+    out.push_back(a.with(u));
   };
   // The rank of the columns decides the basis size: a vertex has at most rank-many nonzero unknown forces,
   // and every basic solution of a smaller support is also reached as a degenerate basis of full size, except
@@ -142,6 +159,25 @@ std::vector<std::vector<Rational>> vertices(const Support& s, const Admissible& 
     for (std::size_t j = i + 1; j < k; ++j)
       for (std::size_t l = j + 1; l < k; ++l) consider({i, j, l});
   return out;
+}
+
+void charge_distributions(const Support& s, const std::vector<std::vector<Rational>>& distributions) {
+  std::size_t size = 1;
+  for (const Support_point& p : s.points) {
+    size = std::max({size, Work::size(p.at.x), Work::size(p.at.y)});
+    if (p.force) size = std::max(size, Work::size(*p.force));
+  }
+  for (const std::vector<Rational>& f : distributions)
+    for (const Rational& x : f) size = std::max(size, Work::size(x));
+  std::size_t edges = 0;
+  for (const Support_region& g : s.regions)
+    for (const std::vector<Vec2>& ring : g.rings) edges += ring.size();
+  const std::size_t n = distributions.size(), k = s.points.size() + Work::times(kPerRegionEdge, edges);
+  Work::charge(Work::times(Work::times(n, kPerDistribution), Work::times(k, size)),
+               "deciding each of the " + std::to_string(n) + " extreme distributions of the support (" +
+                   std::to_string(s.points.size()) + " points" +
+                   (edges ? ", regions of " + std::to_string(edges) + " edges" : "") +
+                   (size > 1 ? ", numbers of size " + std::to_string(size) : "") + ")");
 }
 
 F_optimum maximise_over(const Support& s, const Admissible& a, const std::vector<Rational>& coef) {

@@ -329,6 +329,7 @@ Motion_answer over_f(const Support_model& model, const Vec3q& p, Mode mode, cons
   const Admissible& a = model.admissible();
   const bool regions = model.has_regions();
   const std::vector<std::vector<Rational>>& v = model.extreme();
+  charge_distributions(s, v);
   Motion_answer r;
   std::vector<Motion_answer> at;  // each vertex's answer, with its witness
   std::optional<std::size_t> first[3];  // the first vertex that sticks, is on its surface, slides

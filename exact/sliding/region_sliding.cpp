@@ -202,35 +202,35 @@ Fan_bracket fan_integrals(const Support_region& r, const Vec2& c, long bits) {
 }
 
 double fan_power_double(const Support_region& r, double cx, double cy) {
-  const double p0 = r.pressure[0].get_d(), g0 = r.pressure[1].get_d(), g1 = r.pressure[2].get_d();
-  const double pc = p0 + g0 * cx + g1 * cy;
+  const Support_region::Doubles& d = r.d;
+  const double pc = d.pressure[0] + d.pressure[1] * cx + d.pressure[2] * cy, g0 = d.pressure[1], g1 = d.pressure[2];
   double K = 0, Jx = 0, Jy = 0;
-  for_each_edge(r, [&](const Vec2& a, const Vec2& b) {
-    const double ax = a.x.get_d() - cx, ay = a.y.get_d() - cy, bx = b.x.get_d() - cx, by = b.y.get_d() - cy;
-    const double ex = bx - ax, ey = by - ay, cr = ax * by - ay * bx;
-    if (cr == 0) return;
-    const Edge_scalars<double> s{cr, std::fabs(cr), ex * ex + ey * ey, ax * ex + ay * ey, bx * ex + by * ey,
-                                 ax * ax + ay * ay, bx * bx + by * by, g0 * ey - g1 * ex, g0 * ex + g1 * ey, pc, ex, ey};
-    fan_edge(s, K, Jx, Jy);
-  });
+  for (const auto& ring : d.rings)
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const auto& a = ring[i];
+      const auto& b = ring[(i + 1) % ring.size()];
+      const double ax = a[0] - cx, ay = a[1] - cy, bx = b[0] - cx, by = b[1] - cy;
+      const double ex = bx - ax, ey = by - ay, cr = ax * by - ay * bx;
+      if (cr == 0) continue;
+      const Edge_scalars<double> s{cr, std::fabs(cr), ex * ex + ey * ey, ax * ex + ay * ey, bx * ex + by * ey,
+                                   ax * ax + ay * ay, bx * bx + by * by, g0 * ey - g1 * ex, g0 * ex + g1 * ey, pc, ex, ey};
+      fan_edge(s, K, Jx, Jy);
+    }
   return K;
 }
 
 double region_power_double(const Support_region& r, const double* q) {
-  if (q[2] == 0) return r.total.get_d() * std::hypot(q[0], q[1]);
+  const Support_region::Doubles& d = r.d;
+  if (q[2] == 0) return d.total * std::hypot(q[0], q[1]);
   const double cx = -q[1] / q[2], cy = q[0] / q[2];
   // The closed form cancels badly for a centre far from the region (its terms grow like the distance squared, the
   // sum like the distance): there |v| is smooth, and the 7-point rule on the triangles cut in four is accurate.
-  double gx = 0, gy = 0, n = 0, radius = 0;
-  for (const Vec2& v : r.rings[0]) gx += v.x.get_d(), gy += v.y.get_d(), n += 1;
-  gx /= n, gy /= n;
-  for (const Vec2& v : r.rings[0]) radius = std::max(radius, std::hypot(v.x.get_d() - gx, v.y.get_d() - gy));
-  if (std::hypot(cx - gx, cy - gy) <= 8 * radius) return std::fabs(q[2]) * fan_power_double(r, cx, cy);
-  const double p0 = r.pressure[0].get_d(), p1 = r.pressure[1].get_d(), p2 = r.pressure[2].get_d();
+  if (std::hypot(cx - d.gx, cy - d.gy) <= 8 * d.radius) return std::fabs(q[2]) * fan_power_double(r, cx, cy);
+  const double p0 = d.pressure[0], p1 = d.pressure[1], p2 = d.pressure[2];
   double h = 0;
   const auto f = [&](double x, double y) { return std::hypot(q[0] - q[2] * y, q[1] + q[2] * x) * (p0 + p1 * x + p2 * y); };
-  for (const Region_triangle& t : r.triangles) {
-    const double P[3][2] = {{t.a.x.get_d(), t.a.y.get_d()}, {t.b.x.get_d(), t.b.y.get_d()}, {t.c.x.get_d(), t.c.y.get_d()}};
+  for (const auto& t : d.triangles) {
+    const double P[3][2] = {{t[0], t[1]}, {t[2], t[3]}, {t[4], t[5]}};
     const double M[3][2] = {{(P[0][0] + P[1][0]) / 2, (P[0][1] + P[1][1]) / 2},
                             {(P[1][0] + P[2][0]) / 2, (P[1][1] + P[2][1]) / 2},
                             {(P[2][0] + P[0][0]) / 2, (P[2][1] + P[0][1]) / 2}};

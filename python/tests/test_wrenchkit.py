@@ -296,6 +296,20 @@ def test_the_scene_budget_and_its_limits_keys():
     assert '"exit_code": 2' in lines[0] and "--max-digits-times-contacts" in lines[0]
 
 
+def test_the_work_budget_makes_a_dear_question_undecided():
+    # issue 34: a table on four legs whose forces are not given: answered by default; under a budget of 100 work
+    # units undecided (UndecidedError naming --max-work), in batch an undecided line, and raised again, answered.
+    table = {"support": {"mu": 1, "weight": 1, "pressure_center": [0, 0],
+                         "points": [{"at": [1, 1]}, {"at": [-1, 1]}, {"at": [-1, -1]}, {"at": [1, -1]}]},
+             "load": {"force": ["1/2", 0], "at": [0, 0]}}
+    assert wrenchkit.hold(table)["holds"] is True
+    with pytest.raises(wrenchkit.UndecidedError, match=r"the work budget of 100 units \(--max-work\)"):
+        wrenchkit.hold(wrenchkit.Scene(table, limits={"max_work": 100}))
+    assert wrenchkit.hold(wrenchkit.Scene(table, limits={"max_work": 100000}))["holds"] is True
+    lines = list(wrenchkit.batch("hold", [table, table], max_work=100))
+    assert all('"exit_code": 3' in l and "--max-work" in l for l in lines)
+
+
 # ---- one pipeline: every question takes the mode, parsed once, and answers as the CLI does --------------
 
 def test_an_unknown_mode_is_a_value_error_everywhere():
