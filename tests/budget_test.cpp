@@ -273,6 +273,65 @@ TEST(Budget, DefaultWorkBudgetAnswersEveryKnownSupportSceneWithMarginFour) {
             << costliest << ", " << most << " units\n";
 }
 
+// [WORK] Past the budget for deciding every extreme distribution, the cheap routes (slides by one twist against the
+// LP over F, depends by the LP's extreme distributions) answer only what the full decision answers (or, where it is
+// undecided, what their certificate proves), with certificates the independent checker accepts. Random supports of 12–24 points whose forces are not given, random loads; the
+// budget affords the enumeration and a few distributions, not all. Fixed seed; a failure prints and dumps the scene.
+TEST(Budget, CheapRoutesPastTheWorkBudgetAgreeWithTheFullDecision) {
+  std::mt19937_64 rng(20261129);
+  const auto uniform = [&](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo + 1)); };
+  std::size_t cheap = 0, cases = 0, beyond = 0, kinds[3] = {0, 0, 0};
+  for (int k = 0; k < 60; ++k) {
+    const int n = uniform(12, 24);
+    std::string pts;
+    for (int i = 0; i < n; ++i)
+      pts += std::string(i ? ", " : "") + "{\"at\": [" + std::to_string(uniform(-40, 40)) + ", " +
+             std::to_string(uniform(-40, 40)) + "]}";
+    // the centre of pressure at the points' first mean (inside their hull)
+    const std::string text = "{\"wrenchkit\": 1, \"support\": {\"mu\": \"1/2\", \"weight\": 10, \"pressure_center\": [0, 0], "
+                             "\"points\": [" + pts + "]}}";
+    Scene scene;
+    try {
+      scene = read_scene(text, Input_limits{});
+    } catch (const Input_error&) {
+      continue;  // the pressure centre outside the points' hull: no admissible distribution
+    }
+    const Vec3q load{Rational(uniform(-5, 5)), Rational(uniform(-5, 5)), Rational(uniform(-200, 200))};
+    if (is_zero(load)) continue;
+    Support_query q;
+    q.polytopes = false;
+    q.load = load;
+    Request full;
+    full.limits.max_work = static_cast<std::size_t>(-1);
+    const Support_item a = answer_support(text, "full", full, q);
+    ASSERT_EQ(a.status, Status::answered) << a.message << "\n" << text;
+    const std::size_t points = static_cast<std::size_t>(n), bases = points * (points * points + 5) / 6;
+    Request small;
+    small.limits.max_work = bases + 6 * kPerDistribution * points;  // the enumeration and a few distributions
+    ASSERT_LT(small.limits.max_work, a.motion->per_vertex.size() * kPerDistribution * points) << text;
+    const Support_item b = answer_support(text, "cheap", small, q);
+    ++cases;
+    if (b.status == Status::undecided && b.message.rfind(kWorkBudget, 0) == 0) continue;
+    ASSERT_EQ(b.status, Status::answered) << b.message << "\n" << text;
+    ++cheap;
+    kinds[b.motion->motion == Motion::slides ? 0 : b.motion->motion == Motion::depends ? 1 : 2]++;
+    if (a.motion->motion == Motion::undecided) {  // the full route undecided: the cheap one's certificate was checked
+      ++beyond;
+      continue;
+    }
+    EXPECT_EQ(std::string(motion_name(b.motion->motion)), std::string(motion_name(a.motion->motion)))
+        << "case " << k << ", load " << to_string(load[0]) << ", " << to_string(load[1]) << ", " << to_string(load[2])
+        << ": dumped to " << test::dump_failure(text, "cheap_routes");
+    EXPECT_TRUE(b.motion->per_vertex.empty());
+  }
+  std::cout << "cheap routes: " << cheap << " of " << cases << " answered past the budget (" << kinds[0]
+            << " slides, " << kinds[1] << " depends), each as the full decision or, " << beyond
+            << " of them, certified where the full decision is undecided\n";
+  EXPECT_GT(kinds[0], 3u);
+  EXPECT_GT(kinds[1], 1u);
+  EXPECT_EQ(kinds[2], 0u);
+}
+
 // Within every limit, a balanced scene of six contacts of 10 000-digit fractions has equilibrium weights of
 // about 150 000 characters; the checker's fixed limit of 100 000 rejected the engine's own certificate (exit 4,
 // "always a bug"). Its limit now follows the scene's longest number (certificate-format.md §2).

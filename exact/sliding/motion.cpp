@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 
 #include "exact/io/support_check.h"
+#include "exact/numbers/work_budget.h"
 #include "exact/sliding/strategies.h"
 
 namespace wrenchkit {
@@ -311,6 +313,91 @@ Motion_answer at_distribution(const Support& s, const std::vector<Rational>& f, 
   return known_points(Support_model(t, std::move(known)), p, mode, own);
 }
 
+// The regions' frictional power in double (the same for every distribution), for the union searches; empty without
+// regions.
+std::function<double(const double*)> regions_power(const Support& s) {
+  if (s.regions.empty()) return {};
+  std::vector<double> mu_r;
+  for (const Support_region& g : s.regions) mu_r.push_back(s.mu_of(g).get_d());
+  return [&s, mu_r](const double* q) {
+    double h = 0;
+    for (std::size_t g = 0; g < s.regions.size(); ++g)
+      if (mu_r[g] != 0) h += mu_r[g] * region_power_double(s.regions[g], q);
+    return h;
+  };
+}
+
+// [WORK] When deciding every extreme distribution is beyond the work budget (issue 34): the answers that need no
+// vertex but the ones they name — slides for every distribution by one twist (the load's own, then the translation
+// along its force) against the LP over F (and the regions' slide blocks), or depends by the LP's two extreme
+// distributions for the load's twist (the least and the most frictional power), decided alone (charged as two). Sticks
+// for every distribution has no such certificate (it is every vertex's): nothing then, and the caller's budget error
+// stands. The answer's per_vertex stays empty.
+std::optional<Motion_answer> without_every_vertex(const Support_model& model, const Vec3q& p, Mode mode,
+                                                  const Motion_options& o) {
+  const Support& s = model.support();
+  const Admissible& a = model.admissible();
+  if (is_zero(p)) return std::nullopt;
+  Motion_answer r;
+  std::vector<Vec3q> twists{p};
+  if (p[2] != 0 && (p[0] != 0 || p[1] != 0)) twists.push_back({p[0], p[1], Rational(0)});
+  for (const Vec3q& q : twists)
+    if ((r.sliding = outside_every(s, a, p, q, true, 500, r.cells))) {
+      r.motion = Motion::slides;
+      r.decided_by = Decided_by::twist;
+      return r;
+    }
+  r.cells = 0;
+  const auto inside = [](const Motion_answer& m) { return m.motion == Motion::sticks || m.motion == Motion::impending; };
+  const auto outside = [](const Motion_answer& m) { return m.motion == Motion::slides || m.motion == Motion::impending; };
+  // Two rounds: the load's twist, then the separating twist of the most frictional distribution when it slides (its
+  // least frictional distribution is the likeliest to slide too, its most the likeliest to stick).
+  Vec3q q = p;
+  for (int round = 0; round < 2; ++round) {
+    const Power_range range = power_range(s, a, q);
+    charge_distributions(s, {range.min_distribution, range.max_distribution});
+    const Motion_answer lo = at_distribution(s, range.min_distribution, p, mode, o);
+    const Motion_answer hi = at_distribution(s, range.max_distribution, p, mode, o);
+    for (const auto& [in, out] : {std::pair{&hi, &lo}, std::pair{&lo, &hi}})
+      if (inside(*in) && outside(*out) && (in->motion == Motion::sticks || out->motion == Motion::slides)) {
+        r.sticking = in->sticking ? in->sticking : in->impending->forces;
+        r.sliding = out->sliding ? out->sliding : out->impending->twist;
+        r.held_as = in->motion;
+        r.moved_as = out->motion;
+        r.cells = in->cells + out->cells;
+        r.motion = Motion::depends;
+        r.decided_by = Decided_by::lp;
+        return r;
+      }
+    if (hi.motion != Motion::slides) return std::nullopt;
+    q = hi.sliding->twist;
+    if ((r.sliding = outside_every(s, a, p, q, true, 500, r.cells))) {
+      r.motion = Motion::slides;
+      r.decided_by = Decided_by::twist;
+      return r;
+    }
+  }
+  // Slides for every distribution by cutting planes: the union search over a few vertices proposes a twist, the exact
+  // LP over F checks it and, when the twist is not enough, adds its most frictional vertex (at most 8 rounds).
+  std::vector<std::vector<Rational>> some{power_range(s, a, p).max_distribution};
+  const std::function<double(const double*)> common = regions_power(s);
+  Vec3q start = q;
+  for (int round = 0; round < 8; ++round) {
+    const std::optional<Vec3q> t = union_search(s, some, p, &start, common);
+    if (!t) break;
+    if ((r.sliding = outside_every(s, a, p, *t, true, kMaxRegionCells, r.cells))) {
+      r.motion = Motion::slides;
+      r.decided_by = Decided_by::twist;
+      return r;
+    }
+    std::vector<Rational> f = power_range(s, a, *t).max_distribution;
+    if (std::find(some.begin(), some.end(), f) != some.end()) break;
+    some.push_back(std::move(f));
+    start = *t;
+  }
+  return std::nullopt;
+}
+
 // [SL-3] [RG-3] Some force not given: the extreme distributions first (each by the known-forces decision, with its
 // witness), then what every vertex shares needs one more step:
 //
@@ -329,7 +416,12 @@ Motion_answer over_f(const Support_model& model, const Vec3q& p, Mode mode, cons
   const Admissible& a = model.admissible();
   const bool regions = model.has_regions();
   const std::vector<std::vector<Rational>>& v = model.extreme();
-  charge_distributions(s, v);
+  try {
+    charge_distributions(s, v);
+  } catch (const Work_exhausted&) {  // too many to decide each: the cheap routes, else undecided
+    if (std::optional<Motion_answer> cheap = without_every_vertex(model, p, mode, o)) return *cheap;
+    throw;
+  }
   Motion_answer r;
   std::vector<Motion_answer> at;  // each vertex's answer, with its witness
   std::optional<std::size_t> first[3];  // the first vertex that sticks, is on its surface, slides
@@ -439,20 +531,8 @@ Motion_answer over_f(const Support_model& model, const Vec3q& p, Mode mode, cons
         }
       }
     }
-  {
-    std::function<double(const double*)> common;  // the regions' power, the same for every distribution
-    std::vector<double> mu_r;
-    for (const Support_region& g : s.regions) mu_r.push_back(s.mu_of(g).get_d());
-    if (regions)
-      common = [&](const double* q) {
-        double h = 0;
-        for (std::size_t g = 0; g < s.regions.size(); ++g)
-          if (mu_r[g] != 0) h += mu_r[g] * region_power_double(s.regions[g], q);
-        return h;
-      };
-    if (const auto q = union_search(s, v, p, &twists.front(), common))
-      if (for_all(*q, kMaxRegionCells)) return decided(Motion::slides, Decided_by::twist);
-  }
+  if (const auto q = union_search(s, v, p, &twists.front(), regions_power(s)))
+    if (for_all(*q, kMaxRegionCells)) return decided(Motion::slides, Decided_by::twist);
   int largest = 0;
   std::size_t cells = 0;
   if ((found = stick_over_f(s, a, p, regions ? 8 : o.sides, largest, cells))) {
