@@ -162,7 +162,7 @@ const std::vector<Option> kLimits = {
      "budget: the longest number's digits times the contacts and support points (default 10000000)",
      [](Options& o, S n, S v) { o.limits.max_digits_times_contacts = count_value(n, v); }, Role::limit},
     {"max-work", "N",
-     "budget: the work units one question may spend (default 10000000; past it: undecided, exit 3; docs/limits.md)",
+     "budget: the work units one question may spend (default 10000000; past it: undecided, exit 3; docs/scene-format.md, Limits)",
      [](Options& o, S n, S v) { o.limits.max_work = count_value(n, v); }, Role::limit},
     {"lenient", nullptr,
      "analyse a scene whose contacts are off body.outline or point out of the body (or whose outline is not a simple "

@@ -1,4 +1,4 @@
-// [WORK] The work budget of one request (docs/scene-format.md "Limits"; docs/limits.md): what a question may cost,
+// [WORK] The work budget of one request (docs/scene-format.md "Limits"): what a question may cost,
 // counted in the engine's own units, never in wall time, so that an answer is the same on every machine and every run.
 //
 // A unit is one elementary step on numbers of one 64-bit limb: the steps the engine charges are those whose count
