@@ -164,6 +164,9 @@ const std::vector<Option> kLimits = {
     {"max-work", "N",
      "budget: the work units one question may spend (default 10000000; past it: undecided, exit 3; docs/scene-format.md, Limits)",
      [](Options& o, S n, S v) { o.limits.max_work = count_value(n, v); }, Role::limit},
+    {"max-certificate-size", "BYTES",
+     "the longest certificate a question may write and check reads (default 8388608; past it: undecided, exit 3)",
+     [](Options& o, S n, S v) { o.limits.max_certificate_bytes = count_value(n, v); }, Role::limit},
     {"lenient", nullptr,
      "analyse a scene whose contacts are off body.outline or point out of the body (or whose outline is not a simple "
      "polygon) as given, with a warning, instead of refusing it",

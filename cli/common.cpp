@@ -213,9 +213,10 @@ Ended failure_of(std::exception_ptr e) {
 }
 
 std::string cli_message(Status s, const std::string& message) {
-  // An undecided status is the float mode's, or the work budget's (which names its own option).
-  return s == Status::undecided && message.rfind(kWorkBudget, 0) != 0 ? message + undecided_advice(Mode::float_only)
-                                                                       : message;
+  // An undecided status is the float mode's, or a budget's (the work, the certificate's size: it names its option).
+  return s == Status::undecided && message.find("(--max-") == std::string::npos
+             ? message + undecided_advice(Mode::float_only)
+             : message;
 }
 
 int report(const Ended& e) {

@@ -77,6 +77,7 @@ Input_limits limits_of(const py::dict& l) {
     x.max_digits_times_contacts = l["max_digits_times_contacts"].cast<std::size_t>();
   if (l.contains("max_region_vertices")) x.max_region_vertices = l["max_region_vertices"].cast<std::size_t>();
   if (l.contains("max_work")) x.max_work = l["max_work"].cast<std::size_t>();
+  if (l.contains("max_certificate_size")) x.max_certificate_bytes = l["max_certificate_size"].cast<std::size_t>();
   return x;
 }
 

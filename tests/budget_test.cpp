@@ -6,6 +6,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <iterator>
 #include <cstdlib>
@@ -330,6 +331,46 @@ TEST(Budget, CheapRoutesPastTheWorkBudgetAgreeWithTheFullDecision) {
   EXPECT_GT(kinds[0], 3u);
   EXPECT_GT(kinds[1], 1u);
   EXPECT_EQ(kinds[2], 0u);
+}
+
+// [WORK] Scale-free searches (issue 34): a region at 10^9990 is decided as the same region at scale 1 — its doubles
+// would overflow, so the search runs in a frame scaled by a power of two and the witness is mapped back exactly. A
+// 30-gon (radius 1000, uniform pressure) and loads that stick, slide, and a point beside it; each answer at scale 1 and
+// at 10^9990 (the moment scaled with it) the same, the certificates accepted by the independent checker.
+TEST(Budget, ARegionAtScaleTenToThe9990IsDecidedAsAtScaleOne) {
+  const auto scene = [](const std::string& suffix) {
+    std::string outline;
+    for (int k = 0; k < 30; ++k) {
+      const double a = 2 * 3.141592653589793 * k / 30;
+      outline += std::string(k ? ", " : "") + "[\"" + std::to_string(std::lround(1000 * std::cos(a))) + suffix +
+                 "\", \"" + std::to_string(std::lround(1000 * std::sin(a))) + suffix + "\"]";
+    }
+    return "{\"wrenchkit\": 1, \"support\": {\"mu\": \"1/2\", \"points\": [{\"at\": [\"0\", \"2000" + suffix +
+           "\"], \"force\": 1}], \"regions\": [{\"outline\": [" + outline + "], \"pressure\": \"uniform\", \"force\": 3}]}}";
+  };
+  const std::string unit = scene(""), big = scene("e9990");
+  Request r;
+  r.limits.max_work = static_cast<std::size_t>(-1);
+  const Rational ten9990 = [] { Rational x; mpz_ui_pow_ui(x.get_num_mpz_t(), 10, 9990); return x; }();
+  std::size_t kinds = 0;
+  for (const auto& [fx, m] : {std::pair{"1/4", "200"}, std::pair{"1", "300"}, std::pair{"0", "900"}, std::pair{"3", "0"},
+                              std::pair{"1/2", "-500"}}) {
+    Support_query q;
+    q.polytopes = false;
+    std::string why;
+    const Rational f = *parse_rational(fx, false, Input_limits{}, why), mm = *parse_rational(m, false, Input_limits{}, why);
+    q.load = Vec3q{f, Rational(0), mm};
+    const Support_item a = answer_support(unit, "unit", r, q);
+    q.load = Vec3q{f, Rational(0), mm * ten9990};
+    const Support_item b = answer_support(big, "big", r, q);
+    ASSERT_EQ(a.status, Status::answered) << a.message;
+    ASSERT_EQ(b.status, Status::answered) << b.message;
+    EXPECT_NE(a.motion->motion, Motion::undecided) << fx << ", " << m;
+    EXPECT_EQ(std::string(motion_name(b.motion->motion)), std::string(motion_name(a.motion->motion))) << fx << ", " << m;
+    kinds |= 1u << static_cast<unsigned>(a.motion->motion);
+  }
+  EXPECT_NE(kinds & (1u << static_cast<unsigned>(Motion::sticks)), 0u);
+  EXPECT_NE(kinds & (1u << static_cast<unsigned>(Motion::slides)), 0u);
 }
 
 // Within every limit, a balanced scene of six contacts of 10 000-digit fractions has equilibrium weights of

@@ -230,7 +230,8 @@ def main():
     for k, (what, text, args) in enumerate(cases):
         path = write(os.path.join(work, "work_%d.json" % k), text)
         code, out, err, rss = run([cli] + args + [path], as_bytes=GB2, cpu_seconds=10, wall_seconds=60)
-        check(code in (0, 3) and (code == 0 or ("--max-work" in err and "units" in err)) and len(out) <= 10 * MiB,
+        check(code in (0, 3) and (code == 0 or "--max-work" in err or "--max-certificate-size" in err) and
+              len(out) <= 10 * MiB,
               "%s (%d bytes): exit %d, %.0f MB resident, %d bytes out, %r" % (what, len(text), code, rss, len(out),
                                                                           err.strip()[:160]))
     # A moderate scene is answered by default; a small budget makes it undecided, naming the option; raised, answered.
@@ -243,6 +244,22 @@ def main():
     check(code == 3 and err.startswith("wrenchkit: undecided: the work budget of 1000 units (--max-work)") and
           "use --mode" not in err and out == "",
           "--max-work 1000: undecided, exit %d, %r" % (code, err.strip()[:200]))
+    # The certificate's size: a question whose certificate would pass --max-certificate-size is undecided; `check`
+    # rejects a longer certificate before reading it.
+    thirty = write(os.path.join(work, "work_thirty.json"), unknown_support(0, 30, load=False))
+    cert30 = os.path.join(work, "work_thirty.cert.json")
+    code, out, err, rss = run([cli, "limit-surface", "--certificate", cert30] + load + [thirty], as_bytes=GB2,
+                              cpu_seconds=10)
+    size = os.path.getsize(cert30) if code == 0 else 0
+    check(code == 0 and size > 100000, "30 unknown points: answered, a certificate of %d bytes" % size)
+    code, out, err, rss = run([cli, "limit-surface", "--max-certificate-size", str(size // 2), "--json"] + load + [thirty],
+                              as_bytes=GB2, cpu_seconds=10)
+    check(code == 3 and "--max-certificate-size" in err and "use --mode" not in err and out == "",
+          "a certificate twice --max-certificate-size: undecided, exit %d, %r" % (code, err.strip()[:200]))
+    code, out, err, rss = run([cli, "check", "--max-certificate-size", str(size - 1), thirty, cert30], as_bytes=GB2,
+                              cpu_seconds=10)
+    check(code == 1 and "more than the limit" in (out + err) and "--max-certificate-size" in (out + err),
+          "check rejects a certificate over --max-certificate-size: exit %d, %r" % (code, (out + err).strip()[:200]))
     # batch: the line over budget is an undecided line (exit_code 3), the others answered in order.
     lines = [moderate_text + "\n" for moderate_text in [json.dumps(json.loads(unknown_support(40, 10)))]] * 2
     hostile_line = json.dumps(json.loads(unknown_support(40, 59))) + "\n"

@@ -22,6 +22,11 @@ namespace wrenchkit {
 // touches itself, or repeats a vertex), a hole not strictly inside the outline, holes that meet or nest, a
 // negative pressure at an outline vertex, a zero total force (uniform: force ≤ 0).
 void settle_region(Support_region& r, const std::string& path);
+// The region's doubles (Support_region::Doubles) from its exact fields (settle_region calls it).
+void settle_doubles(Support_region& r);
+// The region scaled by k > 0 about the origin, settled without triangulating again (a similarity keeps the
+// triangulation): points × k, pressure ÷ k² (the same forces), moments × k and × k², its doubles made anew.
+Support_region scaled_region(const Support_region& r, const Rational& k);
 
 // The pressure p = c[0] + c[1]·x + c[2]·y at a point.
 Rational pressure_at(const std::array<Rational, 3>& c, const Vec2& at);

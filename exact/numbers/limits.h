@@ -19,6 +19,8 @@ struct Input_limits {
   std::size_t max_digits_times_contacts = 10000000;  // longest number's digits × (contacts + support points)
   // [WORK] What one question may cost, in the engine's work units (exact/numbers/work_budget.h): past it, undecided.
   std::size_t max_work = 10000000;
+  // The longest certificate a question may write (and the checker reads): past it, undecided (and rejected by check).
+  std::size_t max_certificate_bytes = 8u << 20;
   // Not a limit but the reading's one policy: a contact off body.outline or with an outward normal, or an outline
   // that is not a simple polygon, is kept as a warning instead of refused (--lenient; exact/io/outline.h).
   bool lenient = false;

@@ -29,6 +29,7 @@ wrenchkit_checker::Limits checker_limits(const Input_limits& l) {
   c.max_region_vertices = l.max_region_vertices;
   c.max_total_digits = l.max_total_digits;
   c.max_digits_times_contacts = l.max_digits_times_contacts;
+  c.max_certificate_bytes = l.max_certificate_bytes;
   return c;
 }
 

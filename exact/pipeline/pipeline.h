@@ -152,9 +152,19 @@ wrenchkit_checker::Limits checker_limits(const Input_limits& limits);
 std::string check_certificates(std::string_view scene_text, const std::vector<std::string_view>& certificates,
                                const Request& request);
 // The same on an item: a rejection makes it check_failed with the reason (every answer's last step).
+// A certificate longer than limits.max_certificate_bytes makes the item undecided instead (the answer's size is
+// bounded by default, docs/scene-format.md "Limits"), unchecked.
 template <class Item>
 void check_into(Item& item, std::string_view scene_text, const std::vector<std::string_view>& certificates,
                 const Request& request) {
+  for (const std::string_view c : certificates)
+    if (c.size() > request.limits.max_certificate_bytes) {
+      item.status = Status::undecided;
+      item.message = "the answer's certificate would be " + std::to_string(c.size()) +
+                     " bytes, more than the limit of " + std::to_string(request.limits.max_certificate_bytes) +
+                     " (--max-certificate-size; raise it to have the answer)";
+      return;
+    }
   std::string why = check_certificates(scene_text, certificates, request);
   if (!why.empty()) item.status = Status::check_failed, item.message = std::move(why);
 }

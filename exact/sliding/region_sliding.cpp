@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "exact/numbers/work_budget.h"
 #include "exact/sliding/strategies.h"
 #include "exact/sliding/sliding.h"
 
@@ -451,9 +452,14 @@ Region_slide_block region_slide_block(const Support_region& r, const Rational& m
     queue.emplace(c.excess, cells.size());
     cells.push_back(c);
   };
+  std::size_t size = 1;  // [WORK] each cell made is charged kPerCell × the size of the region's numbers
+  for (const auto& ring : r.rings)
+    for (const Vec2& v : ring) size = std::max({size, Work::size(v.x), Work::size(v.y)});
+  Work::charge(Work::times(Work::times(r.triangles.size(), kPerCell), size), "making a region's slide block");
   for (const Region_triangle& t : r.triangles) add({vertex(t.a), vertex(t.b), vertex(t.c)});
   std::size_t alive = cells.size();
   const auto split = [&] {
+    Work::charge(Work::times(4 * kPerCell, size), "refining a region's slide block (" + std::to_string(alive) + " cells)");
     const std::size_t c = queue.top().second;
     queue.pop();
     cells[c].alive = false;
@@ -671,7 +677,70 @@ bool try_translation(const Support& s, const Vec3q& p, const Vec3q& q, Motion_an
 
 }  // namespace
 
+namespace {
+
+// [WORK] The scale-free frame of the doubles (issue 34): log2 of the largest |coordinate| of the support's points and
+// regions (from the numbers' bit lengths, ±1), and whether every coordinate is zero.
+long largest_log2(const Support& s, bool& all_zero) {
+  long best = 0;
+  all_zero = true;
+  const auto see = [&](const Rational& x) {
+    if (x == 0) return;
+    const long l = static_cast<long>(mpz_sizeinbase(x.get_num_mpz_t(), 2)) -
+                   static_cast<long>(mpz_sizeinbase(x.get_den_mpz_t(), 2));
+    if (all_zero || l > best) best = l;
+    all_zero = false;
+  };
+  for (const Support_point& pt : s.points) see(pt.at.x), see(pt.at.y);
+  for (const Support_region& r : s.regions)
+    for (const auto& ring : r.rings)
+      for (const Vec2& v : ring) see(v.x), see(v.y);
+  return best;
+}
+
+Vec2 times(const Vec2& v, const Rational& k) { return {v.x * k, v.y * k}; }
+
+void unscale_cells(Region_cells& c, const Rational& back) {
+  for (Vec2& v : c.vertices) v = times(v, back);
+}
+void unscale(Stick_witness& w, const Rational& back) {
+  for (Region_stick_block& b : w.regions) unscale_cells(b.cells, back);
+}
+void unscale(Slide_witness& w, const Rational& k) {  // the twist's rate: ω = k ω' (k the frame's scale)
+  w.twist[2] *= k;
+  for (Region_slide_block& b : w.regions) unscale_cells(b.cells, 1 / k);
+}
+
+Motion_answer decide_in_frame(const Support& s, const Vec3q& p);
+
+}  // namespace
+
+// A support far from unit scale (beyond 2^±200: a region at 10^9990) is decided in a frame scaled by an exact power of
+// two k = 2^-e, where its doubles are finite: the points and regions at k·r, each region's pressure divided by k² (the
+// same forces), the load's moment times k. A witness there is one here: forces are unchanged, cells and points scale
+// back by 1/k, a twist's rate by k (the same velocities at corresponding points), speeds and power bounds unchanged;
+// the checker verifies it in the scene's own frame.
 Motion_answer decide_on_regions(const Support& s, const Vec3q& p) {
+  bool all_zero = false;
+  const long e = largest_log2(s, all_zero);
+  if (all_zero || (e <= 200 && e >= -200)) return decide_in_frame(s, p);
+  Rational k = 1;
+  if (e > 0) mpz_mul_2exp(k.get_den_mpz_t(), k.get_den_mpz_t(), static_cast<mp_bitcnt_t>(e));
+  else mpz_mul_2exp(k.get_num_mpz_t(), k.get_num_mpz_t(), static_cast<mp_bitcnt_t>(-e));
+  Support t = s;
+  for (Support_point& pt : t.points) pt.at = times(pt.at, k);
+  for (Support_region& r : t.regions) r = scaled_region(r, k);
+  Motion_answer a = decide_in_frame(t, {p[0], p[1], p[2] * k});
+  const Rational back = 1 / k;
+  if (a.sticking) unscale(*a.sticking, back);
+  if (a.sliding) unscale(*a.sliding, k);
+  if (a.impending) unscale(a.impending->forces, back), unscale(a.impending->twist, k);
+  return a;
+}
+
+namespace {
+
+Motion_answer decide_in_frame(const Support& s, const Vec3q& p) {
   for (const Support_point& pt : s.points)
     if (!pt.force) throw std::invalid_argument("decide_on_regions: every point force must be given");
   Motion_answer out;
@@ -759,4 +828,5 @@ Motion_answer decide_on_regions(const Support& s, const Vec3q& p) {
   return out;
 }
 
+}  // namespace
 }  // namespace wrenchkit

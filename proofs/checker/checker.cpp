@@ -14,6 +14,10 @@ using namespace detail;
 
 // The certificate against an already read scene.
 Result check_certificate(const Scene& scene, std::string_view certificate_json, const Limits& limits) {
+  if (certificate_json.size() > limits.max_certificate_bytes)  // refused before any of it is read
+    return {Outcome::rejected, "certificate: " + std::to_string(certificate_json.size()) +
+                                   " bytes, more than the limit of " + std::to_string(limits.max_certificate_bytes) +
+                                   " (--max-certificate-size)"};
   certificate_rational_limit = std::max<std::size_t>(100000, scene.longest > (static_cast<std::size_t>(-1) - 64) / 32
                                                                  ? static_cast<std::size_t>(-1)
                                                                  : 32 * scene.longest + 64);

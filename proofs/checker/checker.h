@@ -43,6 +43,9 @@ struct Limits {
   // §6): the checker enumerates the vertices of F itself, over n + C(n,2) + C(n,3) candidate bases for
   // n points without a given force, and rejects a larger certificate as too large to check.
   unsigned long long max_vertex_bases = 2000000;
+  // A certificate longer than this is rejected before any of it is read (its reading costs a few bytes of memory per
+  // byte, its checks time in proportion): the engine refuses to write a longer one (docs/scene-format.md "Limits").
+  std::size_t max_certificate_bytes = 8u << 20;
   // The integer checks of §1 and §3 are written once over a number type and run on fixed-width integers (eight
   // 64-bit limbs on the stack) and, only if a result overflows them, again on GMP integers. false: GMP only (the
   // tests compare the two).

@@ -308,6 +308,8 @@ def test_the_work_budget_makes_a_dear_question_undecided():
     assert wrenchkit.hold(wrenchkit.Scene(table, limits={"max_work": 100000}))["holds"] is True
     lines = list(wrenchkit.batch("hold", [table, table], max_work=100))
     assert all('"exit_code": 3' in l and "--max-work" in l for l in lines)
+    with pytest.raises(wrenchkit.UndecidedError, match=r"more than the limit of 10 \(--max-certificate-size"):
+        wrenchkit.hold(wrenchkit.Scene(table, limits={"max_certificate_size": 10}))
 
 
 # ---- one pipeline: every question takes the mode, parsed once, and answers as the CLI does --------------

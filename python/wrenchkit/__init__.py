@@ -138,7 +138,7 @@ class Scene:
     numbers (int, str, Fraction, Decimal, float: see the module docstring), a JSON text (a str that
     starts with "{"), or a path to a JSON scene file (str or os.PathLike). "wrenchkit": 1 may be
     omitted from a dict. limits: max_digits, max_exponent, max_file_size, max_contacts, max_region_vertices,
-    max_total_digits, max_digits_times_contacts, max_work (as the CLI's --max-* options; the scene's questions keep them).
+    max_total_digits, max_digits_times_contacts, max_work, max_certificate_size (as the CLI's --max-* options; the scene's questions keep them).
     Raises InputError with the command line's message.
     """
 
