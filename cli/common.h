@@ -93,7 +93,8 @@ struct Failure : std::runtime_error {
   Status status;
 };
 // The one place where the command line meets how an answer ended. cli_message: the engine's message as the
-// CLI writes it (an undecided status comes only from the float twin: it gets the advice to change mode); answered: a pipeline item itself when
+// CLI writes it (an undecided status comes from the float twin, which gets the advice to change mode, or from a
+// budget, whose message names its own --max- option and gets none); answered: a pipeline item itself when
 // it was answered, else its Failure; failure_of: the status and message of the exception in flight
 // (Usage_error → bad_input with its own prefix, see `usage`); report: the stderr line of a single command and
 // its exit code (docs/cli.md).

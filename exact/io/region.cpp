@@ -170,19 +170,18 @@ Region_cells region_cells(const Support_region& r, int m) {
 }
 
 Support_region scaled_region(const Support_region& r, const Rational& k) {
-  const auto times = [&k](const Vec2& v) { return Vec2{v.x * k, v.y * k}; };
   Support_region t = r;
-  for (Vec2& v : t.outline) v = times(v);
+  for (Vec2& v : t.outline) v = scaled(v, k);
   for (auto& h : t.holes)
-    for (Vec2& v : h) v = times(v);
+    for (Vec2& v : h) v = scaled(v, k);
   for (auto& ring : t.rings)
-    for (Vec2& v : ring) v = times(v);
-  for (Region_triangle& g : t.triangles) g = {times(g.a), times(g.b), times(g.c)};
+    for (Vec2& v : ring) v = scaled(v, k);
+  for (Region_triangle& g : t.triangles) g = {scaled(g.a, k), scaled(g.b, k), scaled(g.c, k)};
   const Rational k2 = k * k, k3 = k2 * k;
   if (!t.uniform) t.linear = {r.linear[0] / k2, r.linear[1] / k3, r.linear[2] / k3};
   t.pressure = {r.pressure[0] / k2, r.pressure[1] / k3, r.pressure[2] / k3};
   t.area = r.area * k2;
-  t.moment = times(r.moment);  // total unchanged: ∫ p' dA' = ∫ (p/k²) k² dA
+  t.moment = scaled(r.moment, k);  // total unchanged: ∫ p' dA' = ∫ (p/k²) k² dA
   t.second = {r.second[0] * k2, r.second[1] * k2, r.second[2] * k2};
   settle_doubles(t);
   return t;

@@ -33,6 +33,7 @@ inline Vec3q cross(const Vec3q& a, const Vec3q& b) {
 // a − b, and rot90(v) = (−vy, vx): v turned a quarter counter-clockwise.
 inline Vec2 minus(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
 inline Vec2 rot90(const Vec2& v) { return {-v.y, v.x}; }
+inline Vec2 scaled(const Vec2& v, const Rational& k) { return {v.x * k, v.y * k}; }
 inline bool is_zero(const Vec2& v) { return v.x == 0 && v.y == 0; }
 inline bool is_zero(const Vec3q& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
 inline bool is_zero(const Vec3z& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }

@@ -31,7 +31,6 @@ void Work::charge(std::size_t units, const std::string& what) {
   s->used_ += units;
 }
 
-std::size_t Work::used() { return current ? current->used_ : 0; }
 std::size_t Work::last() { return last_used; }
 
 std::size_t Work::size(const Rational& x) {

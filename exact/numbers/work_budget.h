@@ -57,8 +57,6 @@ struct Work {
   // Charges `units` for the step `what` (a phrase: "deciding 8150 extreme distributions of 60 points"); throws
   // Work_exhausted, charging nothing, when the request would go over its budget. Free without a scope.
   static void charge(std::size_t units, const std::string& what);
-  // The units used so far by this thread's request (0 without a scope).
-  static std::size_t used();
   // The units the last budget that ended on this thread used (its request's cost: measurements and tests).
   static std::size_t last();
   // 1 + (the limbs of x's numerator and, when not 1, denominator) / kLimbsPerSize: the size factor of steps on numbers

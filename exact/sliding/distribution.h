@@ -50,7 +50,7 @@ struct F_optimum {
 };
 F_optimum maximise_over(const Support& s, const Admissible& a, const std::vector<Rational>& coef);
 
-// [WORK] The work budget's charge for deciding `count` distributions of the support one by one (each an extreme
+// [WORK] The work budget's charge for deciding the given distributions of the support one by one (each an extreme
 // distribution's full decision, its witness and its certificate part): kPerDistribution × points × size units, size the
 // largest of the points' numbers and of the distributions' forces (exact/numbers/work_budget.h); throws Work_exhausted
 // before any of them is decided when the request cannot afford them all.

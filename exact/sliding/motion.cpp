@@ -353,8 +353,10 @@ std::optional<Motion_answer> without_every_vertex(const Support_model& model, co
   // Two rounds: the load's twist, then the separating twist of the most frictional distribution when it slides (its
   // least frictional distribution is the likeliest to slide too, its most the likeliest to stick).
   Vec3q q = p;
+  std::vector<Rational> most;  // the most frictional distribution for the load's twist: the cutting planes' first
   for (int round = 0; round < 2; ++round) {
     const Power_range range = power_range(s, a, q);
+    if (round == 0) most = range.max_distribution;
     charge_distributions(s, {range.min_distribution, range.max_distribution});
     const Motion_answer lo = at_distribution(s, range.min_distribution, p, mode, o);
     const Motion_answer hi = at_distribution(s, range.max_distribution, p, mode, o);
@@ -379,7 +381,7 @@ std::optional<Motion_answer> without_every_vertex(const Support_model& model, co
   }
   // Slides for every distribution by cutting planes: the union search over a few vertices proposes a twist, the exact
   // LP over F checks it and, when the twist is not enough, adds its most frictional vertex (at most 8 rounds).
-  std::vector<std::vector<Rational>> some{power_range(s, a, p).max_distribution};
+  std::vector<std::vector<Rational>> some{std::move(most)};
   const std::function<double(const double*)> common = regions_power(s);
   Vec3q start = q;
   for (int round = 0; round < 8; ++round) {

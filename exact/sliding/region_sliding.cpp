@@ -662,9 +662,9 @@ bool try_translation(const Support& s, const Vec3q& p, const Vec3q& q, Motion_an
   } else if (lambda < 1) {
     if (places < 2) return level == 1 && try_translation(s, p, q, out, 2);
     Stick_witness& st = w.forces;
-    for (Vec2& g : st.forces) g = {g.x * lambda, g.y * lambda};
+    for (Vec2& g : st.forces) g = scaled(g, lambda);
     for (Region_stick_block& b : st.regions)
-      for (Vec2& g : b.forces) g = {g.x * lambda, g.y * lambda};
+      for (Vec2& g : b.forces) g = scaled(g, lambda);
     out.sticking = std::move(st);
     out.motion = Motion::sticks;
   } else {
@@ -698,10 +698,8 @@ long largest_log2(const Support& s, bool& all_zero) {
   return best;
 }
 
-Vec2 times(const Vec2& v, const Rational& k) { return {v.x * k, v.y * k}; }
-
 void unscale_cells(Region_cells& c, const Rational& back) {
-  for (Vec2& v : c.vertices) v = times(v, back);
+  for (Vec2& v : c.vertices) v = scaled(v, back);
 }
 void unscale(Stick_witness& w, const Rational& back) {
   for (Region_stick_block& b : w.regions) unscale_cells(b.cells, back);
@@ -728,7 +726,7 @@ Motion_answer decide_on_regions(const Support& s, const Vec3q& p) {
   if (e > 0) mpz_mul_2exp(k.get_den_mpz_t(), k.get_den_mpz_t(), static_cast<mp_bitcnt_t>(e));
   else mpz_mul_2exp(k.get_num_mpz_t(), k.get_num_mpz_t(), static_cast<mp_bitcnt_t>(-e));
   Support t = s;
-  for (Support_point& pt : t.points) pt.at = times(pt.at, k);
+  for (Support_point& pt : t.points) pt.at = scaled(pt.at, k);
   for (Support_region& r : t.regions) r = scaled_region(r, k);
   Motion_answer a = decide_in_frame(t, {p[0], p[1], p[2] * k});
   const Rational back = 1 / k;
