@@ -373,6 +373,61 @@ TEST(Budget, ARegionAtScaleTenToThe9990IsDecidedAsAtScaleOne) {
   EXPECT_NE(kinds & (1u << static_cast<unsigned>(Motion::slides)), 0u);
 }
 
+// [WORK] The same for points whose force is not given (issue 34): 12 and 20 points on a circle (radius 1500, weight 60,
+// pressure centre at the origin) written at 1, 10^9990 and 10^-9990 — before, the one at 10^-9990 ran for minutes (every
+// extreme distribution's polygons in 33 000-bit fractions) and 20 at 10^±9990 were undecided where scale 1 decided.
+// Each scene is decided in the frame that removes the common factor of its lengths (decide_motion), the witnesses
+// mapped back: the same verdicts (limit-surface with a load, and hold) and the checker accepts each certificate in
+// the scene's own numbers; the work charged at 10^±9990 is at most twice the work at 1.
+TEST(Budget, UnknownPointsAtScaleTenToThePlusMinus9990AreDecidedAsAtScaleOne) {
+  const auto scene = [](int n, const std::string& suffix, bool load) {
+    std::string pts;
+    for (int k = 0; k < n; ++k) {
+      const double a = 2 * 3.141592653589793 * k / n;
+      pts += std::string(k ? ", " : "") + "{\"at\": [\"" + std::to_string(std::lround(1500 * std::cos(a))) + suffix +
+             "\", \"" + std::to_string(std::lround(1500 * std::sin(a))) + suffix + "\"]}";
+    }
+    return "{\"wrenchkit\": 1, \"support\": {\"mu\": \"1/2\", \"weight\": 60, \"pressure_center\": [0, 0], \"points\": [" +
+           pts + "]}" + (load ? ", \"load\": {\"force\": [10, 5], \"at\": [\"300" + suffix + "\", 0]}" : "") + "}";
+  };
+  const Rational ten9990 = [] { Rational x; mpz_ui_pow_ui(x.get_num_mpz_t(), 10, 9990); return x; }();
+  std::size_t kinds = 0;
+  for (const int n : {12, 20}) {
+    for (const auto& [f, m] : {std::pair{40, 0}, std::pair{10, 20000}, std::pair{1, 50000}}) {
+      Support_query q;
+      q.polytopes = false;
+      std::string verdict[3];
+      std::size_t work[3];
+      int i = 0;
+      for (const auto& [suffix, k] : {std::pair{std::string(""), Rational(1)}, std::pair{std::string("e9990"), ten9990},
+                                       std::pair{std::string("e-9990"), Rational(1 / ten9990)}}) {
+        q.load = Vec3q{Rational(f), Rational(f / 2), Rational(m) * k};
+        const Support_item a = answer_support(scene(n, suffix, false), "points" + suffix, Request{}, q);
+        ASSERT_EQ(a.status, Status::answered) << n << " points" << suffix << " load " << f << ", " << m << ": " << a.message;
+        ASSERT_TRUE(a.motion.has_value());
+        verdict[i] = motion_name(a.motion->motion);
+        work[i++] = Work::last();
+        kinds |= 1u << static_cast<unsigned>(a.motion->motion);
+      }
+      EXPECT_NE(verdict[0], "undecided") << n << " points, load " << f << ", " << m;
+      EXPECT_EQ(verdict[1], verdict[0]) << n << " points at 10^9990, load " << f << ", " << m;
+      EXPECT_EQ(verdict[2], verdict[0]) << n << " points at 10^-9990, load " << f << ", " << m;
+      // (the extreme distributions listed in the answer are enumerated in the scene's numbers, 65 units a basis)
+      EXPECT_LE(work[1], 2 * work[0]) << n << " points at 10^9990, load " << f << ", " << m;
+      EXPECT_LE(work[2], 2 * work[0]) << n << " points at 10^-9990, load " << f << ", " << m;
+    }
+    const Hold_item h0 = answer_hold(scene(n, "", true), "hold", Request{});
+    for (const std::string suffix : {"e9990", "e-9990"}) {
+      const Hold_item h = answer_hold(scene(n, suffix, true), "hold" + suffix, Request{});
+      ASSERT_EQ(h.status, Status::answered) << n << " points" << suffix << ": " << h.message;
+      EXPECT_EQ(h.answer.verdict, h0.answer.verdict) << n << " points" << suffix;
+      EXPECT_FALSE(h.certificate.empty());
+    }
+  }
+  EXPECT_NE(kinds & (1u << static_cast<unsigned>(Motion::sticks)), 0u);
+  EXPECT_NE(kinds & (1u << static_cast<unsigned>(Motion::slides)), 0u);
+}
+
 // Within every limit, a balanced scene of six contacts of 10 000-digit fractions has equilibrium weights of
 // about 150 000 characters; the checker's fixed limit of 100 000 rejected the engine's own certificate (exit 4,
 // "always a bug"). Its limit now follows the scene's longest number (certificate-format.md §2).

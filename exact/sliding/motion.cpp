@@ -559,7 +559,46 @@ Motion_answer over_f(const Support_model& model, const Vec3q& p, Mode mode, cons
 
 }  // namespace
 
+namespace {
+
+// [WORK] The scale that makes a support's lengths coprime integers: k = lcm(denominators) / gcd(numerators) of every
+// nonzero coordinate of its points, regions and pressure centre — when it shortens them by more than 200 bits (a scene
+// written at 10^9990 or 10^-9990 is the same scene at 1; the scenes people write are left as they are, so their
+// certificates keep their numbers). None when every coordinate is zero.
+std::optional<Rational> shortening_scale(const Support& s) {
+  Integer g = 0, l = 1;
+  const auto see = [&](const Rational& x) {
+    if (x == 0) return;
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), x.get_num_mpz_t());
+    mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x.get_den_mpz_t());
+  };
+  for (const Support_point& pt : s.points) see(pt.at.x), see(pt.at.y);
+  for (const Support_region& r : s.regions)
+    for (const auto& ring : r.rings)
+      for (const Vec2& v : ring) see(v.x), see(v.y);
+  if (s.pressure_center) see(s.pressure_center->x), see(s.pressure_center->y);
+  if (g == 0) return std::nullopt;
+  const Rational k = Rational(l) / Rational(g);
+  const long bits = static_cast<long>(mpz_sizeinbase(k.get_num_mpz_t(), 2)) +
+                    static_cast<long>(mpz_sizeinbase(k.get_den_mpz_t(), 2));
+  if (bits <= 200) return std::nullopt;
+  return k;
+}
+
+}  // namespace
+
+// A support whose lengths share a long common factor is decided in the frame that removes it (scaled_support), the
+// witness mapped back (unscale); polygons built by the caller are in the scene's frame, so then it is decided as given.
 Motion_answer decide_motion(const Support_model& model, const Vec3q& load, Mode mode, const Motion_options& options) {
+  if (!options.polygons.model && !options.polygons.inner && !options.polygons.outer)
+    if (const std::optional<Rational> k = shortening_scale(model.support())) {
+      const Support t = scaled_support(model.support(), *k);
+      Admissible a = model.admissible();
+      a.rest_moment = scaled(a.rest_moment, *k);
+      Motion_answer r = decide_motion(Support_model(t, std::move(a)), {load[0], load[1], load[2] * *k}, mode, options);
+      unscale(r, *k);
+      return r;
+    }
   if (model.known()) {
     if (model.has_regions()) return decide_on_regions(model.support(), load);
     return known_points(model, load, mode, options);

@@ -698,6 +698,12 @@ long largest_log2(const Support& s, bool& all_zero) {
   return best;
 }
 
+Motion_answer decide_in_frame(const Support& s, const Vec3q& p);
+
+}  // namespace
+
+namespace {
+
 void unscale_cells(Region_cells& c, const Rational& back) {
   for (Vec2& v : c.vertices) v = scaled(v, back);
 }
@@ -706,18 +712,32 @@ void unscale(Stick_witness& w, const Rational& back) {
 }
 void unscale(Slide_witness& w, const Rational& k) {  // the twist's rate: ω = k ω' (k the frame's scale)
   w.twist[2] *= k;
+  if (w.dual) (*w.dual)[1] *= k, (*w.dual)[2] *= k;  // y0 + yx x_i + yy y_i, the same at x_i = x'_i / k
   for (Region_slide_block& b : w.regions) unscale_cells(b.cells, 1 / k);
 }
 
-Motion_answer decide_in_frame(const Support& s, const Vec3q& p);
-
 }  // namespace
 
+Support scaled_support(const Support& s, const Rational& k) {
+  Support t = s;
+  for (Support_point& pt : t.points) pt.at = scaled(pt.at, k);
+  for (Support_region& r : t.regions) r = scaled_region(r, k);
+  if (t.pressure_center) t.pressure_center = scaled(*t.pressure_center, k);
+  return t;
+}
+
+void unscale(Motion_answer& a, const Rational& k) {
+  const Rational back = 1 / k;
+  if (a.sticking) unscale(*a.sticking, back);
+  if (a.sliding) unscale(*a.sliding, k);
+  if (a.impending) unscale(a.impending->forces, back), unscale(a.impending->twist, k);
+  for (Stick_witness& w : a.vertices) unscale(w, back);
+  a.search_twist[2] *= k.get_d();
+}
+
 // A support far from unit scale (beyond 2^±200: a region at 10^9990) is decided in a frame scaled by an exact power of
-// two k = 2^-e, where its doubles are finite: the points and regions at k·r, each region's pressure divided by k² (the
-// same forces), the load's moment times k. A witness there is one here: forces are unchanged, cells and points scale
-// back by 1/k, a twist's rate by k (the same velocities at corresponding points), speeds and power bounds unchanged;
-// the checker verifies it in the scene's own frame.
+// two k = 2^-e, where its doubles are finite: scaled_support, the load's moment times k, and the witness mapped back
+// (unscale). The checker verifies it in the scene's own frame.
 Motion_answer decide_on_regions(const Support& s, const Vec3q& p) {
   bool all_zero = false;
   const long e = largest_log2(s, all_zero);
@@ -725,14 +745,8 @@ Motion_answer decide_on_regions(const Support& s, const Vec3q& p) {
   Rational k = 1;
   if (e > 0) mpz_mul_2exp(k.get_den_mpz_t(), k.get_den_mpz_t(), static_cast<mp_bitcnt_t>(e));
   else mpz_mul_2exp(k.get_num_mpz_t(), k.get_num_mpz_t(), static_cast<mp_bitcnt_t>(-e));
-  Support t = s;
-  for (Support_point& pt : t.points) pt.at = scaled(pt.at, k);
-  for (Support_region& r : t.regions) r = scaled_region(r, k);
-  Motion_answer a = decide_in_frame(t, {p[0], p[1], p[2] * k});
-  const Rational back = 1 / k;
-  if (a.sticking) unscale(*a.sticking, back);
-  if (a.sliding) unscale(*a.sliding, k);
-  if (a.impending) unscale(a.impending->forces, back), unscale(a.impending->twist, k);
+  Motion_answer a = decide_in_frame(scaled_support(s, k), {p[0], p[1], p[2] * k});
+  unscale(a, k);
   return a;
 }
 

@@ -190,4 +190,12 @@ constexpr std::size_t kMaxRegionCells = 20000;       // slide: the adaptive cell
 constexpr std::size_t kMaxRegionStickCells = 5000;   // stick: m² cells per coarse triangle, m = 1, 2, 4, …
 Motion_answer decide_on_regions(const Support& s, const Vec3q& load);
 
+// ---- Scaled frames [WORK] ------------------------------------------------------------------------------------------
+// A similarity r ↦ k·r (k > 0 rational) maps the support's points, regions (scaled_region: each pressure divided by k²,
+// the same forces) and pressure centre; a load (f, m) is (f, k·m) there. A witness in that frame is one in the scene's:
+// forces, distributions and speed bounds are unchanged, cells scale back by 1/k, a twist's rate and the LP dual's
+// (yx, yy) by k (the same velocities at corresponding points). unscale maps every witness of an answer back.
+Support scaled_support(const Support& s, const Rational& k);
+void unscale(Motion_answer& a, const Rational& k);
+
 }  // namespace wrenchkit
