@@ -702,6 +702,25 @@ void register_push() {
       }
       st.SetLabel(rotation_name(got));
     })->Unit(benchmark::kMicrosecond);
+  // the contact mode with its certificate (PU-2; --contact at the default tolerance 1e-12): the pusher's μ 0.3 and
+  // 0.02 (then the contact slides and the body's sliding motion is bracketed too, §5)
+  for (const auto& [name, mu] : {std::pair{"push/10_legs/contact_with_certificate", "0.3"},
+                                 std::pair{"push/10_legs/contact_slides_with_certificate", "0.02"}}) {
+    std::string text = *known;
+    text.replace(text.find("\"mu\": 0.3, \"velocity\""), 9, std::string("\"mu\": ") + mu);
+    benchmark::RegisterBenchmark(name, [text](benchmark::State& st) {
+      Push_query q;
+      q.contact = true;
+      std::string mode;
+      for (auto _ : st) {
+        const Push_item r = answer_push(text, "legs", Request{}, q);
+        if (r.status != Status::answered || r.certificate.empty()) throw std::logic_error("push: " + r.message);
+        mode = push_mode_name(r.push.contact->mode);
+        if (r.push.contact->mode != Push_mode::sticks && !r.push.contact->has_motion) mode += " (motion not bracketed)";
+      }
+      st.SetLabel(mode);
+    })->Unit(benchmark::kMicrosecond);
+  }
   // the twin alone on the 10 legs (its input as certified doubles, converted once: the robot-side cost)
   benchmark::RegisterBenchmark("push/10_legs/rotation_twin", [known](benchmark::State& st) {
     const Scene scene = read_scene(*known, Input_limits{});

@@ -1,5 +1,6 @@
 // wrenchkit push: which way a pushed body turns, whatever its pressure distribution — Mason's voting theorem over the
 // support's admissible distributions, exact, with a checked certificate (docs/pushing.md, exact/sliding/pushing.h).
+#include <cstdio>
 #include <sstream>
 #include <string>
 
@@ -63,6 +64,17 @@ void write_push(Json_writer& w, const Push_item& r) {
       w.key("omega").array().rational(c.omega_lo).rational(c.omega_hi).end_array();
       write_approx(w, "omega", {c.omega_lo, c.omega_hi});
     }
+    if ((c.mode == Push_mode::slides_left || c.mode == Push_mode::slides_right)) {
+      // the body's velocity at the pusher v + slip·rot90(n), its rate ω, both certified brackets (PU-2 §5)
+      if (c.has_motion) {
+        w.key("slip").array().rational(c.slip_lo).rational(c.slip_hi).end_array();
+        write_approx(w, "slip", {c.slip_lo, c.slip_hi});
+        w.key("omega").array().rational(c.motion_lo).rational(c.motion_hi).end_array();
+        write_approx(w, "omega", {c.motion_lo, c.motion_hi});
+      } else {
+        w.member("motion_why", c.motion_why);
+      }
+    }
     if (c.mode == Push_mode::undecided) w.member("why", c.why);
     w.end_object();
   }
@@ -115,7 +127,27 @@ std::string push_human(const Push_item& r, const std::string& source) {
       s << " — " << c.why << "\n";
     } else {
       s << " — the contact slides, the pusher's force on the friction cone's " << (c.mode == Push_mode::slides_left ? "left" : "right")
-        << " edge\n";
+        << " edge";
+      if (!c.has_motion) {
+        s << "; the body's motion: " << c.motion_why << "\n";
+      } else {
+        const Vec2 t{-a.normal.y, a.normal.x};
+        s << "; the body's velocity at the pusher is v + τ" << vec_text(t) << " (it slips along the pusher) with τ in ["
+          << decimal_text(c.slip_lo, 10) << ", " << decimal_text(c.slip_hi, 10) << "]";
+        if (c.motion_lo == c.motion_hi) {
+          s << ", translating (no rotation)\n";
+        } else {
+          s << ", turning at a rate in [" << decimal_text(c.motion_lo, 10) << ", " << decimal_text(c.motion_hi, 10) << "]";
+          if (sgn(c.motion_lo) == sgn(c.motion_hi)) {  // about p + rot90(u)/ω, u the velocity at p (midpoints)
+            const double tau = Rational((c.slip_lo + c.slip_hi) / 2).get_d(), w = Rational((c.motion_lo + c.motion_hi) / 2).get_d();
+            const double ux = a.velocity.x.get_d() + tau * t.x.get_d(), uy = a.velocity.y.get_d() + tau * t.y.get_d();
+            char buf[96];
+            std::snprintf(buf, sizeof buf, "(%.6g, %.6g)", a.at.x.get_d() - uy / w, a.at.y.get_d() + ux / w);
+            s << ", about a centre near " << buf;
+          }
+          s << "\n";
+        }
+      }
     }
   }
   if (!r.certificate.empty()) s << "certificate accepted by the independent checker (exact arithmetic)\n";

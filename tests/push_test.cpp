@@ -298,7 +298,31 @@ TEST(PushContact, GoldenModesAndTamperedClaims) {
   const std::string slide = square(R"({"at": ["1/2", -1], "normal": [0, 1], "mu": "1/2", "velocity": [-1, 1]})");
   EXPECT_EQ(wrenchkit_checker::check(slide, b.certificate).outcome, wrenchkit_checker::Outcome::accepted);
   refused(slide, b.certificate, R"("mode": "slides left")", R"("mode": "slides right")", "not certainly beyond");
-  refused(slide, b.certificate, R"("mode": "slides left")", R"("mode": "sticks")", "not certainly inside");
+  // a sliding contact carries its sliding motion: a sticking claim with it is refused for that
+  refused(slide, b.certificate, R"("mode": "slides left")", R"("mode": "sticks")", "only a sliding contact has");
+  // the body's motion while sliding (PU-2 §5). The left edge (−1/2, 1) through c = 0: the translation along it with
+  // the pusher's normal speed 1, u = (−1/2, 1) = v + τ (−1, 0) with τ = −1/2 exactly, ω = 0.
+  ASSERT_TRUE(b.push.contact->has_motion) << b.push.contact->motion_why;
+  EXPECT_EQ(b.push.contact->slip_lo, Rational(-1, 2));
+  EXPECT_EQ(b.push.contact->slip_hi, Rational(-1, 2));
+  EXPECT_EQ(b.push.contact->motion_lo, 0);
+  EXPECT_EQ(b.push.contact->motion_hi, 0);
+  refused(slide, b.certificate, R"("slip": ["-1/2", "-1/2"])", R"("slip": ["-1/4", "-1/4"])", "an exact slip is only");
+  // μ = 1/4 along (1, 1): slides on the right edge, slipping τ ≈ 0.3184902 along (−1, 0) and turning at ω ≈ 0.4257531
+  // (the quasi-static simulation's values: PushOracle below checks such brackets on thousands of pushes)
+  const std::string right = square(R"({"at": ["1/2", -1], "normal": [0, 1], "mu": "1/4", "velocity": [1, 1]})");
+  const Push_item c = answer_push(right, "test", Request{}, q);
+  ASSERT_EQ(c.status, Status::answered) << c.message;
+  ASSERT_EQ(c.push.contact->mode, Push_mode::slides_right);
+  ASSERT_TRUE(c.push.contact->has_motion) << c.push.contact->motion_why;
+  EXPECT_LT(c.push.contact->slip_lo, c.push.contact->slip_hi);
+  EXPECT_GT(c.push.contact->slip_lo, Rational(3184901, 10000000));
+  EXPECT_LT(c.push.contact->slip_hi, Rational(3184902, 10000000));
+  EXPECT_GT(c.push.contact->motion_lo, Rational(4257531, 10000000));
+  EXPECT_LT(c.push.contact->motion_hi, Rational(4257532, 10000000));
+  EXPECT_EQ(wrenchkit_checker::check(right, c.certificate).outcome, wrenchkit_checker::Outcome::accepted);
+  refused(right, c.certificate, "\"omega\": [\"" + to_string(c.push.contact->motion_lo) + "\"",
+          "\"omega\": [\"" + to_string(c.push.contact->motion_hi) + "\"", "over the slip bracket");
 }
 
 // ---- the oracle: a quasi-static push in doubles (proofs/notes/PU-1 §7) ----
@@ -477,6 +501,7 @@ TEST(PushOracle, VotingTheoremAgainstAQuasiStaticSimulation) {
   std::mt19937_64 rng(20261129);
   std::uniform_int_distribution<int> coord(-10, 10), force(1, 10), tenth(1, 10), small(-5, 5), count(2, 7);
   int decided = 0, cases = 0, certified = 0, twin_certain = 0, modes_decided = 0, sticking_checked = 0;
+  int sliding_checked = 0, sliding_unbracketed = 0;
   for (int sc = 0; sc < scenes; ++sc) {
     const std::uint64_t seed = rng();
     std::mt19937_64 r(seed);
@@ -529,6 +554,18 @@ TEST(PushOracle, VotingTheoremAgainstAQuasiStaticSimulation) {
           const int mode = pc.mode == Push_mode::sticks ? 0 : pc.mode == Push_mode::slides_left ? 1 : pc.mode == Push_mode::slides_right ? -1 : 3;
           ASSERT_EQ(mode, sim_mode) << "seed " << seed << " distribution " << d << ": the engine says "
                                     << push_mode_name(pc.mode) << "\nscene: " << text;
+          if ((pc.mode == Push_mode::slides_left || pc.mode == Push_mode::slides_right) && !std::isnan(om)) {
+            // the body's sliding motion (PU-2 §5): the simulation's rate in the certified bracket
+            if (pc.has_motion) {
+              ++sliding_checked;
+              const double lo = pc.motion_lo.get_d(), hi = pc.motion_hi.get_d(), slack = 1e-7 * (1 + std::fabs(om));
+              ASSERT_TRUE(lo - slack <= om && om <= hi + slack)
+                  << "seed " << seed << ": the simulated sliding rate " << om << " outside [" << lo << ", " << hi
+                  << "]\nscene: " << text;
+            } else {
+              ++sliding_unbracketed;
+            }
+          }
           if (pc.mode == Push_mode::sticks) {
             ++sticking_checked;
             const double lo = pc.omega_lo.get_d(), hi = pc.omega_hi.get_d(), slack = 1e-9 * (1 + std::fabs(om_s));
@@ -562,8 +599,11 @@ TEST(PushOracle, VotingTheoremAgainstAQuasiStaticSimulation) {
   EXPECT_GE(twin_certain, cases * 9 / 10) << "the twin decided " << twin_certain << " of " << cases;
   std::printf("[ push oracle ] %d scenes x %d distributions: %d cases, %d decided by the simulation, all agree; %d "
               "certificates checked; the float twin certain on %d, all equal to the exact rule; contact mode decided on "
-              "%d (as simulated), omega* bracketed on %d sticking\n", scenes, per_scene,
-              cases, decided, certified, twin_certain, modes_decided, sticking_checked);
+              "%d (as simulated), omega* bracketed on %d sticking; the sliding motion's rate bracketed on %d (as "
+              "simulated), not bracketed on %d\n", scenes, per_scene,
+              cases, decided, certified, twin_certain, modes_decided, sticking_checked, sliding_checked,
+              sliding_unbracketed);
+  EXPECT_GT(sliding_checked, scenes);
   EXPECT_GT(certified, scenes / 2);
 }
 

@@ -759,9 +759,10 @@ TEST(ReferenceScenes, PushInTheCorpusAndCompared) {
     const std::string id = v.find("id")->text;
     lines.emplace(id, std::move(v));
   }
-  ASSERT_EQ(lines.size(), 4u);
+  ASSERT_EQ(lines.size(), 5u);
   const auto rotation = [&](const char* id) { return lines.at(id).find("push")->find("rotation")->text; };
   EXPECT_EQ(rotation("square_apart"), "ccw");
+  EXPECT_EQ(rotation("square_slides"), "ccw");
   EXPECT_EQ(rotation("square_tie"), "none");
   EXPECT_EQ(rotation("two_coefficients"), "depends");
   EXPECT_EQ(rotation("plate"), "ccw");

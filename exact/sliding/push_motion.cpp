@@ -1,6 +1,8 @@
 // [PU-2] The pushed body's contact mode for a support of points with every force given: see pushing.h and
 // proofs/notes/PU-2-contact-mode.md. Exact signs of interval sums whose square roots are bracketed by rationals.
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <optional>
 
 #include "core/contact_generators.h"
@@ -22,20 +24,24 @@ const char* push_mode_name(Push_mode m) {
 
 namespace {
 
-// The interval of Σ ρ_i (ℓ_i · v_i(ω)) / |v_i(ω)| over [lo, hi], ℓ_i = l, or rot90(r_i − p) when `moment` (then the
-// sum is the moment about p of the load). False when a speed may vanish on the interval.
+// The interval of Σ ρ_i (ℓ_i · v_i(x)) / |v_i(x)| over x ∈ [lo, hi], ℓ_i = l, or rot90(r_i − p) when `moment` (then the
+// sum is the moment about p of the load). The velocities: v_i(x) = u + x·rot90(r_i − p) (x the rotation rate ω), or,
+// with `slip`, v_i(x) = u + ω·rot90(r_i − p) + x·slip (x the slip speed along `slip` at the fixed rate *omega). False
+// when a speed may vanish on the interval.
 bool interval_sum(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& u, const Vec2& l, bool moment,
-                  const Rational& lo, const Rational& hi, int bits, Rational& out_lo, Rational& out_hi) {
+                  const Rational& lo, const Rational& hi, int bits, Rational& out_lo, Rational& out_hi,
+                  const Vec2* slip = nullptr, const Rational* omega = nullptr) {
   out_lo = 0, out_hi = 0;
   for (const Rho_point& q : pts) {
     if (q.rho == 0) continue;
-    const Vec2 d = minus(q.at, p), w = rot90(d);
-    const Vec2 li = moment ? w : l;
-    // numerator ℓ·u + ω ℓ·w, linear; |v|² = |u|² + 2ω u·w + ω²|d|², convex
-    const Rational a = dot(li, u), b = dot(li, w);
+    const Vec2 d = minus(q.at, p), rd = rot90(d);
+    const Vec2 base = slip ? Vec2{u.x + *omega * rd.x, u.y + *omega * rd.y} : u, w = slip ? *slip : rd;
+    const Vec2 li = moment ? rd : l;
+    // numerator ℓ·base + x ℓ·w, linear; |v|² = |base|² + 2x base·w + x²|w|², convex
+    const Rational a = dot(li, base), b = dot(li, w);
     Rational n_lo = a + lo * b, n_hi = a + hi * b;
     if (n_lo > n_hi) std::swap(n_lo, n_hi);
-    const Rational uu = dot(u, u), uw = dot(u, w), dd = dot(d, d);
+    const Rational uu = dot(base, base), uw = dot(base, w), dd = dot(w, w);
     const auto quad = [&](const Rational& x) { return Rational(uu + 2 * x * uw + x * x * dd); };
     Rational q_min = std::min(quad(lo), quad(hi)), q_max = std::max(quad(lo), quad(hi));
     if (dd != 0) {
@@ -90,9 +96,25 @@ namespace {
 class Candidate {
  public:
   enum class State { ok, pivot, failed };
-  Candidate(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& u) : pts_(pts), p_(p), u_(u) {
-    Rational g0 = 0;
-    for (const Rho_point& q : pts_) g0 += q.rho * cross(minus(q.at, p_), u_);
+  // With a proposed bracket [lo, hi] (the doubles' estimate): kept when g's signs there certify it, else searched.
+  Candidate(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& u, const Rational& lo, const Rational& hi)
+      : pts_(pts), p_(p), u_(u) {
+    if (g0() != 0 && lo < hi && g_sign(pts_, p_, u_, lo, bits_) == -1 && g_sign(pts_, p_, u_, hi, bits_) == 1) {
+      lo_ = lo, hi_ = hi;
+      return;
+    }
+    bits_ = 64;
+    search();
+  }
+  Candidate(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& u) : pts_(pts), p_(p), u_(u) { search(); }
+  // g(0) = Σ ρ_i (r_i − p) × u / |u|: its sign, exactly (0: u passes through the centre of friction)
+  Rational g0() const {
+    Rational g = 0;
+    for (const Rho_point& q : pts_) g += q.rho * cross(minus(q.at, p_), u_);
+    return g;
+  }
+  void search() {
+    const Rational g0 = this->g0();
     if (g0 == 0) return;  // lo = hi = 0
     const int side = g0 < 0 ? 1 : -1;
     Rational step = 1;
@@ -153,6 +175,181 @@ class Candidate {
   State state_ = State::ok;
 };
 
+// The support's points in double about p, for the doubles' proposals (never a verdict): ω*(u), the root of g by
+// bisection, and optionally l·F there.
+class Double_points {
+ public:
+  Double_points(const std::vector<Rho_point>& pts, const Vec2& p) {
+    for (const Rho_point& q : pts)
+      if (q.rho != 0) d_.push_back({Rational(q.at.x - p.x).get_d(), Rational(q.at.y - p.y).get_d(), q.rho.get_d()});
+  }
+  double rate(double ux, double uy, const double* l = nullptr, double* side = nullptr) const {
+    const auto g = [&](double w, double* f) {
+      double m = 0, fx = 0, fy = 0;
+      for (const auto& q : d_) {
+        const double wx = ux - w * q[1], wy = uy + w * q[0], sp = std::hypot(wx, wy);
+        if (sp == 0) continue;
+        m += q[2] * (q[0] * wy - q[1] * wx) / sp, fx += q[2] * wx / sp, fy += q[2] * wy / sp;
+      }
+      if (f) *f = l[0] * fx + l[1] * fy;
+      return m;
+    };
+    double lo = -1, hi = 1;
+    for (int i = 0; i < 200 && g(lo, nullptr) > 0; ++i) lo *= 2;
+    for (int i = 0; i < 200 && g(hi, nullptr) < 0; ++i) hi *= 2;
+    for (int i = 0; i < 100 && lo < hi; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid <= lo || mid >= hi) break;
+      (g(mid, nullptr) < 0 ? lo : hi) = mid;
+    }
+    const double w = 0.5 * (lo + hi);
+    if (side) g(w, side);
+    return w;
+  }
+
+ private:
+  std::vector<std::array<double, 3>> d_;  // r_i − p, ρ_i
+};
+
+// The slip speed at which the tangent velocity matches the normal one: |v·n| / |n|² (n = −rot90 t), 1 when 0.
+double step_hint(const Vec2& v, const Vec2& t) {
+  const Vec2 n{t.y, -t.x};
+  const Rational s = abs(dot(v, n)) / dot(n, n);
+  return s == 0 ? 1.0 : s.get_d();
+}
+
+// [PU-2 §5] The body's motion while the contact slides with its force on the edge e: the velocity at p is
+// u(τ) = v + τ t (t = rot90 n: the pusher's normal velocity kept, a slip τ along the tangent) and the force F(u(τ))
+// lies along e. F(u(τ)) turns counter-clockwise as τ grows (u turns counter-clockwise; the normal map of K_p is
+// monotone), so e × F(u(τ)) changes sign once, from − to +: at τ = 0 it is − when sliding right (F_s beyond e_R,
+// clockwise), + when sliding left. The slip bracket [τ_a, τ_b] has certified signs − at τ_a and + at τ_b (each by its
+// candidate's ω bracket), and the rate's bracket [w0, w1] certified for every τ there: g(w0; u(τ)) < 0 < g(w1; u(τ)).
+void sliding_motion(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& v, const Vec2& t, const Vec2& e,
+                    bool right, Candidate& at_zero, const Rational& tolerance, Push_contact& r) {
+  const Vec2 l = rot90(e);  // l·F = e × F
+  // Exact: the edge's line through p passes through the centre of friction. The translation along e, with the
+  // pusher's normal velocity, has its force D ê along e: u = k e with k = (v·n)/(e·n), τ* = (u − v)·t / t·t, ω* = 0.
+  Rational rho = 0;
+  Vec2 moment{0, 0};
+  for (const Rho_point& q : pts) rho += q.rho, moment = {moment.x + q.rho * q.at.x, moment.y + q.rho * q.at.y};
+  const Vec2 n{t.y, -t.x};
+  if (rho > 0 && cross(Vec2{moment.x - rho * p.x, moment.y - rho * p.y}, e) == 0 && dot(e, n) != 0) {
+    const Rational k = dot(v, n) / dot(e, n), tau = (k * dot(e, t) - dot(v, t)) / dot(t, t);  // u = k e = v + τ t
+    r.slip_lo = r.slip_hi = tau, r.motion_lo = r.motion_hi = 0;
+    r.slip_omega = {{{Rational(0), Rational(0)}, {Rational(0), Rational(0)}}};
+    r.has_motion = true;
+    return;
+  }
+  // The doubles propose: τ* and the rates at τ* ± δ, δ within the tolerance; the exact probes below certify them (or,
+  // when they cannot, search from τ = 0).
+  const Double_points dp(pts, p);
+  const double vx = v.x.get_d(), vy = v.y.get_d(), tx = t.x.get_d(), ty = t.y.get_d();
+  const double ll[2] = {l.x.get_d(), l.y.get_d()};
+  const auto rate = [&](double ux, double uy, double& side) { return dp.rate(ux, uy, ll, &side); };
+  std::optional<std::array<double, 3>> guess;  // τ*, ω at τ* − δ and τ* + δ
+  double delta = 0;
+  {
+    double side = 0, a = 0, b = 0, step = std::max(std::fabs(step_hint(v, t)), 1e-300);
+    bool bracketed = false;
+    for (int i = 0; i < 200 && !bracketed; ++i, step *= 2) {
+      const double tau = right ? step : -step;
+      rate(vx + tau * tx, vy + tau * ty, side);
+      if ((right && side > 0) || (!right && side < 0)) bracketed = true, (right ? b : a) = tau;
+      else (right ? a : b) = tau;
+    }
+    if (bracketed && std::isfinite(a) && std::isfinite(b)) {
+      for (int i = 0; i < 200; ++i) {
+        const double mid = 0.5 * (a + b);
+        if (mid <= a || mid >= b) break;
+        rate(vx + mid * tx, vy + mid * ty, side);
+        (side < 0 ? a : b) = mid;
+      }
+      const double tau = 0.5 * (a + b);
+      delta = 0.25 * tolerance.get_d() * std::max(1.0, std::fabs(tau));
+      double s0 = 0, s1 = 0;
+      const double w0 = rate(vx + (tau - delta) * tx, vy + (tau - delta) * ty, s0);
+      const double w1 = rate(vx + (tau + delta) * tx, vy + (tau + delta) * ty, s1);
+      if (std::isfinite(w0) && std::isfinite(w1) && delta > 0) guess = std::array<double, 3>{tau, w0, w1};
+    }
+  }
+  // The sign of e × F(u(τ)) at τ, its candidate narrowed until certain: ±1; 0 when not certain or a pivot. `w`: the
+  // doubles' rate there, proposing the candidate's bracket.
+  const auto probe = [&](const Rational& tau, std::optional<Candidate>& k, const double* w = nullptr) {
+    const Vec2 at{v.x + tau * t.x, v.y + tau * t.y};
+    if (w) {
+      const double e = std::max(1e-300, delta / 16 * (1 + std::fabs(*w)));
+      k.emplace(pts, p, at, Rational(*w - e), Rational(*w + e));
+    } else {
+      k.emplace(pts, p, at);
+    }
+    for (int i = 0; i < 400; ++i) {
+      if (k->state() != Candidate::State::ok) return 0;
+      const int sg = k->sign(l);
+      if (sg == 1 || sg == -1) return sg;
+      if (!k->narrow()) return 0;
+    }
+    return 0;
+  };
+  Rational step = abs(dot(v, n)) / dot(n, n);
+  if (step == 0) step = 1;
+  std::optional<Candidate> ka, kb, km;
+  Rational ta = 0, tb = 0;
+  bool found = false;
+  if (guess) {  // the doubles' bracket, certified: e × F < 0 at τ* − δ and > 0 at τ* + δ
+    const Rational a((*guess)[0] - delta), b((*guess)[0] + delta);
+    if (probe(a, ka, &(*guess)[1]) == -1 && probe(b, kb, &(*guess)[2]) == 1) ta = a, tb = b, found = true;
+  }
+  if (!found) ka.reset(), kb.reset(), (right ? ka : kb).emplace(at_zero);
+  for (int i = 0; i < 200 && !found; ++i, step *= 2) {
+    const Rational tau = right ? step : -step;
+    const int sg = probe(tau, km);
+    if (sg == 0) break;
+    if (sg == (right ? 1 : -1)) (right ? tb : ta) = tau, (right ? kb : ka).emplace(*km), found = true;
+    else (right ? ta : tb) = tau, (right ? ka : kb).emplace(*km);
+  }
+  if (!found) {
+    r.motion_why = "the slip of the sliding motion could not be bracketed (a rotation about a support point meets it)";
+    return;
+  }
+  const auto wide = [&] {
+    return tb - ta > tolerance * std::max(Rational(1), Rational(abs(ta) + abs(tb)));
+  };
+  for (int i = 0; i < 400 && wide(); ++i) {
+    Rational mid = (ta + tb) / 2;
+    int sg = probe(mid, km);
+    if (sg == 0) mid = ta + (tb - ta) / 3, sg = probe(mid, km);
+    if (sg == 0) break;
+    if (sg < 0) ta = mid, ka.emplace(*km);
+    else tb = mid, kb.emplace(*km);
+  }
+  // The rate over the slip bracket: the hull of the ends' brackets (each narrowed to the tolerance), widened until
+  // certified for every τ between.
+  const auto narrow_to_tolerance = [&](Candidate& k) {
+    for (int i = 0; i < 400 && k.hi() - k.lo() > tolerance * std::max(Rational(1), Rational(abs(k.lo()) + abs(k.hi())));
+         ++i)
+      if (!k.narrow()) break;
+  };
+  narrow_to_tolerance(*ka), narrow_to_tolerance(*kb);
+  Rational w0 = std::min(ka->lo(), kb->lo()), w1 = std::max(ka->hi(), kb->hi());
+  const int bits = std::max({ka->bits(), kb->bits(), r.bits});
+  for (int i = 0; i < 60; ++i) {
+    Rational lo0, hi0, lo1, hi1;
+    const bool ok0 = interval_sum(pts, p, v, {0, 0}, true, ta, tb, bits, lo0, hi0, &t, &w0);
+    const bool ok1 = interval_sum(pts, p, v, {0, 0}, true, ta, tb, bits, lo1, hi1, &t, &w1);
+    if (ok0 && ok1 && hi0 < 0 && lo1 > 0) {
+      r.has_motion = true;
+      r.slip_lo = ta, r.slip_hi = tb, r.motion_lo = w0, r.motion_hi = w1;
+      r.slip_omega = {{{ka->lo(), ka->hi()}, {kb->lo(), kb->hi()}}};
+      r.bits = bits;
+      return;
+    }
+    const Rational pad = (w1 - w0) / 2 + tolerance * (abs(w0) + abs(w1) + 1) / 16;
+    if (!(ok0 && hi0 < 0)) w0 -= pad;
+    if (!(ok1 && lo1 > 0)) w1 += pad;
+  }
+  r.motion_why = "the rotation rate of the sliding motion could not be bracketed (a support point may be at rest in it)";
+}
+
 }  // namespace
 
 Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance) {
@@ -175,7 +372,13 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
   const Vec2 &eL = edge[0], &eR = edge[1];
   // F in the cone pos{e_R, e_L}: cross(e_R, F) > 0 and cross(F, e_L) > 0; cross(a, F) = rot90(a)·F
   const Vec2 l_right = rot90(eR), l_left{-rot90(eL).x, -rot90(eL).y};
-  Candidate stick(pts, p, u);
+  // The sticking candidate: the doubles propose ω* within a quarter of the tolerance, the exact signs keep it (else
+  // the exact search brackets it).
+  const double w_guess = Double_points(pts, p).rate(u.x.get_d(), u.y.get_d());
+  const double w_pad = std::max(1e-300, 0.25 * tolerance.get_d() * std::max(1.0, std::fabs(w_guess)));
+  Candidate stick = std::isfinite(w_guess) && w_guess != 0
+                        ? Candidate(pts, p, u, Rational(w_guess - w_pad), Rational(w_guess + w_pad))
+                        : Candidate(pts, p, u);
   std::optional<Candidate> plus;  // the candidate of the tangent velocity rot90 n: the end F(t) of the pushing forces
   const auto failed = [&](const Candidate& k) {
     if (k.state() == Candidate::State::pivot) {
@@ -201,7 +404,12 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
       // resists) push into the body, v·n > 0, are the open half-plane H from F(−t) = −F(t) counter-clockwise to F(t),
       // t = rot90 n (PU-2 §3): F_s is in it. It slides on the edge it passed: left when e_L is in H and F_s beyond it
       // (counter-clockwise), right when e_R is in H and F_s beyond it (clockwise).
-      if (!plus) plus.emplace(pts, p, t);
+      if (!plus) {  // proposed by the doubles as the sticking candidate is
+        const double wt = Double_points(pts, p).rate(t.x.get_d(), t.y.get_d());
+        const double pad = std::max(1e-300, 0.25 * tolerance.get_d() * std::max(1.0, std::fabs(wt)));
+        if (std::isfinite(wt) && wt != 0) plus.emplace(pts, p, t, Rational(wt - pad), Rational(wt + pad));
+        else plus.emplace(pts, p, t);
+      }
       if (failed(*plus)) return r;
       const Vec2 rl = rot90(eL), rr = rot90(eR);
       const int eL_in = plus->sign(rl), eR_in = plus->sign(rr);  // cross(e, F(t)) > 0: e in H
@@ -225,6 +433,8 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
   if (plus && (r.mode == Push_mode::slides_left || r.mode == Push_mode::slides_right)) {
     r.has_tangent = true, r.tangent_lo = plus->lo(), r.tangent_hi = plus->hi();
     r.bits = std::max(r.bits, plus->bits());
+    const bool right = r.mode == Push_mode::slides_right;
+    sliding_motion(pts, p, u, t, right ? eR : eL, right, stick, tolerance, r);
   }
   if (r.mode == Push_mode::undecided && r.why.empty())
     r.why = "the sticking motion's force is within the resolution of a friction-cone edge (the boundary of sticking)";

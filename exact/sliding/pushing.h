@@ -81,6 +81,14 @@ struct Push_contact {
   Rational tangent_lo, tangent_hi;
   int bits = 64;                // the square roots' precision every sign was certified at
   std::string why;              // undecided: the reason
+  // slides (PU-2 §5): the body's motion. Its velocity at p is v + τ·rot90(n) (the pusher's, plus the slip τ along the
+  // tangent) with τ* in [slip_lo, slip_hi]; the rate ω* of its twist in [motion_lo, motion_hi] for every τ there; at
+  // each end of the slip bracket the candidate's own bracket (slip_omega), whose force is on either side of the edge.
+  // Exact (slip_lo = slip_hi, ω* = 0) when the edge's line through p passes through the centre of friction.
+  bool has_motion = false;
+  Rational slip_lo, slip_hi, motion_lo, motion_hi;
+  std::array<std::array<Rational, 2>, 2> slip_omega;
+  std::string motion_why;       // slides, but the motion not bracketed: the reason
 };
 Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance);
 

@@ -179,6 +179,9 @@ struct Push_part {
   std::size_t bits = 0;
   Q omega[2], tangent[2];
   bool has_tangent = false;
+  // "sliding" (§8.2): the slip bracket, each end's ω bracket, and the rate's bracket over the slip bracket
+  bool has_sliding = false;
+  Q slip[2], slip_omega[2][2], motion[2];
 };
 
 struct Certificate {

@@ -83,20 +83,23 @@ struct Rho {
   Q x, y, rho;  // a support point and mu f
 };
 
-// The interval of sum rho_i (l_i . v_i(w)) / |v_i(w)| over w in [a, b], v_i(w) = u + w rot90(r_i - p), l_i = l, or
-// rot90(r_i - p) for the moment about p. False when a speed may vanish on the interval.
+// The interval of sum rho_i (l_i . v_i(x)) / |v_i(x)| over x in [a, b], l_i = l, or rot90(r_i - p) for the moment
+// about p. v_i(x) = u + x rot90(r_i - p) (x the rotation rate), or with `slip`: u + w rot90(r_i - p) + x slip (x the
+// slip speed, at the fixed rate *w). False when a speed may vanish on the interval.
 bool interval(const std::vector<Rho>& pts, const Q (&p)[2], const Q (&u)[2], const Q (&l)[2], bool moment, const Q& a,
-              const Q& b, std::size_t bits, Q& lo, Q& hi) {
+              const Q& b, std::size_t bits, Q& lo, Q& hi, const Q* slip = nullptr, const Q* w = nullptr) {
   lo = 0, hi = 0;
   for (const Rho& q : pts) {
     if (sgn(q.rho) == 0) continue;
-    const Q dx = q.x - p[0], dy = q.y - p[1], wx = -dy, wy = dx;
-    const Q lx = moment ? wx : l[0], ly = moment ? wy : l[1];
-    const Q c0 = lx * u[0] + ly * u[1], c1 = lx * wx + ly * wy;
+    const Q dx = q.x - p[0], dy = q.y - p[1], rx = -dy, ry = dx;
+    const Q bx = slip ? Q(u[0] + *w * rx) : u[0], by = slip ? Q(u[1] + *w * ry) : u[1];
+    const Q wx = slip ? slip[0] : rx, wy = slip ? slip[1] : ry;
+    const Q lx = moment ? rx : l[0], ly = moment ? ry : l[1];
+    const Q c0 = lx * bx + ly * by, c1 = lx * wx + ly * wy;
     Q n0 = c0 + a * c1, n1 = c0 + b * c1;
     if (n0 > n1) std::swap(n0, n1);
-    const Q uu = u[0] * u[0] + u[1] * u[1], uw = u[0] * wx + u[1] * wy, dd = dx * dx + dy * dy;
-    const auto quad = [&](const Q& w) { return Q(uu + 2 * w * uw + w * w * dd); };
+    const Q uu = bx * bx + by * by, uw = bx * wx + by * wy, dd = wx * wx + wy * wy;
+    const auto quad = [&](const Q& x) { return Q(uu + 2 * x * uw + x * x * dd); };
     Q qmin = std::min(quad(a), quad(b)), qmax = std::max(quad(a), quad(b));
     if (sgn(dd) != 0) {
       const Q v = -uw / dd;
@@ -153,6 +156,48 @@ int force_sign(const std::vector<Rho>& pts, const Q (&p)[2], const Q (&u)[2], co
   return lo > 0 ? 1 : hi < 0 ? -1 : 0;
 }
 
+// §8.2 "sliding" (PU-2 §5): the body's velocity at p is u(x) = v + x t (t = rot90 n) with its force along the edge e
+// (l = rot90 e: l . F = e x F, which increases with x). Exact: x0 = x1 with omega 0, u(x0) along e and through c.
+// Else e x F certainly negative at x0 and positive at x1 (each by its own omega bracket), and the rate's bracket
+// certain over the whole slip bracket: the moment about p at omega[0] negative and at omega[1] positive for every x.
+void check_sliding(const Push_part& c, const std::vector<Rho>& pts, const Q (&p)[2], const Q (&n)[2], const Q (&v)[2],
+                   const Q (&l)[2]) {
+  const Q t[2] = {-n[1], n[0]};
+  const auto at = [&](const Q& x, Q (&u)[2]) { u[0] = v[0] + x * t[0], u[1] = v[1] + x * t[1]; };
+  if (c.slip[0] > c.slip[1] || c.motion[0] > c.motion[1])
+    throw Failure{"contact.sliding: \"slip\" and \"omega\" are intervals [lower, upper]"};
+  if (c.slip[0] == c.slip[1]) {
+    Q u[2];
+    at(c.slip[0], u);
+    Q rho = 0, g0 = 0;
+    for (const Rho& q : pts) rho += q.rho, g0 += q.rho * ((q.x - p[0]) * u[1] - (q.y - p[1]) * u[0]);
+    if (sgn(c.motion[0]) != 0 || sgn(c.motion[1]) != 0 || sgn(g0) != 0 || sgn(l[0] * u[0] + l[1] * u[1]) != 0 ||
+        sgn(rho) == 0)
+      throw Failure{"contact.sliding: an exact slip is only the translation along the edge through the centre of "
+                    "friction (omega 0)"};
+    const Q e[2] = {l[1], -l[0]};
+    if (sgn(e[0] * u[0] + e[1] * u[1]) <= 0) throw Failure{"contact.sliding: the translation does not go along the edge"};
+    return;
+  }
+  for (int k = 0; k < 2; ++k) {
+    Q u[2];
+    at(c.slip[k], u);
+    const std::string path = "contact.sliding.slip_omega[" + std::to_string(k) + "]";
+    bracket(pts, p, u, c.slip_omega[k], c.bits, path);
+    if (force_sign(pts, p, u, c.slip_omega[k], l, c.bits) != (k == 0 ? -1 : 1))
+      throw Failure{"contact.sliding: at slip " + show(c.slip[k]) + " the force is not certainly " +
+                    (k == 0 ? "clockwise" : "counter-clockwise") + " of the edge"};
+  }
+  const Q none[2] = {Q(0), Q(0)};
+  for (int k = 0; k < 2; ++k) {
+    Q lo, hi;
+    if (!interval(pts, p, v, none, true, c.slip[0], c.slip[1], c.bits, lo, hi, t, &c.motion[k]) ||
+        (k == 0 ? !(hi < 0) : !(lo > 0)))
+      throw Failure{"contact.sliding.omega: the moment about the pusher at omega " + show(c.motion[k]) +
+                    " is not certainly " + (k == 0 ? "negative" : "positive") + " over the slip bracket"};
+  }
+}
+
 // §8.2: the contact mode claimed in "contact", for support points with every force given.
 void check_contact(const Push_part& c, const Support& s, const Limits& lim, const Q (&p)[2], const Q (&n)[2],
                    const Q& mu, const Q (&v)[2]) {
@@ -170,6 +215,8 @@ void check_contact(const Push_part& c, const Support& s, const Limits& lim, cons
   const Q lr[2] = {rr[0], rr[1]}, ll[2] = {-rl[0], -rl[1]};  // e_R x F > 0, F x e_L > 0: inside the cone
   bracket(pts, p, v, c.omega, c.bits, "contact.omega");
   const int right = force_sign(pts, p, v, c.omega, lr, c.bits), left = force_sign(pts, p, v, c.omega, ll, c.bits);
+  if (c.has_sliding && c.mode != "slides left" && c.mode != "slides right")
+    throw Failure{"contact.sliding: only a sliding contact has a sliding motion"};
   if (c.mode == "sticks") {
     if (sgn(mu) == 0 || right != 1 || left != 1)
       throw Failure{"contact: \"sticks\", but the sticking motion's force is not certainly inside the friction cone"};
@@ -189,6 +236,7 @@ void check_contact(const Push_part& c, const Support& s, const Limits& lim, cons
     if (in_h != 1 || beyond != 1)
       throw Failure{std::string("contact: \"") + std::string(c.mode) + "\", but the sticking motion's force is not "
                     "certainly beyond that edge of the cone within the forces that push"};
+    if (c.has_sliding) check_sliding(c, pts, p, n, v, re);
   }
 }
 
@@ -231,6 +279,28 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c) {
       } else if (k == "tangent_omega") {
         p.has_tangent = true;
         read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.tangent[m] = read_rational(r); });
+      } else if (k == "sliding") {
+        p.has_sliding = true;
+        begin_object(r, "expected an object {\"slip\", \"slip_omega\", \"omega\"}");
+        std::string_view j;
+        unsigned got = 0;
+        while (r.next_key(j)) {
+          if (j == "slip") {
+            got |= 1;
+            read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.slip[m] = read_rational(r); });
+          } else if (j == "slip_omega") {
+            got |= 2;
+            read_fixed(r, 2, "two intervals (one per end of the slip)", [&](std::size_t e) {
+              read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.slip_omega[e][m] = read_rational(r); });
+            });
+          } else if (j == "omega") {
+            got |= 4;
+            read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.motion[m] = read_rational(r); });
+          } else {
+            r.fail("unknown key " + quote(j), true);
+          }
+        }
+        if (got != 7) r.fail("a sliding motion needs \"slip\", \"slip_omega\" and \"omega\"");
       } else {
         r.fail("unknown key " + quote(k), true);
       }

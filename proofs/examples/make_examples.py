@@ -220,6 +220,11 @@ SCENES = {
                    "body": SQUARE_OUTLINE,
                    "support": {"mu": "1/2", "points": [{"at": at, "force": 1} for at in CORNERS]},
                    "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": "1/2", "velocity": [-1, 1]}},
+    "push_slide_right": {"wrenchkit": 1, "name": "the square on four legs, pushed at (1/2, -1) with mu = 1/4 along (1, 1): "
+                         "the contact slides on the right edge, the body slipping and turning ccw",
+                         "body": SQUARE_OUTLINE,
+                         "support": {"mu": "1/2", "points": [{"at": at, "force": 1} for at in CORNERS]},
+                         "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": "1/4", "velocity": [1, 1]}},
     "push_depends": {"wrenchkit": 1, "name": "the square on four points of different mu, forces not given (W = 4 at "
                      "the origin), pushed frictionless along x = -1/10: ccw under (2, 2, 0, 0), cw under (0, 0, 2, 2)",
                      "body": SQUARE_OUTLINE,
@@ -440,7 +445,10 @@ PUSH_SQUARE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "r
 # The contact mode (section 8.2, `push --contact`): push_square sticks, its rotation rate bracketed near 0.53605;
 # push_slide slides on the left edge (the sticking force is beyond it, and the left edge is among the pushing forces).
 PUSH_SQUARE_CONTACT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2"}, "votes": [{"lower": "-1", "upper": "-1"}, {"lower": "3", "upper": "3"}, {"lower": "3", "upper": "3"}], "center": ["0", "0"], "contact": {"mode": "sticks", "bits": 64, "omega": ["147348867227/274877906944", "589395468909/1099511627776"]}}''')
-PUSH_SLIDE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "2"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "2", "upper": "2"}, {"lower": "-1", "upper": "-1"}], "center": ["0", "0"], "contact": {"mode": "slides left", "bits": 64, "omega": ["-1/4", "-1/8"], "tangent_omega": ["-1/2", "0"]}}''')
+PUSH_SLIDE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "2"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "2", "upper": "2"}, {"lower": "-1", "upper": "-1"}], "center": ["0", "0"], "contact": {"mode": "slides left", "bits": 64, "omega": ["-1/4", "-1/8"], "tangent_omega": ["-1/2", "0"], "sliding": {"slip": ["-1/2", "-1/2"], "slip_omega": [["0", "0"], ["0", "0"]], "omega": ["0", "0"]}}}''')
+# push_slide_right (--tolerance 1e-6): slides on the right edge; the body's velocity at p is (1, 1) + x (-1, 0) with x in
+# the slip bracket, its rate in "omega" for every x there (PU-2 section 5).
+PUSH_SLIDE_RIGHT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2"}, "votes": [{"lower": "1/2", "upper": "1/2"}, {"lower": "3/2", "upper": "3/2"}, {"lower": "3", "upper": "3"}], "center": ["0", "0"], "contact": {"mode": "slides right", "bits": 64, "omega": ["17/32", "9/16"], "tangent_omega": ["-1/2", "0"], "sliding": {"slip": ["5737404238460715/18014398509481984", "5737413245659969/18014398509481984"], "slip_omega": [["3834844099614311/9007199254740992", "3834844106035333/9007199254740992"], ["7669685342738903/18014398509481984", "7669685355580945/18014398509481984"]], "omega": ["122714909175396279708447/288230376151711744000000", "122715067701556824291553/288230376151711744000000"]}}}''')
 # push_depends: every line is x = -1/10 upward; D = 2 + f0/10 >= 2 over F (f0 = f1, f2 + f3 = 4 - 2 f0).
 PUSH_DEPENDS = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "depends", "friction": {"lower": "2", "dual_lower": ["-1/2", "2/5", "0"]}, "turns": {"ccw": ["2", "2", "0", "0"], "cw": ["0", "0", "2", "2"]}}''')
 # push_square_unknown: one coefficient, so c = (0, 0) for every f in F and each vote is constant over F (its duals
@@ -986,7 +994,16 @@ CERTS = [
     ("push_slide", "contact_slides_right", "invalid:contact|contact: \"slides right\", but the sticking motion's force is not certainly beyond",
      tamper(PUSH_SLIDE, ["contact", "mode"], "slides right")),
     ("push_slide", "contact_sticks", "invalid:contact|contact: \"sticks\", but the sticking motion's force is not certainly inside",
-     tamper(PUSH_SLIDE, ["contact", "mode"], "sticks")),
+     tamper(tamper(PUSH_SLIDE, ["contact", "mode"], "sticks"), ["contact", "sliding"], None)),
+    ("push_slide", "contact_exact_slip_moved", "invalid:contact|contact.sliding: an exact slip is only the translation along the edge through",
+     tamper(PUSH_SLIDE, ["contact", "sliding", "slip"], ["-1/4", "-1/4"])),
+    ("push_slide_right", "contact_slides_right", "valid", PUSH_SLIDE_RIGHT),
+    ("push_slide_right", "contact_rate_bracket_moved", "invalid:contact|contact.sliding.omega: the moment about the pusher at omega",
+     tamper(PUSH_SLIDE_RIGHT, ["contact", "sliding", "omega", 0], "7669685355580945/18014398509481984")),
+    ("push_slide_right", "contact_slip_reversed", "invalid:contact|contact.sliding: \"slip\" and \"omega\" are intervals",
+     tamper(PUSH_SLIDE_RIGHT, ["contact", "sliding", "slip"], ["5737413245659969/18014398509481984", "5737404238460715/18014398509481984"])),
+    ("push_square", "contact_sliding_on_sticks", "invalid:contact|contact.sliding: only a sliding contact has a sliding motion",
+     tamper(PUSH_SQUARE_CONTACT, ["contact", "sliding"], PUSH_SLIDE_RIGHT["contact"]["sliding"])),
     # the same tie on the barbell (D = 1; the velocity's N = 1): the engine answers "undecided" and writes nothing
     ("push_barbell", "none_on_a_line", "invalid:line|the support's friction lies on one line through the centre of friction",
      json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "1"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "0", "upper": "0"}, {"lower": "1", "upper": "1"}], "center": ["0", "0"]}''')),
@@ -1804,7 +1821,9 @@ def verify_regions(scene, cert):
 
 def verify_contact(c, pts, known, p, n, mu, v):
     """Section 8.2: the contact mode (PU-2), support points with every force given. None if proved, else a reason."""
-    if set(c) - {"mode", "bits", "omega", "tangent_omega"} or not {"mode", "bits", "omega"} <= set(c) or not known:
+    if set(c) - {"mode", "bits", "omega", "tangent_omega", "sliding"} or not {"mode", "bits", "omega"} <= set(c) or not known:
+        return "contact"
+    if "sliding" in c and c["mode"] not in ("slides left", "slides right"):
         return "contact"
     bits = c["bits"]
 
@@ -1818,20 +1837,25 @@ def verify_contact(c, pts, known, p, n, mu, v):
 
     rho = [(q[0], q[1], q[2] * q[3]) for q in pts]
 
-    def interval(u, l, moment, a, b):  # sum rho (l . v(w)) / |v(w)| over w in [a, b]; None if a speed may vanish
+    def interval(u, l, moment, a, b, slip=None, w=None):
+        """sum rho (l . v(x)) / |v(x)| over x in [a, b]; None if a speed may vanish. v(x) = u + x rot90(r - p), or
+        with slip: u + w rot90(r - p) + x slip."""
         lo = hi = F(0)
         for x, y, r in rho:
             if r == 0:
                 continue
             dx, dy = x - p[0], y - p[1]
-            wx, wy = -dy, dx
-            lx, ly = (wx, wy) if moment else l
-            c0, c1 = lx * u[0] + ly * u[1], lx * wx + ly * wy
+            rx, ry = -dy, dx
+            bx, by = (u[0] + w * rx, u[1] + w * ry) if slip else u
+            wx, wy = slip if slip else (rx, ry)
+            lx, ly = (rx, ry) if moment else l
+            c0, c1 = lx * bx + ly * by, lx * wx + ly * wy
             n0, n1 = sorted((c0 + a * c1, c0 + b * c1))
-            quad = lambda t: u[0] * u[0] + u[1] * u[1] + 2 * t * (u[0] * wx + u[1] * wy) + t * t * (dx * dx + dy * dy)  # noqa: E731
+            uu, uw, dd = bx * bx + by * by, bx * wx + by * wy, wx * wx + wy * wy
+            quad = lambda t: uu + 2 * t * uw + t * t * dd  # noqa: E731
             qs = [quad(a), quad(b)]
-            if dx * dx + dy * dy and a <= -(u[0] * wx + u[1] * wy) / (dx * dx + dy * dy) <= b:
-                qs.append(quad(-(u[0] * wx + u[1] * wy) / (dx * dx + dy * dy)))
+            if dd and a <= -uw / dd <= b:
+                qs.append(quad(-uw / dd))
             if min(qs) <= 0:
                 return None
             slo, shi = root_bounds(min(qs))[0], root_bounds(max(qs))[1]
@@ -1879,7 +1903,34 @@ def verify_contact(c, pts, known, p, n, mu, v):
     e = rl if mode == "slides left" else rr
     in_h = force_sign(t, c["tangent_omega"], e)
     beyond = (1 if mode == "slides left" else -1) * force_sign(v, c["omega"], e)
-    return None if in_h == 1 and beyond == 1 else "contact"
+    if in_h != 1 or beyond != 1:
+        return "contact"
+    if "sliding" not in c:
+        return None
+    # the sliding motion (PU-2 section 5): the velocity at p is v + x t, its force along e (e x F rises with x)
+    sl = c["sliding"]
+    if set(sl) != {"slip", "slip_omega", "omega"}:
+        return "contact"
+    x0, x1 = (rational(q) for q in sl["slip"])
+    w0, w1 = (rational(q) for q in sl["omega"])
+    at = lambda x: (v[0] + x * t[0], v[1] + x * t[1])  # noqa: E731
+    if x0 > x1 or w0 > w1:
+        return "contact"
+    if x0 == x1:  # the translation along e through c
+        u = at(x0)
+        g0 = sum(r * ((x - p[0]) * u[1] - (y - p[1]) * u[0]) for x, y, r in rho)
+        along = e[1] * u[0] - e[0] * u[1]  # e . u, e = (l_y, -l_x)
+        ok = w0 == w1 == 0 and g0 == 0 and e[0] * u[0] + e[1] * u[1] == 0 and along > 0 and sum(r for _, _, r in rho) > 0
+        return None if ok else "contact"
+    for k, x in enumerate((x0, x1)):
+        u = at(x)
+        if not bracketed(u, sl["slip_omega"][k]) or force_sign(u, sl["slip_omega"][k], e) != (-1 if k == 0 else 1):
+            return "contact"
+    for k, w in enumerate((w0, w1)):
+        iv = interval(v, None, True, x0, x1, t, w)
+        if iv is None or (iv[1] >= 0 if k == 0 else iv[0] <= 0):
+            return "contact"
+    return None
 
 
 def verify_push(scene, cert):
