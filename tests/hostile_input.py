@@ -234,6 +234,19 @@ def main():
               len(out) <= 10 * MiB,
               "%s (%d bytes): exit %d, %.0f MB resident, %d bytes out, %r" % (what, len(text), code, rss, len(out),
                                                                           err.strip()[:160]))
+    # Scale-free: 12 unknown points written at 10^-9990 (minutes before: every extreme distribution's polygons in
+    # 33 000-bit fractions) are answered as the same points at 1 are, under the same limits.
+    twelve = write(os.path.join(work, "work_twelve.json"), unknown_support(0, 12, load=False))
+    tiny = write(os.path.join(work, "work_twelve_tiny.json"), unknown_support(0, 12, -9990, load=False))
+    for args in (["--load", "40,0,0"], ["--load", "10,5,20000"]):
+        code, out, err, rss = run([cli, "limit-surface", "--json"] + args + [twelve], as_bytes=GB2, cpu_seconds=10)
+        want = json.loads(out).get("motion") if code == 0 else None
+        small = args[:1] + [args[1] + "e-9990"]
+        code, out, err, rss = run([cli, "limit-surface", "--json"] + small + [tiny], as_bytes=GB2, cpu_seconds=10,
+                                  wall_seconds=60)
+        check(code == 0 and want is not None and json.loads(out).get("motion") == want,
+              "12 unknown points at 10^-9990, load %s: %s as at scale 1 (exit %d, %r)" % (small[1], want, code,
+                                                                                          err.strip()[:160]))
     # A moderate scene is answered by default; a small budget makes it undecided, naming the option; raised, answered.
     moderate = write(os.path.join(work, "work_moderate.json"), unknown_support(40, 10))
     code, out, err, rss = run([cli, "limit-surface", "--json"] + load + [moderate], as_bytes=GB2, cpu_seconds=10)
