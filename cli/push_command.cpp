@@ -67,6 +67,7 @@ void write_push(Json_writer& w, const Push_item& r) {
     if ((c.mode == Push_mode::slides_left || c.mode == Push_mode::slides_right)) {
       // the body's velocity at the pusher v + slip·rot90(n), its rate ω, both certified brackets (PU-2 §5)
       if (c.has_motion) {
+        if (c.pivot) w.member("pivot", *c.pivot);  // rotating about that support point (exact slip and rate)
         w.key("slip").array().rational(c.slip_lo).rational(c.slip_hi).end_array();
         write_approx(w, "slip", {c.slip_lo, c.slip_hi});
         w.key("omega").array().rational(c.motion_lo).rational(c.motion_hi).end_array();
@@ -132,9 +133,14 @@ std::string push_human(const Push_item& r, const std::string& source) {
         s << "; the body's motion: " << c.motion_why << "\n";
       } else {
         const Vec2 t{-a.normal.y, a.normal.x};
-        s << "; the body's velocity at the pusher is v + τ" << vec_text(t) << " (it slips along the pusher) with τ in ["
-          << decimal_text(c.slip_lo, 10) << ", " << decimal_text(c.slip_hi, 10) << "]";
-        if (c.motion_lo == c.motion_hi) {
+        s << "; the body's velocity at the pusher is v + τ" << vec_text(t) << " (it slips along the pusher) with τ ";
+        if (c.slip_lo == c.slip_hi) s << "= " << number_text(c.slip_lo);
+        else s << "in [" << decimal_text(c.slip_lo, 10) << ", " << decimal_text(c.slip_hi, 10) << "]";
+        if (c.pivot) {
+          const Support_point& sp = r.scene.support->points[*c.pivot];
+          s << ", turning at " << number_text(c.motion_lo) << " about the support point " << *c.pivot << " at "
+            << vec_text(sp.at) << " (a pivot: a facet of the limit surface)\n";
+        } else if (c.motion_lo == c.motion_hi) {
           s << ", translating (no rotation)\n";
         } else {
           s << ", turning at a rate in [" << decimal_text(c.motion_lo, 10) << ", " << decimal_text(c.motion_hi, 10) << "]";

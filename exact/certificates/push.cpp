@@ -40,10 +40,13 @@ std::string push_certificate(const Push_answer& a) {
     if (c.has_tangent) w.key("tangent_omega").array().rational(c.tangent_lo).rational(c.tangent_hi).end_array();
     if (c.has_motion) {  // §8.2: the sliding motion (PU-2 §5)
       w.key("sliding").object();
+      if (c.pivot) w.member("pivot", *c.pivot);  // the rotation about that support point (PU-2 §6)
       w.key("slip").array().rational(c.slip_lo).rational(c.slip_hi).end_array();
-      w.key("slip_omega").array();
-      for (const auto& b : c.slip_omega) w.array().rational(b[0]).rational(b[1]).end_array();
-      w.end_array();
+      if (!c.pivot) {
+        w.key("slip_omega").array();
+        for (const auto& b : c.slip_omega) w.array().rational(b[0]).rational(b[1]).end_array();
+        w.end_array();
+      }
       w.key("omega").array().rational(c.motion_lo).rational(c.motion_hi).end_array();
       w.end_object();
     }

@@ -218,6 +218,46 @@ double step_hint(const Vec2& v, const Vec2& t) {
   return s == 0 ? 1.0 : s.get_d();
 }
 
+// [PU-2 §6] Is the sliding motion the rotation about support point j (a pivot: a facet of the limit surface)? Its
+// velocity at p is u(τ_j) = v + τ_j t ⟂ r_j − p, its rate ω_j; the loads of that twist are the other points' friction
+// (unit speeds v̂_i) plus ρ_j g at r_j for any |g| ≤ 1. It is the motion when one of them is a force λ e through p,
+// λ > 0: the moment about p gives λ = (d_j × F' − M')/(d_j × e) (F', M': the others' force and moment about p), and
+// |λ e − F'| ≤ ρ_j certifies g — strictly, with the square roots bracketed (`bits`). False when not certified.
+bool pivot_motion(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& p, const Vec2& v, const Vec2& t,
+                  const Vec2& e, bool right, int bits, Rational& tau, Rational& omega) {
+  const Vec2 d = minus(pts[j].at, p);
+  if (pts[j].rho == 0 || dot(t, d) == 0 || cross(d, e) == 0) return false;
+  tau = -dot(v, d) / dot(t, d);
+  if (right ? tau <= 0 : tau >= 0) return false;  // the slip opposes the edge's friction
+  const Vec2 u{v.x + tau * t.x, v.y + tau * t.y};
+  omega = -dot(u, rot90(d)) / dot(d, d);  // u = −ω rot90(d): the velocity at p of the rotation about r_j
+  std::vector<Rho_point> rest;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (i != j) rest.push_back(pts[i]);
+  Rational fx[2], fy[2], m[2];
+  if (!interval_sum(rest, p, u, {1, 0}, false, omega, omega, bits, fx[0], fx[1]) ||
+      !interval_sum(rest, p, u, {0, 1}, false, omega, omega, bits, fy[0], fy[1]) ||
+      !interval_sum(rest, p, u, {0, 0}, true, omega, omega, bits, m[0], m[1]))
+    return false;  // another point at rest too
+  // λ (d × e) = d × F' − M' = d.x F'_y − d.y F'_x − M', by interval ends
+  const auto scaled_range = [](const Rational& k, const Rational (&x)[2], Rational (&out)[2]) {
+    out[0] = k * x[0], out[1] = k * x[1];
+    if (out[0] > out[1]) std::swap(out[0], out[1]);
+  };
+  Rational a[2], b[2];
+  scaled_range(d.x, fy, a), scaled_range(-d.y, fx, b);
+  const Rational de = cross(d, e);
+  Rational num[2] = {a[0] + b[0] - m[1], a[1] + b[1] - m[0]}, lambda[2];
+  scaled_range(1 / de, num, lambda);
+  if (lambda[0] <= 0) return false;
+  // |λ e − F'|² < ρ_j², each component's interval squared
+  const auto square_max = [](const Rational& lo, const Rational& hi) { return std::max(Rational(lo * lo), Rational(hi * hi)); };
+  Rational gx[2], gy[2], ex[2], ey[2];
+  scaled_range(e.x, lambda, ex), scaled_range(e.y, lambda, ey);
+  gx[0] = ex[0] - fx[1], gx[1] = ex[1] - fx[0], gy[0] = ey[0] - fy[1], gy[1] = ey[1] - fy[0];
+  return square_max(gx[0], gx[1]) + square_max(gy[0], gy[1]) < pts[j].rho * pts[j].rho;
+}
+
 // [PU-2 §5] The body's motion while the contact slides with its force on the edge e: the velocity at p is
 // u(τ) = v + τ t (t = rot90 n: the pusher's normal velocity kept, a slip τ along the tangent) and the force F(u(τ))
 // lies along e. F(u(τ)) turns counter-clockwise as τ grows (u turns counter-clockwise; the normal map of K_p is
@@ -270,6 +310,16 @@ void sliding_motion(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2
       const double w0 = rate(vx + (tau - delta) * tx, vy + (tau - delta) * ty, s0);
       const double w1 = rate(vx + (tau + delta) * tx, vy + (tau + delta) * ty, s1);
       if (std::isfinite(w0) && std::isfinite(w1) && delta > 0) guess = std::array<double, 3>{tau, w0, w1};
+    }
+  }
+  // A pivot (PU-2 §6): exact, the rotation about a support point, when its facet holds the force along e.
+  for (std::size_t j = 0; j < pts.size(); ++j) {
+    Rational tau, omega;
+    if (pivot_motion(pts, j, p, v, t, e, right, std::max(64, r.bits), tau, omega)) {
+      r.slip_lo = r.slip_hi = tau, r.motion_lo = r.motion_hi = omega;
+      r.pivot = j;
+      r.has_motion = true;
+      return;
     }
   }
   // The sign of e × F(u(τ)) at τ, its candidate narrowed until certain: ±1; 0 when not certain or a pivot. `w`: the

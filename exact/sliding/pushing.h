@@ -88,6 +88,7 @@ struct Push_contact {
   bool has_motion = false;
   Rational slip_lo, slip_hi, motion_lo, motion_hi;
   std::array<std::array<Rational, 2>, 2> slip_omega;
+  std::optional<std::size_t> pivot;  // slides as a rotation about this support point (PU-2 §6): slip and rate exact
   std::string motion_why;       // slides, but the motion not bracketed: the reason
 };
 Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance);

@@ -180,7 +180,8 @@ struct Push_part {
   Q omega[2], tangent[2];
   bool has_tangent = false;
   // "sliding" (§8.2): the slip bracket, each end's ω bracket, and the rate's bracket over the slip bracket
-  bool has_sliding = false;
+  bool has_sliding = false, has_slip_omega = false, has_pivot = false;
+  std::size_t pivot = 0;  // the rotation about support point `pivot` (PU-2 §6)
   Q slip[2], slip_omega[2][2], motion[2];
 };
 

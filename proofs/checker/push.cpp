@@ -156,6 +156,48 @@ int force_sign(const std::vector<Rho>& pts, const Q (&p)[2], const Q (&u)[2], co
   return lo > 0 ? 1 : hi < 0 ? -1 : 0;
 }
 
+// §8.2 "sliding" with "pivot" (PU-2 §6): the rotation about support point j. Exact slip x = -(v . d) / (t . d) and rate
+// w = -(u . rot90 d) / |d|^2 (d = r_j - p, u = v + x t: the rotation's velocity at p); the other points' force F' and
+// moment M' about p bracketed; lambda = (d x F' - M') / (d x e) certainly > 0 and |lambda e - F'|^2 certainly < rho_j^2
+// (a force of the facet along e, through p).
+void check_pivot(const Push_part& c, const std::vector<Rho>& pts, const Q (&p)[2], const Q (&n)[2], const Q (&v)[2],
+                 const Q (&l)[2]) {
+  if (c.pivot >= pts.size()) throw Failure{"contact.sliding.pivot: no such support point"};
+  const Rho& pj = pts[c.pivot];
+  const Q t[2] = {-n[1], n[0]}, d[2] = {pj.x - p[0], pj.y - p[1]}, e[2] = {l[1], -l[0]};
+  const Q td = t[0] * d[0] + t[1] * d[1], de = d[0] * e[1] - d[1] * e[0];
+  if (sgn(pj.rho) == 0 || sgn(td) == 0 || sgn(de) == 0)
+    throw Failure{"contact.sliding.pivot: that support point cannot be the pivot (no friction, or its line is the edge's)"};
+  const Q x = -(v[0] * d[0] + v[1] * d[1]) / td, u[2] = {v[0] + x * t[0], v[1] + x * t[1]};
+  const Q w = (u[0] * d[1] - u[1] * d[0]) / (d[0] * d[0] + d[1] * d[1]);  // -(u . rot90 d) / |d|^2
+  if (c.mode == "slides right" ? !(sgn(x) > 0) : !(sgn(x) < 0))
+    throw Failure{"contact.sliding.pivot: the rotation about that point slips the wrong way for the claimed edge"};
+  if (c.slip[0] != x || c.slip[1] != x || c.motion[0] != w || c.motion[1] != w)
+    throw Failure{"contact.sliding: the rotation about the pivot has slip " + show(x) + " and omega " + show(w)};
+  std::vector<Rho> rest;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (i != c.pivot) rest.push_back(pts[i]);
+  const Q ex[2] = {Q(1), Q(0)}, ey[2] = {Q(0), Q(1)}, none[2] = {Q(0), Q(0)};
+  Q fx[2], fy[2], m[2];
+  if (!interval(rest, p, u, ex, false, w, w, c.bits, fx[0], fx[1]) ||
+      !interval(rest, p, u, ey, false, w, w, c.bits, fy[0], fy[1]) ||
+      !interval(rest, p, u, none, true, w, w, c.bits, m[0], m[1]))
+    throw Failure{"contact.sliding.pivot: another support point is at rest"};
+  const auto range = [](const Q& k, const Q& lo, const Q& hi, Q (&out)[2]) {
+    out[0] = k * lo, out[1] = k * hi;
+    if (out[0] > out[1]) std::swap(out[0], out[1]);
+  };
+  Q a[2], b[2], lam[2];
+  range(d[0], fy[0], fy[1], a), range(-d[1], fx[0], fx[1], b);
+  range(1 / de, a[0] + b[0] - m[1], a[1] + b[1] - m[0], lam);
+  Q gx[2], gy[2];
+  range(e[0], lam[0], lam[1], gx), range(e[1], lam[0], lam[1], gy);
+  const Q g0 = std::max(Q((gx[0] - fx[1]) * (gx[0] - fx[1])), Q((gx[1] - fx[0]) * (gx[1] - fx[0])));
+  const Q g1 = std::max(Q((gy[0] - fy[1]) * (gy[0] - fy[1])), Q((gy[1] - fy[0]) * (gy[1] - fy[0])));
+  if (!(lam[0] > 0) || !(g0 + g1 < pj.rho * pj.rho))
+    throw Failure{"contact.sliding.pivot: no force of the pivot's facet is certainly along the edge through the pusher"};
+}
+
 // §8.2 "sliding" (PU-2 §5): the body's velocity at p is u(x) = v + x t (t = rot90 n) with its force along the edge e
 // (l = rot90 e: l . F = e x F, which increases with x). Exact: x0 = x1 with omega 0, u(x0) along e and through c.
 // Else e x F certainly negative at x0 and positive at x1 (each by its own omega bracket), and the rate's bracket
@@ -166,6 +208,7 @@ void check_sliding(const Push_part& c, const std::vector<Rho>& pts, const Q (&p)
   const auto at = [&](const Q& x, Q (&u)[2]) { u[0] = v[0] + x * t[0], u[1] = v[1] + x * t[1]; };
   if (c.slip[0] > c.slip[1] || c.motion[0] > c.motion[1])
     throw Failure{"contact.sliding: \"slip\" and \"omega\" are intervals [lower, upper]"};
+  if (c.has_pivot) return check_pivot(c, pts, p, n, v, l);
   if (c.slip[0] == c.slip[1]) {
     Q u[2];
     at(c.slip[0], u);
@@ -288,8 +331,11 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c) {
           if (j == "slip") {
             got |= 1;
             read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.slip[m] = read_rational(r); });
+          } else if (j == "pivot") {
+            p.has_pivot = true;
+            p.pivot = read_index(r, "support point index");
           } else if (j == "slip_omega") {
-            got |= 2;
+            p.has_slip_omega = true;
             read_fixed(r, 2, "two intervals (one per end of the slip)", [&](std::size_t e) {
               read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.slip_omega[e][m] = read_rational(r); });
             });
@@ -300,7 +346,8 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c) {
             r.fail("unknown key " + quote(j), true);
           }
         }
-        if (got != 7) r.fail("a sliding motion needs \"slip\", \"slip_omega\" and \"omega\"");
+        if (got != 5 || p.has_pivot == p.has_slip_omega)
+          r.fail("a sliding motion needs \"slip\", \"omega\" and either \"slip_omega\" or \"pivot\"");
       } else {
         r.fail("unknown key " + quote(k), true);
       }

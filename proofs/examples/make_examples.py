@@ -225,6 +225,11 @@ SCENES = {
                          "body": SQUARE_OUTLINE,
                          "support": {"mu": "1/2", "points": [{"at": at, "force": 1} for at in CORNERS]},
                          "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": "1/4", "velocity": [1, 1]}},
+    "push_pivot": {"wrenchkit": 1, "name": "three legs pushed at (10, -1) with mu = 1/5 along (-1, 2): the contact slides "
+                   "on the right edge and the body turns about the leg at (8, 3), exactly",
+                   "support": {"points": [{"at": [8, 3], "force": 7, "mu": "8/10"}, {"at": [5, 8], "force": 6, "mu": "1/10"},
+                                          {"at": [-1, -4], "force": 4, "mu": "3/10"}]},
+                   "pusher": {"at": [10, -1], "normal": [-4, 1], "mu": "2/10", "velocity": [-1, 2]}},
     "push_depends": {"wrenchkit": 1, "name": "the square on four points of different mu, forces not given (W = 4 at "
                      "the origin), pushed frictionless along x = -1/10: ccw under (2, 2, 0, 0), cw under (0, 0, 2, 2)",
                      "body": SQUARE_OUTLINE,
@@ -446,6 +451,8 @@ PUSH_SQUARE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "r
 # push_slide slides on the left edge (the sticking force is beyond it, and the left edge is among the pushing forces).
 PUSH_SQUARE_CONTACT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2"}, "votes": [{"lower": "-1", "upper": "-1"}, {"lower": "3", "upper": "3"}, {"lower": "3", "upper": "3"}], "center": ["0", "0"], "contact": {"mode": "sticks", "bits": 64, "omega": ["147348867227/274877906944", "589395468909/1099511627776"]}}''')
 PUSH_SLIDE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "2"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "2", "upper": "2"}, {"lower": "-1", "upper": "-1"}], "center": ["0", "0"], "contact": {"mode": "slides left", "bits": 64, "omega": ["-1/4", "-1/8"], "tangent_omega": ["-1/2", "0"], "sliding": {"slip": ["-1/2", "-1/2"], "slip_omega": [["0", "0"], ["0", "0"]], "omega": ["0", "0"]}}}''')
+# push_pivot: the sliding motion is the rotation about the leg (8, 3) (PU-2 section 6): slip 5/7 along (-1, -4), rate -3/7.
+PUSH_PIVOT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "cw", "friction": {"lower": "37/5"}, "votes": [{"lower": "-2404/25", "upper": "-2404/25"}, {"lower": "-1066/25", "upper": "-1066/25"}, {"lower": "153/5", "upper": "153/5"}], "center": ["233/37", "84/37"], "contact": {"mode": "slides right", "bits": 64, "omega": ["5309636483810193/36028797018963968", "5309636483828207/36028797018963968"], "tangent_omega": ["-3479513353260505/9007199254740992", "-3479513353256001/9007199254740992"], "sliding": {"pivot": 0, "slip": ["5/7", "5/7"], "omega": ["-3/7", "-3/7"]}}}''')
 # push_slide_right (--tolerance 1e-6): slides on the right edge; the body's velocity at p is (1, 1) + x (-1, 0) with x in
 # the slip bracket, its rate in "omega" for every x there (PU-2 section 5).
 PUSH_SLIDE_RIGHT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2"}, "votes": [{"lower": "1/2", "upper": "1/2"}, {"lower": "3/2", "upper": "3/2"}, {"lower": "3", "upper": "3"}], "center": ["0", "0"], "contact": {"mode": "slides right", "bits": 64, "omega": ["17/32", "9/16"], "tangent_omega": ["-1/2", "0"], "sliding": {"slip": ["5737404238460715/18014398509481984", "5737413245659969/18014398509481984"], "slip_omega": [["3834844099614311/9007199254740992", "3834844106035333/9007199254740992"], ["7669685342738903/18014398509481984", "7669685355580945/18014398509481984"]], "omega": ["122714909175396279708447/288230376151711744000000", "122715067701556824291553/288230376151711744000000"]}}}''')
@@ -998,6 +1005,13 @@ CERTS = [
     ("push_slide", "contact_exact_slip_moved", "invalid:contact|contact.sliding: an exact slip is only the translation along the edge through",
      tamper(PUSH_SLIDE, ["contact", "sliding", "slip"], ["-1/4", "-1/4"])),
     ("push_slide_right", "contact_slides_right", "valid", PUSH_SLIDE_RIGHT),
+    ("push_pivot", "contact_pivot", "valid", PUSH_PIVOT),
+    ("push_pivot", "contact_other_pivot", "invalid:contact|contact.sliding: the rotation about the pivot has slip",
+     tamper(PUSH_PIVOT, ["contact", "sliding", "pivot"], 1)),
+    ("push_pivot", "contact_facet_misses_the_edge", "invalid:contact|contact.sliding.pivot: no force of the pivot's facet is certainly along the edge",
+     tamper(PUSH_PIVOT, ["contact", "sliding"], {"pivot": 1, "slip": ["23/31", "23/31"], "omega": ["-6/31", "-6/31"]})),
+    ("push_pivot", "contact_pivot_rate_moved", "invalid:contact|contact.sliding: the rotation about the pivot has slip 5/7 and omega -3/7",
+     tamper(PUSH_PIVOT, ["contact", "sliding", "omega"], ["-1/2", "-1/2"])),
     ("push_slide_right", "contact_rate_bracket_moved", "invalid:contact|contact.sliding.omega: the moment about the pusher at omega",
      tamper(PUSH_SLIDE_RIGHT, ["contact", "sliding", "omega", 0], "7669685355580945/18014398509481984")),
     ("push_slide_right", "contact_slip_reversed", "invalid:contact|contact.sliding: \"slip\" and \"omega\" are intervals",
@@ -1909,13 +1923,40 @@ def verify_contact(c, pts, known, p, n, mu, v):
         return None
     # the sliding motion (PU-2 section 5): the velocity at p is v + x t, its force along e (e x F rises with x)
     sl = c["sliding"]
-    if set(sl) != {"slip", "slip_omega", "omega"}:
+    if set(sl) not in ({"slip", "slip_omega", "omega"}, {"pivot", "slip", "omega"}):
         return "contact"
     x0, x1 = (rational(q) for q in sl["slip"])
     w0, w1 = (rational(q) for q in sl["omega"])
     at = lambda x: (v[0] + x * t[0], v[1] + x * t[1])  # noqa: E731
     if x0 > x1 or w0 > w1:
         return "contact"
+    if "pivot" in sl:  # section 6: the rotation about support point j, its facet holding a force along the edge
+        j = sl["pivot"]
+        if not isinstance(j, int) or not 0 <= j < len(rho):
+            return "contact"
+        (xj, yj, rj), d = rho[j], (rho[j][0] - p[0], rho[j][1] - p[1])
+        ed = (e[1], -e[0])  # the edge, e here being rot90 of it
+        td, de = t[0] * d[0] + t[1] * d[1], d[0] * ed[1] - d[1] * ed[0]
+        if rj == 0 or td == 0 or de == 0:
+            return "contact"
+        x = -(v[0] * d[0] + v[1] * d[1]) / td
+        u = at(x)
+        w = (u[0] * d[1] - u[1] * d[0]) / (d[0] * d[0] + d[1] * d[1])
+        if (x <= 0 if mode == "slides right" else x >= 0) or (x0, x1, w0, w1) != (x, x, w, w):
+            return "contact"
+        keep = rho
+        rho = [q for i, q in enumerate(keep) if i != j]
+        fx, fy, m = interval(u, (1, 0), False, w, w), interval(u, (0, 1), False, w, w), interval(u, None, True, w, w)
+        rho = keep
+        if None in (fx, fy, m):
+            return "contact"
+        num = sorted((d[0] * fy[0], d[0] * fy[1]))
+        num2 = sorted((-d[1] * fx[0], -d[1] * fx[1]))
+        lam = sorted(((num[0] + num2[0] - m[1]) / de, (num[1] + num2[1] - m[0]) / de))
+        gx = sorted((ed[0] * lam[0], ed[0] * lam[1]))
+        gy = sorted((ed[1] * lam[0], ed[1] * lam[1]))
+        g2 = max((gx[0] - fx[1]) ** 2, (gx[1] - fx[0]) ** 2) + max((gy[0] - fy[1]) ** 2, (gy[1] - fy[0]) ** 2)
+        return None if lam[0] > 0 and g2 < rj * rj else "contact"
     if x0 == x1:  # the translation along e through c
         u = at(x0)
         g0 = sum(r * ((x - p[0]) * u[1] - (y - p[1]) * u[0]) for x, y, r in rho)
