@@ -312,8 +312,14 @@ void sliding_motion(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2
       if (std::isfinite(w0) && std::isfinite(w1) && delta > 0) guess = std::array<double, 3>{tau, w0, w1};
     }
   }
-  // A pivot (PU-2 §6): exact, the rotation about a support point, when its facet holds the force along e.
+  // A pivot (PU-2 §6): exact, the rotation about a support point, when its facet holds the force along e. Tried for
+  // the points whose pivot slip τ_j the doubles put within 10⁻⁶ of τ* (every point when they propose nothing).
   for (std::size_t j = 0; j < pts.size(); ++j) {
+    const Vec2 d = minus(pts[j].at, p);
+    if (guess && dot(t, d) != 0) {
+      const double tj = Rational(-dot(v, d) / dot(t, d)).get_d();
+      if (!(std::fabs(tj - (*guess)[0]) <= 1e-6 * (1 + std::fabs((*guess)[0])))) continue;
+    }
     Rational tau, omega;
     if (pivot_motion(pts, j, p, v, t, e, right, std::max(64, r.bits), tau, omega)) {
       r.slip_lo = r.slip_hi = tau, r.motion_lo = r.motion_hi = omega;
