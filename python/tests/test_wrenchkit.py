@@ -503,6 +503,13 @@ def test_push_voting_theorem():
     assert r["votes"][0]["direction"] == (-1, 1) and r["pusher"]["at"] == (Fraction(1, 2), -1)
     c = wrenchkit.push(square, contact=True)["contact"]
     assert c["mode"] == "sticks" and Fraction(536, 1000) < c["omega"][0] < c["omega"][1] < Fraction(537, 1000)
+    # mu 1/4: the contact slides on the right edge; the body slips and turns (brackets), as the CLI says
+    square["pusher"]["mu"] = "1/4"
+    c = wrenchkit.push(square, contact=True)["contact"]
+    assert c["mode"] == "slides right" and "pivot" not in c
+    assert Fraction(3184901, 10 ** 7) < c["slip"][0] <= c["slip"][1] < Fraction(3184902, 10 ** 7)
+    assert Fraction(4257531, 10 ** 7) < c["omega"][0] <= c["omega"][1] < Fraction(4257532, 10 ** 7)
+    square["pusher"]["mu"] = 1
     square["pusher"]["velocity"] = [-1, 2]  # along p -> c: a translation
     assert wrenchkit.push(square)["rotation"] == "none"
     square["pusher"]["velocity"] = [0, -1]

@@ -327,7 +327,9 @@ def push(scene, *, contact=False):
     each line's ("left edge", "right edge", "velocity") direction and vote; "center_of_friction" (Fractions, None when
     it moves with the distribution); the "certificate" the independent checker accepted. contact=True: also
     "contact": {"mode": "sticks" | "impending" | "slides left" | "slides right" | "undecided", "omega": (lo, hi) (the
-    sticking motion's rotation rate, Fractions), "why"} for a support of points with every force given.
+    sticking motion's rotation rate, Fractions), "why"} for a support of points with every force given; sliding,
+    "slip": (lo, hi) (the body's velocity at the pusher is the pusher's plus slip times rot90(normal)) and "omega" its
+    rotation rate, exact when "pivot" names the support point it turns about.
     """
     r = _json.loads(_core.push(_scene(scene), contact))
     fr = _fractions.Fraction
@@ -340,8 +342,9 @@ def push(scene, *, contact=False):
         v["direction"] = tuple(fr(x) for x in v["direction"])
     if "witnesses" in r:
         r["witnesses"] = {k: [fr(x) for x in f] for k, f in r["witnesses"].items()}
-    if "contact" in r and "omega" in r["contact"]:
-        r["contact"]["omega"] = tuple(fr(x) for x in r["contact"]["omega"])
+    for k in ("omega", "slip"):
+        if "contact" in r and k in r["contact"]:
+            r["contact"][k] = tuple(fr(x) for x in r["contact"][k])
     return r
 
 
