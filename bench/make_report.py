@@ -531,6 +531,28 @@ def main():
                       "%d met / %d" % (b.get("decided", 0), b.get("iterations", 0))))
         md.append("")
 
+    # ---------------- (b4) pushing
+    pu = [k for k in bench if k[0] == "push"]
+    if pu:
+        md.append("## (b4) Pushing (Mason ch. 7; docs/pushing.md)\n")
+        md.append("A body on 10 legs (3-decimal positions, decimal forces and coefficients) pushed at a point with "
+                  "friction: the voting decision alone (the scene read once), the whole pipeline with its certificate "
+                  "checked by the independent checker (over F: the forces not given, six exact LPs), the contact mode "
+                  "(`--contact`: sticking; sliding, with the body's slip and rate, PU-2 §5–6) and the float twin. The "
+                  "near-tie family: the pusher's velocity 10^-k off the line to the centre of friction (k = 9 … 18, both "
+                  "sides, 50 supports): how often a naive double vote is wrong, how often the twin abstains, and the "
+                  "hybrid's errors (a wrong answer fails the run).\n")
+        md.append("| question | time per query | answer |\n|---|---|---|")
+        for k in sorted(pu):
+            b = bench[k]
+            if "naive_wrong_per_1000" in b:
+                ans = "naive double vote wrong on %.0f of 1000, twin uncertain on %.0f of 1000, hybrid wrong %d" % (
+                    b["naive_wrong_per_1000"], b.get("twin_uncertain_per_1000", 0), int(b.get("hybrid_wrong", 0)))
+            else:
+                ans = b.get("label", "")
+            md.append("| %s | %s | %s |" % (" / ".join(k[1:]), fmt_t(us(b)), ans))
+        md.append("")
+
     # ---------------- (c) growth
     md.append("## (c) Growth\n")
     md.append("Cost against the number of contacts (random grasps as above; 16 scenes up to 300 contacts, 4 beyond; "
