@@ -572,10 +572,7 @@ std::optional<Rational> shortening_scale(const Support& s) {
     mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), x.get_num_mpz_t());
     mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x.get_den_mpz_t());
   };
-  for (const Support_point& pt : s.points) see(pt.at.x), see(pt.at.y);
-  for (const Support_region& r : s.regions)
-    for (const auto& ring : r.rings)
-      for (const Vec2& v : ring) see(v.x), see(v.y);
+  for_each_coordinate(s, see);
   if (s.pressure_center) see(s.pressure_center->x), see(s.pressure_center->y);
   if (g == 0) return std::nullopt;
   const Rational k = Rational(l) / Rational(g);

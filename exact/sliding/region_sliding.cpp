@@ -691,18 +691,11 @@ long largest_log2(const Support& s, bool& all_zero) {
     if (all_zero || l > best) best = l;
     all_zero = false;
   };
-  for (const Support_point& pt : s.points) see(pt.at.x), see(pt.at.y);
-  for (const Support_region& r : s.regions)
-    for (const auto& ring : r.rings)
-      for (const Vec2& v : ring) see(v.x), see(v.y);
+  for_each_coordinate(s, see);
   return best;
 }
 
 Motion_answer decide_in_frame(const Support& s, const Vec3q& p);
-
-}  // namespace
-
-namespace {
 
 void unscale_cells(Region_cells& c, const Rational& back) {
   for (Vec2& v : c.vertices) v = scaled(v, back);

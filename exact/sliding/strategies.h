@@ -196,6 +196,14 @@ Motion_answer decide_on_regions(const Support& s, const Vec3q& load);
 // forces, distributions and speed bounds are unchanged, cells scale back by 1/k, a twist's rate and the LP dual's
 // (yx, yy) by k (the same velocities at corresponding points). unscale maps every witness of an answer back.
 Support scaled_support(const Support& s, const Rational& k);
+// Each coordinate of the support's points and regions' rings (the lengths both frames look at), in order.
+template <class F>
+void for_each_coordinate(const Support& s, F&& f) {
+  for (const Support_point& pt : s.points) f(pt.at.x), f(pt.at.y);
+  for (const Support_region& r : s.regions)
+    for (const auto& ring : r.rings)
+      for (const Vec2& v : ring) f(v.x), f(v.y);
+}
 void unscale(Motion_answer& a, const Rational& k);
 
 }  // namespace wrenchkit
