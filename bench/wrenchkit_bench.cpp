@@ -624,6 +624,32 @@ void register_grasp_regions() {
     }
     st.counters["closed_pairs"] = static_cast<double>(closed);
   })->Unit(benchmark::kMillisecond)->Iterations(g_smoke ? 1 : 3);
+  // three fingers on a 20-gon of the same circle (1 140 edge triples): issue 32's target ≤ 10 s with certificates
+  std::string outline20;
+  for (int k = 0; k < 20; ++k) {
+    const double th = -M_PI + 2 * M_PI * (k + 0.5) / 20;
+    const Rational t(std::lround(std::tan(th / 2) * 1000), 1000);
+    const Rational x = (1 - t * t) / (1 + t * t), y = 2 * t / (1 + t * t);
+    outline20 += (k ? ", " : "") + std::string("[\"") + to_string(x) + "\", \"" + to_string(y) + "\"]";
+  }
+  for (const char* mu : {"1/2", "1/5"}) {
+    const auto text20 = std::make_shared<std::string>(R"({"wrenchkit": 1, "mu": ")" + std::string(mu) +
+                                                       R"(", "body": {"outline": [)" + outline20 + "]}}");
+    benchmark::RegisterBenchmark(("grasp_regions/20gon_mu_" + std::string(mu[2] == '2' ? "1_2" : "1_5") +
+                                  "/three_fingers_with_certificate").c_str(),
+                                 [text20](benchmark::State& st) {
+      Grasp_regions_query q;
+      q.fingers = 3;
+      std::size_t boxed = 0, never = 0;
+      for (auto _ : st) {
+        const Grasp_regions_item r = answer_grasp_regions(*text20, "20-gon", Request{}, q);
+        if (r.status != Status::answered) throw std::logic_error("grasp regions: " + r.message);
+        boxed = r.regions.boxed_triples(), never = r.regions.never_triples();
+      }
+      st.counters["boxed_triples"] = static_cast<double>(boxed);
+      st.counters["never_triples"] = static_cast<double>(never);
+    })->Unit(benchmark::kMillisecond)->Iterations(g_smoke ? 1 : 3);
+  }
   benchmark::RegisterBenchmark("grasp_regions/100gon/naive_double_near_corners", [text](benchmark::State& st) {
     const Scene scene = read_scene(*text, Input_limits{});
     const Grasp_regions g = two_finger_regions(scene, Rational(1, 2));

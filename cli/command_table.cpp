@@ -254,9 +254,12 @@ const Option kEdges{"edges", "i,j,...", "pair only these edges of body.outline (
                         part.clear();
                       }
                     }};
-const Option kFingers{"fingers", "2", "how many fingers (2: Nguyen's regions; three fingers are not answered yet)",
-                      [](Options&, S n, S v) {
-                        if (v != "2") bad_value(n, v, v == "3" ? "three fingers are not answered yet (only 2)" : "is not 2");
+const Option kFingers{"fingers", "2|3",
+                      "how many fingers (2: Nguyen's exact regions, default; 3: per edge triple a certified independent "
+                      "cube of placements, or a proof that none closes)",
+                      [](Options& o, S n, S v) {
+                        if (v != "2" && v != "3") bad_value(n, v, "is not 2 or 3 (frictional fingers)");
+                        o.regions.fingers = v == "3" ? 3 : 2;
                       }};
 const Option kPreset{"preset", "graspit|dexnet",
                      "a peer's conventions: graspit — L1, unit-normal edges, moments about body.com divided by the body's "
@@ -462,7 +465,7 @@ std::vector<Command> make_table() {
        "velocity, and the three voting lines through it coloured by their votes, as 'wrenchkit push' decides.\n",
        join({{kHelp, kWhat, kOutput,
               with_help(kSides, "with --what limit-surface: polygon sides, even, 4..4096 (default 32)"), kNorm, kNormalize,
-              kTorqueScale, kAbout, kFingerMu, kEdges},
+              kTorqueScale, kAbout, kFingerMu, kEdges, kFingers},
              kLimits}),
        {kScene},
        run_render});
@@ -615,7 +618,7 @@ std::vector<Command> make_table() {
        prepare_quality_json});
   t.push_back(
       {"grasp-regions",
-       "where two fingers may go: every edge pair's exact force-closure region on a polygon part, with a certificate",
+       "where two or three fingers may go: exact force-closure regions on a polygon part, with a certificate",
        "[OPTIONS] PART.json",
        "Two frictional fingers on body.outline, each pushing along its edge's inward normal with friction --mu: a\n"
        "finger on edge i (from vertex i to i + 1) at v_i + s (v_{i+1} - v_i), the other on edge j at t. By Nguyen's\n"
@@ -623,7 +626,11 @@ std::vector<Command> make_table() {
        "friction cones: four strict linear inequalities in (s, t). So each edge pair's region is a convex polygon in\n"
        "the unit square of (s, t), exact, with rational corners (its sides on the cones' lines excluded). Every pair\n"
        "i < j is answered (\"closed\": [] when no placement closes); the certificate (the regions) is re-derived and\n"
-       "accepted by the independent checker first. The scene's contacts are not used.\n",
+       "accepted by the independent checker first. The scene's contacts are not used.\n"
+       "With --fingers 3, every edge triple i < j < k: an independent cube of placements (s_0, s_1, s_2) that all\n"
+       "close, certified by four friction-cone wrenches whose signed cofactors keep one sign at its eight corners\n"
+       "(they are multilinear in the parameters), the largest a search finds; or \"never\" with a proof that no\n"
+       "placement closes (mu = 0, or a wrench-space direction no wrench of the triple exceeds).\n",
        join({{kHelp, kJson, kFingerMu, kEdges, kFingers,
               with_help(kCertificate, "write the certificate to FILE (checked first)")},
              kLimits}),

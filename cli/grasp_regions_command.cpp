@@ -13,9 +13,22 @@ namespace wrenchkit::cli {
 
 void write_grasp_regions(Json_writer& w, const Grasp_regions_item& r) {
   const Grasp_regions& g = r.regions;
-  w.member("command", "grasp-regions").member("name", r.scene.name).member("fingers", 2).member("mu", g.mu);
+  w.member("command", "grasp-regions").member("name", r.scene.name).member("fingers", g.fingers).member("mu", g.mu);
   w.key("outline").object().member("vertices", g.edges).member("orientation", g.ccw ? "counter-clockwise" : "clockwise")
       .member("convex", g.convex).end_object();
+  if (g.fingers == 3) {
+    write_region_triples(w, g);  // (the certificate's own "triples")
+    w.member("boxed_triples", g.boxed_triples()).member("never_triples", g.never_triples());
+    const Triple_region* robust = nullptr;
+    for (const Triple_region& t : g.triples)
+      if (t.box && (!robust || t.side > robust->side)) robust = &t;
+    if (robust)
+      w.key("most_independent").object().key("edges").array().integer(robust->edges[0]).integer(robust->edges[1])
+          .integer(robust->edges[2]).end_array().member("independent_side", robust->side).key("independent_side_approx")
+          .raw(float_number(robust->side.get_d())).end_object();
+    if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
+    return;
+  }
   write_region_pairs(w, g);  // (the certificate's own "pairs")
   w.member("closed_pairs", g.closed_pairs());
   // each region's area (of the unit square of (s, t)) and the largest
@@ -44,11 +57,46 @@ std::string edge_text(const Scene& s, std::size_t k) {
   return "edge " + std::to_string(k) + " " + vec_text(V[k]) + "–" + vec_text(V[(k + 1) % V.size()]);
 }
 
+std::string triples_human(const Grasp_regions_item& r) {
+  const Grasp_regions& g = r.regions;
+  std::ostringstream s;
+  s << "three fingers, mu = " << number_text(g.mu) << ", each pushing along its edge's inward normal; finger f on the "
+       "triple's edge f at parameter s_f in [0, 1] (v_i + s (v_{i+1} - v_i))\n";
+  s << "independent cubes (every placement inside closes; the largest cube the search found, certified) for "
+    << g.boxed_triples() << " of " << g.triples.size() << " edge triples; no placement closes for " << g.never_triples()
+    << (g.never_triples() == 1 ? " triple" : " triples") << (sgn(g.mu) == 0 ? " (frictionless: three wrenches cannot "
+                                                                               "positively span the wrench space)" : "")
+    << ":\n";
+  for (const Triple_region& t : g.triples) {
+    if (!t.box) continue;
+    const auto& b = *t.box;
+    s << "  edges " << t.edges[0] << ", " << t.edges[1] << ", " << t.edges[2] << ": side " << decimal_text(t.side, 4)
+      << ", s in [" << decimal_text(b[0][0], 4) << ", " << decimal_text(b[0][1], 4) << "] x [" << decimal_text(b[1][0], 4)
+      << ", " << decimal_text(b[1][1], 4) << "] x [" << decimal_text(b[2][0], 4) << ", " << decimal_text(b[2][1], 4)
+      << "] (certified by wrenches";
+    for (const int x : t.wrenches) s << " " << wrench_label(x);
+    s << ")\n";
+  }
+  for (const Triple_region& t : g.triples) {
+    if (!t.never_direction) continue;
+    const auto& u = *t.never_direction;
+    s << "  edges " << t.edges[0] << ", " << t.edges[1] << ", " << t.edges[2] << ": no placement closes (every wrench w "
+      << "of the three fingers has u . w <= 0 for u = (" << number_text(u[0]) << ", " << number_text(u[1]) << ", "
+      << number_text(u[2]) << ")" << (sgn(u[2]) == 0 ? ": the forces lie in a closed half-plane" : "") << ")\n";
+  }
+  std::size_t open = 0;
+  for (const Triple_region& t : g.triples) open += !t.box && !t.never;
+  if (open) s << "  " << open << " other triple(s): no cube found by the search (not a proof that none closes)\n";
+  s << "(exact corners in --json) certificate accepted by the independent checker (exact arithmetic)\n";
+  return s.str();
+}
+
 std::string regions_human(const Grasp_regions_item& r, const std::string& source) {
   const Grasp_regions& g = r.regions;
   std::ostringstream s;
   s << scene_line(r.scene, source) << "outline: " << g.edges << " edges, " << (g.ccw ? "counter-clockwise" : "clockwise")
     << ", " << (g.convex ? "convex" : "not convex") << "\n";
+  if (g.fingers == 3) return s.str() + triples_human(r);
   s << "two fingers, mu = " << number_text(g.mu) << ", each pushing along its edge's inward normal; a finger on edge i at "
        "v_i + s (v_{i+1} - v_i), the other on edge j at t, s and t in [0, 1]\n";
   s << "force closure (Nguyen: the segment between the fingers inside both friction cones) for "

@@ -272,8 +272,56 @@ std::string render_quality(const Scene& s, const Quality_item& r, const std::str
 
 // The part with the largest region's placements on its two edges (one colour per finger), and the (s, t) squares of
 // the largest regions (up to three) with their closure polygons.
+// Three fingers: the part once per triple with the largest certified cubes (up to four), each finger's interval of the
+// cube on its edge in its colour, a dot at the cube's centre placement and its friction cone's two edges there.
+std::string render_grasp_triples(const Scene& s, const Grasp_regions_item& r, const std::string& source) {
+  const Grasp_regions& g = r.regions;
+  std::vector<const Triple_region*> boxed;
+  for (const Triple_region& t : g.triples)
+    if (t.box) boxed.push_back(&t);
+  std::stable_sort(boxed.begin(), boxed.end(), [](const Triple_region* a, const Triple_region* b) { return a->side > b->side; });
+  Svg_panels pic(title_of(s, source), "where three fingers may go: independent cubes of force closure, mu = " + to_string(g.mu),
+                 std::to_string(g.boxed_triples()) + " of " + std::to_string(g.triples.size()) + " edge triples with a cube, " +
+                     std::to_string(g.never_triples()) + " never close; each finger anywhere in its interval");
+  const std::vector<Vec2>& V = s.body.outline;
+  const std::string finger[3] = {"#2f6fd0", "#d0602f", "#2f9f5f"};
+  std::vector<P2> outline;
+  double size = 0;
+  for (const Vec2& v : V) outline.push_back(to_p2(v));
+  for (const P2& a : outline)
+    for (const P2& b : outline) size = std::max(size, std::hypot(a.x - b.x, a.y - b.y));
+  if (boxed.empty()) pic.polygon(pic.panel("the part: no cube found", "x", "y"), outline, "fill=\"#e8e8e8\" stroke=\"#444\" stroke-width=\"1.5\"");
+  const int orientation = outline_orientation(V);
+  for (std::size_t k = 0; k < boxed.size() && k < 4; ++k) {
+    const Triple_region& t = *boxed[k];
+    const int i = pic.panel("edges " + std::to_string(t.edges[0]) + ", " + std::to_string(t.edges[1]) + ", " +
+                                std::to_string(t.edges[2]) + ": cube side " + decimal_text(t.side, 3),
+                            "x", "y");
+    pic.polygon(i, outline, "fill=\"#e8e8e8\" stroke=\"#444\" stroke-width=\"1.5\"");
+    for (int f = 0; f < 3; ++f) {
+      const auto& iv = (*t.box)[static_cast<std::size_t>(f)];
+      const std::size_t e = t.edges[static_cast<std::size_t>(f)];
+      pic.polygon(i, {to_p2(edge_point(V, e, iv[0])), to_p2(edge_point(V, e, iv[1]))},
+                  "fill=\"none\" stroke=\"" + finger[f] + "\" stroke-width=\"5\"");
+      const P2 c = to_p2(edge_point(V, e, Rational((iv[0] + iv[1]) / 2)));
+      const Vec2 n = edge_inward_normal(V, e, orientation), tg{-n.y, n.x};
+      for (const int side : {-1, 1}) {  // the cone's edges n ± mu rot90 n, a sixth of the part long
+        const double dx = Rational(n.x + side * g.mu * tg.x).get_d(), dy = Rational(n.y + side * g.mu * tg.y).get_d();
+        const double len = std::hypot(dx, dy);
+        if (len > 0) pic.polygon(i, {c, {c.x + dx / len * size / 6, c.y + dy / len * size / 6}},
+                                 "fill=\"none\" stroke=\"" + finger[f] + "\" stroke-width=\"1.2\"");
+      }
+      pic.polygon(i, {c, {c.x, c.y}}, "fill=\"none\" stroke=\"" + finger[f] + "\" stroke-width=\"7\" stroke-linecap=\"round\"");
+    }
+  }
+  for (int f = 0; f < 3; ++f)
+    pic.legend_line(200.0 * f, "stroke=\"" + finger[f] + "\" stroke-width=\"5\"", "finger " + std::to_string(f + 1) + "'s interval");
+  return pic.finish();
+}
+
 std::string render_grasp_regions(const Scene& s, const Grasp_regions_item& r, const std::string& source) {
   const Grasp_regions& g = r.regions;
+  if (g.fingers == 3) return render_grasp_triples(s, r, source);
   std::vector<const Pair_region*> closed;
   for (const Pair_region& p : g.pairs)
     if (!p.polygon.empty()) closed.push_back(&p);

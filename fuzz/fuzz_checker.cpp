@@ -22,6 +22,7 @@
 #include "exact/statics/equilibrium.h"
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
+#include "exact/io/outline.h"
 #include "exact/fixture/hold.h"
 #include "fuzz/hold_scope.h"
 #include "exact/io/scene.h"
@@ -159,6 +160,55 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (a.motion == wrenchkit::fl::Motion_twin::sticks) != (claim == "sticks")) {
       std::cerr << "checker accepted \"" << claim << "\"; the certified float search decides the opposite\n";
       std::abort();
+    }
+    return 0;
+  }
+  if (property == "\"grasp_regions\"" && value_of(cert, "fingers") == "3" && scene.body.outline.size() <= 12) {
+    // three fingers (GR-2): an accepted cube's centre and first corner close, and an accepted "never" triple's centre
+    // placement does not, by the engine's own closure decision of the three placed contacts
+    const wrenchkit::json::Value c = wrenchkit::json::parse(cert, limits, "certificate");
+    const auto q = [](const wrenchkit::json::Value& v) {
+      wrenchkit::Rational r(v.text);
+      r.canonicalize();
+      return r;
+    };
+    const wrenchkit::Rational mu = q(*c.find("mu"));
+    const std::vector<wrenchkit::Vec2>& V = scene.body.outline;
+    const int o = wrenchkit::outline_orientation(V);
+    const auto closes = [&](const wrenchkit::json::Value& edges, const std::array<wrenchkit::Rational, 3>& s) {
+      wrenchkit::Scene placed = scene;
+      placed.contacts.clear();
+      placed.load.reset();
+      for (int f = 0; f < 3; ++f) {
+        const std::size_t e = std::stoul(edges.items[static_cast<std::size_t>(f)].text);
+        wrenchkit::Contact k;
+        k.at = wrenchkit::edge_point(V, e, s[static_cast<std::size_t>(f)]);
+        k.normal = wrenchkit::edge_inward_normal(V, e, o);
+        k.mu = mu;
+        k.mu_given = true;
+        placed.contacts.push_back(k);
+      }
+      return wrenchkit::decide_closure(placed, wrenchkit::Property::force_closure, wrenchkit::Mode::exact, false).holds;
+    };
+    std::size_t tried = 0;
+    for (const wrenchkit::json::Value& t : c.find("triples")->items) {
+      if (++tried > 20) break;
+      const wrenchkit::json::Value& edges = *t.find("edges");
+      if (const wrenchkit::json::Value* box = t.find("independent")) {
+        std::array<wrenchkit::Rational, 3> centre, corner;
+        for (std::size_t f = 0; f < 3; ++f) {
+          corner[f] = q(box->items[f].items[0]);
+          centre[f] = (corner[f] + q(box->items[f].items[1])) / 2;
+        }
+        if (!closes(edges, centre) || !closes(edges, corner)) {
+          std::cerr << "checker accepted an independent cube that does not close\n";
+          std::abort();
+        }
+      }
+      if (t.find("never") && closes(edges, {wrenchkit::Rational(1, 2), wrenchkit::Rational(1, 2), wrenchkit::Rational(1, 2)})) {
+        std::cerr << "checker accepted \"never\" for a triple whose centre placement closes\n";
+        std::abort();
+      }
     }
     return 0;
   }

@@ -902,13 +902,25 @@ TEST(Cli, GraspRegionsJsonCertificateAndRefusals) {
   EXPECT_NE(svg.out.find("force closure in (s, t)"), std::string::npos);
   const Cli_result text = run("grasp-regions --mu 1/2 " + square.string());
   EXPECT_NE(text.out.find("for 2 of 6 edge pairs"), std::string::npos) << text.out;
+  // three fingers: the JSON's triples, a certificate the `check` command accepts, batch
+  const fs::path cert3 = scratch() / "gr3_cert.json";
+  const Cli_result three = run("grasp-regions --json --fingers 3 --mu 1/2 --certificate " + cert3.string() + " " + square.string());
+  EXPECT_EQ(three.code, 0) << three.err;
+  EXPECT_NE(three.out.find(R"("fingers": 3)"), std::string::npos) << three.out;
+  EXPECT_NE(three.out.find(R"("triples": [{"edges": [0, 1, 2], "independent": [[)"), std::string::npos) << three.out;
+  EXPECT_NE(three.out.find(R"("boxed_triples": 4, "never_triples": 0)"), std::string::npos) << three.out;
+  const Cli_result checked3 = run("check " + square.string() + " " + cert3.string());
+  EXPECT_EQ(checked3.code, 0) << checked3.out << checked3.err;
+  const Cli_result text3 = run("grasp-regions --fingers 3 --mu 0 " + square.string());
+  EXPECT_NE(text3.out.find("for 0 of 4 edge triples; no placement closes for 4 triples (frictionless"), std::string::npos) << text3.out;
   const Cli_result batch = run("batch grasp-regions --mu 2", R"({"wrenchkit": 1, "body": {"outline": [[0, 0], [4, 0], [0, 3]]}})" "\n");
   EXPECT_EQ(batch.code, 0) << batch.err;
   EXPECT_NE(batch.out.find(R"("line": 1, "command": "grasp-regions")"), std::string::npos) << batch.out;
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
            {square.string(), "--mu: missing"},
            {"--mu 1 --edges 0,9 " + square.string(), "--edges: 9 is not an edge of body.outline (0 to 3)"},
-           {"--mu 1 --fingers 3 " + square.string(), "three fingers are not answered yet"},
+           {"--mu 1 --fingers 4 " + square.string(), "--fingers: \"4\" is not 2 or 3"},
+           {"--mu 1 --fingers 3 --edges 0,9 " + square.string(), "--edges: 9 is not an edge of body.outline"},
            {"--mu 1 -", "body.outline: missing"}}) {
     const Cli_result e = run("grasp-regions " + args, R"({"wrenchkit": 1})");
     EXPECT_EQ(e.code, 2) << args;

@@ -6,6 +6,8 @@
 // the independent checker accepts every answer and refuses a moved corner.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <random>
 #include <string>
 
@@ -172,6 +174,165 @@ TEST(GraspRegionsChecker, RefusesAMovedCornerAMissingPairAndAClaimedEmptyRegion)
   std::string wrong_mu = good;
   wrong_mu.replace(wrong_mu.find("\"mu\": \"1/2\""), 11, "\"mu\": \"1/3\"");
   EXPECT_NE(check(wrong_mu).find("not the force-closure region"), std::string::npos);
+}
+
+// ---- [GR-2] three fingers ------------------------------------------------------------------------------------------
+
+std::string three_fingers(const std::string& outline, const std::array<std::size_t, 3>& e, const std::array<Rational, 3>& s,
+                          const Rational& mu) {
+  std::string c;
+  for (int f = 0; f < 3; ++f)
+    c += std::string(f ? ", " : "") + R"({"edge": )" + std::to_string(e[f]) + R"(, "s": ")" + to_string(s[f]) + R"("})";
+  return R"({"wrenchkit": 1, "mu": ")" + to_string(mu) + R"(", "body": {"outline": )" + outline + R"(}, "contacts": [)" +
+         c + "]}";
+}
+
+bool closes(const std::string& text) {
+  return decide_closure(scene_of(text), Property::force_closure, Mode::exact, false).holds;
+}
+
+const char* kL = "[[0, 0], [6, 0], [6, 2], [2, 2], [2, 5], [0, 5]]";
+
+TEST(GraspRegionsThreeGolden, LPartsRightTopAndInnerEdgesCloseOnlyAboveMuOne) {
+  // edges 1 (x = 6, pushing −x), 2 (y = 2, pushing −y) and 3 (x = 2, pushing −x): the cones' edges (−1, ±μ) and
+  // (±μ, −1) all have u·f ≤ 0 for u = (1, 1) while μ ≤ 1 — at μ = 1 exactly two of them lie on that line, the
+  // boundary — so no placement closes; just above 1 they positively span the plane, and a cube of placements closes.
+  for (const Rational& mu : {Rational(1, 2), Rational(1)}) {
+    const Grasp_regions g = three_finger_regions(scene_of(part(kL)), mu, {1, 2, 3});
+    ASSERT_EQ(g.triples.size(), 1u);
+    const Triple_region& t = g.triples[0];
+    ASSERT_TRUE(t.never && t.never_direction) << to_string(mu);
+    const auto& u = *t.never_direction;
+    EXPECT_EQ(sgn(u[2]), 0);
+    EXPECT_EQ(u[1], u[0] / mu) << "(μ, 1) up to a positive factor";
+    EXPECT_GT(u[0], 0);
+  }
+  const Rational above = 1 + Rational(1, 1000000000);
+  const Grasp_regions g = three_finger_regions(scene_of(part(kL)), above, {1, 2, 3});
+  const Triple_region& t = g.triples[0];
+  ASSERT_TRUE(t.box);
+  EXPECT_FALSE(t.never);
+  std::array<Rational, 3> c;
+  for (int f = 0; f < 3; ++f) c[f] = ((*t.box)[f][0] + (*t.box)[f][1]) / 2;
+  EXPECT_TRUE(closes(three_fingers(kL, {1, 2, 3}, c, above)));
+  EXPECT_FALSE(closes(three_fingers(kL, {1, 2, 3}, c, Rational(1))));  // the same placement at μ = 1: open
+  EXPECT_EQ(wrenchkit_checker::check(part(kL), grasp_regions_certificate(g), wrenchkit_checker::Limits{}).message, "accepted");
+}
+
+TEST(GraspRegionsThreeGolden, FrictionlessThreeFingersNeverClose) {
+  const Grasp_regions g = three_finger_regions(scene_of(part(kSquare)), 0);
+  ASSERT_EQ(g.triples.size(), 4u);
+  EXPECT_EQ(g.never_triples(), 4u);
+  for (const Triple_region& t : g.triples) EXPECT_FALSE(t.never_direction);  // the count argument, not a direction
+  EXPECT_EQ(wrenchkit_checker::check(part(kSquare), grasp_regions_certificate(g), wrenchkit_checker::Limits{}).message,
+            "accepted");
+  // and the square's opposite sides with μ = 1/2 close whatever the third finger does: the pair's square extends
+  EXPECT_EQ(three_finger_regions(scene_of(part(kSquare)), Rational(1, 2)).boxed_triples(), 4u);
+  EXPECT_THROW(three_finger_regions(scene_of(part(kSquare)), 1, {0, 4}), Input_error);
+}
+
+// The theorem's own statement on small polygons: every placement sampled in a certified cube closes, and none of a
+// triple certified "never" does (the engine's dual-cone closure decision of the three placed contacts decides); the
+// search finds at least the pairs' own squares (a closed pair closes whatever the third finger does); a brute-force
+// grid finds no robustly closed placement (a closed grid point whose 26 neighbours 1/20 away all close) in a triple
+// the search left without a cube.
+TEST(GraspRegionsThreeOracle, CubesCloseNeversOpenAndTheGridFindsNothingMissed) {
+  const char* outlines[] = {"[[0, 0], [6, 0], [0, 6]]", kL, "[[0, 0], [3, 0], [5, 2], [4, 5], [1, 4]]", kSquare};
+  const Rational mus[] = {Rational(1, 50), Rational(1, 5), Rational(1, 2), Rational(1)};
+  std::mt19937_64 rng(test::seed(20261129));
+  int boxed = 0, never = 0, neither = 0, sampled_in = 0, sampled_never = 0, grid_closed = 0;
+  for (const char* o : outlines)
+    for (const Rational& mu : mus) {
+      const Scene sc = scene_of(part(o));
+      const Grasp_regions g = three_finger_regions(sc, mu);
+      const Grasp_regions pairs = two_finger_regions(sc, mu);
+      ASSERT_EQ(wrenchkit_checker::check(part(o), grasp_regions_certificate(g), wrenchkit_checker::Limits{}).message, "accepted");
+      for (const Triple_region& t : g.triples) {
+        const auto random_in = [&](const std::array<std::array<Rational, 2>, 3>& b) {
+          std::array<Rational, 3> s;
+          for (int f = 0; f < 3; ++f) s[f] = b[f][0] + (b[f][1] - b[f][0]) * Rational(static_cast<long>(rng() % 1025), 1024);
+          return s;
+        };
+        if (t.box) {
+          ++boxed;
+          for (int k = 0; k < 13; ++k) {  // five random placements and the eight corners
+            std::array<Rational, 3> at = random_in(*t.box);
+            if (k >= 5)
+              for (int f = 0; f < 3; ++f) at[f] = (*t.box)[f][(k - 5) >> f & 1];
+            const std::string text = three_fingers(o, t.edges, at, mu);
+            ASSERT_TRUE(closes(text)) << test::dump_failure(text, "three_finger_box");
+            ++sampled_in;
+          }
+          // at least every pair's own square (its side 1023/1024 of the supremum; the search's doubles lose a little)
+          for (const Pair_region& p : pairs.pairs) {
+            const bool in = std::count(t.edges.begin(), t.edges.end(), p.i) && std::count(t.edges.begin(), t.edges.end(), p.j);
+            if (in && p.box) {
+              EXPECT_GE(t.side, (*p.box)[0][1] - (*p.box)[0][0] - Rational(1, 1000)) << o << " " << to_string(mu);
+            }
+          }
+        } else if (t.never) {
+          ++never;
+          for (int k = 0; k < 5; ++k) {
+            const std::string text = three_fingers(o, t.edges, random_in({{{0, 1}, {0, 1}, {0, 1}}}), mu);
+            ASSERT_FALSE(closes(text)) << test::dump_failure(text, "three_finger_never");
+            ++sampled_never;
+          }
+        } else {
+          ++neither;
+          for (int a = 1; a < 10; a += 2)
+            for (int b = 1; b < 10; b += 2)
+              for (int c = 1; c < 10; c += 2) {
+                const std::array<Rational, 3> s{Rational(a, 10), Rational(b, 10), Rational(c, 10)};
+                if (!closes(three_fingers(o, t.edges, s, mu))) continue;
+                ++grid_closed;
+                bool robust = true;
+                for (int d = 0; d < 27 && robust; ++d) {
+                  const std::array<Rational, 3> n{s[0] + Rational(d % 3 - 1, 20), s[1] + Rational(d / 3 % 3 - 1, 20),
+                                                  s[2] + Rational(d / 9 - 1, 20)};
+                  robust = closes(three_fingers(o, t.edges, n, mu));
+                }
+                EXPECT_FALSE(robust) << "edges " << t.edges[0] << ", " << t.edges[1] << ", " << t.edges[2] << " of " << o
+                                     << " with mu " << to_string(mu) << ": a robustly closed placement and no cube";
+              }
+        }
+      }
+    }
+  EXPECT_GT(boxed, 20);
+  EXPECT_GT(never, 10);
+  EXPECT_GT(sampled_in, 100);
+  std::printf("three fingers: %d boxed, %d never, %d neither (grid: %d closed placements there)\n", boxed, never, neither,
+              grid_closed);
+}
+
+TEST(GraspRegionsThreeChecker, RefusesAnOpenCornerAWrongWrenchANeverThatClosesAndAMissingTriple) {
+  const Grasp_regions g = three_finger_regions(scene_of(part(kL)), Rational(1, 2));
+  const std::string good = grasp_regions_certificate(g);
+  const auto check = [&](std::string cert) {
+    return wrenchkit_checker::check(part(kL), cert, wrenchkit_checker::Limits{}).message;
+  };
+  ASSERT_EQ(check(good), "accepted");
+  // the first triple's cube stretched to the whole unit cube
+  std::string big = good;
+  const std::size_t at = big.find("\"independent\": [[");
+  ASSERT_NE(at, std::string::npos);
+  big.replace(at, big.find("]]", at) + 2 - at, R"("independent": [["0", "1"], ["0", "1"], ["0", "1"]])");
+  EXPECT_NE(check(big).find("triples[0].independent: at the corner"), std::string::npos) << check(big);
+  std::string label = good;
+  const std::size_t w = label.find("\"wrenches\": [\"") + 14;
+  label.replace(w, 2, label.substr(w, 2) == "R0" ? "L0" : "R0");
+  EXPECT_NE(check(label).find("triples[0]"), std::string::npos) << check(label);
+  // a boxed triple claimed never
+  std::string never = good;
+  const std::size_t n = never.find("{\"edges\": [0, 1, 2], ");
+  ASSERT_NE(n, std::string::npos);
+  never.replace(n, never.find("]}", n) + 2 - n, R"({"edges": [0, 1, 2], "never": ["1", "0", "0"]})");
+  EXPECT_NE(check(never).find("triples[0].never: the wrench"), std::string::npos) << check(never);
+  std::string frictionless = never;
+  frictionless.replace(frictionless.find(R"(["1", "0", "0"])"), 15, R"("frictionless")");
+  EXPECT_NE(check(frictionless).find("\"frictionless\" but mu is 1/2"), std::string::npos) << check(frictionless);
+  std::string missing = good;
+  missing.erase(n, missing.find("}, ", n) + 3 - n);
+  EXPECT_NE(check(missing).find("triples[0]: expected edges [0, 1, 2]"), std::string::npos) << check(missing);
 }
 
 }  // namespace

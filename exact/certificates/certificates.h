@@ -48,6 +48,9 @@ std::string critical_mu_certificate(const Critical_mu& c, bool closure);
 
 // §3.6 (format 5): the regions of every edge pair asked; write_region_pairs: its "pairs" array (the answer's too).
 void write_region_pairs(Json_writer& w, const Grasp_regions& g);
+// §3.6 with "fingers": 3: every edge triple asked, with its independent cube and the four wrenches certifying it, or
+// "never" (a wrench-space direction, or "frictionless"); the answer's "triples" too.
+void write_region_triples(Json_writer& w, const Grasp_regions& g);
 std::string grasp_regions_certificate(const Grasp_regions& g);
 
 // §8 (format 6): the certificate of a decided rotation sense (ccw, cw, none or depends; not undecided).

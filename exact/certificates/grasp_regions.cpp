@@ -22,16 +22,37 @@ void write_region_pairs(Json_writer& w, const Grasp_regions& g) {
   w.end_array();
 }
 
+void write_region_triples(Json_writer& w, const Grasp_regions& g) {
+  w.key("triples").array();
+  for (const Triple_region& t : g.triples) {
+    w.object().key("edges").array().integer(t.edges[0]).integer(t.edges[1]).integer(t.edges[2]).end_array();
+    if (t.box) {
+      w.key("independent").array();
+      for (const auto& iv : *t.box) w.rationals(iv);
+      w.end_array().key("wrenches").array();
+      for (const int x : t.wrenches) w.string(wrench_label(x));
+      w.end_array();
+    }
+    if (t.never) {
+      if (t.never_direction) w.key("never").rationals(*t.never_direction);
+      else w.member("never", "frictionless");
+    }
+    w.end_object();
+  }
+  w.end_array();
+}
+
 std::string grasp_regions_certificate(const Grasp_regions& g) {
   Json_writer w(1024);
-  w.object().member("wrenchkit_certificate", 5).member("property", "grasp_regions").member("fingers", 2);
+  w.object().member("wrenchkit_certificate", 5).member("property", "grasp_regions").member("fingers", g.fingers);
   w.member("mu", g.mu);
   if (!g.asked.empty()) {
     w.key("edges").array();
     for (const std::size_t e : g.asked) w.integer(e);
     w.end_array();
   }
-  write_region_pairs(w, g);
+  if (g.fingers == 3) write_region_triples(w, g);
+  else write_region_pairs(w, g);
   return w.end_object().take();
 }
 

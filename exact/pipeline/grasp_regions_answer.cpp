@@ -12,7 +12,8 @@ Grasp_regions_item answer_grasp_regions(std::string_view text, std::string_view 
     r.mode = request.mode;
     const std::optional<Rational> mu = query.mu ? query.mu : r.scene.mu;
     if (!mu) throw Input_error("--mu: missing (the fingers' friction coefficient: give --mu M, or \"mu\" in the scene)");
-    r.regions = two_finger_regions(r.scene, *mu, query.edges);
+    r.regions = query.fingers == 3 ? three_finger_regions(r.scene, *mu, query.edges)
+                                    : two_finger_regions(r.scene, *mu, query.edges);
     if (!request.certify) return;
     r.certificate = grasp_regions_certificate(r.regions);
     check_into(r, text, {r.certificate}, request);

@@ -17,6 +17,7 @@ namespace wrenchkit {
 struct Grasp_regions_query {
   std::optional<Rational> mu;       // else the scene's "mu"
   std::vector<std::size_t> edges;   // empty: every edge
+  int fingers = 2;                  // 2: Nguyen's regions; 3: independent boxes per edge triple (GR-2)
 };
 
 struct Grasp_regions_item {

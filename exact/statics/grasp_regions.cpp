@@ -2,6 +2,7 @@
 #include "exact/statics/grasp_regions.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "exact/io/input_error.h"
@@ -118,7 +119,16 @@ bool closed_at(const Pair_region& r, const Rational& s, const Rational& t) {
   return true;
 }
 
-Grasp_regions two_finger_regions(const Scene& scene, const Rational& mu, const std::vector<std::size_t>& only) {
+namespace {
+
+// per edge: its first vertex, its vector, and its cone's edges R = n − μ·rot90 n, L = n + μ·rot90 n
+struct Edge_cone {
+  Vec2 a, d, R, L;
+};
+
+// The checks every question on the outline's edges makes, the edges asked (increasing) and each edge's cone.
+std::vector<Edge_cone> prepare(const Scene& scene, const Rational& mu, const std::vector<std::size_t>& only, Grasp_regions& g,
+                          std::vector<std::size_t>& edges) {
   const std::vector<Vec2>& V = scene.body.outline;
   if (V.empty()) throw Input_error("body.outline: missing (grasp regions are places on the outline's edges: give the part's polygon)");
   if (!scene.warnings.empty()) throw Input_error("body.outline: " + scene.warnings.front() + " (grasp regions need a valid outline; drop --lenient)");
@@ -127,7 +137,7 @@ Grasp_regions two_finger_regions(const Scene& scene, const Rational& mu, const s
   if (n > kGraspRegionsMaxEdges)
     throw Input_error("body.outline: " + std::to_string(n) + " edges, more than " + std::to_string(kGraspRegionsMaxEdges) +
                       " (the edge pairs grow as their square); ask for some with --edges");
-  std::vector<std::size_t> edges = only;
+  edges = only;
   if (edges.empty())
     for (std::size_t k = 0; k < n; ++k) edges.push_back(k);
   std::sort(edges.begin(), edges.end());
@@ -135,23 +145,27 @@ Grasp_regions two_finger_regions(const Scene& scene, const Rational& mu, const s
   for (const std::size_t e : edges)
     if (e >= n)
       throw Input_error("--edges: " + std::to_string(e) + " is not an edge of body.outline (0 to " + std::to_string(n - 1) + ")");
-  Grasp_regions g;
   if (!only.empty()) g.asked = edges;
   g.mu = mu;
   g.edges = n;
   g.ccw = scene.body.outline_ccw;
   g.convex = scene.body.outline_convex;
   const int orientation = outline_orientation(V);
-  // per edge: its first vertex, its vector, and its cone's edges R = n − μ·rot90 n, L = n + μ·rot90 n
-  struct Edge {
-    Vec2 a, d, R, L;
-  };
-  std::vector<Edge> E(n);
+  std::vector<Edge_cone> E(n);
   for (std::size_t k = 0; k < n; ++k) {
     const Vec2 nn = edge_inward_normal(V, k, orientation), t{-nn.y, nn.x};
     E[k] = {V[k], {V[(k + 1) % n].x - V[k].x, V[(k + 1) % n].y - V[k].y}, {nn.x - mu * t.x, nn.y - mu * t.y},
             {nn.x + mu * t.x, nn.y + mu * t.y}};
   }
+  return E;
+}
+
+}  // namespace
+
+Grasp_regions two_finger_regions(const Scene& scene, const Rational& mu, const std::vector<std::size_t>& only) {
+  Grasp_regions g;
+  std::vector<std::size_t> edges;
+  const std::vector<Edge_cone> E = prepare(scene, mu, only, g, edges);
   const std::vector<Corner> square{{Rational(0), Rational(0)}, {Rational(1), Rational(0)}, {Rational(1), Rational(1)},
                                    {Rational(0), Rational(1)}};
   for (std::size_t x = 0; x < edges.size(); ++x)
@@ -159,7 +173,7 @@ Grasp_regions two_finger_regions(const Scene& scene, const Rational& mu, const s
       Pair_region r;
       r.i = std::min(edges[x], edges[y]), r.j = std::max(edges[x], edges[y]);
       if (r.i == r.j) continue;
-      const Edge &ei = E[r.i], &ej = E[r.j];
+      const Edge_cone &ei = E[r.i], &ej = E[r.j];
       // v = p_j(t) − p_i(s) = (a_j − a_i) + t d_j − s d_i; finger i: cross(R_i, v) > 0, cross(v, L_i) > 0; finger j
       // with −v: cross(R_j, −v) > 0, cross(−v, L_j) > 0
       const Vec2 c0{ej.a.x - ei.a.x, ej.a.y - ei.a.y};
@@ -178,6 +192,286 @@ Grasp_regions two_finger_regions(const Scene& scene, const Rational& mu, const s
       }
       g.pairs.push_back(std::move(r));
     }
+  return g;
+}
+
+}  // namespace wrenchkit
+
+// ---- [GR-2] three fingers -------------------------------------------------------------------------------------------
+
+namespace wrenchkit {
+
+std::string wrench_label(int w) { return std::string(w % 2 == 0 ? "R" : "L") + std::to_string(w / 2); }
+
+std::size_t Grasp_regions::boxed_triples() const {
+  std::size_t n = 0;
+  for (const Triple_region& t : triples) n += t.box.has_value();
+  return n;
+}
+
+std::size_t Grasp_regions::never_triples() const {
+  std::size_t n = 0;
+  for (const Triple_region& t : triples) n += t.never;
+  return n;
+}
+
+namespace {
+
+// The four-subsets of the six wrenches (increasing), the complements of the fifteen pairs.
+const std::array<std::array<int, 4>, 15>& four_subsets() {
+  static const std::array<std::array<int, 4>, 15> Q = [] {
+    std::array<std::array<int, 4>, 15> out{};
+    std::size_t at = 0;
+    for (int x = 0; x < 6; ++x)
+      for (int y = x + 1; y < 6; ++y) {
+        std::size_t k = 0;
+        for (int w = 0; w < 6; ++w)
+          if (w != x && w != y) out[at][k++] = w;
+        ++at;
+      }
+    return out;
+  }();
+  return Q;
+}
+
+// A wrench of the triple, affine in its finger's parameter s: (fx, fy, m0 + s·m1), the moment about the origin.
+struct Wrench_q {
+  Rational fx, fy, m0, m1;
+};
+struct Wrench_d {
+  double fx, fy, m0, m1;
+};
+
+template <class T>
+T det3(const T (&a)[3], const T (&b)[3], const T (&c)[3]) {
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - b[0] * (a[1] * c[2] - a[2] * c[1]) + c[0] * (a[1] * b[2] - a[2] * b[1]);
+}
+
+// The four signed cofactors (−1)^m det(w without w_m) of the subset q at the placement p (one parameter per finger).
+template <class T, class W>
+std::array<T, 4> cofactors(const W (&w)[6], const std::array<int, 4>& q, const T (&p)[3]) {
+  T v[4][3];
+  for (int k = 0; k < 4; ++k) {
+    const W& x = w[q[k]];
+    v[k][0] = x.fx, v[k][1] = x.fy, v[k][2] = x.m0 + p[q[k] / 2] * x.m1;
+  }
+  return {det3(v[1], v[2], v[3]), T(-det3(v[0], v[2], v[3])), det3(v[0], v[1], v[3]), T(-det3(v[0], v[1], v[2]))};
+}
+
+// Every corner of the cube of half-side h about c (inside the unit cube) has the subset's four cofactors of one strict
+// sign, beyond `tol` (doubles: a proposal only).
+bool valid_d(const Wrench_d (&w)[6], const std::array<int, 4>& q, const double (&c)[3], double h, double tol) {
+  int sign = 0;
+  for (int corner = 0; corner < (h > 0 ? 8 : 1); ++corner) {
+    const double p[3] = {c[0] + (corner & 1 ? h : -h), c[1] + (corner & 2 ? h : -h), c[2] + (corner & 4 ? h : -h)};
+    for (const double v : cofactors(w, q, p)) {
+      const int sv = v > tol ? 1 : v < -tol ? -1 : 0;
+      if (sv == 0 || (sign != 0 && sv != sign)) return false;
+      sign = sv;
+    }
+  }
+  return true;
+}
+
+// The exact check (what the checker also does): the 32 cofactors at the box's corners, one strict sign.
+bool valid_q(const Wrench_q (&w)[6], const std::array<int, 4>& q, const std::array<std::array<Rational, 2>, 3>& box) {
+  int sign = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Rational p[3] = {box[0][corner & 1 ? 1 : 0], box[1][corner & 2 ? 1 : 0], box[2][corner & 4 ? 1 : 0]};
+    for (const Rational& v : cofactors(w, q, p)) {
+      const int sv = sgn(v);
+      if (sv == 0 || (sign != 0 && sv != sign)) return false;
+      sign = sv;
+    }
+  }
+  return true;
+}
+
+// A direction u of the wrench space with u · w ≤ 0 for the twelve wrenches at the edges' ends, or none: proposed by
+// the doubles among ±(w_x × w_y) (a facet's normal of their cone, when it is not everything), checked exactly.
+std::optional<std::array<Rational, 3>> never_direction(const Wrench_q (&w)[6]) {
+  Rational W[12][3];
+  double D[12][3];
+  for (int k = 0; k < 12; ++k) {
+    const Wrench_q& x = w[k / 2];
+    W[k][0] = x.fx, W[k][1] = x.fy, W[k][2] = k % 2 ? Rational(x.m0 + x.m1) : x.m0;
+    for (int i = 0; i < 3; ++i) D[k][i] = W[k][i].get_d();
+  }
+  double scale = 0;
+  for (const auto& d : D)
+    for (const double x : d) scale = std::max(scale, std::abs(x));
+  for (int x = 0; x < 12; ++x)
+    for (int y = x + 1; y < 12; ++y) {
+      const double u[3] = {D[x][1] * D[y][2] - D[x][2] * D[y][1], D[x][2] * D[y][0] - D[x][0] * D[y][2],
+                           D[x][0] * D[y][1] - D[x][1] * D[y][0]};
+      const double un = std::abs(u[0]) + std::abs(u[1]) + std::abs(u[2]);
+      if (!(un > 0)) continue;
+      for (const double sign : {1.0, -1.0}) {
+        bool below = true;
+        for (int k = 0; k < 12 && below; ++k) below = sign * (u[0] * D[k][0] + u[1] * D[k][1] + u[2] * D[k][2]) <= 1e-9 * un * scale;
+        if (!below) continue;
+        std::array<Rational, 3> q{W[x][1] * W[y][2] - W[x][2] * W[y][1], W[x][2] * W[y][0] - W[x][0] * W[y][2],
+                                  W[x][0] * W[y][1] - W[x][1] * W[y][0]};
+        if (sign < 0)
+          for (Rational& v : q) v = -v;
+        if (sgn(q[0]) == 0 && sgn(q[1]) == 0 && sgn(q[2]) == 0) continue;
+        bool exact = true;
+        for (int k = 0; k < 12 && exact; ++k) exact = sgn(Rational(q[0] * W[k][0] + q[1] * W[k][1] + q[2] * W[k][2])) <= 0;
+        if (exact) {  // as the primitive integer vector along it (small integers to read)
+          const std::array<Integer, 3> z = primitive(q);
+          return std::array<Rational, 3>{Rational(z[0]), Rational(z[1]), Rational(z[2])};
+        }
+      }
+    }
+  return std::nullopt;
+}
+
+// A dyadic rational near x (2^-24 steps): short certificates, exact.
+Rational dyadic(double x, bool down) {
+  const double k = down ? std::floor(x * 16777216.0) : std::nearbyint(x * 16777216.0);
+  Rational q(static_cast<long>(k), 16777216L);
+  q.canonicalize();
+  return q;
+}
+
+// The search for the triple's largest cube (GR-2 §3): centres on a 4×4×4 grid and at the pairs' own boxes (the third
+// finger at 1/2), each with every four-subset valid there and its largest half-side by bisection, then a local search
+// moving the best centre by halving steps; doubles propose, and the best is rounded to dyadic rationals, shrunk by
+// 2⁻¹⁰ and checked exactly (halved up to four times when the rounding lost it).
+void search_box(Triple_region& t, const Wrench_q (&wq)[6], const std::vector<std::array<double, 3>>& seeds) {
+  Wrench_d w[6];
+  double scale = 0;
+  for (int k = 0; k < 6; ++k) {
+    w[k] = {wq[k].fx.get_d(), wq[k].fy.get_d(), wq[k].m0.get_d(), wq[k].m1.get_d()};
+    scale = std::max({scale, std::abs(w[k].fx), std::abs(w[k].fy), std::abs(w[k].m0), std::abs(w[k].m0 + w[k].m1)});
+  }
+  const double tol = 1e-12 * scale * scale * scale;
+  const auto& Q = four_subsets();
+  double best_h = 0, best_c[3] = {0.5, 0.5, 0.5};
+  int best_q = -1;
+  const auto try_centre = [&](const double (&c)[3]) {
+    double hmax = 1;
+    for (const double x : c) hmax = std::min({hmax, x, 1 - x});
+    if (!(hmax > best_h * (1 + 1e-9))) return false;
+    bool improved = false;
+    for (int q = 0; q < 15; ++q) {
+      if (!valid_d(w, Q[q], c, 0, tol)) continue;
+      double h;
+      if (valid_d(w, Q[q], c, hmax, tol)) {
+        h = hmax;
+      } else {
+        double lo = best_h, hi = hmax;
+        if (lo > 0 && !valid_d(w, Q[q], c, lo, tol)) continue;
+        for (int it = 0; it < 22; ++it) {
+          const double mid = (lo + hi) / 2;
+          (valid_d(w, Q[q], c, mid, tol) ? lo : hi) = mid;
+        }
+        h = lo;
+      }
+      if (h > best_h * (1 + 1e-9)) {
+        best_h = h, best_q = q, improved = true;
+        std::copy(c, c + 3, best_c);
+      }
+    }
+    return improved;
+  };
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      for (int e = 0; e < 4; ++e) {
+        const double c[3] = {(2 * a + 1) / 8.0, (2 * b + 1) / 8.0, (2 * e + 1) / 8.0};
+        try_centre(c);
+      }
+  for (const auto& s : seeds) {
+    const double c[3] = {s[0], s[1], s[2]};
+    try_centre(c);
+  }
+  if (best_q < 0) return;
+  int moves = 0;
+  for (double step = 1.0 / 16; step >= 1.0 / 1024 && moves < 200;) {
+    bool improved = false;
+    for (int axis = 0; axis < 3 && !improved; ++axis)
+      for (const double dir : {1.0, -1.0}) {
+        double c[3] = {best_c[0], best_c[1], best_c[2]};
+        c[axis] += dir * step;
+        ++moves;
+        if (try_centre(c)) {
+          improved = true;
+          break;
+        }
+      }
+    if (!improved) step /= 2;
+  }
+  // exact: the centre and the half-side as dyadic rationals, inside the unit cube, checked
+  Rational c[3], h = dyadic(best_h * (1023.0 / 1024.0), true);
+  for (int k = 0; k < 3; ++k) {
+    c[k] = dyadic(best_c[k], false);
+    h = std::min({h, c[k], Rational(1 - c[k])});
+  }
+  for (int attempt = 0; attempt < 5 && sgn(h) > 0; ++attempt, h /= 2) {
+    std::array<std::array<Rational, 2>, 3> box;
+    for (int k = 0; k < 3; ++k) box[k] = {c[k] - h, c[k] + h};
+    for (int q = 0; q < 15; ++q) {
+      const int tried = (best_q + q) % 15;  // the proposal's subset first
+      if (!valid_q(wq, Q[tried], box)) continue;
+      t.box = box;
+      t.wrenches = Q[tried];
+      t.side = 2 * h;
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+Grasp_regions three_finger_regions(const Scene& scene, const Rational& mu, const std::vector<std::size_t>& only) {
+  Grasp_regions g;
+  g.fingers = 3;
+  std::vector<std::size_t> edges;
+  const std::vector<Edge_cone> E = prepare(scene, mu, only, g, edges);
+  const std::size_t m = edges.size();
+  if (m >= 3 && m * (m - 1) * (m - 2) / 6 > kGraspRegionsMaxTriples)
+    throw Input_error("body.outline: " + std::to_string(m) + " edges make " + std::to_string(m * (m - 1) * (m - 2) / 6) +
+                      " triples for three fingers, more than " + std::to_string(kGraspRegionsMaxTriples) +
+                      "; ask for some edges with --edges");
+  // the pairs' own independent squares seed the search (a closed pair closes whatever the third finger does)
+  std::vector<std::array<double, 4>> pair_box;  // per pair index: centre (s, t) and whether there is one
+  const Grasp_regions pairs = two_finger_regions(scene, mu, only);
+  const auto pair_at = [&](std::size_t x, std::size_t y) -> const Pair_region& {  // x < y indices into edges
+    return pairs.pairs[x * m - x * (x + 1) / 2 + (y - x - 1)];
+  };
+  for (std::size_t x = 0; x < m; ++x)
+    for (std::size_t y = x + 1; y < m; ++y)
+      for (std::size_t z = y + 1; z < m; ++z) {
+        Triple_region t;
+        t.edges = {edges[x], edges[y], edges[z]};
+        Wrench_q w[6];
+        for (int f = 0; f < 3; ++f) {
+          const Edge_cone& e = E[t.edges[f]];
+          for (int side = 0; side < 2; ++side) {
+            const Vec2& F = side == 0 ? e.R : e.L;
+            w[2 * f + side] = {F.x, F.y, cross(e.a, F), cross(e.d, F)};
+          }
+        }
+        if (sgn(mu) == 0) {
+          t.never = true;
+        } else if ((t.never_direction = never_direction(w))) {
+          t.never = true;
+        } else {
+          std::vector<std::array<double, 3>> seeds;
+          const std::size_t idx[3] = {x, y, z};
+          for (int a = 0; a < 3; ++a)
+            for (int b = a + 1; b < 3; ++b) {
+              const Pair_region& p = pair_at(idx[a], idx[b]);
+              if (!p.box) continue;
+              std::array<double, 3> c{0.5, 0.5, 0.5};
+              c[a] = Rational((*p.box)[0][0] + (*p.box)[0][1]).get_d() / 2;
+              c[b] = Rational((*p.box)[1][0] + (*p.box)[1][1]).get_d() / 2;
+              seeds.push_back(c);
+            }
+          search_box(t, w, seeds);
+        }
+        g.triples.push_back(std::move(t));
+      }
   return g;
 }
 

@@ -254,7 +254,7 @@ Certificate read_certificate(Reader& r) {
       c.critical = p == "critical_mu";
       c.regions = p == "grasp_regions";
       c.push = p == "push";
-    } else if (key == "fingers" || key == "mu" || key == "edges" || key == "pairs") {
+    } else if (key == "fingers" || key == "mu" || key == "edges" || key == "pairs" || key == "triples") {
       read_region_member(r, key, c);
     } else if (key == "rotation" || key == "friction" || key == "votes" || key == "center" || key == "turns" ||
                key == "contact") {
@@ -412,7 +412,7 @@ void check_keys(const Certificate& c) {
         "dual", "vertices", "sticking", "sliding", "holding", "failing", "regions", "norm", "normalize", "torque_scale",
         "about", "scales", "epsilon", "boundary", "nearest", "normal", "of", "critical_mu", "below", "above", "constant",
         "constant_beyond", "limit_twist", "scaling", "torque_radius_squared", "torque_scale_error", "fingers", "mu",
-        "edges", "pairs"};
+        "edges", "pairs", "triples"};
     static const std::uint64_t others_mask = Key_set::mask(others);
     if (c.keys.any(others_mask))
       for (const char* key : others)
@@ -426,9 +426,11 @@ void check_keys(const Certificate& c) {
   if ((c.version == 5) != c.regions)
     throw Failure{c.regions ? "wrenchkit_certificate: property \"grasp_regions\" is format 5 (expected the integer 5)"
                             : "wrenchkit_certificate: format 5 is property \"grasp_regions\" only"};
-  static const char* const region_keys[] = {"fingers", "mu", "edges", "pairs"};
+  static const char* const region_keys[] = {"fingers", "mu", "edges", "pairs", "triples"};
   if (c.regions) {
-    need("fingers"), need("mu"), need("pairs");
+    need("fingers"), need("mu");
+    if (c.keys.count("pairs") == c.keys.count("triples"))
+      throw Failure{"grasp_regions: expected one of \"pairs\" (two fingers) and \"triples\" (three)"};
     for (const std::string_view key : {"holds", "combination", "independent", "twist", "reading"})
       if (c.keys.count(key)) throw Failure{"key " + quote(key) + " is not allowed when \"property\" is \"grasp_regions\""};
     return;

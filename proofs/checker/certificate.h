@@ -79,7 +79,7 @@ class Key_set {
                                              "torque_scale", "about", "scales", "epsilon", "boundary", "nearest",
                                              "normal", "of", "critical_mu", "below", "above", "constant",
                                              "constant_beyond", "limit_twist", "scaling", "torque_radius_squared",
-                                             "torque_scale_error", "fingers", "mu", "edges", "pairs",
+                                             "torque_scale_error", "fingers", "mu", "edges", "pairs", "triples",
                                              "rotation", "friction", "votes", "center", "turns",
                                              "contact"};
     for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
@@ -154,6 +154,15 @@ struct Regions_part {
     Q box[2][2];  // "independent": [[s0, s1], [t0, t1]]
   };
   std::vector<Pair> pairs;
+  struct Triple {  // "fingers": 3
+    std::size_t e[3] = {0, 0, 0};
+    bool has_box = false;
+    Q box[3][2];     // "independent": [[a0, b0], [a1, b1], [a2, b2]]
+    int wrench[4] = {0, 0, 0, 0};  // "wrenches": "R0".."L2" as 2·finger + (0 R, 1 L)
+    int never = 0;   // 1: "never": "frictionless"; 2: "never": [ux, uy, um]
+    Q direction[3];
+  };
+  std::vector<Triple> triples;
 };
 
 // The members of property "push" (§8, format 6): bounds over F of the friction under the body and of the three votes

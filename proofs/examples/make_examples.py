@@ -45,6 +45,7 @@ CORNERS = [[-1, -1], [1, -1], [1, 1], [-1, 1]]
 SQUARE_REGION = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 1}
 
 SCENES = {
+    "l_part": {"wrenchkit": 1, "name": "an L-shaped part for three fingers (no contacts)", "body": {"outline": [[0, 0], [6, 0], [6, 2], [2, 2], [2, 5], [0, 5]]}},
     "square_part": {"wrenchkit": 1, "name": "the unit square as a part for two fingers (no contacts)", "body": {"outline": [[0, 0], [1, 0], [1, 1], [0, 1]]}},
     "square_side_middles": {"wrenchkit": 1, "name": "the square held at its side middles, mu = 1/10 (GraspIt!'s torque scale 1/sqrt 2)", "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "com": [0, 0]}, "contacts": [{"at": [0, -1], "normal": [0, 1], "mu": "1/10"}, {"at": [0, 1], "normal": [0, -1], "mu": "1/10"}, {"at": [-1, 0], "normal": [1, 0], "mu": "1/10"}, {"at": [1, 0], "normal": [-1, 0], "mu": "1/10"}]},
     "two_fingers_offset_own_mu": {"wrenchkit": 1, "name": "the offset fingers with their own friction, mu = 1 and 3/4: closed while both keep more than 2/3 of it", "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": 1, "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "mu": "3/4", "name": "right finger"}]},
@@ -485,7 +486,30 @@ def crit(base, **changes):
     return cert
 
 
+# three fingers on the L-shaped part's edges 0-3, mu = 1/2, as the engine writes it (GR-2): two cubes certified by four
+# wrenches, two triples that never close (every friction-cone edge in a closed half-plane: u = (2, -1) and (1, 2)).
+L_TRIPLES = json.loads(r'''{"wrenchkit_certificate": 5, "property": "grasp_regions", "fingers": 3, "mu": "1/2", "edges": [0, 1, 2, 3], "triples": [{"edges": [0, 1, 2], "independent": [["2133823/8388608", "4288705/8388608"], ["3829567/8388608", "5984449/8388608"], ["6197055/8388608", "8351937/8388608"]], "wrenches": ["R0", "R1", "L1", "L2"]}, {"edges": [0, 1, 3], "never": ["2", "-1", "0"]}, {"edges": [0, 2, 3], "independent": [["6910989/16777216", "14060531/16777216"], ["1111053/16777216", "8260595/16777216"], ["5403661/16777216", "12553203/16777216"]], "wrenches": ["R0", "L0", "L1", "L2"]}, {"edges": [1, 2, 3], "never": ["1", "2", "0"]}]}''')
+
+
+def l_triples(**change):
+    c = json.loads(json.dumps(L_TRIPLES))
+    for k, v in change.items():
+        c["triples"][int(k[1:])] = v
+    return c
+
+
 CERTS = [
+    ("l_part", "grasp_regions_three", "valid", L_TRIPLES),
+    ("l_part", "grasp_regions_three_frictionless", "valid",
+     dict(L_TRIPLES, mu="0", triples=[{"edges": t["edges"], "never": "frictionless"} for t in L_TRIPLES["triples"]])),
+    ("l_part", "grasp_regions_three_cube_too_big", "invalid:independent|triples[0].independent: at the corner",
+     l_triples(t0=dict(L_TRIPLES["triples"][0], independent=[["0", "1"], ["0", "1"], ["0", "1"]]))),
+    ("l_part", "grasp_regions_three_never_closes", "invalid:never|triples[0].never: the wrench",
+     l_triples(t0={"edges": [0, 1, 2], "never": ["1", "0", "0"]})),
+    ("l_part", "grasp_regions_three_frictionless_with_friction", "invalid:never|triples[1].never: \"frictionless\" but mu is 1/2",
+     l_triples(t1={"edges": [0, 1, 3], "never": "frictionless"})),
+    ("l_part", "grasp_regions_three_triple_missing", "invalid:triples|triples[1]: expected edges [0, 1, 3]",
+     dict(L_TRIPLES, triples=L_TRIPLES["triples"][:1] + L_TRIPLES["triples"][2:])),
     ("square_part", "grasp_regions_half", "valid", regions_cert(SQ_PAIRS)),
     ("square_part", "grasp_regions_opposite", "valid", regions_cert([SQ_PAIRS[1]], edges=[0, 2])),
     ("square_part", "grasp_regions_adjacent_at_mu_1", "valid", regions_cert([{"edges": [0, 1], "closed": []}], mu="1", edges=[0, 1])),
@@ -1778,9 +1802,78 @@ def verify_critical(scene, cert):
     return None if all(constant(p, l, h, far) for p in minors()) else "constant"
 
 
+def verify_triples(scene, cert):
+    """§3.6 with three fingers: every triple asked, in order; each claimed cube's placements (its corners, centre and a
+    5x5x5 grid) close — decided here by whether the six friction-cone wrenches positively span the wrench space (no
+    plane through the origin and two of them has all six on one side, and they have rank 3), not by the certificate's
+    four wrenches —, and a triple claimed "never" has no closing placement on a 6x6x6 grid, with its direction's
+    claim (every wrench at both ends of each edge on the non-positive side, or mu = 0) checked."""
+    V = [(F(x), F(y)) for x, y in scene["body"]["outline"]]
+    n, mu = len(V), F(cert["mu"])
+    area2 = sum(V[k][0] * V[(k + 1) % n][1] - V[(k + 1) % n][0] * V[k][1] for k in range(n))
+
+    def cone(k):  # first vertex, vector, the cone's two edges n -/+ mu rot90 n
+        dx, dy = V[(k + 1) % n][0] - V[k][0], V[(k + 1) % n][1] - V[k][1]
+        nx, ny = (-dy, dx) if area2 > 0 else (dy, -dx)
+        tx, ty = -ny, nx
+        return V[k], (dx, dy), [(nx - mu * tx, ny - mu * ty), (nx + mu * tx, ny + mu * ty)]
+
+    def wrenches(edges, s):
+        out = []
+        for e, t in zip(edges, s):
+            a, d, fs = cone(e)
+            px, py = a[0] + t * d[0], a[1] + t * d[1]
+            out += [(fx, fy, px * fy - py * fx) for fx, fy in fs]
+        return out
+
+    def crossv(a, b):
+        return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+    def dotv(a, b):
+        return sum(x * y for x, y in zip(a, b))
+
+    def spans(W):
+        if not any(dotv(crossv(a, b), c) != 0 for a, b, c in itertools.combinations(W, 3)):
+            return False  # rank below 3
+        for a, b in itertools.combinations(W, 2):
+            u = crossv(a, b)
+            if any(u) and (all(dotv(u, w) <= 0 for w in W) or all(dotv(u, w) >= 0 for w in W)):
+                return False
+        return True
+
+    edges = cert.get("edges", list(range(n)))
+    want = [tuple(t) for t in itertools.combinations(edges, 3)]
+    if [tuple(t["edges"]) for t in cert["triples"]] != want:
+        return "triples"
+    for t in cert["triples"]:
+        e = t["edges"]
+        if "independent" in t:
+            box = [(F(a), F(b)) for a, b in t["independent"]]
+            if not all(0 <= a < b <= 1 for a, b in box):
+                return "independent"
+            grid = [[a + (b - a) * F(k, 4) for k in range(5)] for a, b in box]
+            if not all(spans(wrenches(e, s)) for s in itertools.product(*grid)):
+                return "independent"
+        if "never" in t:
+            if "independent" in t:
+                return "never"
+            if t["never"] == "frictionless":
+                if mu != 0:
+                    return "never"
+            else:
+                u = [F(x) for x in t["never"]]
+                if not any(u) or any(dotv(u, w) > 0 for s in itertools.product((F(0), F(1)), repeat=3) for w in wrenches(e, s)):
+                    return "never"
+            if any(spans(wrenches(e, s)) for s in itertools.product([F(k, 5) for k in range(6)], repeat=3)):
+                return "never"
+    return None
+
+
 def verify_regions(scene, cert):
     """§3.6: every pair asked, in order, with Nguyen's region (written here from angles' signs: the segment between
     the fingers strictly inside both cones), cut from the unit square; its own clipping, not the checker's."""
+    if cert.get("wrenchkit_certificate") == 5 and cert.get("fingers") == 3 and "pairs" not in cert:
+        return verify_triples(scene, cert)
     if cert.get("wrenchkit_certificate") != 5 or cert.get("fingers") != 2:
         return "header"
     V = [(F(x), F(y)) for x, y in scene["body"]["outline"]]

@@ -490,6 +490,22 @@ def test_grasp_regions_square_opposite_sides():
         wrenchkit.grasp_regions(square)
 
 
+def test_grasp_regions_three_fingers_on_the_l_part():
+    l_part = {"wrenchkit": 1, "body": {"outline": [[0, 0], [6, 0], [6, 2], [2, 2], [2, 5], [0, 5]]}}
+    r = wrenchkit.grasp_regions(l_part, mu="1/2", edges=[1, 2, 3], fingers=3)
+    # the right side, the foot's top and the inner side push -x, -y, -x: every cone edge has u . f <= 0 for
+    # u = (1/2, 1) (mu = 1/2), so no placement closes
+    (t,) = r["triples"]
+    ux, uy, um = t["never"]
+    assert um == 0 and ux > 0 and uy == 2 * ux and r["never_triples"] == 1 and r["certificate_checked"] is True
+    r = wrenchkit.grasp_regions(l_part, mu="11/10", edges=[1, 2, 3], fingers=3)  # above mu = 1 they close
+    (a0, b0), (a1, b1), (a2, b2) = r["triples"][0]["independent"]
+    assert b0 - a0 == b1 - a1 == b2 - a2 == r["most_independent"]["independent_side"] > 0
+    assert len(r["triples"][0]["wrenches"]) == 4
+    with pytest.raises(wrenchkit.InputError, match="--fingers: \"4\" is not 2 or 3"):
+        wrenchkit.grasp_regions(l_part, mu=1, fingers=4)
+
+
 def test_push_voting_theorem():
     square = {"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]},
               "support": {"mu": "1/2", "points": [{"at": [x, y], "force": 1} for x, y in

@@ -348,21 +348,33 @@ def push(scene, *, contact=False):
     return r
 
 
-def grasp_regions(part, *, mu=None, edges=None):
+def grasp_regions(part, *, mu=None, edges=None, fingers=2):
     """Where two fingers may go (docs/grasp-regions.md), as `wrenchkit grasp-regions --json`: for every pair i < j of
     body.outline's edges (edge i from vertex i to i + 1), "closed": the polygons in (s, t) — a finger at
     v_i + s (v_{i+1} - v_i), the other at t on edge j — where the two frictional fingers are in force closure (corners
     as Fraction pairs, counter-clockwise; [] when none) and "independent" ([(s0, s1), (t0, t1)]: every placement in
     that box closes), with "areas", "largest", "most_independent", "outline" and the "certificate" the
     independent checker accepted. mu: the fingers' friction (default: the scene's "mu"); edges: the edges to pair.
+    fingers=3: "triples" instead, for every triple i < j < k of edges: "independent" ([(a0, b0), (a1, b1), (a2, b2)]:
+    a cube of placements that all close, certified by the four friction-cone "wrenches" named) or "never" (no
+    placement closes: "frictionless", or a wrench-space direction as Fractions), with "most_independent".
     """
-    words = []
+    words = ["--fingers", str(int(fingers))] if fingers != 2 else []
     if mu is not None:
         words += ["--mu", _number_text(mu, "mu")]
     if edges is not None:
         words += ["--edges", ",".join(str(int(e)) for e in edges)]
     r = _json.loads(_core.grasp_regions(_scene(part), words))
     r["mu"] = _fractions.Fraction(r["mu"])
+    for t in r.get("triples", []):
+        if "independent" in t:
+            t["independent"] = [tuple(_fractions.Fraction(x) for x in iv) for iv in t["independent"]]
+        if isinstance(t.get("never"), list):
+            t["never"] = tuple(_fractions.Fraction(x) for x in t["never"])
+    if "triples" in r:
+        if "most_independent" in r:
+            r["most_independent"]["independent_side"] = _fractions.Fraction(r["most_independent"]["independent_side"])
+        return r
     for p in r["pairs"]:
         p["closed"] = [[tuple(_fractions.Fraction(x) for x in c) for c in poly] for poly in p["closed"]]
         if "independent" in p:
