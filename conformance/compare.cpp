@@ -18,6 +18,9 @@
 #include "exact/io/input_error.h"
 #include "exact/io/json.h"
 #include "exact/io/json_writer.h"
+#include "exact/io/outline.h"
+#include "exact/io/scene.h"
+#include "exact/statics/closure.h"
 
 namespace wrenchkit {
 
@@ -50,6 +53,8 @@ struct Ref {
   std::string rotation;                    // ccw, cw, none, depends; empty: no certified answer (undecided or refused)
   bool has_quality = false;                // the line has "quality" (contacts)
   const json::Value* quality_epsilon = nullptr;  // quality.epsilon {lower, upper, …}; none: refused (too much work)
+  const json::Value* scene = nullptr;            // the line's canonical scene
+  const json::Value* regions_mu = nullptr;       // grasp_regions.mu: the line has fingers' regions (a polygon part)
   Field_distance distance_of(const std::string& field) const {
     // labels and ε: the friction reading's (ε is 0 exactly where force closure fails)
     const auto it = fields.find(field == "labels" || field == "epsilon" ? "force_closure" : field);
@@ -85,7 +90,8 @@ struct Field_tally {
 };
 
 const char* const kFields[] = {"force_closure", "form_closure", "equilibrium", "hold", "motion",
-                               "center_of_friction", "power", "power_range", "labels", "epsilon", "rotation"};
+                               "center_of_friction", "power", "power_range", "labels", "epsilon", "rotation",
+                               "placements"};
 bool is_verdict(const std::string& f) { return f == "force_closure" || f == "form_closure" || f == "equilibrium"; }
 
 // The words of a wrong verdict: unsafe (the answer claims closure, balance, holding or sticking that does not
@@ -99,6 +105,7 @@ const char* unsafe_words(const std::string& f) {
          : f == "motion"    ? "falsely sticks or impending"
          : f == "hold"      ? "falsely holds or impending"
          : f == "rotation"  ? "a rotation sense claimed that does not hold for every distribution"
+         : f == "placements" ? "a placement claimed closed that is open"
                             : "falsely closed";
 }
 const char* lost_words(const std::string& f) {
@@ -106,11 +113,12 @@ const char* lost_words(const std::string& f) {
          : f == "motion"    ? "falsely slides, impending or depends"
          : f == "hold"      ? "falsely fails, impending or depends"
          : f == "rotation"  ? "depends or undecided where the rotation is certain"
+         : f == "placements" ? "a placement claimed open that closes"
                             : "falsely open";
 }
 // Fields with a safety split (unsafe / lost): the verdicts, motion, hold and epsilon (across 0).
 bool has_split(const std::string& f) {
-  return is_verdict(f) || f == "motion" || f == "hold" || f == "epsilon" || f == "rotation";
+  return is_verdict(f) || f == "motion" || f == "hold" || f == "epsilon" || f == "rotation" || f == "placements";
 }
 
 Rational exact_number(const json::Value& v, const std::string& where) {
@@ -209,6 +217,8 @@ Corpus read_corpus(const std::string& path, Read_file read) {
       r.has_quality = true;
       if (q->type == json::Type::object) r.quality_epsilon = q->find("epsilon");
     }
+    r.scene = v.find("scene");
+    if (const json::Value* g = v.find("grasp_regions"); g && g->type == json::Type::object) r.regions_mu = g->find("mu");
     if (const json::Value* m = v.find("motion")) {
       r.has_motion = true;
       if (m->type == json::Type::string) r.motion = m->text;
@@ -281,7 +291,8 @@ std::vector<Answer> read_jsonl_answers(const std::string& path, const std::strin
       } else if (std::find(std::begin(kFields), std::end(kFields), k) == std::end(kFields)) {
         throw Input_error(where + ": " + json::quote(k) +
                           ": unknown field (known: id, force_closure, form_closure, equilibrium, hold, motion, "
-                          "center_of_friction, power, power_range, labels, epsilon, rotation, error; fields starting with _ are ignored)");
+                          "center_of_friction, power, power_range, labels, epsilon, rotation, placements, error; fields starting with _ "
+                          "are ignored)");
       } else {
         a.fields.emplace_back(k, std::move(x));
       }
@@ -482,6 +493,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
                               : field == "center_of_friction" || field == "power"     ? ref.limit_surface != nullptr
                               : field == "power_range"                                ? ref.limit_surface != nullptr
                               : field == "epsilon"                                    ? ref.has_quality
+                              : field == "placements"                                 ? ref.regions_mu != nullptr
                                                                                       : true;
       if (v.type == json::Type::null) {
         // No answer; not counted where the scene has nothing to answer (equilibrium without a load).
@@ -632,6 +644,68 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
           d.answer = json::text_of(v);
           disagree(std::move(d));
         }
+      } else if (field == "placements") {
+        // Sampled finger placements on a polygon part (docs/grasp-regions.md): each [{"edges": [i, j] or [i, j, k],
+        // "s": [...], "closed": verdict}] decided here exactly — the engine's closure decision of the placed
+        // frictional fingers with the line's grasp_regions.mu —; one count per placement: a placement claimed closed
+        // that is open is unsafe, one claimed open that closes is lost (an open set: its boundary is open).
+        if (!ref.regions_mu) throw Input_error(where + ": scene \"" + a.id + "\" is not a polygon part with fingers' regions");
+        if (v.type != json::Type::array) throw Input_error(where + ": " + json::text_of(v) + " is not an array of placements");
+        const Scene part = read_scene(json::text_of(*ref.scene), Input_limits{}, a.id);
+        const std::vector<Vec2>& V = part.body.outline;
+        const int orientation = outline_orientation(V);
+        const Rational mu = exact_number(*ref.regions_mu, "reference");
+        for (std::size_t k = 0; k < v.items.size(); ++k) {
+          const json::Value& p = v.items[k];
+          const std::string at = where + "[" + std::to_string(k) + "]";
+          if (p.type != json::Type::object) throw Input_error(at + ": " + json::text_of(p) + " is not {\"edges\", \"s\", \"closed\"}");
+          const json::Value *edges = p.find("edges"), *params = p.find("s"), *closed = p.find("closed");
+          for (const auto& m : p.members)
+            if (m.first != "edges" && m.first != "s" && m.first != "closed" && (m.first.empty() || m.first[0] != '_'))
+              throw Input_error(at + ": " + json::quote(m.first) + ": unknown field (known: edges, s, closed)");
+          if (!edges || !params || !closed) throw Input_error(at + ": expected \"edges\", \"s\" and \"closed\"");
+          if (edges->type != json::Type::array || (edges->items.size() != 2 && edges->items.size() != 3))
+            throw Input_error(at + ".edges: " + json::text_of(*edges) + " is not [i, j] or [i, j, k]");
+          if (params->type != json::Type::array || params->items.size() != edges->items.size())
+            throw Input_error(at + ".s: " + json::text_of(*params) + " is not one parameter per finger");
+          Scene placed = part;
+          placed.contacts.clear();
+          std::string text = "edges " + json::text_of(*edges) + " at s = (";
+          for (std::size_t f = 0; f < edges->items.size(); ++f) {
+            const Rational e = exact_number(edges->items[f], at + ".edges");
+            if (e.get_den() != 1 || sgn(e) < 0 || e >= static_cast<long>(V.size()))
+              throw Input_error(at + ".edges: " + edges->items[f].text + " is not an edge of the outline (0 to " +
+                                std::to_string(V.size() - 1) + ")");
+            const std::size_t edge = static_cast<std::size_t>(e.get_num().get_ui());
+            const Rational t = exact_number(params->items[f], at + ".s");
+            if (sgn(t) < 0 || t > 1) throw Input_error(at + ".s: " + params->items[f].text + " is not in [0, 1]");
+            Contact c;
+            c.at = edge_point(V, edge, t);
+            c.normal = edge_inward_normal(V, edge, orientation);
+            c.mu = mu;
+            c.mu_given = true;
+            placed.contacts.push_back(std::move(c));
+            text += (f ? ", " : "") + params->items[f].text;
+          }
+          text += ")";
+          if (closed->type == json::Type::null) {
+            count(&Field_tally::no_answer);
+            continue;
+          }
+          const std::optional<bool> claim = verdict_value(*closed);
+          if (!claim) throw Input_error(at + ".closed: " + json::text_of(*closed) + " is not " + kVerdictWords + " or null");
+          const bool truth = decide_closure(placed, Property::force_closure, Mode::exact, false).holds;
+          count(&Field_tally::compared);
+          if (truth == *claim) {
+            count(&Field_tally::agree);
+            continue;
+          }
+          Disagreement d;
+          d.reference = std::string(truth ? "closed" : "open") + " at " + text;
+          d.answer = *claim ? "closed" : "open";
+          std::tie(d.kind, d.unsafe) = verdict_kind("force_closure", *claim);
+          disagree(std::move(d));
+        }
       } else if (field == "epsilon") {
         // ε within the tolerance of the certified bracket [lower, upper]; wrong across ε = 0 is a wrong closure
         // verdict (a positive ε for an open grasp: unsafe; zero for a closed one: lost), else a wrong value
@@ -703,6 +777,7 @@ std::string distance_text(const Disagreement& d) {
       << (d.field == "motion" ? " (how close the load is to the limit surface is not measured)"
           : d.field == "hold"   ? " (over a support, how close the load is to holding is not measured)"
           : d.field == "rotation" ? " (how close a voting line passes the centre of friction is not measured)"
+          : d.field == "placements" ? " (each placement decided exactly; how far it is from the region's boundary is not measured)"
                               : " (a value: compared within --rtol/--atol)");
   else if (f.distance)
     s << (d.field == "epsilon" ? "force closure (where epsilon becomes 0)" : d.field) << " distance " << *f.distance << " (" << f.nearest << ")";

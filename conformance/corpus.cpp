@@ -14,6 +14,8 @@
 #include "exact/io/scene_writer.h"
 #include "exact/pipeline/answer_json.h"
 #include "exact/pipeline/hold_answer.h"
+#include "exact/certificates/certificates.h"
+#include "exact/pipeline/grasp_regions_answer.h"
 #include "exact/pipeline/push_answer.h"
 #include "exact/pipeline/quality_answer.h"
 #include "exact/pipeline/support_answer.h"
@@ -432,7 +434,34 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
         w.key("push").null().member("push_refused", push.message);
       }
     }
+    // Where two and three fingers may go (docs/grasp-regions.md), for a part with an outline and a scene "mu": every
+    // edge pair's exact region and, up to 12 edges, every edge triple's certified cube or "never" (GR-1, GR-2).
+    Grasp_regions_item two, three;
+    if (parsed.body.outline.size() >= 3 && parsed.mu) {
+      Grasp_regions_query q;
+      q.mu = parsed.mu;  // (the canonical text writes μ into each contact, not at the top)
+      two = answer_grasp_regions(text, e.id, request, q);
+      if (parsed.body.outline.size() <= 12 && two.status == Status::answered) {
+        q.fingers = 3;
+        three = answer_grasp_regions(text, e.id, request, q);
+      }
+      for (const Grasp_regions_item* g : {&two, &three})
+        if (g->status == Status::check_failed) {
+          b.status = g->status, b.message = g->message;
+          return;
+        }
+      if (two.status == Status::answered) {
+        w.key("grasp_regions").object().member("mu", two.regions.mu);
+        write_region_pairs(w, two.regions);
+        if (three.status == Status::answered) write_region_triples(w, three.regions);
+        w.end_object();
+      } else {
+        w.key("grasp_regions").null().member("grasp_regions_refused", two.message);
+      }
+    }
     w.key("certificates").object().key("force_closure").raw(c.force_certificate);
+    if (!two.certificate.empty()) w.key("grasp_regions").raw(two.certificate);
+    if (!three.certificate.empty()) w.key("grasp_regions_three").raw(three.certificate);
     if (!push.certificate.empty()) w.key("push").raw(push.certificate);
     if (!quality.certificate.empty()) w.key("quality").raw(quality.certificate);
     w.key("form_closure").raw(c.form_certificate);
@@ -443,7 +472,7 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
     // Every exact number of the answers again as its nearest double (docs/reference-format.md §2).
     const json::Value line = json::parse(w.str() + "}", Input_limits{}, e.id);
     w.key("approx").object();
-    for (const char* k : {"scene", "load", "labels", "limit_surface", "quality"})
+    for (const char* k : {"scene", "load", "labels", "limit_surface", "quality", "grasp_regions"})
       if (const json::Value* x = line.find(k)) write_approx(w.key(k), *x);
     const json::Value& fs = *line.find("boundary")->find("friction_scale");
     w.key("friction_scale").object();
@@ -454,7 +483,7 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
     w.end_object().end_object();
     b.line = w.end_object().take();
     b.certificates = (eq ? 3 : 2) + !motion.certificate.empty() + !hold.certificate.empty() + !quality.certificate.empty() +
-                     !push.certificate.empty();
+                     !push.certificate.empty() + !two.certificate.empty() + !three.certificate.empty();
     b.csv = e.id + "," + (c.force.holds ? "true" : "false") + "," + (c.form.holds ? "true" : "false") + "," +
             (eq ? (eq->answer.balanced ? "true" : "false") : "") + "," + hold.verdict;
   });

@@ -134,6 +134,36 @@ std::vector<Entry> corpus_entries(const Reference_options& ro) {
                         std::string(R"({"wrenchkit": 1, "name": "mat and legs of unknown force", )") + f.contacts +
                             mat_legs + R"(, "load": )" + f.load + "}",
                         ""));
+  // Issue 32 [GR-1, GR-2]: polygon parts without contacts, for where two and three fingers may go — the lines'
+  // "grasp_regions" (docs/reference-format.md §2) — including the rational boundaries: the square's adjacent sides
+  // close for no placement at mu = 1 exactly and for a sliver just above; the L part's edges 1, 2, 3 never close at
+  // mu = 1 and do just above.
+  const char* const square = "[[0, 0], [1, 0], [1, 1], [0, 1]]";
+  const char* const l_part = "[[0, 0], [6, 0], [6, 2], [2, 2], [2, 5], [0, 5]]";
+  const char* const twelve =
+      R"([["-1419/1469", "-380/1469"], ["-48081/68081", "-48200/68081"], ["-69/269", "-260/269"], ["4071/15929", "-15400/15929"], )"
+      R"(["8319/11681", "-8200/11681"], ["9831/10169", "-2600/10169"], ["9831/10169", "2600/10169"], ["8319/11681", "8200/11681"], )"
+      R"(["4071/15929", "15400/15929"], ["-69/269", "260/269"], ["-48081/68081", "48200/68081"], ["-1419/1469", "380/1469"]])";
+  const struct {
+    const char *id, *name, *mu, *outline;
+  } parts[] = {
+      {"triangle", "the triangle of Example 3", "1/2", "[[0, 0], [6, 0], [0, 6]]"},
+      {"square", "the unit square", "1/2", square},
+      {"square_mu_1", "the unit square at mu = 1: adjacent sides close nowhere", "1", square},
+      {"square_mu_1_plus_1e-12", "the unit square just above mu = 1: adjacent sides close in a sliver",
+       "1000000000001/1000000000000", square},
+      {"rectangle", "a 4 x 2 rectangle", "1/4", "[[0, 0], [4, 0], [4, 2], [0, 2]]"},
+      {"l_part", "an L-shaped part", "1/2", l_part},
+      {"l_part_mu_1", "an L-shaped part at mu = 1: edges 1, 2, 3 never close", "1", l_part},
+      {"l_part_mu_1_plus_1e-9", "an L-shaped part just above mu = 1", "1000000001/1000000000", l_part},
+      {"pentagon", "a convex pentagon", "1/3", "[[0, 0], [3, 0], [5, 2], [4, 5], [1, 4]]"},
+      {"twelve_gon", "a 12-gon of rational points on the unit circle", "1/5", twelve},
+  };
+  for (const auto& p : parts)
+    out.push_back(entry(std::string("polygon_part.") + p.id, "polygon_part", "", "", "", "",
+                        std::string(R"({"wrenchkit": 1, "name": ")") + p.name + R"(", "mu": ")" + p.mu +
+                            R"(", "body": {"outline": )" + p.outline + "}}",
+                        ""));
   return out;
 }
 

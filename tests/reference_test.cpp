@@ -596,6 +596,53 @@ TEST_F(Corpus, EpsilonIsInTheCorpusAndCompared) {
   EXPECT_NE(r.err.find("has no contacts (no epsilon answer)"), std::string::npos) << r.err;
 }
 
+// Issue 32: the polygon parts carry where two and three fingers may go (every pair's exact region, every triple's
+// cube or "never", certified), and `compare` reads a peer's sampled placements, decided exactly: a placement claimed
+// closed that is open is unsafe (the square's adjacent sides at mu = 1 exactly: the boundary, open), one claimed open
+// that closes is lost.
+TEST_F(Corpus, PolygonPartsCarryGraspRegionsAndComparePlacements) {
+  std::size_t parts = 0;
+  for (const json::Value& v : lines_) {
+    const std::string id = v.find("id")->text;
+    const json::Value* g = v.find("grasp_regions");
+    if (v.find("family")->text != "polygon_part") continue;
+    ++parts;
+    ASSERT_TRUE(g && g->type == json::Type::object) << id;
+    ASSERT_NE(v.find("certificates")->find("grasp_regions"), nullptr) << id;
+    ASSERT_NE(v.find("certificates")->find("grasp_regions_three"), nullptr) << id;
+    const std::size_t n = v.find("scene")->find("body")->find("outline")->items.size();
+    EXPECT_EQ(g->find("pairs")->items.size(), n * (n - 1) / 2) << id;
+    EXPECT_EQ(g->find("triples")->items.size(), n * (n - 1) * (n - 2) / 6) << id;
+    if (id == "polygon_part.square_mu_1") {
+      EXPECT_EQ(g->find("pairs")->items[0].find("closed")->items.size(), 0u);  // edges 0, 1: none at mu = 1
+    }
+    if (id == "polygon_part.square_mu_1_plus_1e-12") {
+      EXPECT_EQ(g->find("pairs")->items[0].find("closed")->items.size(), 1u);  // a sliver just above
+    }
+  }
+  ASSERT_EQ(parts, 10u);
+  const std::string answers =
+      R"({"id": "polygon_part.square_mu_1", "placements": [{"edges": [0, 1], "s": ["1/2", "1/2"], "closed": true}, )"
+      R"({"edges": [0, 2], "s": [0.5, 0.5], "closed": true}, {"edges": [0, 2], "s": ["0", "0"], "closed": 0}, )"
+      R"({"edges": [0, 2], "s": [0.3, 0.5], "closed": false}, {"edges": [0, 1, 2], "s": [0.5, 0.5, 0.5], "closed": null}]})" "\n"
+      R"({"id": "polygon_part.l_part_mu_1", "placements": [{"edges": [1, 2, 3], "s": [0.5, 0.5, 0.5], "closed": false}]})" "\n";
+  Cli_result r = run("compare --json '" + dir_ + "' -", answers);
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  const json::Value rep = json::parse(r.out, Input_limits{}, "report");
+  const json::Value& f = *rep.find("fields")->find("placements");
+  EXPECT_EQ(f.find("compared")->text, "5");
+  EXPECT_EQ(f.find("agree")->text, "3");  // (0, 2) at (1/2, 1/2) closes; at (0, 0) — |1 − s − t| = 1 = mu, the boundary — open
+  EXPECT_EQ(f.find("unsafe")->text, "1");  // (0, 1) at mu = 1: open
+  EXPECT_EQ(f.find("lost")->text, "1");    // (0, 2) at (0.3, 0.5) closes (and the L part's 1, 2, 3 at mu = 1 do not)
+  EXPECT_EQ(f.find("no_answer")->text, "1");
+  r = run("compare '" + dir_ + "' -", R"({"id": "polygon_part.square", "placements": [{"edges": [0, 4], "s": [0, 0], "closed": true}]})" "\n");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("placements[0].edges: 4 is not an edge of the outline (0 to 3)"), std::string::npos) << r.err;
+  r = run("compare '" + dir_ + "' -", R"({"id": "golden.ladder_mu_1_7", "placements": []})" "\n");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("is not a polygon part with fingers' regions"), std::string::npos) << r.err;
+}
+
 TEST_F(Corpus, CompareBadInputNamesLineAndField) {
   struct Case {
     std::string name, text, message;
