@@ -254,6 +254,20 @@ const Option kEdges{"edges", "i,j,...", "pair only these edges of body.outline (
                         part.clear();
                       }
                     }};
+const Option kRank{"rank", "side|epsilon",
+                   "rank the closed pairs' (triples') independent boxes by their side (default) or by the grasp's "
+                   "epsilon at each box's centre (L1, unit-normal, moments about body.com else the outline's centroid; "
+                   "the best one's certificate in --json)",
+                   [](Options& o, S n, S v) {
+                     if (v != "side" && v != "epsilon") bad_value(n, v, "is not side or epsilon");
+                     o.regions.rank_epsilon = v == "epsilon";
+                     o.regions.rank_asked = true;
+                   }};
+const Option kMinSide{"min-side", "X", "rank only independent boxes of side at least X (exact, >= 0; default 0)",
+                      [](Options& o, S n, S v) {
+                        o.regions.min_side = non_negative(o, n, v);
+                        o.regions.rank_asked = true;
+                      }};
 const Option kFingers{"fingers", "2|3",
                       "how many fingers (2: Nguyen's exact regions, default; 3: per edge triple a certified independent "
                       "cube of placements, or a proof that none closes)",
@@ -631,7 +645,7 @@ std::vector<Command> make_table() {
        "close, certified by four friction-cone wrenches whose signed cofactors keep one sign at its eight corners\n"
        "(they are multilinear in the parameters), the largest a search finds; or \"never\" with a proof that no\n"
        "placement closes (mu = 0, or a wrench-space direction no wrench of the triple exceeds).\n",
-       join({{kHelp, kJson, kFingerMu, kEdges, kFingers,
+       join({{kHelp, kJson, kFingerMu, kEdges, kFingers, kRank, kMinSide,
               with_help(kCertificate, "write the certificate to FILE (checked first)")},
              kLimits}),
        {"PART.json"},

@@ -11,6 +11,49 @@
 
 namespace wrenchkit::cli {
 
+namespace {
+
+void write_ranked(Json_writer& w, const Grasp_regions_item& r) {
+  w.key("ranked").array();
+  for (const Ranked_placement& p : r.ranked) {
+    w.object().key("edges").array();
+    for (const std::size_t e : p.edges) w.integer(e);
+    w.end_array().key("at").rationals(p.at).member("box_side", p.side);
+    if (p.epsilon) {
+      w.key("epsilon").object().member("lower", (*p.epsilon)[0]).member("upper", (*p.epsilon)[1]);
+      w.key("lower_approx").raw(float_number((*p.epsilon)[0].get_d())).end_object();
+    }
+    w.end_object();
+  }
+  w.end_array();
+  if (!r.best_certificate.empty())
+    w.key("best_by_epsilon").object().key("scene").raw(r.best_scene).key("certificate").raw(r.best_certificate).end_object();
+}
+
+// The first five ranked placements, in words.
+std::string ranked_human(const Grasp_regions_item& r, bool by_epsilon) {
+  if (!r.rank_asked) return "";
+  if (r.ranked.empty()) return "no independent box to rank (with --min-side, none that large)\n";
+  std::ostringstream s;
+  s << "best placements by " << (by_epsilon ? "the grasp's epsilon (L1, unit-normal edges, moments about " : "the independent box's side")
+    << (by_epsilon ? (r.scene.body.com ? "body.com)" : "the outline's centroid)") : "") << " at each box's centre:\n";
+  for (std::size_t k = 0; k < r.ranked.size() && k < 5; ++k) {
+    const Ranked_placement& p = r.ranked[k];
+    s << "  " << k + 1 << ". edges";
+    for (std::size_t f = 0; f < p.edges.size(); ++f) s << (f ? ", " : " ") << p.edges[f];
+    s << " at s = (";
+    for (std::size_t f = 0; f < p.at.size(); ++f) s << (f ? ", " : "") << decimal_text(p.at[f], 4);
+    s << "), box side " << decimal_text(p.side, 4);
+    if (p.epsilon) s << ", epsilon " << decimal_text((*p.epsilon)[0], 6);
+    s << "\n";
+  }
+  if (r.ranked.size() > 5) s << "  (" << r.ranked.size() << " ranked; all in --json)\n";
+  if (!r.best_certificate.empty()) s << "  the best one's epsilon certified on its own scene (--json: best_by_epsilon)\n";
+  return s.str();
+}
+
+}  // namespace
+
 void write_grasp_regions(Json_writer& w, const Grasp_regions_item& r) {
   const Grasp_regions& g = r.regions;
   w.member("command", "grasp-regions").member("name", r.scene.name).member("fingers", g.fingers).member("mu", g.mu);
@@ -26,6 +69,7 @@ void write_grasp_regions(Json_writer& w, const Grasp_regions_item& r) {
       w.key("most_independent").object().key("edges").array().integer(robust->edges[0]).integer(robust->edges[1])
           .integer(robust->edges[2]).end_array().member("independent_side", robust->side).key("independent_side_approx")
           .raw(float_number(robust->side.get_d())).end_object();
+    write_ranked(w, r);
     if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
     return;
   }
@@ -47,6 +91,7 @@ void write_grasp_regions(Json_writer& w, const Grasp_regions_item& r) {
                  .member("area", best->area).end_object();
   if (robust) w.key("most_independent").object().key("edges").array().integer(robust->i).integer(robust->j).end_array()
                    .member("independent_side", robust->side).end_object();
+  write_ranked(w, r);
   if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
 }
 
@@ -96,7 +141,8 @@ std::string regions_human(const Grasp_regions_item& r, const std::string& source
   std::ostringstream s;
   s << scene_line(r.scene, source) << "outline: " << g.edges << " edges, " << (g.ccw ? "counter-clockwise" : "clockwise")
     << ", " << (g.convex ? "convex" : "not convex") << "\n";
-  if (g.fingers == 3) return s.str() + triples_human(r);
+  const bool by_epsilon = !r.ranked.empty() && r.ranked.front().epsilon.has_value();
+  if (g.fingers == 3) return s.str() + triples_human(r) + ranked_human(r, by_epsilon);
   s << "two fingers, mu = " << number_text(g.mu) << ", each pushing along its edge's inward normal; a finger on edge i at "
        "v_i + s (v_{i+1} - v_i), the other on edge j at t, s and t in [0, 1]\n";
   s << "force closure (Nguyen: the segment between the fingers inside both friction cones) for "
@@ -114,6 +160,7 @@ std::string regions_human(const Grasp_regions_item& r, const std::string& source
     }
   }
   if (g.closed_pairs() == 0) s << "  none: no two placements of the fingers close the grasp with this mu\n";
+  s << ranked_human(r, by_epsilon);
   s << "certificate accepted by the independent checker (exact arithmetic)\n";
   return s.str();
 }

@@ -37,20 +37,6 @@ void write_double(Json_writer& w, const std::optional<double>& d) { d ? write_do
 // A text, or null when it is empty.
 void write_text_or_null(Json_writer& w, const std::string& s) { s.empty() ? void(w.null()) : void(w.string(s)); }
 
-// The canonical text (exact/io/scene_writer.h) on one line: newlines (never inside strings, which
-// json::quote escapes) and their indentation removed.
-std::string one_line(const std::string& canonical) {
-  std::string s;
-  for (std::size_t i = 0; i < canonical.size(); ++i) {
-    if (canonical[i] != '\n') {
-      s += canonical[i];
-      continue;
-    }
-    while (i + 1 < canonical.size() && canonical[i + 1] == ' ') ++i;
-    if (!s.empty() && s.back() == ',') s += ' ';
-  }
-  return s;
-}
 
 void write_flip(Json_writer& w, const std::optional<Friction_flip>& f) {
   if (!f) {

@@ -78,6 +78,7 @@ Input_limits limits_of(const py::dict& l) {
   if (l.contains("max_region_vertices")) x.max_region_vertices = l["max_region_vertices"].cast<std::size_t>();
   if (l.contains("max_work")) x.max_work = l["max_work"].cast<std::size_t>();
   if (l.contains("max_certificate_size")) x.max_certificate_bytes = l["max_certificate_size"].cast<std::size_t>();
+  if (l.contains("lenient")) x.lenient = l["lenient"].cast<bool>();
   return x;
 }
 
@@ -869,6 +870,7 @@ PYBIND11_MODULE(_core, m) {
       .def_readonly("text", &Py_scene::text)
       .def_readonly("source", &Py_scene::source)
       .def_property_readonly("name", [](const Py_scene& s) { return s.scene.name; })
+      .def_property_readonly("warnings", [](const Py_scene& s) { return s.scene.warnings; })
       .def_property_readonly("contacts", [](const Py_scene& s) { return s.scene.contacts.size(); })
       .def_property_readonly("has_load", [](const Py_scene& s) { return s.scene.load.has_value(); })
       .def_property_readonly("has_support", [](const Py_scene& s) { return s.scene.support.has_value(); });

@@ -913,6 +913,28 @@ TEST(Cli, GraspRegionsJsonCertificateAndRefusals) {
   EXPECT_EQ(checked3.code, 0) << checked3.out << checked3.err;
   const Cli_result text3 = run("grasp-regions --fingers 3 --mu 0 " + square.string());
   EXPECT_NE(text3.out.find("for 0 of 4 edge triples; no placement closes for 4 triples (frictionless"), std::string::npos) << text3.out;
+  // ranked by the grasp's epsilon at each box's centre: best first, the best one's certificate accepted by `check` on
+  // its own scene and its epsilon the one `quality` gives there; --min-side filters the boxes ranked
+  const fs::path l_part = fs::path(test::source_dir()) / "docs" / "grasp-regions" / "l_part.json";
+  const Cli_result ranked = run("grasp-regions --json --rank epsilon " + l_part.string());
+  ASSERT_EQ(ranked.code, 0) << ranked.err;
+  const json::Value rv = json::parse(ranked.out, Input_limits{}, "ranked");
+  const json::Value& list = *rv.find("ranked");
+  ASSERT_EQ(list.items.size(), 4u);  // the L part's four closed pairs
+  for (std::size_t k = 1; k < list.items.size(); ++k)
+    EXPECT_GE(Rational(list.items[k - 1].find("epsilon")->find("lower")->text),
+              Rational(list.items[k].find("epsilon")->find("upper")->text)) << k;
+  const fs::path best = scratch() / "gr_best.json", best_cert = scratch() / "gr_best.cert.json";
+  std::ofstream(best) << json::text_of(*rv.find("best_by_epsilon")->find("scene"));
+  std::ofstream(best_cert) << json::text_of(*rv.find("best_by_epsilon")->find("certificate"));
+  const Cli_result best_checked = run("check " + best.string() + " " + best_cert.string());
+  EXPECT_EQ(best_checked.code, 0) << best_checked.out << best_checked.err;
+  const Cli_result q = run("quality --json --only epsilon --about 7/3,11/6 " + best.string());
+  ASSERT_EQ(q.code, 0) << q.err;
+  EXPECT_EQ(json::parse(q.out, Input_limits{}, "q").find("epsilon")->find("lower")->text,
+            list.items[0].find("epsilon")->find("lower")->text);
+  const Cli_result robust = run("grasp-regions --json --min-side 1/2 " + l_part.string());
+  EXPECT_EQ(json::parse(robust.out, Input_limits{}, "r").find("ranked")->items.size(), 2u) << robust.out;  // edges 1, 5 and 0, 4
   const Cli_result batch = run("batch grasp-regions --mu 2", R"({"wrenchkit": 1, "body": {"outline": [[0, 0], [4, 0], [0, 3]]}})" "\n");
   EXPECT_EQ(batch.code, 0) << batch.err;
   EXPECT_NE(batch.out.find(R"("line": 1, "command": "grasp-regions")"), std::string::npos) << batch.out;
@@ -920,6 +942,7 @@ TEST(Cli, GraspRegionsJsonCertificateAndRefusals) {
            {square.string(), "--mu: missing"},
            {"--mu 1 --edges 0,9 " + square.string(), "--edges: 9 is not an edge of body.outline (0 to 3)"},
            {"--mu 1 --fingers 4 " + square.string(), "--fingers: \"4\" is not 2 or 3"},
+           {"--mu 1 --rank area " + square.string(), "--rank: \"area\" is not side or epsilon"},
            {"--mu 1 --fingers 3 --edges 0,9 " + square.string(), "--edges: 9 is not an edge of body.outline"},
            {"--mu 1 -", "body.outline: missing"}}) {
     const Cli_result e = run("grasp-regions " + args, R"({"wrenchkit": 1})");

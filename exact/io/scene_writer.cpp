@@ -16,6 +16,12 @@ std::string pt(const Vec2& p) { return "[" + q(p.x) + ", " + q(p.y) + "]"; }
 std::string write_scene(const Scene& s) {
   std::string o = "{\"wrenchkit\": 1";
   if (!s.name.empty()) o += ", \"name\": " + json::quote(s.name);
+  // the scene's own "mu" when no point contact or pusher takes it as its default (each of those writes its μ): a
+  // part's fingers' μ (grasp-regions) is kept, and the canonical text measures what the scene does (its budget,
+  // exact/io/scene_budget.h, counts that "mu" once either way)
+  bool takes = s.pusher.has_value();
+  for (const Contact& c : s.contacts) takes = takes || c.kind == Contact::Kind::point;
+  if (s.mu && !takes) o += ", \"mu\": " + q(*s.mu);
   if (!s.body.outline.empty() || s.body.com) {
     o += ", \"body\": {";
     std::string sep;
@@ -104,6 +110,19 @@ std::string write_scene(const Scene& s) {
     o += "}";
   }
   return o + "}\n";
+}
+
+std::string one_line(const std::string& canonical) {
+  std::string s;
+  for (std::size_t i = 0; i < canonical.size(); ++i) {
+    if (canonical[i] != '\n') {
+      s += canonical[i];
+      continue;
+    }
+    while (i + 1 < canonical.size() && canonical[i + 1] == ' ') ++i;
+    if (!s.empty() && s.back() == ',') s += ' ';
+  }
+  return s;
 }
 
 }  // namespace wrenchkit

@@ -11,5 +11,8 @@
 namespace wrenchkit {
 
 std::string write_scene(const Scene& scene);
+// The canonical text on one line: newlines (never inside strings, which json::quote escapes) and their indentation
+// removed (the corpus' lines, a scene inside a one-line answer).
+std::string one_line(const std::string& canonical);
 
 }  // namespace wrenchkit

@@ -4,6 +4,7 @@
 // regions are polygons cut by rational half-planes; there is nothing for a float twin to decide).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,6 +19,21 @@ struct Grasp_regions_query {
   std::optional<Rational> mu;       // else the scene's "mu"
   std::vector<std::size_t> edges;   // empty: every edge
   int fingers = 2;                  // 2: Nguyen's regions; 3: independent boxes per edge triple (GR-2)
+  // The ranking of the placements a designer would pick: each closed pair's (triple's) independent box's centre,
+  // by the box's side (default) or by the grasp's ε there (`rank_epsilon`: L1, unit-normal, moments about body.com
+  // else the outline's area centroid, certified), only boxes with side ≥ min_side.
+  bool rank_epsilon = false;
+  Rational min_side = 0;
+  bool rank_asked = false;  // --rank or --min-side given: the text shows the ranking (JSON always has it)
+};
+
+// One ranked placement: the edges, the box's centre (one parameter per finger) and side, and with rank_epsilon the
+// grasp's ε bracket there.
+struct Ranked_placement {
+  std::vector<std::size_t> edges;
+  std::vector<Rational> at;
+  Rational side;
+  std::optional<std::array<Rational, 2>> epsilon;  // [lower, upper]
 };
 
 struct Grasp_regions_item {
@@ -27,6 +43,11 @@ struct Grasp_regions_item {
   Mode mode = Mode::hybrid;
   Grasp_regions regions;
   std::string certificate;  // accepted by the checker (request.certify)
+  std::vector<Ranked_placement> ranked;  // best first
+  bool rank_asked = false;
+  // rank_epsilon: the best placement as a scene (its fingers as placed contacts) and its ε certificate (§3.4),
+  // accepted by the checker on that scene
+  std::string best_scene, best_certificate;
 };
 
 // Reads `text` (eagerly) and answers; never throws. Input_error (exit 2) without a friction coefficient (neither

@@ -131,7 +131,8 @@ std::vector<Edge_cone> prepare(const Scene& scene, const Rational& mu, const std
                           std::vector<std::size_t>& edges) {
   const std::vector<Vec2>& V = scene.body.outline;
   if (V.empty()) throw Input_error("body.outline: missing (grasp regions are places on the outline's edges: give the part's polygon)");
-  if (!scene.warnings.empty()) throw Input_error("body.outline: " + scene.warnings.front() + " (grasp regions need a valid outline; drop --lenient)");
+  for (const std::string& w : scene.warnings)  // (--lenient: contacts off the outline are only warnings; unused here)
+    if (w.rfind("body.outline", 0) == 0) throw Input_error(w + " (grasp regions need a valid outline; drop --lenient)");
   if (mu < 0) throw Input_error("--mu: " + to_string(mu) + " is negative");
   const std::size_t n = V.size();
   if (n > kGraspRegionsMaxEdges)

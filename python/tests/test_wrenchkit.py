@@ -506,6 +506,21 @@ def test_grasp_regions_three_fingers_on_the_l_part():
         wrenchkit.grasp_regions(l_part, mu=1, fingers=4)
 
 
+def test_grasp_regions_ranked_by_epsilon_and_lenient():
+    l_part = {"wrenchkit": 1, "mu": "1/2", "body": {"outline": [[0, 0], [6, 0], [6, 2], [2, 2], [2, 5], [0, 5]]}}
+    r = wrenchkit.grasp_regions(l_part, rank="epsilon")
+    eps = [p["epsilon"]["lower"] for p in r["ranked"]]
+    assert len(eps) == 4 and eps == sorted(eps, reverse=True) and all(isinstance(e, Fraction) for e in eps)
+    best = r["best_by_epsilon"]
+    assert wrenchkit.check(best["scene"], best["certificate"])["accepted"] is True
+    assert [p["edges"] for p in wrenchkit.grasp_regions(l_part, min_side="1/2")["ranked"]] == [[1, 5], [0, 4]]
+    off = dict(l_part, contacts=[{"at": [5, 5], "normal": [0, 1]}])
+    with pytest.raises(wrenchkit.InputError, match=r"contacts\[0\]\.at: \(5, 5\) is not on body.outline"):
+        wrenchkit.grasp_regions(off)
+    # the regions do not use the contacts (their canonical scene writes mu into each contact: give the fingers' mu)
+    assert wrenchkit.grasp_regions(off, mu="1/2", lenient=True)["closed_pairs"] == 4
+
+
 def test_push_voting_theorem():
     square = {"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]},
               "support": {"mu": "1/2", "points": [{"at": [x, y], "force": 1} for x, y in

@@ -139,11 +139,15 @@ class Scene:
     starts with "{"), or a path to a JSON scene file (str or os.PathLike). "wrenchkit": 1 may be
     omitted from a dict. limits: max_digits, max_exponent, max_file_size, max_contacts, max_region_vertices,
     max_total_digits, max_digits_times_contacts, max_work, max_certificate_size (as the CLI's --max-* options; the scene's questions keep them).
+    lenient=True (the CLI's --lenient): a contact off body.outline, a normal pointing out of the body or an outline
+    that is not a simple polygon is kept, as a warning in `warnings`, instead of refused.
     Raises InputError with the command line's message.
     """
 
-    def __init__(self, data, *, limits=None):
+    def __init__(self, data, *, limits=None, lenient=False):
         limits = dict(limits or {})
+        if lenient:
+            limits["lenient"] = True
         if isinstance(data, Scene):
             self._s = data._s
             return
@@ -176,6 +180,11 @@ class Scene:
     @property
     def name(self):
         return self._s.name
+
+    @property
+    def warnings(self):
+        """The outline checks' warnings kept with lenient=True (docs/scene-format.md, "The outline is geometry")."""
+        return list(self._s.warnings)
 
     @property
     def has_load(self):
@@ -348,7 +357,7 @@ def push(scene, *, contact=False):
     return r
 
 
-def grasp_regions(part, *, mu=None, edges=None, fingers=2):
+def grasp_regions(part, *, mu=None, edges=None, fingers=2, rank=None, min_side=None, lenient=False):
     """Where two fingers may go (docs/grasp-regions.md), as `wrenchkit grasp-regions --json`: for every pair i < j of
     body.outline's edges (edge i from vertex i to i + 1), "closed": the polygons in (s, t) — a finger at
     v_i + s (v_{i+1} - v_i), the other at t on edge j — where the two frictional fingers are in force closure (corners
@@ -358,19 +367,35 @@ def grasp_regions(part, *, mu=None, edges=None, fingers=2):
     fingers=3: "triples" instead, for every triple i < j < k of edges: "independent" ([(a0, b0), (a1, b1), (a2, b2)]:
     a cube of placements that all close, certified by the four friction-cone "wrenches" named) or "never" (no
     placement closes: "frictionless", or a wrench-space direction as Fractions), with "most_independent".
+    "ranked": the closed pairs' (triples') box centres "at", best first, by "box_side" or (rank="epsilon") by the
+    grasp's "epsilon" there ({"lower", "upper"} Fractions), with "best_by_epsilon" (its scene and ε certificate);
+    min_side: rank only boxes at least that large. lenient=True: the part is read as Scene(part, lenient=True) —
+    contacts off the outline are warnings (the regions do not use them); an outline that is not a simple polygon is
+    refused all the same (the regions need one).
     """
     words = ["--fingers", str(int(fingers))] if fingers != 2 else []
+    if rank is not None:
+        words += ["--rank", str(rank)]
+    if min_side is not None:
+        words += ["--min-side", _number_text(min_side, "min_side")]
     if mu is not None:
         words += ["--mu", _number_text(mu, "mu")]
     if edges is not None:
         words += ["--edges", ",".join(str(int(e)) for e in edges)]
-    r = _json.loads(_core.grasp_regions(_scene(part), words))
+    r = _json.loads(_core.grasp_regions(_scene(Scene(part, lenient=True) if lenient and not isinstance(part, Scene)
+                                               else part), words))
     r["mu"] = _fractions.Fraction(r["mu"])
     for t in r.get("triples", []):
         if "independent" in t:
             t["independent"] = [tuple(_fractions.Fraction(x) for x in iv) for iv in t["independent"]]
         if isinstance(t.get("never"), list):
             t["never"] = tuple(_fractions.Fraction(x) for x in t["never"])
+    for p in r.get("ranked", []):
+        p["at"] = tuple(_fractions.Fraction(x) for x in p["at"])
+        p["box_side"] = _fractions.Fraction(p["box_side"])
+        if "epsilon" in p:
+            p["epsilon"]["lower"] = _fractions.Fraction(p["epsilon"]["lower"])
+            p["epsilon"]["upper"] = _fractions.Fraction(p["epsilon"]["upper"])
     if "triples" in r:
         if "most_independent" in r:
             r["most_independent"]["independent_side"] = _fractions.Fraction(r["most_independent"]["independent_side"])
