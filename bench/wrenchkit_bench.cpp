@@ -50,6 +50,7 @@
 #include "float/closure_twin.h"
 #include "float/labels_twin.h"
 #include "float/limit_surface_twin.h"
+#include "float/grasp_twin.h"
 #include "float/push_twin.h"
 #include "fuzz/families.h"
 
@@ -684,6 +685,47 @@ void register_grasp_regions() {
     st.counters["placements"] = static_cast<double>(tried);
     st.counters["naive_wrong_per_1000"] = tried ? 1000.0 * static_cast<double>(wrong) / static_cast<double>(tried) : 0;
   })->Unit(benchmark::kMillisecond)->Iterations(1);
+  // the float twin (float/grasp_twin.h: Nguyen's four signs in Bounded arithmetic) on the same placements: certified
+  // closed or open, or uncertain — never wrong (the counter must stay 0), abstaining only beside the boundary
+  benchmark::RegisterBenchmark("grasp_regions/100gon/twin_near_corners", [text](benchmark::State& st) {
+    const Scene scene = read_scene(*text, Input_limits{});
+    const Grasp_regions g = two_finger_regions(scene, Rational(1, 2));
+    const std::vector<Vec2>& V = scene.body.outline;
+    const int o = outline_orientation(V);
+    struct Placement {
+      fl::Finger_twin a, b;
+      bool closed;
+    };
+    std::vector<Placement> P;
+    for (const Pair_region& p : g.pairs)
+      for (const auto& c : p.polygon)
+        for (const int k : {6, 9, 12, 15})
+          for (const int dir : {1, -1}) {
+            Integer ten;
+            mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(k));
+            const Rational e = Rational(dir) / Rational(ten);
+            const Rational s = c[0] + e * (Rational(1, 2) - c[0]), t = c[1] + e * (Rational(1, 2) - c[1]);
+            if (s < 0 || s > 1 || t < 0 || t > 1) continue;
+            const Vec2 pi = edge_point(V, p.i, s), pj = edge_point(V, p.j, t);
+            const Vec2 ni = edge_inward_normal(V, p.i, o), nj = edge_inward_normal(V, p.j, o);
+            P.push_back({{to_bounded(pi.x), to_bounded(pi.y), to_bounded(ni.x), to_bounded(ni.y)},
+                         {to_bounded(pj.x), to_bounded(pj.y), to_bounded(nj.x), to_bounded(nj.y)}, closed_at(p, s, t)});
+          }
+    std::size_t abstain = 0, wrong = 0;
+    const fl::Bounded mu = to_bounded(Rational(1, 2));
+    for (auto _ : st) {
+      abstain = wrong = 0;
+      for (const Placement& x : P) {
+        const Sign v = fl::nguyen_twin(x.a, x.b, mu);
+        if (v == Sign::uncertain) ++abstain;
+        else wrong += (v == Sign::positive) != x.closed;
+      }
+      benchmark::DoNotOptimize(wrong);
+    }
+    st.counters["placements"] = static_cast<double>(P.size());
+    st.counters["twin_abstains_per_1000"] = P.empty() ? 0 : 1000.0 * static_cast<double>(abstain) / static_cast<double>(P.size());
+    st.counters["twin_wrong"] = static_cast<double>(wrong);
+  })->Unit(benchmark::kMicrosecond);
 }
 
 

@@ -17,6 +17,7 @@
 #include "exact/io/scene.h"
 #include "exact/statics/closure.h"
 #include "exact/statics/grasp_regions.h"
+#include "float/grasp_twin.h"
 #include "proofs/checker/checker.h"
 #include "tests/test_support.h"
 
@@ -102,7 +103,7 @@ TEST(GraspRegionsOracle, RegionsAgreeWithClosureAndNguyen) {
       ASSERT_EQ(rejected.outcome, wrenchkit_checker::Outcome::accepted) << rejected.message;
       for (const Pair_region& p : g.pairs) {
         std::vector<std::pair<Rational, Rational>> samples;
-        for (int k = 0; k < 6; ++k) samples.push_back({Rational(1 + rng() % 15, 16), Rational(1 + rng() % 15, 16)});
+        for (int k = 0; k < 6; ++k) samples.push_back({Rational(1 + rng() % 15) / 16, Rational(1 + rng() % 15) / 16});
         for (const auto& c : p.polygon)  // beside each corner, 10^-9 toward and away from the centre
           for (const int dir : {1, -1}) {
             const Rational e(dir, 1000000000);
@@ -134,7 +135,7 @@ TEST(GraspRegionsOracle, RegionsAgreeWithClosureAndNguyen) {
         const Rational big = p.side * Rational(1001, 1000);
         for (int a = 0; a <= 40; ++a)
           for (int c = 0; c <= 40; ++c) {
-            const Rational s0 = Rational(a, 40) * (1 - big), t0 = Rational(c, 40) * (1 - big);
+            const Rational s0 = Rational(a) / 40 * (1 - big), t0 = Rational(c) / 40 * (1 - big);
             if (big > 1) break;
             bool all = true;
             for (const Rational& s : {s0, Rational(s0 + big)})
@@ -174,6 +175,57 @@ TEST(GraspRegionsChecker, RefusesAMovedCornerAMissingPairAndAClaimedEmptyRegion)
   std::string wrong_mu = good;
   wrong_mu.replace(wrong_mu.find("\"mu\": \"1/2\""), 11, "\"mu\": \"1/3\"");
   EXPECT_NE(check(wrong_mu).find("not the force-closure region"), std::string::npos);
+}
+
+// The float twin of Nguyen's test (float/grasp_twin.h) against the exact regions, beside every corner at 10⁻ᵏ
+// (k = 3 … 17) and on a grid: certified closed or open always right, uncertain only within 10⁻⁹ of a cone's line.
+TEST(GraspRegionsTwin, NeverWrongAndUncertainOnlyBesideTheBoundary) {
+  const char* outlines[] = {"[[0, 0], [4, 0], [0, 3]]", "[[0, 0], [6, 0], [6, 2], [2, 2], [2, 5], [0, 5]]",
+                            "[[0, 0], [3, 0], [5, 2], [4, 5], [1, 4]]", kSquare};
+  std::size_t certain = 0, uncertain = 0;
+  for (const char* o : outlines)
+    for (const Rational& mu : {Rational(1, 3), Rational(1, 2), Rational(1)}) {
+      const Scene sc = scene_of(part(o));
+      const std::vector<Vec2>& V = sc.body.outline;
+      const int orient = outline_orientation(V);
+      const Grasp_regions g = two_finger_regions(sc, mu);
+      for (const Pair_region& p : g.pairs) {
+        std::vector<std::pair<std::array<Rational, 2>, int>> at;  // (s, t) and its k (0: a grid point)
+        for (int a = 0; a <= 8; ++a)
+          for (int b = 0; b <= 8; ++b) at.push_back({{Rational(a) / 8, Rational(b) / 8}, 0});
+        for (const auto& c : p.polygon)
+          for (int k = 3; k <= 17; k += 2)
+            for (const int dir : {1, -1}) {
+              Integer ten;
+              mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(k));
+              const Rational e = Rational(dir) / Rational(ten);
+              at.push_back({{c[0] + e * (Rational(1, 2) - c[0]), c[1] + e * (Rational(1, 2) - c[1])}, k});
+            }
+        for (const auto& [st, k] : at) {
+          if (st[0] < 0 || st[0] > 1 || st[1] < 0 || st[1] > 1) continue;
+          const Vec2 pi = edge_point(V, p.i, st[0]), pj = edge_point(V, p.j, st[1]);
+          const Vec2 ni = edge_inward_normal(V, p.i, orient), nj = edge_inward_normal(V, p.j, orient);
+          const Sign v = fl::nguyen_twin({to_bounded(pi.x), to_bounded(pi.y), to_bounded(ni.x), to_bounded(ni.y)},
+                                         {to_bounded(pj.x), to_bounded(pj.y), to_bounded(nj.x), to_bounded(nj.y)},
+                                         to_bounded(mu));
+          if (v == Sign::uncertain) {  // only within 10⁻⁹ (relative) of a cone's line: the boundary or beside it
+            ++uncertain;
+            bool near = false;
+            for (const Region_constraint& h : p.cones)
+              near = near || abs(Rational(h.a * st[0] + h.b * st[1] + h.c)) <=
+                                 Rational(1, 1000000000) * (abs(h.a) + abs(h.b) + abs(h.c));
+            EXPECT_TRUE(near) << "uncertain 1e-" << k << " beside a corner of " << o << " at " << to_string(st[0]) << ", "
+                              << to_string(st[1]);
+            continue;
+          }
+          ++certain;
+          ASSERT_EQ(v == Sign::positive, closed_at(p, st[0], st[1]))
+              << o << " mu " << to_string(mu) << " edges " << p.i << ", " << p.j << " at " << to_string(st[0]) << ", " << to_string(st[1]);
+        }
+      }
+    }
+  EXPECT_GT(certain, 5000u);
+  EXPECT_GT(uncertain, 10u);  // the 10⁻¹⁵ … 10⁻¹⁷ placements, and grid points exactly on a side
 }
 
 // ---- [GR-2] three fingers ------------------------------------------------------------------------------------------
@@ -250,7 +302,7 @@ TEST(GraspRegionsThreeOracle, CubesCloseNeversOpenAndTheGridFindsNothingMissed) 
       for (const Triple_region& t : g.triples) {
         const auto random_in = [&](const std::array<std::array<Rational, 2>, 3>& b) {
           std::array<Rational, 3> s;
-          for (int f = 0; f < 3; ++f) s[f] = b[f][0] + (b[f][1] - b[f][0]) * Rational(static_cast<long>(rng() % 1025), 1024);
+          for (int f = 0; f < 3; ++f) s[f] = b[f][0] + (b[f][1] - b[f][0]) * Rational(static_cast<long>(rng() % 1025)) / 1024;
           return s;
         };
         if (t.box) {
@@ -282,13 +334,13 @@ TEST(GraspRegionsThreeOracle, CubesCloseNeversOpenAndTheGridFindsNothingMissed) 
           for (int a = 1; a < 10; a += 2)
             for (int b = 1; b < 10; b += 2)
               for (int c = 1; c < 10; c += 2) {
-                const std::array<Rational, 3> s{Rational(a, 10), Rational(b, 10), Rational(c, 10)};
+                const std::array<Rational, 3> s{Rational(a) / 10, Rational(b) / 10, Rational(c) / 10};
                 if (!closes(three_fingers(o, t.edges, s, mu))) continue;
                 ++grid_closed;
                 bool robust = true;
                 for (int d = 0; d < 27 && robust; ++d) {
-                  const std::array<Rational, 3> n{s[0] + Rational(d % 3 - 1, 20), s[1] + Rational(d / 3 % 3 - 1, 20),
-                                                  s[2] + Rational(d / 9 - 1, 20)};
+                  const std::array<Rational, 3> n{s[0] + Rational(d % 3 - 1) / 20, s[1] + Rational(d / 3 % 3 - 1) / 20,
+                                                  s[2] + Rational(d / 9 - 1) / 20};
                   robust = closes(three_fingers(o, t.edges, n, mu));
                 }
                 EXPECT_FALSE(robust) << "edges " << t.edges[0] << ", " << t.edges[1] << ", " << t.edges[2] << " of " << o

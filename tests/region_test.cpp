@@ -473,7 +473,7 @@ TEST(RegionMotion, RandomRegionsNearTheirLimitSurfaceAreCertified) {
   for (int trial = 0; trial < 16; ++trial) {
     const std::string text = region_scene(random_star(rng, 4 + trial % 6), 1 + trial % 3, Rational(1, 2));
     const Scene s = read(text);
-    Vec3q dir{Rational(coord(rng), 4), Rational(coord(rng), 4), Rational(coord(rng), 4)};
+    Vec3q dir{Rational(coord(rng)) / 4, Rational(coord(rng)) / 4, Rational(coord(rng)) / 4};
     if (dir[0] == 0 && dir[1] == 0 && dir[2] == 0) dir[2] = 1;
     const Motion_answer probe = decide_on_regions(*s.support, dir);
     const double g = probe.gauge_estimate;  // dir/g is on the limit surface

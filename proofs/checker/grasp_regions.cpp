@@ -39,18 +39,23 @@ using Half = std::array<Q, 3>;  // a s + b t + c > 0
 
 // Edge k's first vertex, its vector, and its friction cone's edges R = n - mu rot90 n and L = n + mu rot90 n (n the
 // inward normal: rot90 of the edge vector on a counter-clockwise outline, its opposite on a clockwise one).
-std::array<P, 4> edge_cone(const std::vector<P>& V, std::size_t k, const Q& mu) {
-  const std::size_t n = V.size();
+// `ccw`: the outline's signed area is positive (counter_clockwise(V), computed once per certificate).
+bool counter_clockwise(const std::vector<P>& V) {
   Q area2 = 0;
-  for (std::size_t x = 0; x < n; ++x) area2 += cross(V[x], V[(x + 1) % n]);
+  for (std::size_t x = 0; x < V.size(); ++x) area2 += cross(V[x], V[(x + 1) % V.size()]);
+  return sgn(area2) > 0;
+}
+
+std::array<P, 4> edge_cone(const std::vector<P>& V, std::size_t k, const Q& mu, bool ccw) {
+  const std::size_t n = V.size();
   const P d{V[(k + 1) % n][0] - V[k][0], V[(k + 1) % n][1] - V[k][1]};
-  const P nn = sgn(area2) > 0 ? P{-d[1], d[0]} : P{d[1], -d[0]}, t{-nn[1], nn[0]};
+  const P nn = ccw ? P{-d[1], d[0]} : P{d[1], -d[0]}, t{-nn[1], nn[0]};
   return std::array<P, 4>{V[k], d, P{nn[0] - mu * t[0], nn[1] - mu * t[1]}, P{nn[0] + mu * t[0], nn[1] + mu * t[1]}};
 }
 
 // Nguyen's four strict inequalities of the pair, in the order finger i's R, L, then finger j's.
-std::array<Half, 4> cones(const std::vector<P>& V, std::size_t i, std::size_t j, const Q& mu) {
-  const auto ei = edge_cone(V, i, mu), ej = edge_cone(V, j, mu);
+std::array<Half, 4> cones(const std::vector<P>& V, std::size_t i, std::size_t j, const Q& mu, bool ccw) {
+  const auto ei = edge_cone(V, i, mu, ccw), ej = edge_cone(V, j, mu, ccw);
   const P c0{ej[0][0] - ei[0][0], ej[0][1] - ei[0][1]};
   // sign * cross(e, v) with v = c0 + t d_j - s d_i: (-sign cross(e, d_i)) s + (sign cross(e, d_j)) t + sign cross(e, c0)
   const std::array<std::pair<const P*, int>, 4> sides{{{&ei[2], 1}, {&ei[3], -1}, {&ej[2], -1}, {&ej[3], 1}}};
@@ -97,9 +102,9 @@ Q det(const W& a, const W& b, const W& c) {
 // One triple's claims: an independent box (each of its eight corners: the four wrenches named, at that placement,
 // have the four signed cofactors (-1)^m det(the others, in order) of one strict sign, the same at every corner), and
 // "never" (mu = 0, or u . w <= 0 for every wrench at both ends of the three edges).
-void check_triple(const std::vector<P>& V, const Q& mu, const Regions_part::Triple& t, const std::string& at) {
+void check_triple(const std::vector<P>& V, const Q& mu, bool ccw, const Regions_part::Triple& t, const std::string& at) {
   std::array<std::array<P, 4>, 3> E;
-  for (int f = 0; f < 3; ++f) E[f] = edge_cone(V, t.e[f], mu);
+  for (int f = 0; f < 3; ++f) E[f] = edge_cone(V, t.e[f], mu, ccw);
   const auto point = [&](int f, const Q& s) { return P{E[f][0][0] + s * E[f][1][0], E[f][0][1] + s * E[f][1][1]}; };
   if (t.has_box) {
     for (int f = 0; f < 3; ++f)
@@ -248,6 +253,7 @@ void check_grasp_regions(const Certificate& c, const Scene& scene, const Limits&
     if (edges[k] >= V.size() || (k > 0 && edges[k] <= edges[k - 1]))
       throw Failure{"edges: expected increasing edge indices of body.outline (0 to " + std::to_string(V.size() - 1) + ")"};
   std::size_t at = 0;
+  const bool ccw = counter_clockwise(V);
   if (g.fingers == 3) {
     for (std::size_t x = 0; x < edges.size(); ++x)
       for (std::size_t y = x + 1; y < edges.size(); ++y)
@@ -258,7 +264,7 @@ void check_grasp_regions(const Certificate& c, const Scene& scene, const Limits&
           if (t.e[0] != edges[x] || t.e[1] != edges[y] || t.e[2] != edges[z])
             throw Failure{name + ": expected edges [" + std::to_string(edges[x]) + ", " + std::to_string(edges[y]) + ", " +
                           std::to_string(edges[z]) + "]"};
-          check_triple(V, g.mu, t, name);
+          check_triple(V, g.mu, ccw, t, name);
         }
     if (at != g.triples.size()) throw Failure{"triples: more than the edge triples asked"};
     return;
@@ -270,7 +276,7 @@ void check_grasp_regions(const Certificate& c, const Scene& scene, const Limits&
       const Regions_part::Pair& p = g.pairs[at];
       if (p.i != edges[x] || p.j != edges[y])
         throw Failure{pair + ": expected edges [" + std::to_string(edges[x]) + ", " + std::to_string(edges[y]) + "]"};
-      const std::array<Half, 4> H = cones(V, p.i, p.j, g.mu);
+      const std::array<Half, 4> H = cones(V, p.i, p.j, g.mu, ccw);
       const std::vector<P> want = region(H);
       const bool same = want.empty() ? p.closed.empty() : p.closed.size() == 1 && p.closed[0] == want;
       if (!same)
