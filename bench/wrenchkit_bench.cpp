@@ -51,6 +51,9 @@
 #include "float/labels_twin.h"
 #include "float/limit_surface_twin.h"
 #include "float/grasp_twin.h"
+#include "float/quality_twin.h"
+#include "exact/io/to_float.h"
+#include "exact/pipeline/quality_answer.h"
 #include "float/push_twin.h"
 #include "fuzz/families.h"
 
@@ -578,6 +581,55 @@ void register_quality() {
     }
     benchmark::RegisterBenchmark((base + "qhull_graspit_epsilon").c_str(), [g](benchmark::State& st) {
       for (auto _ : st) benchmark::DoNotOptimize(peers::qhull_graspit_epsilon(g));
+    })->Unit(benchmark::kMicrosecond);
+  }
+  // the float twin of ε (float/quality_twin.h) on 6 contacts in general position (doubles, as quality_arrays reads
+  // them): the twin alone, decide_quality with twin_first, and the pipeline without a certificate (the array rows)
+  {
+    std::string t = R"({"wrenchkit": 1, "contacts": [)";
+    const double at[6][2] = {{3.91, 0.42}, {2.13, 2.61}, {-1.87, 2.77}, {-3.96, -0.31}, {-2.24, -2.58}, {1.78, -2.85}};
+    const double n[6][2] = {{-0.97, -0.2}, {-0.6, -0.8}, {0.52, -0.85}, {0.99, 0.12}, {0.61, 0.79}, {-0.4, 0.92}};
+    for (int i = 0; i < 6; ++i) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, R"(%s{"at": [%.17g, %.17g], "normal": [%.17g, %.17g], "mu": 0.4})", i ? ", " : "",
+                    at[i][0], at[i][1], n[i][0], n[i][1]);
+      t += buf;
+    }
+    const auto scene = std::make_shared<Scene>(read_scene(t + "]}", Input_limits{}));
+    std::vector<fl::Quality_twin_contact> in;
+    for (const fl::Bounded_contact& c : to_bounded(*scene)) in.push_back({c.ax, c.ay, c.nx, c.ny, c.mu});
+    benchmark::RegisterBenchmark("quality/6/general_position/epsilon_twin", [in](benchmark::State& st) {
+      fl::Quality_twin_answer a;
+      for (auto _ : st) {
+        a = fl::epsilon_twin(in, fl::Twin_normalization::unit_normal, fl::Bounded::exact(1), fl::Bounded::exact(0),
+                             fl::Bounded::exact(0));
+        benchmark::DoNotOptimize(a.lower);
+      }
+      if (!a.certain || !a.closed) throw std::logic_error("quality twin bench: the twin should certify this grasp");
+    })->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark("quality/6/general_position/decide_quality_twin_first", [scene](benchmark::State& st) {
+      Quality_query q;
+      q.twin_first = true;
+      q.critical_mu = false;
+      for (auto _ : st) benchmark::DoNotOptimize(decide_quality(*scene, q, Mode::hybrid).lower);
+    })->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark("quality/6/general_position/answer_quality_no_certificate", [scene](benchmark::State& st) {
+      Quality_query q;
+      q.twin_first = true;
+      q.critical_mu = false;
+      Request r;
+      r.certify = false;
+      Scene row = *scene;
+      for (auto _ : st) {  // as quality_arrays answers a row: the scene moved in and back out
+        Quality_item item = answer_quality(std::move(row), "", r, q);
+        row = std::move(item.scene);
+        benchmark::DoNotOptimize(item.answer.lower);
+      }
+    })->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark("quality/6/general_position/decide_quality_exact_hybrid", [scene](benchmark::State& st) {
+      Quality_query q;
+      q.critical_mu = false;
+      for (auto _ : st) benchmark::DoNotOptimize(decide_quality(*scene, q, Mode::hybrid).lower);
     })->Unit(benchmark::kMicrosecond);
   }
   // μ* of 6 contacts whose normals are turned off the centre (a pinwheel: free to turn without friction, closed above

@@ -289,7 +289,9 @@ py::dict stick_slide_arrays(const Doubles& points, const Doubles& forces, const 
 
 // The grasp quality of each row (docs/quality.md): ε's bracket as doubles rounded outward (lower down, upper up, so
 // [lower, upper] still holds ε), force closure, and with critical_mu the critical friction of closure (its bracket,
-// NaN for "never", 0 for "always"); every certificate checked (the pipeline's quality item).
+// NaN for "never", 0 for "always"); every certificate checked (the pipeline's quality item). Without certificates
+// (L1), ε comes from the float twin where it certifies it ("epsilon_twin": a certified bracket about 10⁻¹⁴ wide),
+// else from the exact engine.
 py::dict quality_arrays(const Doubles& points, const Doubles& normals, const Doubles& mu, const Counts& counts,
                         const std::string& norm, const std::string& normalize, const std::string& mode, bool critical,
                         bool certificates, unsigned jobs) {
@@ -302,9 +304,12 @@ py::dict quality_arrays(const Doubles& points, const Doubles& normals, const Dou
                     : normalize == "as-given" ? Force_normalization::as_given
                                               : Force_normalization::unit_normal;
   query.about = Vec2{};  // the origin: array rows have no centre of mass
+  query.twin_first = !certificates;  // the float twin's certified bracket where it decides (no certificate asked)
   auto closed = vector_of<bool>(in.rows);
   auto lower = vector_of<double>(in.rows), upper = vector_of<double>(in.rows);
   auto mu_lo = vector_of<double>(in.rows), mu_hi = vector_of<double>(in.rows);
+  auto by_twin = vector_of<bool>(in.rows);
+  bool* tw = by_twin.mutable_data();
   bool* c = closed.mutable_data();
   double *lo = lower.mutable_data(), *hi = upper.mutable_data(), *ml = mu_lo.mutable_data(), *mh = mu_hi.mutable_data();
   const auto down = [](const Rational& q) { const double d = q.get_d(); return Rational(d) > q ? std::nextafter(d, -INFINITY) : d; };
@@ -317,13 +322,15 @@ py::dict quality_arrays(const Doubles& points, const Doubles& normals, const Dou
       [&](Worker& w, std::size_t row, Item& out) {
         in.fill(w.scene, row);
         if (certificates) w.text = write_scene(w.scene);
-        out.item = answer_quality(w.scene, w.text, request, query);
+        out.item = answer_quality(std::move(w.scene), w.text, request, query);
+        w.scene = std::move(out.item.scene);  // (back for the next row: no copy of its contacts)
       },
       [&](std::size_t row, Item& o) {
         const Quality_item& r = o.item;
         if (r.status == Status::bad_input) throw std::invalid_argument("row " + std::to_string(row) + ": " + r.message);
         if (r.status != Status::answered) throw std::runtime_error("row " + std::to_string(row) + ": " + r.message);
         c[row] = r.answer.closure.holds;
+        tw[row] = r.answer.twin;
         lo[row] = down(r.answer.lower), hi[row] = up(r.answer.upper);
         ml[row] = mh[row] = NAN;
         if (r.critical && r.critical->closure.kind != Critical_kind::never) {
@@ -336,6 +343,7 @@ py::dict quality_arrays(const Doubles& points, const Doubles& normals, const Dou
   out["force_closure"] = closed;
   out["epsilon_lower"] = lower;
   out["epsilon_upper"] = upper;
+  out["epsilon_twin"] = by_twin;  // the row's ε (and closure) certified by the float twin, not the exact engine
   if (critical) out["critical_mu_lower"] = mu_lo, out["critical_mu_upper"] = mu_hi;
   return out;
 }

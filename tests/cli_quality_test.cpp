@@ -73,7 +73,7 @@ TEST(CliQuality, CertificateFileIsChecked) {
 TEST(CliQuality, FloatModeHasNoTwinForEpsilon) {
   const Cli_result closed = run("quality --only epsilon --mode float " + example("two_fingers_mu1"));
   EXPECT_EQ(closed.code, 3);
-  EXPECT_NE(closed.err.find("no float twin"), std::string::npos) << closed.err;
+  EXPECT_NE(closed.err.find("the float twin certifies it only without a certificate"), std::string::npos) << closed.err;
   EXPECT_EQ(run("quality --only epsilon --mode float " + example("two_fingers_mu0")).code, 0);  // ε = 0, by the twist
   const Cli_result mu = run("quality --mode float " + example("two_fingers_mu0"));  // μ* is asked by default
   EXPECT_EQ(mu.code, 3);

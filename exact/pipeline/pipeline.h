@@ -141,6 +141,16 @@ Item answer_into_item(const Scene& scene, const Input_limits& limits, Decide dec
   });
   return item;
 }
+// The same, the scene moved in (the array API moves each row's scene in and back out of the item: no copy).
+template <class Item, class Decide>
+Item answer_into_item(Scene&& scene, const Input_limits& limits, Decide decide) {
+  Item item;
+  guarded(item, limits, [&] {
+    item.scene = std::move(scene);
+    decide(item);
+  });
+  return item;
+}
 
 // The independent checker's limits for the request's limits: the same scenes are valid to both.
 wrenchkit_checker::Limits checker_limits(const Input_limits& limits);

@@ -38,5 +38,7 @@ Quality_item answer_quality(std::string_view text, std::string_view source, cons
 // The same for a scene already read; `text`: a text of it for the checker.
 Quality_item answer_quality(const Scene& scene, std::string_view text, const Request& request,
                             const Quality_query& query);
+// The same, the scene moved into the item (its `scene`; the array API moves it back for the next row).
+Quality_item answer_quality(Scene&& scene, std::string_view text, const Request& request, const Quality_query& query);
 
 }  // namespace wrenchkit

@@ -2,6 +2,9 @@
 // proofs/notes/QL-1-quality.md for the constructions and why they are right.
 #include "exact/statics/quality.h"
 
+#include "exact/io/to_float.h"
+#include "float/quality_twin.h"
+
 #include <algorithm>
 #include <optional>
 #include <cmath>
@@ -493,6 +496,36 @@ bool fast_points(const Scene& scene, const Quality_query& q, Quality_answer& a, 
 }  // namespace
 
 namespace {
+
+// [QL-1 §8] ε by the float twin (float/quality_twin.h) for point contacts: true when it certified the answer (set in
+// `a`: closure's verdict, ε's bracket as the doubles' exact values, `twin`).
+bool twin_epsilon(const Scene& scene, Quality_answer& a) {
+  std::vector<fl::Quality_twin_contact> in;
+  const std::vector<fl::Bounded_contact> bc = to_bounded(scene);
+  for (const fl::Bounded_contact& c : bc) {
+    if (c.is_wrench) return false;
+    in.push_back({c.ax, c.ay, c.nx, c.ny, c.frictional ? c.mu : fl::Bounded::exact(0)});
+  }
+  const Quality_query& q = a.query;
+  const fl::Twin_normalization how = q.normalize == Force_normalization::unit_normal ? fl::Twin_normalization::unit_normal
+                                     : q.normalize == Force_normalization::unit_force ? fl::Twin_normalization::unit_force
+                                                                                      : fl::Twin_normalization::as_given;
+  const fl::Quality_twin_answer t =
+      fl::epsilon_twin(in, how, to_bounded(q.torque_scale), to_bounded(a.about.x), to_bounded(a.about.y));
+  if (!t.certain) return false;
+  a.twin = true;
+  a.closure.mode = Mode::float_only;
+  a.closure.decided = true;
+  a.closure.holds = t.closed;
+  a.lower = Rational(t.lower), a.upper = Rational(t.upper);
+  a.exact = !t.closed;  // ε = 0 exactly when open
+  if (a.exact) a.squared = 0;
+  return true;
+}
+
+}  // namespace
+
+namespace {
 // The query with its preset resolved against the scene (the centre of mass and the outline it needs).
 Quality_query resolved(const Scene& scene, Quality_query q) {
   if (q.preset == Quality_preset::none) return q;
@@ -516,19 +549,24 @@ Quality_query resolved(const Scene& scene, Quality_query q) {
 }
 }  // namespace
 
-Quality_answer decide_quality(const Scene& given, const Quality_query& asked, Mode mode) {
-  // contacts read lazily (the array API's doubles, the streaming reader) get their rationals first
-  std::optional<Scene> storage;
-  const Scene& scene = exact_contacts(given, storage);
-  if (scene.contacts.empty()) throw Input_error("contacts: the scene has no contacts, so no grasp to measure");
-  const Quality_query query = resolved(scene, asked);
+void decide_quality_into(const Scene& given, const Quality_query& asked, Mode mode, Quality_answer& a) {
+  if (given.contacts.empty()) throw Input_error("contacts: the scene has no contacts, so no grasp to measure");
+  Quality_query resolved_query;  // (a preset resolved; else the query as asked, not copied)
+  const Quality_query& query =
+      asked.preset == Quality_preset::none ? asked : (resolved_query = resolved(given, asked));
   if (query.torque_scale <= 0)
     throw Input_error("--torque-scale: " + to_string(query.torque_scale) + " is not positive (the moment's weight)");
   if (query.tolerance <= 0) throw Input_error("--tolerance: " + to_string(query.tolerance) + " is not positive");
-  Quality_answer a;
   a.query = query;
-  a.about = query.about ? *query.about : scene.body.com ? *scene.body.com : Vec2{};
+  a.about = query.about ? *query.about : given.body.com ? *given.body.com : Vec2{};
   const bool radius = query.torque_radius_squared.has_value();
+  // the float twin first, on the contacts as read (lazily read ones carry their certified doubles)
+  if (query.norm == Quality_norm::l1 && !radius && !query.keep_planes && mode != Mode::exact && query.twin_first &&
+      twin_epsilon(given, a))
+    return;
+  // contacts read lazily (the array API's doubles, the streaming reader) get their rationals first
+  std::optional<Scene> storage;
+  const Scene& scene = exact_contacts(given, storage);
   Quality_scale torque;  // s = 1/√r2: exact when r2 is a rational square
   if (radius) {
     torque.q = *query.torque_radius_squared;
@@ -537,13 +575,13 @@ Quality_answer decide_quality(const Scene& given, const Quality_query& asked, Mo
   }
   const bool irrational_torque = radius && torque.error != 0;
   a.closure = decide_closure(scene, Property::force_closure, mode, false);  // (a certificate only when open)
-  if (!a.closure.decided) return a;
+  if (!a.closure.decided) return;
   if (!a.closure.holds) a.closure = decide_closure(scene, Property::force_closure, mode, true);
   if (!a.closure.holds) {  // ε = 0: the closure's twist shows the origin on the boundary or outside
     a.exact = true;
-    return a;
+    return;
   }
-  if (mode == Mode::float_only) return a;  // ε has no float twin: the caller says undecided
+  if (mode == Mode::float_only) return;  // ε has no float twin: the caller says undecided
   if (query.norm == Quality_norm::l1 && a.closure.generators > kQualityMaxL1Edges)
     throw Input_error("contacts: epsilon (L1) of " + std::to_string(a.closure.generators) + " friction-cone edges, more than " +
                       std::to_string(kQualityMaxL1Edges) + " (its hull grows as their square); the grasp is in force closure");
@@ -559,7 +597,7 @@ Quality_answer decide_quality(const Scene& given, const Quality_query& asked, Mo
     for (;; bits *= 2) {
       const auto [lo, hi] = sqrt_bracket(a.squared, bits);
       a.lower = lo, a.upper = hi;
-      if (hi - lo <= query.tolerance * lo || bits >= (1u << 16)) return a;
+      if (hi - lo <= query.tolerance * lo || bits >= (1u << 16)) return;
     }
   }
   a.refs.clear();
@@ -629,6 +667,11 @@ Quality_answer decide_quality(const Scene& given, const Quality_query& asked, Mo
     a.upper = hi + delta;
     if (a.upper - a.lower <= query.tolerance * a.lower || bits >= (1u << 16)) break;
   }
+}
+
+Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mode mode) {
+  Quality_answer a;
+  decide_quality_into(scene, query, mode, a);
   return a;
 }
 

@@ -53,6 +53,11 @@ struct Quality_query {
   // What to answer (the quality command): ε, and the critical friction coefficient μ* (critical_mu.h)
   bool epsilon = true, critical_mu = true;
   bool keep_planes = false;  // keep the wrench space's supporting planes in the answer (pictures)
+  // Not Mode::exact: ε (L1) from the float twin when it certifies it (float/quality_twin.h), else as without. For
+  // callers that need no certificate (the array API without certificates; the pipeline drops it when certifying):
+  // the answer then has the bracket, closure's verdict and `twin` set, and none of the exact structures (points,
+  // boundary, nearest, the closure certificate).
+  bool twin_first = false;
   bool contact_margins = false;  // also each contact's distance to a degenerate configuration (contact_margins)
 };
 
@@ -84,17 +89,21 @@ struct Quality_answer {
   // ε > 0: supporting planes n·x ≤ b whose intersection is the (rational) wrench space — L1 its facets' planes, L∞ the
   // candidate normals with their support — for pictures (render --what quality), when the query keeps them.
   std::vector<std::pair<Vec3q, Rational>> planes;
+  bool twin = false;  // decided by the float twin: lower and upper are its certified doubles, nothing exact above
 };
 
 // The quality of the scene's contacts (the friction reading, each contact with its own μ). Closure is decided in
 // `mode` (Mode::float_only may leave it undecided: closure.decided false and nothing else set); ε itself is exact
-// arithmetic, not computed in Mode::float_only (a closed grasp's ε is then left unset: no float twin). Throws Input_error for a scene without contacts or a question that does not apply (torque scale ≤ 0).
+// arithmetic, or (L1, query.twin_first, not Mode::exact) the float twin's certified bracket (`twin`); a closed
+// grasp's ε is left unset in Mode::float_only otherwise. Throws Input_error for a scene without contacts or a question that does not apply (torque scale ≤ 0).
 //
 // Bounded work: ε of a closed grasp is refused (Input_error naming the bound) past 1024 friction-cone edges for L1
 // (the hull grows as their square: 1 000 contacts take seconds) and past 48 contacts for L∞ (its candidates grow as
 // the cube). Closure, and ε = 0 of an open grasp, have no such bound.
 constexpr std::size_t kQualityMaxL1Edges = 1024, kQualityMaxLinfContacts = 48;
 Quality_answer decide_quality(const Scene& scene, const Quality_query& query, Mode mode);
+// The same into `out` (a default-constructed answer): the pipeline's item holds it, no second answer built.
+void decide_quality_into(const Scene& scene, const Quality_query& query, Mode mode, Quality_answer& out);
 
 // [QL-1 §6] How near each contact is to a degenerate configuration — the per-contact form of `compare`'s smallest
 // deciding determinant (boundary_distance.h), over every triple of friction-cone edges rather than those one decision
