@@ -356,6 +356,27 @@ TEST(GraspRegionsThreeOracle, CubesCloseNeversOpenAndTheGridFindsNothingMissed) 
               grid_closed);
 }
 
+// Scale-free: the doubles propose in a frame where the force and moment rows are scaled by powers of two, so a part
+// at 10^±400 (beyond the doubles' range) gets the same cubes and nevers as at scale 1, certified in its own numbers.
+TEST(GraspRegionsThreeGolden, TheSameAnswersAtTenToThePlusMinus400) {
+  const auto scaled_l = [](const std::string& factor) {
+    std::string o = "[";
+    const int V[6][2] = {{0, 0}, {6, 0}, {6, 2}, {2, 2}, {2, 5}, {0, 5}};
+    for (int k = 0; k < 6; ++k)
+      o += std::string(k ? ", " : "") + "[\"" + std::to_string(V[k][0]) + factor + "\", \"" + std::to_string(V[k][1]) + factor + "\"]";
+    return o + "]";
+  };
+  const Grasp_regions one = three_finger_regions(scene_of(part(kL)), Rational(1, 2));
+  for (const std::string factor : {"e400", "e-400"}) {
+    const std::string o = scaled_l(factor);
+    const Grasp_regions g = three_finger_regions(scene_of(part(o)), Rational(1, 2));
+    EXPECT_EQ(g.boxed_triples(), one.boxed_triples()) << factor;
+    EXPECT_EQ(g.never_triples(), one.never_triples()) << factor;
+    EXPECT_EQ(wrenchkit_checker::check(part(o), grasp_regions_certificate(g), wrenchkit_checker::Limits{}).message,
+              "accepted") << factor;
+  }
+}
+
 TEST(GraspRegionsThreeChecker, RefusesAnOpenCornerAWrongWrenchANeverThatClosesAndAMissingTriple) {
   const Grasp_regions g = three_finger_regions(scene_of(part(kL)), Rational(1, 2));
   const std::string good = grasp_regions_certificate(g);

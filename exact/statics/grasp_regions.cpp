@@ -2,6 +2,7 @@
 #include "exact/statics/grasp_regions.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <string>
 
@@ -288,6 +289,23 @@ bool valid_q(const Wrench_q (&w)[6], const std::array<int, 4>& q, const std::arr
   return true;
 }
 
+// The doubles' proposals in a scaled frame: the force rows and the moment row of the wrenches each divided by a power of
+// two (2^-ef, 2^-em) so that their largest entry is near 1 — every 3×3 determinant scales by 2^-(2ef+em) > 0, so its
+// sign, and a cube's validity, are the same — whatever the part's size (10^±3000 coordinates overflow a double).
+long exponent_of(const Rational& q) {
+  if (sgn(q) == 0) return LONG_MIN;
+  long en = 0, ed = 0;
+  mpz_get_d_2exp(&en, q.get_num_mpz_t());
+  mpz_get_d_2exp(&ed, q.get_den_mpz_t());
+  return en - ed;
+}
+double scaled(const Rational& q, long e) {  // q · 2^-e as a double (≈; a proposal only)
+  if (sgn(q) == 0) return 0;
+  long en = 0, ed = 0;
+  const double dn = mpz_get_d_2exp(&en, q.get_num_mpz_t()), dd = mpz_get_d_2exp(&ed, q.get_den_mpz_t());
+  return std::ldexp(dn / dd, static_cast<int>(std::max(-2000L, std::min(2000L, en - ed - e))));
+}
+
 // A direction u of the wrench space with u · w ≤ 0 for the twelve wrenches at the edges' ends, or none: proposed by
 // the doubles among ±(w_x × w_y) (a facet's normal of their cone, when it is not everything), checked exactly.
 std::optional<std::array<Rational, 3>> never_direction(const Wrench_q (&w)[6]) {
@@ -296,8 +314,12 @@ std::optional<std::array<Rational, 3>> never_direction(const Wrench_q (&w)[6]) {
   for (int k = 0; k < 12; ++k) {
     const Wrench_q& x = w[k / 2];
     W[k][0] = x.fx, W[k][1] = x.fy, W[k][2] = k % 2 ? Rational(x.m0 + x.m1) : x.m0;
-    for (int i = 0; i < 3; ++i) D[k][i] = W[k][i].get_d();
   }
+  long ef = LONG_MIN, em = LONG_MIN;  // (the scaled frame: u's sign pattern on the wrenches is the same)
+  for (const auto& w : W) ef = std::max({ef, exponent_of(w[0]), exponent_of(w[1])}), em = std::max(em, exponent_of(w[2]));
+  if (ef == LONG_MIN) ef = 0;
+  if (em == LONG_MIN) em = 0;
+  for (int k = 0; k < 12; ++k) D[k][0] = scaled(W[k][0], ef), D[k][1] = scaled(W[k][1], ef), D[k][2] = scaled(W[k][2], em);
   double scale = 0;
   for (const auto& d : D)
     for (const double x : d) scale = std::max(scale, std::abs(x));
@@ -341,9 +363,16 @@ Rational dyadic(double x, bool down) {
 // 2⁻¹⁰ and checked exactly (halved up to four times when the rounding lost it).
 void search_box(Triple_region& t, const Wrench_q (&wq)[6], const std::vector<std::array<double, 3>>& seeds) {
   Wrench_d w[6];
+  long ef = LONG_MIN, em = LONG_MIN;  // the scaled frame (never_direction's)
+  for (const Wrench_q& x : wq) {
+    ef = std::max({ef, exponent_of(x.fx), exponent_of(x.fy)});
+    em = std::max({em, exponent_of(x.m0), exponent_of(Rational(x.m0 + x.m1))});
+  }
+  if (ef == LONG_MIN) ef = 0;
+  if (em == LONG_MIN) em = 0;
   double scale = 0;
   for (int k = 0; k < 6; ++k) {
-    w[k] = {wq[k].fx.get_d(), wq[k].fy.get_d(), wq[k].m0.get_d(), wq[k].m1.get_d()};
+    w[k] = {scaled(wq[k].fx, ef), scaled(wq[k].fy, ef), scaled(wq[k].m0, em), scaled(wq[k].m1, em)};
     scale = std::max({scale, std::abs(w[k].fx), std::abs(w[k].fy), std::abs(w[k].m0), std::abs(w[k].m0 + w[k].m1)});
   }
   const double tol = 1e-12 * scale * scale * scale;

@@ -488,7 +488,7 @@ def crit(base, **changes):
 
 # three fingers on the L-shaped part's edges 0-3, mu = 1/2, as the engine writes it (GR-2): two cubes certified by four
 # wrenches, two triples that never close (every friction-cone edge in a closed half-plane: u = (2, -1) and (1, 2)).
-L_TRIPLES = json.loads(r'''{"wrenchkit_certificate": 5, "property": "grasp_regions", "fingers": 3, "mu": "1/2", "edges": [0, 1, 2, 3], "triples": [{"edges": [0, 1, 2], "independent": [["2133823/8388608", "4288705/8388608"], ["3829567/8388608", "5984449/8388608"], ["6197055/8388608", "8351937/8388608"]], "wrenches": ["R0", "R1", "L1", "L2"]}, {"edges": [0, 1, 3], "never": ["2", "-1", "0"]}, {"edges": [0, 2, 3], "independent": [["6910989/16777216", "14060531/16777216"], ["1111053/16777216", "8260595/16777216"], ["5403661/16777216", "12553203/16777216"]], "wrenches": ["R0", "L0", "L1", "L2"]}, {"edges": [1, 2, 3], "never": ["1", "2", "0"]}]}''')
+L_TRIPLES = json.loads(r'''{"wrenchkit_certificate": 5, "property": "grasp_regions", "fingers": 3, "mu": "1/2", "edges": [0, 1, 2, 3], "triples": [{"edges": [0, 1, 2], "independent": [["4065393/16777216", "8484751/16777216"], ["8587377/16777216", "13006735/16777216"], ["12208241/16777216", "16627599/16777216"]], "wrenches": ["R0", "L0", "R1", "L2"]}, {"edges": [0, 1, 3], "never": ["2", "-1", "0"]}, {"edges": [0, 2, 3], "independent": [["6649101/16777216", "14322419/16777216"], ["193805/16777216", "7867123/16777216"], ["6976781/16777216", "14650099/16777216"]], "wrenches": ["R0", "L0", "L1", "L2"]}, {"edges": [1, 2, 3], "never": ["1", "2", "0"]}]}''')
 
 
 def l_triples(**change):
