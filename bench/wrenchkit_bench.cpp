@@ -703,43 +703,54 @@ void register_grasp_regions() {
       st.counters["never_triples"] = static_cast<double>(never);
     })->Unit(benchmark::kMillisecond)->Iterations(g_smoke ? 1 : 3);
   }
-  benchmark::RegisterBenchmark("grasp_regions/100gon/naive_double_near_corners", [text](benchmark::State& st) {
+  // the placements both rows decide: 10⁻ᵏ (k = 6, 9, 12, 15) beside every region corner, toward (1/2, 1/2) and away
+  struct Near_corner {
+    const Pair_region* p;
+    Rational s, t;
+  };
+  const auto near_corners = [](const Grasp_regions& g) {
+    std::vector<Near_corner> out;
+    for (const Pair_region& p : g.pairs)
+      for (const auto& c : p.polygon)
+        for (const int k : {6, 9, 12, 15})
+          for (const int dir : {1, -1}) {
+            Integer ten;
+            mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(k));
+            const Rational e = Rational(dir) / Rational(ten);
+            const Rational s = c[0] + e * (Rational(1, 2) - c[0]), t = c[1] + e * (Rational(1, 2) - c[1]);
+            if (s >= 0 && s <= 1 && t >= 0 && t <= 1) out.push_back({&p, s, t});
+          }
+    return out;
+  };
+  benchmark::RegisterBenchmark("grasp_regions/100gon/naive_double_near_corners", [text, near_corners](benchmark::State& st) {
     const Scene scene = read_scene(*text, Input_limits{});
     const Grasp_regions g = two_finger_regions(scene, Rational(1, 2));
-    std::size_t tried = 0, wrong = 0;
+    const std::vector<Near_corner> P = near_corners(g);
+    const std::vector<Vec2>& V = scene.body.outline;
+    const int o = outline_orientation(V);
+    std::size_t wrong = 0;
     for (auto _ : st) {
-      tried = wrong = 0;
-      const std::vector<Vec2>& V = scene.body.outline;
-      const int o = outline_orientation(V);
-      for (const Pair_region& p : g.pairs)
-        for (const auto& c : p.polygon)
-          for (const int k : {6, 9, 12, 15})
-            for (const int dir : {1, -1}) {
-              Integer ten;
-              mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(k));
-              const Rational e = Rational(dir) / Rational(ten);
-              const Rational s = c[0] + e * (Rational(1, 2) - c[0]), t = c[1] + e * (Rational(1, 2) - c[1]);
-              if (s < 0 || s > 1 || t < 0 || t > 1) continue;
-              // the naive test in doubles: the segment inside both cones, |cross(n, d)| < mu (n . d)
-              const Vec2 pi = edge_point(V, p.i, s), pj = edge_point(V, p.j, t);
-              const Vec2 ni = edge_inward_normal(V, p.i, o), nj = edge_inward_normal(V, p.j, o);
-              const double dx = pj.x.get_d() - pi.x.get_d(), dy = pj.y.get_d() - pi.y.get_d();
-              const auto inside = [](double nx, double ny, double vx, double vy) {
-                const double along = nx * vx + ny * vy, side = nx * vy - ny * vx;
-                return along > 0 && std::abs(side) < 0.5 * along;
-              };
-              const bool guess = inside(ni.x.get_d(), ni.y.get_d(), dx, dy) && inside(nj.x.get_d(), nj.y.get_d(), -dx, -dy);
-              ++tried;
-              wrong += guess != closed_at(p, s, t);
-            }
+      wrong = 0;
+      for (const Near_corner& x : P) {
+        // the naive test in doubles: the segment inside both cones, |cross(n, d)| < mu (n . d)
+        const Vec2 pi = edge_point(V, x.p->i, x.s), pj = edge_point(V, x.p->j, x.t);
+        const Vec2 ni = edge_inward_normal(V, x.p->i, o), nj = edge_inward_normal(V, x.p->j, o);
+        const double dx = pj.x.get_d() - pi.x.get_d(), dy = pj.y.get_d() - pi.y.get_d();
+        const auto inside = [](double nx, double ny, double vx, double vy) {
+          const double along = nx * vx + ny * vy, side = nx * vy - ny * vx;
+          return along > 0 && std::abs(side) < 0.5 * along;
+        };
+        const bool guess = inside(ni.x.get_d(), ni.y.get_d(), dx, dy) && inside(nj.x.get_d(), nj.y.get_d(), -dx, -dy);
+        wrong += guess != closed_at(*x.p, x.s, x.t);
+      }
       benchmark::DoNotOptimize(wrong);
     }
-    st.counters["placements"] = static_cast<double>(tried);
-    st.counters["naive_wrong_per_1000"] = tried ? 1000.0 * static_cast<double>(wrong) / static_cast<double>(tried) : 0;
+    st.counters["placements"] = static_cast<double>(P.size());
+    st.counters["naive_wrong_per_1000"] = P.empty() ? 0 : 1000.0 * static_cast<double>(wrong) / static_cast<double>(P.size());
   })->Unit(benchmark::kMillisecond)->Iterations(1);
   // the float twin (float/grasp_twin.h: Nguyen's four signs in Bounded arithmetic) on the same placements: certified
   // closed or open, or uncertain — never wrong (the counter must stay 0), abstaining only beside the boundary
-  benchmark::RegisterBenchmark("grasp_regions/100gon/twin_near_corners", [text](benchmark::State& st) {
+  benchmark::RegisterBenchmark("grasp_regions/100gon/twin_near_corners", [text, near_corners](benchmark::State& st) {
     const Scene scene = read_scene(*text, Input_limits{});
     const Grasp_regions g = two_finger_regions(scene, Rational(1, 2));
     const std::vector<Vec2>& V = scene.body.outline;
@@ -749,20 +760,12 @@ void register_grasp_regions() {
       bool closed;
     };
     std::vector<Placement> P;
-    for (const Pair_region& p : g.pairs)
-      for (const auto& c : p.polygon)
-        for (const int k : {6, 9, 12, 15})
-          for (const int dir : {1, -1}) {
-            Integer ten;
-            mpz_ui_pow_ui(ten.get_mpz_t(), 10, static_cast<unsigned long>(k));
-            const Rational e = Rational(dir) / Rational(ten);
-            const Rational s = c[0] + e * (Rational(1, 2) - c[0]), t = c[1] + e * (Rational(1, 2) - c[1]);
-            if (s < 0 || s > 1 || t < 0 || t > 1) continue;
-            const Vec2 pi = edge_point(V, p.i, s), pj = edge_point(V, p.j, t);
-            const Vec2 ni = edge_inward_normal(V, p.i, o), nj = edge_inward_normal(V, p.j, o);
-            P.push_back({{to_bounded(pi.x), to_bounded(pi.y), to_bounded(ni.x), to_bounded(ni.y)},
-                         {to_bounded(pj.x), to_bounded(pj.y), to_bounded(nj.x), to_bounded(nj.y)}, closed_at(p, s, t)});
-          }
+    for (const Near_corner& x : near_corners(g)) {
+      const Vec2 pi = edge_point(V, x.p->i, x.s), pj = edge_point(V, x.p->j, x.t);
+      const Vec2 ni = edge_inward_normal(V, x.p->i, o), nj = edge_inward_normal(V, x.p->j, o);
+      P.push_back({{to_bounded(pi.x), to_bounded(pi.y), to_bounded(ni.x), to_bounded(ni.y)},
+                   {to_bounded(pj.x), to_bounded(pj.y), to_bounded(nj.x), to_bounded(nj.y)}, closed_at(*x.p, x.s, x.t)});
+    }
     std::size_t abstain = 0, wrong = 0;
     const fl::Bounded mu = to_bounded(Rational(1, 2));
     for (auto _ : st) {
