@@ -653,7 +653,6 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
         if (v.type != json::Type::array) throw Input_error(where + ": " + json::text_of(v) + " is not an array of placements");
         const Scene part = read_scene(json::text_of(*ref.scene), Input_limits{}, a.id);
         const std::vector<Vec2>& V = part.body.outline;
-        const int orientation = outline_orientation(V);
         const Rational mu = exact_number(*ref.regions_mu, "reference");
         for (std::size_t k = 0; k < v.items.size(); ++k) {
           const json::Value& p = v.items[k];
@@ -668,8 +667,8 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
             throw Input_error(at + ".edges: " + json::text_of(*edges) + " is not [i, j] or [i, j, k]");
           if (params->type != json::Type::array || params->items.size() != edges->items.size())
             throw Input_error(at + ".s: " + json::text_of(*params) + " is not one parameter per finger");
-          Scene placed = part;
-          placed.contacts.clear();
+          std::vector<std::size_t> on;
+          std::vector<Rational> at_s;
           std::string text = "edges " + json::text_of(*edges) + " at s = (";
           for (std::size_t f = 0; f < edges->items.size(); ++f) {
             const Rational e = exact_number(edges->items[f], at + ".edges");
@@ -679,12 +678,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
             const std::size_t edge = static_cast<std::size_t>(e.get_num().get_ui());
             const Rational t = exact_number(params->items[f], at + ".s");
             if (sgn(t) < 0 || t > 1) throw Input_error(at + ".s: " + params->items[f].text + " is not in [0, 1]");
-            Contact c;
-            c.at = edge_point(V, edge, t);
-            c.normal = edge_inward_normal(V, edge, orientation);
-            c.mu = mu;
-            c.mu_given = true;
-            placed.contacts.push_back(std::move(c));
+            on.push_back(edge), at_s.push_back(t);
             text += (f ? ", " : "") + params->items[f].text;
           }
           text += ")";
@@ -694,7 +688,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
           }
           const std::optional<bool> claim = verdict_value(*closed);
           if (!claim) throw Input_error(at + ".closed: " + json::text_of(*closed) + " is not " + kVerdictWords + " or null");
-          const bool truth = decide_closure(placed, Property::force_closure, Mode::exact, false).holds;
+          const bool truth = decide_closure(with_fingers(part, mu, on, at_s), Property::force_closure, Mode::exact, false).holds;
           count(&Field_tally::compared);
           if (truth == *claim) {
             count(&Field_tally::agree);

@@ -173,22 +173,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       return r;
     };
     const wrenchkit::Rational mu = q(*c.find("mu"));
-    const std::vector<wrenchkit::Vec2>& V = scene.body.outline;
-    const int o = wrenchkit::outline_orientation(V);
     const auto closes = [&](const wrenchkit::json::Value& edges, const std::array<wrenchkit::Rational, 3>& s) {
-      wrenchkit::Scene placed = scene;
-      placed.contacts.clear();
-      placed.load.reset();
-      for (int f = 0; f < 3; ++f) {
-        const std::size_t e = std::stoul(edges.items[static_cast<std::size_t>(f)].text);
-        wrenchkit::Contact k;
-        k.at = wrenchkit::edge_point(V, e, s[static_cast<std::size_t>(f)]);
-        k.normal = wrenchkit::edge_inward_normal(V, e, o);
-        k.mu = mu;
-        k.mu_given = true;
-        placed.contacts.push_back(k);
-      }
-      return wrenchkit::decide_closure(placed, wrenchkit::Property::force_closure, wrenchkit::Mode::exact, false).holds;
+      std::vector<std::size_t> on;
+      for (const wrenchkit::json::Value& e : edges.items) on.push_back(std::stoul(e.text));
+      return wrenchkit::decide_closure(wrenchkit::with_fingers(scene, mu, on, {s.begin(), s.end()}),
+                                       wrenchkit::Property::force_closure, wrenchkit::Mode::exact, false).holds;
     };
     std::size_t tried = 0;
     for (const wrenchkit::json::Value& t : c.find("triples")->items) {

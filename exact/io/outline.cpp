@@ -92,6 +92,27 @@ Vec2 edge_inward_normal(const std::vector<Vec2>& V, std::size_t i, int orientati
   return orientation > 0 ? Vec2{-d.y, d.x} : Vec2{d.y, -d.x};
 }
 
+Scene with_fingers(const Scene& part, const Rational& mu, const std::vector<std::size_t>& edges,
+                   const std::vector<Rational>& at) {
+  Scene s = part;
+  s.contacts.clear();
+  s.load.reset();
+  s.support.reset();
+  s.pusher.reset();
+  const std::vector<Vec2>& V = part.body.outline;
+  const int o = outline_orientation(V);
+  for (std::size_t f = 0; f < edges.size(); ++f) {
+    Contact c;
+    c.at = edge_point(V, edges[f], at[f]);
+    c.normal = edge_inward_normal(V, edges[f], o);
+    c.mu = mu;
+    c.mu_given = true;
+    c.name = "finger " + std::to_string(f + 1);
+    s.contacts.push_back(std::move(c));
+  }
+  return s;
+}
+
 void check_outline(Scene& s, bool lenient) {
   s.warnings.clear();
   const std::vector<Vec2>& V = s.body.outline;

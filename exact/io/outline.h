@@ -21,6 +21,13 @@ int outline_orientation(const std::vector<Vec2>& outline);
 Vec2 edge_point(const std::vector<Vec2>& outline, std::size_t i, const Rational& t);
 Vec2 edge_inward_normal(const std::vector<Vec2>& outline, std::size_t i, int orientation);
 
+// The part with frictional fingers placed on its outline instead of its contacts: finger f on edge edges[f] at
+// v_i + at[f] (v_{i+1} − v_i), pushing along the edge's inward normal, with Coulomb μ (named "finger 1", …). The load,
+// support and pusher are dropped (a grasp of the part alone). The one construction of a placement: grasp-regions'
+// ranking, compare's sampled placements and the fuzzer's oracle build it here.
+Scene with_fingers(const Scene& part, const Rational& mu, const std::vector<std::size_t>& edges,
+                   const std::vector<Rational>& at);
+
 // Checks body.outline and every point contact against it, and states the outline's orientation and convexity in
 // scene.body. A violation throws Input_error naming the field, the value and the likely fix — or, `lenient`, is kept
 // as a warning in scene.warnings (the scene is analysed as given). No outline: nothing to check.

@@ -12,26 +12,6 @@ namespace wrenchkit {
 
 namespace {
 
-// The part with fingers placed at `at` on `edges` (point contacts with μ, their edges' inward normals).
-Scene placed_scene(const Scene& part, const Rational& mu, const std::vector<std::size_t>& edges, const std::vector<Rational>& at) {
-  Scene s = part;
-  s.contacts.clear();
-  s.load.reset();
-  s.support.reset();
-  s.pusher.reset();
-  const int o = outline_orientation(part.body.outline);
-  for (std::size_t f = 0; f < edges.size(); ++f) {
-    Contact c;
-    c.at = edge_point(part.body.outline, edges[f], at[f]);
-    c.normal = edge_inward_normal(part.body.outline, edges[f], o);
-    c.mu = mu;
-    c.mu_given = true;
-    c.name = "finger " + std::to_string(f + 1);
-    s.contacts.push_back(std::move(c));
-  }
-  return s;
-}
-
 // The outline's area centroid (exact): the moments' point when the part has no body.com.
 Vec2 area_centroid(const std::vector<Vec2>& V) {
   Rational a2 = 0, cx = 0, cy = 0;
@@ -58,14 +38,14 @@ void rank(Grasp_regions_item& r, const Grasp_regions_query& query, const Request
     if (p.box) add({p.i, p.j}, *p.box, Rational((*p.box)[0][1] - (*p.box)[0][0]));
   for (const Triple_region& t : g.triples)
     if (t.box) add({t.edges[0], t.edges[1], t.edges[2]}, *t.box, t.side);
+  Quality_query q;  // ε at a placement: L1, unit-normal, about body.com else the outline's area centroid
+  q.critical_mu = false;
+  if (query.rank_epsilon) q.about = r.scene.body.com ? *r.scene.body.com : area_centroid(r.scene.body.outline);
   if (query.rank_epsilon) {
-    Quality_query q;
-    q.critical_mu = false;
-    q.about = r.scene.body.com ? *r.scene.body.com : area_centroid(r.scene.body.outline);
     Request quiet = request;
     quiet.certify = false;
     for (Ranked_placement& p : r.ranked) {
-      const Scene s = placed_scene(r.scene, g.mu, p.edges, p.at);
+      const Scene s = with_fingers(r.scene, g.mu, p.edges, p.at);
       const Quality_item e = answer_quality(s, write_scene(s), quiet, q);
       if (e.status != Status::answered) throw Input_error("--rank epsilon: " + e.message);
       p.epsilon = std::array<Rational, 2>{e.answer.lower, e.answer.upper};
@@ -76,11 +56,8 @@ void rank(Grasp_regions_item& r, const Grasp_regions_query& query, const Request
     return a.side > b.side;
   });
   if (query.rank_epsilon && !r.ranked.empty() && request.certify) {  // the best one's ε, certified on its own scene
-    Quality_query q;
-    q.critical_mu = false;
-    q.about = r.scene.body.com ? *r.scene.body.com : area_centroid(r.scene.body.outline);
     const Ranked_placement& best = r.ranked.front();
-    const Scene s = placed_scene(r.scene, g.mu, best.edges, best.at);
+    const Scene s = with_fingers(r.scene, g.mu, best.edges, best.at);
     r.best_scene = one_line(write_scene(s));
     const Quality_item e = answer_quality(s, r.best_scene, request, q);
     if (e.status != Status::answered) {
