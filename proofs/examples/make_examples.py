@@ -1833,7 +1833,7 @@ def verify_triples(scene, cert):
         return sum(x * y for x, y in zip(a, b))
 
     def spans(W):
-        if not any(dotv(crossv(a, b), c) != 0 for a, b, c in itertools.combinations(W, 3)):
+        if not any(det3(a, b, c) != 0 for a, b, c in itertools.combinations(W, 3)):
             return False  # rank below 3
         for a, b in itertools.combinations(W, 2):
             u = crossv(a, b)
