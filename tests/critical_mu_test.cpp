@@ -56,6 +56,23 @@ TEST(CriticalMuGolden, TwoFingersTangentOfTheContactLine) {
   EXPECT_EQ(rejected(l, critical_mu_certificate(*b.equilibrium, false)), "");
 }
 
+// Closure's "constant" is the chirotope's (QL-2 §2): the 3×3 minors keep their signs on (μ*, above], while a smaller
+// minor may change sign there. Contact 0 at (-4, -3) with normal (-5, 4): a = (-5, 4, -31), b = W(p, (-4, -5)) =
+// (-4, -5, 8), so its left edge's moment -31 + 8μ vanishes at 31/8, inside the certified (7/2, above]. Every minor
+// constant would not hold there: the checker accepts the engine's interval by the 3×3 minors alone.
+TEST(CriticalMuGolden, ClosureIsConstantWhereTheChirotopeIs) {
+  const char* t = R"({"wrenchkit": 1, "contacts": [{"at": [-4, -3], "normal": [-5, 4]}, {"at": [-2, 4], "normal": [-4, 0]},
+    {"at": [-4, -3], "normal": [-2, 4]}]})";
+  const Critical_answer a = answer(t);
+  ASSERT_TRUE(a.closure.exact());
+  EXPECT_EQ(a.closure.lower, Rational(7) / 2);
+  EXPECT_FALSE(closed(scene_of(t), Rational(7) / 2));
+  EXPECT_TRUE(closed(scene_of(t), Rational(7) / 2 + Rational(1) / 1000000000));
+  ASSERT_TRUE(a.closure.constant && a.closure.above_mu);
+  EXPECT_GE(*a.closure.above_mu, Rational(31) / 8);  // (the smaller minor's root is inside the interval)
+  EXPECT_EQ(rejected(t, critical_mu_certificate(a.closure, true)), "");
+}
+
 TEST(CriticalMuGolden, CollinearFingersNeedAnyFriction) {
   const char* t = R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0]}, {"at": [1, 0], "normal": [-1, 0]}]})";
   const Critical_answer a = answer(t);

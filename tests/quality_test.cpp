@@ -120,6 +120,22 @@ TEST(QualityGolden, OpenGraspIsZero) {
   EXPECT_FALSE(a.closure.holds);
   EXPECT_TRUE(a.exact);
   EXPECT_EQ(a.upper, 0);
+  // The L1 hull decides closure itself (QL-1 §2): flat (frictionless, above), the origin on a facet (two fingers whose
+  // contact line makes tan 1/2 with the normals, at μ = 1/2 exactly: the hull's facet through the origin) and inside
+  // (just above); an open answer carries the closure engine's twist, accepted by the checker, in both modes.
+  const std::string at_half = R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": "1/2"}, {"at": [1, 1], "normal": [-1, 0], "mu": "1/2"}]})";
+  const std::string above = R"({"wrenchkit": 1, "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": "0.5000000001"}, {"at": [1, 1], "normal": [-1, 0], "mu": "0.5000000001"}]})";
+  for (const Mode m : {Mode::exact, Mode::hybrid}) {
+    const Quality_answer b = decide_quality(scene_of(at_half), query(Quality_norm::l1), m);
+    EXPECT_FALSE(b.closure.holds);
+    EXPECT_EQ(b.upper, 0);
+    EXPECT_TRUE(b.refs.empty() && b.boundary.empty());  // (nothing of the hull left in an open answer)
+    EXPECT_EQ(rejected(at_half, b), "");
+    const Quality_answer c = decide_quality(scene_of(above), query(Quality_norm::l1), m);
+    EXPECT_TRUE(c.closure.holds);
+    EXPECT_GT(c.lower, 0);
+    EXPECT_EQ(rejected(above, c), "");
+  }
 }
 
 // Normals of length 5 (3-4-5): unit-normal divides by 5 exactly, so ε² stays rational and is 1/25 of the as-given
@@ -193,6 +209,9 @@ TEST(QualityOracle, RandomGraspsAgainstBruteForce) {
       ASSERT_TRUE(a.exact);
       ASSERT_EQ(a.squared, want) << quality_norm_name(norm) << " " << dump_failure(text, "quality_oracle");
       ASSERT_EQ(a.closure.holds, want > 0) << dump_failure(text, "quality_oracle");
+      // (L1 decides closure by its hull: the closure engine, the other way, must agree)
+      ASSERT_EQ(a.closure.holds, decide_closure(scene, Property::force_closure, Mode::exact, false).holds)
+          << dump_failure(text, "quality_oracle");
       ASSERT_EQ(rejected(text, a), "") << dump_failure(text, "quality_oracle");
       Quality_query uf = query(norm, Force_normalization::unit_force);
       const Quality_answer b = decide_quality(scene, uf, Mode::exact);

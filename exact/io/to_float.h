@@ -11,5 +11,7 @@
 namespace wrenchkit {
 
 std::vector<fl::Bounded_contact> to_bounded(const Scene& scene);
+// One contact: its twin when read_scene made it (has_twin), else converted from the rationals.
+fl::Bounded_contact to_bounded(const Contact& c);
 
 }  // namespace wrenchkit

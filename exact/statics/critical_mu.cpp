@@ -1,15 +1,19 @@
 // [QL-2] The critical friction coefficient: see critical_mu.h and proofs/notes/QL-2-critical-friction.md.
 #include "exact/statics/critical_mu.h"
 
+#include <boost/container/static_vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
 #include <type_traits>
+#include <utility>
 #include <stdexcept>
 #include <vector>
 
 #include "exact/io/input_error.h"
+#include "exact/io/to_float.h"
 #include "exact/numbers/wide_int.h"
 #include "float/bounded.h"
 
@@ -24,15 +28,27 @@ const char* critical_kind_name(Critical_kind k) {
   return "?";
 }
 
+void set_mu(Scene& s, const Scene& scene, const Rational& t, Friction_scaling scaling) {
+  for (std::size_t i = 0; i < s.contacts.size(); ++i) {
+    Contact& c = s.contacts[i];
+    if (c.kind != Contact::Kind::point) continue;
+    if (c.exact_pending) c = exact_contact(c);
+    if (!c.has_twin) c.twin = to_bounded(c), c.has_twin = true;
+    if (scaling == Friction_scaling::common) c.mu = t;
+    else {
+      const Contact& given = scene.contacts[i];
+      c.mu = t * (given.exact_pending ? exact_contact(given).mu : given.mu);
+    }
+    c.mu_given = true;
+    c.twin.mu = to_bounded(c.mu);  // (the twin's point and normal stay: derived once, the μ each time)
+    c.twin.frictional = c.mu != 0;
+    c.has_twin = true;
+  }
+}
+
 Scene at_mu(const Scene& scene, const Rational& t, Friction_scaling scaling) {
   Scene s = scene;
-  for (Contact& c : s.contacts) {
-    if (c.kind != Contact::Kind::point) continue;
-    c = exact_contact(c);
-    c.mu = scaling == Friction_scaling::common ? t : Rational(t * c.mu);
-    c.mu_given = true;
-    c.has_twin = false;  // the twin is derived from the new rationals
-  }
+  set_mu(s, scene, t, scaling);
   return s;
 }
 
@@ -47,20 +63,23 @@ T number(int k) {
   if constexpr (std::is_same_v<T, fl::Bounded>) return fl::Bounded::exact(k);
   else return T(k);
 }
+// (P: std::vector<Rational>, or a Small<T> — a minor's at most four coefficients, without the heap)
 template <class T>
-T eval(const std::vector<T>& p, const T& x) {
+using Small = boost::container::static_vector<T, 4>;
+template <class P, class T>
+T eval(const P& p, const T& x) {
   T v = number<T>(0);
   for (std::size_t k = p.size(); k-- > 0;) v = v * x + p[k];
   return v;
 }
 // Σ_k p_k (c0 + c1 x)^k (1 + x)^(pad − k), pad ≥ deg p: with (c0, c1) = (l, h) and pad = deg p, the polynomial whose
 // positive roots are p's roots in (l, h) (Descartes on an interval); with (M, 1) and pad 0 (no (1 + x) factors), p(M + x).
-template <class T>
-std::vector<T> transform(const std::vector<T>& p, const T& c0, const T& c1, std::size_t pad) {
+template <class P, class T = typename P::value_type>
+P transform(const P& p, const T& c0, const T& c1, std::size_t pad) {
   constexpr std::size_t kMax = 5;  // (degree ≤ 3 here: minors of 3×3 at most)
   const std::size_t n = std::max(pad, p.size() - 1) + 1;
   if (n > kMax - 1) throw std::logic_error("critical mu: a polynomial beyond degree 3");
-  std::vector<T> q(n, number<T>(0));
+  P q(n, number<T>(0));
   std::array<T, kMax> t, r;
   for (std::size_t k = 0; k < p.size(); ++k) {
     std::size_t m = 1;
@@ -88,7 +107,7 @@ std::optional<bool> one_sign(const std::vector<Rational>& q) {
     }
   return true;
 }
-std::optional<bool> one_sign(const std::vector<fl::Bounded>& q) {
+std::optional<bool> one_sign(const Small<fl::Bounded>& q) {
   int last = 0;
   bool variation = false;
   for (const fl::Bounded& c : q) {
@@ -102,8 +121,8 @@ std::optional<bool> one_sign(const std::vector<fl::Bounded>& q) {
   return !variation;
 }
 // Descartes' rule on (l, h): no sign variation, no root there; beyond M: p(M + x) without variation, no root > M.
-template <class T>
-std::optional<bool> no_root_between(const std::vector<T>& p, const T& l, const T& h) {
+template <class P, class T = typename P::value_type>
+std::optional<bool> no_root_between(const P& p, const T& l, const T& h) {
   return one_sign(transform(p, l, h, p.size() - 1));
 }
 bool no_root_beyond(const Poly& p, const Rational& M) { return *one_sign(transform(p, M, Rational(1), 0)); }
@@ -120,8 +139,8 @@ bool constant_on(const Poly& p, const Rational& excluded, const Rational& includ
 // The rationals are made when an exact test first asks for them (the doubles decide most tests): from 128-bit
 // integers for a small scene, else given at once.
 struct Minor {
-  std::vector<fl::Bounded> b;
-  std::vector<wide::i128> small;
+  Small<fl::Bounded> b;
+  Small<wide::i128> small;
   mutable Poly exact;
   const Poly& p() const {
     if (exact.empty())
@@ -131,17 +150,29 @@ struct Minor {
 };
 // Certain: the sign of p(x) (positive, negative) when the doubles tell; Sign::uncertain otherwise.
 Sign sign_at(const Minor& m, const fl::Bounded& x) { return eval(m.b, x).sign(); }
-// The interval's ends as certified doubles, made once for every minor.
+// The interval's ends as certified doubles, made once for every minor: l, h, the included end x0, the width h − l and
+// the powers of R = max(|l|, |h|).
 struct Ends {
-  fl::Bounded l, h, included;
+  fl::Bounded l, h, included, width, r, r2;
   Ends(const Rational& excluded, const Rational& in)
-      : l(to_bounded(std::min(excluded, in))), h(to_bounded(std::max(excluded, in))), included(to_bounded(in)) {}
+      : l(to_bounded(std::min(excluded, in))), h(to_bounded(std::max(excluded, in))), included(to_bounded(in)),
+        width(h - l), r(fl::max(fl::abs(l), fl::abs(h))), r2(r * r) {}
 };
+// [QL-2 §4a] p keeps one sign on the interval, in certified doubles: p(x0) ≠ 0 and |p(x0)| > (h − l)·Σ k|c_k|R^(k−1),
+// which bounds |p(x) − p(x0)| there (the mean value theorem: |p'| ≤ Σ k|c_k|R^(k−1) on [−R, R]) — a few products,
+// where Descartes' transform takes some fifty; else Descartes' rule in certified doubles; else exactly.
 bool constant_on(const Minor& m, const Rational& excluded, const Rational& included, const Ends* filter) {
   if (filter) {
-    const Sign at = sign_at(m, filter->included);
+    const fl::Bounded at_x0 = eval(m.b, filter->included);
+    const Sign at = at_x0.sign();
     if (at == Sign::zero) return false;
     if (at != Sign::uncertain) {
+      const Small<fl::Bounded>& c = m.b;
+      fl::Bounded slope = fl::Bounded::exact(0);  // Σ k|c_k|R^(k−1), degree ≤ 3
+      if (c.size() > 1) slope = slope + fl::abs(c[1]);
+      if (c.size() > 2) slope = slope + fl::Bounded::exact(2) * fl::abs(c[2]) * filter->r;
+      if (c.size() > 3) slope = slope + fl::Bounded::exact(3) * fl::abs(c[3]) * filter->r2;
+      if ((fl::abs(at_x0) - filter->width * slope).sign() == Sign::positive) return true;
       const std::optional<bool> r = no_root_between(m.b, filter->l, filter->h);
       if (r) return *r;
     }
@@ -199,7 +230,7 @@ fl::Bounded bounded_of(wide::i128 x) {  // the nearest double below, and the exa
 }
 
 template <class T>
-std::vector<Minor> minors_in(const std::vector<std::array<std::array<T, 3>, 2>>& F) {
+std::vector<Minor> minors_in(const std::vector<std::array<std::array<T, 3>, 2>>& F, bool maximal) {
   using V = std::array<T, 3>;
   const auto cross = [](const V& x, const V& y) {
     return V{T(x[1] * y[2] - x[2] * y[1]), T(x[2] * y[0] - x[0] * y[2]), T(x[0] * y[1] - x[1] * y[0])};
@@ -210,7 +241,7 @@ std::vector<Minor> minors_in(const std::vector<std::array<std::array<T, 3>, 2>>&
   };
   std::vector<Minor> out;
   const auto keep = [&](std::initializer_list<T> coefficients) {
-    std::vector<T> c(coefficients);
+    Small<T> c(coefficients);
     while (!c.empty() && c.back() == 0) c.pop_back();
     if (c.empty()) return;
     Minor m;
@@ -222,8 +253,8 @@ std::vector<Minor> minors_in(const std::vector<std::array<std::array<T, 3>, 2>>&
     out.push_back(std::move(m));
   };
   for (const auto& f : F)
-    for (int k = 0; k < 3; ++k) keep({f[0][k], f[1][k]});
-  for (std::size_t i = 0; i < F.size(); ++i)
+    for (int k = 0; k < 3 && !maximal; ++k) keep({f[0][k], f[1][k]});
+  for (std::size_t i = 0; i < F.size() && !maximal; ++i)
     for (std::size_t j = i + 1; j < F.size(); ++j) {
       const V c0 = cross(F[i][0], F[j][0]), c2 = cross(F[i][1], F[j][1]), u = cross(F[i][0], F[j][1]), v = cross(F[i][1], F[j][0]);
       for (int k = 0; k < 3; ++k) keep({c0[k], T(u[k] + v[k]), c2[k]});
@@ -236,7 +267,8 @@ std::vector<Minor> minors_in(const std::vector<std::array<std::array<T, 3>, 2>>&
       }
   return out;
 }
-std::vector<Minor> minors(const std::vector<Family>& families) {
+// `maximal`: the 3×3 minors alone (the chirotope: enough for closure, QL-2 §2).
+std::vector<Minor> minors(const std::vector<Family>& families, bool maximal) {
   std::vector<std::array<std::array<Integer, 3>, 2>> F;
   bool small = true;
   const Integer limit = Integer(1) << 30;
@@ -252,12 +284,12 @@ std::vector<Minor> minors(const std::vector<Family>& families) {
         small = small && abs(g[r][k]) <= limit;
       }
   }
-  if (!small) return minors_in(F);
+  if (!small) return minors_in(F, maximal);
   std::vector<std::array<std::array<wide::i128, 3>, 2>> S(F.size());
   for (std::size_t i = 0; i < F.size(); ++i)
     for (int r = 0; r < 2; ++r)
       for (int k = 0; k < 3; ++k) S[i][r][k] = F[i][r][k].get_si();
-  return minors_in(S);
+  return minors_in(S, maximal);
 }
 // Every minor keeps its sign: the one that failed last is tried first (it usually fails again).
 bool all_constant_on(const std::vector<Minor>& P, const Rational& excluded, const Rational& included, bool filter,
@@ -288,11 +320,12 @@ Scene limit_scene(const Scene& scene, Friction_scaling scaling) {
   s.name = scene.name;
   s.load = scene.load;
   s.body = scene.body;
+  s.contacts.reserve(3 * scene.contacts.size());
   const auto add = [&s](const Vec3q& w) {
     Contact c;
     c.kind = Contact::Kind::wrench;
     c.wrench = w;
-    s.contacts.push_back(c);
+    s.contacts.push_back(std::move(c));
   };
   for (const Contact& c : scene.contacts) {
     if (c.kind == Contact::Kind::wrench) {
@@ -315,7 +348,7 @@ Rational two_to(int bits) {
 // Where the search looks first: the minors' positive real roots, approximately, in doubles — each monotone piece of a
 // minor (split at its critical points, up to its Cauchy bound) with a sign change is solved by Newton's steps kept
 // inside a shrinking bracket. Only hints: every answer is still decided and proved exactly, a wrong hint costs time.
-void positive_roots(const std::vector<fl::Bounded>& b, std::vector<double>& out) {
+void positive_roots(const Small<fl::Bounded>& b, std::vector<double>& out) {
   double c[4] = {0, 0, 0, 0};
   std::size_t n = std::min<std::size_t>(b.size(), 4);
   for (std::size_t k = 0; k < n; ++k) c[k] = b[k].v;
@@ -515,25 +548,30 @@ void search(Critical_mu& out, const std::vector<Minor>& P, Rational lo, Rational
 Critical_mu closure_mu(const Scene& scene, Mode mode, const Rational& tol, Friction_scaling scaling) {
   Critical_mu out;
   out.scaling = scaling;
+  Scene work = scene;  // (one copy: each decision sets its μs)
   const auto closed = [&](const Rational& mu, bool certify) {
     ++out.decisions;
-    const Closure_answer a = decide_closure(at_mu(scene, mu, scaling), Property::force_closure, mode, certify);
+    set_mu(work, scene, mu, scaling);
+    const Closure_answer a = decide_closure(work, Property::force_closure, mode, certify);
     if (certify) (a.holds ? out.above_closure : out.below_closure) = a.certificate;
     return a.holds;
   };
-  if (closed(0, true)) {
+  // (certificates only where they are the answer: the search leaves its own evidence on both sides)
+  if (closed(0, false)) {
+    closed(0, true);
     out.kind = Critical_kind::always;
     out.above_mu = Rational(0);
     return out;
   }
-  const Closure_answer limit = decide_closure(limit_scene(scene, scaling), Property::force_closure, mode, true);
+  const Scene limit_cone = limit_scene(scene, scaling);
   ++out.decisions;
-  if (!limit.holds) {  // no μ closes: a twist orthogonal to every b_i
+  if (!decide_closure(limit_cone, Property::force_closure, mode, false).holds) {  // no μ closes: a twist orthogonal to every b_i
     out.kind = Critical_kind::never;
-    out.limit_twist = limit.certificate.twist;
+    out.limit_twist = decide_closure(limit_cone, Property::force_closure, mode, true).certificate.twist;
     return out;
   }
-  const std::vector<Minor> P = minors(families(scene, false, scaling));
+  // (closure holds on (μ*, ∞), of rank 3: the chirotope decides it there, and μ* is a root of a 3×3 minor — QL-2 §2)
+  const std::vector<Minor> P = minors(families(scene, false, scaling), true);
   Rational lo = 0, hi = 1;
   const std::optional<double> hint = narrow(root_hints(P), lo, hi, std::nullopt, closed);
   search(out, P, lo, hi, tol, true, mode != Mode::exact, closed, hint);
@@ -542,9 +580,11 @@ Critical_mu closure_mu(const Scene& scene, Mode mode, const Rational& tol, Frict
 
 Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
   Critical_mu out;
+  Scene work = scene;  // (one copy: each decision sets its μs)
   const auto balanced = [&](const Rational& mu, bool certify) {
     ++out.decisions;
-    const Equilibrium_answer a = decide_equilibrium(at_mu(scene, mu, Friction_scaling::common), mode, certify);
+    set_mu(work, scene, mu, Friction_scaling::common);
+    const Equilibrium_answer a = decide_equilibrium(work, mode, certify);
     if (certify) (a.balanced ? out.above_balance : out.below_balance) = a.certificate;
     return a.balanced;
   };
@@ -560,7 +600,7 @@ Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
     out.limit_twist = limit.certificate.twist;
     return out;
   }
-  const std::vector<Minor> P = minors(families(scene, true, Friction_scaling::common));
+  const std::vector<Minor> P = minors(families(scene, true, Friction_scaling::common), false);
   Rational M = 1;
   for (const Minor& m : P) M = std::max(M, root_bound(m.p()));
   M += 1;  // beyond every minor's roots (complex ones too): the answer there is the answer for every larger μ

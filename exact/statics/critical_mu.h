@@ -62,6 +62,9 @@ struct Critical_answer {
 // The scene with every point contact's μ set to `t` (common; a contact frictionless in the scene included) or
 // multiplied by `t` (proportional).
 Scene at_mu(const Scene& scene, const Rational& t, Friction_scaling scaling);
+// The same in place: `s` is `scene` or a copy of it (contacts in the same order) that set_mu may have changed before;
+// its μs are set from `scene`'s (a search reuses one scene's storage for every μ it decides).
+void set_mu(Scene& s, const Scene& scene, const Rational& t, Friction_scaling scaling);
 inline Scene at_common_mu(const Scene& scene, const Rational& mu) { return at_mu(scene, mu, Friction_scaling::common); }
 
 // Throws Input_error for a scene without point contacts. `tolerance`: the bracket's width relative to its upper end

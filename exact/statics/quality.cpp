@@ -123,7 +123,7 @@ Rational distance_squared(const Plane& p, const Integer& D) {
 
 // The convex hull of integer points with a nonempty interior, by exact incremental insertion: its boundary as
 // triangles of point indices, each oriented outward (the interior behind it), with their planes. Points on the
-// boundary but not extreme may be left out. O(points · facets) predicates. Coordinates C, products W: GMP's integers,
+// boundary but not extreme may be left out; no triangle when the points are flat. O(points · facets) predicates. Coordinates C, products W: GMP's integers,
 // or (every coordinate within 2^20) 64-bit coordinates with 128-bit products — a difference is within 2^21, a normal
 // coordinate within 2^43, an offset within 3·2^63.
 template <class W>
@@ -163,7 +163,7 @@ Hull<W> convex_hull(const std::vector<std::array<C, 3>>& P, bool filter) {
     if (!zero(cross(diff(i1, 0), diff(i, 0)))) i2 = i;
   for (std::size_t i = 1; i2 < n && i < n && i3 == n; ++i)
     if (dot(cross(diff(i1, 0), diff(i2, 0)), diff(i, 0)) != 0) i3 = i;
-  if (i3 == n) throw std::logic_error("quality: the wrench space of a grasp in closure is flat");
+  if (i3 == n) return {};  // flat: no interior
   V inside;  // four times the first tetrahedron's centroid: interior to every later hull
   for (int k = 0; k < 3; ++k) inside[k] = W(P[0][k]) + W(P[i1][k]) + W(P[i2][k]) + W(P[i3][k]);
 
@@ -288,13 +288,17 @@ void inside_check(bool inside) {
 }
 
 // ε̃² of L1: the hull's nearest facet. Fills the boundary (indices into the points), the nearest facet and its
-// normal, and (the query keeping them) every facet's plane.
+// normal, and (the query keeping them) every facet's plane. None when the origin is not interior to the hull (the
+// hull flat, or a facet's offset ≤ 0): the points are positive multiples of the friction-cone edges, so the grasp is
+// then not in force closure (QL-1 §3), and nothing is filled.
 template <class C, class W>
-Rational epsilon_l1_tier(const std::vector<std::array<C, 3>>& P, const Integer& D, Quality_answer& a, bool filter) {
+std::optional<Rational> epsilon_l1_tier(const std::vector<std::array<C, 3>>& P, const Integer& D, Quality_answer& a,
+                                        bool filter) {
   Hull<W> h = convex_hull<C, W>(P, filter);
+  if (h.tri.empty()) return std::nullopt;
   std::size_t best = 0;
   for (std::size_t f = 0; f < h.tri.size(); ++f) {
-    inside_check(h.off[f] > 0);
+    if (!(h.off[f] > 0)) return std::nullopt;
     if (f && nearer(h.off[f], h.n[f], h.off[best], h.n[best], filter)) best = f;
   }
   std::vector<char> on(P.size(), 0);
@@ -369,7 +373,9 @@ Rational epsilon_linf_tier(const std::vector<std::array<C, 3>>& P, const Integer
   return distance_squared(Plane{{big_of(best_d[0]), big_of(best_d[1]), big_of(best_d[2])}, big_of(best_h)}, D);
 }
 
-Rational epsilon_of(const Int_points& P, const std::vector<Generator_ref>& refs, Quality_answer& a, bool filter) {
+// ε̃² of the points (L1: none when the origin is not interior, see epsilon_l1_tier; L∞ is asked only of a closed grasp)
+std::optional<Rational> epsilon_of(const Int_points& P, const std::vector<Generator_ref>& refs, Quality_answer& a,
+                                   bool filter) {
   const bool l1 = a.query.norm == Quality_norm::l1;
   if (P.is_small)
     return l1 ? epsilon_l1_tier<std::int64_t, wide::i128>(P.small, P.D, a, filter)
@@ -574,24 +580,50 @@ void decide_quality_into(const Scene& given, const Quality_query& asked, Mode mo
     if (torque.error == 0) a.query.torque_scale = torque.scale;
   }
   const bool irrational_torque = radius && torque.error != 0;
-  a.closure = decide_closure(scene, Property::force_closure, mode, false);  // (a certificate only when open)
-  if (!a.closure.decided) return;
-  if (!a.closure.holds) a.closure = decide_closure(scene, Property::force_closure, mode, true);
-  if (!a.closure.holds) {  // ε = 0: the closure's twist shows the origin on the boundary or outside
+  const std::size_t edges = generator_count(scene, Reading::friction);
+  // [QL-1 §3] L1: the hull of the scaled edges decides closure itself (the origin interior to it exactly when the
+  // edges positively span the wrench space), so the closure engine runs first only for L∞, in float_only and past the
+  // edge bound (an open grasp has none); after the hull only for an open grasp, for its certificate.
+  const bool hull_decides = query.norm == Quality_norm::l1 && mode != Mode::float_only && edges <= kQualityMaxL1Edges;
+  const auto open = [&](const Quality_query& q) {  // ε = 0: the closure's twist shows the origin on the boundary or outside
+    a = Quality_answer{};
+    a.query = q;
+    a.about = query.about ? *query.about : given.body.com ? *given.body.com : Vec2{};
+    a.closure = decide_closure(scene, Property::force_closure, mode, true);
+    if (a.closure.holds) throw std::logic_error("quality: the hull misses the origin of a grasp in force closure");
     a.exact = true;
-    return;
+  };
+  if (!hull_decides) {
+    a.closure = decide_closure(scene, Property::force_closure, mode, false);  // (a certificate only when open)
+    if (!a.closure.decided) return;
+    if (!a.closure.holds) a.closure = decide_closure(scene, Property::force_closure, mode, true);
+    if (!a.closure.holds) {  // ε = 0: the closure's twist shows the origin on the boundary or outside
+      a.exact = true;
+      return;
+    }
+    if (mode == Mode::float_only) return;  // ε has no float twin: the caller says undecided
+  } else {  // closed unless the hull says otherwise below (open() then replaces the answer)
+    a.closure.mode = mode;
+    a.closure.decided = a.closure.holds = true;
+    a.closure.rank = 3;
+    a.closure.shape = Dual_shape::zero;
+    a.closure.generators = edges;
+    a.closure.predicates = 1;  // (the hull's signs: exact in exact mode, filtered otherwise)
+    a.closure.exact_predicates = mode == Mode::exact;
   }
-  if (mode == Mode::float_only) return;  // ε has no float twin: the caller says undecided
-  if (query.norm == Quality_norm::l1 && a.closure.generators > kQualityMaxL1Edges)
-    throw Input_error("contacts: epsilon (L1) of " + std::to_string(a.closure.generators) + " friction-cone edges, more than " +
+  if (query.norm == Quality_norm::l1 && edges > kQualityMaxL1Edges)
+    throw Input_error("contacts: epsilon (L1) of " + std::to_string(edges) + " friction-cone edges, more than " +
                       std::to_string(kQualityMaxL1Edges) + " (its hull grows as their square); the grasp is in force closure");
   if (query.norm == Quality_norm::linf && scene.contacts.size() > kQualityMaxLinfContacts)
     throw Input_error("contacts: epsilon (Linf) of " + std::to_string(scene.contacts.size()) + " contacts, more than " +
                       std::to_string(kQualityMaxLinfContacts) + " (its candidate facets grow as the cube); use --norm L1");
+  const Quality_query before = a.query;  // (the query as an open grasp's answer states it)
   Int_points fast;
   if (!query.keep_planes && !irrational_torque && fast_points(scene, a.query, a, fast)) {  // rational scales, small numbers
+    const std::optional<Rational> e2 = epsilon_of(fast, a.refs, a, mode != Mode::exact);
+    if (!e2) return open(before);
     a.exact = true;
-    a.squared = epsilon_of(fast, a.refs, a, mode != Mode::exact);
+    a.squared = *e2;
     unsigned bits = 16;
     for (Rational t = query.tolerance; t < 1 && bits < 4096; t *= 2) ++bits;
     for (;; bits *= 2) {
@@ -652,7 +684,12 @@ void decide_quality_into(const Scene& given, const Quality_query& asked, Mode mo
         const Rational& c = a.scales[a.refs[j].contact].scale;
         a.points[j] = {c * fm[j][0], c * fm[j][1], c * ts * fm[j][2]};
       }
-      eps2 = epsilon_of(int_points(a.points), a.refs, a, mode != Mode::exact);
+      const std::optional<Rational> e2 = epsilon_of(int_points(a.points), a.refs, a, mode != Mode::exact);
+      if (!e2) {
+        if (built) throw std::logic_error("quality: the origin left the hull at a finer scale");
+        return open(before);
+      }
+      eps2 = *e2;
       a.exact = exact;
       built = true;
     }

@@ -58,12 +58,12 @@ std::vector<Family> families(const Scene& scene, bool with_load, bool proportion
   return out;
 }
 
-// Every minor (1×1, 2×2, 3×3) of the families' matrix as a polynomial in μ.
-std::vector<Poly> minors(const std::vector<Family>& F) {
+// Every minor (1×1, 2×2, 3×3) of the families' matrix as a polynomial in μ; `maximal`: the 3×3 ones alone.
+std::vector<Poly> minors(const std::vector<Family>& F, bool maximal) {
   std::vector<Poly> out;
   for (const Family& f : F)
-    for (int k = 0; k < 3; ++k) out.push_back({f.a[k], f.b[k]});
-  for (std::size_t i = 0; i < F.size(); ++i)
+    for (int k = 0; k < 3 && !maximal; ++k) out.push_back({f.a[k], f.b[k]});
+  for (std::size_t i = 0; i < F.size() && !maximal; ++i)
     for (std::size_t j = i + 1; j < F.size(); ++j) {
       const V3 c0 = cross(F[i].a, F[j].a), c2 = cross(F[i].b, F[j].b), u = cross(F[i].a, F[j].b), v = cross(F[i].b, F[j].a);
       for (int k = 0; k < 3; ++k) out.push_back({c0[k], u[k] + v[k], c2[k]});
@@ -192,7 +192,7 @@ void check_critical_mu(const Certificate& c, const Scene& scene, const Limits& l
     if (!balance || !cm.constant_beyond)  // the load on the limit cone's boundary: fails beyond every minor's root
       throw Failure{"never: expected \"limit_twist\"" + std::string(balance ? ", or \"below\" with \"constant_beyond\"" : "")};
     check_side(cm.below, "below", false, cm, scene, lim);
-    for (const Poly& p : minors(families(scene, true, false, lim)))
+    for (const Poly& p : minors(families(scene, true, false, lim), false))
       if (!zero(p) && (sgn(value(p, cm.below.mu)) == 0 || !no_root_beyond(p, cm.below.mu)))
         throw Failure{"constant_beyond: a minor of the edges may change sign beyond " + show(cm.below.mu)};
     return;
@@ -215,7 +215,10 @@ void check_critical_mu(const Certificate& c, const Scene& scene, const Limits& l
   if (cm.lower != cm.below.mu && cm.lower != cm.above.mu)
     throw Failure{"critical_mu: " + show(cm.lower) + " is neither below.mu nor above.mu"};
   const bool at_below = cm.lower == cm.below.mu;
-  check_constant(minors(families(scene, balance, cm.proportional, lim)), cm.lower, at_below ? cm.above.mu : cm.below.mu);
+  // (closure: the 3×3 minors — closure holds at above.mu, checked, so one of them is nonzero there and the rank is 3 on
+  // the interval, where the chirotope fixes the oriented matroid; balance: every minor, any rank)
+  check_constant(minors(families(scene, balance, cm.proportional, lim), !balance), cm.lower,
+                 at_below ? cm.above.mu : cm.below.mu);
 }
 
 }  // namespace wrenchkit_checker::detail

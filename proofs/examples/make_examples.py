@@ -51,6 +51,7 @@ SCENES = {
     "two_fingers_offset_own_mu": {"wrenchkit": 1, "name": "the offset fingers with their own friction, mu = 1 and 3/4: closed while both keep more than 2/3 of it", "contacts": [{"at": [-1, 0], "normal": [1, 0], "mu": 1, "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "mu": "3/4", "name": "right finger"}]},
     "two_fingers_offset_moment": {"wrenchkit": 1, "name": "the offset fingers against a pure moment: balanced only above mu = 1/2", "contacts": [{"at": [-1, 0], "normal": [1, 0], "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "name": "right finger"}], "load": {"wrench": [0, 0, 1]}},
     "two_fingers_offset": {"wrenchkit": 1, "name": "two fingers at (-1, 0) and (1, 1), normals (1, 0) and (-1, 0): the contact line at tan 1/2", "contacts": [{"at": [-1, 0], "normal": [1, 0], "name": "left finger"}, {"at": [1, 1], "normal": [-1, 0], "name": "right finger"}]},
+    "three_contacts_chirotope": {"wrenchkit": 1, "name": "three contacts whose closure threshold 7/2 is proved by the 3x3 minors alone (a moment changes sign at 31/8)", "contacts": [{"at": [-4, -3], "normal": [-5, 4]}, {"at": [-2, 4], "normal": [-4, 0]}, {"at": [-4, -3], "normal": [-2, 4]}]},
     "ladder_gravity": {"wrenchkit": 1, "name": "the leaning square (ladder) of theory.md section 9 under its weight", "body": {"outline": [["0", "0"], ["3", "4"], ["-1", "7"], ["-4", "3"]], "com": ["-1/2", "7/2"]}, "contacts": [{"at": ["0", "0"], "normal": ["0", "1"], "name": "floor"}, {"at": ["-4", "3"], "normal": ["1", "0"], "name": "wall"}], "load": {"gravity": 1}},
     "two_fingers_same_way": {"wrenchkit": 1, "name": "two fingers pushing the same way, and a load along it", "contacts": [{"at": [-1, 0], "normal": [1, 0]}, {"at": [1, 1], "normal": [1, 0]}], "load": {"force": [1, 0], "at": [0, 0]}},
     "two_fingers_mu1": {
@@ -429,6 +430,7 @@ CRIT_LADDER = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_
 CRIT_MOMENT = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": {"lower": "1/2", "upper": "1/2"}, "below": {"mu": "1/2", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": false, "twist": ["0", "1", "1"], "reading": {"label": "+", "point": ["-1", "0"]}}}, "above": {"mu": "2/3", "certificate": {"wrenchkit_certificate": 1, "property": "equilibrium", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "3"}, {"contact": 1, "edge": "left", "weight": "3"}]}}, "constant": true}''')
 CRIT_MARGIN = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "scaling": "proportional", "critical_mu": {"lower": "2/3", "upper": "2/3"}, "below": {"mu": "2/3", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": false, "twist": ["0", "1", "1"], "reading": {"label": "+", "point": ["-1", "0"]}}}, "above": {"mu": "1", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "9"}, {"contact": 0, "edge": "right", "weight": "3"}, {"contact": 1, "edge": "left", "weight": "10"}, {"contact": 1, "edge": "right", "weight": "2"}], "independent": [{"contact": 0, "edge": "left"}, {"contact": 0, "edge": "right"}, {"contact": 1, "edge": "left"}]}}, "constant": true}''')
 GRASPIT_SQUARE = json.loads(r'''{"wrenchkit_certificate": 4, "property": "quality", "norm": "L1", "normalize": "unit-normal", "torque_scale": "189812531/268435456", "torque_radius_squared": "2", "torque_scale_error": "1/268435456", "about": ["0", "0"], "epsilon": {"lower": "12148001919/171798691840", "upper": "12148002049/171798691840"}, "scales": [{"scale": "1", "error": "0", "bound": "17/16", "moment_bound": "13/128"}, {"scale": "1", "error": "0", "bound": "17/16", "moment_bound": "13/128"}, {"scale": "1", "error": "0", "bound": "17/16", "moment_bound": "13/128"}, {"scale": "1", "error": "0", "bound": "17/16", "moment_bound": "13/128"}], "boundary": [[0, 1, 4], [2, 0, 4], [1, 3, 5], [4, 1, 5], [3, 2, 5], [2, 4, 5], [0, 2, 6], [2, 3, 6], [3, 1, 7], [6, 3, 7], [1, 0, 7], [0, 6, 7]], "nearest": [2, 0, 4]}''')
+CRIT_CHIROTOPE = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "critical_mu": {"lower": "7/2", "upper": "7/2"}, "below": {"mu": "7/2", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": false, "twist": ["-3", "4", "1"], "reading": {"label": "+", "point": ["-4", "-3"]}}}, "above": {"mu": "4", "certificate": {"wrenchkit_certificate": 1, "property": "force_closure", "holds": true, "combination": [{"contact": 0, "edge": "left", "weight": "116"}, {"contact": 0, "edge": "right", "weight": "460"}, {"contact": 1, "edge": "left", "weight": "615"}, {"contact": 1, "edge": "right", "weight": "41"}], "independent": [{"contact": 0, "edge": "left"}, {"contact": 0, "edge": "right"}, {"contact": 1, "edge": "left"}]}}, "constant": true}''')
 CRIT_NEVER = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "force_closure", "critical_mu": "never", "limit_twist": ["1", "0", "0"]}''')
 CRIT_NEVER_LOAD = json.loads(r'''{"wrenchkit_certificate": 4, "property": "critical_mu", "of": "equilibrium", "critical_mu": "never", "limit_twist": ["1", "0", "0"]}''')
 
@@ -526,6 +528,9 @@ CERTS = [
     ("square_part", "grasp_regions_format_4", "invalid:header|property \"grasp_regions\" is format 5",
      dict(regions_cert(SQ_PAIRS), wrenchkit_certificate=4)),
     ("two_fingers_offset", "critical_mu_half", "valid", CRIT_OFFSET),
+    # closure's constant signs are the 3x3 minors' (contact 0's left edge has moment -31 + 8 mu: zero at 31/8, inside
+    # (7/2, 4], and no 3x3 minor vanishes there)
+    ("three_contacts_chirotope", "critical_mu_chirotope", "valid", CRIT_CHIROTOPE),
     ("ladder_gravity", "critical_mu_closure", "valid", CRIT_LADDER_CLOSURE),
     ("ladder_gravity", "critical_mu_one_seventh", "valid", CRIT_LADDER),
     ("two_fingers_same_way", "critical_mu_never", "valid", CRIT_NEVER),
@@ -1730,12 +1735,12 @@ def verify_critical(scene, cert):
             out.append((load_wrench(scene), (0, 0, 0)))
         return out
 
-    def minors():
+    def minors(maximal):  # every minor, or the 3x3 ones alone (closure: the chirotope, in rank 3)
         F = families()
         cr = lambda u, v: (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])  # noqa: E731
         dt = lambda x, y, z: sum(p * q for p, q in zip(x, cr(y, z)))  # noqa: E731
-        out = [[f[0][k], f[1][k]] for f in F for k in range(3)]
-        for (A, a), (B, b) in itertools.combinations(F, 2):
+        out = [] if maximal else [[f[0][k], f[1][k]] for f in F for k in range(3)]
+        for (A, a), (B, b) in [] if maximal else itertools.combinations(F, 2):
             c0, c2, u, v = cr(A, B), cr(a, b), cr(A, b), cr(a, B)
             out += [[c0[k], u[k] + v[k], c2[k]] for k in range(3)]
         for (A, a), (B, b), (C, c) in itertools.combinations(F, 3):
@@ -1799,7 +1804,7 @@ def verify_critical(scene, cert):
     mu = lower
     far = above if mu == below else below
     l, h = min(mu, far), max(mu, far)
-    return None if all(constant(p, l, h, far) for p in minors()) else "constant"
+    return None if all(constant(p, l, h, far) for p in minors(not balance)) else "constant"
 
 
 def verify_triples(scene, cert):
