@@ -112,6 +112,32 @@ TEST(QualityGolden, TwoFingersUnitForceBracket) {
   EXPECT_EQ(rejected(kTwoFingers, a), "");
 }
 
+// Irrational scales (normals of length √2 on a hexagon, μ = 1/2: unit-force's 1/√(5/2) too): the scaled points at the
+// default tolerance fit 2^61 (the hull in 256-bit integers), at 10⁻⁴⁰ they do not (GMP's integers) — each tier is
+// taken 8 times here (measured when the test was written). The two brackets of the same ε must overlap, the finer inside the
+// coarser's width, both certificates accepted, for both norms and both normalisations, in both modes.
+TEST(QualityGolden, IrrationalScalesAgreeAcrossIntegerTiers) {
+  const std::string t = R"({"wrenchkit": 1, "contacts": [{"at": [4, 0], "normal": [-1, 0], "mu": "1/2"},
+    {"at": [2, 3], "normal": [-1, -1], "mu": "1/2"}, {"at": [-2, 3], "normal": [1, -1], "mu": "1/2"},
+    {"at": [-4, 0], "normal": [1, 0], "mu": "1/2"}, {"at": [-2, -3], "normal": [1, 1], "mu": "1/2"},
+    {"at": [2, -3], "normal": [-1, 1], "mu": "1/2"}]})";
+  for (const Quality_norm norm : {Quality_norm::l1, Quality_norm::linf})
+    for (const Force_normalization f : {Force_normalization::unit_normal, Force_normalization::unit_force})
+      for (const Mode m : {Mode::exact, Mode::hybrid}) {
+        Quality_query coarse = query(norm, f), fine = query(norm, f);
+        fine.tolerance = Rational(1) / Rational(Integer(10) * Integer("1000000000000000000000000000000000000000"));
+        const Quality_answer a = decide_quality(scene_of(t), coarse, m), b = decide_quality(scene_of(t), fine, m);
+        ASSERT_TRUE(a.closure.holds && b.closure.holds);
+        EXPECT_FALSE(a.exact);
+        EXPECT_LE(a.lower, b.upper);
+        EXPECT_LE(b.lower, a.upper);
+        EXPECT_LE(b.upper - b.lower, fine.tolerance * b.lower);
+        EXPECT_LE(a.upper - a.lower, coarse.tolerance * a.lower);
+        EXPECT_EQ(rejected(t, a), "");
+        EXPECT_EQ(rejected(t, b), "");
+      }
+}
+
 // Not in closure (two frictionless fingers): ε = 0, exactly.
 TEST(QualityGolden, OpenGraspIsZero) {
   const Quality_answer a = decide_quality(

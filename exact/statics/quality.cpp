@@ -13,6 +13,9 @@
 #include <type_traits>
 #include <unordered_map>
 
+#include <boost/multiprecision/cpp_int.hpp>
+#include <iterator>
+
 #include "exact/io/input_error.h"
 #include "exact/numbers/wide_int.h"
 #include "float/bounded.h"
@@ -239,21 +242,27 @@ Hull<W> convex_hull(const std::vector<std::array<C, 3>>& P, bool filter) {
 }
 
 // The wrench space's points as integers over one positive denominator D (the hull and the distances scale by D):
-// GMP's integers, and when every coordinate is within 2^20 also 64-bit ones (the small tier: 128-bit products).
+// GMP's integers, and when every coordinate is within 2^20 also 64-bit ones with 128-bit products (the small tier), or
+// within 2^61 with 256-bit products (the medium tier: an irrational scale's 2^−56 steps) — a difference is within
+// 2^62, a normal coordinate within 2^125, an offset or a point's side within 3·2^188, 4·(0's side) within 2^193.
+using I256 = boost::multiprecision::number<
+    boost::multiprecision::cpp_int_backend<256, 256, boost::multiprecision::signed_magnitude, boost::multiprecision::unchecked, void>,
+    boost::multiprecision::et_off>;
 struct Int_points {
   Integer D = 1;
   std::vector<P3> big;
   std::vector<std::array<std::int64_t, 3>> small;
-  bool is_small = false;
+  enum class Tier { small, medium, big } tier = Tier::big;
 };
 Int_points int_points(const std::vector<Vec3q>& pts) {
   Int_points r;
   r.big = integer_points(pts, r.D);
-  const Integer limit = Integer(1) << 20;
-  r.is_small = true;
+  const Integer small = Integer(1) << 20, medium = Integer(1) << 61;
+  Integer top = 0;
   for (const P3& p : r.big)
-    for (const Integer& x : p) r.is_small = r.is_small && abs(x) <= limit;
-  if (r.is_small) {
+    for (const Integer& x : p) top = std::max(top, Integer(abs(x)));
+  r.tier = top <= small ? Int_points::Tier::small : top <= medium ? Int_points::Tier::medium : Int_points::Tier::big;
+  if (r.tier != Int_points::Tier::big) {
     r.small.resize(r.big.size());
     for (std::size_t i = 0; i < r.big.size(); ++i)
       for (int k = 0; k < 3; ++k) r.small[i][k] = r.big[i][k].get_si();
@@ -262,8 +271,21 @@ Int_points int_points(const std::vector<Vec3q>& pts) {
 }
 Integer big_of(const Integer& x) { return x; }
 Integer big_of(wide::i128 x) { return integer_of(x); }
+Integer big_of(const I256& x) {
+  std::vector<std::uint64_t> limbs;
+  boost::multiprecision::export_bits(boost::multiprecision::abs(x), std::back_inserter(limbs), 64, false);
+  Integer r;
+  mpz_import(r.get_mpz_t(), limbs.size(), -1, sizeof(std::uint64_t), 0, 0, limbs.data());
+  return x < 0 ? Integer(-r) : r;
+}
 long double approx(const Integer& x) { return static_cast<long double>(x.get_d()); }
 long double approx(wide::i128 x) { return static_cast<long double>(x); }
+long double approx(const I256& x) {  // (from the limbs, most significant first: within 2^−60 relative)
+  const auto& b = x.backend();
+  long double v = 0;
+  for (std::size_t i = b.size(); i-- > 0;) v = v * 0x1p64L + static_cast<long double>(b.limbs()[i]);
+  return b.sign() ? -v : v;
+}
 
 // (off/|n|)² of plane a below that of plane b (offsets > 0): with `filter`, in long double when the two differ by more
 // than 1e-9 relative (each ratio is within 3e-15 of the true one; an overflow gives NaN or ∞ and falls through:
@@ -377,9 +399,12 @@ Rational epsilon_linf_tier(const std::vector<std::array<C, 3>>& P, const Integer
 std::optional<Rational> epsilon_of(const Int_points& P, const std::vector<Generator_ref>& refs, Quality_answer& a,
                                    bool filter) {
   const bool l1 = a.query.norm == Quality_norm::l1;
-  if (P.is_small)
+  if (P.tier == Int_points::Tier::small)
     return l1 ? epsilon_l1_tier<std::int64_t, wide::i128>(P.small, P.D, a, filter)
               : epsilon_linf_tier<std::int64_t, wide::i128>(P.small, P.D, refs, a, filter);
+  if (P.tier == Int_points::Tier::medium)
+    return l1 ? epsilon_l1_tier<std::int64_t, I256>(P.small, P.D, a, filter)
+              : epsilon_linf_tier<std::int64_t, I256>(P.small, P.D, refs, a, filter);
   return l1 ? epsilon_l1_tier<Integer, Integer>(P.big, P.D, a, filter)
             : epsilon_linf_tier<Integer, Integer>(P.big, P.D, refs, a, filter);
 }
@@ -483,13 +508,14 @@ bool fast_points(const Scene& scene, const Quality_query& q, Quality_answer& a, 
     i128 D = 1;
     for (const Pt& p : pts) D = lcm(D, p.den);
     out.D = big_of(D);
-    out.is_small = true;
+    out.tier = Int_points::Tier::small;
     out.small.resize(pts.size());
-    const i128 limit = i128(1) << 20;
+    const i128 small = i128(1) << 20, medium = i128(1) << 61;
     for (std::size_t j = 0; j < pts.size(); ++j) {
       const i128 f = D / pts[j].den, v[3] = {mul(pts[j].x, f), mul(pts[j].y, f), mul(pts[j].z, f)};
       for (int k = 0; k < 3; ++k) {
-        if (v[k] > limit || v[k] < -limit) return false;
+        if (v[k] > medium || v[k] < -medium) return false;
+        if (v[k] > small || v[k] < -small) out.tier = Int_points::Tier::medium;
         out.small[j][k] = static_cast<std::int64_t>(v[k]);
       }
     }
