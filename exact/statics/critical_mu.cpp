@@ -202,6 +202,7 @@ struct Family {
 };
 std::vector<Family> families(const Scene& scene, bool with_load, Friction_scaling scaling) {
   std::vector<Family> out;
+  out.reserve(2 * scene.contacts.size() + 1);
   for (const Contact& c : scene.contacts) {
     if (c.kind == Contact::Kind::wrench) {
       out.push_back({c.wrench, {0, 0, 0}});
@@ -235,10 +236,6 @@ std::vector<Minor> minors_in(const std::vector<std::array<std::array<T, 3>, 2>>&
   const auto cross = [](const V& x, const V& y) {
     return V{T(x[1] * y[2] - x[2] * y[1]), T(x[2] * y[0] - x[0] * y[2]), T(x[0] * y[1] - x[1] * y[0])};
   };
-  const auto det = [&cross](const V& x, const V& y, const V& z) {
-    const V c = cross(y, z);
-    return T(x[0] * c[0] + x[1] * c[1] + x[2] * c[2]);
-  };
   std::vector<Minor> out;
   const auto keep = [&](std::initializer_list<T> coefficients) {
     Small<T> c(coefficients);
@@ -259,11 +256,21 @@ std::vector<Minor> minors_in(const std::vector<std::array<std::array<T, 3>, 2>>&
       const V c0 = cross(F[i][0], F[j][0]), c2 = cross(F[i][1], F[j][1]), u = cross(F[i][0], F[j][1]), v = cross(F[i][1], F[j][0]);
       for (int k = 0; k < 3; ++k) keep({c0[k], T(u[k] + v[k]), c2[k]});
     }
-  for (std::size_t i = 0; i < F.size(); ++i)
-    for (std::size_t j = i + 1; j < F.size(); ++j)
-      for (std::size_t k = j + 1; k < F.size(); ++k) {
-        const V &A = F[i][0], &B = F[j][0], &C = F[k][0], &a = F[i][1], &b = F[j][1], &c = F[k][1];
-        keep({det(A, B, C), T(det(a, B, C) + det(A, b, C) + det(A, B, c)), T(det(A, b, c) + det(a, B, c) + det(a, b, C)), det(a, b, c)});
+  // det(x, y, z) = x · (y × z): the four cross products of each pair (j, k) once, then eight dot products per triple
+  const std::size_t n = F.size();
+  std::vector<std::array<V, 4>> pair(n * n);  // [BC, bC, Bc, bc] of (j, k), at j·n + k
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t k = j + 1; k < n; ++k)
+      pair[j * n + k] = {cross(F[j][0], F[k][0]), cross(F[j][1], F[k][0]), cross(F[j][0], F[k][1]), cross(F[j][1], F[k][1])};
+  const auto dot = [](const V& x, const V& y) { return T(x[0] * y[0] + x[1] * y[1] + x[2] * y[2]); };
+  out.reserve(out.size() + n * (n - 1) * (n - 2) / 6);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      for (std::size_t k = j + 1; k < n; ++k) {
+        const V &A = F[i][0], &a = F[i][1];
+        const auto& [BC, bC, Bc, bc] = pair[j * n + k];
+        // det(A,B,C), det(a,B,C) + det(A,b,C) + det(A,B,c), det(A,b,c) + det(a,B,c) + det(a,b,C), det(a,b,c)
+        keep({dot(A, BC), T(dot(a, BC) + dot(A, bC) + dot(A, Bc)), T(dot(A, bc) + dot(a, Bc) + dot(a, bC)), dot(a, bc)});
       }
   return out;
 }
@@ -410,9 +417,11 @@ std::vector<double> root_hints(const std::vector<Minor>& P) {
 // between consecutive hints (one decision per halving), fails at the last gap point below a hint (or at 0) and holds
 // at the next gap point; the hint between them is returned (0 when it holds below the first hint). `top`: a point known to hold (balance's bound), else the point beyond
 // the last hint is decided, and past it, when it fails (a root the doubles missed), doubling takes over (no hint).
-template <class Holds>
+// `never()`, asked once before the doubling (closure: the limit cone, whose decision the common case — closed beyond
+// the last hint — does not need): true stops the search (`stopped`).
+template <class Holds, class Never>
 std::optional<double> narrow(const std::vector<double>& r, Rational& lo, Rational& hi, const std::optional<Rational>& top,
-                             Holds holds) {
+                             Holds holds, Never never, bool& stopped) {
   const std::size_t K = r.size();
   const auto gap = [&](std::size_t j) -> Rational {  // a simple rational between r[j−1] and r[j] (j = K: beyond)
     if (j == K) return top ? *top : Rational(std::ceil(2 * r[K - 1] + 1));
@@ -437,6 +446,7 @@ std::optional<double> narrow(const std::vector<double>& r, Rational& lo, Rationa
     lo = hi;
   }
   if (top) return hi = *top, std::nullopt;
+  if ((stopped = never())) return std::nullopt;
   hi = lo == 0 ? Rational(1) : Rational(lo * 2);
   for (int guard = 0; !holds(hi, false); ++guard) {
     if (guard > 100000) throw std::logic_error("critical mu: the property never holds although the limit cone does");
@@ -563,17 +573,20 @@ Critical_mu closure_mu(const Scene& scene, Mode mode, const Rational& tol, Frict
     out.above_mu = Rational(0);
     return out;
   }
-  const Scene limit_cone = limit_scene(scene, scaling);
-  ++out.decisions;
-  if (!decide_closure(limit_cone, Property::force_closure, mode, false).holds) {  // no μ closes: a twist orthogonal to every b_i
+  const auto never = [&] {  // no μ closes when the limit cone is not all of R³: a twist orthogonal to every b_i
+    const Scene limit_cone = limit_scene(scene, scaling);
+    ++out.decisions;
+    if (decide_closure(limit_cone, Property::force_closure, mode, false).holds) return false;
     out.kind = Critical_kind::never;
     out.limit_twist = decide_closure(limit_cone, Property::force_closure, mode, true).certificate.twist;
-    return out;
-  }
+    return true;
+  };
   // (closure holds on (μ*, ∞), of rank 3: the chirotope decides it there, and μ* is a root of a 3×3 minor — QL-2 §2)
   const std::vector<Minor> P = minors(families(scene, false, scaling), true);
   Rational lo = 0, hi = 1;
-  const std::optional<double> hint = narrow(root_hints(P), lo, hi, std::nullopt, closed);
+  bool is_never = false;
+  const std::optional<double> hint = narrow(root_hints(P), lo, hi, std::nullopt, closed, never, is_never);
+  if (is_never) return out;
   search(out, P, lo, hi, tol, true, mode != Mode::exact, closed, hint);
   return out;
 }
@@ -615,7 +628,8 @@ Critical_mu balance_mu(const Scene& scene, Mode mode, const Rational& tol) {
   Rational lo = 0, hi = 1;
   std::vector<double> r = root_hints(P);
   while (!r.empty() && r.back() >= M.get_d()) r.pop_back();  // (the bound is beyond every root: a hint past it is off)
-  const std::optional<double> hint = narrow(r, lo, hi, M, balanced);
+  bool stopped = false;  // (balance has its bound M: no doubling)
+  const std::optional<double> hint = narrow(r, lo, hi, M, balanced, [] { return false; }, stopped);
   search(out, P, lo, hi, tol, false, mode != Mode::exact, balanced, hint);
   return out;
 }
