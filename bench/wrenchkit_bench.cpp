@@ -925,6 +925,34 @@ void register_push() {
     st.counters["twin_wrong"] = static_cast<double>(twin_wrong);
     st.counters["hybrid_wrong"] = static_cast<double>(hybrid_wrong);
   })->Unit(benchmark::kMillisecond)->Iterations(1);
+  // the contact mode beside a motion-cone edge (the stress family push_motion_cone: the velocity 10^-k off the edge,
+  // k = 3, 6, …, 18, 20 supports each side): the naive double search (a guess) against the certified mode with its
+  // certificate checked (the pipeline: never wrong, or the run fails); the time is the certified answers'
+  benchmark::RegisterBenchmark("push/motion_cone/naive_and_certified", [](benchmark::State& st) {
+    std::size_t tried = 0, naive_wrong = 0, certified_wrong = 0;
+    const int seeds = g_smoke ? 2 : 20;
+    for (auto _ : st) {
+      tried = naive_wrong = certified_wrong = 0;
+      for (const double eps : {1e-3, 1e-6, 1e-9, 1e-12, 1e-15, 1e-18})
+        for (int seed = 1; seed <= 2 * seeds; ++seed) {
+          const stress::Family_scene k = stress::make_scene("push_motion_cone", eps, static_cast<std::uint64_t>(seed));
+          const Push_mode truth = k.above ? Push_mode::slides_left : Push_mode::sticks;
+          Push_query q;
+          q.contact = true;
+          const Push_item r = answer_push(k.text, "push_motion_cone", Request{}, q);
+          ++tried;
+          certified_wrong += r.status != Status::answered || !r.push.contact || r.push.contact->mode != truth;
+          naive_wrong += std::string(stress::naive_push_contact(read_scene(k.text, Input_limits{}))) != push_mode_name(truth);
+        }
+    }
+    if (certified_wrong) {
+      std::fprintf(stderr, "push/motion_cone: the certified contact mode was wrong or failed\n");
+      g_failed = true;
+    }
+    st.counters["pushes"] = static_cast<double>(tried);
+    st.counters["naive_wrong_per_1000"] = tried ? 1000.0 * static_cast<double>(naive_wrong) / static_cast<double>(tried) : 0;
+    st.counters["certified_wrong"] = static_cast<double>(certified_wrong);
+  })->Unit(benchmark::kMillisecond)->Iterations(1);
 }
 
 int main(int argc, char** argv) {

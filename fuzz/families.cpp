@@ -26,6 +26,7 @@ const char* question_name(Question q) {
     case Question::hold: return "hold";
     case Question::stick_slide_region: return "stick_slide_region";
     case Question::push: return "push";
+    case Question::push_contact: return "push_contact";
   }
   return "?";
 }

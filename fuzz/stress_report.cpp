@@ -50,16 +50,17 @@ const std::vector<double> kEpsilons = {1e-2,  1e-4,  1e-6,  1e-8,  1e-10, 1e-12,
 constexpr int kSides = 16;  // polygonal bounds of the exact stick/slide route (1/λ − 1 ≈ 2 %)
 
 // What a row measures: the family's verdict (closure / equilibrium), its moment labels, or stick/slide.
-enum class Measure { verdict, labels, motion, motion_over, hold, push };
+enum class Measure { verdict, labels, motion, motion_over, hold, push, push_contact };
 const char* check_name(Measure c) {
   return c == Measure::verdict ? "verdict" : c == Measure::labels ? "labels" : c == Measure::motion ? "stick/slide"
                                            : c == Measure::motion_over ? "stick/slide over F"
-                                           : c == Measure::hold ? "hold" : "rotation (push)";
+                                           : c == Measure::hold ? "hold"
+                                           : c == Measure::push ? "rotation (push)" : "contact mode (push)";
 }
 // The questions without moment labels (a support's, or the support's and the contacts' together).
 bool is_motion(Question q) {
   return q == Question::stick_slide || q == Question::stick_slide_over || q == Question::hold ||
-         q == Question::stick_slide_region || q == Question::push;
+         q == Question::stick_slide_region || q == Question::push || q == Question::push_contact;
 }
 
 struct Row {
@@ -104,6 +105,7 @@ long cases_for(const Family& f, long cases) {
   if (n == "unknown_support") return std::max(1L, cases / 20);
   if (n == "fixture_pin") return std::max(1L, cases / 10);
   if (n == "region_support" || n == "region_legs") return std::max(1L, cases / 20);
+  if (n == "push_motion_cone") return std::max(1L, cases / 10);
   return cases;
 }
 
@@ -363,6 +365,43 @@ void run_push_case(const families::Case& k, std::uint64_t seed, long index, Row&
   if (wrong(exact) || !why_exact.empty()) ++row.exact_wrong, report_wrong("push exact", k, seed, index, why_exact);
 }
 
+// push --contact (push_motion_cone): each mode through the pipeline (the certificate checked there: a rejected one,
+// or any error, is a wrong answer). The contact mode has no float twin: in every mode it is the certified bracket
+// search of PU-2 (exact signs of interval sums), so the three columns measure one method; naive: the double search
+// of testing/stress_families.h (a guess). The truth by construction: slides left iff `above`, else sticks.
+void run_push_contact_case(const families::Case& k, std::uint64_t seed, long index, Row& row) {
+  const Scene scene = read_scene(k.text, Input_limits{});
+  Push_query query;
+  query.contact = true;
+  // (why: set when the pipeline failed — anything but an answer or an honest "undecided")
+  const auto answer_in = [&](Mode mode, std::string& why) {
+    Request request;
+    request.mode = mode;
+    const Push_item item = answer_push(k.text, "push_motion_cone", request, query);
+    if (item.status != Status::answered && item.status != Status::undecided) why = item.message;
+    return item.status == Status::answered && item.push.contact ? item.push.contact->mode : Push_mode::undecided;
+  };
+  std::string why_exact, why_twin, why_hybrid;
+  Push_mode exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });
+  Push_mode twin = timed(row.t_twin, [&] { return answer_in(Mode::float_only, why_twin); });
+  Push_mode hybrid = timed(row.t_hybrid, [&] { return answer_in(Mode::hybrid, why_hybrid); });
+  const std::string naive = timed(row.t_naive, [&] { return std::string(stress::naive_push_contact(scene)); });
+  const auto flip = [](Push_mode m) { return m == Push_mode::sticks ? Push_mode::slides_left : Push_mode::sticks; };
+  if (twin != Push_mode::undecided && fault("twin")) twin = flip(twin);
+  if (hybrid != Push_mode::undecided && fault("hybrid")) hybrid = flip(hybrid);
+  if (exact != Push_mode::undecided && fault("exact")) exact = flip(exact);
+  const Push_mode truth = k.above ? Push_mode::slides_left : Push_mode::sticks;
+  ++row.cases;
+  row.naive_wrong += naive != push_mode_name(truth);
+  row.twin_undecided += twin == Push_mode::undecided;
+  row.hybrid_undecided += hybrid == Push_mode::undecided;
+  row.exact_undecided += exact == Push_mode::undecided;
+  const auto wrong = [&](Push_mode m) { return m != Push_mode::undecided && m != truth; };
+  if (wrong(twin) || !why_twin.empty()) ++row.twin_wrong, report_wrong("push contact twin", k, seed, index, why_twin);
+  if (wrong(hybrid) || !why_hybrid.empty()) ++row.hybrid_wrong, report_wrong("push contact hybrid", k, seed, index, why_hybrid);
+  if (wrong(exact) || !why_exact.empty()) ++row.exact_wrong, report_wrong("push contact exact", k, seed, index, why_exact);
+}
+
 // stick/slide on a support with regions (region_support): each mode through the pipeline, the certificate checked
 // by the independent checker there (a rejected one, or any error, is a wrong answer); the truth is the side, by
 // construction. float has no twin of regions (always undecided); naive: the double search without bounds.
@@ -534,6 +573,8 @@ const char* cross_check(const Family& f, Measure c) {
   const std::string n = f.name;
   if (c == Measure::motion) return "the answer by construction (p(q) on LS, load p(q)·(1 ± 10^-k))";
   if (c == Measure::push) return "the rotation by construction (the velocity's vote) + the checker (exact's certificate)";
+  if (c == Measure::push_contact)
+    return "the mode by construction (the force turns with the velocity past the motion-cone edge) + the checker";
   if (c == Measure::motion_over)
     return "the answers left possible by construction + the checker (every certificate) + exact = hybrid";
   if (c == Measure::labels)
@@ -566,6 +607,7 @@ std::vector<Measure> checks_of(const Family& f) {
   if (f.question == Question::stick_slide_over) return {Measure::motion_over};
   if (f.question == Question::hold) return {Measure::hold};
   if (f.question == Question::push) return {Measure::push};
+  if (f.question == Question::push_contact) return {Measure::push_contact};
   return {Measure::verdict, Measure::labels};
 }
 
@@ -817,6 +859,7 @@ int main(int argc, char** argv) {
                       : fam.question == Question::stick_slide_over ? Measure::motion_over
                       : fam.question == Question::hold             ? Measure::hold
                       : fam.question == Question::push             ? Measure::push
+                      : fam.question == Question::push_contact     ? Measure::push_contact
                                                                    : Measure::verdict;
       labels.check = Measure::labels;
       for (long c = 0; c < n; ++c) {
@@ -825,6 +868,7 @@ int main(int argc, char** argv) {
         else if (fam.question == Question::stick_slide_over) run_motion_over_case(k, seed, c, verdict);
         else if (fam.question == Question::hold) run_hold_case(k, seed, c, verdict);
         else if (fam.question == Question::push) run_push_case(k, seed, c, verdict);
+        else if (fam.question == Question::push_contact) run_push_contact_case(k, seed, c, verdict);
         else if (fam.question == Question::stick_slide_region) run_region_case(k, seed, c, verdict);
         else run_contact_case(k, seed, c, verdict, labels);
       }

@@ -2,6 +2,8 @@
 #include "testing/stress_families.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -912,6 +914,12 @@ const std::vector<Family>& report_only_families() {
        "c with its normal along p → c and μ = 1/2 (the edges vote apart), its velocity turned by ±ε off p → c: it turns "
        "ccw iff above (the velocity decides, Mason's voting theorem)",
        Question::push, true, true},
+      {"push_motion_cone",
+       "push --contact: push_near_tie's support, the pusher's normal n and μ = 1/2 chosen so that the left friction-cone "
+       "edge n + μ·rot90 n points from p at the centre of friction c (the translation along it has its force exactly "
+       "on that edge: a motion-cone edge), its velocity turned by ±ε off p → c: it slides left iff above (turned ccw: "
+       "the force turns past the edge), else it sticks",
+       Question::push_contact, true, true},
       {"region_support",
        "a support region (rectangle or triangle, maybe a hole, uniform or linear pressure, maybe a point); load "
        "p*·(1 ± ε) with p* the exact boundary load of a translation along a Pythagorean direction: slides iff above",
@@ -1004,6 +1012,69 @@ Family_scene push_near_tie(const Family& fam, double eps, Rng& r) {
   return out;
 }
 
+// Family "push_motion_cone" (push --contact, issue 33). push_near_tie's support and pusher point; d = c − p. With
+// μ = 1/2 and n = (dx + dy/2, dy − dx/2), the left edge n + μ·rot90 n = (5/4)·d points at c: the translation along d
+// has its force D·d̂ through c and p, on that edge — its velocity d is on an edge of the motion cone. The velocity
+// d + s·10^-k·rot90(d): turned ccw (s = 1, `above`) the sticking candidate's force turns ccw past the left edge (the
+// force turns with the velocity, PU-2 §5): it slides left; turned cw the force is inside the cone: it sticks.
+Family_scene push_motion_cone(const Family& fam, double eps, Rng& r) {
+  const int k = decimal_exponent(eps);
+  Family_scene out = known_side(fam, eps, r);
+  const int n = r.integer(3, 8);
+  std::string points;
+  Rational mx = 0, my = 0, d = 0;
+  for (int i = 0; i < n; ++i) {
+    const Rational x = short_decimal(r, -2000, 2000, 3), y = short_decimal(r, -2000, 2000, 3);
+    const Rational f = short_decimal(r, 100, 900, 2), mu = short_decimal(r, 10, 90, 2);
+    mx += mu * f * x, my += mu * f * y, d += mu * f;
+    points += std::string(i ? ", " : "") + "{\"at\": [" + exact_text(x) + ", " + exact_text(y) + "], \"force\": " +
+              exact_text(f) + ", \"mu\": " + exact_text(mu) + "}";
+  }
+  const Rational px = short_decimal(r, -4000, 4000, 3), py = short_decimal(r, -4000, -2500, 3);
+  const Rational dx = mx / d - px, dy = my / d - py;
+  const Rational nx = dx + dy / 2, ny = dy - dx / 2;
+  const Rational e = Rational(out.above ? 1 : -1) * Rational(Integer(1), power_of_ten(k));
+  const Rational vx = dx - e * dy, vy = dy + e * dx;  // d + s ε rot90(d)
+  out.text = "{\"wrenchkit\": 1, \"name\": \"push_motion_cone\", \"support\": {\"points\": [" + points +
+             "]}, \"pusher\": {\"at\": [" + exact_text(px) + ", " + exact_text(py) + "], \"normal\": [" + exact_text(nx) +
+             ", " + exact_text(ny) + "], \"mu\": \"1/2\", \"velocity\": [" + exact_text(vx) + ", " + exact_text(vy) + "]}}";
+  return out;
+}
+
+const char* naive_push_contact(const Scene& scene) {
+  const Support& s = *scene.support;
+  const Pusher& ps = *scene.pusher;
+  const double px = ps.contact.at.x.get_d(), py = ps.contact.at.y.get_d(), nx = ps.contact.normal.x.get_d(),
+               ny = ps.contact.normal.y.get_d(), mu = ps.contact.mu.get_d(), vx = ps.velocity.x.get_d(),
+               vy = ps.velocity.y.get_d();
+  std::vector<std::array<double, 3>> pts;  // r − p, ρ
+  for (const Support_point& q : s.points)
+    pts.push_back({q.at.x.get_d() - px, q.at.y.get_d() - py, s.mu_of(q).get_d() * q.force->get_d()});
+  // the load's moment about p, and its force, for the twist v + ω·rotation about p
+  const auto load = [&](double w, double& fx, double& fy) {
+    double m = 0;
+    fx = fy = 0;
+    for (const auto& [dx, dy, rho] : pts) {
+      const double ux = vx - w * dy, uy = vy + w * dx, len = std::sqrt(ux * ux + uy * uy);
+      if (len == 0) continue;
+      m += rho * (dx * uy - dy * ux) / len, fx += rho * ux / len, fy += rho * uy / len;
+    }
+    return m;
+  };
+  double lo = -1, hi = 1, fx = 0, fy = 0;
+  while (load(lo, fx, fy) > 0 && lo > -1e300) lo *= 2;
+  while (load(hi, fx, fy) < 0 && hi < 1e300) hi *= 2;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = (lo + hi) / 2;
+    (load(mid, fx, fy) < 0 ? lo : hi) = mid;
+  }
+  load((lo + hi) / 2, fx, fy);
+  const double lx = nx - mu * ny, ly = ny + mu * nx, rx = nx + mu * ny, ry = ny - mu * nx;  // n ± μ rot90 n
+  const double right = rx * fy - ry * fx, left = fx * ly - fy * lx;  // e_R × F, F × e_L
+  if (right > 0 && left > 0) return "sticks";
+  return left <= right ? "slides left" : "slides right";
+}
+
 std::string fixture_text(Rng& r, int contacts, int points, double load) {
   const auto d3 = [](double v) {  // 3 decimals (printf rounds correctly: the same text everywhere)
     char b[32];
@@ -1058,6 +1129,7 @@ Family_scene make_scene(const Family& family, double epsilon, Rng& rng) {
   if (name == "unknown_support") return unknown_support(family, epsilon, rng);
   if (name == "fixture_pin") return fixture_pin(family, epsilon, rng);
   if (name == "push_near_tie") return push_near_tie(family, epsilon, rng);
+  if (name == "push_motion_cone") return push_motion_cone(family, epsilon, rng);
   if (name == "region_support" || name == "region_legs") return region_support(family, epsilon, rng);
   if (name == "long_rational" || name == "rational_rotation" || name == "huge_scale" || name == "tiny_scale" ||
       name == "beyond_double" || name == "many_contacts")

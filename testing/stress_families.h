@@ -36,6 +36,10 @@
 #include <string_view>
 #include <vector>
 
+namespace wrenchkit {
+struct Scene;
+}
+
 namespace wrenchkit::stress {
 
 // A point contact as the doubles a family chose; `mu_text` (an exact fraction) is written instead of
@@ -59,7 +63,7 @@ struct Gravity_spec {
 // `known` hold scene holds iff not `above`.
 // stick_slide_region: does the load stick or slide on a support with regions (continuous pressure) [RG-1]?
 enum class Question { force_closure, form_closure, equilibrium, all, stick_slide, stick_slide_over, hold,
-                      stick_slide_region, push };
+                      stick_slide_region, push, push_contact };
 
 // stick_slide_over: the answers a scene's construction leaves possible (a bit set).
 enum Motion_answer : unsigned { answer_sticks = 1, answer_slides = 2, answer_depends = 4 };
@@ -88,7 +92,9 @@ const std::vector<Family>& families();
 // 4–8 points, the four-legged table and the dinner plate, loads 10^-k from the thresholds), "fixture_pin"
 // (hold: a frictionless pin pushing through the centre of friction of a symmetric support, the push
 // μW·(1 ± 10^-k): holds iff below), "push_near_tie" (push: the pusher's velocity 10^-k beside the line to the
-// centre of friction, the cone's edges apart: it turns ccw iff above).
+// centre of friction, the cone's edges apart: it turns ccw iff above), "push_motion_cone" (push --contact: the
+// pusher's velocity 10^-k beside a motion-cone edge — the left friction-cone edge's line through the centre of
+// friction —: it slides left iff above, else it sticks).
 const std::vector<Family>& report_only_families();
 const Family* find_family(std::string_view name);  // either list; nullptr when unknown
 
@@ -150,5 +156,11 @@ std::string number_text(double x);
 // What naive code reads from a number's text: strtod, and "p/q" as strtod(p)/strtod(q) (quotes
 // allowed). Out of the double range: ±inf or 0, as strtod gives.
 double naive_double(std::string_view text);
+
+// [PU-2] The contact mode as naive double code finds it, for a scene with a pusher and a support of points with every
+// force given: the numbers' nearest doubles, ω* by bisection of the load's moment about the pusher (200 halvings in
+// raw doubles), the load's force there against the friction cone's edges by raw double cross products. A guess
+// (no error bound): "sticks", "slides left" or "slides right" (the nearer side when outside both edges' half-planes).
+const char* naive_push_contact(const Scene& scene);
 
 }  // namespace wrenchkit::stress

@@ -172,6 +172,12 @@ TEST(StressFamilies, KnownFamiliesLandOnTheirSideForEveryEpsilon) {
           EXPECT_EQ(decide_equilibrium(scene_of(s.text)).balanced, s.above) << f.name << " " << eps << "\n" << s.text;
           continue;
         }
+        if (f.question == stress::Question::push_contact) {  // slides left iff above, else sticks (PU-2 §5)
+          const Scene sc = scene_of(s.text);
+          const Push_contact c = push_contact_mode(Support_model(sc), *sc.pusher, Rational(1, 1000000000000));
+          EXPECT_EQ(c.mode, s.above ? Push_mode::slides_left : Push_mode::sticks) << f.name << " " << eps << "\n" << s.text;
+          continue;
+        }
         if (f.question == stress::Question::push) {  // ccw iff above, by the velocity's vote (PU-1)
           const Scene sc = scene_of(s.text);
           const Rotation r = decide_push(Support_model(sc), *sc.pusher).rotation;
