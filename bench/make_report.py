@@ -541,11 +541,17 @@ def main():
                   "(`--contact`: sticking; sliding, with the body's slip and rate, PU-2 §5–6) and the float twin. The "
                   "near-tie family: the pusher's velocity 10^-k off the line to the centre of friction (k = 9 … 18, both "
                   "sides, 50 supports): how often a naive double vote is wrong, how often the twin abstains, and the "
-                  "hybrid's errors (a wrong answer fails the run).\n")
+                  "hybrid's errors (a wrong answer fails the run). The motion-cone family (the stress family "
+                  "push_motion_cone): the pusher's velocity 10^-k beside a motion-cone edge (k = 3, 6, …, 18, 20 "
+                  "supports each side): how often the naive double contact-mode search is wrong, and the certified "
+                  "mode's errors with its certificate checked (a wrong answer fails the run).\n")
         md.append("| question | time per query | answer |\n|---|---|---|")
         for k in sorted(pu):
             b = bench[k]
-            if "naive_wrong_per_1000" in b:
+            if "certified_wrong" in b:
+                ans = "naive double contact mode wrong on %.0f of 1000, certified wrong %d" % (
+                    b["naive_wrong_per_1000"], int(b["certified_wrong"]))
+            elif "naive_wrong_per_1000" in b:
                 ans = "naive double vote wrong on %.0f of 1000, twin uncertain on %.0f of 1000, hybrid wrong %d" % (
                     b["naive_wrong_per_1000"], b.get("twin_uncertain_per_1000", 0), int(b.get("hybrid_wrong", 0)))
             else:

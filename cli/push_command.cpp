@@ -63,6 +63,10 @@ void write_push(Json_writer& w, const Push_item& r) {
       // the body moves with the pusher: its twist (vx + ω py, vy − ω px, ω) for ω in the bracket
       w.key("omega").array().rational(c.omega_lo).rational(c.omega_hi).end_array();
       write_approx(w, "omega", {c.omega_lo, c.omega_hi});
+      if (c.pivot) {  // sticking about that support point (PU-2 §7): ω exact, a force of its facet inside the cone
+        w.member("pivot", *c.pivot);
+        w.key("force").array().rational(c.force->x).rational(c.force->y).end_array();
+      }
     }
     if ((c.mode == Push_mode::slides_left || c.mode == Push_mode::slides_right)) {
       // the body's velocity at the pusher v + slip·rot90(n), its rate ω, both certified brackets (PU-2 §5)
@@ -111,7 +115,12 @@ std::string push_human(const Push_item& r, const std::string& source) {
     s << "contact: " << push_mode_name(c.mode);
     if (c.mode == Push_mode::sticks || c.mode == Push_mode::impending) {
       s << (c.mode == Push_mode::sticks ? " — the body moves with the pusher" : " — the force on a cone edge exactly");
-      if (c.omega_lo == c.omega_hi) {
+      if (c.pivot) {
+        const Support_point& sp = r.scene.support->points[*c.pivot];
+        s << ", turning at " << number_text(c.omega_lo) << " about the support point " << *c.pivot << " at "
+          << vec_text(sp.at) << " (a pivot: a facet of the limit surface; the pusher's force may be along "
+          << vec_text(*c.force) << ")\n";
+      } else if (c.omega_lo == c.omega_hi) {
         s << ", translating along the pusher's velocity (no rotation)\n";
       } else {
         s << ", turning at a rate in [" << decimal_text(c.omega_lo, 10) << ", " << decimal_text(c.omega_hi, 10)

@@ -6,12 +6,14 @@
 // never a contradiction; every certificate accepted by the independent checker, tampered ones refused.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "exact/certificates/certificates.h"
 #include "exact/io/input_error.h"
@@ -24,6 +26,7 @@
 #include "float/limit_surface_twin.h"
 #include "fuzz/scene_checks.h"
 #include "proofs/checker/checker.h"
+#include "tests/test_support.h"
 
 namespace wrenchkit {
 namespace {
@@ -36,6 +39,17 @@ std::string square(const std::string& pusher, const std::string& support = "") {
             {"at": [1, 1], "force": 1}, {"at": [-1, 1], "force": 1}]})"
                           : support) +
          R"(, "pusher": )" + pusher + "}";
+}
+
+// The certificate with `from` replaced by `to` is rejected by the checker for `reason`.
+void refused(const std::string& scene, std::string cert, const std::string& from, const std::string& to,
+             const std::string& reason) {
+  const std::size_t at = cert.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " in " << cert;
+  cert.replace(at, from.size(), to);
+  const wrenchkit_checker::Result v = wrenchkit_checker::check(scene, cert);
+  EXPECT_EQ(v.outcome, wrenchkit_checker::Outcome::rejected) << cert;
+  EXPECT_NE(v.message.find(reason), std::string::npos) << v.message;
 }
 
 Push_item push(const std::string& text) { return answer_push(text, "test", Request{}); }
@@ -282,15 +296,6 @@ TEST(PushContact, GoldenModesAndTamperedClaims) {
                                   Request{}, q);
   EXPECT_EQ(g.push.contact->mode, Push_mode::undecided);
   // the checker: each certificate accepted; a changed mode, a bracket end moved across the root, too few bits refused
-  const auto refused = [](const std::string& scene, std::string cert, const std::string& from, const std::string& to,
-                          const std::string& reason) {
-    const std::size_t at = cert.find(from);
-    ASSERT_NE(at, std::string::npos) << from << " in " << cert;
-    cert.replace(at, from.size(), to);
-    const wrenchkit_checker::Result v = wrenchkit_checker::check(scene, cert);
-    EXPECT_EQ(v.outcome, wrenchkit_checker::Outcome::rejected) << cert;
-    EXPECT_NE(v.message.find(reason), std::string::npos) << v.message;
-  };
   EXPECT_EQ(wrenchkit_checker::check(stick, a.certificate).outcome, wrenchkit_checker::Outcome::accepted);
   refused(stick, a.certificate, R"("mode": "sticks")", R"("mode": "slides left")", "needs \"tangent_omega\"");
   const Rational near_hi = a.push.contact->omega_hi - (a.push.contact->omega_hi - a.push.contact->omega_lo) / 10;
@@ -325,6 +330,136 @@ TEST(PushContact, GoldenModesAndTamperedClaims) {
   EXPECT_EQ(wrenchkit_checker::check(right, c.certificate).outcome, wrenchkit_checker::Outcome::accepted);
   refused(right, c.certificate, "\"omega\": [\"" + to_string(c.push.contact->motion_lo) + "\"",
           "\"omega\": [\"" + to_string(c.push.contact->motion_hi) + "\"", "over the slip bracket");
+}
+
+// [PU-2 §7] A sticking pivot, worked by hand. Legs (0, 0) (ρ 1), (2, 0) (ρ 1) and (0, 2) (ρ 1/8); the pusher at
+// p = (1, −1), normal (0, 1), μ = 1, moving v = (1, 1) ⟂ (0, 0) − p: the rotation about the leg at the origin with
+// ω = 1 moves p with v. The other legs move along (0, 2) and (−2, 0): F' = (0, 1) + (−1/8, 0) = (−1/8, 1), their moment
+// about p M' = (1, 1) × (0, 1) + (−1, 3) × (−1/8, 0) = 1 + 3/8 = 11/8 < ρ_0 |d| = √2: g jumps across 0 at ω = 1, the
+// sticking candidate is the pivot. Its forces through p: d × F = d × F' − M' = −7/8 − 11/8 = −9/4 with d = (−1, 1),
+// i.e. F_x + F_y = 9/4, within |F − F'| ≤ 1: the chord's middle (9/16, 27/16) = (9/16)(1, 3) is inside the cone
+// |F_x| < F_y, and |λe − F'|² = |(11/16, 11/16)|² = 242/256 < 1. It sticks, turning at exactly 1 about (0, 0).
+TEST(PushContact, StickingPivotWorkedByHand) {
+  Push_query q;
+  q.contact = true;
+  const auto scene = [](const std::string& third, const std::string& velocity) {
+    return R"({"wrenchkit": 1, "support": {"points": [{"at": [0, 0], "force": 1, "mu": 1}, {"at": [2, 0], "force": 1, "mu": 1}, )" +
+           third + R"(]}, "pusher": {"at": [1, -1], "normal": [0, 1], "mu": 1, "velocity": )" + velocity + "}}";
+  };
+  const std::string t = scene(R"({"at": [0, 2], "force": "1/8", "mu": 1})", "[1, 1]");
+  const Push_item a = answer_push(t, "test", Request{}, q);
+  ASSERT_EQ(a.status, Status::answered) << a.message;
+  ASSERT_TRUE(a.push.contact);
+  const Push_contact& c = *a.push.contact;
+  EXPECT_EQ(c.mode, Push_mode::sticks) << c.why;
+  ASSERT_TRUE(c.pivot && c.force);
+  EXPECT_EQ(*c.pivot, 0u);
+  EXPECT_EQ(c.omega_lo, 1);
+  EXPECT_EQ(c.omega_hi, 1);
+  EXPECT_EQ(c.force->x, Rational(9) / 16);
+  EXPECT_EQ(c.force->y, Rational(27) / 16);
+  EXPECT_EQ(wrenchkit_checker::check(t, a.certificate).outcome, wrenchkit_checker::Outcome::accepted) << a.certificate;
+  const auto refused_here = [&](const std::string& from, const std::string& to, const std::string& reason) {
+    refused(t, a.certificate, from, to, reason);
+  };
+  refused_here(R"("omega": ["1", "1"])", R"("omega": ["2", "2"])", "the rotation about the pivot has omega 1");
+  refused_here(R"("pivot": 0)", R"("pivot": 1)", "not perpendicular");
+  refused_here(R"("force": ["9/16", "27/16"])", R"("force": ["1", "0"])", "not strictly inside the friction cone");
+  refused_here(R"("force": ["9/16", "27/16"])", R"("force": ["1", "5"])", "no force of the pivot's facet");  // (F = (3/8, 15/8): |F − F'|² > 1)
+  refused_here(R"("mode": "sticks")", R"("mode": "impending")", "a contact-level pivot is a sticking claim");
+  // the third leg heavier: M' = 1 + 3ρ > √2 for ρ = 1/4, the jump misses 0 — the root is no pivot, the usual bracket
+  const Push_item b = answer_push(scene(R"({"at": [0, 2], "force": "1/4", "mu": 1})", "[1, 1]"), "test", Request{}, q);
+  ASSERT_EQ(b.status, Status::answered) << b.message;
+  EXPECT_FALSE(b.push.contact->pivot);
+  EXPECT_NE(b.push.contact->omega_lo, b.push.contact->omega_hi);
+  // nearby velocities (not perpendicular: no leg at rest) are decided by the ordinary bracket: they stick too, their
+  // rates closing in on 1 from both sides — the pivot's answer is the limit of its neighbours'
+  for (const char* v : {R"(["1", "1.000000001"])", R"(["1.000000001", "1"])"}) {
+    const Push_item n = answer_push(scene(R"({"at": [0, 2], "force": "1/8", "mu": 1})", v), "test", Request{}, q);
+    ASSERT_EQ(n.status, Status::answered) << n.message;
+    EXPECT_EQ(n.push.contact->mode, Push_mode::sticks) << v;
+    EXPECT_FALSE(n.push.contact->pivot);
+    EXPECT_LT(abs(n.push.contact->omega_lo - 1), Rational(1, 1000)) << v;
+  }
+}
+
+// [PU-2 §7] On random supports (fixed seed) with the pusher's velocity perpendicular to the line to a random leg. The
+// velocity turned by ±10⁻⁹ (no leg at rest: the ordinary bracket) is the oracle: its force is near the ccw (cw) end of
+// the pivot's chord of forces, so where the engine answers a sticking pivot (accepted by the checker) the two turned
+// velocities do not both slide past the same edge, and one that sticks turns at a rate within 10⁻³ of the pivot's;
+// where it says the facet misses the cone, neither sticks.
+TEST(PushContact, StickingPivotsAgreeWithTheirNeighbours) {
+  std::mt19937_64 rng(20261129);
+  std::uniform_int_distribution<int> coord(-10, 10), force(1, 10), tenth(1, 10), small(-5, 5), count(2, 6);
+  Push_query q;
+  q.contact = true;
+  int pivots = 0, missed = 0, both_stick = 0;
+  for (int sc = 0; sc < 400; ++sc) {
+    const std::uint64_t seed = rng();
+    std::mt19937_64 r(seed);
+    const int k = count(r);
+    std::vector<std::array<int, 2>> at;
+    std::ostringstream pts;
+    for (int i = 0; i < k; ++i) {
+      at.push_back({coord(r), coord(r)});
+      pts << (i ? ", " : "") << R"({"at": [)" << at.back()[0] << ", " << at.back()[1] << R"(], "force": )" << force(r)
+          << R"(, "mu": ")" << tenth(r) << "/10\"}";
+    }
+    const int px = coord(r), py = coord(r), j = static_cast<int>(r() % k);
+    const int dx = at[j][0] - px, dy = at[j][1] - py;
+    int nx = small(r), ny = small(r);
+    if (nx == 0 && ny == 0) ny = 1;
+    if (dx == 0 && dy == 0) continue;
+    int vx = -dy, vy = dx;  // ⟂ d, pushing into the body
+    if (vx * nx + vy * ny < 0) vx = -vx, vy = -vy;
+    if (vx * nx + vy * ny == 0) continue;
+    const int mu10 = tenth(r);
+    const auto text = [&](const std::string& v) {
+      return R"({"wrenchkit": 1, "support": {"points": [)" + pts.str() + R"(]}, "pusher": {"at": [)" +
+             std::to_string(px) + ", " + std::to_string(py) + R"(], "normal": [)" + std::to_string(nx) + ", " +
+             std::to_string(ny) + R"(], "mu": ")" + std::to_string(mu10) + R"(/10", "velocity": )" + v + "}}";
+    };
+    const std::string t = text("[" + std::to_string(vx) + ", " + std::to_string(vy) + "]");
+    const Push_item a = answer_push(t, "test", Request{}, q);
+    if (a.status != Status::answered || !a.push.contact) continue;
+    const Push_contact& c = *a.push.contact;
+    const bool pivot = c.pivot.has_value() && c.mode == Push_mode::sticks;
+    const bool misses = c.mode == Push_mode::undecided && c.why.find("miss the friction cone") != std::string::npos;
+    if (!pivot && !misses) continue;
+    (pivot ? pivots : missed) += 1;
+    if (pivot) {
+      const auto& pv = at[*c.pivot];  // (that leg, or another on the same line through p)
+      ASSERT_EQ((pv[0] - px) * vx + (pv[1] - py) * vy, 0) << test::dump_failure(t, "sticking_pivot");
+      ASSERT_EQ(wrenchkit_checker::check(t, a.certificate).outcome, wrenchkit_checker::Outcome::accepted)
+          << test::dump_failure(t, "sticking_pivot");
+    }
+    const Rational e(1, 1000000000);
+    Push_mode m[2];
+    for (const int side : {0, 1}) {  // v ± 10⁻⁹·rot90(v)
+      const int sign = side ? -1 : 1;
+      const Rational tx = vx - sign * e * vy, ty = vy + sign * e * vx;
+      const Push_item n = answer_push(text("[\"" + to_string(tx) + "\", \"" + to_string(ty) + "\"]"), "test", Request{}, q);
+      ASSERT_EQ(n.status, Status::answered) << n.message;
+      m[side] = n.push.contact->mode;
+      if (m[side] == Push_mode::sticks && pivot) {
+        ASSERT_LT(abs(n.push.contact->omega_lo - c.omega_lo), abs(c.omega_lo) / 1000 + Rational(1, 1000000))
+            << "seed " << seed << "\n" << test::dump_failure(t, "sticking_pivot");
+      }
+      if (!pivot) {
+        ASSERT_NE(m[side], Push_mode::sticks) << "seed " << seed << "\n" << test::dump_failure(t, "sticking_pivot");
+      }
+    }
+    if (pivot) {
+      const bool past_one_edge = m[0] == m[1] && (m[0] == Push_mode::slides_left || m[0] == Push_mode::slides_right);
+      ASSERT_FALSE(past_one_edge) << "seed " << seed << "\n" << test::dump_failure(t, "sticking_pivot");
+      both_stick += m[0] == Push_mode::sticks && m[1] == Push_mode::sticks;
+    }
+  }
+  EXPECT_GT(pivots, 20);
+  EXPECT_GT(both_stick, 10);
+  EXPECT_GT(missed, 5);
+  std::printf("sticking pivots: %d answered (%d with both neighbours sticking), %d facets missing the cone\n", pivots,
+              both_stick, missed);
 }
 
 // One model (issue 33): the body's twist that push --contact brackets, handed to the limit surface's own load of a

@@ -37,6 +37,10 @@ std::string push_certificate(const Push_answer& a) {
     const Push_contact& c = *a.contact;
     w.key("contact").object().member("mode", push_mode_name(c.mode)).member("bits", c.bits);
     w.key("omega").array().rational(c.omega_lo).rational(c.omega_hi).end_array();
+    if (c.mode == Push_mode::sticks && c.pivot) {  // §8.2: sticking about a support point (PU-2 §7)
+      w.member("pivot", *c.pivot);
+      w.key("force").array().rational(c.force->x).rational(c.force->y).end_array();
+    }
     if (c.has_tangent) w.key("tangent_omega").array().rational(c.tangent_lo).rational(c.tangent_hi).end_array();
     if (c.has_motion) {  // §8.2: the sliding motion (PU-2 §5)
       w.key("sliding").object();

@@ -315,6 +315,16 @@ std::optional<double> nearest_double(const Rational& q) {
 
 std::string to_string(const Rational& q) { return q.get_str(10); }
 
+Rational simplest_in(const Rational& l, const Rational& h) {
+  if (sgn(l) <= 0 && sgn(h) >= 0) return 0;
+  if (sgn(h) < 0) return -simplest_in(-h, -l);
+  Integer f;  // 0 < l ≤ h
+  mpz_fdiv_q(f.get_mpz_t(), l.get_num_mpz_t(), l.get_den_mpz_t());
+  if (Rational(f) == l) return l;
+  if (Rational(f + 1) <= h) return Rational(f + 1);
+  return Rational(f) + 1 / simplest_in(1 / (h - f), 1 / (l - f));
+}
+
 std::array<Integer, 3> primitive(std::array<Integer, 3> v) { return primitive_of(std::move(v)); }
 std::array<Integer, 3> primitive(const std::array<Rational, 3>& v) { return primitive_of(v); }
 std::array<Integer, 2> primitive(const Rational& x, const Rational& y) { return primitive_of(std::array<Rational, 2>{x, y}); }

@@ -69,6 +69,10 @@ std::optional<double> nearest_double(const Rational& q);
 // Lowest terms, "p" or "p/q" (q > 0): the JSON output form of docs/cli.md.
 std::string to_string(const Rational& q);
 
+// The simplest rational in [l, h] (l ≤ h): least denominator, then least absolute numerator (0 when the interval holds
+// it; the Stern–Brocot descent by continued fractions) — a readable number where any of the interval will do.
+Rational simplest_in(const Rational& l, const Rational& h);
+
 // A fixed-width integer (exact/numbers/wide_int.h) as a GMP integer, exactly.
 Integer integer_of(wide::i128 v);
 

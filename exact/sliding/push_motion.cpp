@@ -218,19 +218,16 @@ double step_hint(const Vec2& v, const Vec2& t) {
   return s == 0 ? 1.0 : s.get_d();
 }
 
-// [PU-2 §6] Is the sliding motion the rotation about support point j (a pivot: a facet of the limit surface)? Its
-// velocity at p is u(τ_j) = v + τ_j t ⟂ r_j − p, its rate ω_j; the loads of that twist are the other points' friction
-// (unit speeds v̂_i) plus ρ_j g at r_j for any |g| ≤ 1. It is the motion when one of them is a force λ e through p,
-// λ > 0: the moment about p gives λ = (d_j × F' − M')/(d_j × e) (F', M': the others' force and moment about p), and
-// |λ e − F'| ≤ ρ_j certifies g — strictly, with the square roots bracketed (`bits`). False when not certified.
-bool pivot_motion(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& p, const Vec2& v, const Vec2& t,
-                  const Vec2& e, bool right, int bits, Rational& tau, Rational& omega) {
+// [PU-2 §6–7] Does the facet of the rotation about support point j — rate ω, velocity u at p, so u = −ω·rot90(d_j),
+// d_j = r_j − p — hold a force λ e through p, λ > 0? Its loads are the other points' friction (unit speeds v̂_i) plus
+// ρ_j g at r_j for any |g| ≤ 1; the moment about p gives λ = (d_j × F' − M')/(d_j × e) (F', M': the others' force and
+// moment about p), and |λ e − F'| < ρ_j certifies g — strictly, with the square roots bracketed (`bits`). False when not
+// certified (or another point is at rest too).
+bool facet_holds(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& p, const Vec2& u, const Rational& omega,
+                 const Vec2& e, int bits) {
   const Vec2 d = minus(pts[j].at, p);
-  if (pts[j].rho == 0 || dot(t, d) == 0 || cross(d, e) == 0) return false;
-  tau = -dot(v, d) / dot(t, d);
-  if (right ? tau <= 0 : tau >= 0) return false;  // the slip opposes the edge's friction
-  const Vec2 u{v.x + tau * t.x, v.y + tau * t.y};
-  omega = -dot(u, rot90(d)) / dot(d, d);  // u = −ω rot90(d): the velocity at p of the rotation about r_j
+  const Rational de = cross(d, e);
+  if (pts[j].rho == 0 || de == 0) return false;
   std::vector<Rho_point> rest;
   for (std::size_t i = 0; i < pts.size(); ++i)
     if (i != j) rest.push_back(pts[i]);
@@ -246,7 +243,6 @@ bool pivot_motion(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& 
   };
   Rational a[2], b[2];
   scaled_range(d.x, fy, a), scaled_range(-d.y, fx, b);
-  const Rational de = cross(d, e);
   Rational num[2] = {a[0] + b[0] - m[1], a[1] + b[1] - m[0]}, lambda[2];
   scaled_range(1 / de, num, lambda);
   if (lambda[0] <= 0) return false;
@@ -256,6 +252,78 @@ bool pivot_motion(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& 
   scaled_range(e.x, lambda, ex), scaled_range(e.y, lambda, ey);
   gx[0] = ex[0] - fx[1], gx[1] = ex[1] - fx[0], gy[0] = ey[0] - fy[1], gy[1] = ey[1] - fy[0];
   return square_max(gx[0], gx[1]) + square_max(gy[0], gy[1]) < pts[j].rho * pts[j].rho;
+}
+
+// [PU-2 §6] Is the sliding motion the rotation about support point j (a pivot: a facet of the limit surface)? Its
+// velocity at p is u(τ_j) = v + τ_j t ⟂ r_j − p, its rate ω_j; it is the motion when its facet holds a force along the
+// edge e through p (facet_holds).
+bool pivot_motion(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& p, const Vec2& v, const Vec2& t,
+                  const Vec2& e, bool right, int bits, Rational& tau, Rational& omega) {
+  const Vec2 d = minus(pts[j].at, p);
+  if (pts[j].rho == 0 || dot(t, d) == 0 || cross(d, e) == 0) return false;
+  tau = -dot(v, d) / dot(t, d);
+  if (right ? tau <= 0 : tau >= 0) return false;  // the slip opposes the edge's friction
+  const Vec2 u{v.x + tau * t.x, v.y + tau * t.y};
+  omega = -dot(u, rot90(d)) / dot(d, d);  // u = −ω rot90(d): the velocity at p of the rotation about r_j
+  return facet_holds(pts, j, p, u, omega, e, bits);
+}
+
+// [PU-2 §7] The sticking motion as a pivot: the pusher's velocity u ⟂ r_j − p, so the rotation about support point j at
+// ω_j = −(u · rot90 d_j)/|d_j|² moves p with u, and g jumps across 0 there (the caller's g_sign). Its facet's forces
+// through p lie on the chord of the line d_j × F = d_j × F' − M' inside the disc |F − F'| ≤ ρ_j; the contact sticks
+// when a force of that chord is strictly inside the friction cone: the doubles propose the middle of the chord's part
+// inside the cone, rounded to a rational direction e; the exact cone test and facet_holds certify it. Fills `r`
+// (sticks, the pivot, the rate, the force's direction) and returns true; false when not certified (r.why says why).
+bool sticking_pivot(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& p, const Vec2& u, const Rational& w,
+                    const Vec2& eL, const Vec2& eR, Push_contact& r) {
+  const double dx = pts[j].at.x.get_d() - p.x.get_d(), dy = pts[j].at.y.get_d() - p.y.get_d(), wd = w.get_d();
+  double fx = 0, fy = 0, m = 0;  // F', M' in doubles (proposals only)
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (i == j) continue;
+    const double qx = pts[i].at.x.get_d() - p.x.get_d(), qy = pts[i].at.y.get_d() - p.y.get_d();
+    const double vx = u.x.get_d() - wd * qy, vy = u.y.get_d() + wd * qx, len = std::sqrt(vx * vx + vy * vy);
+    if (len == 0) continue;
+    const double rho = pts[i].rho.get_d();
+    fx += rho * vx / len, fy += rho * vy / len, m += rho * (qx * vy - qy * vx) / len;
+  }
+  // the chord F(s) = F0 + s·d̂ (d × F0 = K, F0 ⟂ d), |F(s) − F'| ≤ ρ_j
+  const double len = std::sqrt(dx * dx + dy * dy), K = dx * fy - dy * fx - m, rho = pts[j].rho.get_d();
+  const double ux = dx / len, uy = dy / len, f0x = -uy * K / len, f0y = ux * K / len;
+  const double off = (fx - f0x) * -uy + (fy - f0y) * ux, along = (fx - f0x) * ux + (fy - f0y) * uy;
+  const double h2 = rho * rho - off * off;
+  double lo = along - std::sqrt(std::max(0.0, h2)), hi = along + std::sqrt(std::max(0.0, h2));
+  // inside the cone: e_R × F(s) > 0 and F(s) × e_L > 0, each a + b·s
+  const auto cut = [&](double a, double b) {
+    if (b > 0) lo = std::max(lo, -a / b);
+    else if (b < 0) hi = std::min(hi, -a / b);
+    else if (a <= 0) hi = lo - 1;
+  };
+  const double rx = eR.x.get_d(), ry = eR.y.get_d(), lx = eL.x.get_d(), ly = eL.y.get_d();
+  cut(rx * f0y - ry * f0x, rx * uy - ry * ux);
+  cut(f0x * ly - f0y * lx, ux * ly - uy * lx);
+  if (!(h2 > 0) || !(lo < hi)) {
+    r.why = "a rotation about support point " + std::to_string(j) + " (a facet of the limit surface) meets the pusher's "
+            "motion, and its forces miss the friction cone: the contact slides from it — not yet answered";
+    return false;
+  }
+  // the middle of the chord's part in the cone, as a readable direction (each coordinate's simplest rational within a
+  // 10⁻⁶ of the chord's length, scaled to that length: any direction of the part will do)
+  const double s = (lo + hi) / 2, slack = 1e-6 * (hi - lo);
+  const auto readable = [slack](double x) { return simplest_in(Rational(x - slack), Rational(x + slack)); };
+  const Vec2 e{readable(f0x + s * ux), readable(f0y + s * uy)};
+  if (cross(eR, e) > 0 && cross(e, eL) > 0)
+    for (int bits = 64; bits <= 1024; bits *= 2)
+      if (facet_holds(pts, j, p, u, w, e, bits)) {
+        r.mode = Push_mode::sticks;
+        r.pivot = j;
+        r.force = e;
+        r.omega_lo = r.omega_hi = w;
+        r.bits = bits;
+        return true;
+      }
+  r.why = "a rotation about support point " + std::to_string(j) + " (a facet of the limit surface) meets the pusher's "
+          "motion, and its forces are within the resolution of the friction cone's edge";
+  return false;
 }
 
 // [PU-2 §5] The body's motion while the contact slides with its force on the edge e: the velocity at p is
@@ -428,6 +496,18 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
   const Vec2 &eL = edge[0], &eR = edge[1];
   // F in the cone pos{e_R, e_L}: cross(e_R, F) > 0 and cross(F, e_L) > 0; cross(a, F) = rot90(a)·F
   const Vec2 l_right = rot90(eR), l_left{-rot90(eL).x, -rot90(eL).y};
+  // [PU-2 §7] The sticking candidate at a pivot: the pusher's velocity ⟂ r_j − p and g's jump at ω_j holding 0 (then
+  // ω* = ω_j exactly: g is nondecreasing). Only there can a support point be at rest while p moves with u.
+  if (c.mu != 0)
+    for (std::size_t j = 0; j < pts.size(); ++j) {
+      const Vec2 d = minus(pts[j].at, p);
+      if (pts[j].rho == 0 || (d.x == 0 && d.y == 0) || dot(u, d) != 0) continue;
+      const Rational w = -dot(u, rot90(d)) / dot(d, d);
+      int bits = 64;
+      if (g_sign(pts, p, u, w, bits) != 2) continue;  // the jump misses 0: the root is elsewhere
+      sticking_pivot(pts, j, p, u, w, eL, eR, r);
+      return r;
+    }
   // The sticking candidate: the doubles propose ω* within a quarter of the tolerance, the exact signs keep it (else
   // the exact search brackets it).
   const double w_guess = Double_points(pts, p).rate(u.x.get_d(), u.y.get_d());

@@ -66,9 +66,11 @@ struct Push_vote {
 // force F(ω*) is certified strictly inside the pusher's friction cone (sticks) or strictly beyond one edge (the
 // sticking motion would need more friction than the contact has: it slides, its force on the edge F passed within
 // the half-plane of forces whose normals push — "slides left" on n + μ·rot90 n, "slides right" on n − μ·rot90 n).
-// ω* = 0 exactly when v_p passes through the centre of friction (a translation, F along v_p: exact). Undecided: a
-// pivot (the root at a rotation about a support point, a facet of the limit surface), F within the resolution of a
-// cone edge after narrowing, regions, forces not given. `push --contact` (certificate §8.2).
+// ω* = 0 exactly when v_p passes through the centre of friction (a translation, F along v_p: exact), and when v_p is
+// perpendicular to r_j − p for a support point j whose facet holds the root (a sticking pivot, §7: the rotation about
+// r_j, sticking when its facet has a force strictly inside the cone). Undecided: a pivot whose facet's forces are
+// outside the cone (sliding from a facet), F within the resolution of a cone edge after narrowing, regions, forces not
+// given. `push --contact` (certificate §8.2).
 // impending: F exactly on a cone edge (only when exact: ω* = 0, a translation along v_p on the cone's edge).
 enum class Push_mode { sticks, impending, slides_left, slides_right, undecided };
 const char* push_mode_name(Push_mode m);  // "sticks", "impending", "slides left", "slides right", "undecided"
@@ -88,7 +90,10 @@ struct Push_contact {
   bool has_motion = false;
   Rational slip_lo, slip_hi, motion_lo, motion_hi;
   std::array<std::array<Rational, 2>, 2> slip_omega;
-  std::optional<std::size_t> pivot;  // slides as a rotation about this support point (PU-2 §6): slip and rate exact
+  // slides as a rotation about this support point (PU-2 §6): slip and rate exact; or sticks as one (§7): the rate
+  // ω* exact (omega_lo = omega_hi), and `force` the direction of a force of its facet strictly inside the cone
+  std::optional<std::size_t> pivot;
+  std::optional<Vec2> force;
   std::string motion_why;       // slides, but the motion not bracketed: the reason
 };
 Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance);

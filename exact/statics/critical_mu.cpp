@@ -187,13 +187,7 @@ Rational root_bound(const Poly& p) {
 }
 
 // The simplest rational (least denominator, then numerator) in [l, h], 0 ≤ l ≤ h.
-Rational simplest(const Rational& l, const Rational& h) {
-  Integer f;
-  mpz_fdiv_q(f.get_mpz_t(), l.get_num_mpz_t(), l.get_den_mpz_t());
-  if (Rational(f) == l) return l;
-  if (Rational(f + 1) <= h) return Rational(f + 1);
-  return Rational(f) + 1 / simplest(1 / (h - f), 1 / (l - f));
-}
+Rational simplest(const Rational& l, const Rational& h) { return simplest_in(l, h); }
 
 // The edges as families a + μ b: each point contact's left (a + μ b) and right (a − μ b), each wrench contact's wrench
 // (b = 0), and the load (b = 0) when asked.

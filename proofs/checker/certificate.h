@@ -188,6 +188,10 @@ struct Push_part {
   std::size_t bits = 0;
   Q omega[2], tangent[2];
   bool has_tangent = false;
+  // sticking about support point `stick_pivot` (PU-2 §7): a force of its facet along `force`, inside the cone
+  bool has_stick_pivot = false;
+  std::size_t stick_pivot = 0;
+  Q force[2];
   // "sliding" (§8.2): the slip bracket, each end's ω bracket, and the rate's bracket over the slip bracket
   bool has_sliding = false, has_slip_omega = false, has_pivot = false;
   std::size_t pivot = 0;  // the rotation about support point `pivot` (PU-2 §6)

@@ -156,33 +156,24 @@ int force_sign(const std::vector<Rho>& pts, const Q (&p)[2], const Q (&u)[2], co
   return lo > 0 ? 1 : hi < 0 ? -1 : 0;
 }
 
-// §8.2 "sliding" with "pivot" (PU-2 §6): the rotation about support point j. Exact slip x = -(v . d) / (t . d) and rate
-// w = -(u . rot90 d) / |d|^2 (d = r_j - p, u = v + x t: the rotation's velocity at p); the other points' force F' and
-// moment M' about p bracketed; lambda = (d x F' - M') / (d x e) certainly > 0 and |lambda e - F'|^2 certainly < rho_j^2
-// (a force of the facet along e, through p).
-void check_pivot(const Push_part& c, const std::vector<Rho>& pts, const Q (&p)[2], const Q (&n)[2], const Q (&v)[2],
-                 const Q (&l)[2]) {
-  if (c.pivot >= pts.size()) throw Failure{"contact.sliding.pivot: no such support point"};
-  const Rho& pj = pts[c.pivot];
-  const Q t[2] = {-n[1], n[0]}, d[2] = {pj.x - p[0], pj.y - p[1]}, e[2] = {l[1], -l[0]};
-  const Q td = t[0] * d[0] + t[1] * d[1], de = d[0] * e[1] - d[1] * e[0];
-  if (sgn(pj.rho) == 0 || sgn(td) == 0 || sgn(de) == 0)
-    throw Failure{"contact.sliding.pivot: that support point cannot be the pivot (no friction, or its line is the edge's)"};
-  const Q x = -(v[0] * d[0] + v[1] * d[1]) / td, u[2] = {v[0] + x * t[0], v[1] + x * t[1]};
-  const Q w = (u[0] * d[1] - u[1] * d[0]) / (d[0] * d[0] + d[1] * d[1]);  // -(u . rot90 d) / |d|^2
-  if (c.mode == "slides right" ? !(sgn(x) > 0) : !(sgn(x) < 0))
-    throw Failure{"contact.sliding.pivot: the rotation about that point slips the wrong way for the claimed edge"};
-  if (c.slip[0] != x || c.slip[1] != x || c.motion[0] != w || c.motion[1] != w)
-    throw Failure{"contact.sliding: the rotation about the pivot has slip " + show(x) + " and omega " + show(w)};
+// PU-2 §6–7: the facet of the rotation about support point j (rate w, velocity u at p) holds a force along e through
+// p: the other points' force F' and moment M' about p bracketed; lambda = (d x F' - M') / (d x e) certainly > 0 and
+// |lambda e - F'|^2 certainly < rho_j^2 (d = r_j - p).
+void check_facet(const std::vector<Rho>& pts, std::size_t j, const Q (&p)[2], const Q (&u)[2], const Q& w,
+                 const Q (&e)[2], std::size_t bits, const std::string& path, const char* along) {
+  const Rho& pj = pts[j];
+  const Q d[2] = {pj.x - p[0], pj.y - p[1]}, de = d[0] * e[1] - d[1] * e[0];
+  if (sgn(pj.rho) == 0 || sgn(de) == 0)
+    throw Failure{path + ": that support point cannot be the pivot (no friction, or its line is the force's)"};
   std::vector<Rho> rest;
   for (std::size_t i = 0; i < pts.size(); ++i)
-    if (i != c.pivot) rest.push_back(pts[i]);
+    if (i != j) rest.push_back(pts[i]);
   const Q ex[2] = {Q(1), Q(0)}, ey[2] = {Q(0), Q(1)}, none[2] = {Q(0), Q(0)};
   Q fx[2], fy[2], m[2];
-  if (!interval(rest, p, u, ex, false, w, w, c.bits, fx[0], fx[1]) ||
-      !interval(rest, p, u, ey, false, w, w, c.bits, fy[0], fy[1]) ||
-      !interval(rest, p, u, none, true, w, w, c.bits, m[0], m[1]))
-    throw Failure{"contact.sliding.pivot: another support point is at rest"};
+  if (!interval(rest, p, u, ex, false, w, w, bits, fx[0], fx[1]) ||
+      !interval(rest, p, u, ey, false, w, w, bits, fy[0], fy[1]) ||
+      !interval(rest, p, u, none, true, w, w, bits, m[0], m[1]))
+    throw Failure{path + ": another support point is at rest"};
   const auto range = [](const Q& k, const Q& lo, const Q& hi, Q (&out)[2]) {
     out[0] = k * lo, out[1] = k * hi;
     if (out[0] > out[1]) std::swap(out[0], out[1]);
@@ -195,7 +186,45 @@ void check_pivot(const Push_part& c, const std::vector<Rho>& pts, const Q (&p)[2
   const Q g0 = std::max(Q((gx[0] - fx[1]) * (gx[0] - fx[1])), Q((gx[1] - fx[0]) * (gx[1] - fx[0])));
   const Q g1 = std::max(Q((gy[0] - fy[1]) * (gy[0] - fy[1])), Q((gy[1] - fy[0]) * (gy[1] - fy[0])));
   if (!(lam[0] > 0) || !(g0 + g1 < pj.rho * pj.rho))
-    throw Failure{"contact.sliding.pivot: no force of the pivot's facet is certainly along the edge through the pusher"};
+    throw Failure{path + ": no force of the pivot's facet is certainly along " + along + " through the pusher"};
+}
+
+// §8.2 "sliding" with "pivot" (PU-2 §6): the rotation about support point j. Exact slip x = -(v . d) / (t . d) and rate
+// w = -(u . rot90 d) / |d|^2 (d = r_j - p, u = v + x t: the rotation's velocity at p); its facet holds a force along
+// the edge (check_facet).
+void check_pivot(const Push_part& c, const std::vector<Rho>& pts, const Q (&p)[2], const Q (&n)[2], const Q (&v)[2],
+                 const Q (&l)[2]) {
+  if (c.pivot >= pts.size()) throw Failure{"contact.sliding.pivot: no such support point"};
+  const Rho& pj = pts[c.pivot];
+  const Q t[2] = {-n[1], n[0]}, d[2] = {pj.x - p[0], pj.y - p[1]}, e[2] = {l[1], -l[0]};
+  const Q td = t[0] * d[0] + t[1] * d[1];
+  if (sgn(td) == 0) throw Failure{"contact.sliding.pivot: no slip brings that support point to rest"};
+  const Q x = -(v[0] * d[0] + v[1] * d[1]) / td, u[2] = {v[0] + x * t[0], v[1] + x * t[1]};
+  const Q w = (u[0] * d[1] - u[1] * d[0]) / (d[0] * d[0] + d[1] * d[1]);  // -(u . rot90 d) / |d|^2
+  if (c.mode == "slides right" ? !(sgn(x) > 0) : !(sgn(x) < 0))
+    throw Failure{"contact.sliding.pivot: the rotation about that point slips the wrong way for the claimed edge"};
+  if (c.slip[0] != x || c.slip[1] != x || c.motion[0] != w || c.motion[1] != w)
+    throw Failure{"contact.sliding: the rotation about the pivot has slip " + show(x) + " and omega " + show(w)};
+  check_facet(pts, c.pivot, p, u, w, e, c.bits, "contact.sliding.pivot", "the edge");
+}
+
+// §8.2 "sticks" with "pivot" (PU-2 §7): the rotation about support point j moves p with v (v . d = 0 exactly, d =
+// r_j - p, rate w = -(v . rot90 d) / |d|^2 = omega), g's jump there holds 0 (the facet holds a force through p at
+// all: shown by the next check), and its facet holds a force along "force", strictly inside the cone.
+void check_sticking_pivot(const Push_part& c, const std::vector<Rho>& pts, const Q (&p)[2], const Q (&v)[2],
+                          const Q (&lr)[2], const Q (&ll)[2]) {
+  if (c.mode != "sticks") throw Failure{"contact.pivot: a contact-level pivot is a sticking claim"};
+  if (c.stick_pivot >= pts.size()) throw Failure{"contact.pivot: no such support point"};
+  const Rho& pj = pts[c.stick_pivot];
+  const Q d[2] = {pj.x - p[0], pj.y - p[1]}, dd = d[0] * d[0] + d[1] * d[1];
+  if (sgn(dd) == 0 || sgn(v[0] * d[0] + v[1] * d[1]) != 0)
+    throw Failure{"contact.pivot: the pusher's velocity is not perpendicular to the line to that support point"};
+  const Q w = (v[0] * d[1] - v[1] * d[0]) / dd;
+  if (c.omega[0] != w || c.omega[1] != w)
+    throw Failure{"contact.omega: the rotation about the pivot has omega " + show(w)};
+  if (sgn(lr[0] * c.force[0] + lr[1] * c.force[1]) <= 0 || sgn(ll[0] * c.force[0] + ll[1] * c.force[1]) <= 0)
+    throw Failure{"contact.force: not strictly inside the friction cone"};
+  check_facet(pts, c.stick_pivot, p, v, w, c.force, c.bits, "contact.pivot", "the claimed force");
 }
 
 // §8.2 "sliding" (PU-2 §5): the body's velocity at p is u(x) = v + x t (t = rot90 n) with its force along the edge e
@@ -256,6 +285,7 @@ void check_contact(const Push_part& c, const Support& s, const Limits& lim, cons
   const Q eL[2] = {n[0] - mu * n[1], n[1] + mu * n[0]}, eR[2] = {n[0] + mu * n[1], n[1] - mu * n[0]};
   const Q rl[2] = {-eL[1], eL[0]}, rr[2] = {-eR[1], eR[0]};  // rot90: rot90(a) . F = a x F
   const Q lr[2] = {rr[0], rr[1]}, ll[2] = {-rl[0], -rl[1]};  // e_R x F > 0, F x e_L > 0: inside the cone
+  if (c.has_stick_pivot) return check_sticking_pivot(c, pts, p, v, lr, ll);
   bracket(pts, p, v, c.omega, c.bits, "contact.omega");
   const int right = force_sign(pts, p, v, c.omega, lr, c.bits), left = force_sign(pts, p, v, c.omega, ll, c.bits);
   if (c.has_sliding && c.mode != "slides left" && c.mode != "slides right")
@@ -319,6 +349,12 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c) {
       } else if (k == "omega") {
         seen |= 4;
         read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.omega[m] = read_rational(r); });
+      } else if (k == "pivot") {
+        p.has_stick_pivot = true;
+        p.stick_pivot = read_index(r, "support point index");
+      } else if (k == "force") {
+        seen |= 8;
+        read_fixed(r, 2, "a force direction [fx, fy]", [&](std::size_t m) { p.force[m] = read_rational(r); });
       } else if (k == "tangent_omega") {
         p.has_tangent = true;
         read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.tangent[m] = read_rational(r); });
@@ -352,7 +388,8 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c) {
         r.fail("unknown key " + quote(k), true);
       }
     }
-    if (seen != 7) r.fail("a contact needs \"mode\", \"bits\" and \"omega\"");
+    if ((seen & 7) != 7) r.fail("a contact needs \"mode\", \"bits\" and \"omega\"");
+    if (p.has_stick_pivot != ((seen & 8) != 0)) r.fail("a sticking pivot needs both \"pivot\" and \"force\"");
   } else {  // turns
     p.has_turns = true;
     begin_object(r, "expected an object {\"ccw\": [forces], \"cw\": [forces]}");

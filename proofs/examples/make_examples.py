@@ -227,6 +227,7 @@ SCENES = {
                          "body": SQUARE_OUTLINE,
                          "support": {"mu": "1/2", "points": [{"at": at, "force": 1} for at in CORNERS]},
                          "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": "1/4", "velocity": [1, 1]}},
+    "push_stick_pivot": {"wrenchkit": 1, "name": "three legs; the pusher at (1, -1) moving (1, 1) turns the body about the leg at (0, 0): a sticking pivot", "support": {"points": [{"at": [0, 0], "force": 1, "mu": 1}, {"at": [2, 0], "force": 1, "mu": 1}, {"at": [0, 2], "force": "1/8", "mu": 1}]}, "pusher": {"at": [1, -1], "normal": [0, 1], "mu": 1, "velocity": [1, 1]}},
     "push_pivot": {"wrenchkit": 1, "name": "three legs pushed at (10, -1) with mu = 1/5 along (-1, 2): the contact slides "
                    "on the right edge and the body turns about the leg at (8, 3), exactly",
                    "support": {"points": [{"at": [8, 3], "force": 7, "mu": "8/10"}, {"at": [5, 8], "force": 6, "mu": "1/10"},
@@ -454,6 +455,9 @@ PUSH_SQUARE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "r
 # push_slide slides on the left edge (the sticking force is beyond it, and the left edge is among the pushing forces).
 PUSH_SQUARE_CONTACT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2"}, "votes": [{"lower": "-1", "upper": "-1"}, {"lower": "3", "upper": "3"}, {"lower": "3", "upper": "3"}], "center": ["0", "0"], "contact": {"mode": "sticks", "bits": 64, "omega": ["147348867227/274877906944", "589395468909/1099511627776"]}}''')
 PUSH_SLIDE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "2"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "2", "upper": "2"}, {"lower": "-1", "upper": "-1"}], "center": ["0", "0"], "contact": {"mode": "slides left", "bits": 64, "omega": ["-1/4", "-1/8"], "tangent_omega": ["-1/2", "0"], "sliding": {"slip": ["-1/2", "-1/2"], "slip_omega": [["0", "0"], ["0", "0"]], "omega": ["0", "0"]}}}''')
+# push_stick_pivot: the pusher's velocity (1, 1) is perpendicular to the line to the leg (0, 0): the sticking motion is
+# the rotation about it at rate 1 (PU-2 section 7), its facet holding the force (9/16, 27/16) inside the cone.
+PUSH_STICK_PIVOT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "17/8"}, "votes": [{"lower": "-9/4", "upper": "-9/4"}, {"lower": "5/2", "upper": "5/2"}, {"lower": "5/2", "upper": "5/2"}], "center": ["16/17", "2/17"], "contact": {"mode": "sticks", "bits": 64, "omega": ["1", "1"], "pivot": 0, "force": ["9/16", "27/16"]}}''')
 # push_pivot: the sliding motion is the rotation about the leg (8, 3) (PU-2 section 6): slip 5/7 along (-1, -4), rate -3/7.
 PUSH_PIVOT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "cw", "friction": {"lower": "37/5"}, "votes": [{"lower": "-2404/25", "upper": "-2404/25"}, {"lower": "-1066/25", "upper": "-1066/25"}, {"lower": "153/5", "upper": "153/5"}], "center": ["233/37", "84/37"], "contact": {"mode": "slides right", "bits": 64, "omega": ["5309636483810193/36028797018963968", "5309636483828207/36028797018963968"], "tangent_omega": ["-3479513353260505/9007199254740992", "-3479513353256001/9007199254740992"], "sliding": {"pivot": 0, "slip": ["5/7", "5/7"], "omega": ["-3/7", "-3/7"]}}}''')
 # push_slide_right (--tolerance 1e-6): slides on the right edge; the body's velocity at p is (1, 1) + x (-1, 0) with x in
@@ -1034,6 +1038,15 @@ CERTS = [
     ("push_slide", "contact_exact_slip_moved", "invalid:contact|contact.sliding: an exact slip is only the translation along the edge through",
      tamper(PUSH_SLIDE, ["contact", "sliding", "slip"], ["-1/4", "-1/4"])),
     ("push_slide_right", "contact_slides_right", "valid", PUSH_SLIDE_RIGHT),
+    ("push_stick_pivot", "contact_stick_pivot", "valid", PUSH_STICK_PIVOT),
+    ("push_stick_pivot", "contact_stick_pivot_rate_moved", "invalid:contact|contact.omega: the rotation about the pivot has omega 1",
+     tamper(PUSH_STICK_PIVOT, ["contact", "omega"], ["2", "2"])),
+    ("push_stick_pivot", "contact_stick_pivot_not_perpendicular", "invalid:contact|contact.pivot: the pusher's velocity is not perpendicular",
+     tamper(PUSH_STICK_PIVOT, ["contact", "pivot"], 1)),
+    ("push_stick_pivot", "contact_stick_pivot_force_outside", "invalid:contact|contact.force: not strictly inside the friction cone",
+     tamper(PUSH_STICK_PIVOT, ["contact", "force"], ["1", "0"])),
+    ("push_stick_pivot", "contact_stick_pivot_facet_misses", "invalid:contact|contact.pivot: no force of the pivot's facet is certainly along",
+     tamper(PUSH_STICK_PIVOT, ["contact", "force"], ["1", "5"])),
     ("push_pivot", "contact_pivot", "valid", PUSH_PIVOT),
     ("push_pivot", "contact_other_pivot", "invalid:contact|contact.sliding: the rotation about the pivot has slip",
      tamper(PUSH_PIVOT, ["contact", "sliding", "pivot"], 1)),
@@ -1933,7 +1946,9 @@ def verify_regions(scene, cert):
 
 def verify_contact(c, pts, known, p, n, mu, v):
     """Section 8.2: the contact mode (PU-2), support points with every force given. None if proved, else a reason."""
-    if set(c) - {"mode", "bits", "omega", "tangent_omega", "sliding"} or not {"mode", "bits", "omega"} <= set(c) or not known:
+    if set(c) - {"mode", "bits", "omega", "tangent_omega", "sliding", "pivot", "force"} or not {"mode", "bits", "omega"} <= set(c) or not known:
+        return "contact"
+    if ("pivot" in c) != ("force" in c):
         return "contact"
     if "sliding" in c and c["mode"] not in ("slides left", "slides right"):
         return "contact"
@@ -1999,6 +2014,41 @@ def verify_contact(c, pts, known, p, n, mu, v):
 
     eL, eR = (n[0] - mu * n[1], n[1] + mu * n[0]), (n[0] + mu * n[1], n[1] - mu * n[0])
     rl, rr = (-eL[1], eL[0]), (-eR[1], eR[0])  # rot90(e) . F = e x F
+
+    def facet_holds(j, u, w, e):
+        """PU-2 sections 6-7: the facet of the rotation about point j (rate w, velocity u at p) holds a force along e
+        through p: lambda = (d x F' - M') / (d x e) > 0 and |lambda e - F'|^2 < rho_j^2, F', M' the others' bounds."""
+        nonlocal rho
+        (xj, yj, rj), d = rho[j], (rho[j][0] - p[0], rho[j][1] - p[1])
+        de = d[0] * e[1] - d[1] * e[0]
+        if rj == 0 or de == 0:
+            return False
+        keep = rho
+        rho = [q for i, q in enumerate(keep) if i != j]
+        fx, fy, m = interval(u, (1, 0), False, w, w), interval(u, (0, 1), False, w, w), interval(u, None, True, w, w)
+        rho = keep
+        if None in (fx, fy, m):
+            return False
+        num = sorted((d[0] * fy[0], d[0] * fy[1]))
+        num2 = sorted((-d[1] * fx[0], -d[1] * fx[1]))
+        lam = sorted(((num[0] + num2[0] - m[1]) / de, (num[1] + num2[1] - m[0]) / de))
+        gx = sorted((e[0] * lam[0], e[0] * lam[1]))
+        gy = sorted((e[1] * lam[0], e[1] * lam[1]))
+        g2 = max((gx[0] - fx[1]) ** 2, (gx[1] - fx[0]) ** 2) + max((gy[0] - fy[1]) ** 2, (gy[1] - fy[0]) ** 2)
+        return lam[0] > 0 and g2 < rj * rj
+
+    if "pivot" in c:  # section 7: sticking as the rotation about point j, a force of its facet inside the cone
+        j, e = c["pivot"], tuple(rational(x) for x in c["force"])
+        if c["mode"] != "sticks" or not isinstance(j, int) or not 0 <= j < len(rho):
+            return "contact"
+        d = (rho[j][0] - p[0], rho[j][1] - p[1])
+        dd = d[0] * d[0] + d[1] * d[1]
+        if dd == 0 or v[0] * d[0] + v[1] * d[1] != 0:
+            return "contact"
+        w = (v[0] * d[1] - v[1] * d[0]) / dd
+        inside = rr[0] * e[0] + rr[1] * e[1] > 0 and -rl[0] * e[0] - rl[1] * e[1] > 0
+        ok = [rational(x) for x in c["omega"]] == [w, w] and inside and facet_holds(j, v, w, e)
+        return None if ok else "contact"
     if not bracketed(v, c["omega"]):
         return "contact"
     right, left = force_sign(v, c["omega"], rr), force_sign(v, c["omega"], (-rl[0], -rl[1]))
@@ -2042,19 +2092,7 @@ def verify_contact(c, pts, known, p, n, mu, v):
         w = (u[0] * d[1] - u[1] * d[0]) / (d[0] * d[0] + d[1] * d[1])
         if (x <= 0 if mode == "slides right" else x >= 0) or (x0, x1, w0, w1) != (x, x, w, w):
             return "contact"
-        keep = rho
-        rho = [q for i, q in enumerate(keep) if i != j]
-        fx, fy, m = interval(u, (1, 0), False, w, w), interval(u, (0, 1), False, w, w), interval(u, None, True, w, w)
-        rho = keep
-        if None in (fx, fy, m):
-            return "contact"
-        num = sorted((d[0] * fy[0], d[0] * fy[1]))
-        num2 = sorted((-d[1] * fx[0], -d[1] * fx[1]))
-        lam = sorted(((num[0] + num2[0] - m[1]) / de, (num[1] + num2[1] - m[0]) / de))
-        gx = sorted((ed[0] * lam[0], ed[0] * lam[1]))
-        gy = sorted((ed[1] * lam[0], ed[1] * lam[1]))
-        g2 = max((gx[0] - fx[1]) ** 2, (gx[1] - fx[0]) ** 2) + max((gy[0] - fy[1]) ** 2, (gy[1] - fy[0]) ** 2)
-        return None if lam[0] > 0 and g2 < rj * rj else "contact"
+        return None if facet_holds(j, u, w, ed) else "contact"
     if x0 == x1:  # the translation along e through c
         u = at(x0)
         g0 = sum(r * ((x - p[0]) * u[1] - (y - p[1]) * u[0]) for x, y, r in rho)

@@ -540,6 +540,13 @@ def test_push_voting_theorem():
     assert c["mode"] == "slides right" and "pivot" not in c
     assert Fraction(3184901, 10 ** 7) < c["slip"][0] <= c["slip"][1] < Fraction(3184902, 10 ** 7)
     assert Fraction(4257531, 10 ** 7) < c["omega"][0] <= c["omega"][1] < Fraction(4257532, 10 ** 7)
+    # a sticking pivot (PU-2 section 7): the velocity perpendicular to the line to the leg at (0, 0)
+    legs = {"wrenchkit": 1, "support": {"points": [{"at": [0, 0], "force": 1, "mu": 1}, {"at": [2, 0], "force": 1, "mu": 1},
+                                                   {"at": [0, 2], "force": "1/8", "mu": 1}]},
+            "pusher": {"at": [1, -1], "normal": [0, 1], "mu": 1, "velocity": [1, 1]}}
+    c = wrenchkit.push(legs, contact=True)["contact"]
+    assert c["mode"] == "sticks" and c["pivot"] == 0 and c["omega"] == (1, 1)
+    assert c["force"] == (Fraction(9, 16), Fraction(27, 16))
     square["pusher"]["mu"] = 1
     square["pusher"]["velocity"] = [-1, 2]  # along p -> c: a translation
     assert wrenchkit.push(square)["rotation"] == "none"

@@ -338,7 +338,9 @@ def push(scene, *, contact=False):
     "contact": {"mode": "sticks" | "impending" | "slides left" | "slides right" | "undecided", "omega": (lo, hi) (the
     sticking motion's rotation rate, Fractions), "why"} for a support of points with every force given; sliding,
     "slip": (lo, hi) (the body's velocity at the pusher is the pusher's plus slip times rot90(normal)) and "omega" its
-    rotation rate, exact when "pivot" names the support point it turns about.
+    rotation rate, exact when "pivot" names the support point it turns about; sticking about a support point (the
+    pusher's velocity perpendicular to the line to it), "pivot" with the exact "omega" and "force", a force of that
+    point's facet strictly inside the friction cone (Fractions).
     """
     r = _json.loads(_core.push(_scene(scene), contact))
     fr = _fractions.Fraction
@@ -351,7 +353,7 @@ def push(scene, *, contact=False):
         v["direction"] = tuple(fr(x) for x in v["direction"])
     if "witnesses" in r:
         r["witnesses"] = {k: [fr(x) for x in f] for k, f in r["witnesses"].items()}
-    for k in ("omega", "slip"):
+    for k in ("omega", "slip", "force"):
         if "contact" in r and k in r["contact"]:
             r["contact"][k] = tuple(fr(x) for x in r["contact"][k])
     return r
