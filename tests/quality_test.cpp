@@ -13,6 +13,7 @@
 #include "exact/statics/generators.h"
 #include "exact/statics/quality.h"
 #include "proofs/checker/checker.h"
+#include "testing/stress_families.h"
 #include "tests/test_support.h"
 
 namespace wrenchkit {
@@ -246,6 +247,32 @@ TEST(QualityOracle, RandomGraspsAgainstBruteForce) {
     }
   }
   EXPECT_GT(closed, 40);
+}
+
+// [QL-1 §3] The L1 hull decides closure: on the stress families' degenerate grasps — random_grid (small integer grids,
+// axis and diagonal normals: parallel, concurrent and cone-edge configurations, flat wrench sets), cone_edge,
+// nearly_concurrent and friction_threshold at 10⁻⁶ (17-digit decimals, both sides) — its verdict is the closure
+// engine's, in exact and hybrid modes, and every answer's certificate (ε > 0 with the hull, ε = 0 with the twist) is
+// accepted.
+TEST(QualityOracle, TheHullsClosureIsTheClosureEnginesOnDegenerateGrasps) {
+  int closed = 0, open = 0;
+  for (const char* family : {"random_grid", "cone_edge", "nearly_concurrent", "friction_threshold"})
+    for (std::uint64_t seed = 1; seed <= 120; ++seed) {
+      const stress::Family_scene f = stress::make_scene(family, 1e-6, seed);
+      const Scene scene = scene_of(f.text);
+      if (scene.contacts.empty()) continue;
+      const bool truth = decide_closure(scene, Property::force_closure, Mode::exact, false).holds;
+      for (const Mode m : {Mode::exact, Mode::hybrid}) {
+        Quality_query q = query(Quality_norm::l1, Force_normalization::unit_force);
+        q.critical_mu = false;
+        const Quality_answer a = decide_quality(scene, q, m);
+        ASSERT_EQ(a.closure.holds, truth) << family << " " << seed << "\n" << dump_failure(f.text, "quality_hull_closure");
+        ASSERT_EQ(rejected(f.text, a), "") << dump_failure(f.text, "quality_hull_closure");
+      }
+      (truth ? closed : open) += 1;
+    }
+  EXPECT_GT(closed, 40);
+  EXPECT_GT(open, 40);
 }
 
 // The fast path (small numbers, rational scales: integers only) and the general one (rationals; taken when the query
