@@ -96,6 +96,14 @@ bool fault(const char* kind) {
   g_fault.clear();
   return true;
 }
+// The three modes' verdicts of one case, the injected fault applied to the decided one of its kind (`flip`: the other
+// verdict).
+template <class V, class Flip>
+void inject_faults(V& twin, V& hybrid, V& exact, V undecided, Flip flip) {
+  if (twin != undecided && fault("twin")) twin = flip(twin);
+  if (hybrid != undecided && fault("hybrid")) hybrid = flip(hybrid);
+  if (exact != undecided && fault("exact")) exact = flip(exact);
+}
 
 // Cases per ε for a family: the large families are expensive per case (measured in docs/stability.md).
 long cases_for(const Family& f, long cases) {
@@ -260,9 +268,7 @@ void run_motion_over_case(const families::Case& k, std::uint64_t seed, long inde
       if (o != m && !(k.allowed & bit(o))) return o;
     return m == Motion::sticks ? Motion::depends : Motion::sticks;
   };
-  if (twin != Motion::undecided && fault("twin")) twin = flip(twin);
-  if (hybrid != Motion::undecided && fault("hybrid")) hybrid = flip(hybrid);
-  if (exact != Motion::undecided && fault("exact")) exact = flip(exact);
+  inject_faults(twin, hybrid, exact, Motion::undecided, flip);
   const auto wrong = [&](Motion m, Motion other, const std::string& why) {
     if (!why.empty()) return true;  // an error or a rejected certificate
     if (m == Motion::undecided) return false;
@@ -306,9 +312,7 @@ void run_hold_case(const families::Case& k, std::uint64_t seed, long index, Row&
     return std::sqrt(fx * fx + fy * fy) <= mw;
   });
   const auto flip = [](Hold_verdict v) { return v == Hold_verdict::holds ? Hold_verdict::fails : Hold_verdict::holds; };
-  if (twin != Hold_verdict::undecided && fault("twin")) twin = flip(twin);
-  if (hybrid != Hold_verdict::undecided && fault("hybrid")) hybrid = flip(hybrid);
-  if (exact != Hold_verdict::undecided && fault("exact")) exact = flip(exact);
+  inject_faults(twin, hybrid, exact, Hold_verdict::undecided, flip);
   const Hold_verdict truth = k.above ? Hold_verdict::fails : Hold_verdict::holds;
   const auto wrong = [&](Hold_verdict v, const std::string& why) {
     return !why.empty() || (v != Hold_verdict::undecided && v != truth);
@@ -350,9 +354,7 @@ void run_push_case(const families::Case& k, std::uint64_t seed, long index, Row&
     return v > 0 ? 1 : v < 0 ? -1 : 0;
   });
   const auto flip = [](Rotation v) { return v == Rotation::ccw ? Rotation::cw : Rotation::ccw; };
-  if (twin != Rotation::undecided && fault("twin")) twin = flip(twin);
-  if (hybrid != Rotation::undecided && fault("hybrid")) hybrid = flip(hybrid);
-  if (exact != Rotation::undecided && fault("exact")) exact = flip(exact);
+  inject_faults(twin, hybrid, exact, Rotation::undecided, flip);
   const Rotation truth = k.above ? Rotation::ccw : Rotation::cw;
   ++row.cases;
   row.naive_wrong += naive != (k.above ? 1 : -1);
@@ -387,9 +389,7 @@ void run_push_contact_case(const families::Case& k, std::uint64_t seed, long ind
   Push_mode hybrid = timed(row.t_hybrid, [&] { return answer_in(Mode::hybrid, why_hybrid); });
   const std::string naive = timed(row.t_naive, [&] { return std::string(stress::naive_push_contact(scene)); });
   const auto flip = [](Push_mode m) { return m == Push_mode::sticks ? Push_mode::slides_left : Push_mode::sticks; };
-  if (twin != Push_mode::undecided && fault("twin")) twin = flip(twin);
-  if (hybrid != Push_mode::undecided && fault("hybrid")) hybrid = flip(hybrid);
-  if (exact != Push_mode::undecided && fault("exact")) exact = flip(exact);
+  inject_faults(twin, hybrid, exact, Push_mode::undecided, flip);
   const Push_mode truth = k.above ? Push_mode::slides_left : Push_mode::sticks;
   ++row.cases;
   row.naive_wrong += naive != push_mode_name(truth);
@@ -421,9 +421,7 @@ void run_region_case(const families::Case& k, std::uint64_t seed, long index, Ro
   Motion hybrid = timed(row.t_hybrid, [&] { return answer_in(Mode::hybrid, why_hybrid); });
   const bool naive = timed(row.t_naive, [&] { return families::naive_region_slides(k); });
   const auto flip = [](Motion m) { return m == Motion::sticks ? Motion::slides : Motion::sticks; };
-  if (twin != Motion::undecided && fault("twin")) twin = flip(twin);
-  if (hybrid != Motion::undecided && fault("hybrid")) hybrid = flip(hybrid);
-  if (exact != Motion::undecided && fault("exact")) exact = flip(exact);
+  inject_faults(twin, hybrid, exact, Motion::undecided, flip);
   const Motion truth = k.above ? Motion::slides : Motion::sticks;
   const auto wrong = [&](Motion m, const std::string& why) { return !why.empty() || (m != Motion::undecided && m != truth); };
   ++row.cases;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "exact/io/json.h"
 #include "exact/io/json_writer.h"
@@ -984,40 +985,11 @@ Family_scene fixture_pin(const Family& fam, double eps, Rng& r) {
   return out;
 }
 
-// Family "push_near_tie" (push, issue 33). Support points with 3-decimal places, forces and coefficients (every
-// force given): the centre of friction c exact. The pusher at a 3-decimal point p, its normal d = c − p (exact: the
-// line p → c is inside the cone) and μ = 1/2, so the edges vote apart and the velocity decides; the velocity
-// d + s·10^-k·rot90(d): (p − c) × v = −s·10^-k·|d|², so it votes ccw iff s < 0 (`above`: ccw).
-Family_scene push_near_tie(const Family& fam, double eps, Rng& r) {
-  const int k = decimal_exponent(eps);
-  Family_scene out = known_side(fam, eps, r);
-  const int n = r.integer(3, 8);
-  std::string points;
-  Rational mx = 0, my = 0, d = 0;
-  for (int i = 0; i < n; ++i) {
-    const Rational x = short_decimal(r, -2000, 2000, 3), y = short_decimal(r, -2000, 2000, 3);
-    const Rational f = short_decimal(r, 100, 900, 2), mu = short_decimal(r, 10, 90, 2);
-    mx += mu * f * x, my += mu * f * y, d += mu * f;
-    points += std::string(i ? ", " : "") + "{\"at\": [" + exact_text(x) + ", " + exact_text(y) + "], \"force\": " +
-              exact_text(f) + ", \"mu\": " + exact_text(mu) + "}";
-  }
-  const Rational cx = mx / d, cy = my / d;
-  const Rational px = short_decimal(r, -4000, 4000, 3), py = short_decimal(r, -4000, -2500, 3);
-  const Rational dx = cx - px, dy = cy - py;
-  const Rational e = Rational(out.above ? -1 : 1) * Rational(Integer(1), power_of_ten(k));
-  const Rational vx = dx - e * dy, vy = dy + e * dx;  // d + s ε rot90(d), rot90(d) = (−dy, dx)
-  out.text = "{\"wrenchkit\": 1, \"name\": \"push_near_tie\", \"support\": {\"points\": [" + points +
-             "]}, \"pusher\": {\"at\": [" + exact_text(px) + ", " + exact_text(py) + "], \"normal\": [" + exact_text(dx) +
-             ", " + exact_text(dy) + "], \"mu\": \"1/2\", \"velocity\": [" + exact_text(vx) + ", " + exact_text(vy) + "]}}";
-  return out;
-}
-
-// Family "push_motion_cone" (push --contact, issue 33). push_near_tie's support and pusher point; d = c − p. With
-// μ = 1/2 and n = (dx + dy/2, dy − dx/2), the left edge n + μ·rot90 n = (5/4)·d points at c: the translation along d
-// has its force D·d̂ through c and p, on that edge — its velocity d is on an edge of the motion cone. The velocity
-// d + s·10^-k·rot90(d): turned ccw (s = 1, `above`) the sticking candidate's force turns ccw past the left edge (the
-// force turns with the velocity, PU-2 §5): it slides left; turned cw the force is inside the cone: it sticks.
-Family_scene push_motion_cone(const Family& fam, double eps, Rng& r) {
+// The scene of the pushing families: 3–8 support points with 3-decimal places, forces and coefficients (every force
+// given: the centre of friction c exact), a pusher at a 3-decimal point p with μ = 1/2, d = c − p, its normal from
+// `normal`(d), and its velocity d + s·10^-k·rot90(d) — s = 1 when `above` and `ccw_above`, or when neither; else −1.
+template <class Normal>
+Family_scene push_family(const Family& fam, double eps, Rng& r, bool ccw_above, Normal normal) {
   const int k = decimal_exponent(eps);
   Family_scene out = known_side(fam, eps, r);
   const int n = r.integer(3, 8);
@@ -1032,13 +1004,30 @@ Family_scene push_motion_cone(const Family& fam, double eps, Rng& r) {
   }
   const Rational px = short_decimal(r, -4000, 4000, 3), py = short_decimal(r, -4000, -2500, 3);
   const Rational dx = mx / d - px, dy = my / d - py;
-  const Rational nx = dx + dy / 2, ny = dy - dx / 2;
-  const Rational e = Rational(out.above ? 1 : -1) * Rational(Integer(1), power_of_ten(k));
-  const Rational vx = dx - e * dy, vy = dy + e * dx;  // d + s ε rot90(d)
-  out.text = "{\"wrenchkit\": 1, \"name\": \"push_motion_cone\", \"support\": {\"points\": [" + points +
+  const auto [nx, ny] = normal(dx, dy);
+  const Rational e = Rational(out.above == ccw_above ? 1 : -1) * Rational(Integer(1), power_of_ten(k));
+  const Rational vx = dx - e * dy, vy = dy + e * dx;  // d + s ε rot90(d), rot90(d) = (−dy, dx)
+  out.text = "{\"wrenchkit\": 1, \"name\": \"" + std::string(fam.name) + "\", \"support\": {\"points\": [" + points +
              "]}, \"pusher\": {\"at\": [" + exact_text(px) + ", " + exact_text(py) + "], \"normal\": [" + exact_text(nx) +
              ", " + exact_text(ny) + "], \"mu\": \"1/2\", \"velocity\": [" + exact_text(vx) + ", " + exact_text(vy) + "]}}";
   return out;
+}
+
+// Family "push_near_tie" (push, issue 33): the normal d (the line p → c is inside the cone) and μ = 1/2, so the edges
+// vote apart and the velocity decides; (p − c) × v = −s·10^-k·|d|², so it votes ccw iff s < 0 (`above`: ccw).
+Family_scene push_near_tie(const Family& fam, double eps, Rng& r) {
+  return push_family(fam, eps, r, false, [](const Rational& dx, const Rational& dy) { return std::pair{dx, dy}; });
+}
+
+// Family "push_motion_cone" (push --contact, issue 33): with μ = 1/2 and n = (dx + dy/2, dy − dx/2), the left edge
+// n + μ·rot90 n = (5/4)·d points at c: the translation along d has its force D·d̂ through c and p, on that edge — its
+// velocity d is on an edge of the motion cone. Turned ccw (s = 1, `above`) the sticking candidate's force turns ccw
+// past the left edge (the force turns with the velocity, PU-2 §5): it slides left; turned cw the force is inside the
+// cone: it sticks.
+Family_scene push_motion_cone(const Family& fam, double eps, Rng& r) {
+  return push_family(fam, eps, r, true, [](const Rational& dx, const Rational& dy) {
+    return std::pair{Rational(dx + dy / 2), Rational(dy - dx / 2)};
+  });
 }
 
 const char* naive_push_contact(const Scene& scene) {

@@ -186,8 +186,6 @@ Rational root_bound(const Poly& p) {
   return 1 + m;
 }
 
-// The simplest rational (least denominator, then numerator) in [l, h], 0 ≤ l ≤ h.
-Rational simplest(const Rational& l, const Rational& h) { return simplest_in(l, h); }
 
 // The edges as families a + μ b: each point contact's left (a + μ b) and right (a − μ b), each wrench contact's wrench
 // (b = 0), and the load (b = 0) when asked.
@@ -420,7 +418,7 @@ std::optional<double> narrow(const std::vector<double>& r, Rational& lo, Rationa
   const auto gap = [&](std::size_t j) -> Rational {  // a simple rational between r[j−1] and r[j] (j = K: beyond)
     if (j == K) return top ? *top : Rational(std::ceil(2 * r[K - 1] + 1));
     const double w = r[j] - (j ? r[j - 1] : 0.0);
-    return simplest(Rational(r[j] - 3 * w / 4), Rational(r[j] - w / 4));
+    return simplest_in(Rational(r[j] - 3 * w / 4), Rational(r[j] - w / 4));
   };
   if (K > 0) {
     hi = gap(K);
@@ -505,7 +503,7 @@ void search(Critical_mu& out, const std::vector<Minor>& P, Rational lo, Rational
     for (int t = 0; t < 200 && other != s; ++t, other = (other + s) / 2) {
       if (t == 6 && (at_s ? lo : hi) != s) other = at_s ? lo : hi;
       if (!all_constant_on(P, s, other, filter, last_failed)) continue;
-      other = at_s ? simplest(other, (other + s) / 2) : simplest((other + s) / 2, other);
+      other = at_s ? simplest_in(other, (other + s) / 2) : simplest_in((other + s) / 2, other);
       if (holds(other, true) == at_s) return false;  // the same answer on both sides: s is not μ*
       out.kind = Critical_kind::value;
       out.lower = out.upper = s;
@@ -522,7 +520,7 @@ void search(Critical_mu& out, const std::vector<Minor>& P, Rational lo, Rational
   if (hint && std::isfinite(*hint)) {
     const double d = std::abs(*hint) * 0x1p-30 + 0x1p-60;
     const Rational a = std::max(lo, Rational(*hint - d)), b = std::min(hi, Rational(*hint + d));
-    if (a <= b && exact_at(simplest(a, b))) return;
+    if (a <= b && exact_at(simplest_in(a, b))) return;
   }
   for (int bits : {32, 64, 128, 256}) {
     if (const std::optional<Rational> root = bisect_until((hi + 1) / two_to(bits))) {  // (absolute near 0: μ* may be 0)
@@ -531,7 +529,7 @@ void search(Critical_mu& out, const std::vector<Minor>& P, Rational lo, Rational
       lo = lo0, hi = hi0;
       bisect_until((hi + 1) / two_to(bits));
     }
-    if (exact_at(simplest(lo, hi))) return;
+    if (exact_at(simplest_in(lo, hi))) return;
   }
   for (;;) {
     if (const std::optional<Rational> root = bisect_until(tol * (hi + 1 / two_to(64)))) {
