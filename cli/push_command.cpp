@@ -70,8 +70,12 @@ void write_push(Json_writer& w, const Push_item& r) {
     }
     if ((c.mode == Push_mode::slides_left || c.mode == Push_mode::slides_right)) {
       // the body's velocity at the pusher v + slip·rot90(n), its rate ω, both certified brackets (PU-2 §5)
+      if (c.pivot) {  // the sticking motion is the rotation about that support point; its facet's forces all beyond the edge
+        w.member("sticking_pivot", *c.pivot);
+        w.key("sticking_omega").array().rational(c.omega_lo).rational(c.omega_hi).end_array();
+      }
       if (c.has_motion) {
-        if (c.pivot) w.member("pivot", *c.pivot);  // rotating about that support point (exact slip and rate)
+        if (c.motion_pivot) w.member("pivot", *c.motion_pivot);  // rotating about that support point (exact slip and rate)
         w.key("slip").array().rational(c.slip_lo).rational(c.slip_hi).end_array();
         write_approx(w, "slip", {c.slip_lo, c.slip_hi});
         w.key("omega").array().rational(c.motion_lo).rational(c.motion_hi).end_array();
@@ -138,6 +142,12 @@ std::string push_human(const Push_item& r, const std::string& source) {
     } else {
       s << " — the contact slides, the pusher's force on the friction cone's " << (c.mode == Push_mode::slides_left ? "left" : "right")
         << " edge";
+      if (c.pivot) {
+        const Support_point& sp = r.scene.support->points[*c.pivot];
+        s << " (moving with the pusher the body would turn about the support point " << *c.pivot << " at "
+          << vec_text(sp.at) << ", and every force of that facet of the limit surface through the pusher is beyond the "
+          << (c.mode == Push_mode::slides_left ? "left" : "right") << " edge)";
+      }
       if (!c.has_motion) {
         s << "; the body's motion: " << c.motion_why << "\n";
       } else {
@@ -145,9 +155,9 @@ std::string push_human(const Push_item& r, const std::string& source) {
         s << "; the body's velocity at the pusher is v + τ" << vec_text(t) << " (it slips along the pusher) with τ ";
         if (c.slip_lo == c.slip_hi) s << "= " << number_text(c.slip_lo);
         else s << "in [" << decimal_text(c.slip_lo, 10) << ", " << decimal_text(c.slip_hi, 10) << "]";
-        if (c.pivot) {
-          const Support_point& sp = r.scene.support->points[*c.pivot];
-          s << ", turning at " << number_text(c.motion_lo) << " about the support point " << *c.pivot << " at "
+        if (c.motion_pivot) {
+          const Support_point& sp = r.scene.support->points[*c.motion_pivot];
+          s << ", turning at " << number_text(c.motion_lo) << " about the support point " << *c.motion_pivot << " at "
             << vec_text(sp.at) << " (a pivot: a facet of the limit surface)\n";
         } else if (c.motion_lo == c.motion_hi) {
           s << ", translating (no rotation)\n";

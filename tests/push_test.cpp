@@ -366,7 +366,7 @@ TEST(PushContact, StickingPivotWorkedByHand) {
   refused_here(R"("pivot": 0)", R"("pivot": 1)", "not perpendicular");
   refused_here(R"("force": ["9/16", "27/16"])", R"("force": ["1", "0"])", "not strictly inside the friction cone");
   refused_here(R"("force": ["9/16", "27/16"])", R"("force": ["1", "5"])", "no force of the pivot's facet");  // (F = (3/8, 15/8): |F − F'|² > 1)
-  refused_here(R"("mode": "sticks")", R"("mode": "impending")", "a contact-level pivot is a sticking claim");
+  refused_here(R"("mode": "sticks")", R"("mode": "impending")", "\"force\" is a sticking pivot's");
   // the third leg heavier: M' = 1 + 3ρ > √2 for ρ = 1/4, the jump misses 0 — the root is no pivot, the usual bracket
   const Push_item b = answer_push(scene(R"({"at": [0, 2], "force": "1/4", "mu": 1})", "[1, 1]"), "test", Request{}, q);
   ASSERT_EQ(b.status, Status::answered) << b.message;
@@ -383,17 +383,87 @@ TEST(PushContact, StickingPivotWorkedByHand) {
   }
 }
 
+// [PU-2 §8] Sliding from a sticking pivot, worked by hand: the legs of StickingPivotWorkedByHand with the pusher's μ
+// lowered. The sticking motion is still the rotation about (0, 0) at ω = 1 (M' = 11/8 < √2), its forces through p the
+// chord F_x + F_y = 9/4 of the unit disc about F' = (−1/8, 1): middle (9/16, 27/16), half-length √(1 − M'²/|d|²) =
+// √(7/128) along (1, −1)/√2, so its ends are ((9 ± √7)/16, (27 ∓ √7)/16). Every force of it is beyond the right edge
+// (μ, 1) — F_x > μ F_y — exactly when μ < (9 − √7)/(27 + √7) ≈ 0.2143394. The certificate's inequality at μ = 1/5, with
+// l = −rot90(e_R) = (1, −1/5): A = |d|² l·F' − M' l·rot90(d) = 2(−13/40) − (11/8)(−4/5) = 9/20 > 0 and A² = 81/400 >
+// (l·d)²(ρ²|d|² − M'²) = (36/25)(7/64) = 63/400. μ = 3/14 (5·10⁻⁵ below the threshold) slides too; 134/625 (6·10⁻⁵
+// above) sticks.
+TEST(PushContact, SlidingFromAStickingPivotWorkedByHand) {
+  Push_query q;
+  q.contact = true;
+  const auto scene = [](const std::string& mu) {
+    return R"({"wrenchkit": 1, "support": {"points": [{"at": [0, 0], "force": 1, "mu": 1}, {"at": [2, 0], "force": 1, "mu": 1}, {"at": [0, 2], "force": "1/8", "mu": 1}]}, "pusher": {"at": [1, -1], "normal": [0, 1], "mu": ")" +
+           mu + R"(", "velocity": [1, 1]}})";
+  };
+  for (const char* mu : {"1/5", "3/14", "134/625"}) {
+    const std::string t = scene(mu);
+    const Push_item a = answer_push(t, "test", Request{}, q);
+    ASSERT_EQ(a.status, Status::answered) << a.message;
+    const Push_contact& c = *a.push.contact;
+    const bool slides = std::string(mu) != "134/625";
+    EXPECT_EQ(c.mode, slides ? Push_mode::slides_right : Push_mode::sticks) << mu << ": " << c.why;
+    ASSERT_TRUE(c.pivot) << mu;
+    EXPECT_EQ(*c.pivot, 0u);
+    EXPECT_EQ(c.omega_lo, 1);
+    EXPECT_EQ(c.omega_hi, 1);
+    EXPECT_EQ(c.force.has_value(), !slides);
+    EXPECT_EQ(wrenchkit_checker::check(t, a.certificate).outcome, wrenchkit_checker::Outcome::accepted) << a.certificate;
+    if (!slides) continue;
+    // the sliding motion: it slips right (τ > 0) and turns ccw, near the pivot's rate
+    ASSERT_TRUE(c.has_motion) << c.motion_why;
+    EXPECT_GT(c.slip_lo, 0);
+    EXPECT_GT(c.motion_lo, Rational(9, 10));
+    EXPECT_LT(c.motion_hi, 1);
+    refused(t, a.certificate, R"("mode": "slides right")", R"("mode": "slides left")", "not every force of the pivot's facet");
+    refused(t, a.certificate, R"("pivot": 0)", R"("pivot": 1)", "not perpendicular");
+    refused(t, a.certificate, R"("omega": ["1", "1"])", R"("omega": ["2", "2"])", "the rotation about the pivot has omega 1");
+  }
+  // The same sliding claim on the scene with μ = 1/4, where the chord crosses the right edge: refused.
+  const Push_item a = answer_push(scene("1/5"), "test", Request{}, q);
+  EXPECT_EQ(wrenchkit_checker::check(scene("1/4"), a.certificate).outcome, wrenchkit_checker::Outcome::rejected);
+}
+
+// [PU-2 §8] The tangent a pivot: legs (0, 0) (ρ 1), (±1, 1) (ρ 1/8 each); the pusher at (0, −1), normal (0, 1), μ =
+// 1/10, moving (1, 1). The tangent t = (−1, 0) is ⟂ the line to (0, 0): the rotation about it at ω = −1 moves p with t.
+// The others then move along (1, ∓1)/√2: F' = (√2/8, 0), M' = −3/(4√2) ≈ −0.530 > −ρ_0|d| = −1, so the jump holds 0 and
+// F(t) is the chord F_x = √2/8 − 3/(4√2) = −√2/4 ≈ −0.3536, |F_y| ≤ √(1 − 9/32) ≈ 0.848. The right edge (1/10, 1) has
+// e_R × F = F_y/10 − F_x ≥ 0.3536 − 0.0848 > 0 on all of it: e_R is among the forces that push, and the contact slides
+// right (before, the tangent's bracket closed in on the pivot without deciding: undecided).
+TEST(PushContact, TheTangentAPivotWorkedByHand) {
+  Push_query q;
+  q.contact = true;
+  const std::string t =
+      R"({"wrenchkit": 1, "support": {"points": [{"at": [0, 0], "force": 1, "mu": 1}, {"at": [1, 1], "force": "1/8", "mu": 1}, {"at": [-1, 1], "force": "1/8", "mu": 1}]}, "pusher": {"at": [0, -1], "normal": [0, 1], "mu": "1/10", "velocity": [1, 1]}})";
+  const Push_item a = answer_push(t, "test", Request{}, q);
+  ASSERT_EQ(a.status, Status::answered) << a.message;
+  const Push_contact& c = *a.push.contact;
+  EXPECT_EQ(c.mode, Push_mode::slides_right) << c.why;
+  ASSERT_TRUE(c.tangent_pivot);
+  EXPECT_EQ(*c.tangent_pivot, 0u);
+  EXPECT_EQ(c.tangent_lo, -1);
+  EXPECT_EQ(c.tangent_hi, -1);
+  EXPECT_FALSE(c.pivot);
+  EXPECT_TRUE(c.has_motion) << c.motion_why;
+  EXPECT_EQ(wrenchkit_checker::check(t, a.certificate).outcome, wrenchkit_checker::Outcome::accepted) << a.certificate;
+  refused(t, a.certificate, R"("tangent_pivot": 0)", R"("tangent_pivot": 1)", "not perpendicular");
+  refused(t, a.certificate, R"("tangent_omega": ["-1", "-1"])", R"("tangent_omega": ["-2", "-2"])", "has omega -1");
+}
+
 // [PU-2 §7] On random supports (fixed seed) with the pusher's velocity perpendicular to the line to a random leg. The
 // velocity turned by ±10⁻⁹ (no leg at rest: the ordinary bracket) is the oracle: its force is near the ccw (cw) end of
 // the pivot's chord of forces, so where the engine answers a sticking pivot (accepted by the checker) the two turned
 // velocities do not both slide past the same edge, and one that sticks turns at a rate within 10⁻³ of the pivot's;
-// where it says the facet misses the cone, neither sticks.
+// where it says every force of the facet is beyond an edge (PU-2 §8: it slides from the facet), both slide past that
+// edge — and every answer's certificate is accepted by the checker.
 TEST(PushContact, StickingPivotsAgreeWithTheirNeighbours) {
   std::mt19937_64 rng(20261129);
   std::uniform_int_distribution<int> coord(-10, 10), force(1, 10), tenth(1, 10), small(-5, 5), count(2, 6);
   Push_query q;
   q.contact = true;
-  int pivots = 0, missed = 0, both_stick = 0;
+  int pivots = 0, missed = 0, both_stick = 0, slides_with_motion = 0;
   for (int sc = 0; sc < 400; ++sc) {
     const std::uint64_t seed = rng();
     std::mt19937_64 r(seed);
@@ -423,16 +493,15 @@ TEST(PushContact, StickingPivotsAgreeWithTheirNeighbours) {
     const Push_item a = answer_push(t, "test", Request{}, q);
     if (a.status != Status::answered || !a.push.contact) continue;
     const Push_contact& c = *a.push.contact;
-    const bool pivot = c.pivot.has_value() && c.mode == Push_mode::sticks;
-    const bool misses = c.mode == Push_mode::undecided && c.why.find("miss the friction cone") != std::string::npos;
-    if (!pivot && !misses) continue;
+    ASSERT_NE(c.mode, Push_mode::undecided) << c.why << "\n" << test::dump_failure(t, "sticking_pivot");
+    if (!c.pivot) continue;
+    const bool pivot = c.mode == Push_mode::sticks, misses = !pivot;
     (pivot ? pivots : missed) += 1;
-    if (pivot) {
-      const auto& pv = at[*c.pivot];  // (that leg, or another on the same line through p)
-      ASSERT_EQ((pv[0] - px) * vx + (pv[1] - py) * vy, 0) << test::dump_failure(t, "sticking_pivot");
-      ASSERT_EQ(wrenchkit_checker::check(t, a.certificate).outcome, wrenchkit_checker::Outcome::accepted)
-          << test::dump_failure(t, "sticking_pivot");
-    }
+    const auto& pv = at[*c.pivot];  // (that leg, or another on the same line through p)
+    ASSERT_EQ((pv[0] - px) * vx + (pv[1] - py) * vy, 0) << test::dump_failure(t, "sticking_pivot");
+    ASSERT_EQ(wrenchkit_checker::check(t, a.certificate).outcome, wrenchkit_checker::Outcome::accepted)
+        << test::dump_failure(t, "sticking_pivot");
+    if (misses) slides_with_motion += c.has_motion;
     const Rational e(1, 1000000000);
     Push_mode m[2];
     for (const int side : {0, 1}) {  // v ± 10⁻⁹·rot90(v)
@@ -445,8 +514,8 @@ TEST(PushContact, StickingPivotsAgreeWithTheirNeighbours) {
         ASSERT_LT(abs(n.push.contact->omega_lo - c.omega_lo), abs(c.omega_lo) / 1000 + Rational(1, 1000000))
             << "seed " << seed << "\n" << test::dump_failure(t, "sticking_pivot");
       }
-      if (!pivot) {
-        ASSERT_NE(m[side], Push_mode::sticks) << "seed " << seed << "\n" << test::dump_failure(t, "sticking_pivot");
+      if (misses) {
+        ASSERT_EQ(m[side], c.mode) << "seed " << seed << "\n" << test::dump_failure(t, "sticking_pivot");
       }
     }
     if (pivot) {
@@ -458,8 +527,9 @@ TEST(PushContact, StickingPivotsAgreeWithTheirNeighbours) {
   EXPECT_GT(pivots, 20);
   EXPECT_GT(both_stick, 10);
   EXPECT_GT(missed, 5);
-  std::printf("sticking pivots: %d answered (%d with both neighbours sticking), %d facets missing the cone\n", pivots,
-              both_stick, missed);
+  EXPECT_EQ(slides_with_motion, missed);
+  std::printf("sticking pivots: %d answered (%d with both neighbours sticking); %d slide from the facet (%d with the "
+              "sliding motion)\n", pivots, both_stick, missed, slides_with_motion);
 }
 
 // One model (issue 33): the body's twist that push --contact brackets, handed to the limit surface's own load of a
@@ -509,10 +579,10 @@ TEST(PushContact, TheMotionIsTheLimitSurfacesOwnTwistForThePushersForce) {
     }
     if (pivot) {
       ++pivots;
-      exact_pivots += c.pivot.has_value();
+      exact_pivots += (sliding ? c.motion_pivot : c.pivot).has_value();
       continue;
     }
-    EXPECT_FALSE(c.pivot.has_value()) << "seed " << seed << ": an exact pivot whose points all move\n" << text;
+    EXPECT_FALSE((sliding ? c.motion_pivot : c.pivot).has_value()) << "seed " << seed << ": an exact pivot whose points all move\n" << text;
     const double fx = L.load[0].v, fy = L.load[1].v, m = L.load[2].v, f = std::hypot(fx, fy);
     ASSERT_GT(f, 0) << "seed " << seed << "\n" << text;
     const double arm = 10 * std::hypot(px, py) + 10;

@@ -37,16 +37,17 @@ std::string push_certificate(const Push_answer& a) {
     const Push_contact& c = *a.contact;
     w.key("contact").object().member("mode", push_mode_name(c.mode)).member("bits", c.bits);
     w.key("omega").array().rational(c.omega_lo).rational(c.omega_hi).end_array();
-    if (c.mode == Push_mode::sticks && c.pivot) {  // §8.2: sticking about a support point (PU-2 §7)
+    if (c.pivot) {  // §8.2: the sticking motion a rotation about a support point (PU-2 §7–8)
       w.member("pivot", *c.pivot);
-      w.key("force").array().rational(c.force->x).rational(c.force->y).end_array();
+      if (c.force) w.key("force").array().rational(c.force->x).rational(c.force->y).end_array();  // sticks
     }
     if (c.has_tangent) w.key("tangent_omega").array().rational(c.tangent_lo).rational(c.tangent_hi).end_array();
+    if (c.tangent_pivot) w.member("tangent_pivot", *c.tangent_pivot);  // F(t) a facet's chord (PU-2 §8)
     if (c.has_motion) {  // §8.2: the sliding motion (PU-2 §5)
       w.key("sliding").object();
-      if (c.pivot) w.member("pivot", *c.pivot);  // the rotation about that support point (PU-2 §6)
+      if (c.motion_pivot) w.member("pivot", *c.motion_pivot);  // the rotation about that support point (PU-2 §6)
       w.key("slip").array().rational(c.slip_lo).rational(c.slip_hi).end_array();
-      if (!c.pivot) {
+      if (!c.motion_pivot) {
         w.key("slip_omega").array();
         for (const auto& b : c.slip_omega) w.array().rational(b[0]).rational(b[1]).end_array();
         w.end_array();

@@ -218,29 +218,35 @@ double step_hint(const Vec2& v, const Vec2& t) {
   return s == 0 ? 1.0 : s.get_d();
 }
 
-// [PU-2 §6–7] Does the facet of the rotation about support point j — rate ω, velocity u at p, so u = −ω·rot90(d_j),
-// d_j = r_j − p — hold a force λ e through p, λ > 0? Its loads are the other points' friction (unit speeds v̂_i) plus
-// ρ_j g at r_j for any |g| ≤ 1; the moment about p gives λ = (d_j × F' − M')/(d_j × e) (F', M': the others' force and
-// moment about p), and |λ e − F'| < ρ_j certifies g — strictly, with the square roots bracketed (`bits`). False when not
-// certified (or another point is at rest too).
+// [lo, hi] of k·x for x in [x0, x1]
+void scaled_range(const Rational& k, const Rational (&x)[2], Rational (&out)[2]) {
+  out[0] = k * x[0], out[1] = k * x[1];
+  if (out[0] > out[1]) std::swap(out[0], out[1]);
+}
+
+// [PU-2 §6–8] The facet of the rotation about support point j — rate ω, velocity u at p, so u = −ω·rot90(d_j),
+// d_j = r_j − p: its loads are the other points' friction (unit speeds v̂_i) plus ρ_j g at r_j for any |g| ≤ 1. The
+// others' force F' and moment M' about p, bracketed with the square roots at `bits`; false when another point is at
+// rest too.
+bool facet_rest(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& p, const Vec2& u, const Rational& omega,
+                int bits, Rational (&fx)[2], Rational (&fy)[2], Rational (&m)[2]) {
+  std::vector<Rho_point> rest;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (i != j) rest.push_back(pts[i]);
+  return interval_sum(rest, p, u, {1, 0}, false, omega, omega, bits, fx[0], fx[1]) &&
+         interval_sum(rest, p, u, {0, 1}, false, omega, omega, bits, fy[0], fy[1]) &&
+         interval_sum(rest, p, u, {0, 0}, true, omega, omega, bits, m[0], m[1]);
+}
+
+// [PU-2 §6–7] Does the facet hold a force λ e through p, λ > 0? The moment about p gives λ = (d_j × F' − M')/(d_j × e),
+// and |λ e − F'| < ρ_j certifies g — strictly, with the square roots bracketed (`bits`). False when not certified.
 bool facet_holds(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& p, const Vec2& u, const Rational& omega,
                  const Vec2& e, int bits) {
   const Vec2 d = minus(pts[j].at, p);
   const Rational de = cross(d, e);
-  if (pts[j].rho == 0 || de == 0) return false;
-  std::vector<Rho_point> rest;
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    if (i != j) rest.push_back(pts[i]);
   Rational fx[2], fy[2], m[2];
-  if (!interval_sum(rest, p, u, {1, 0}, false, omega, omega, bits, fx[0], fx[1]) ||
-      !interval_sum(rest, p, u, {0, 1}, false, omega, omega, bits, fy[0], fy[1]) ||
-      !interval_sum(rest, p, u, {0, 0}, true, omega, omega, bits, m[0], m[1]))
-    return false;  // another point at rest too
+  if (pts[j].rho == 0 || de == 0 || !facet_rest(pts, j, p, u, omega, bits, fx, fy, m)) return false;
   // λ (d × e) = d × F' − M' = d.x F'_y − d.y F'_x − M', by interval ends
-  const auto scaled_range = [](const Rational& k, const Rational (&x)[2], Rational (&out)[2]) {
-    out[0] = k * x[0], out[1] = k * x[1];
-    if (out[0] > out[1]) std::swap(out[0], out[1]);
-  };
   Rational a[2], b[2];
   scaled_range(d.x, fy, a), scaled_range(-d.y, fx, b);
   Rational num[2] = {a[0] + b[0] - m[1], a[1] + b[1] - m[0]}, lambda[2];
@@ -252,6 +258,25 @@ bool facet_holds(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& p
   scaled_range(e.x, lambda, ex), scaled_range(e.y, lambda, ey);
   gx[0] = ex[0] - fx[1], gx[1] = ex[1] - fx[0], gy[0] = ey[0] - fy[1], gy[1] = ey[1] - fy[0];
   return square_max(gx[0], gx[1]) + square_max(gy[0], gy[1]) < pts[j].rho * pts[j].rho;
+}
+
+// [PU-2 §8] Does the facet hold forces through p at all, and is every one of them strictly on the positive side of l
+// (l·F > 0)? They are the chord S = {F : d × F = d × F' − M', |F − F'| ≤ ρ_j}: not empty, and more than a point, when
+// M'² < ρ_j²|d|² (then g's jump at the pivot holds 0 strictly); its middle F' − M'·rot90(d)/|d|², its half-length
+// √(ρ_j² − M'²/|d|²) along d̂. So l·F > 0 on S when A = |d|²(l·F') − M'(l·rot90 d) > 0 and A² > (l·d)²(ρ_j²|d|² − M'²).
+bool facet_beyond(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& p, const Vec2& u, const Rational& omega,
+                  const Vec2& l, int bits) {
+  const Vec2 d = minus(pts[j].at, p);
+  Rational fx[2], fy[2], m[2];
+  if (pts[j].rho == 0 || !facet_rest(pts, j, p, u, omega, bits, fx, fy, m)) return false;
+  const Rational dd = dot(d, d), reach = pts[j].rho * pts[j].rho * dd;
+  const Rational m2_max = std::max(Rational(m[0] * m[0]), Rational(m[1] * m[1]));
+  const Rational m2_min = m[0] <= 0 && m[1] >= 0 ? Rational(0) : std::min(Rational(m[0] * m[0]), Rational(m[1] * m[1]));
+  if (!(m2_max < reach)) return false;
+  Rational a[2], b[2], c[2];
+  scaled_range(l.x * dd, fx, a), scaled_range(l.y * dd, fy, b), scaled_range(-dot(l, rot90(d)), m, c);
+  const Rational A = a[0] + b[0] + c[0], ld = dot(l, d);
+  return A > 0 && A * A > ld * ld * (reach - m2_min);
 }
 
 // [PU-2 §6] Is the sliding motion the rotation about support point j (a pivot: a facet of the limit surface)? Its
@@ -272,9 +297,11 @@ bool pivot_motion(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& 
 // ω_j = −(u · rot90 d_j)/|d_j|² moves p with u, and g jumps across 0 there (the caller's g_sign). Its facet's forces
 // through p lie on the chord of the line d_j × F = d_j × F' − M' inside the disc |F − F'| ≤ ρ_j; the contact sticks
 // when a force of that chord is strictly inside the friction cone: the doubles propose the middle of the chord's part
-// inside the cone, rounded to a rational direction e; the exact cone test and facet_holds certify it. Fills `r`
-// (sticks, the pivot, the rate, the force's direction) and returns true; false when not certified (r.why says why).
-bool sticking_pivot(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& p, const Vec2& u, const Rational& w,
+// inside the cone, rounded to a rational direction e; the exact cone test and facet_holds certify it: `sticks`, with `r`
+// filled (the pivot, the rate, the force's direction). When the doubles put S outside the cone, §8: S beyond one edge
+// (every force of it), certified by facet_beyond: `slides_left` or `slides_right` with the pivot and the rate in `r`
+// (the caller answers the rest). `undecided` when not certified (r.why says why).
+Push_mode sticking_pivot(const std::vector<Rho_point>& pts, std::size_t j, const Vec2& p, const Vec2& u, const Rational& w,
                     const Vec2& eL, const Vec2& eR, Push_contact& r) {
   const double dx = pts[j].at.x.get_d() - p.x.get_d(), dy = pts[j].at.y.get_d() - p.y.get_d(), wd = w.get_d();
   double fx = 0, fy = 0, m = 0;  // F', M' in doubles (proposals only)
@@ -301,10 +328,20 @@ bool sticking_pivot(const std::vector<Rho_point>& pts, std::size_t j, const Vec2
   const double rx = eR.x.get_d(), ry = eR.y.get_d(), lx = eL.x.get_d(), ly = eL.y.get_d();
   cut(rx * f0y - ry * f0x, rx * uy - ry * ux);
   cut(f0x * ly - f0y * lx, ux * ly - uy * lx);
+  const auto pivot_at = [&](int bits) { r.pivot = j, r.omega_lo = r.omega_hi = w, r.bits = bits; };
+  if (h2 > 0 && !(lo < hi)) {  // §8: S misses the cone — beyond e_L (e_L × F > 0) or beyond e_R (e_R × F < 0)?
+    const double mx = fx - off * -uy, my = fy - off * ux;  // the chord's middle
+    const bool left = lx * my - ly * mx > 0, right = rx * my - ry * mx < 0;
+    if (left != right) {
+      const Vec2 l = left ? rot90(eL) : Vec2{-rot90(eR).x, -rot90(eR).y};
+      for (int bits = 64; bits <= 1024; bits *= 2)
+        if (facet_beyond(pts, j, p, u, w, l, bits)) return pivot_at(bits), left ? Push_mode::slides_left : Push_mode::slides_right;
+    }
+  }
   if (!(h2 > 0) || !(lo < hi)) {
     r.why = "a rotation about support point " + std::to_string(j) + " (a facet of the limit surface) meets the pusher's "
-            "motion, and its forces miss the friction cone: the contact slides from it — not yet answered";
-    return false;
+            "motion, and its forces are within the resolution of the friction cone's edge";
+    return Push_mode::undecided;
   }
   // the middle of the chord's part in the cone, as a readable direction (each coordinate's simplest rational within a
   // 10⁻⁶ of the chord's length, scaled to that length: any direction of the part will do)
@@ -314,17 +351,66 @@ bool sticking_pivot(const std::vector<Rho_point>& pts, std::size_t j, const Vec2
   if (cross(eR, e) > 0 && cross(e, eL) > 0)
     for (int bits = 64; bits <= 1024; bits *= 2)
       if (facet_holds(pts, j, p, u, w, e, bits)) {
-        r.mode = Push_mode::sticks;
-        r.pivot = j;
+        pivot_at(bits);
         r.force = e;
-        r.omega_lo = r.omega_hi = w;
-        r.bits = bits;
-        return true;
+        return Push_mode::sticks;
       }
   r.why = "a rotation about support point " + std::to_string(j) + " (a facet of the limit surface) meets the pusher's "
           "motion, and its forces are within the resolution of the friction cone's edge";
-  return false;
+  return Push_mode::undecided;
 }
+
+// [PU-2 §3, §8] The tangent velocity t = rot90 n at p: its force F(t) bounds the half-plane H of the forces that push
+// (e in H: e × F(t) > 0). Its sticking candidate, proposed by the doubles; or, when t ⟂ r_k − p and g's jump at that
+// rotation's rate ω_k holds 0, the rotation about support point k (a facet of K_p): its forces through p are the facet's
+// chord, and e is in H when every one of them is on e's left (facet_beyond), out of it when every one is on its right.
+class Tangent {
+ public:
+  Tangent(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& t, const Rational& tolerance)
+      : pts_(pts), p_(p), t_(t) {
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      const Vec2 d = minus(pts[k].at, p);
+      if (pts[k].rho == 0 || (d.x == 0 && d.y == 0) || dot(t, d) != 0) continue;
+      const Rational w = -dot(t, rot90(d)) / dot(d, d);
+      if (g_sign(pts, p, t, w, bits_) != 2) continue;
+      pivot_ = k, w_ = w;
+      return;
+    }
+    bits_ = 64;
+    const double wt = Double_points(pts, p).rate(t.x.get_d(), t.y.get_d());
+    const double pad = std::max(1e-300, 0.25 * tolerance.get_d() * std::max(1.0, std::fabs(wt)));
+    if (std::isfinite(wt) && wt != 0) candidate_.emplace(pts, p, t, Rational(wt - pad), Rational(wt + pad));
+    else candidate_.emplace(pts, p, t);
+  }
+  const std::optional<Candidate>& candidate() const { return candidate_; }
+  const std::optional<std::size_t>& pivot() const { return pivot_; }
+  // +1: e certainly in H; −1: certainly not; 0: not (yet) certain
+  int side(const Vec2& e) {
+    if (candidate_) return candidate_->sign(rot90(e));
+    for (const auto& [seen, sg] : sides_)
+      if (seen.x == e.x && seen.y == e.y) return sg;
+    int sg = 0;
+    const Vec2 l = rot90(e), minus_l{-l.x, -l.y};
+    for (int b = std::max(64, bits_); b <= 1024 && sg == 0; b *= 2)
+      if (facet_beyond(pts_, *pivot_, p_, t_, w_, l, b)) sg = 1, bits_ = b;
+      else if (facet_beyond(pts_, *pivot_, p_, t_, w_, minus_l, b)) sg = -1;
+    sides_.push_back({e, sg});
+    return sg;
+  }
+  bool narrow() { return candidate_ && candidate_->narrow(); }
+  Rational lo() const { return candidate_ ? candidate_->lo() : w_; }
+  Rational hi() const { return candidate_ ? candidate_->hi() : w_; }
+  int bits() const { return candidate_ ? candidate_->bits() : bits_; }
+
+ private:
+  const std::vector<Rho_point>& pts_;
+  Vec2 p_, t_;
+  std::optional<Candidate> candidate_;
+  std::optional<std::size_t> pivot_;
+  Rational w_;
+  int bits_ = 64;
+  std::vector<std::pair<Vec2, int>> sides_;
+};
 
 // [PU-2 §5] The body's motion while the contact slides with its force on the edge e: the velocity at p is
 // u(τ) = v + τ t (t = rot90 n: the pusher's normal velocity kept, a slip τ along the tangent) and the force F(u(τ))
@@ -332,8 +418,9 @@ bool sticking_pivot(const std::vector<Rho_point>& pts, std::size_t j, const Vec2
 // monotone), so e × F(u(τ)) changes sign once, from − to +: at τ = 0 it is − when sliding right (F_s beyond e_R,
 // clockwise), + when sliding left. The slip bracket [τ_a, τ_b] has certified signs − at τ_a and + at τ_b (each by its
 // candidate's ω bracket), and the rate's bracket [w0, w1] certified for every τ there: g(w0; u(τ)) < 0 < g(w1; u(τ)).
+// `at_zero`: the sticking candidate (τ = 0); none when the sticking motion is a pivot (§8: its forces all beyond e).
 void sliding_motion(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& v, const Vec2& t, const Vec2& e,
-                    bool right, Candidate& at_zero, const Rational& tolerance, Push_contact& r) {
+                    bool right, const Candidate* at_zero, const Rational& tolerance, Push_contact& r) {
   const Vec2 l = rot90(e);  // l·F = e × F
   // Exact: the edge's line through p passes through the centre of friction. The translation along e, with the
   // pusher's normal velocity, has its force D ê along e: u = k e with k = (v·n)/(e·n), τ* = (u − v)·t / t·t, ω* = 0.
@@ -391,7 +478,7 @@ void sliding_motion(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2
     Rational tau, omega;
     if (pivot_motion(pts, j, p, v, t, e, right, std::max(64, r.bits), tau, omega)) {
       r.slip_lo = r.slip_hi = tau, r.motion_lo = r.motion_hi = omega;
-      r.pivot = j;
+      r.motion_pivot = j;
       r.has_motion = true;
       return;
     }
@@ -423,7 +510,29 @@ void sliding_motion(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2
     const Rational a((*guess)[0] - delta), b((*guess)[0] + delta);
     if (probe(a, ka, &(*guess)[1]) == -1 && probe(b, kb, &(*guess)[2]) == 1) ta = a, tb = b, found = true;
   }
-  if (!found) ka.reset(), kb.reset(), (right ? ka : kb).emplace(at_zero);
+  if (!found) {
+    ka.reset(), kb.reset();
+    if (at_zero) {
+      (right ? ka : kb).emplace(*at_zero);
+    } else {  // §8: τ = 0 is the pivot (no bracket there); its side's sign holds near it — halve toward it
+      for (int i = 0; i < 200; ++i, step /= 2) {
+        const Rational tau = right ? step : -step;
+        const int sg = probe(tau, km);
+        if (sg == 0) break;
+        const bool near = sg == (right ? -1 : 1);
+        (near == right ? ta : tb) = tau, (near == right ? ka : kb).emplace(*km);
+        if (near) {
+          found = ka && kb;  // the far side seen on the way down: bracketed
+          step *= 2;
+          break;
+        }
+      }
+      if (!(right ? ka : kb)) {
+        r.motion_why = "the slip of the sliding motion could not be bracketed (near the pivot)";
+        return;
+      }
+    }
+  }
   for (int i = 0; i < 200 && !found; ++i, step *= 2) {
     const Rational tau = right ? step : -step;
     const int sg = probe(tau, km);
@@ -496,26 +605,7 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
   const Vec2 &eL = edge[0], &eR = edge[1];
   // F in the cone pos{e_R, e_L}: cross(e_R, F) > 0 and cross(F, e_L) > 0; cross(a, F) = rot90(a)·F
   const Vec2 l_right = rot90(eR), l_left{-rot90(eL).x, -rot90(eL).y};
-  // [PU-2 §7] The sticking candidate at a pivot: the pusher's velocity ⟂ r_j − p and g's jump at ω_j holding 0 (then
-  // ω* = ω_j exactly: g is nondecreasing). Only there can a support point be at rest while p moves with u.
-  if (c.mu != 0)
-    for (std::size_t j = 0; j < pts.size(); ++j) {
-      const Vec2 d = minus(pts[j].at, p);
-      if (pts[j].rho == 0 || (d.x == 0 && d.y == 0) || dot(u, d) != 0) continue;
-      const Rational w = -dot(u, rot90(d)) / dot(d, d);
-      int bits = 64;
-      if (g_sign(pts, p, u, w, bits) != 2) continue;  // the jump misses 0: the root is elsewhere
-      sticking_pivot(pts, j, p, u, w, eL, eR, r);
-      return r;
-    }
-  // The sticking candidate: the doubles propose ω* within a quarter of the tolerance, the exact signs keep it (else
-  // the exact search brackets it).
-  const double w_guess = Double_points(pts, p).rate(u.x.get_d(), u.y.get_d());
-  const double w_pad = std::max(1e-300, 0.25 * tolerance.get_d() * std::max(1.0, std::fabs(w_guess)));
-  Candidate stick = std::isfinite(w_guess) && w_guess != 0
-                        ? Candidate(pts, p, u, Rational(w_guess - w_pad), Rational(w_guess + w_pad))
-                        : Candidate(pts, p, u);
-  std::optional<Candidate> plus;  // the candidate of the tangent velocity rot90 n: the end F(t) of the pushing forces
+  std::optional<Tangent> plus;  // the tangent velocity rot90 n: the end F(t) of the pushing forces
   const auto failed = [&](const Candidate& k) {
     if (k.state() == Candidate::State::pivot) {
       r.why = "a rotation about a support point (a facet of the limit surface) meets the pusher's motion: not yet "
@@ -528,6 +618,53 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
     }
     return false;
   };
+  const auto tangent = [&] {  // false (r.why) when its candidate fails
+    if (!plus) plus.emplace(pts, p, t, tolerance);
+    return !plus->candidate() || !failed(*plus->candidate());
+  };
+  const auto keep_tangent = [&] {
+    r.has_tangent = true, r.tangent_lo = plus->lo(), r.tangent_hi = plus->hi(), r.tangent_pivot = plus->pivot();
+    r.bits = std::max(r.bits, plus->bits());
+  };
+  // the edge e in the pushing half-plane H (e × F(t) > 0), the tangent's candidate narrowed until certain; false (r.why)
+  // when it is not or cannot be told
+  const auto in_pushing_half_plane = [&](const Vec2& e) {
+    for (int k = 0; k < 300; ++k) {
+      const int in = plus->side(e);
+      if (in == 1) return keep_tangent(), true;
+      if (in == -1 || !plus->narrow() || !tangent()) break;
+    }
+    if (r.why.empty()) r.why = "the friction-cone edge the pivot's forces passed is not certainly among the forces that push";
+    return false;
+  };
+  // [PU-2 §7] The sticking candidate at a pivot: the pusher's velocity ⟂ r_j − p and g's jump at ω_j holding 0 (then
+  // ω* = ω_j exactly: g is nondecreasing). Only there can a support point be at rest while p moves with u.
+  // Every force of its facet beyond an edge (§8): it slides from the facet, on that edge.
+  if (c.mu != 0)
+    for (std::size_t j = 0; j < pts.size(); ++j) {
+      const Vec2 d = minus(pts[j].at, p);
+      if (pts[j].rho == 0 || (d.x == 0 && d.y == 0) || dot(u, d) != 0) continue;
+      const Rational w = -dot(u, rot90(d)) / dot(d, d);
+      int bits = 64;
+      if (g_sign(pts, p, u, w, bits) != 2) continue;  // the jump misses 0: the root is elsewhere
+      const Push_mode m = sticking_pivot(pts, j, p, u, w, eL, eR, r);
+      if (m == Push_mode::slides_left || m == Push_mode::slides_right) {  // §8: from the facet, on the edge it passed
+        const bool right = m == Push_mode::slides_right;
+        if (!tangent() || !in_pushing_half_plane(right ? eR : eL)) return r;
+        r.mode = m;
+        sliding_motion(pts, p, u, t, right ? eR : eL, right, nullptr, tolerance, r);
+        return r;
+      }
+      r.mode = m;
+      return r;
+    }
+  // The sticking candidate: the doubles propose ω* within a quarter of the tolerance, the exact signs keep it (else
+  // the exact search brackets it).
+  const double w_guess = Double_points(pts, p).rate(u.x.get_d(), u.y.get_d());
+  const double w_pad = std::max(1e-300, 0.25 * tolerance.get_d() * std::max(1.0, std::fabs(w_guess)));
+  Candidate stick = std::isfinite(w_guess) && w_guess != 0
+                        ? Candidate(pts, p, u, Rational(w_guess - w_pad), Rational(w_guess + w_pad))
+                        : Candidate(pts, p, u);
   for (int k = 0; k < 300; ++k) {
     if (failed(stick)) return r;
     const int right = stick.sign(l_right), left = stick.sign(l_left);
@@ -540,15 +677,9 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
       // resists) push into the body, v·n > 0, are the open half-plane H from F(−t) = −F(t) counter-clockwise to F(t),
       // t = rot90 n (PU-2 §3): F_s is in it. It slides on the edge it passed: left when e_L is in H and F_s beyond it
       // (counter-clockwise), right when e_R is in H and F_s beyond it (clockwise).
-      if (!plus) {  // proposed by the doubles as the sticking candidate is
-        const double wt = Double_points(pts, p).rate(t.x.get_d(), t.y.get_d());
-        const double pad = std::max(1e-300, 0.25 * tolerance.get_d() * std::max(1.0, std::fabs(wt)));
-        if (std::isfinite(wt) && wt != 0) plus.emplace(pts, p, t, Rational(wt - pad), Rational(wt + pad));
-        else plus.emplace(pts, p, t);
-      }
-      if (failed(*plus)) return r;
+      if (!tangent()) return r;
       const Vec2 rl = rot90(eL), rr = rot90(eR);
-      const int eL_in = plus->sign(rl), eR_in = plus->sign(rr);  // cross(e, F(t)) > 0: e in H
+      const int eL_in = plus->side(eL), eR_in = plus->side(eR);  // cross(e, F(t)) > 0: e in H
       const int beyond_left = stick.sign(rl), beyond_right = -stick.sign(rr);
       if (eL_in == 1 && beyond_left == 1) r.mode = Push_mode::slides_left;
       else if (eR_in == 1 && beyond_right == 1) r.mode = Push_mode::slides_right;
@@ -567,10 +698,9 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
   }
   r.omega_lo = stick.lo(), r.omega_hi = stick.hi(), r.bits = stick.bits();
   if (plus && (r.mode == Push_mode::slides_left || r.mode == Push_mode::slides_right)) {
-    r.has_tangent = true, r.tangent_lo = plus->lo(), r.tangent_hi = plus->hi();
-    r.bits = std::max(r.bits, plus->bits());
+    keep_tangent();
     const bool right = r.mode == Push_mode::slides_right;
-    sliding_motion(pts, p, u, t, right ? eR : eL, right, stick, tolerance, r);
+    sliding_motion(pts, p, u, t, right ? eR : eL, right, &stick, tolerance, r);
   }
   if (r.mode == Push_mode::undecided && r.why.empty())
     r.why = "the sticking motion's force is within the resolution of a friction-cone edge (the boundary of sticking)";

@@ -68,9 +68,9 @@ struct Push_vote {
 // the half-plane of forces whose normals push — "slides left" on n + μ·rot90 n, "slides right" on n − μ·rot90 n).
 // ω* = 0 exactly when v_p passes through the centre of friction (a translation, F along v_p: exact), and when v_p is
 // perpendicular to r_j − p for a support point j whose facet holds the root (a sticking pivot, §7: the rotation about
-// r_j, sticking when its facet has a force strictly inside the cone). Undecided: a pivot whose facet's forces are
-// outside the cone (sliding from a facet), F within the resolution of a cone edge after narrowing, regions, forces not
-// given. `push --contact` (certificate §8.2).
+// r_j, sticking when its facet has a force strictly inside the cone, sliding when all its forces through p are beyond
+// one edge, §8). Undecided: F (or a pivot's forces) within the resolution of a cone edge after narrowing, regions,
+// forces not given. `push --contact` (certificate §8.2).
 // impending: F exactly on a cone edge (only when exact: ω* = 0, a translation along v_p on the cone's edge).
 enum class Push_mode { sticks, impending, slides_left, slides_right, undecided };
 const char* push_mode_name(Push_mode m);  // "sticks", "impending", "slides left", "slides right", "undecided"
@@ -81,6 +81,9 @@ struct Push_contact {
   // slides: the candidate of the tangent velocity t = rot90 n (its force F(t) bounds the pushing half-plane)
   bool has_tangent = false;
   Rational tangent_lo, tangent_hi;
+  // …or the rotation about this support point (PU-2 §8: t ⟂ r_k − p, tangent_lo = tangent_hi its rate): F(t) is its
+  // facet's chord, every force of which is on the left of the edge slid on
+  std::optional<std::size_t> tangent_pivot;
   int bits = 64;                // the square roots' precision every sign was certified at
   std::string why;              // undecided: the reason
   // slides (PU-2 §5): the body's motion. Its velocity at p is v + τ·rot90(n) (the pusher's, plus the slip τ along the
@@ -90,10 +93,12 @@ struct Push_contact {
   bool has_motion = false;
   Rational slip_lo, slip_hi, motion_lo, motion_hi;
   std::array<std::array<Rational, 2>, 2> slip_omega;
-  // slides as a rotation about this support point (PU-2 §6): slip and rate exact; or sticks as one (§7): the rate
-  // ω* exact (omega_lo = omega_hi), and `force` the direction of a force of its facet strictly inside the cone
+  // the sticking motion is the rotation about this support point (PU-2 §7–8): the rate ω* exact (omega_lo = omega_hi);
+  // sticks with `force` the direction of a force of its facet strictly inside the cone, or slides (§8) with every
+  // force of its facet through p beyond the edge it slides on
   std::optional<std::size_t> pivot;
   std::optional<Vec2> force;
+  std::optional<std::size_t> motion_pivot;  // slides as a rotation about this support point (§6): slip, rate exact
   std::string motion_why;       // slides, but the motion not bracketed: the reason
 };
 Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance);

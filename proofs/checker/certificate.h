@@ -188,7 +188,11 @@ struct Push_part {
   std::size_t bits = 0;
   Q omega[2], tangent[2];
   bool has_tangent = false;
-  // sticking about support point `stick_pivot` (PU-2 §7): a force of its facet along `force`, inside the cone
+  // F(t) the facet of the rotation about support point `tangent_pivot` (PU-2 §8): its chord beyond the claimed edge
+  bool has_tangent_pivot = false;
+  std::size_t tangent_pivot = 0;
+  // the sticking motion the rotation about support point `stick_pivot` (PU-2 §7–8): sticking, a force of its facet
+  // along `force`, inside the cone; sliding, every force of its facet through p beyond the claimed edge
   bool has_stick_pivot = false;
   std::size_t stick_pivot = 0;
   Q force[2];

@@ -156,28 +156,36 @@ int force_sign(const std::vector<Rho>& pts, const Q (&p)[2], const Q (&u)[2], co
   return lo > 0 ? 1 : hi < 0 ? -1 : 0;
 }
 
-// PU-2 §6–7: the facet of the rotation about support point j (rate w, velocity u at p) holds a force along e through
-// p: the other points' force F' and moment M' about p bracketed; lambda = (d x F' - M') / (d x e) certainly > 0 and
-// |lambda e - F'|^2 certainly < rho_j^2 (d = r_j - p).
-void check_facet(const std::vector<Rho>& pts, std::size_t j, const Q (&p)[2], const Q (&u)[2], const Q& w,
-                 const Q (&e)[2], std::size_t bits, const std::string& path, const char* along) {
-  const Rho& pj = pts[j];
-  const Q d[2] = {pj.x - p[0], pj.y - p[1]}, de = d[0] * e[1] - d[1] * e[0];
-  if (sgn(pj.rho) == 0 || sgn(de) == 0)
-    throw Failure{path + ": that support point cannot be the pivot (no friction, or its line is the force's)"};
+// PU-2 §6–8: the facet of the rotation about support point j (rate w, velocity u at p): the other points' force F' and
+// moment M' about p, bracketed (fx, fy, m); d = r_j - p.
+void facet_rest(const std::vector<Rho>& pts, std::size_t j, const Q (&p)[2], const Q (&u)[2], const Q& w,
+                std::size_t bits, const std::string& path, Q (&fx)[2], Q (&fy)[2], Q (&m)[2]) {
+  if (sgn(pts[j].rho) == 0) throw Failure{path + ": that support point cannot be the pivot (no friction)"};
   std::vector<Rho> rest;
   for (std::size_t i = 0; i < pts.size(); ++i)
     if (i != j) rest.push_back(pts[i]);
   const Q ex[2] = {Q(1), Q(0)}, ey[2] = {Q(0), Q(1)}, none[2] = {Q(0), Q(0)};
-  Q fx[2], fy[2], m[2];
   if (!interval(rest, p, u, ex, false, w, w, bits, fx[0], fx[1]) ||
       !interval(rest, p, u, ey, false, w, w, bits, fy[0], fy[1]) ||
       !interval(rest, p, u, none, true, w, w, bits, m[0], m[1]))
     throw Failure{path + ": another support point is at rest"};
-  const auto range = [](const Q& k, const Q& lo, const Q& hi, Q (&out)[2]) {
-    out[0] = k * lo, out[1] = k * hi;
-    if (out[0] > out[1]) std::swap(out[0], out[1]);
-  };
+}
+
+// [lo, hi] of k x for x in [lo, hi]
+void range(const Q& k, const Q& lo, const Q& hi, Q (&out)[2]) {
+  out[0] = k * lo, out[1] = k * hi;
+  if (out[0] > out[1]) std::swap(out[0], out[1]);
+}
+
+// PU-2 §6–7: the facet holds a force along e through p: lambda = (d x F' - M') / (d x e) certainly > 0 and
+// |lambda e - F'|^2 certainly < rho_j^2.
+void check_facet(const std::vector<Rho>& pts, std::size_t j, const Q (&p)[2], const Q (&u)[2], const Q& w,
+                 const Q (&e)[2], std::size_t bits, const std::string& path, const char* along) {
+  const Rho& pj = pts[j];
+  const Q d[2] = {pj.x - p[0], pj.y - p[1]}, de = d[0] * e[1] - d[1] * e[0];
+  if (sgn(de) == 0) throw Failure{path + ": that support point cannot be the pivot (its line is the force's)"};
+  Q fx[2], fy[2], m[2];
+  facet_rest(pts, j, p, u, w, bits, path, fx, fy, m);
   Q a[2], b[2], lam[2];
   range(d[0], fy[0], fy[1], a), range(-d[1], fx[0], fx[1], b);
   range(1 / de, a[0] + b[0] - m[1], a[1] + b[1] - m[0], lam);
@@ -187,6 +195,28 @@ void check_facet(const std::vector<Rho>& pts, std::size_t j, const Q (&p)[2], co
   const Q g1 = std::max(Q((gy[0] - fy[1]) * (gy[0] - fy[1])), Q((gy[1] - fy[0]) * (gy[1] - fy[0])));
   if (!(lam[0] > 0) || !(g0 + g1 < pj.rho * pj.rho))
     throw Failure{path + ": no force of the pivot's facet is certainly along " + along + " through the pusher"};
+}
+
+// PU-2 §8: the facet's forces through p — the chord d x F = d x F' - M', |F - F'| <= rho_j — are not empty (M'^2 <
+// rho_j^2 |d|^2 certainly: g's jump holds 0) and all strictly on the positive side of l: A = |d|^2 (l . F') - M' (l .
+// rot90 d) certainly > 0 and A^2 certainly > (l . d)^2 (rho_j^2 |d|^2 - M'^2).
+void check_facet_beyond(const std::vector<Rho>& pts, std::size_t j, const Q (&p)[2], const Q (&u)[2], const Q& w,
+                        const Q (&l)[2], std::size_t bits, const std::string& path) {
+  const Rho& pj = pts[j];
+  const Q d[2] = {pj.x - p[0], pj.y - p[1]};
+  Q fx[2], fy[2], m[2];
+  facet_rest(pts, j, p, u, w, bits, path, fx, fy, m);
+  const Q dd = d[0] * d[0] + d[1] * d[1], reach = pj.rho * pj.rho * dd;
+  const Q m2_max = std::max(Q(m[0] * m[0]), Q(m[1] * m[1]));
+  const Q m2_min = sgn(m[0]) <= 0 && sgn(m[1]) >= 0 ? Q(0) : std::min(Q(m[0] * m[0]), Q(m[1] * m[1]));
+  if (!(m2_max < reach))
+    throw Failure{path + ": the pivot's facet holds no force through the pusher certainly (its moment jump may miss 0)"};
+  Q a[2], b[2], c[2];
+  range(l[0] * dd, fx[0], fx[1], a), range(l[1] * dd, fy[0], fy[1], b);
+  range(-(l[0] * -d[1] + l[1] * d[0]), m[0], m[1], c);
+  const Q A = a[0] + b[0] + c[0], ld = l[0] * d[0] + l[1] * d[1];
+  if (!(sgn(A) > 0) || !(A * A > ld * ld * (reach - m2_min)))
+    throw Failure{path + ": not every force of the pivot's facet through the pusher is certainly beyond the claimed edge"};
 }
 
 // §8.2 "sliding" with "pivot" (PU-2 §6): the rotation about support point j. Exact slip x = -(v . d) / (t . d) and rate
@@ -208,23 +238,17 @@ void check_pivot(const Push_part& c, const std::vector<Rho>& pts, const Q (&p)[2
   check_facet(pts, c.pivot, p, u, w, e, c.bits, "contact.sliding.pivot", "the edge");
 }
 
-// §8.2 "sticks" with "pivot" (PU-2 §7): the rotation about support point j moves p with v (v . d = 0 exactly, d =
-// r_j - p, rate w = -(v . rot90 d) / |d|^2 = omega), g's jump there holds 0 (the facet holds a force through p at
-// all: shown by the next check), and its facet holds a force along "force", strictly inside the cone.
-void check_sticking_pivot(const Push_part& c, const std::vector<Rho>& pts, const Q (&p)[2], const Q (&v)[2],
-                          const Q (&lr)[2], const Q (&ll)[2]) {
-  if (c.mode != "sticks") throw Failure{"contact.pivot: a contact-level pivot is a sticking claim"};
-  if (c.stick_pivot >= pts.size()) throw Failure{"contact.pivot: no such support point"};
-  const Rho& pj = pts[c.stick_pivot];
-  const Q d[2] = {pj.x - p[0], pj.y - p[1]}, dd = d[0] * d[0] + d[1] * d[1];
-  if (sgn(dd) == 0 || sgn(v[0] * d[0] + v[1] * d[1]) != 0)
-    throw Failure{"contact.pivot: the pusher's velocity is not perpendicular to the line to that support point"};
-  const Q w = (v[0] * d[1] - v[1] * d[0]) / dd;
-  if (c.omega[0] != w || c.omega[1] != w)
-    throw Failure{"contact.omega: the rotation about the pivot has omega " + show(w)};
-  if (sgn(lr[0] * c.force[0] + lr[1] * c.force[1]) <= 0 || sgn(ll[0] * c.force[0] + ll[1] * c.force[1]) <= 0)
-    throw Failure{"contact.force: not strictly inside the friction cone"};
-  check_facet(pts, c.stick_pivot, p, v, w, c.force, c.bits, "contact.pivot", "the claimed force");
+// PU-2 §7–8: the rotation about support point j that moves p with u — u . d = 0 exactly (d = r_j - p != 0) — at the
+// rate w = -(u . rot90 d) / |d|^2, which the claimed interval must be exactly. Returns w.
+Q pivot_rate(const std::vector<Rho>& pts, std::size_t j, const Q (&p)[2], const Q (&u)[2], const Q (&claimed)[2],
+             const char* velocity, const std::string& path, const std::string& rate_path) {
+  if (j >= pts.size()) throw Failure{path + ": no such support point"};
+  const Q d[2] = {pts[j].x - p[0], pts[j].y - p[1]}, dd = d[0] * d[0] + d[1] * d[1];
+  if (sgn(dd) == 0 || sgn(u[0] * d[0] + u[1] * d[1]) != 0)
+    throw Failure{path + ": " + velocity + " is not perpendicular to the line to that support point"};
+  const Q w = (u[0] * d[1] - u[1] * d[0]) / dd;
+  if (claimed[0] != w || claimed[1] != w) throw Failure{rate_path + ": the rotation about the pivot has omega " + show(w)};
+  return w;
 }
 
 // §8.2 "sliding" (PU-2 §5): the body's velocity at p is u(x) = v + x t (t = rot90 n) with its force along the edge e
@@ -285,28 +309,49 @@ void check_contact(const Push_part& c, const Support& s, const Limits& lim, cons
   const Q eL[2] = {n[0] - mu * n[1], n[1] + mu * n[0]}, eR[2] = {n[0] + mu * n[1], n[1] - mu * n[0]};
   const Q rl[2] = {-eL[1], eL[0]}, rr[2] = {-eR[1], eR[0]};  // rot90: rot90(a) . F = a x F
   const Q lr[2] = {rr[0], rr[1]}, ll[2] = {-rl[0], -rl[1]};  // e_R x F > 0, F x e_L > 0: inside the cone
-  if (c.has_stick_pivot) return check_sticking_pivot(c, pts, p, v, lr, ll);
-  bracket(pts, p, v, c.omega, c.bits, "contact.omega");
-  const int right = force_sign(pts, p, v, c.omega, lr, c.bits), left = force_sign(pts, p, v, c.omega, ll, c.bits);
+  // The sticking motion: a pivot (PU-2 §7–8: ω exact, its forces the facet's chord) or a bracket of ω (§4). `all_beyond`:
+  // every force of it certainly on the positive side of l.
+  const bool pivot = c.has_stick_pivot;
+  const Q w = pivot ? pivot_rate(pts, c.stick_pivot, p, v, c.omega, "the pusher's velocity", "contact.pivot",
+                                  "contact.omega")
+                    : Q(0);
+  if (!pivot) bracket(pts, p, v, c.omega, c.bits, "contact.omega");
+  const auto all_beyond = [&](const Q (&l)[2]) {
+    if (!pivot) return force_sign(pts, p, v, c.omega, l, c.bits);
+    check_facet_beyond(pts, c.stick_pivot, p, v, w, l, c.bits, "contact.pivot");
+    return 1;
+  };
   if (c.has_sliding && c.mode != "slides left" && c.mode != "slides right")
     throw Failure{"contact.sliding: only a sliding contact has a sliding motion"};
-  if (c.mode == "sticks") {
-    if (sgn(mu) == 0 || right != 1 || left != 1)
+  if (c.mode == "sticks" && pivot) {  // a force of the facet strictly inside the cone, along "force"
+    if (sgn(lr[0] * c.force[0] + lr[1] * c.force[1]) <= 0 || sgn(ll[0] * c.force[0] + ll[1] * c.force[1]) <= 0)
+      throw Failure{"contact.force: not strictly inside the friction cone"};
+    check_facet(pts, c.stick_pivot, p, v, w, c.force, c.bits, "contact.pivot", "the claimed force");
+  } else if (c.mode == "sticks") {
+    if (sgn(mu) == 0 || all_beyond(lr) != 1 || all_beyond(ll) != 1)
       throw Failure{"contact: \"sticks\", but the sticking motion's force is not certainly inside the friction cone"};
   } else if (c.mode == "impending") {
-    if (right != 3 && left != 3)
+    if (pivot || (force_sign(pts, p, v, c.omega, lr, c.bits) != 3 && force_sign(pts, p, v, c.omega, ll, c.bits) != 3))
       throw Failure{"contact: \"impending\" is the translation along a cone edge, exactly (omega 0 and the velocity "
                     "along an edge)"};
   } else {  // slides: the force outside the cone, beyond the claimed edge within the pushing half-plane
     if (!c.has_tangent) throw Failure{"contact: a sliding claim needs \"tangent_omega\""};
-    if (right == 1 && left == 1 && sgn(mu) != 0) throw Failure{"contact: the sticking motion's force is inside the cone"};
     const Q t[2] = {-n[1], n[0]};
-    bracket(pts, p, t, c.tangent, c.bits, "contact.tangent_omega");
     const bool on_left = c.mode == "slides left";
     const Q(&re)[2] = on_left ? rl : rr;
-    const int in_h = force_sign(pts, p, t, c.tangent, re, c.bits);  // e x F(t) > 0: e in the pushing half-plane
-    const int beyond = (on_left ? 1 : -1) * force_sign(pts, p, v, c.omega, re, c.bits);
-    if (in_h != 1 || beyond != 1)
+    const Q beyond[2] = {on_left ? re[0] : Q(-re[0]), on_left ? re[1] : Q(-re[1])};  // e_L x F > 0; F x e_R > 0
+    int in_h = 1;  // e x F(t) > 0: e in the pushing half-plane — for every force of F(t) when it is a facet's chord
+    if (c.has_tangent_pivot) {
+      const Q wt = pivot_rate(pts, c.tangent_pivot, p, t, c.tangent, "the tangent rot90(n)", "contact.tangent_pivot",
+                              "contact.tangent_omega");
+      check_facet_beyond(pts, c.tangent_pivot, p, t, wt, re, c.bits, "contact.tangent_pivot");
+    } else {
+      bracket(pts, p, t, c.tangent, c.bits, "contact.tangent_omega");
+      in_h = force_sign(pts, p, t, c.tangent, re, c.bits);
+    }
+    if (!pivot && sgn(mu) != 0 && all_beyond(lr) == 1 && all_beyond(ll) == 1)
+      throw Failure{"contact: the sticking motion's force is inside the cone"};
+    if (in_h != 1 || all_beyond(beyond) != 1)
       throw Failure{std::string("contact: \"") + std::string(c.mode) + "\", but the sticking motion's force is not "
                     "certainly beyond that edge of the cone within the forces that push"};
     if (c.has_sliding) check_sliding(c, pts, p, n, v, re);
@@ -355,6 +400,9 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c) {
       } else if (k == "force") {
         seen |= 8;
         read_fixed(r, 2, "a force direction [fx, fy]", [&](std::size_t m) { p.force[m] = read_rational(r); });
+      } else if (k == "tangent_pivot") {
+        p.has_tangent_pivot = true;
+        p.tangent_pivot = read_index(r, "support point index");
       } else if (k == "tangent_omega") {
         p.has_tangent = true;
         read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.tangent[m] = read_rational(r); });
@@ -389,7 +437,10 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c) {
       }
     }
     if ((seen & 7) != 7) r.fail("a contact needs \"mode\", \"bits\" and \"omega\"");
-    if (p.has_stick_pivot != ((seen & 8) != 0)) r.fail("a sticking pivot needs both \"pivot\" and \"force\"");
+    // "pivot": the sticking motion a rotation about a support point — sticking with "force" (§7), or sliding (§8)
+    const bool sticks = p.mode == "sticks", sliding = p.mode == "slides left" || p.mode == "slides right";
+    if ((seen & 8) && !(p.has_stick_pivot && sticks)) r.fail("\"force\" is a sticking pivot's (with \"pivot\", \"mode\": \"sticks\")");
+    if (p.has_stick_pivot && !sliding && !(seen & 8)) r.fail("a sticking pivot needs both \"pivot\" and \"force\"");
   } else {  // turns
     p.has_turns = true;
     begin_object(r, "expected an object {\"ccw\": [forces], \"cw\": [forces]}");

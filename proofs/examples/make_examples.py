@@ -228,6 +228,8 @@ SCENES = {
                          "support": {"mu": "1/2", "points": [{"at": at, "force": 1} for at in CORNERS]},
                          "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": "1/4", "velocity": [1, 1]}},
     "push_stick_pivot": {"wrenchkit": 1, "name": "three legs; the pusher at (1, -1) moving (1, 1) turns the body about the leg at (0, 0): a sticking pivot", "support": {"points": [{"at": [0, 0], "force": 1, "mu": 1}, {"at": [2, 0], "force": 1, "mu": 1}, {"at": [0, 2], "force": "1/8", "mu": 1}]}, "pusher": {"at": [1, -1], "normal": [0, 1], "mu": 1, "velocity": [1, 1]}},
+    "push_slide_pivot": {"wrenchkit": 1, "name": "three legs; the pusher at (1, -1) with mu = 1/5 moving (1, 1): the body would turn about the leg at (0, 0), but every force of that facet is beyond the right edge: the contact slides", "support": {"points": [{"at": [0, 0], "force": 1, "mu": 1}, {"at": [2, 0], "force": 1, "mu": 1}, {"at": [0, 2], "force": "1/8", "mu": 1}]}, "pusher": {"at": [1, -1], "normal": [0, 1], "mu": "1/5", "velocity": [1, 1]}},
+    "push_tangent_pivot": {"wrenchkit": 1, "name": "three legs; the pusher at (0, -1) with mu = 1/10 moving (1, 1) slides right; the tangent (-1, 0) turns the body about the leg at (0, 0): the pushing forces end at a facet", "support": {"points": [{"at": [0, 0], "force": 1, "mu": 1}, {"at": [1, 1], "force": "1/8", "mu": 1}, {"at": [-1, 1], "force": "1/8", "mu": 1}]}, "pusher": {"at": [0, -1], "normal": [0, 1], "mu": "1/10", "velocity": [1, 1]}},
     "push_pivot": {"wrenchkit": 1, "name": "three legs pushed at (10, -1) with mu = 1/5 along (-1, 2): the contact slides "
                    "on the right edge and the body turns about the leg at (8, 3), exactly",
                    "support": {"points": [{"at": [8, 3], "force": 7, "mu": "8/10"}, {"at": [5, 8], "force": 6, "mu": "1/10"},
@@ -458,6 +460,12 @@ PUSH_SLIDE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "ro
 # push_stick_pivot: the pusher's velocity (1, 1) is perpendicular to the line to the leg (0, 0): the sticking motion is
 # the rotation about it at rate 1 (PU-2 section 7), its facet holding the force (9/16, 27/16) inside the cone.
 PUSH_STICK_PIVOT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "17/8"}, "votes": [{"lower": "-9/4", "upper": "-9/4"}, {"lower": "5/2", "upper": "5/2"}, {"lower": "5/2", "upper": "5/2"}], "center": ["16/17", "2/17"], "contact": {"mode": "sticks", "bits": 64, "omega": ["1", "1"], "pivot": 0, "force": ["9/16", "27/16"]}}''')
+# push_slide_pivot: push_stick_pivot with mu = 1/5 — the sticking motion is still the rotation about the leg (0, 0), but
+# every force of its facet through the pusher is beyond the right edge (PU-2 section 8): it slides right.
+PUSH_SLIDE_PIVOT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "17/8"}, "votes": [{"lower": "-7/20", "upper": "-7/20"}, {"lower": "3/5", "upper": "3/5"}, {"lower": "5/2", "upper": "5/2"}], "center": ["16/17", "2/17"], "contact": {"mode": "slides right", "bits": 64, "omega": ["1", "1"], "pivot": 0, "tangent_omega": ["-996269925400733/2251799813685248", "-996269925399607/2251799813685248"], "sliding": {"slip": ["2458624365699259/144115188075855872", "2458624365771317/144115188075855872"], "slip_omega": [["2164414849554211/2251799813685248", "4328829699108491/4503599627370496"], ["4328829699103783/4503599627370496", "4328829699103921/4503599627370496"]], "omega": ["6926127518550805222292325169/7205759403792793600000000000", "6926127518588833177707674831/7205759403792793600000000000"]}}}''')
+# push_tangent_pivot: the tangent (-1, 0) is perpendicular to the line to the leg (0, 0), and that rotation's facet is the
+# end F(t) of the pushing forces (PU-2 section 8): the right edge is in their half-plane for every force of its chord.
+PUSH_TANGENT_PIVOT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "5/4"}, "votes": [{"lower": "-3/20", "upper": "-3/20"}, {"lower": "3/20", "upper": "3/20"}, {"lower": "3/2", "upper": "3/2"}], "center": ["0", "1/5"], "contact": {"mode": "slides right", "bits": 64, "omega": ["194822285446309/281474976710656", "779289141785799/1125899906842624"], "tangent_omega": ["-1", "-1"], "tangent_pivot": 0, "sliding": {"slip": ["8141328147255443/36028797018963968", "8141328147273457/36028797018963968"], "slip_omega": [["2475812579096303/4503599627370496", "2475812579096521/4503599627370496"], ["1237906289547423/2251799813685248", "309476572386883/562949953421312"]], "omega": ["39613001265494680775214438137/72057594037927936000000000000", "39613001265567191224785561863/72057594037927936000000000000"]}}}''')
 # push_pivot: the sliding motion is the rotation about the leg (8, 3) (PU-2 section 6): slip 5/7 along (-1, -4), rate -3/7.
 PUSH_PIVOT = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "cw", "friction": {"lower": "37/5"}, "votes": [{"lower": "-2404/25", "upper": "-2404/25"}, {"lower": "-1066/25", "upper": "-1066/25"}, {"lower": "153/5", "upper": "153/5"}], "center": ["233/37", "84/37"], "contact": {"mode": "slides right", "bits": 64, "omega": ["5309636483810193/36028797018963968", "5309636483828207/36028797018963968"], "tangent_omega": ["-3479513353260505/9007199254740992", "-3479513353256001/9007199254740992"], "sliding": {"pivot": 0, "slip": ["5/7", "5/7"], "omega": ["-3/7", "-3/7"]}}}''')
 # push_slide_right (--tolerance 1e-6): slides on the right edge; the body's velocity at p is (1, 1) + x (-1, 0) with x in
@@ -1047,6 +1055,18 @@ CERTS = [
      tamper(PUSH_STICK_PIVOT, ["contact", "force"], ["1", "0"])),
     ("push_stick_pivot", "contact_stick_pivot_facet_misses", "invalid:contact|contact.pivot: no force of the pivot's facet is certainly along",
      tamper(PUSH_STICK_PIVOT, ["contact", "force"], ["1", "5"])),
+    ("push_slide_pivot", "contact_slides_from_pivot", "valid", PUSH_SLIDE_PIVOT),
+    ("push_slide_pivot", "contact_slides_left_from_pivot", "invalid:contact|contact.pivot: not every force of the pivot's facet through the pusher is certainly beyond the claimed edge",
+     tamper(PUSH_SLIDE_PIVOT, ["contact", "mode"], "slides left")),
+    ("push_slide_pivot", "contact_slide_pivot_with_force", "invalid:contact|\"force\" is a sticking pivot's",
+     tamper(PUSH_SLIDE_PIVOT, ["contact", "force"], ["1", "5"])),
+    ("push_stick_pivot", "contact_slides_from_a_sticking_pivot", "invalid:contact|contact.pivot: not every force of the pivot's facet through the pusher is certainly beyond",
+     tamper(tamper(PUSH_SLIDE_PIVOT, ["contact", "sliding"], None), ["votes"], PUSH_STICK_PIVOT["votes"])),
+    ("push_tangent_pivot", "contact_tangent_pivot", "valid", PUSH_TANGENT_PIVOT),
+    ("push_tangent_pivot", "contact_tangent_pivot_moved", "invalid:contact|contact.tangent_pivot: the tangent rot90(n) is not perpendicular",
+     tamper(PUSH_TANGENT_PIVOT, ["contact", "tangent_pivot"], 1)),
+    ("push_tangent_pivot", "contact_tangent_pivot_rate_moved", "invalid:contact|contact.tangent_omega: the rotation about the pivot has omega -1",
+     tamper(PUSH_TANGENT_PIVOT, ["contact", "tangent_omega"], ["-2", "-2"])),
     ("push_pivot", "contact_pivot", "valid", PUSH_PIVOT),
     ("push_pivot", "contact_other_pivot", "invalid:contact|contact.sliding: the rotation about the pivot has slip",
      tamper(PUSH_PIVOT, ["contact", "sliding", "pivot"], 1)),
@@ -1946,9 +1966,9 @@ def verify_regions(scene, cert):
 
 def verify_contact(c, pts, known, p, n, mu, v):
     """Section 8.2: the contact mode (PU-2), support points with every force given. None if proved, else a reason."""
-    if set(c) - {"mode", "bits", "omega", "tangent_omega", "sliding", "pivot", "force"} or not {"mode", "bits", "omega"} <= set(c) or not known:
+    if set(c) - {"mode", "bits", "omega", "tangent_omega", "tangent_pivot", "sliding", "pivot", "force"} or not {"mode", "bits", "omega"} <= set(c) or not known:
         return "contact"
-    if ("pivot" in c) != ("force" in c):
+    if ("force" in c) != ("pivot" in c and c["mode"] == "sticks"):
         return "contact"
     if "sliding" in c and c["mode"] not in ("slides left", "slides right"):
         return "contact"
@@ -2015,20 +2035,24 @@ def verify_contact(c, pts, known, p, n, mu, v):
     eL, eR = (n[0] - mu * n[1], n[1] + mu * n[0]), (n[0] + mu * n[1], n[1] - mu * n[0])
     rl, rr = (-eL[1], eL[0]), (-eR[1], eR[0])  # rot90(e) . F = e x F
 
-    def facet_holds(j, u, w, e):
-        """PU-2 sections 6-7: the facet of the rotation about point j (rate w, velocity u at p) holds a force along e
-        through p: lambda = (d x F' - M') / (d x e) > 0 and |lambda e - F'|^2 < rho_j^2, F', M' the others' bounds."""
+    def facet_rest(j, u, w):
+        """PU-2 sections 6-8: the other points' force F' and moment M' about p at the rotation about point j."""
         nonlocal rho
-        (xj, yj, rj), d = rho[j], (rho[j][0] - p[0], rho[j][1] - p[1])
-        de = d[0] * e[1] - d[1] * e[0]
-        if rj == 0 or de == 0:
-            return False
         keep = rho
         rho = [q for i, q in enumerate(keep) if i != j]
         fx, fy, m = interval(u, (1, 0), False, w, w), interval(u, (0, 1), False, w, w), interval(u, None, True, w, w)
         rho = keep
-        if None in (fx, fy, m):
+        return None if None in (fx, fy, m) else (fx, fy, m)
+
+    def facet_holds(j, u, w, e):
+        """PU-2 sections 6-7: the facet of the rotation about point j (rate w, velocity u at p) holds a force along e
+        through p: lambda = (d x F' - M') / (d x e) > 0 and |lambda e - F'|^2 < rho_j^2, F', M' the others' bounds."""
+        (xj, yj, rj), d = rho[j], (rho[j][0] - p[0], rho[j][1] - p[1])
+        de = d[0] * e[1] - d[1] * e[0]
+        rest = facet_rest(j, u, w)
+        if rj == 0 or de == 0 or rest is None:
             return False
+        fx, fy, m = rest
         num = sorted((d[0] * fy[0], d[0] * fy[1]))
         num2 = sorted((-d[1] * fx[0], -d[1] * fx[1]))
         lam = sorted(((num[0] + num2[0] - m[1]) / de, (num[1] + num2[1] - m[0]) / de))
@@ -2037,34 +2061,70 @@ def verify_contact(c, pts, known, p, n, mu, v):
         g2 = max((gx[0] - fx[1]) ** 2, (gx[1] - fx[0]) ** 2) + max((gy[0] - fy[1]) ** 2, (gy[1] - fy[0]) ** 2)
         return lam[0] > 0 and g2 < rj * rj
 
-    if "pivot" in c:  # section 7: sticking as the rotation about point j, a force of its facet inside the cone
-        j, e = c["pivot"], tuple(rational(x) for x in c["force"])
-        if c["mode"] != "sticks" or not isinstance(j, int) or not 0 <= j < len(rho):
-            return "contact"
+    def facet_beyond(j, u, w, l):
+        """PU-2 section 8: the facet's forces through p (the chord d x F = d x F' - M', |F - F'| <= rho_j) are not
+        empty (M'^2 < rho_j^2 |d|^2) and all have l . F > 0: A = |d|^2 l . F' - M' l . rot90 d > 0 and
+        A^2 > (l . d)^2 (rho_j^2 |d|^2 - M'^2)."""
+        rj, d = rho[j][2], (rho[j][0] - p[0], rho[j][1] - p[1])
+        rest = facet_rest(j, u, w)
+        if rj == 0 or rest is None:
+            return False
+        fx, fy, m = rest
+        dd = d[0] * d[0] + d[1] * d[1]
+        reach, m2 = rj * rj * dd, sorted((m[0] * m[0], m[1] * m[1]))
+        if not m2[1] < reach:
+            return False
+        m2_min = 0 if m[0] <= 0 <= m[1] else m2[0]
+        a = min(l[0] * dd * fx[0], l[0] * dd * fx[1]) + min(l[1] * dd * fy[0], l[1] * dd * fy[1])
+        k = -(l[0] * -d[1] + l[1] * d[0])
+        big = a + min(k * m[0], k * m[1])
+        ld = l[0] * d[0] + l[1] * d[1]
+        return big > 0 and big * big > ld * ld * (reach - m2_min)
+
+    def pivot_rate(j, u):  # the rotation about point j moving p with u (u . d = 0): its rate, or None
+        if not isinstance(j, int) or not 0 <= j < len(rho):
+            return None
         d = (rho[j][0] - p[0], rho[j][1] - p[1])
         dd = d[0] * d[0] + d[1] * d[1]
-        if dd == 0 or v[0] * d[0] + v[1] * d[1] != 0:
-            return "contact"
-        w = (v[0] * d[1] - v[1] * d[0]) / dd
-        inside = rr[0] * e[0] + rr[1] * e[1] > 0 and -rl[0] * e[0] - rl[1] * e[1] > 0
-        ok = [rational(x) for x in c["omega"]] == [w, w] and inside and facet_holds(j, v, w, e)
-        return None if ok else "contact"
-    if not bracketed(v, c["omega"]):
-        return "contact"
-    right, left = force_sign(v, c["omega"], rr), force_sign(v, c["omega"], (-rl[0], -rl[1]))
+        if dd == 0 or u[0] * d[0] + u[1] * d[1] != 0:
+            return None
+        return (u[0] * d[1] - u[1] * d[0]) / dd
+
     mode = c["mode"]
-    if mode == "sticks":
-        return None if mu > 0 and right == 1 and left == 1 else "contact"
-    if mode == "impending":
-        return None if 3 in (right, left) else "contact"
+    if "pivot" in c:  # sections 7-8: the sticking motion the rotation about point j
+        j = c["pivot"]
+        w = pivot_rate(j, v)
+        if w is None or [rational(x) for x in c["omega"]] != [w, w]:
+            return "contact"
+        if mode == "sticks":  # a force of its facet along "force", inside the cone
+            e = tuple(rational(x) for x in c["force"])
+            inside = rr[0] * e[0] + rr[1] * e[1] > 0 and -rl[0] * e[0] - rl[1] * e[1] > 0
+            return None if inside and facet_holds(j, v, w, e) else "contact"
+    else:
+        if not bracketed(v, c["omega"]):
+            return "contact"
+        right, left = force_sign(v, c["omega"], rr), force_sign(v, c["omega"], (-rl[0], -rl[1]))
+        if mode == "sticks":
+            return None if mu > 0 and right == 1 and left == 1 else "contact"
+        if mode == "impending":
+            return None if 3 in (right, left) else "contact"
     if mode not in ("slides left", "slides right") or "tangent_omega" not in c:
         return "contact"
     t = (-n[1], n[0])
-    if not bracketed(t, c["tangent_omega"]):
-        return "contact"
     e = rl if mode == "slides left" else rr
-    in_h = force_sign(t, c["tangent_omega"], e)
-    beyond = (1 if mode == "slides left" else -1) * force_sign(v, c["omega"], e)
+    if "tangent_pivot" in c:  # F(t) the chord of a facet (section 8): every force of it on e's left
+        k = c["tangent_pivot"]
+        wt = pivot_rate(k, t)
+        in_h = 1 if wt is not None and [rational(x) for x in c["tangent_omega"]] == [wt, wt] and facet_beyond(k, t, wt, e) else 0
+    else:
+        if not bracketed(t, c["tangent_omega"]):
+            return "contact"
+        in_h = force_sign(t, c["tangent_omega"], e)
+    sign = 1 if mode == "slides left" else -1
+    if "pivot" in c:  # every force of the sticking pivot's facet beyond the edge
+        beyond = 1 if facet_beyond(c["pivot"], v, w, (sign * e[0], sign * e[1])) else 0
+    else:
+        beyond = sign * force_sign(v, c["omega"], e)
     if in_h != 1 or beyond != 1:
         return "contact"
     if "sliding" not in c:

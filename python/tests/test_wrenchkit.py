@@ -547,6 +547,11 @@ def test_push_voting_theorem():
     c = wrenchkit.push(legs, contact=True)["contact"]
     assert c["mode"] == "sticks" and c["pivot"] == 0 and c["omega"] == (1, 1)
     assert c["force"] == (Fraction(9, 16), Fraction(27, 16))
+    # mu 1/5: every force of that facet is beyond the right edge (PU-2 section 8): it slides from the facet
+    legs["pusher"]["mu"] = "1/5"
+    c = wrenchkit.push(legs, contact=True)["contact"]
+    assert c["mode"] == "slides right" and c["sticking_pivot"] == 0 and c["sticking_omega"] == (1, 1)
+    assert 0 < c["slip"][0] <= c["slip"][1] and Fraction(9, 10) < c["omega"][0] <= c["omega"][1] < 1
     square["pusher"]["mu"] = 1
     square["pusher"]["velocity"] = [-1, 2]  # along p -> c: a translation
     assert wrenchkit.push(square)["rotation"] == "none"

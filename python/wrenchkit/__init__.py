@@ -340,7 +340,8 @@ def push(scene, *, contact=False):
     "slip": (lo, hi) (the body's velocity at the pusher is the pusher's plus slip times rot90(normal)) and "omega" its
     rotation rate, exact when "pivot" names the support point it turns about; sticking about a support point (the
     pusher's velocity perpendicular to the line to it), "pivot" with the exact "omega" and "force", a force of that
-    point's facet strictly inside the friction cone (Fractions).
+    point's facet strictly inside the friction cone (Fractions); sliding from such a facet (every force of it beyond
+    the edge), "sticking_pivot" and its exact "sticking_omega".
     """
     r = _json.loads(_core.push(_scene(scene), contact))
     fr = _fractions.Fraction
@@ -353,7 +354,7 @@ def push(scene, *, contact=False):
         v["direction"] = tuple(fr(x) for x in v["direction"])
     if "witnesses" in r:
         r["witnesses"] = {k: [fr(x) for x in f] for k, f in r["witnesses"].items()}
-    for k in ("omega", "slip", "force"):
+    for k in ("omega", "slip", "force", "sticking_omega"):
         if "contact" in r and k in r["contact"]:
             r["contact"][k] = tuple(fr(x) for x in r["contact"][k])
     return r
