@@ -51,6 +51,8 @@ struct Ref {
   const json::Value* limit_surface = nullptr;
   bool has_push = false;                   // the line has "push" (a pusher on a support)
   std::string rotation;                    // ccw, cw, none, depends; empty: no certified answer (undecided or refused)
+  bool has_contact = false;                // the line has "push.contact" (the pusher's contact mode)
+  std::string contact_mode;                // sticks, impending, slides left, slides right; empty: not certified
   bool has_quality = false;                // the line has "quality" (contacts)
   const json::Value* quality_epsilon = nullptr;  // quality.epsilon {lower, upper, …}; none: refused (too much work)
   const json::Value* scene = nullptr;            // the line's canonical scene
@@ -91,7 +93,7 @@ struct Field_tally {
 
 const char* const kFields[] = {"force_closure", "form_closure", "equilibrium", "hold", "motion",
                                "center_of_friction", "power", "power_range", "labels", "epsilon", "rotation",
-                               "placements"};
+                               "contact_mode", "placements"};
 bool is_verdict(const std::string& f) { return f == "force_closure" || f == "form_closure" || f == "equilibrium"; }
 
 // The words of a wrong verdict: unsafe (the answer claims closure, balance, holding or sticking that does not
@@ -105,6 +107,7 @@ const char* unsafe_words(const std::string& f) {
          : f == "motion"    ? "falsely sticks or impending"
          : f == "hold"      ? "falsely holds or impending"
          : f == "rotation"  ? "a rotation sense claimed that does not hold for every distribution"
+         : f == "contact_mode" ? "a contact mode claimed that does not hold (sticks where it slides, or the wrong edge)"
          : f == "placements" ? "a placement claimed closed that is open"
                             : "falsely closed";
 }
@@ -113,12 +116,14 @@ const char* lost_words(const std::string& f) {
          : f == "motion"    ? "falsely slides, impending or depends"
          : f == "hold"      ? "falsely fails, impending or depends"
          : f == "rotation"  ? "depends or undecided where the rotation is certain"
+         : f == "contact_mode" ? "undecided where the contact mode is certain"
          : f == "placements" ? "a placement claimed open that closes"
                             : "falsely open";
 }
 // Fields with a safety split (unsafe / lost): the verdicts, motion, hold and epsilon (across 0).
 bool has_split(const std::string& f) {
-  return is_verdict(f) || f == "motion" || f == "hold" || f == "epsilon" || f == "rotation" || f == "placements";
+  return is_verdict(f) || f == "motion" || f == "hold" || f == "epsilon" || f == "rotation" || f == "contact_mode" ||
+         f == "placements";
 }
 
 Rational exact_number(const json::Value& v, const std::string& where) {
@@ -228,6 +233,12 @@ Corpus read_corpus(const std::string& path, Read_file read) {
       if (pu->type == json::Type::object)
         if (const json::Value* rot = pu->find("rotation"); rot && rot->type == json::Type::string && rot->text != "undecided")
           r.rotation = rot->text;
+      if (pu->type == json::Type::object)
+        if (const json::Value* k = pu->find("contact"); k && k->type == json::Type::object) {
+          r.has_contact = true;
+          if (const json::Value* m = k->find("mode"); m && m->type == json::Type::string && m->text != "undecided")
+            r.contact_mode = m->text;
+        }
     }
     if (const json::Value* h = v.find("hold")) {
       r.has_hold = true;
@@ -291,7 +302,8 @@ std::vector<Answer> read_jsonl_answers(const std::string& path, const std::strin
       } else if (std::find(std::begin(kFields), std::end(kFields), k) == std::end(kFields)) {
         throw Input_error(where + ": " + json::quote(k) +
                           ": unknown field (known: id, force_closure, form_closure, equilibrium, hold, motion, "
-                          "center_of_friction, power, power_range, labels, epsilon, rotation, placements, error; fields starting with _ "
+                          "center_of_friction, power, power_range, labels, epsilon, rotation, contact_mode, placements, error; fields "
+                          "starting with _ "
                           "are ignored)");
       } else {
         a.fields.emplace_back(k, std::move(x));
@@ -490,6 +502,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
                               : field == "motion"                                     ? ref.has_motion
                               : field == "hold"                                       ? ref.has_hold
                               : field == "rotation"                                   ? ref.has_push
+                              : field == "contact_mode"                               ? ref.has_contact
                               : field == "center_of_friction" || field == "power"     ? ref.limit_surface != nullptr
                               : field == "power_range"                                ? ref.limit_surface != nullptr
                               : field == "epsilon"                                    ? ref.has_quality
@@ -545,6 +558,31 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
           d.answer = v.text;
           d.unsafe = v.text != "depends" && v.text != "undecided";
           d.kind = d.unsafe ? "a wrong rotation" : "an uncertain rotation";
+          disagree(std::move(d));
+        }
+      } else if (field == "contact_mode") {
+        // Whether the pusher's contact sticks or slides (docs/pushing.md, PU-2): unsafe where the answer claims a mode
+        // that is not the reference's (sticking where it slides — a plan that expects the body to follow the pusher —,
+        // or the wrong edge), lost where it says undecided; the reference "impending" (the force on a cone edge
+        // exactly) is the boundary, where a side is a convention.
+        if (v.type != json::Type::string || (v.text != "sticks" && v.text != "impending" && v.text != "slides left" &&
+                                             v.text != "slides right" && v.text != "undecided"))
+          throw Input_error(where + ": " + json::text_of(v) +
+                            " is not \"sticks\", \"impending\", \"slides left\", \"slides right\", \"undecided\" or null");
+        if (!ref.has_contact)
+          throw Input_error(where + ": scene \"" + a.id + "\" has no contact mode (no pusher on support points with every force given)");
+        if (ref.contact_mode.empty()) continue;  // the corpus has no certified answer: nothing to compare with
+        count(&Field_tally::compared);
+        if (v.text == ref.contact_mode) {
+          count(&Field_tally::agree);
+        } else if (ref.contact_mode == "impending" && v.text != "undecided") {
+          count(&Field_tally::boundary);
+        } else {
+          Disagreement d;
+          d.reference = ref.contact_mode;
+          d.answer = v.text;
+          d.unsafe = v.text != "undecided";
+          d.kind = d.unsafe ? (v.text == "sticks" ? "falsely sticks" : "a wrong contact mode") : "an uncertain contact mode";
           disagree(std::move(d));
         }
       } else if (field == "motion") {
@@ -771,6 +809,7 @@ std::string distance_text(const Disagreement& d) {
       << (d.field == "motion" ? " (how close the load is to the limit surface is not measured)"
           : d.field == "hold"   ? " (over a support, how close the load is to holding is not measured)"
           : d.field == "rotation" ? " (how close a voting line passes the centre of friction is not measured)"
+          : d.field == "contact_mode" ? " (how close the pusher's velocity is to a motion-cone edge is not measured)"
           : d.field == "placements" ? " (each placement decided exactly; how far it is from the region's boundary is not measured)"
                               : " (a value: compared within --rtol/--atol)");
   else if (f.distance)

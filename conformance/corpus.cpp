@@ -402,10 +402,13 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
       }
     }
     // Which way a pushed body turns (docs/pushing.md), for a scene with a pusher on a support: the rotation for every
-    // admissible distribution, certified (the line says why when undecided or refused).
+    // admissible distribution, certified (the line says why when undecided or refused); and whether the contact
+    // sticks or slides (PU-2; undecided, with why, for regions and forces not given).
     Push_item push;
     if (parsed.pusher && parsed.support) {
-      push = answer_push(text, e.id, request);
+      Push_query contact;
+      contact.contact = true;
+      push = answer_push(text, e.id, request, contact);
       if (push.status == Status::check_failed) {
         b.status = push.status, b.message = push.message;
         return;
@@ -415,6 +418,11 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
         if (push.push.center)
           w.key("center_of_friction").array().rational(push.push.center->x).rational(push.push.center->y).end_array();
         if (push.push.rotation == Rotation::undecided) w.member("why", push.push.why);
+        if (const std::optional<Push_contact>& k = push.push.contact) {
+          w.key("contact").object().member("mode", push_mode_name(k->mode));
+          if (k->mode == Push_mode::undecided) w.member("why", k->why);
+          w.end_object();
+        }
         w.end_object();
       } else {
         w.key("push").null().member("push_refused", push.message);

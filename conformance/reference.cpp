@@ -26,8 +26,10 @@ const Golden kGoldens[] = {
 };
 
 const int kEpsilonExponents[] = {2, 6, 10, 14, 16, 20, 40};
-// The stress report's families the corpus carries (stress::report_only_families()), in this order.
+// The stress report's families the corpus carries (stress::report_only_families()), in this order; the pushing ones
+// (issue 33) come last, after the polygon parts.
 const char* const kAppendedFamilies[] = {"unknown_support", "region_support", "fixture_pin"};
+const char* const kPushFamilies[] = {"push_near_tie", "push_motion_cone"};
 
 std::uint64_t splitmix64(std::uint64_t x) {
   x += 0x9E3779B97F4A7C15ull;
@@ -93,19 +95,20 @@ std::vector<Entry> corpus_entries(const Reference_options& ro) {
   // Issue 20: this round's answers — stick/slide over unknown distributions, support regions, hold — by the
   // stress report's families (testing/stress_families.h), appended so every earlier scene keeps its id, seed and
   // bytes; then generic fixtures (contacts, a known support, a load near the support's friction): hold either way.
-  family_index = static_cast<int>(stress::families().size());
-  for (const char* name : kAppendedFamilies) {
-    ++family_index;
+  // A stress report family, `cases` scenes per ε, its seeds from `index`.
+  const auto append_family = [&](const char* name, int index) {
     for (int k : kEpsilonExponents)
       for (int c = 0; c < ro.cases; ++c) {
         const std::uint64_t seed =
-            splitmix64(ro.seed ^ splitmix64(static_cast<std::uint64_t>(family_index * 100000 + k * 1000 + c)));
+            splitmix64(ro.seed ^ splitmix64(static_cast<std::uint64_t>(index * 100000 + k * 1000 + c)));
         const stress::Family_scene s = stress::make_scene(name, std::stod("1e-" + std::to_string(k)), seed);
         out.push_back(entry(std::string(name) + ".1e-" + std::to_string(k) + "." + std::to_string(c), name, "",
                             "1e-" + std::to_string(k), s.above ? "above" : "below", std::to_string(seed),
                             with_family_load(s), ""));
       }
-  }
+  };
+  family_index = static_cast<int>(stress::families().size());
+  for (const char* name : kAppendedFamilies) append_family(name, ++family_index);
   ++family_index;
   char num[16];
   for (int c = 0; c < ro.random / 4; ++c) {
@@ -164,6 +167,10 @@ std::vector<Entry> corpus_entries(const Reference_options& ro) {
                         std::string(R"({"wrenchkit": 1, "name": ")") + p.name + R"(", "mu": ")" + p.mu +
                             R"(", "body": {"outline": )" + p.outline + "}}",
                         ""));
+  // Issue 33: pushing — which way the body turns beside a tie of the votes (push_near_tie: ccw iff above) and whether
+  // the contact sticks beside a motion-cone edge (push_motion_cone: slides left iff above), appended last.
+  family_index = 1000;
+  for (const char* name : kPushFamilies) append_family(name, ++family_index);
   return out;
 }
 

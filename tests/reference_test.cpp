@@ -596,6 +596,58 @@ TEST_F(Corpus, EpsilonIsInTheCorpusAndCompared) {
   EXPECT_NE(r.err.find("has no contacts (no epsilon answer)"), std::string::npos) << r.err;
 }
 
+// Issue 33: the pushing families at the end of the corpus land on their stated sides — push_near_tie turns ccw iff
+// above, push_motion_cone's contact slides left iff above (else sticks) — certified; and `compare` reads a peer's
+// contact mode: sticking where it slides is unsafe ("falsely sticks"), undecided lost, a value it cannot read refused.
+TEST_F(Corpus, PushingFamiliesLandOnTheirSidesAndCompareReadsTheContactMode) {
+  std::string good, bad, sliding_id, sticking_id;
+  std::size_t tie = 0, cone = 0;
+  for (const json::Value& v : lines_) {
+    const std::string id = v.find("id")->text, family = v.find("family")->text;
+    if (family != "push_near_tie" && family != "push_motion_cone") {
+      EXPECT_EQ(v.find("push"), nullptr) << id;  // no other family has a pusher
+      continue;
+    }
+    const bool above = v.find("side")->text == "above";
+    const json::Value* push = v.find("push");
+    ASSERT_NE(push, nullptr) << id;
+    ASSERT_EQ(push->type, json::Type::object) << id;
+    ASSERT_NE(v.find("certificates")->find("push"), nullptr) << id;
+    const std::string mode = push->find("contact")->find("mode")->text;
+    if (family == "push_near_tie") {
+      ++tie;
+      EXPECT_EQ(push->find("rotation")->text, above ? "ccw" : "cw") << id;
+    } else {
+      ++cone;
+      EXPECT_EQ(mode, above ? "slides left" : "sticks") << id;
+      EXPECT_NE(v.find("certificates")->find("push")->find("contact"), nullptr) << id;
+      if (above && sliding_id.empty()) sliding_id = id, bad += "{\"id\": \"" + id + "\", \"contact_mode\": \"sticks\"}\n";
+      if (!above && sticking_id.empty()) sticking_id = id, bad += "{\"id\": \"" + id + "\", \"contact_mode\": \"undecided\"}\n";
+    }
+    good += "{\"id\": \"" + id + "\", \"contact_mode\": \"" + mode + "\"}\n";
+  }
+  ASSERT_EQ(tie, 14u);
+  ASSERT_EQ(cone, 14u);
+  ASSERT_FALSE(sliding_id.empty() || sticking_id.empty());
+  Cli_result r = run("compare --json '" + dir_ + "' -", good);
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("\"contact_mode\": {\"compared\": 28, \"agree\": 28,"), std::string::npos) << r.out;
+  r = run("compare --json '" + dir_ + "' -", bad);
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  const json::Value rep = json::parse(r.out, Input_limits{}, "report");
+  EXPECT_EQ(rep.find("fields")->find("contact_mode")->find("unsafe")->text, "1");
+  EXPECT_EQ(rep.find("fields")->find("contact_mode")->find("lost")->text, "1");
+  for (const json::Value& d : rep.find("disagreements")->items) {
+    const std::string id = d.find("id")->text;
+    EXPECT_EQ(d.find("kind")->text, id == sliding_id ? "falsely sticks" : "an uncertain contact mode") << id;
+  }
+  r = run("compare '" + dir_ + "' -", "{\"id\": \"" + sliding_id + "\", \"contact_mode\": \"slides\"}\n");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("contact_mode: \"slides\" is not \"sticks\""), std::string::npos) << r.err;
+  r = run("compare '" + dir_ + "' -", "{\"id\": \"golden.block_corner_mu_0\", \"contact_mode\": \"sticks\"}\n");
+  EXPECT_EQ(r.code, 2);
+}
+
 // Issue 32: the polygon parts carry where two and three fingers may go (every pair's exact region, every triple's
 // cube or "never", certified), and `compare` reads a peer's sampled placements, decided exactly: a placement claimed
 // closed that is open is unsafe (the square's adjacent sides at mu = 1 exactly: the boundary, open), one claimed open
