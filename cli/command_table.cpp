@@ -476,10 +476,12 @@ std::vector<Command> make_table() {
        "computes them (--mu, --edges).\n"
        "\n"
        "With --what push: the body on its support, the centre of friction, the pusher with its friction cone and\n"
-       "velocity, and the three voting lines through it coloured by their votes, as 'wrenchkit push' decides.\n",
+       "velocity, and the three voting lines through it coloured by their votes, as 'wrenchkit push' decides;\n"
+       "--contact adds the contact mode and where the body turns (its rotation centre, or its direction).\n",
        join({{kHelp, kWhat, kOutput,
               with_help(kSides, "with --what limit-surface: polygon sides, even, 4..4096 (default 32)"), kNorm, kNormalize,
-              kTorqueScale, kAbout, kFingerMu, kEdges, kFingers},
+              kTorqueScale, kAbout, kFingerMu, kEdges, kFingers,
+              with_help(kPushContact, "with --what push: also the contact mode and the body's rotation centre")},
              kLimits}),
        {kScene},
        run_render});

@@ -3,6 +3,8 @@
 // regions clipped to a disc whose rim is the circle at infinity (labeled directions drawn on it),
 // arrows where regions run off to infinity, the load, a legend. Computed exactly, drawn in double.
 #include <cmath>
+#include <cstdio>
+#include <optional>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -361,11 +363,40 @@ std::string render_grasp_regions(const Scene& s, const Grasp_regions_item& r, co
 }
 
 
+// The body's motion of a decided contact mode (PU-2): its velocity at the pusher u (the pusher's, plus the slip along
+// its face when sliding) and its rotation rate ω, the brackets' midpoints; none when not decided or not bracketed.
+struct Push_motion {
+  P2 u;
+  double omega = 0;
+  bool exact_pivot = false;  // the rotation about a support point (a facet): its centre is that point, exactly
+  P2 pivot;
+};
+std::optional<Push_motion> push_motion(const Scene& s, const Push_answer& a) {
+  if (!a.contact) return std::nullopt;
+  const Push_contact& k = *a.contact;
+  Push_motion m;
+  const P2 v = to_p2(a.velocity), t{-a.normal.y.get_d(), a.normal.x.get_d()};
+  if (k.mode == Push_mode::sticks || k.mode == Push_mode::impending) {
+    m.u = v, m.omega = Rational((k.omega_lo + k.omega_hi) / 2).get_d();
+    if (k.pivot) m.exact_pivot = true, m.pivot = to_p2(s.support->points[*k.pivot].at);
+  } else if ((k.mode == Push_mode::slides_left || k.mode == Push_mode::slides_right) && k.has_motion) {
+    const double tau = Rational((k.slip_lo + k.slip_hi) / 2).get_d();
+    m.u = {v.x + tau * t.x, v.y + tau * t.y}, m.omega = Rational((k.motion_lo + k.motion_hi) / 2).get_d();
+    if (k.motion_pivot) m.exact_pivot = true, m.pivot = to_p2(s.support->points[*k.motion_pivot].at);
+  } else {
+    return std::nullopt;
+  }
+  return m;
+}
+
 // --what push: the body, its support (discs ∝ μf, hollow where the force is unknown; regions shaded), the centre of
 // friction, the pusher with its friction cone and velocity, and the three voting lines through it — blue where the
-// line votes ccw (c on its left), red cw, black dashed through c — as in Mason's figures of the voting theorem.
+// line votes ccw (c on its left), red cw, black dashed through c — as in Mason's figures of the voting theorem. With
+// the contact mode (--contact): where the body turns — its rotation centre p + rot90(u)/ω, marked ↺ or ↻, or the
+// direction it translates — and the mode in the caption.
 std::string render_push(const Scene& s, const Push_item& r, const std::string& source) {
   const Push_answer& a = r.push;
+  const std::optional<Push_motion> motion = push_motion(s, a);
   Bounds b;
   add_scene_bounds(b, s);
   b.add(to_p2(a.at));
@@ -373,6 +404,14 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
   for (const Support_region& g : s.support->regions)
     for (const Vec2& v : g.outline) b.add(to_p2(v));
   if (a.center) b.add(to_p2(*a.center));
+  // the rotation centre, in the picture when it is within a few body sizes (else the caption gives it)
+  std::optional<P2> centre;
+  if (motion && motion->omega != 0) {
+    const P2 p = to_p2(a.at);
+    centre = motion->exact_pivot ? motion->pivot : P2{p.x - motion->u.y / motion->omega, p.y + motion->u.x / motion->omega};
+    const double size = std::max(b.x1 - b.x0, b.y1 - b.y0);
+    if (std::hypot(centre->x - (b.x0 + b.x1) / 2, centre->y - (b.y0 + b.y1) / 2) <= 3 * size) b.add(*centre);
+  }
   Svg_canvas c = b.canvas(title_of(s, source), "push: which way the body turns, for every pressure distribution");
   if (s.body.outline.size() >= 2) {
     std::vector<P2> o;
@@ -427,6 +466,21 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
   if (!a.center) c.legend("stroke=\"" + std::string(kInfinity) + "\" fill=\"" + kInfinity + "\"", "a vote that changes with the distribution");
   c.legend(swatch(kCone, 0.55), "the pusher's friction cone (dashed lines: its edges); green: its velocity");
   c.legend(swatch(kSupport, 0.5), "support: discs grow with mu*f (hollow: force unknown)");
+  if (motion) {  // the body's motion: its rotation centre (exactly a support point for a pivot), or its direction
+    const char* kMotion = "#7b3fa0";
+    const std::string turn = motion->omega > 0 ? " \u21ba" : motion->omega < 0 ? " \u21bb" : "";
+    if (centre && std::isfinite(centre->x) && std::isfinite(centre->y)) {
+      c.line(to_p2(a.at), *centre, "stroke=\"" + std::string(kMotion) + "\" stroke-width=\"1\" stroke-dasharray=\"2 4\"");
+      c.dot(*centre, 6, "fill=\"" + std::string(kMotion) + "\" stroke=\"#222\"");
+      c.text(*centre, std::string(motion->exact_pivot ? "pivot: rotation centre" : "rotation centre") + turn,
+             "fill=\"" + std::string(kMotion) + "\"");
+    } else if (a.center) {  // a translation: its direction from the centre of friction
+      const P2 ctr = to_p2(*a.center), d = unit(motion->u);
+      c.arrow(ctr, {ctr.x + 1.5 * L * d.x, ctr.y + 1.5 * L * d.y}, kMotion, 2);
+    }
+    c.legend("stroke=\"" + std::string(kMotion) + "\" fill=\"" + kMotion + "\"",
+             "the body's motion: its rotation centre (sticking: with the pusher), or its direction");
+  }
   if (a.rotation == Rotation::depends) {  // where c is under the two witnesses
     for (int k = 0; k < 2; ++k) {
       const P2 ctr = to_p2(friction_center(*s.support, k == 0 ? a.turns_ccw : a.turns_cw));
@@ -435,14 +489,33 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
              "fill=\"" + std::string(k == 0 ? kPlus : kMinus) + "\"");
     }
   }
-  // the verdict and its reason, in lines that fit the page
-  std::string line = "rotation: " + std::string(rotation_name(a.rotation)) + " \u2014";
-  std::istringstream words(a.why);
-  for (std::string w; words >> w;) {
-    if (line.size() + w.size() > 85) c.caption(line), line = " ";
-    line += " " + w;
+  // the verdicts and their reasons, in lines that fit the page
+  const auto captions = [&c](const std::string& text) {
+    std::string line;
+    std::istringstream words(text);
+    for (std::string w; words >> w;) {
+      if (!line.empty() && line.size() + w.size() > 85) c.caption(line), line = " ";
+      line += (line.empty() ? "" : " ") + w;
+    }
+    c.caption(line);
+  };
+  captions("rotation: " + std::string(rotation_name(a.rotation)) + " \u2014 " + a.why);
+  if (a.contact) {
+    const Push_contact& k = *a.contact;
+    std::string mode = "contact: " + std::string(push_mode_name(k.mode));
+    if (motion && centre) {
+      char at[96];
+      std::snprintf(at, sizeof at, " \u2014 the body turns %s about (%.4g, %.4g)%s", motion->omega > 0 ? "ccw" : "cw",
+                    centre->x, centre->y, motion->exact_pivot ? ", a support point (exactly)" : "");
+      mode += at;
+      if (k.pivot && k.mode != Push_mode::sticks) mode += " (sliding from the facet of support point " + std::to_string(*k.pivot) + ")";
+    } else if (motion) {
+      mode += " \u2014 the body translates";
+    } else if (k.mode == Push_mode::undecided) {
+      mode += " \u2014 " + k.why;
+    }
+    captions(mode);
   }
-  c.caption(line);
   return c.finish();
 }
 
@@ -452,6 +525,7 @@ std::string render_svg(const Options& o, const std::string& text, const std::str
   if (!o.what) throw Usage_error("render needs --what labels|dual|reuleaux|limit-surface|hold|quality|grasp-regions|push");
   const Picture what = *o.what;
   if (o.sides && what != Picture::limit_surface) throw Usage_error("--sides goes with --what limit-surface");
+  if (o.push.contact && what != Picture::push) throw Usage_error("--contact goes with --what push");
   const Scene s = read_scene(text, o.limits, source);
   if (what == Picture::hold) {
     const Hold_item h = answered(answer_hold(text, source, request_of(o)));
@@ -462,7 +536,7 @@ std::string render_svg(const Options& o, const std::string& text, const std::str
   if (what == Picture::grasp_regions)
     return render_grasp_regions(s, answered(answer_grasp_regions(text, source, request_of(o), o.regions)), source);
   if (what == Picture::push) {
-    const Push_item r = answered(answer_push(text, source, request_of(o)));
+    const Push_item r = answered(answer_push(text, source, request_of(o), o.push));
     if (undecided) *undecided = r.push.rotation == Rotation::undecided;
     return render_push(s, r, source);
   }

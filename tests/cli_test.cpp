@@ -876,6 +876,17 @@ TEST(Cli, PushJsonCertificateContactPictureAndRefusals) {
   EXPECT_EQ(svg.code, 0) << svg.err;
   EXPECT_NE(svg.out.find("centre of friction"), std::string::npos);
   EXPECT_NE(svg.out.find("<svg"), std::string::npos);
+  EXPECT_EQ(svg.out.find("rotation centre"), std::string::npos);  // the contact mode only when asked
+  // --contact: the body turns ccw with the pusher about p + rot90(v)/omega, omega = 0.53605…: (-1.365, 0.8655)
+  const Cli_result moving = run("render --what push --contact " + scene);
+  EXPECT_EQ(moving.code, 0) << moving.err;
+  EXPECT_NE(moving.out.find("rotation centre"), std::string::npos);
+  EXPECT_NE(moving.out.find("contact: sticks \u2014 the body turns ccw about (-1.365, 0.8655)"), std::string::npos) << moving.out;
+  const Cli_result pivot = run("render --what push --contact " + test::source_dir() + "/proofs/examples/push_slide_pivot.scene.json");
+  EXPECT_NE(pivot.out.find("the facet of support point 0)"), std::string::npos) << pivot.out;
+  const Cli_result labels = run("render --what labels --contact " + scene);
+  EXPECT_EQ(labels.code, 2);
+  EXPECT_NE(labels.err.find("--contact goes with --what push"), std::string::npos) << labels.err;
   const Cli_result tie = run("push --mode float " + test::source_dir() + "/docs/pushing/square_tie.json");
   EXPECT_EQ(tie.code, 3) << tie.out << tie.err;
   EXPECT_NE(tie.out.find("rotation: undecided"), std::string::npos) << tie.out;
