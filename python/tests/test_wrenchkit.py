@@ -552,6 +552,12 @@ def test_push_voting_theorem():
     c = wrenchkit.push(legs, contact=True)["contact"]
     assert c["mode"] == "slides right" and c["sticking_pivot"] == 0 and c["sticking_omega"] == (1, 1)
     assert 0 < c["slip"][0] <= c["slip"][1] and Fraction(9, 10) < c["omega"][0] <= c["omega"][1] < 1
+    # the picture: where the body turns, with contact=True only (the CLI's render --what push --contact)
+    svg = wrenchkit.render(legs, "push", contact=True)
+    assert svg.startswith("<?xml") and "rotation centre" in svg and "contact: slides right" in svg
+    assert "rotation centre" not in wrenchkit.render(legs, "push")
+    with pytest.raises(wrenchkit.InputError, match="--contact goes with --what push"):
+        wrenchkit.render(legs, "labels", contact=True)
     square["pusher"]["mu"] = 1
     square["pusher"]["velocity"] = [-1, 2]  # along p -> c: a translation
     assert wrenchkit.push(square)["rotation"] == "none"

@@ -417,14 +417,17 @@ def grasp_regions(part, *, mu=None, edges=None, fingers=2, rank=None, min_side=N
     return r
 
 
-def render(scene, what, *, sides=None):
+def render(scene, what, *, sides=None, contact=False):
     """The SVG picture of `wrenchkit render --what WHAT` (docs/gallery.md), as text: what is "labels", "dual",
-    "reuleaux", "limit-surface", "hold" or "quality" (docs/quality.md); sides (even, with "limit-surface") the
-    polygons' sides (default 32).
+    "reuleaux", "limit-surface", "hold", "quality" (docs/quality.md), "grasp-regions" or "push" (docs/pushing.md);
+    sides (even, with "limit-surface") the polygons' sides (default 32); contact=True (with "push") adds the contact
+    mode and where the body turns.
     """
     words = ["--what", str(what)]
     if sides is not None:
         words += ["--sides", str(int(sides))]
+    if contact:
+        words += ["--contact"]
     return _core.render(_scene(scene), words)
 
 
