@@ -131,7 +131,8 @@ std::string push_human(const Push_item& r, const std::string& source) {
           << "] for the pusher's velocity " << vec_text(a.velocity);
         if (sgn(c.omega_lo) == sgn(c.omega_hi)) {  // about a centre p + rot90(v)/ω, on a segment
           const auto centre = [&](const Rational& w) {
-            return "(" + decimal_text(a.at.x - a.velocity.y / w, 6) + ", " + decimal_text(a.at.y + a.velocity.x / w, 6) + ")";
+            const Vec2 x = rotation_centre(a.at, a.velocity, w);
+            return "(" + decimal_text(x.x, 6) + ", " + decimal_text(x.y, 6) + ")";
           };
           s << ", about a centre between " << centre(c.omega_lo) << " and " << centre(c.omega_hi);
         }
@@ -164,10 +165,11 @@ std::string push_human(const Push_item& r, const std::string& source) {
         } else {
           s << ", turning at a rate in [" << decimal_text(c.motion_lo, 10) << ", " << decimal_text(c.motion_hi, 10) << "]";
           if (sgn(c.motion_lo) == sgn(c.motion_hi)) {  // about p + rot90(u)/ω, u the velocity at p (midpoints)
-            const double tau = Rational((c.slip_lo + c.slip_hi) / 2).get_d(), w = Rational((c.motion_lo + c.motion_hi) / 2).get_d();
-            const double ux = a.velocity.x.get_d() + tau * t.x.get_d(), uy = a.velocity.y.get_d() + tau * t.y.get_d();
+            const Rational tau = (c.slip_lo + c.slip_hi) / 2;
+            const Vec2 x = rotation_centre(a.at, {a.velocity.x + tau * t.x, a.velocity.y + tau * t.y},
+                                           (c.motion_lo + c.motion_hi) / 2);
             char buf[96];
-            std::snprintf(buf, sizeof buf, "(%.6g, %.6g)", a.at.x.get_d() - uy / w, a.at.y.get_d() + ux / w);
+            std::snprintf(buf, sizeof buf, "(%.6g, %.6g)", x.x.get_d(), x.y.get_d());
             s << ", about a centre near " << buf;
           }
           s << "\n";

@@ -363,29 +363,28 @@ std::string render_grasp_regions(const Scene& s, const Grasp_regions_item& r, co
 }
 
 
-// The body's motion of a decided contact mode (PU-2): its velocity at the pusher u (the pusher's, plus the slip along
-// its face when sliding) and its rotation rate ω, the brackets' midpoints; none when not decided or not bracketed.
+// The body's motion of a decided contact mode (PU-2), from the brackets' midpoints: its rotation centre
+// (rotation_centre: a support point exactly for a pivot) and rate, or, when it translates, its velocity at the pusher;
+// none when not decided or not bracketed.
 struct Push_motion {
-  P2 u;
   double omega = 0;
-  bool exact_pivot = false;  // the rotation about a support point (a facet): its centre is that point, exactly
-  P2 pivot;
+  std::optional<P2> centre;  // ω ≠ 0
+  P2 u;                      // the velocity at the pusher (the pusher's, plus the slip along its face)
+  bool exact_pivot = false;
 };
 std::optional<Push_motion> push_motion(const Scene& s, const Push_answer& a) {
   if (!a.contact) return std::nullopt;
   const Push_contact& k = *a.contact;
-  Push_motion m;
-  const P2 v = to_p2(a.velocity), t{-a.normal.y.get_d(), a.normal.x.get_d()};
-  if (k.mode == Push_mode::sticks || k.mode == Push_mode::impending) {
-    m.u = v, m.omega = Rational((k.omega_lo + k.omega_hi) / 2).get_d();
-    if (k.pivot) m.exact_pivot = true, m.pivot = to_p2(s.support->points[*k.pivot].at);
-  } else if ((k.mode == Push_mode::slides_left || k.mode == Push_mode::slides_right) && k.has_motion) {
-    const double tau = Rational((k.slip_lo + k.slip_hi) / 2).get_d();
-    m.u = {v.x + tau * t.x, v.y + tau * t.y}, m.omega = Rational((k.motion_lo + k.motion_hi) / 2).get_d();
-    if (k.motion_pivot) m.exact_pivot = true, m.pivot = to_p2(s.support->points[*k.motion_pivot].at);
-  } else {
+  const bool sticks = k.mode == Push_mode::sticks || k.mode == Push_mode::impending;
+  if (!sticks && !((k.mode == Push_mode::slides_left || k.mode == Push_mode::slides_right) && k.has_motion))
     return std::nullopt;
-  }
+  const Rational tau = sticks ? Rational(0) : Rational((k.slip_lo + k.slip_hi) / 2);
+  const Rational w = sticks ? Rational((k.omega_lo + k.omega_hi) / 2) : Rational((k.motion_lo + k.motion_hi) / 2);
+  const Vec2 u{a.velocity.x - tau * a.normal.y, a.velocity.y + tau * a.normal.x};  // v + τ·rot90(n)
+  const std::optional<std::size_t> pivot = sticks ? k.pivot : k.motion_pivot;
+  Push_motion m;
+  m.omega = w.get_d(), m.u = to_p2(u), m.exact_pivot = pivot.has_value();
+  if (w != 0) m.centre = to_p2(pivot ? s.support->points[*pivot].at : rotation_centre(a.at, u, w));
   return m;
 }
 
@@ -405,10 +404,8 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
     for (const Vec2& v : g.outline) b.add(to_p2(v));
   if (a.center) b.add(to_p2(*a.center));
   // the rotation centre, in the picture when it is within a few body sizes (else the caption gives it)
-  std::optional<P2> centre;
-  if (motion && motion->omega != 0) {
-    const P2 p = to_p2(a.at);
-    centre = motion->exact_pivot ? motion->pivot : P2{p.x - motion->u.y / motion->omega, p.y + motion->u.x / motion->omega};
+  const std::optional<P2> centre = motion ? motion->centre : std::nullopt;
+  if (centre) {
     const double size = std::max(b.x1 - b.x0, b.y1 - b.y0);
     if (std::hypot(centre->x - (b.x0 + b.x1) / 2, centre->y - (b.y0 + b.y1) / 2) <= 3 * size) b.add(*centre);
   }

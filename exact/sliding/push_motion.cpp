@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <tuple>
+#include <utility>
 
 #include "core/contact_generators.h"
 #include "exact/sliding/pushing.h"
@@ -85,6 +87,20 @@ int g_sign(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& u, cons
     if (reach_lo > 0 && hi - reach_lo < 0 && lo + reach_lo > 0) return 2;
   }
   return 0;
+}
+
+// [PU-2 §7] The support point whose rotation moves p with velocity u (u ⟂ r_j − p, r_j ≠ p) and at whose rate
+// ω_j = −(u·rot90 d_j)/|d_j|² g's jump surely holds 0 — then that rotation is u's sticking candidate, exactly (g is
+// nondecreasing) —, with ω_j; none when there is no such point (the root, if any, is where every point moves).
+std::optional<std::pair<std::size_t, Rational>> pivot_of(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& u) {
+  for (std::size_t j = 0; j < pts.size(); ++j) {
+    const Vec2 d = minus(pts[j].at, p);
+    if (pts[j].rho == 0 || (d.x == 0 && d.y == 0) || dot(u, d) != 0) continue;
+    const Rational w = -dot(u, rot90(d)) / dot(d, d);
+    int bits = 64;
+    if (g_sign(pts, p, u, w, bits) == 2) return std::pair{j, w};
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -368,15 +384,10 @@ class Tangent {
  public:
   Tangent(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2& t, const Rational& tolerance)
       : pts_(pts), p_(p), t_(t) {
-    for (std::size_t k = 0; k < pts.size(); ++k) {
-      const Vec2 d = minus(pts[k].at, p);
-      if (pts[k].rho == 0 || (d.x == 0 && d.y == 0) || dot(t, d) != 0) continue;
-      const Rational w = -dot(t, rot90(d)) / dot(d, d);
-      if (g_sign(pts, p, t, w, bits_) != 2) continue;
-      pivot_ = k, w_ = w;
+    if (const auto pivot = pivot_of(pts, p, t)) {
+      std::tie(pivot_, w_) = *pivot;
       return;
     }
-    bits_ = 64;
     const double wt = Double_points(pts, p).rate(t.x.get_d(), t.y.get_d());
     const double pad = std::max(1e-300, 0.25 * tolerance.get_d() * std::max(1.0, std::fabs(wt)));
     if (std::isfinite(wt) && wt != 0) candidate_.emplace(pts, p, t, Rational(wt - pad), Rational(wt + pad));
@@ -585,6 +596,10 @@ void sliding_motion(const std::vector<Rho_point>& pts, const Vec2& p, const Vec2
 
 }  // namespace
 
+Vec2 rotation_centre(const Vec2& p, const Vec2& u, const Rational& omega) {
+  return {p.x - u.y / omega, p.y + u.x / omega};
+}
+
 Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance) {
   Push_contact r;
   const Support& s = model.support();
@@ -608,8 +623,8 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
   std::optional<Tangent> plus;  // the tangent velocity rot90 n: the end F(t) of the pushing forces
   const auto failed = [&](const Candidate& k) {
     if (k.state() == Candidate::State::pivot) {
-      r.why = "a rotation about a support point (a facet of the limit surface) meets the pusher's motion: not yet "
-              "answered";
+      r.why = "a rotation about a support point (a facet of the limit surface) meets the motion, and whether its jump "
+              "holds the root could not be certified";
       return true;
     }
     if (k.state() == Candidate::State::failed) {
@@ -640,24 +655,19 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
   // [PU-2 §7] The sticking candidate at a pivot: the pusher's velocity ⟂ r_j − p and g's jump at ω_j holding 0 (then
   // ω* = ω_j exactly: g is nondecreasing). Only there can a support point be at rest while p moves with u.
   // Every force of its facet beyond an edge (§8): it slides from the facet, on that edge.
-  if (c.mu != 0)
-    for (std::size_t j = 0; j < pts.size(); ++j) {
-      const Vec2 d = minus(pts[j].at, p);
-      if (pts[j].rho == 0 || (d.x == 0 && d.y == 0) || dot(u, d) != 0) continue;
-      const Rational w = -dot(u, rot90(d)) / dot(d, d);
-      int bits = 64;
-      if (g_sign(pts, p, u, w, bits) != 2) continue;  // the jump misses 0: the root is elsewhere
-      const Push_mode m = sticking_pivot(pts, j, p, u, w, eL, eR, r);
-      if (m == Push_mode::slides_left || m == Push_mode::slides_right) {  // §8: from the facet, on the edge it passed
-        const bool right = m == Push_mode::slides_right;
-        if (!tangent() || !in_pushing_half_plane(right ? eR : eL)) return r;
-        r.mode = m;
-        sliding_motion(pts, p, u, t, right ? eR : eL, right, nullptr, tolerance, r);
-        return r;
-      }
+  if (const auto pivot = c.mu != 0 ? pivot_of(pts, p, u) : std::nullopt) {
+    const auto& [j, w] = *pivot;
+    const Push_mode m = sticking_pivot(pts, j, p, u, w, eL, eR, r);
+    if (m == Push_mode::slides_left || m == Push_mode::slides_right) {  // §8: from the facet, on the edge it passed
+      const bool right = m == Push_mode::slides_right;
+      if (!tangent() || !in_pushing_half_plane(right ? eR : eL)) return r;
       r.mode = m;
+      sliding_motion(pts, p, u, t, right ? eR : eL, right, nullptr, tolerance, r);
       return r;
     }
+    r.mode = m;
+    return r;
+  }
   // The sticking candidate: the doubles propose ω* within a quarter of the tolerance, the exact signs keep it (else
   // the exact search brackets it).
   const double w_guess = Double_points(pts, p).rate(u.x.get_d(), u.y.get_d());

@@ -103,6 +103,10 @@ struct Push_contact {
 };
 Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance);
 
+// The centre of the body's rotation with velocity u at the point p and rate ω ≠ 0: p + rot90(u)/ω, the point x where
+// u + ω·rot90(x − p) = 0 (the text and the picture of push --contact).
+Vec2 rotation_centre(const Vec2& p, const Vec2& u, const Rational& omega);
+
 struct Push_answer {
   Vec2 at, normal, velocity;
   Rational mu;

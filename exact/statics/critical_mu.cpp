@@ -186,7 +186,6 @@ Rational root_bound(const Poly& p) {
   return 1 + m;
 }
 
-
 // The edges as families a + μ b: each point contact's left (a + μ b) and right (a − μ b), each wrench contact's wrench
 // (b = 0), and the load (b = 0) when asked.
 struct Family {
