@@ -221,4 +221,17 @@ bool brute_force_closure(const std::vector<Vec3q>& g) {
                                        << "\nscene: " << scene_text;
 }
 
+::testing::AssertionResult checker_refuses_edit(const std::string& scene_text, std::string cert, const std::string& from,
+                                                const std::string& to, const std::string& reason) {
+  const std::size_t at = cert.find(from);
+  if (at == std::string::npos) return ::testing::AssertionFailure() << from << " is not in " << cert;
+  cert.replace(at, from.size(), to);
+  const auto r = wrenchkit_checker::check(scene_text, cert);
+  if (r.outcome != wrenchkit_checker::Outcome::rejected)
+    return ::testing::AssertionFailure() << "accepted: " << cert;
+  if (r.message.find(reason) == std::string::npos)
+    return ::testing::AssertionFailure() << "rejected for another reason: " << r.message << " (expected " << reason << ")";
+  return ::testing::AssertionSuccess();
+}
+
 }  // namespace wrenchkit::test

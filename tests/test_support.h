@@ -83,5 +83,8 @@ Cli_result run_cli(const std::string& exe, const std::string& env, const std::st
 
 // The independent checker on a scene text and a certificate text.
 ::testing::AssertionResult checker_accepts(const std::string& scene_text, const std::string& cert);
+// The certificate with its first `from` replaced by `to` is rejected by the checker with a message containing `reason`.
+::testing::AssertionResult checker_refuses_edit(const std::string& scene_text, std::string cert, const std::string& from,
+                                                const std::string& to, const std::string& reason);
 
 }  // namespace wrenchkit::test

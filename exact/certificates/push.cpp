@@ -20,7 +20,35 @@ void write_range(Json_writer& w, const F_range& r, bool lower_only) {
 
 }  // namespace
 
+// §8.3: a line pusher's stable push (PU-3): the verdict and what proves it.
+static std::string line_push_certificate(const Push_answer& a) {
+  const Stable_push& st = *a.stable;
+  Json_writer w(512);
+  w.object().member("wrenchkit_certificate", 6).member("property", "push");
+  if (a.rotation != Rotation::undecided) w.member("rotation", rotation_name(a.rotation));
+  w.key("center").array().rational(a.center->x).rational(a.center->y).end_array();
+  w.key("stable").object().member("verdict", stability_name(st.verdict)).member("R2", st.R2);
+  if (st.verdict == Stability::stable && st.sense != 0 && st.tip_line)
+    w.member("R_hi", st.R_hi).member("d_lo", st.d_lo).member("alpha_hi", st.alpha_hi);
+  if (st.verdict == Stability::stable && !st.duals.empty()) {  // facets proven by the LP's dual (PU-3 §6)
+    w.key("duals").object();
+    for (const auto& [f, y] : st.duals) w.key(cone_facet_name(f)).rationals(y);
+    w.end_object().member("bits", st.bits);
+  }
+  if (st.verdict == Stability::unstable) {
+    w.member("facet", cone_facet_name(st.facet));
+    if (st.sense != 0) {
+      w.key("witness").object().key("points").array();
+      for (const Vec2& x : st.points) w.array().rational(x.x).rational(x.y).end_array();
+      w.end_array().key("weights").rationals(st.weights).member("bits", st.bits).end_object();
+    }
+  }
+  w.end_object();
+  return w.end_object().take();
+}
+
 std::string push_certificate(const Push_answer& a) {
+  if (a.stable) return line_push_certificate(a);
   Json_writer w(512);
   w.object().member("wrenchkit_certificate", 6).member("property", "push").member("rotation", rotation_name(a.rotation));
   w.key("friction");

@@ -141,6 +141,11 @@ void check_outline(Scene& s, bool lenient) {
     check_on_outline(c, "contacts[" + std::to_string(k) + "]", V, orientation, violation);
   }
   if (s.pusher) check_on_outline(s.pusher->contact, "pusher", V, orientation, violation);
+  if (s.pusher && s.pusher->end) {  // a line contact: both its ends on the outline
+    Contact second = s.pusher->contact;
+    second.at = *s.pusher->end;
+    check_on_outline(second, "pusher.segment[1]", V, orientation, violation);
+  }
 }
 
 }  // namespace wrenchkit

@@ -266,13 +266,35 @@ class Reader {
     expect(v, Type::object, "pusher", "an object");
     if (v.find("wrench"))
       fail("pusher", "is a point contact {\"at\", \"normal\", \"mu\", \"velocity\"}, not a wrench");
-    Value rest = v;  // the contact's own keys (velocity read here)
+    Value rest = v;  // the contact's own keys (velocity, and a line contact's segment and omega, read here)
     rest.members.erase(std::remove_if(rest.members.begin(), rest.members.end(),
-                                      [](const auto& m) { return m.first == "velocity"; }),
+                                      [](const auto& m) {
+                                        return m.first == "velocity" || m.first == "segment" || m.first == "omega";
+                                      }),
                        rest.members.end());
     Pusher p;
     const Value& vel = required(v, "pusher", "velocity");
-    if (v.find("edge") || v.find("s")) {
+    const Value* seg = v.find("segment");
+    if (v.find("omega") && !seg)
+      fail("pusher.omega", "is a line contact's rotation rate: give \"segment\": [[x1, y1], [x2, y2]] (a point pusher "
+                           "moves with its velocity alone)");
+    if (seg) {  // a line contact (PU-3): its first end stands as the contact's point, read with its normal and mu
+      if (v.find("at") || v.find("edge") || v.find("s"))
+        fail("pusher", "give either \"segment\" (a line contact) or \"at\" / {\"edge\", \"s\"} (a point contact), not both");
+      if (seg->type != Type::array || seg->items.size() != 2)
+        fail("pusher.segment", "expected an array of two points [[x1, y1], [x2, y2]] (the ends of the line contact)");
+      rest.members.emplace_back("at", seg->items[0]);
+      p.contact = contact(rest, "pusher", /*eager=*/true);
+      p.end = vec2(seg->items[1], "pusher.segment[1]");
+      const Vec2 first = vec2(seg->items[0], "pusher.segment[0]");
+      const Vec2 along = minus(*p.end, first);
+      if (is_zero(along)) fail("pusher.segment", "its two ends are the same point: a point pusher is {\"at\": [x, y], …}");
+      if (dot(along, p.contact.normal) != 0)
+        fail("pusher.normal", "(" + p.contact.normal.x.get_str() + ", " + p.contact.normal.y.get_str() +
+                                  ") is not perpendicular to the segment (the line contact's inward normal is "
+                                  "perpendicular to its edge)");
+      if (const Value* w = v.find("omega")) p.omega = number(*w, "pusher.omega");
+    } else if (v.find("edge") || v.find("s")) {
       Contact c;
       if (const Value* n = v.find("name")) {
         expect(*n, Type::string, "pusher.name", "a string");
@@ -282,7 +304,7 @@ class Reader {
     } else {
       p.contact = contact(rest, "pusher", /*eager=*/true);
     }
-    p.velocity = vec2(vel, "pusher.velocity");
+    p.velocity = vec2(vel, "pusher.velocity");  // (a line contact's: at the middle of its segment)
     const Rational push = dot(p.velocity, p.contact.normal);
     const auto point_text = [](const Vec2& a) { return "(" + a.x.get_str() + ", " + a.y.get_str() + ")"; };
     if (push <= 0)

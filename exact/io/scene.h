@@ -131,10 +131,15 @@ struct Body {
 
 // A pusher (docs/scene-format.md "The pusher"; docs/pushing.md): a point contact on the body — its point, inward
 // normal and Coulomb coefficient, read as contacts[] are (placed by {"edge", "s"} too) — moving with `velocity`
-// (velocity · normal > 0: it pushes into the body).
+// (velocity · normal > 0: it pushes into the body). A line contact (PU-3, a fence or a flat pusher: "segment"
+// [[x1, y1], [x2, y2]] instead of "at") has its first end as `contact.at`, its second `end`, and moves as a rigid body:
+// `velocity` at the middle of the segment and the rotation rate `omega` (counter-clockwise positive; 0 translates).
 struct Pusher {
   Contact contact;
   Vec2 velocity;
+  std::optional<Vec2> end;  // a line contact's second end
+  Rational omega;           // a line contact's rotation rate
+  bool line() const { return end.has_value(); }
 };
 
 struct Scene {

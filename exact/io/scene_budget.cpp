@@ -49,7 +49,8 @@ Place member(Place object, std::string_view key) {
     case Place::body: return key == "outline" ? Place::outline : key == "com" ? Place::numbers : Place::other;
     case Place::contact:
       return key == "at" || key == "normal" || key == "wrench" || key == "velocity" ? Place::numbers
-             : key == "mu"                                     ? Place::number
+             : key == "mu" || key == "omega"                   ? Place::number
+             : key == "segment"                                ? Place::outline  // (a line pusher's two points)
                                                                : Place::other;
     case Place::load:
       return key == "force" || key == "at" || key == "wrench" ? Place::numbers

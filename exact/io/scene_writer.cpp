@@ -104,8 +104,10 @@ std::string write_scene(const Scene& s) {
   }
   if (s.pusher) {  // as a point contact at its place (a placed pusher's point and normal written out)
     const Contact& c = s.pusher->contact;
-    o += ",\n \"pusher\": {\"at\": " + pt(c.at) + ", \"normal\": " + pt(c.normal) + ", \"mu\": " + q(c.mu) +
-         ", \"velocity\": " + pt(s.pusher->velocity);
+    o += ",\n \"pusher\": {" +
+         (s.pusher->end ? "\"segment\": [" + pt(c.at) + ", " + pt(*s.pusher->end) + "]" : "\"at\": " + pt(c.at)) +
+         ", \"normal\": " + pt(c.normal) + ", \"mu\": " + q(c.mu) + ", \"velocity\": " + pt(s.pusher->velocity);
+    if (s.pusher->end && s.pusher->omega != 0) o += ", \"omega\": " + q(s.pusher->omega);
     if (!c.name.empty()) o += ", \"name\": " + json::quote(c.name);
     o += "}";
   }

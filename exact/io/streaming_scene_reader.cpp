@@ -99,7 +99,7 @@ class Stream {
         case kSupport: support(out.support ? *out.support : out.support.emplace()); break;
         case kPusher: {  // a point contact with its velocity (scene.cpp's pusher(): read eagerly)
           Pusher& p = out.pusher ? *out.pusher : out.pusher.emplace();
-          if (!contact(p.contact, 2, &p.velocity)) defer();
+          if (!contact(p.contact, 2, &p)) defer();
           if (lazy_) p.contact = exact_contact(p.contact);
           break;
         }
@@ -135,6 +135,8 @@ class Stream {
       c.twin.frictional = c.mu != 0;
       c.exact_pending = false;
       if (sgn(dot(out.pusher->velocity, c.normal)) <= 0) defer();  // read_scene_tree says why
+      if (out.pusher->end && (is_zero(minus(*out.pusher->end, c.at)) || dot(minus(*out.pusher->end, c.at), c.normal) != 0))
+        defer();  // (a line pusher: two ends, the normal perpendicular to its segment)
     }
     if (!(seen & kBody)) {
       out.body.outline.clear();
@@ -334,9 +336,11 @@ class Stream {
   // A point contact {at, normal, mu?, name?} or a wrench generator {wrench, name?} (scene.cpp's
   // contact() and lazy_contact()); with `velocity`, the pusher's point contact and its "velocity" (required; false
   // for a wrench or without it).
-  bool contact(Contact& c, std::size_t level, Vec2* velocity = nullptr) {
+  bool contact(Contact& c, std::size_t level, Pusher* pusher = nullptr) {
     reset(c);
-    enum : unsigned { kAt = 1, kNormal = 2, kMu = 4, kWrench = 8, kName = 16, kVelocity = 32 };
+    Vec2* velocity = pusher ? &pusher->velocity : nullptr;
+    if (pusher) pusher->end.reset(), zero(pusher->omega);
+    enum : unsigned { kAt = 1, kNormal = 2, kMu = 4, kWrench = 8, kName = 16, kVelocity = 32, kSegment = 64, kOmega = 128 };
     unsigned seen = 0;
     int mu_sign = 0;
     bool zero_normal = false, zero_wrench = false;
@@ -347,11 +351,25 @@ class Stream {
                            : key == "wrench" ? kWrench
                            : key == "name"   ? kName
                            : key == "velocity" && velocity ? kVelocity
+                           : key == "segment" && pusher ? kSegment  // a line pusher: its first end is the contact's point
+                           : key == "omega" && pusher ? kOmega
                                              : 0u;
       if (bit == 0 || (seen & bit)) defer();
       seen |= bit;
       if ((seen & kWrench) && (seen & (kAt | kNormal | kMu))) defer();  // a key of the other kind
+      if ((seen & kSegment) && (seen & (kAt | kWrench))) defer();        // read_scene_tree says why
       switch (bit) {
+        case kSegment: {
+          open('[', level + 1);
+          Rational* q[] = {&c.at.x, &c.at.y};
+          fl::Bounded* b[] = {&c.twin.ax, &c.twin.ay};
+          contact_numbers(c, level + 2, 0, q, b, 2);
+          expect(',');
+          vec2(pusher->end.emplace(), level + 2);
+          expect(']');
+          break;
+        }
+        case kOmega: exact(pusher->omega); break;
         case kAt: {
           Rational* q[] = {&c.at.x, &c.at.y};
           fl::Bounded* b[] = {&c.twin.ax, &c.twin.ay};
@@ -378,6 +396,8 @@ class Stream {
     c.has_twin = true;
     c.exact_pending = lazy_;
     if (velocity && (!(seen & kVelocity) || (seen & kWrench))) return false;
+    if ((seen & kOmega) && !(seen & kSegment)) defer();
+    if (seen & kSegment) seen |= kAt;
     if (seen & kWrench) {
       if (zero_wrench) defer();
       c.kind = Contact::Kind::wrench;

@@ -15,6 +15,16 @@ Push_item answer_push(std::string_view text, std::string_view source, const Requ
       throw Input_error("support: missing (push needs the support the body slides on: its points or regions with "
                         "their friction, as limit-surface reads them)");
     const Support_model model(r.scene);
+    if (r.scene.pusher->line()) {  // a line contact (PU-3): is its motion stable — exact in every mode
+      if (query.contact)
+        throw Input_error("--contact: the contact mode is answered for a point pusher; a line pusher (\"segment\") "
+                          "answers whether its motion is stable (drop --contact)");
+      r.push = decide_line_push(model, *r.scene.pusher);
+      if (!request.certify || r.push.stable->verdict == Stability::undecided) return;
+      r.certificate = push_certificate(r.push);
+      check_into(r, text, {r.certificate}, request);
+      return;
+    }
     // float: the twin alone (no certificate: its signs are certified by their error bounds, FL-1); a certificate
     // needs the exact values; hybrid without one: the twin first
     const Mode mode = request.mode == Mode::float_only ? Mode::float_only : request.certify ? Mode::exact : request.mode;

@@ -30,6 +30,7 @@
 #include "core/mode.h"
 #include "exact/sliding/motion.h"
 #include "exact/sliding/precise_motion.h"
+#include "exact/sliding/stable_push.h"
 
 namespace wrenchkit {
 
@@ -122,7 +123,8 @@ struct Push_answer {
   bool line_friction_possible = false;
   bool by_twin = false;  // decided by the float twin's certified signs (no exact values: no certificate from it)
   std::optional<Push_contact> contact;  // the contact mode, when asked (PU-2)
-  bool votes_known = true;  // false: the float twin could not decide, `votes` is empty
+  bool votes_known = true;  // false: the float twin could not decide, or a line pusher (no votes), `votes` is empty
+  std::optional<Stable_push> stable;  // a line pusher (PU-3): is its motion stable
 };
 
 // The rotation sense of the body pushed by `pusher` on `model`'s support. Throws Input_error when some distribution
@@ -132,6 +134,10 @@ struct Push_answer {
 // forces not given, or a sign its bounds cannot decide); hybrid — the twin first, the exact decision when it cannot
 // tell. An answer of the twin has `by_twin` set and its votes' ranges hold only their signs (−1, 0, 1).
 Push_answer decide_push(const Support_model& model, const Pusher& pusher, Mode mode = Mode::exact);
+
+// A line pusher (pusher.line(), PU-3): `stable` decided (stable_push.h), exact in every mode; the rotation is the
+// pusher's own when stable (the body moves with it), else undecided (a line contact's sliding is not answered).
+Push_answer decide_line_push(const Support_model& model, const Pusher& pusher);
 
 
 

@@ -257,7 +257,7 @@ Certificate read_certificate(Reader& r) {
     } else if (key == "fingers" || key == "mu" || key == "edges" || key == "pairs" || key == "triples") {
       read_region_member(r, key, c);
     } else if (key == "rotation" || key == "friction" || key == "votes" || key == "center" || key == "turns" ||
-               key == "contact") {
+               key == "contact" || key == "stable") {
       read_push_member(r, key, c);
     } else if (key == "holds") {
       if (r.peek() == Kind::string) {  // property "hold" only (checked once the property is known)
@@ -401,12 +401,13 @@ void check_keys(const Certificate& c) {
       throw Failure{"key \"independent\" is not allowed when \"property\" is \"equilibrium\""};
   };
   need("wrenchkit_certificate"), need("property");
-  static const char* const push_keys[] = {"rotation", "friction", "votes", "center", "turns", "contact"};
+  static const char* const push_keys[] = {"rotation", "friction", "votes", "center", "turns", "contact", "stable"};
   if ((c.version == 6) != c.push)
     throw Failure{c.push ? "wrenchkit_certificate: property \"push\" is format 6 (expected the integer 6)"
                          : "wrenchkit_certificate: format 6 is property \"push\" only"};
   if (c.push) {
-    need("rotation"), need("friction");
+    if (c.keys.count("stable")) need("center");  // a line pusher (§8.3): its rotation only when stable
+    else need("rotation"), need("friction");
     static const char* const others[] = {
         "holds", "combination", "independent", "twist", "reading", "load", "motion", "support_forces", "speed_bounds",
         "dual", "vertices", "sticking", "sliding", "holding", "failing", "regions", "norm", "normalize", "torque_scale",

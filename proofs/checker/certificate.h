@@ -81,7 +81,7 @@ class Key_set {
                                              "constant_beyond", "limit_twist", "scaling", "torque_radius_squared",
                                              "torque_scale_error", "fingers", "mu", "edges", "pairs", "triples",
                                              "rotation", "friction", "votes", "center", "turns",
-                                             "contact"};
+                                             "contact", "stable"};
     for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
       if (known[i] == key) return i;
     return -1;
@@ -200,6 +200,19 @@ struct Push_part {
   bool has_sliding = false, has_slip_omega = false, has_pivot = false;
   std::size_t pivot = 0;  // the rotation about support point `pivot` (PU-2 §6)
   Q slip[2], slip_omega[2][2], motion[2];
+  // "stable" (§8.3): a line pusher's verdict, R² and, stable and rotating, the bounds of the corrected tip line;
+  // unstable, the facet left and, rotating, the witness distribution
+  bool has_stable = false, has_bounds = false, has_facet = false, has_witness = false;
+  std::string_view verdict, facet;
+  Q R2, R_hi, d_lo, alpha_hi;
+  std::vector<std::array<Q, 2>> points;
+  std::vector<Q> weights;
+  std::size_t witness_bits = 0;
+  // stable on a support of points: facets proven by the LP's dual [y0, yx, yy] (indexed as the facets), at `dual_bits`
+  bool has_dual[4] = {false, false, false, false};
+  Q dual[4][3];
+  std::size_t dual_bits = 0;
+  bool has_dual_bits = false;
 };
 
 struct Certificate {

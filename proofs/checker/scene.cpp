@@ -155,9 +155,10 @@ struct Placed {
 // scene-wide "mu", which may come later, replaces its "0".
 void read_vector(Reader& r, const Limits& lim, std::size_t n, Q* out);
 
-// The pusher's contact (`velocity` given) reads its "velocity" too: *has_velocity tells whether it was there.
+// The pusher's contact (`pusher` given) reads its "velocity" too (pusher->has_velocity tells whether it was there),
+// and a line contact's "segment" (its first end the contact's point) and "omega".
 Contact read_contact(Reader& r, const Limits& lim, std::optional<std::array<Read_number, 5>>* no_mu = nullptr,
-                     std::optional<Placed>* placed = nullptr, Q* velocity = nullptr, bool* has_velocity = nullptr) {
+                     std::optional<Placed>* placed = nullptr, Pusher* pusher = nullptr) {
   begin_object(r, "expected an object {\"at\", \"normal\", \"mu\"?, \"name\"?} or {\"wrench\", \"name\"?}");
   Read_number point[5], wrench[3];  // x, y, nx, ny, mu ("0" if absent); fx, fy, m
   std::string_view key;
@@ -183,9 +184,19 @@ Contact read_contact(Reader& r, const Limits& lim, std::optional<std::array<Read
       if (read_numbers(r, lim, 3, wrench)) r.fail("zero wrench");
     } else if (key == "name") {
       read_string(r);
-    } else if (key == "velocity" && velocity) {
-      read_vector(r, lim, 2, velocity);
-      *has_velocity = true;
+    } else if (key == "velocity" && pusher) {
+      read_vector(r, lim, 2, pusher->velocity);
+      pusher->has_velocity = true;
+    } else if (key == "segment" && pusher) {
+      keys |= kAt;
+      pusher->line = true;
+      read_fixed(r, 2, "an array of two points [[x1, y1], [x2, y2]]", [&](std::size_t k) {
+        if (k == 0) read_numbers(r, lim, 2, point);
+        else read_vector(r, lim, 2, pusher->end);
+      });
+    } else if (key == "omega" && pusher) {
+      pusher->has_omega = true;
+      pusher->omega = read_number(r, lim);
     } else {
       r.fail("unknown key " + quote(key), true);
     }
@@ -597,11 +608,12 @@ Scene read_scene(Reader& r, const Limits& lim) {
     } else if (key == "support") {
       scene.support = read_support(r, lim);
     } else if (key == "pusher") {  // a point contact with "velocity" (docs/scene-format.md "The pusher")
-      bool has_velocity = false;
       Pusher& p = scene.pusher.emplace();
-      p.contact = read_contact(r, lim, &pusher_no_mu, &pusher_place, p.velocity, &has_velocity);
-      if (!has_velocity) r.fail("missing required key \"velocity\"");
+      p.contact = read_contact(r, lim, &pusher_no_mu, &pusher_place, &p);
+      if (!p.has_velocity) r.fail("missing required key \"velocity\"");
       if (p.contact.wrench) r.fail("the pusher is a point contact, not a wrench");
+      if (p.has_omega && !p.line) r.fail("\"omega\" is a line contact's (with \"segment\")");
+      if (p.line && pusher_place) r.fail("a line contact has \"segment\", not \"edge\" and \"s\"");
     } else if (key == "contacts") {
       begin_array(r, "expected an array");
       while (r.next_item()) {

@@ -56,10 +56,13 @@ struct Support {
   Q W, c[2], rest_weight, rest_moment[2];  // (W: not set when every force is given and no weight is written)
 };
 
-// The pusher (docs/scene-format.md "The pusher"): a point contact moving with `velocity`.
+// The pusher (docs/scene-format.md "The pusher"): a point contact moving with `velocity`; or a line contact from
+// contact's point to `end` moving as a rigid body, `velocity` at the segment's middle, rotating at `omega`.
 struct Pusher {
   Contact contact;
   Q velocity[2];
+  bool has_velocity = false, line = false, has_omega = false;
+  Q end[2], omega;
 };
 
 struct Scene {

@@ -1,0 +1,70 @@
+// [PU-3] Stable pushing with a line contact (Lynch & Mason, IJRR 15(6) 1996; proofs/notes/PU-3-stable-pushing.md):
+// does the body stay fixed to a pusher that touches it along a segment, for every pressure distribution?
+//
+// The pusher (scene "pusher" with "segment") touches the body along [e0, e1] with inward normal n and coefficient μ,
+// and moves as a rigid body: velocity v at the segment's middle m and rotation rate ω — a rotation about
+// q = m + rot90(v)/ω (sense σ = sign ω), or a translation (ω = 0). The body fixed to it has a frictional load; the
+// push is **stable** when that load lies in the composite friction cone CF of the segment (forces inside the cone
+// whose line crosses the segment: four facets) for every distribution of the support's friction on S — the support's
+// points and regions with μ > 0 — whose centre is the centre of friction c (fixed: every force given, or one μ).
+//
+//   translation: the load is v through c, the same for every distribution: four exact signs decide (≥ 0 each:
+//     stable; some facet 0 is the load on CF's boundary, still sticking; one < 0: unstable).
+//   rotation: sufficient, distribution-free (PU-3 §2, §3, §5): both direction facets by S's extreme vertices, one end's
+//     moment by the bisector of that end and c, the other's by the tip line with its correction E — four rational
+//     inequalities (√ bracketed: R ≤ R_hi, d_lo ≤ |q − c|, α_hi ≥ |c − end|). Else a **witness**: one, two or three
+//     points of S with weights whose mean is c, whose load is certainly beyond a facet (its sign from square roots
+//     bracketed at `bits`): unstable. On a support of points (at most 48), a facet whose condition fails is decided by
+//     the linear program over the distributions: a witness, or its dual proving the facet for all of them (§7).
+//     Neither: undecided (the load on the cone's boundary, or a region's support where the conditions are sufficient,
+//     not necessary).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "exact/sliding/motion.h"
+
+namespace wrenchkit {
+
+enum class Stability { stable, unstable, undecided };
+const char* stability_name(Stability s);  // "stable", "unstable", "undecided"
+
+// The composite cone's facets: the load's force left of the cone's left edge n + μ·rot90 n, right of its right
+// edge, and its line past either end of the segment (its moment about that end of the wrong sign). Ends by their index
+// in the scene's "segment".
+enum class Cone_facet { left_edge, right_edge, end0, end1 };
+const char* cone_facet_name(Cone_facet f);  // "left edge", "right edge", "end 0", "end 1"
+
+struct Stable_push {
+  Stability verdict = Stability::undecided;
+  std::string why;
+  int sense = 0;                   // +1 ccw, −1 cw (the pusher's rotation), 0 a translation
+  std::optional<Vec2> centre;      // q, rotating
+  std::optional<Vec2> friction_centre;  // c (none: it moves with the distribution — undecided)
+  Rational R2;                     // max |x − c|² over S's vertices
+  // stable, rotating (PU-3 §5): R ≤ R_hi, d_lo ≤ |q − c| with d_lo > R_hi, α_hi ≥ |c − tip end|; the tip line bounds
+  // end `tip`'s moment, the bisector the other's
+  Rational R_hi, d_lo, alpha_hi;
+  std::size_t tip = 0;
+  bool tip_line = false;  // the tip facet proven by the corrected tip line (else by a dual)
+  // stable, rotating on a support of points (PU-3 §7): a facet whose condition fails may be proven by the dual
+  // (y0 < 0, yx, yy) of the LP over the distributions: g_i ≤ y0 + y·(x_i − c) at every point, √ at `bits`
+  std::vector<std::pair<Cone_facet, std::array<Rational, 3>>> duals;
+  // translating: each facet's value, ≥ 0 when it holds (left edge v × e₊, right edge e₋ × v, the ends' moments
+  // signed so); the facets at 0 are the load on CF's boundary
+  std::array<Rational, 4> values;
+  // unstable: the facet the load leaves CF by; rotating, the distribution (points of S, weights > 0 with mean c) and
+  // the bits its square roots were bracketed at
+  Cone_facet facet = Cone_facet::left_edge;
+  std::vector<Vec2> points;
+  std::vector<Rational> weights;
+  int bits = 64;
+};
+
+// Precondition: pusher.line(). Throws Input_error when nothing under the body has friction.
+Stable_push decide_stable_push(const Support_model& model, const Pusher& pusher);
+
+}  // namespace wrenchkit
