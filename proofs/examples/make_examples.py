@@ -44,6 +44,11 @@ SQUARE_OUTLINE = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]}
 CORNERS = [[-1, -1], [1, -1], [1, 1], [-1, 1]]
 SQUARE_REGION = {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]], "pressure": "uniform", "force": 1}
 
+FENCE = {"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]},
+         "support": {"mu": "1/2", "points": [{"at": [-1, -1], "force": 1}, {"at": [1, -1], "force": 1},
+                                             {"at": [1, 1], "force": 1}, {"at": [-1, 1], "force": 1}]}}
+FENCE_PUSHER = {"segment": [["-1/2", -1], ["1/2", -1]], "normal": [0, 1], "mu": "1/2"}
+
 SCENES = {
     "l_part": {"wrenchkit": 1, "name": "an L-shaped part for three fingers (no contacts)", "body": {"outline": [[0, 0], [6, 0], [6, 2], [2, 2], [2, 5], [0, 5]]}},
     "square_part": {"wrenchkit": 1, "name": "the unit square as a part for two fingers (no contacts)", "body": {"outline": [[0, 0], [1, 0], [1, 1], [0, 1]]}},
@@ -253,6 +258,18 @@ SCENES = {
                            "body": SQUARE_OUTLINE,
                            "support": {"mu": "1/2", "points": [{"at": at, "force": 1} for at in CORNERS]},
                            "pusher": {"at": [0, -1], "normal": [0, 1], "velocity": [1, 1]}},
+    # A line pusher (certificate-format.md section 8.3, PU-3): the square on four legs (force 1, mu 1/2, c = 0, R^2 = 2)
+    # pushed along its bottom edge from (-1/2, -1) to (1/2, -1), mu 1/2 (cone edges (-1/2, 1), (1/2, 1)).
+    "push_fence": dict(FENCE, name="the square pushed by a fence along its bottom edge, translating up: stable",
+                       pusher=dict(FENCE_PUSHER, velocity=[0, 1])),
+    "push_fence_slanted": dict(FENCE, name="the fence translating along (1, 1), beyond the right edge: unstable",
+                               pusher=dict(FENCE_PUSHER, velocity=[1, 1])),
+    "push_fence_turning": dict(FENCE, name="the fence turning ccw about (-10, -1): stable by PU-3's conditions",
+                               pusher=dict(FENCE_PUSHER, velocity=[0, 1], omega="1/10")),
+    "push_fence_near": dict(FENCE, name="the fence turning ccw about (-6, -1): stable, end 1 by the LP's dual",
+                            pusher=dict(FENCE_PUSHER, velocity=[0, 1], omega="1/6")),
+    "push_fence_close": dict(FENCE, name="the fence turning ccw about (-2, -1): unstable, two legs lean past the left edge",
+                             pusher=dict(FENCE_PUSHER, velocity=[0, 1], omega="1/2")),
     "push_barbell": {"wrenchkit": 1, "name": "the square on two legs (-1, 0), (1, 0) pushed frictionless at (0, -1): "
                      "the friction lies on one line through c, so the votes do not decide", "body": SQUARE_OUTLINE,
                      "support": {"mu": "1/2", "points": [{"at": [-1, 0], "force": 1}, {"at": [1, 0], "force": 1}]},
@@ -479,6 +496,18 @@ PUSH_UNKNOWN = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "
 # push_square_centre: both edges along (0, 1) through c = 0 (votes 0), the velocity ccw: "none"; the legs' friction is
 # off the line through c perpendicular to pc (the x-axis), so the tie is decided.
 PUSH_CENTRE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "2"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "0", "upper": "0"}, {"lower": "2", "upper": "2"}], "center": ["0", "0"]}''')
+
+
+# Line pushers (section 8.3), as `wrenchkit push --certificate` writes them. push_fence: the load (0, 1) through c
+# inside CF; push_fence_slanted: e- x v = 1/2 - 1 < 0; push_fence_turning: q = (-10, -1) passes the direction facets,
+# the bisector of end 0 and end 1's corrected tip line (4 >= 2 + E, E ~ 0.037); push_fence_near: q = (-6, -1) fails the
+# tip line (2 < 2 + E ~ 2.11) but the LP's dual over the legs proves end 1; push_fence_close: q = (-2, -1), weights 1
+# and 1 at (-1, 1) and (1, -1) lean past the left edge (2/sqrt(5) - 1/2 > 0).
+FENCE_STABLE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "center": ["0", "0"], "stable": {"verdict": "stable", "R2": "2"}}''')
+FENCE_SLANTED = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "center": ["0", "0"], "stable": {"verdict": "unstable", "R2": "2", "facet": "right edge"}}''')
+FENCE_TURNING = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "center": ["0", "0"], "stable": {"verdict": "stable", "R2": "2", "R_hi": "283/200", "d_lo": "10049/1000", "alpha_hi": "1119/1000"}}''')
+FENCE_NEAR = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "center": ["0", "0"], "stable": {"verdict": "stable", "R2": "2", "duals": {"end 1": ["-37483/1000000", "210017/250000", "132551/500000"]}, "bits": 64}}''')
+FENCE_CLOSE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "center": ["0", "0"], "stable": {"verdict": "unstable", "R2": "2", "facet": "left edge", "witness": {"points": [["-1", "1"], ["1", "-1"]], "weights": ["1", "1"], "bits": 64}}}''')
 
 
 def tamper(base, path, value):
@@ -1055,6 +1084,23 @@ CERTS = [
      tamper(PUSH_STICK_PIVOT, ["contact", "force"], ["1", "0"])),
     ("push_stick_pivot", "contact_stick_pivot_facet_misses", "invalid:contact|contact.pivot: no force of the pivot's facet is certainly along",
      tamper(PUSH_STICK_PIVOT, ["contact", "force"], ["1", "5"])),
+    ("push_fence", "stable_translating", "valid", FENCE_STABLE),
+    ("push_fence", "claims_a_turn", "invalid:rotation|rotation: a stable push turns with the pusher",
+     tamper(FENCE_STABLE, ["rotation"], "ccw")),
+    ("push_fence_slanted", "unstable_translating", "valid", FENCE_SLANTED),
+    ("push_fence_slanted", "claims_stable", "invalid:facet|stable: the load is beyond the composite cone's right edge",
+     tamper(tamper(tamper(FENCE_SLANTED, ["stable", "verdict"], "stable"), ["stable", "facet"], None), ["rotation"], "none")),
+    ("push_fence_turning", "stable_tip_line", "valid", FENCE_TURNING),
+    ("push_fence_turning", "tip_bound_too_high", "invalid:bound|stable.d_lo: not a lower bound of |q - c|",
+     tamper(FENCE_TURNING, ["stable", "d_lo"], "11")),
+    ("push_fence_near", "stable_by_dual", "valid", FENCE_NEAR),
+    ("push_fence_near", "dual_not_negative", "invalid:dual|stable.duals.end 1: y0 is not negative",
+     tamper(FENCE_NEAR, ["stable", "duals", "end 1"], ["1/1000000", "210017/250000", "132551/500000"])),
+    ("push_fence_close", "unstable_witness", "valid", FENCE_CLOSE),
+    ("push_fence_close", "witness_off_centre", "invalid:witness|stable.witness: its mean is not the centre of friction",
+     tamper(FENCE_CLOSE, ["stable", "witness", "weights"], ["1", "2"])),
+    ("push_fence_close", "witness_wrong_facet", "invalid:witness|stable.witness: its load is not certainly beyond the composite cone's right edge",
+     tamper(FENCE_CLOSE, ["stable", "facet"], "right edge")),
     ("push_slide_pivot", "contact_slides_from_pivot", "valid", PUSH_SLIDE_PIVOT),
     ("push_slide_pivot", "contact_slides_left_from_pivot", "invalid:contact|contact.pivot: not every force of the pivot's facet through the pusher is certainly beyond the claimed edge",
      tamper(PUSH_SLIDE_PIVOT, ["contact", "mode"], "slides left")),
@@ -1974,13 +2020,8 @@ def verify_contact(c, pts, known, p, n, mu, v):
         return "contact"
     bits = c["bits"]
 
-    def root_bounds(s):  # lo <= sqrt(s) <= hi: isqrt(num den 4^B) / (den 2^B), B = bits + bit length of den
-        if s == 0:
-            return F(0), F(0)
-        b = bits + s.denominator.bit_length()
-        x = s.numerator * s.denominator << (2 * b)
-        r = math.isqrt(x)
-        return F(r, s.denominator << b), F(r + (r * r != x), s.denominator << b)
+    def root_bounds(s):
+        return sqrt_bounds(s, bits)
 
     rho = [(q[0], q[1], q[2] * q[3]) for q in pts]
 
@@ -2170,11 +2211,115 @@ def verify_contact(c, pts, known, p, n, mu, v):
     return None
 
 
+def sqrt_bounds(s, bits):
+    """lo <= sqrt(s) <= hi for a Fraction s >= 0: isqrt(num den 4^B) / (den 2^B), B = bits + the bit length of den
+    (the engine's and the checker's precision for the same bits)."""
+    if s == 0:
+        return F(0), F(0)
+    b = bits + s.denominator.bit_length()
+    x = s.numerator * s.denominator << (2 * b)
+    r = math.isqrt(x)
+    return F(r, s.denominator << b), F(r + (r * r != x), s.denominator << b)
+
+
+def verify_line_push(scene, cert):
+    """Section 8.3 (PU-3): a line pusher's stable push, over a support of points (regions are the C++ checker's)."""
+    if set(cert) - {"wrenchkit_certificate", "property", "rotation", "center", "stable"} or "center" not in cert:
+        return "keys"
+    sup, pu, st = scene["support"], scene["pusher"], cert["stable"]
+    if sup.get("regions"):
+        return "unsupported"
+    pts = [(number(q["at"][0]), number(q["at"][1]), number(q.get("mu", sup.get("mu", 0))),
+            None if "force" not in q else number(q["force"])) for q in sup["points"]]
+    if any(q[3] is None for q in pts):
+        return "unsupported"  # forces not given: the C++ checker's
+    e = [[number(a) for a in end] for end in pu["segment"]]
+    (nx, ny), (vx, vy) = ([number(a) for a in pu[k]] for k in ("normal", "velocity"))
+    mu, w = number(pu.get("mu", scene.get("mu", 0))), number(pu.get("omega", 0))
+    cross = lambda a, b: a[0] * b[1] - a[1] * b[0]  # noqa: E731
+    dot = lambda a, b: a[0] * b[0] + a[1] * b[1]  # noqa: E731
+    sub = lambda a, b: (a[0] - b[0], a[1] - b[1])  # noqa: E731
+    along = sub(e[1], e[0])
+    if dot(along, (nx, ny)) != 0 or vx * nx + vy * ny <= 0:
+        return "pusher"
+    s_end = [1, -1] if cross(along, (nx, ny)) > 0 else [-1, 1]
+    eL, eR = (nx - mu * ny, ny + mu * nx), (nx + mu * ny, ny - mu * nx)
+    D = sum(q[2] * q[3] for q in pts)
+    c = tuple(sum(q[2] * q[3] * q[k] for q in pts) / D for k in range(2))
+    if [rational(v) for v in cert["center"]] != list(c):
+        return "center"
+    S = [(q[0], q[1]) for q in pts if q[2] > 0]
+    R2 = max(dot(sub(x, c), sub(x, c)) for x in S)
+    if rational(st["R2"]) != R2:
+        return "R2"
+    stable = st["verdict"] == "stable"
+    sense = (w > 0) - (w < 0)
+    if cert.get("rotation") != ({1: "ccw", -1: "cw", 0: "none"}[sense] if stable else None):
+        return "rotation"
+    if stable == ("facet" in st):
+        return "facet"
+    names = ["left edge", "right edge", "end 0", "end 1"]
+    if w == 0:
+        vals = [cross((vx, vy), eL), cross(eR, (vx, vy))] + [s_end[k] * cross(sub(c, e[k]), (vx, vy)) for k in (0, 1)]
+        if stable:
+            return "facet" if any(v < 0 for v in vals) else None
+        return None if vals[names.index(st["facet"])] < 0 else "facet"
+    m = ((e[0][0] + e[1][0]) / 2, (e[0][1] + e[1][1]) / 2)
+    q = (m[0] - vy / w, m[1] + vx / w)
+
+    def h(f, x):
+        xq = sub(x, q)
+        if f < 2:
+            return sense * dot(xq, eL) if f == 0 else -sense * dot(xq, eR)
+        return -s_end[f - 2] * sense * dot(sub(x, e[f - 2]), xq)
+
+    if not stable:
+        wit, f = st["witness"], names.index(st["facet"])
+        xs, ws = [tuple(rational(a) for a in x) for x in wit["points"]], [rational(a) for a in wit["weights"]]
+        if len(xs) != len(ws) or any(x not in S for x in xs) or any(a <= 0 for a in ws):
+            return "witness"
+        if any(sum(a * (x[k] - c[k]) for a, x in zip(ws, xs)) != 0 for k in (0, 1)):
+            return "witness"
+        lo = F(0)
+        for a, x in zip(ws, xs):
+            l0, l1 = sqrt_bounds(dot(sub(x, q), sub(x, q)), wit["bits"])
+            t = a * h(f, x)
+            lo += t / l1 if t >= 0 else t / l0
+        return None if lo > 0 else "witness"
+    duals = {names.index(k): [rational(a) for a in v] for k, v in st.get("duals", {}).items()}
+    for f, y in duals.items():
+        if y[0] >= 0:
+            return "dual"
+        for x in S:
+            l0, l1 = sqrt_bounds(dot(sub(x, q), sub(x, q)), st["bits"])
+            t = h(f, x)
+            if (t / l0 if t >= 0 else t / l1) > y[0] + y[1] * (x[0] - c[0]) + y[2] * (x[1] - c[1]):
+                return "dual"
+    if any(f not in duals and h(f, x) > 0 for f in (0, 1) for x in S):
+        return "facet"
+    b = 0 if s_end[0] * sense > 0 else 1
+    t = 1 - b
+    wq = sub(q, c)
+    if b + 2 not in duals and dot(sub(q, e[b]), sub(q, e[b])) > dot(wq, wq):
+        return "bisector"
+    if t + 2 in duals:
+        return None
+    R, d, al = (rational(st[k]) for k in ("R_hi", "d_lo", "alpha_hi"))
+    a = sub(c, e[t])
+    if R < 0 or R * R < R2 or d < 0 or d * d > dot(wq, wq) or al < 0 or al * al < dot(a, a) or d <= R:
+        return "bound"
+    K = R * (2 * al + R) / (2 * d - R)
+    E = K * K * (2 * d + R) / (8 * d) + al * R ** 3 / (d * (2 * d - R))
+    return None if dot(a, wq) >= R2 + E else "tip"
+
+
 def verify_push(scene, cert):
     """Section 8 (format 6): which way a pushed body turns, by the voting rule of PU-1 section 4 over F. None if
     proved, else a short reason. Support points only (no regions); the pusher written with "at" and "normal"."""
     if cert.get("wrenchkit_certificate") != 6:
         return "header"
+    if "segment" in scene.get("pusher", {}):
+        return verify_line_push(scene, cert)
     keys = set(cert)
     if keys - {"wrenchkit_certificate", "property", "rotation", "friction", "votes", "center", "turns", "contact"} or not (
             {"rotation", "friction"} <= keys) or ({"turns"} if cert["rotation"] == "depends" else {"votes"}) - keys:
