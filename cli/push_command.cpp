@@ -31,11 +31,18 @@ std::string vote_sentence(const Push_vote& v) {
 void write_push(Json_writer& w, const Push_item& r) {
   const Push_answer& a = r.push;
   w.member("command", "push").member("name", r.scene.name);
+  const Pusher& pu = *r.scene.pusher;
   w.key("pusher").object();
-  w.key("at").array().rational(a.at.x).rational(a.at.y).end_array();
+  if (pu.line()) {
+    w.key("segment").array().array().rational(a.at.x).rational(a.at.y).end_array();
+    w.array().rational(pu.end->x).rational(pu.end->y).end_array().end_array();
+  } else {
+    w.key("at").array().rational(a.at.x).rational(a.at.y).end_array();
+  }
   w.key("normal").array().rational(a.normal.x).rational(a.normal.y).end_array();
   w.member("mu", a.mu);
   w.key("velocity").array().rational(a.velocity.x).rational(a.velocity.y).end_array();
+  if (pu.line()) w.member("omega", pu.omega);
   w.end_object();
   w.member("distribution", a.known ? "known" : "unknown");
   if (a.center) {
@@ -56,6 +63,29 @@ void write_push(Json_writer& w, const Push_item& r) {
   w.member("rotation", rotation_name(a.rotation)).member("why", a.why);
   if (a.rotation == Rotation::depends)
     w.key("witnesses").object().key("ccw").rationals(a.turns_ccw).key("cw").rationals(a.turns_cw).end_object();
+  if (a.stable) {  // a line pusher (PU-3)
+    const Stable_push& st = *a.stable;
+    w.key("stable").object().member("verdict", stability_name(st.verdict)).member("why", st.why);
+    if (st.centre) {
+      w.key("rotation_centre").array().rational(st.centre->x).rational(st.centre->y).end_array();
+      write_approx(w, "rotation_centre", {st.centre->x, st.centre->y});
+    }
+    if (st.verdict == Stability::stable && st.sense == 0) {  // the facets the load is on (its boundary), exact
+      w.key("boundary").array();
+      for (int k = 0; k < 4; ++k)
+        if (sgn(st.values[k]) == 0) w.string(cone_facet_name(static_cast<Cone_facet>(k)));
+      w.end_array();
+    }
+    if (st.verdict == Stability::unstable) {
+      w.member("facet", cone_facet_name(st.facet));
+      if (st.sense != 0) {
+        w.key("witness").object().key("points").array();
+        for (const Vec2& x : st.points) w.array().rational(x.x).rational(x.y).end_array();
+        w.end_array().key("weights").rationals(st.weights).end_object();
+      }
+    }
+    w.end_object();
+  }
   if (a.contact) {
     const Push_contact& c = *a.contact;
     w.key("contact").object().member("mode", push_mode_name(c.mode));
@@ -96,8 +126,30 @@ std::string push_human(const Push_item& r, const std::string& source) {
   const Push_answer& a = r.push;
   std::ostringstream s;
   s << scene_line(r.scene, source);
-  s << "pusher at " << vec_text(a.at) << ", inward normal " << vec_text(a.normal) << ", mu = " << number_text(a.mu)
-    << ", moving " << vec_text(a.velocity) << "\n";
+  const Pusher& pu = *r.scene.pusher;
+  if (pu.line()) {
+    s << "pusher along " << vec_text(a.at) << " – " << vec_text(*pu.end) << ", inward normal " << vec_text(a.normal)
+      << ", mu = " << number_text(a.mu) << ", moving " << vec_text(a.velocity) << " at its middle";
+    if (sgn(pu.omega) == 0) s << ", translating\n";
+    else s << ", turning at " << number_text(pu.omega) << " about " << vec_text(*a.stable->centre) << "\n";
+  } else {
+    s << "pusher at " << vec_text(a.at) << ", inward normal " << vec_text(a.normal) << ", mu = " << number_text(a.mu)
+      << ", moving " << vec_text(a.velocity) << "\n";
+  }
+  if (a.stable) {
+    const Stable_push& st = *a.stable;
+    if (a.center) s << "centre of friction: " << vec_text(*a.center) << "\n";
+    s << "stable: " << stability_name(st.verdict) << " — " << st.why << "\n";
+    if (st.verdict == Stability::unstable && st.sense != 0) {
+      s << "  the distribution:";
+      for (std::size_t k = 0; k < st.points.size(); ++k)
+        s << (k ? "," : "") << " weight " << number_text(st.weights[k]) << " at " << vec_text(st.points[k]);
+      s << "\n";
+    }
+    s << "rotation: " << rotation_name(a.rotation) << " — " << a.why << "\n";
+    if (!r.certificate.empty()) s << "certificate accepted by the independent checker (exact arithmetic)\n";
+    return s.str();
+  }
   if (a.by_twin || !a.votes_known)
     s << "centre of friction: not computed (the float twin decides the votes' signs without it)\n";
   else if (a.center)
@@ -199,8 +251,10 @@ Scene_answer prepare_push_json(const Options& o) {
 int run_push(const Options& o, const std::string& scene_text, const std::string& source) {
   const Push_item r = answered(answer_push(scene_text, source, request_of(o), push_query(o)));
   if (!o.certificate_file.empty() && !r.certificate.empty()) write_file(o.certificate_file, r.certificate + "\n");
-  const bool undecided = r.push.rotation == Rotation::undecided ||
-                         (r.push.contact && r.push.contact->mode == Push_mode::undecided);
+  // (a line pusher answers whether its motion is stable: undecided when that is)
+  const bool undecided = r.push.stable ? r.push.stable->verdict == Stability::undecided
+                                       : r.push.rotation == Rotation::undecided ||
+                                             (r.push.contact && r.push.contact->mode == Push_mode::undecided);
   return write_answer(o, [&](Json_writer& w) { write_push(w, r); }, [&] { return push_human(r, source); }, undecided);
 }
 

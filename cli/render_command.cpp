@@ -399,17 +399,23 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
   Bounds b;
   add_scene_bounds(b, s);
   b.add(to_p2(a.at));
+  if (s.pusher->end) b.add(to_p2(*s.pusher->end));
   for (const Support_point& p : s.support->points) b.add(to_p2(p.at));
   for (const Support_region& g : s.support->regions)
     for (const Vec2& v : g.outline) b.add(to_p2(v));
   if (a.center) b.add(to_p2(*a.center));
   // the rotation centre, in the picture when it is within a few body sizes (else the caption gives it)
-  const std::optional<P2> centre = motion ? motion->centre : std::nullopt;
+  const std::optional<P2> centre = motion                      ? motion->centre
+                                   : a.stable && a.stable->centre ? std::optional<P2>(to_p2(*a.stable->centre))
+                                                                  : std::nullopt;  // (a line pusher's rotation centre)
+  bool centre_shown = false;
   if (centre) {
     const double size = std::max(b.x1 - b.x0, b.y1 - b.y0);
-    if (std::hypot(centre->x - (b.x0 + b.x1) / 2, centre->y - (b.y0 + b.y1) / 2) <= 3 * size) b.add(*centre);
+    centre_shown = std::hypot(centre->x - (b.x0 + b.x1) / 2, centre->y - (b.y0 + b.y1) / 2) <= 3 * size;
+    if (centre_shown) b.add(*centre);
   }
-  Svg_canvas c = b.canvas(title_of(s, source), "push: which way the body turns, for every pressure distribution");
+  Svg_canvas c = b.canvas(title_of(s, source), a.stable ? "push: does the body stay with the line pusher, for every pressure distribution"
+                                                        : "push: which way the body turns, for every pressure distribution");
   if (s.body.outline.size() >= 2) {
     std::vector<P2> o;
     for (const Vec2& v : s.body.outline) o.push_back(to_p2(v));
@@ -432,6 +438,61 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
                                     : "fill=\"none\" stroke=\"" + std::string(kSupport) + "\" stroke-width=\"2\"");
   }
   const double L = 0.13 * c.world_radius();
+  // the verdicts and their reasons, in lines that fit the page
+  const auto captions = [&c](const std::string& text) {
+    std::string line;
+    std::istringstream words(text);
+    for (std::string w; words >> w;) {
+      if (!line.empty() && line.size() + w.size() > 85) c.caption(line), line = " ";
+      line += (line.empty() ? "" : " ") + w;
+    }
+    c.caption(line);
+  };
+  if (a.stable) {  // a line pusher (PU-3): the segment, the friction cone at both ends, its motion, the verdict
+    const Stable_push& st = *a.stable;
+    const P2 e0 = to_p2(a.at), e1 = to_p2(*s.pusher->end), n = unit(to_p2(a.normal)), t{-n.y, n.x};
+    const double mu = a.mu.get_d();
+    for (const P2& e : {e0, e1}) {
+      const P2 eL = unit({n.x + mu * t.x, n.y + mu * t.y}), eR = unit({n.x - mu * t.x, n.y - mu * t.y});
+      c.polygon({e, {e.x + 1.6 * L * eL.x, e.y + 1.6 * L * eL.y}, {e.x + 1.6 * L * eR.x, e.y + 1.6 * L * eR.y}},
+                "fill=\"" + std::string(kCone) + "\" fill-opacity=\"0.55\" stroke=\"" + kCone + "\"");
+    }
+    c.line(e0, e1, "stroke=\"#222\" stroke-width=\"5\"");
+    const P2 m{(e0.x + e1.x) / 2, (e0.y + e1.y) / 2}, vel = unit(to_p2(a.velocity));
+    c.arrow({m.x - 1.5 * L * vel.x, m.y - 1.5 * L * vel.y}, m, kLoad, 3);
+    c.text(e0, "end 0", "fill=\"#222\"");
+    c.text(e1, "end 1", "fill=\"#222\"");
+    if (a.center) {
+      const P2 ctr = to_p2(*a.center);
+      c.dot(ctr, 6, "fill=\"white\" stroke=\"#222\" stroke-width=\"2\"");
+      c.text(ctr, "centre of friction", "fill=\"#222\"");
+    }
+    const char* kMotion = "#7b3fa0";
+    if (centre_shown) {  // (else the caption gives it)
+      const P2 q = *centre;
+      c.line(m, q, "stroke=\"" + std::string(kMotion) + "\" stroke-width=\"1\" stroke-dasharray=\"2 4\"");
+      c.dot(q, 6, "fill=\"" + std::string(kMotion) + "\" stroke=\"#222\"");
+      c.text(q, std::string("the pusher's rotation centre ") + (st.sense > 0 ? "\u21ba" : "\u21bb"),
+             "fill=\"" + std::string(kMotion) + "\"");
+    }
+    for (std::size_t k = 0; k < st.points.size(); ++k)  // an unstable push's witness distribution
+      c.dot(to_p2(st.points[k]), 9, "fill=\"none\" stroke=\"" + std::string(kMinus) + "\" stroke-width=\"3\"");
+    c.legend(swatch(kCone, 0.55), "the friction cone at each end of the line contact; green: its velocity");
+    c.legend(swatch(kSupport, 0.5), "support: discs grow with mu*f (hollow: force unknown)");
+    if (centre_shown) c.legend("stroke=\"" + std::string(kMotion) + "\" fill=\"" + kMotion + "\"", "the pusher's rotation centre");
+    if (!st.points.empty())
+      c.legend("stroke=\"" + std::string(kMinus) + "\" fill=\"none\"", "a distribution with the centre of friction that breaks the contact");
+    std::string motion = " (the pusher translates)";
+    if (st.centre) {
+      char at[96];
+      std::snprintf(at, sizeof at, " (the pusher turns %s about (%.4g, %.4g))", st.sense > 0 ? "ccw" : "cw",
+                    st.centre->x.get_d(), st.centre->y.get_d());
+      motion = at;
+    }
+    captions("stable: " + std::string(stability_name(st.verdict)) + motion + " \u2014 " + st.why);
+    captions("rotation: " + std::string(rotation_name(a.rotation)) + " \u2014 " + a.why);
+    return c.finish();
+  }
   const P2 p = to_p2(a.at), n = unit(to_p2(a.normal));
   const std::string colour[3] = {kMinus, kBoth, kPlus};  // cw, through, ccw
   for (const Push_vote& v : a.votes) {
@@ -486,16 +547,6 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
              "fill=\"" + std::string(k == 0 ? kPlus : kMinus) + "\"");
     }
   }
-  // the verdicts and their reasons, in lines that fit the page
-  const auto captions = [&c](const std::string& text) {
-    std::string line;
-    std::istringstream words(text);
-    for (std::string w; words >> w;) {
-      if (!line.empty() && line.size() + w.size() > 85) c.caption(line), line = " ";
-      line += (line.empty() ? "" : " ") + w;
-    }
-    c.caption(line);
-  };
   captions("rotation: " + std::string(rotation_name(a.rotation)) + " \u2014 " + a.why);
   if (a.contact) {
     const Push_contact& k = *a.contact;
@@ -534,7 +585,8 @@ std::string render_svg(const Options& o, const std::string& text, const std::str
     return render_grasp_regions(s, answered(answer_grasp_regions(text, source, request_of(o), o.regions)), source);
   if (what == Picture::push) {
     const Push_item r = answered(answer_push(text, source, request_of(o), o.push));
-    if (undecided) *undecided = r.push.rotation == Rotation::undecided;
+    if (undecided)
+      *undecided = r.push.stable ? r.push.stable->verdict == Stability::undecided : r.push.rotation == Rotation::undecided;
     return render_push(s, r, source);
   }
   if (what == Picture::quality) {

@@ -521,6 +521,21 @@ def test_grasp_regions_ranked_by_epsilon_and_lenient():
     assert wrenchkit.grasp_regions(off, mu="1/2", lenient=True)["closed_pairs"] == 4
 
 
+def test_push_stable_line_pusher():
+    square = {"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]},
+              "support": {"mu": "1/2", "points": [{"at": [x, y], "force": 1} for x, y in
+                                                  [(-1, -1), (1, -1), (1, 1), (-1, 1)]]},
+              "pusher": {"segment": [["-1/2", -1], ["1/2", -1]], "normal": [0, 1], "mu": "1/2", "velocity": [0, 1],
+                         "omega": "1/10"}}
+    r = wrenchkit.push(square)  # turning ccw about (-10, -1): stable for every distribution (PU-3)
+    assert r["stable"]["verdict"] == "stable" and r["rotation"] == "ccw" and r["certificate_checked"] is True
+    assert r["stable"]["rotation_centre"] == (-10, -1) and r["pusher"]["segment"][1] == (Fraction(1, 2), -1)
+    square["pusher"]["omega"] = "1/2"  # about (-2, -1): two legs lean the load past the left edge
+    r = wrenchkit.push(square)
+    assert r["stable"]["verdict"] == "unstable" and r["stable"]["facet"] == "left edge"
+    assert r["stable"]["witness"]["points"] == [(-1, 1), (1, -1)] and r["rotation"] == "undecided"
+
+
 def test_push_voting_theorem():
     square = {"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]},
               "support": {"mu": "1/2", "points": [{"at": [x, y], "force": 1} for x, y in

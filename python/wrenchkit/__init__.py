@@ -342,12 +342,30 @@ def push(scene, *, contact=False):
     pusher's velocity perpendicular to the line to it), "pivot" with the exact "omega" and "force", a force of that
     point's facet strictly inside the friction cone (Fractions); sliding from such a facet (every force of it beyond
     the edge), "sticking_pivot" and its exact "sticking_omega".
+
+    A line pusher ("segment": [[x1, y1], [x2, y2]], "velocity" at its middle, "omega" its rotation rate) answers
+    "stable": {"verdict": "stable" | "unstable" | "undecided", "why", "rotation_centre" (turning), "boundary" (stable
+    and translating: the composite cone's facets the load is on), "facet" and "witness": {"points", "weights"}
+    (unstable: the facet the load leaves by, and a distribution with the centre of friction that breaks the contact)}
+    for every distribution with the centre of friction (Lynch & Mason); "rotation" is the pusher's own sense when
+    stable.
     """
     r = _json.loads(_core.push(_scene(scene), contact))
     fr = _fractions.Fraction
     for k in ("at", "normal", "velocity"):
-        r["pusher"][k] = tuple(fr(x) for x in r["pusher"][k])
+        if k in r["pusher"]:
+            r["pusher"][k] = tuple(fr(x) for x in r["pusher"][k])
+    if "segment" in r["pusher"]:
+        r["pusher"]["segment"] = tuple(tuple(fr(x) for x in e) for e in r["pusher"]["segment"])
+        r["pusher"]["omega"] = fr(r["pusher"]["omega"])
     r["pusher"]["mu"] = fr(r["pusher"]["mu"])
+    if "stable" in r:
+        st = r["stable"]
+        if "rotation_centre" in st:
+            st["rotation_centre"] = tuple(fr(x) for x in st["rotation_centre"])
+        if "witness" in st:
+            st["witness"]["points"] = [tuple(fr(x) for x in p) for p in st["witness"]["points"]]
+            st["witness"]["weights"] = [fr(x) for x in st["witness"]["weights"]]
     if r["center_of_friction"] is not None:
         r["center_of_friction"] = tuple(fr(x) for x in r["center_of_friction"])
     for v in r["votes"]:
