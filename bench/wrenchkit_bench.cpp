@@ -844,6 +844,30 @@ void register_push() {
       st.SetLabel(mode);
     })->Unit(benchmark::kMicrosecond);
   }
+  // [PU-3] a line pusher under the same 10 legs (a fence from (-1, -2.5) to (1.5, -2.5), μ 0.5, velocity (0, 1) at
+  // its middle): is its motion stable, with the certificate checked — translating (four exact signs), turning far away
+  // (PU-3's inequalities), nearer (the LP's dual over the legs where the tip line fails) and close (a witness)
+  for (const auto& [name, omega] : {std::pair{"push/stable/10_legs/translating", "0"},
+                                    std::pair{"push/stable/10_legs/turning_far", "0.02"},
+                                    std::pair{"push/stable/10_legs/turning_near", "0.12"},
+                                    std::pair{"push/stable/10_legs/turning_close", "1"}}) {
+    const std::string text = R"({"wrenchkit": 1, "support": {"points": [)" + legs +
+                             R"(]}, "pusher": {"segment": [[-1, -2.5], [1.5, -2.5]], "normal": [0, 1], "mu": 0.5, )"
+                             R"("velocity": [0, 1], "omega": )" + omega + "}}";
+    benchmark::RegisterBenchmark(name, [text](benchmark::State& st) {
+      std::string label;
+      for (auto _ : st) {
+        const Push_item r = answer_push(text, "fence", Request{});
+        if (r.status != Status::answered) throw std::logic_error("push: " + r.message);
+        const Stable_push& v = *r.push.stable;
+        label = stability_name(v.verdict);
+        if (v.verdict == Stability::stable && v.sense != 0)
+          label += v.duals.empty() ? " (PU-3's inequalities)" : " (a dual)";
+        if (v.verdict == Stability::unstable && v.sense != 0) label += " (a witness)";
+      }
+      st.SetLabel(label);
+    })->Unit(benchmark::kMicrosecond);
+  }
   // the twin alone on the 10 legs (its input as certified doubles, converted once: the robot-side cost)
   benchmark::RegisterBenchmark("push/10_legs/rotation_twin", [known](benchmark::State& st) {
     const Scene scene = read_scene(*known, Input_limits{});

@@ -197,8 +197,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (vx * nx + vy * ny <= 0) vx += 3 * nx, vy += 3 * ny;
     std::string vxs = num(vx);
     if (vx > 0 && b.next(2)) vxs = frac(vx, 1, b);  // near a tie: vx ± ε (v · n stays > 0: |ε nx| < 1)
-    load += ", \"pusher\": {\"at\": [" + num(b.small(-4, 4)) + ", " + num(b.small(-4, 4)) + "], \"normal\": [" +
-            num(nx) + ", " + num(ny) + "], \"mu\": " + mu + ", \"velocity\": [" + vxs + ", " + num(vy) + "]}";
+    const int ax = b.small(-4, 4), ay = b.small(-4, 4);
+    if (b.next(3) == 0) {  // [PU-3] a line pusher along rot90(n), translating or turning at a small rate
+      const int t = 1 + b.small(0, 3);
+      const std::string omega = b.next(2) ? "0" : frac(b.small(-3, 3), 1 + b.next(20), b);
+      load += ", \"pusher\": {\"segment\": [[" + num(ax) + ", " + num(ay) + "], [" + num(ax - t * ny) + ", " +
+              num(ay + t * nx) + "]], \"normal\": [" + num(nx) + ", " + num(ny) + "], \"mu\": " + mu +
+              ", \"velocity\": [" + num(vx) + ", " + num(vy) + "], \"omega\": " + omega + "}";
+    } else {
+      load += ", \"pusher\": {\"at\": [" + num(ax) + ", " + num(ay) + "], \"normal\": [" + num(nx) + ", " +
+              num(ny) + "], \"mu\": " + mu + ", \"velocity\": [" + vxs + ", " + num(vy) + "]}";
+    }
   }
   const std::string text = "{\"wrenchkit\": 1, \"contacts\": [" + contacts + "]" + load + "}";
   if (!check_scene_text(text)) {

@@ -136,7 +136,8 @@ inline std::string scene_difference(const wrenchkit::Scene& a, const wrenchkit::
   if (!same_optional(a.support, b.support, same_support)) return "support";
   const auto same_pusher = [](const Pusher& x, const Pusher& y) {
     return same_vec(x.contact.at, y.contact.at) && same_vec(x.contact.normal, y.contact.normal) &&
-           x.contact.mu == y.contact.mu && x.contact.name == y.contact.name && same_vec(x.velocity, y.velocity);
+           x.contact.mu == y.contact.mu && x.contact.name == y.contact.name && same_vec(x.velocity, y.velocity) &&
+           x.end.has_value() == y.end.has_value() && (!x.end || same_vec(*x.end, *y.end)) && x.omega == y.omega;
   };
   if (!same_optional(a.pusher, b.pusher, same_pusher)) return "pusher";
   return "";
@@ -397,7 +398,14 @@ inline bool check_scene_text(std::string_view text) {
     }
   }
   std::string push_certificate;  // [PU-1] a pushed body on its support: the rotation's certificate (below)
-  if (scene.pusher && scene.support && scene.support->points.size() <= 8) {
+  if (scene.pusher && scene.pusher->line() && scene.support && scene.support->points.size() <= 8) {
+    try {  // [PU-3] a line pusher: its stable-push verdict goes to the checker
+      const wrenchkit::Support_model model(scene);
+      const auto e = wrenchkit::decide_line_push(model, *scene.pusher);
+      if (e.stable->verdict != wrenchkit::Stability::undecided) push_certificate = wrenchkit::push_certificate(e);
+    } catch (const wrenchkit::Input_error&) {  // no friction under the body
+    }
+  } else if (scene.pusher && scene.support && scene.support->points.size() <= 8) {
     try {
       const wrenchkit::Support_model model(scene);
       const auto e = wrenchkit::decide_push(model, *scene.pusher, wrenchkit::Mode::exact);
