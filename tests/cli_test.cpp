@@ -897,6 +897,54 @@ TEST(Cli, PushJsonCertificateContactPictureAndRefusals) {
   EXPECT_NE(bad.err.find("pusher.velocity: (0, -1) moves away from the body"), std::string::npos) << bad.err;
 }
 
+// [PU-3] A line pusher: is its motion stable — JSON, exit codes (0 when decided, stable or not), the certificate `check`
+// accepts, the picture, batch, and the refusals (a slanted normal, --contact).
+TEST(Cli, PushALinePusherStableOrNot) {
+  const std::string dir = test::source_dir() + "/proofs/examples/";
+  const fs::path cert = scratch() / "fence.cert.json";
+  const Cli_result r = run("push --json --certificate " + cert.string() + " " + dir + "push_fence_near.scene.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find(R"("pusher": {"segment": [["-1/2", "-1"], ["1/2", "-1"]], "normal": ["0", "1"], "mu": "1/2", )"
+                       R"("velocity": ["0", "1"], "omega": "1/6"})"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(R"("rotation": "ccw")"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(R"("stable": {"verdict": "stable", "why": ")"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(R"("rotation_centre": ["-6", "-1"])"), std::string::npos) << r.out;
+  EXPECT_EQ(run("check " + dir + "push_fence_near.scene.json " + cert.string()).code, 0);
+  const Cli_result u = run("push --json " + dir + "push_fence_close.scene.json");
+  EXPECT_EQ(u.code, 0) << u.err;  // unstable is an answer
+  EXPECT_NE(u.out.find(R"("facet": "left edge", "witness": {"points": [["-1", "1"], ["1", "-1"]], "weights": ["1", "1"]})"),
+            std::string::npos) << u.out;
+  EXPECT_NE(u.out.find(R"("rotation": "undecided")"), std::string::npos) << u.out;
+  const Cli_result b = run("push --json " + dir + "push_fence.scene.json");  // translating, strictly inside
+  EXPECT_NE(b.out.find(R"("boundary": [])"), std::string::npos) << b.out;
+  const Cli_result svg = run("render --what push " + dir + "push_fence_close.scene.json");
+  EXPECT_EQ(svg.code, 0) << svg.err;
+  EXPECT_NE(svg.out.find("a distribution with the centre of friction that breaks the contact"), std::string::npos);
+  EXPECT_NE(svg.out.find("stable: unstable (the pusher turns ccw about (-2, -1))"), std::string::npos) << svg.out;
+  const fs::path lines = scratch() / "fences.jsonl";  // batch: one scene per line
+  {
+    std::ofstream out(lines);
+    for (const char* name : {"push_fence", "push_fence_close"}) {
+      std::ifstream in(dir + name + ".scene.json");
+      std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      std::replace(text.begin(), text.end(), '\n', ' ');
+      out << text << "\n";
+    }
+  }
+  const Cli_result batch = run("batch push " + lines.string());
+  EXPECT_EQ(batch.code, 0) << batch.err;
+  EXPECT_NE(batch.out.find(R"("verdict": "stable")"), std::string::npos) << batch.out;
+  EXPECT_NE(batch.out.find(R"("verdict": "unstable")"), std::string::npos) << batch.out;
+  const Cli_result contact = run("push --contact " + dir + "push_fence.scene.json");
+  EXPECT_EQ(contact.code, 2);
+  EXPECT_NE(contact.err.find("--contact: the contact mode is answered for a point pusher"), std::string::npos) << contact.err;
+  const Cli_result slanted = run("push -", R"({"wrenchkit": 1, "support": {"mu": 1, "points": [{"at": [0, 0], "force": 1}]},
+      "pusher": {"segment": [[0, -1], [1, -1]], "normal": [1, 1], "velocity": [0, 1]}})");
+  EXPECT_EQ(slanted.code, 2);
+  EXPECT_EQ(slanted.out, "");
+  EXPECT_NE(slanted.err.find("pusher.normal: (1, 1) is not perpendicular to the segment"), std::string::npos) << slanted.err;
+}
+
 TEST(Cli, GraspRegionsJsonCertificateAndRefusals) {
   const fs::path square = scratch() / "gr_square.json", cert = scratch() / "gr_square.cert.json";
   std::ofstream(square) << R"({"wrenchkit": 1, "body": {"outline": [[0, 0], [1, 0], [1, 1], [0, 1]]}})";
