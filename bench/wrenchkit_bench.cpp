@@ -857,7 +857,7 @@ void register_push() {
     benchmark::RegisterBenchmark(name, [text](benchmark::State& st) {
       std::string label;
       for (auto _ : st) {
-        const Push_item r = answer_push(text, "fence", Request{});
+        const Push_item r = answer_push(text, "fence", Request{});  // (the stable region below: push/stable/…/region)
         if (r.status != Status::answered) throw std::logic_error("push: " + r.message);
         const Stable_push& v = *r.push.stable;
         label = stability_name(v.verdict);
@@ -868,6 +868,22 @@ void register_push() {
       st.SetLabel(label);
     })->Unit(benchmark::kMicrosecond);
   }
+  // the stable region (PU-3 §6; the issue's target 1 ms): both senses' half-planes, polygons and the translations,
+  // with the query and the certificate checked
+  benchmark::RegisterBenchmark("push/stable/10_legs/region", [legs](benchmark::State& st) {
+    const std::string text = R"({"wrenchkit": 1, "support": {"points": [)" + legs +
+                             R"(]}, "pusher": {"segment": [[-1, -2.5], [1.5, -2.5]], "normal": [0, 1], "mu": 0.5, )"
+                             R"("velocity": [0, 1], "omega": 0.02}})";
+    Push_query q;
+    q.region = true;
+    std::size_t vertices = 0;
+    for (auto _ : st) {
+      const Push_item r = answer_push(text, "fence", Request{}, q);
+      if (r.status != Status::answered || !r.push.region) throw std::logic_error("push: " + r.message);
+      vertices = r.push.region->side[0].polygon.size() + r.push.region->side[1].polygon.size();
+    }
+    st.SetLabel(std::to_string(vertices) + " polygon vertices");
+  })->Unit(benchmark::kMicrosecond);
   // the twin alone on the 10 legs (its input as certified doubles, converted once: the robot-side cost)
   benchmark::RegisterBenchmark("push/10_legs/rotation_twin", [known](benchmark::State& st) {
     const Scene scene = read_scene(*known, Input_limits{});

@@ -189,6 +189,10 @@ const Option kPushContact{"contact", nullptr,
                           "also the contact mode: sticks, slides left or right (a support of points with every force "
                           "given), and the sticking motion's rotation rate, certified",
                           [](Options& o, S, S) { o.push.contact = true; }};
+const Option kPushRegion{"region", nullptr,
+                         "a line pusher: also its stable region — the rotation centres of each sense certified stable "
+                         "for every distribution (half-planes and polygons), and the stable translations",
+                         [](Options& o, S, S) { o.push.region = true; }};
 const Option kTolerance{"tolerance", "EPS",
                         "the limit surface's certified relative error 1/lambda - 1 <= EPS (EPS > 0, exact: 0.01, "
                         "1/100, 1e-3)",
@@ -477,11 +481,13 @@ std::vector<Command> make_table() {
        "\n"
        "With --what push: the body on its support, the centre of friction, the pusher with its friction cone and\n"
        "velocity, and the three voting lines through it coloured by their votes, as 'wrenchkit push' decides;\n"
-       "--contact adds the contact mode and where the body turns (its rotation centre, or its direction).\n",
+       "--contact adds the contact mode and where the body turns (its rotation centre, or its direction); with a\n"
+       "line pusher, the segment, its cones and the verdict, and --region shades its stable region.\n",
        join({{kHelp, kWhat, kOutput,
               with_help(kSides, "with --what limit-surface: polygon sides, even, 4..4096 (default 32)"), kNorm, kNormalize,
               kTorqueScale, kAbout, kFingerMu, kEdges, kFingers,
-              with_help(kPushContact, "with --what push: also the contact mode and the body's rotation centre")},
+              with_help(kPushContact, "with --what push: also the contact mode and the body's rotation centre"),
+              with_help(kPushRegion, "with --what push and a line pusher: also its stable region")},
              kLimits}),
        {kScene},
        run_render});
@@ -670,7 +676,7 @@ std::vector<Command> make_table() {
               with_help(kMode, "exact or hybrid (the default): the votes in rationals, with the certificate; float: the "
                                "float twin's certified signs (a support of points with every force given), no "
                                "certificate, exit 3 when a sign is within its error bound"),
-              kPushContact,
+              kPushContact, kPushRegion,
               with_help(kTolerance, "with --contact: the sticking rotation rate's relative bracket width (default 1e-12)"),
               with_help(kCertificate, "write the certificate to FILE (checked first)")},
              kLimits}),

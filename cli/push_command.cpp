@@ -86,6 +86,44 @@ void write_push(Json_writer& w, const Push_item& r) {
     }
     w.end_object();
   }
+  if (a.region && !a.region->friction_centre) w.key("stable_region").null();  // (c moves: the verdict's why says so)
+  if (a.region && a.region->friction_centre) {  // the stable region (PU-3 §6): half-planes a·q ≤ b per sense, their
+    // polygon within the box
+    const Stable_region& g = *a.region;
+    w.key("stable_region").object();
+    for (int k = 0; k < 2; ++k) {
+      const Stable_region_side& side = g.side[k];
+      w.key(k == 0 ? "ccw" : "cw");
+      if (!side.possible) {
+        w.null();
+        continue;
+      }
+      w.object().key("halfplanes").array();
+      for (int f = 0; f < 4; ++f) {
+        const Halfplane& h = side.halfplanes[f];
+        w.object().member("facet", cone_facet_name(static_cast<Cone_facet>(f)));
+        w.key("a").array().rational(h.a.x).rational(h.a.y).end_array().member("b", h.b).end_object();
+      }
+      w.end_array().member("T", side.T).key("polygon").array();
+      for (const Vec2& v : side.polygon) w.array().rational(v.x).rational(v.y).end_array();
+      w.end_array();
+      std::vector<Rational> flat;
+      for (const Vec2& v : side.polygon) flat.push_back(v.x), flat.push_back(v.y);
+      write_approx(w, "polygon", flat);
+      w.end_object();
+    }
+    w.key("box").array();
+    for (const Vec2& v : g.box) w.array().rational(v.x).rational(v.y).end_array();
+    w.end_array().key("translations");
+    if (g.translations) {
+      w.array();
+      for (const Vec2& v : *g.translations) w.array().rational(v.x).rational(v.y).end_array();
+      w.end_array();
+    } else {
+      w.null();
+    }
+    w.end_object();
+  }
   if (a.contact) {
     const Push_contact& c = *a.contact;
     w.key("contact").object().member("mode", push_mode_name(c.mode));
@@ -147,6 +185,41 @@ std::string push_human(const Push_item& r, const std::string& source) {
       s << "\n";
     }
     s << "rotation: " << rotation_name(a.rotation) << " — " << a.why << "\n";
+    if (a.region && !a.region->friction_centre) s << "stable region: not answered — " << a.region->why << "\n";
+    if (a.region && a.region->friction_centre) {
+      const Stable_region& g = *a.region;
+      s << "stable region (the pusher's motions certified stable for every distribution; a motion outside may be "
+           "stable too):\n";
+      for (int k = 0; k < 2; ++k) {
+        const Stable_region_side& side = g.side[k];
+        s << "  turning " << (k == 0 ? "ccw" : "cw") << " about q: ";
+        if (!side.possible) {
+          s << "none certified (the tip end is the centre of friction)\n";
+          continue;
+        }
+        static const char* const what[4] = {"left edge", "right edge", "", ""};
+        for (int f = 0; f < 4; ++f) {
+          const Halfplane& h = side.halfplanes[f];
+          s << (f ? "; " : "") << vec_text(h.a) << "·q <= " << number_text(h.b) << " ("
+            << (f < 2 ? what[f] : static_cast<std::size_t>(f - 2) == side.tip ? "tip line of end " : "bisector of end ")
+            << (f < 2 ? "" : std::to_string(f - 2)) << ")";
+        }
+        s << "\n    within the box " << vec_text(g.box[0]) << " – " << vec_text(g.box[1]) << ": ";
+        if (side.polygon.empty()) {
+          s << "empty\n";
+        } else {
+          s << "the polygon";
+          for (const Vec2& v : side.polygon)
+            s << " (" << decimal_text(v.x, 6) << ", " << decimal_text(v.y, 6) << ")";
+          s << "\n";
+        }
+      }
+      s << "  translating: ";
+      if (g.translations)
+        s << "every velocity from " << vec_text((*g.translations)[0]) << " counter-clockwise to " << vec_text((*g.translations)[1]) << "\n";
+      else
+        s << "none\n";
+    }
     if (!r.certificate.empty()) s << "certificate accepted by the independent checker (exact arithmetic)\n";
     return s.str();
   }

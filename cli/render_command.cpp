@@ -404,6 +404,15 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
   for (const Support_region& g : s.support->regions)
     for (const Vec2& v : g.outline) b.add(to_p2(v));
   if (a.center) b.add(to_p2(*a.center));
+  if (a.region && a.center)  // a line pusher's stable region: each side's vertex nearest the centre of friction in view
+    for (const Stable_region_side& side : a.region->side) {
+      std::optional<P2> near;
+      const P2 ctr = to_p2(*a.center);
+      for (const Vec2& v : side.polygon)
+        if (const P2 x = to_p2(v); !near || std::hypot(x.x - ctr.x, x.y - ctr.y) < std::hypot(near->x - ctr.x, near->y - ctr.y))
+          near = x;
+      if (near) b.add(*near);
+    }
   // the rotation centre, in the picture when it is within a few body sizes (else the caption gives it)
   const std::optional<P2> centre = motion                      ? motion->centre
                                    : a.stable && a.stable->centre ? std::optional<P2>(to_p2(*a.stable->centre))
@@ -450,16 +459,24 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
   };
   if (a.stable) {  // a line pusher (PU-3): the segment, the friction cone at both ends, its motion, the verdict
     const Stable_push& st = *a.stable;
+    if (a.region)  // the stable region: the rotation centres certified stable, ccw and cw (within the picture)
+      for (int k = 0; k < 2; ++k) {
+        std::vector<P2> poly;
+        for (const Vec2& v : a.region->side[k].polygon) poly.push_back(to_p2(v));
+        if (poly.size() >= 3)
+          c.polygon(poly, "fill=\"" + std::string(k == 0 ? kPlus : kMinus) + "\" fill-opacity=\"0.18\" stroke=\"" +
+                              (k == 0 ? kPlus : kMinus) + "\" stroke-width=\"1\"");
+      }
     const P2 e0 = to_p2(a.at), e1 = to_p2(*s.pusher->end), n = unit(to_p2(a.normal)), t{-n.y, n.x};
-    const double mu = a.mu.get_d();
-    for (const P2& e : {e0, e1}) {
+    const double mu = a.mu.get_d(), len = std::min(1.6 * L, 1.2 * std::hypot(e1.x - e0.x, e1.y - e0.y));
+    for (const P2& e : {e0, e1}) {  // (as long as the segment at most: a fence's cones stay beside it)
       const P2 eL = unit({n.x + mu * t.x, n.y + mu * t.y}), eR = unit({n.x - mu * t.x, n.y - mu * t.y});
-      c.polygon({e, {e.x + 1.6 * L * eL.x, e.y + 1.6 * L * eL.y}, {e.x + 1.6 * L * eR.x, e.y + 1.6 * L * eR.y}},
+      c.polygon({e, {e.x + len * eL.x, e.y + len * eL.y}, {e.x + len * eR.x, e.y + len * eR.y}},
                 "fill=\"" + std::string(kCone) + "\" fill-opacity=\"0.55\" stroke=\"" + kCone + "\"");
     }
     c.line(e0, e1, "stroke=\"#222\" stroke-width=\"5\"");
     const P2 m{(e0.x + e1.x) / 2, (e0.y + e1.y) / 2}, vel = unit(to_p2(a.velocity));
-    c.arrow({m.x - 1.5 * L * vel.x, m.y - 1.5 * L * vel.y}, m, kLoad, 3);
+    c.arrow({m.x - len * vel.x, m.y - len * vel.y}, m, kLoad, 3);
     c.text(e0, "end 0", "fill=\"#222\"");
     c.text(e1, "end 1", "fill=\"#222\"");
     if (a.center) {
@@ -482,6 +499,10 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
     if (centre_shown) c.legend("stroke=\"" + std::string(kMotion) + "\" fill=\"" + kMotion + "\"", "the pusher's rotation centre");
     if (!st.points.empty())
       c.legend("stroke=\"" + std::string(kMinus) + "\" fill=\"none\"", "a distribution with the centre of friction that breaks the contact");
+    if (a.region) {
+      c.legend(swatch(kPlus, 0.18), "rotation centres certified stable turning ccw (PU-3: an inner region)");
+      c.legend(swatch(kMinus, 0.18), "rotation centres certified stable turning cw");
+    }
     std::string motion = " (the pusher translates)";
     if (st.centre) {
       char at[96];
@@ -574,6 +595,7 @@ std::string render_svg(const Options& o, const std::string& text, const std::str
   const Picture what = *o.what;
   if (o.sides && what != Picture::limit_surface) throw Usage_error("--sides goes with --what limit-surface");
   if (o.push.contact && what != Picture::push) throw Usage_error("--contact goes with --what push");
+  if (o.push.region && what != Picture::push) throw Usage_error("--region goes with --what push");
   const Scene s = read_scene(text, o.limits, source);
   if (what == Picture::hold) {
     const Hold_item h = answered(answer_hold(text, source, request_of(o)));

@@ -160,6 +160,74 @@ TEST(StablePush, TamperedCertificatesAreRefused) {
   refused(ts, tc, R"(, "stable": {"verdict": "stable", "R2": "2"})", "", "missing required key");
 }
 
+// [PU-3 §6] The stable region of the fence: ccw, the half-planes (1/2, −1)·q ≤ −3/2 (every leg behind the left edge's
+// line: max x·e₊ = 3/2 at (−1, 1)), (1/2, 1)·q ≤ −3/2 (min x·e₋ = −3/2 at (−1, −1)), (1, 2)·q ≤ −5/4 (the bisector of
+// end 0 and c: 2q·(c − e0) ≤ |c|² − |e0|²) and (1/2, −1)·q ≤ −T (end 1's tip line (c − e1)·q ≥ T); cw their mirror.
+// Every rotation centre inside (the polygon's vertices' mean and the midpoints toward each vertex) is stable by the
+// query too, and the certificate's tampered region is refused.
+TEST(StablePush, TheRegionWorkedByHandAndItsCentresStable) {
+  Push_query q;
+  q.region = true;
+  const std::string scene = fence(R"("velocity": [0, 1], "omega": "1/10")");
+  const Push_item r = answer_push(scene, "test", Request{}, q);
+  ASSERT_EQ(r.status, Status::answered) << r.message;
+  ASSERT_TRUE(r.push.region);
+  const Stable_region& g = *r.push.region;
+  const Stable_region_side& ccw = g.side[0];
+  ASSERT_TRUE(ccw.possible);
+  EXPECT_EQ(ccw.halfplanes[0].a.x, Rational(1, 2));
+  EXPECT_EQ(ccw.halfplanes[0].a.y, -1);
+  EXPECT_EQ(ccw.halfplanes[0].b, Rational(-3, 2));
+  EXPECT_EQ(ccw.halfplanes[1].a.y, 1);
+  EXPECT_EQ(ccw.halfplanes[1].b, Rational(-3, 2));
+  EXPECT_EQ(ccw.halfplanes[2].a.x, 1);
+  EXPECT_EQ(ccw.halfplanes[2].a.y, 2);
+  EXPECT_EQ(ccw.halfplanes[2].b, Rational(-5, 4));
+  EXPECT_EQ(ccw.tip, 1u);
+  EXPECT_EQ(ccw.halfplanes[3].b, -ccw.T);
+  EXPECT_GT(ccw.T, Rational(29, 10));  // the fixed point T = 2 + E(T/√(5/4)) ≈ 2.9099
+  EXPECT_LT(ccw.T, Rational(292, 100));
+  ASSERT_TRUE(g.translations);
+  EXPECT_EQ((*g.translations)[0].x, Rational(1, 2));  // the friction cone itself: its lines through c cross the segment
+  EXPECT_EQ((*g.translations)[1].x, Rational(-1, 2));
+  EXPECT_TRUE(test::checker_accepts(scene, r.certificate));
+  EXPECT_TRUE(test::checker_refuses_edit(scene, r.certificate, R"("T": "2909923/1000000")", R"("T": "29/10")",
+                                         "region.ccw.T: 29/10 is below R^2 + E(T/alpha_hi)"));
+  EXPECT_TRUE(test::checker_refuses_edit(scene, r.certificate, R"("alpha_hi": "559017/500000")", R"("alpha_hi": "1")",
+                                         "region.ccw.alpha_hi: not an upper bound"));
+  EXPECT_TRUE(test::checker_refuses_edit(scene, r.certificate, R"("translations": [["1/2", "1"])",
+                                         R"("translations": [["1", "1"])", "region.translations[0]: (1, 1) is not a stable"));
+  EXPECT_TRUE(test::checker_refuses_edit(scene, r.certificate, R"("R_hi": "707107/500000")", R"("R_hi": "7/5")",
+                                         "region.R_hi: not an upper bound of R"));
+  // every centre inside either polygon is stable by the query (and so by brute force: the test below)
+  int tried = 0;
+  for (int k = 0; k < 2; ++k) {
+    const std::vector<Vec2>& poly = g.side[k].polygon;
+    ASSERT_GE(poly.size(), 3u);
+    Vec2 mean{0, 0};
+    for (const Vec2& v : poly) mean.x += v.x / poly.size(), mean.y += v.y / poly.size();
+    std::vector<Vec2> inside = {mean};
+    for (const Vec2& v : poly) inside.push_back({(mean.x + v.x) / 2, (mean.y + v.y) / 2});
+    for (const Vec2& c : inside) {
+      const Rational omega = k == 0 ? 1 : -1;  // v at the middle (0, −1): ω rot90(m − c)
+      const Vec2 v{-omega * (-1 - c.y), omega * (0 - c.x)};
+      if (v.y <= 0) continue;  // (it would not push into the body)
+      std::ostringstream motion;
+      motion << R"("velocity": [")" << v.x << R"(", ")" << v.y << R"("], "omega": ")" << omega << R"(")";
+      const Push_item at = push(fence(motion.str()));
+      ASSERT_EQ(at.status, Status::answered) << at.message;
+      EXPECT_EQ(at.push.stable->verdict, Stability::stable) << c.x << ", " << c.y << ": " << at.push.stable->why;
+      ++tried;
+    }
+  }
+  EXPECT_GE(tried, 6);
+  // a point pusher has no stable region
+  const Push_item point = answer_push(R"({"wrenchkit": 1, "support": {"mu": 1, "points": [{"at": [0, 0], "force": 1}]},
+      "pusher": {"at": [0, -1], "normal": [0, 1], "velocity": [0, 1]}})", "test", Request{}, q);
+  EXPECT_EQ(point.status, Status::bad_input);
+  EXPECT_NE(point.message.find("--region"), std::string::npos);
+}
+
 // On a region: the square's support is a uniform patch [-1, 1]² (R² = 2 at its corners); rotating about (-2, -1)
 // the witness lies on the patch's boundary (its ring's edges).
 TEST(StablePush, ARegionSupport) {
@@ -179,11 +247,12 @@ TEST(StablePush, ARegionSupport) {
 // accepted certificate; a stable one is never contradicted by brute force over every distribution of the legs with
 // the centre of friction (the LP's basic solutions: one leg at c, two with c between them, three around c), and an
 // unstable one is confirmed by it. Where PU-3's distribution-free conditions fail (they are sufficient, not necessary),
-// the LP over the legs decides: a witness, or its dual (counted).
+// the LP over the legs decides: a witness, or its dual (counted). And every 4th scene's stable region (PU-3 §6): points
+// inside its polygons are never contradicted by brute force.
 TEST(StablePush, AgainstBruteForceOverEveryDistribution) {
   std::mt19937_64 rng(20261129);
   std::uniform_int_distribution<int> coord(-4, 4), force(1, 3), count(3, 8), end(-5, 5), small(-3, 3), wide(-40, 40);
-  int verdicts[3] = {0, 0, 0}, turning_stable = 0, by_dual = 0;
+  int verdicts[3] = {0, 0, 0}, turning_stable = 0, by_dual = 0, region_points = 0;
   for (int sc = 0; sc < 1000; ++sc) {
     const std::uint64_t seed = rng();
     std::mt19937_64 r(seed);
@@ -225,33 +294,56 @@ TEST(StablePush, AgainstBruteForceOverEveryDistribution) {
     const int s0 = b > a ? 1 : -1, s_end[2] = {s0, -s0};
     const int sigma = omega_num > 0 ? 1 : omega_num < 0 ? -1 : 0;
     const double qx = m0 - 1.0 / w, qy = -5 + vx / w;  // q = m + rot90(v)/ω, v = (vx, 1)
-    double worst = -1e300;
-    const auto load = [&](const std::vector<std::pair<int, double>>& dist) {  // max over facets of Σ w h/ℓ (scaled)
-      if (sigma == 0) return -1e300;
-      double v[4] = {0, 0, 0, 0}, total = 0;
-      for (const auto& [i, wt] : dist) {
-        const double dx = legs[i][0] - qx, dy = legs[i][1] - qy, l = std::hypot(dx, dy);
-        if (l == 0) return -1e300;
-        v[0] += wt * sigma * (dx * eL[0] + dy * eL[1]) / l;
-        v[1] += -wt * sigma * (dx * eR[0] + dy * eR[1]) / l;
-        for (int j = 0; j < 2; ++j)
-          v[2 + j] += -wt * s_end[j] * sigma * ((legs[i][0] - e[j][0]) * dx + (legs[i][1] - e[j][1]) * dy) / l;
-        total += wt;
+    // the largest value over every basic distribution of the facets' sums for the rotation about (qx, qy), sense sg
+    const auto worst_about = [&](double qx, double qy, int sg) {
+      double worst = -1e300;
+      const auto load = [&](const std::vector<std::pair<int, double>>& dist) {  // max over facets of Σ w h/ℓ (scaled)
+        if (sg == 0) return -1e300;
+        double v[4] = {0, 0, 0, 0}, total = 0;
+        for (const auto& [i, wt] : dist) {
+          const double dx = legs[i][0] - qx, dy = legs[i][1] - qy, l = std::hypot(dx, dy);
+          if (l == 0) return -1e300;
+          v[0] += wt * sg * (dx * eL[0] + dy * eL[1]) / l;
+          v[1] += -wt * sg * (dx * eR[0] + dy * eR[1]) / l;
+          for (int j = 0; j < 2; ++j)
+            v[2 + j] += -wt * s_end[j] * sg * ((legs[i][0] - e[j][0]) * dx + (legs[i][1] - e[j][1]) * dy) / l;
+          total += wt;
+        }
+        return *std::max_element(v, v + 4) / total;
+      };
+      for (int i = 0; i < k; ++i) {
+        const double ax = legs[i][0] - cx, ay = legs[i][1] - cy;
+        if (std::abs(ax) + std::abs(ay) < 1e-12) worst = std::max(worst, load({{i, 1.0}}));
+        for (int j = i + 1; j < k; ++j) {
+          const double bx = legs[j][0] - cx, by = legs[j][1] - cy;
+          if (std::abs(ax * by - ay * bx) < 1e-12 && ax * bx + ay * by < 0)
+            worst = std::max(worst, load({{i, std::hypot(bx, by)}, {j, std::hypot(ax, ay)}}));
+          for (int l = j + 1; l < k; ++l) {
+            const double dx = legs[l][0] - cx, dy = legs[l][1] - cy;
+            const double la = bx * dy - by * dx, lb = dx * ay - dy * ax, lc = ax * by - ay * bx;
+            if ((la > 1e-12 && lb > 1e-12 && lc > 1e-12) || (la < -1e-12 && lb < -1e-12 && lc < -1e-12))
+              worst = std::max(worst, load({{i, std::abs(la)}, {j, std::abs(lb)}, {l, std::abs(lc)}}));
+          }
+        }
       }
-      return *std::max_element(v, v + 4) / total;
+      return worst;
     };
-    for (int i = 0; i < k; ++i) {
-      const double ax = legs[i][0] - cx, ay = legs[i][1] - cy;
-      if (std::abs(ax) + std::abs(ay) < 1e-12) worst = std::max(worst, load({{i, 1.0}}));
-      for (int j = i + 1; j < k; ++j) {
-        const double bx = legs[j][0] - cx, by = legs[j][1] - cy;
-        if (std::abs(ax * by - ay * bx) < 1e-12 && ax * bx + ay * by < 0)
-          worst = std::max(worst, load({{i, std::hypot(bx, by)}, {j, std::hypot(ax, ay)}}));
-        for (int l = j + 1; l < k; ++l) {
-          const double dx = legs[l][0] - cx, dy = legs[l][1] - cy;
-          const double la = bx * dy - by * dx, lb = dx * ay - dy * ax, lc = ax * by - ay * bx;
-          if ((la > 1e-12 && lb > 1e-12 && lc > 1e-12) || (la < -1e-12 && lb < -1e-12 && lc < -1e-12))
-            worst = std::max(worst, load({{i, std::abs(la)}, {j, std::abs(lb)}, {l, std::abs(lc)}}));
+    const double worst = worst_about(qx, qy, sigma);
+    // [PU-3 §6] the stable region, every 4th push: its polygons' vertex means and the midpoints toward each vertex
+    if (sc % 4 == 0) {
+      const Scene scene = read_scene(text, Input_limits{});
+      const Stable_region g = stable_region(Support_model(scene), *scene.pusher);
+      for (int side = 0; side < 2; ++side) {
+        const std::vector<Vec2>& poly = g.side[side].polygon;
+        if (poly.empty()) continue;
+        double mx = 0, my = 0;
+        for (const Vec2& v : poly) mx += v.x.get_d() / poly.size(), my += v.y.get_d() / poly.size();
+        for (std::size_t t = 0; t <= poly.size(); ++t) {
+          const double px = t == 0 ? mx : (mx + poly[t - 1].x.get_d()) / 2, py = t == 0 ? my : (my + poly[t - 1].y.get_d()) / 2;
+          ASSERT_LE(worst_about(px, py, side == 0 ? 1 : -1), 1e-9)
+              << "seed " << seed << ": (" << px << ", " << py << ") is in the stable region, but a distribution leaves "
+              << "the cone\n" << test::dump_failure(text, "stable_push");
+          ++region_points;
         }
       }
     }
@@ -264,8 +356,9 @@ TEST(StablePush, AgainstBruteForceOverEveryDistribution) {
                           << test::dump_failure(text, "stable_push");
     }
   }
-  std::printf("stable %d (turning %d, by a dual %d), unstable %d, undecided %d of 1000\n", verdicts[0], turning_stable,
-              by_dual, verdicts[1], verdicts[2]);
+  std::printf("stable %d (turning %d, by a dual %d), unstable %d, undecided %d of 1000; %d centres of stable regions\n",
+              verdicts[0], turning_stable, by_dual, verdicts[1], verdicts[2], region_points);
+  EXPECT_GT(region_points, 200);
   EXPECT_GT(turning_stable, 100);
   EXPECT_GT(by_dual, 10);
   EXPECT_LT(verdicts[2], 5);  // (the load exactly on the cone's boundary)

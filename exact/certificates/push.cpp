@@ -44,6 +44,21 @@ static std::string line_push_certificate(const Push_answer& a) {
     }
   }
   w.end_object();
+  if (a.region) {  // §8.3: the stable region's tip lines (the other half-planes are the scene's)
+    const Stable_region& g = *a.region;
+    w.key("region").object().member("R_hi", g.R_hi);
+    for (int k = 0; k < 2; ++k) {
+      w.key(k == 0 ? "ccw" : "cw");
+      if (g.side[k].possible) w.object().member("alpha_hi", g.side[k].alpha_hi).member("T", g.side[k].T).end_object();
+      else w.null();
+    }
+    if (g.translations) {
+      w.key("translations").array();
+      for (const Vec2& v : *g.translations) w.array().rational(v.x).rational(v.y).end_array();
+      w.end_array();
+    }
+    w.end_object();
+  }
   return w.end_object().take();
 }
 

@@ -15,11 +15,15 @@ Push_item answer_push(std::string_view text, std::string_view source, const Requ
       throw Input_error("support: missing (push needs the support the body slides on: its points or regions with "
                         "their friction, as limit-surface reads them)");
     const Support_model model(r.scene);
+    if (query.region && !r.scene.pusher->line())
+      throw Input_error("--region: the stable region is a line pusher's (\"segment\"); a point pusher's contact mode "
+                        "is --contact");
     if (r.scene.pusher->line()) {  // a line contact (PU-3): is its motion stable — exact in every mode
       if (query.contact)
         throw Input_error("--contact: the contact mode is answered for a point pusher; a line pusher (\"segment\") "
                           "answers whether its motion is stable (drop --contact)");
       r.push = decide_line_push(model, *r.scene.pusher);
+      if (query.region) r.push.region = stable_region(model, *r.scene.pusher);
       if (!request.certify || r.push.stable->verdict == Stability::undecided) return;
       r.certificate = push_certificate(r.push);
       check_into(r, text, {r.certificate}, request);

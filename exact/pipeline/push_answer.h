@@ -15,6 +15,7 @@ namespace wrenchkit {
 // rotation rate, bracketed to `tolerance` (relative).
 struct Push_query {
   bool contact = false;
+  bool region = false;  // a line pusher's stable region (PU-3 §6)
   Rational tolerance = Rational(1, 1000000000000);
 };
 

@@ -125,6 +125,7 @@ struct Push_answer {
   std::optional<Push_contact> contact;  // the contact mode, when asked (PU-2)
   bool votes_known = true;  // false: the float twin could not decide, or a line pusher (no votes), `votes` is empty
   std::optional<Stable_push> stable;  // a line pusher (PU-3): is its motion stable
+  std::optional<Stable_region> region;  // a line pusher's stable region, when asked (PU-3 §6)
 };
 
 // The rotation sense of the body pushed by `pusher` on `model`'s support. Throws Input_error when some distribution

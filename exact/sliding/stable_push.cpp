@@ -225,13 +225,21 @@ bool find_dual(const Line_contact& L, Cone_facet f, const std::vector<Vec2>& S, 
   return false;
 }
 
-}  // namespace
+// The line contact, S's vertices (the support's places with μ > 0), the centre of friction when it is one point for
+// every distribution (else `why`), and R² = max |x − c|² over S's vertices: what the query and the region share.
+struct Prepared {
+  Line_contact L;
+  std::vector<Vec2> vertices;
+  std::optional<Vec2> c;
+  std::string why;
+  Rational R2;
+};
 
-Stable_push decide_stable_push(const Support_model& model, const Pusher& pusher) {
+Prepared prepare(const Support_model& model, const Pusher& pusher) {
   const Support& s = model.support();
   const Contact& pc = pusher.contact;
-  Stable_push a;
-  Line_contact L;
+  Prepared P;
+  Line_contact& L = P.L;
   L.end = {pc.at, *pusher.end};
   L.n = pc.normal;
   point_contact_generators(pc.at.x, pc.at.y, pc.normal.x, pc.normal.y, pc.mu, true, Reading::friction,
@@ -240,49 +248,79 @@ Stable_push decide_stable_push(const Support_model& model, const Pusher& pusher)
                            });
   const int first = sgn(cross(minus(L.end[1], L.end[0]), L.n)) > 0 ? 0 : 1;  // PU-3's p₁
   L.s = {first == 0 ? 1 : -1, first == 0 ? -1 : 1};
-  L.sigma = a.sense = sgn(pusher.omega);
+  L.sigma = sgn(pusher.omega);
   const Vec2 m{(L.end[0].x + L.end[1].x) / 2, (L.end[0].y + L.end[1].y) / 2};
-  if (L.sigma != 0) L.q = a.centre = rotation_centre(m, pusher.velocity, pusher.omega);
-
-  // S: the places of the support with friction, and the centre of friction when it is one point for every distribution.
-  std::vector<Vec2> vertices;
+  if (L.sigma != 0) L.q = rotation_centre(m, pusher.velocity, pusher.omega);
   std::set<Rational> mus;
-  for (const Support_point& p : s.points)
-    if (s.mu_of(p) > 0) vertices.push_back(p.at), mus.insert(s.mu_of(p));
-  for (const Support_region& r : s.regions)
-    if (s.mu_of(r) > 0) {
-      mus.insert(s.mu_of(r));
-      for (const auto& ring : r.rings) vertices.insert(vertices.end(), ring.begin(), ring.end());
-    }
-  for (const Support_point& p : s.points)
-    if (s.mu_of(p) == 0) mus.insert(Rational(0));
-  for (const Support_region& r : s.regions)
-    if (s.mu_of(r) == 0) mus.insert(Rational(0));
+  for (const Support_point& p : s.points) {
+    mus.insert(s.mu_of(p));
+    if (s.mu_of(p) > 0) P.vertices.push_back(p.at);
+  }
+  for (const Support_region& r : s.regions) {
+    mus.insert(s.mu_of(r));
+    if (s.mu_of(r) > 0)
+      for (const auto& ring : r.rings) P.vertices.insert(P.vertices.end(), ring.begin(), ring.end());
+  }
   const Admissible& F = model.admissible();
   Rational D = 0;
   for (std::size_t i = 0; i < s.points.size(); ++i) D += s.mu_of(s.points[i]) * F.given[i];
   for (const Support_region& r : s.regions) D += s.mu_of(r) * r.total;
-  if (vertices.empty() || (model.known() && D <= 0))
+  if (P.vertices.empty() || (model.known() && D <= 0))
     throw Input_error("support: no friction under the body (no support point or region with a force and mu > 0): "
                       "nothing resists the pusher, so the body does not slide quasi-statically; give the support a "
                       "friction coefficient (support.mu)");
   if (model.known()) {
-    a.friction_centre = friction_center(s, F.given);
+    P.c = friction_center(s, F.given);
   } else if (mus.size() == 1) {  // one μ > 0 under the whole body: the centre of pressure W c (distribution.h's rows)
     Vec2 mo = F.rest_moment;
     Rational W = F.rest;
     for (std::size_t i = 0; i < s.points.size(); ++i)
       mo.x += F.given[i] * s.points[i].at.x, mo.y += F.given[i] * s.points[i].at.y, W += F.given[i];
     for (const Support_region& r : s.regions) mo.x += r.moment.x, mo.y += r.moment.y, W += r.total;
-    a.friction_centre = Vec2{mo.x / W, mo.y / W};
+    P.c = Vec2{mo.x / W, mo.y / W};
   } else {
-    a.why = "the centre of friction moves with the distribution (the support's coefficients differ and some forces are "
+    P.why = "the centre of friction moves with the distribution (the support's coefficients differ and some forces are "
             "not given): stable pushing is answered about one centre of friction";
-    return a;
+    return P;
   }
-  const Vec2 c = *a.friction_centre;
-  a.R2 = 0;
-  for (const Vec2& x : vertices) a.R2 = std::max(a.R2, dot(minus(x, c), minus(x, c)));
+  for (const Vec2& x : P.vertices) P.R2 = std::max(P.R2, dot(minus(x, *P.c), minus(x, *P.c)));
+  return P;
+}
+
+// x rounded outward to `digits` decimals (up or down): the tip line's bounds as short numbers.
+Rational outward(const Rational& x, int digits, bool up) {
+  Integer scale, r;
+  mpz_ui_pow_ui(scale.get_mpz_t(), 10, static_cast<unsigned long>(digits));
+  const Integer t = x.get_num() * scale;
+  if (up) mpz_cdiv_q(r.get_mpz_t(), t.get_mpz_t(), x.get_den().get_mpz_t());
+  else mpz_fdiv_q(r.get_mpz_t(), t.get_mpz_t(), x.get_den().get_mpz_t());
+  Rational out(r, scale);
+  out.canonicalize();
+  return out;
+}
+
+// PU-3 §5's correction E at the bounds R ≥ R, d ≤ |q − c|, α ≥ |c − e_t| (an upper bound of the true E: it grows with
+// R and α and falls with d). Precondition: d > R ≥ 0.
+Rational tip_correction(const Rational& R, const Rational& d, const Rational& al) {
+  const Rational K = R * (2 * al + R) / (2 * d - R);
+  return K * K * (2 * d + R) / (8 * d) + al * R * R * R / (d * (2 * d - R));
+}
+
+}  // namespace
+
+Stable_push decide_stable_push(const Support_model& model, const Pusher& pusher) {
+  Stable_push a;
+  const Prepared P = prepare(model, pusher);
+  const Line_contact& L = P.L;
+  const Support& s = model.support();
+  a.sense = L.sigma;
+  a.centre = L.q;
+  a.friction_centre = P.c;
+  a.why = P.why;
+  if (!P.c) return a;
+  const std::vector<Vec2>& vertices = P.vertices;
+  const Vec2 c = *P.c;
+  a.R2 = P.R2;
 
   if (L.sigma == 0) {  // the load is v through c (PU-3 §1 with every point moving along v): exact
     const Vec2& v = pusher.velocity;
@@ -327,24 +365,11 @@ Stable_push decide_stable_push(const Support_model& model, const Pusher& pusher)
     a.R_hi = sqrt_bracket(a.R2, bits).second;
     a.d_lo = sqrt_bracket(dot(w, w), bits).first;
     a.alpha_hi = sqrt_bracket(dot(tip_a, tip_a), bits).second;
-    if (digits != 0) {
-      Integer scale;
-      mpz_ui_pow_ui(scale.get_mpz_t(), 10, static_cast<unsigned long>(digits));
-      const auto outward = [&](const Rational& x, bool up) {
-        Integer t = x.get_num() * scale, r;
-        if (up) mpz_cdiv_q(r.get_mpz_t(), t.get_mpz_t(), x.get_den().get_mpz_t());
-        else mpz_fdiv_q(r.get_mpz_t(), t.get_mpz_t(), x.get_den().get_mpz_t());
-        Rational out(r, scale);
-        out.canonicalize();
-        return out;
-      };
-      a.R_hi = outward(a.R_hi, true), a.d_lo = outward(a.d_lo, false), a.alpha_hi = outward(a.alpha_hi, true);
-    }
+    if (digits != 0)
+      a.R_hi = outward(a.R_hi, digits, true), a.d_lo = outward(a.d_lo, digits, false),
+      a.alpha_hi = outward(a.alpha_hi, digits, true);
     if (a.d_lo <= a.R_hi) continue;
-    const Rational &R = a.R_hi, &d = a.d_lo, &al = a.alpha_hi;
-    const Rational K = R * (2 * al + R) / (2 * d - R);
-    const Rational E = K * K * (2 * d + R) / (8 * d) + al * R * R * R / (d * (2 * d - R));
-    if (dot(tip_a, w) >= a.R2 + E) {
+    if (dot(tip_a, w) >= a.R2 + tip_correction(a.R_hi, a.d_lo, a.alpha_hi)) {
       tip_holds = true;
       break;
     }
@@ -436,6 +461,119 @@ Stable_push decide_stable_push(const Support_model& model, const Pusher& pusher)
                     "may be on the composite cone's boundary)"
                   : "tried breaks the contact: they are sufficient, not necessary");
   return a;
+}
+
+namespace {
+
+// The convex polygon `poly` (counter-clockwise) cut by a·q ≤ b (Sutherland–Hodgman, exact).
+std::vector<Vec2> clip(const std::vector<Vec2>& poly, const Halfplane& h) {
+  std::vector<Vec2> out;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 &p = poly[i], &q = poly[(i + 1) % n];
+    const Rational fp = dot(h.a, p) - h.b, fq = dot(h.a, q) - h.b;
+    if (sgn(fp) <= 0) out.push_back(p);
+    if ((sgn(fp) < 0 && sgn(fq) > 0) || (sgn(fp) > 0 && sgn(fq) < 0)) {
+      const Rational t = fp / (fp - fq);
+      out.push_back({p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Stable_region stable_region(const Support_model& model, const Pusher& pusher) {
+  Stable_region g;
+  const Prepared P = prepare(model, pusher);
+  g.friction_centre = P.c;
+  g.why = P.why;
+  if (!P.c) return g;
+  const Line_contact& L = P.L;
+  const Vec2 c = *P.c;
+  g.R2 = P.R2;
+  g.R_hi = outward(sqrt_bracket(g.R2, 64).second, 6, true);
+  // the box: everything in the scene, widened by ten times its size on every side (the region opens away from the body)
+  Vec2 lo = c, hi = c;
+  const auto add = [&](const Vec2& x) {
+    lo = {std::min(lo.x, x.x), std::min(lo.y, x.y)}, hi = {std::max(hi.x, x.x), std::max(hi.y, x.y)};
+  };
+  for (const Vec2& x : P.vertices) add(x);
+  for (const Vec2& x : L.end) add(x);
+  const Rational size = std::max({Rational(hi.x - lo.x), Rational(hi.y - lo.y), Rational(1)});
+  g.box = {Vec2{lo.x - 10 * size, lo.y - 10 * size}, Vec2{hi.x + 10 * size, hi.y + 10 * size}};
+  for (int k = 0; k < 2; ++k) {
+    Stable_region_side& side = g.side[k];
+    const int sigma = k == 0 ? 1 : -1;
+    Rational left = sigma * dot(P.vertices[0], L.left), right = sigma * dot(P.vertices[0], L.right);
+    for (const Vec2& x : P.vertices)
+      left = std::max(left, Rational(sigma * dot(x, L.left))), right = std::min(right, Rational(sigma * dot(x, L.right)));
+    side.halfplanes[0] = {Vec2{-sigma * L.left.x, -sigma * L.left.y}, -left};  // σ(x − q)·e₊ ≤ 0 for every x
+    side.halfplanes[1] = {Vec2{sigma * L.right.x, sigma * L.right.y}, right};   // −σ(x − q)·e₋ ≤ 0 for every x
+    const std::size_t bis = L.s[0] * sigma > 0 ? 0 : 1, tip = 1 - bis;
+    side.tip = tip;
+    const Vec2 eb = L.end[bis], et = L.end[tip], a = minus(c, et);
+    side.halfplanes[2 + bis] = {Vec2{2 * (c.x - eb.x), 2 * (c.y - eb.y)}, dot(c, c) - dot(eb, eb)};  // |q − e_b| ≤ |q − c|
+    if (is_zero(a)) continue;  // the tip end at c: no tip line
+    side.possible = true;
+    side.alpha_hi = outward(sqrt_bracket(dot(a, a), 64).second, 6, true);
+    // T: the least with T/α_hi > R_hi and T ≥ R² + E(T/α_hi) (E falls as T grows: bisect in doubles, then certify a
+    // short decimal a little above it, doubling the margin until it holds)
+    const Rational& al = side.alpha_hi;
+    const auto holds = [&](const Rational& T) {
+      const Rational d = T / al;
+      return d > g.R_hi && T >= g.R2 + tip_correction(g.R_hi, d, al);
+    };
+    const double Rd = g.R_hi.get_d(), ad = al.get_d(), R2d = g.R2.get_d();
+    const auto f = [&](double T) {
+      const double d = T / ad, K = Rd * (2 * ad + Rd) / (2 * d - Rd);
+      return T - R2d - (K * K * (2 * d + Rd) / (8 * d) + ad * Rd * Rd * Rd / (d * (2 * d - Rd)));
+    };
+    double tlo = ad * Rd * (1 + 1e-12), thi = std::max(tlo * 2, R2d + 2 * ad * Rd + 8 * (ad + Rd) * (ad + Rd) + 1);
+    for (int it = 0; it < 200 && f(thi) < 0; ++it) thi *= 2;
+    for (int it = 0; it < 100; ++it) (f((tlo + thi) / 2) < 0 ? tlo : thi) = (tlo + thi) / 2;
+    side.T = Rational(0);
+    for (double margin = 1e-9; margin < 1e6 && std::isfinite(thi); margin *= 16) {
+      const Rational T = outward(Rational(thi * (1 + margin) + margin), 6, true);
+      if (holds(T)) {
+        side.T = T;
+        break;
+      }
+    }
+    if (side.T == 0) {  // (the doubles out of range: the exact value a step at a time)
+      Rational T = g.R2 + al * g.R_hi + 1;
+      for (int it = 0; it < 64 && !holds(T); ++it) T *= 2;
+      if (!holds(T)) {
+        side.possible = false;
+        continue;
+      }
+      side.T = T;
+    }
+    side.halfplanes[2 + tip] = {Vec2{-a.x, -a.y}, -(side.T + dot(a, c))};  // (c − e_t)·(q − c) ≥ T
+    std::vector<Vec2> poly = {g.box[0], {g.box[1].x, g.box[0].y}, g.box[1], {g.box[0].x, g.box[1].y}};
+    for (const Halfplane& h : side.halfplanes) poly = clip(poly, h);
+    side.polygon = std::move(poly);
+  }
+  // translations: v with v × e₊ ≥ 0, e₋ × v ≥ 0 and s_k (c − e_k) × v ≥ 0 — a cone; its extreme rays are among the
+  // inequalities' boundary rays
+  const auto valid = [&](const Vec2& v) {
+    return sgn(cross(v, L.left)) >= 0 && sgn(cross(L.right, v)) >= 0 &&
+           L.s[0] * sgn(cross(minus(c, L.end[0]), v)) >= 0 && L.s[1] * sgn(cross(minus(c, L.end[1]), v)) >= 0 &&
+           sgn(dot(v, L.n)) > 0;
+  };
+  std::vector<Vec2> rays;
+  for (const Vec2& r : {L.left, L.right, minus(c, L.end[0]), minus(c, L.end[1])})
+    for (const Vec2& v : {r, Vec2{-r.x, -r.y}})
+      if (!is_zero(v) && valid(v)) rays.push_back(v);
+  if (!rays.empty()) {
+    std::array<Vec2, 2> cone = {rays[0], rays[0]};
+    for (const Vec2& v : rays) {
+      if (sgn(cross(cone[0], v)) < 0) cone[0] = v;  // (the set lies within the friction cone: less than a half-turn)
+      if (sgn(cross(v, cone[1])) < 0) cone[1] = v;
+    }
+    g.translations = cone;
+  }
+  return g;
 }
 
 Push_answer decide_line_push(const Support_model& model, const Pusher& pusher) {

@@ -67,4 +67,33 @@ struct Stable_push {
 // Precondition: pusher.line(). Throws Input_error when nothing under the body has friction.
 Stable_push decide_stable_push(const Support_model& model, const Pusher& pusher);
 
+// [PU-3 §6] The stable region: the rotation centres q of each sense certified stable for every distribution by PU-3's
+// four conditions — four half-planes a·q ≤ b each (left edge, right edge, the bisector's end, the tip end) — and the
+// translations' directions. The tip line's half-plane is (c − e_t)·(q − c) ≥ T with T/α_hi > R_hi and T ≥ R² +
+// E(T/α_hi, α_hi, R_hi): every q in it has |q − c| ≥ T/α > R and E(|q − c|) ≤ E(T/α_hi) (E falls with d), so §5 holds
+// there. An inner region: a centre outside may be stable too (the query decides it). `polygon` is the intersection
+// clipped to `box` (counter-clockwise, empty when it misses the box).
+struct Halfplane {
+  Vec2 a;
+  Rational b;  // a·q ≤ b
+};
+struct Stable_region_side {
+  bool possible = false;           // false: the tip end is the centre of friction (no tip line), nothing certified
+  std::array<Halfplane, 4> halfplanes;  // left edge, right edge, end 0, end 1
+  std::size_t tip = 0;             // the end the tip line bounds (the other: the bisector)
+  Rational T, alpha_hi;
+  std::vector<Vec2> polygon;
+};
+struct Stable_region {
+  std::optional<Vec2> friction_centre;  // none: it moves with the distribution (no region)
+  std::string why;                      // no region: the reason
+  Rational R2, R_hi;
+  std::array<Stable_region_side, 2> side;  // [0] ccw (ω > 0), [1] cw
+  std::array<Vec2, 2> box;                 // [lower-left, upper-right]: the scene's box widened by 10 sizes
+  // translating: the directions v with the four facets ≥ 0 — the cone from `translations[0]` counter-clockwise to
+  // `translations[1]` (equal: one direction), none when empty
+  std::optional<std::array<Vec2, 2>> translations;
+};
+Stable_region stable_region(const Support_model& model, const Pusher& pusher);
+
 }  // namespace wrenchkit

@@ -81,7 +81,7 @@ class Key_set {
                                              "constant_beyond", "limit_twist", "scaling", "torque_radius_squared",
                                              "torque_scale_error", "fingers", "mu", "edges", "pairs", "triples",
                                              "rotation", "friction", "votes", "center", "turns",
-                                             "contact", "stable"};
+                                             "contact", "stable", "region"};
     for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
       if (known[i] == key) return i;
     return -1;
@@ -213,6 +213,10 @@ struct Push_part {
   Q dual[4][3];
   std::size_t dual_bits = 0;
   bool has_dual_bits = false;
+  // "region" (§8.3): the stable region's R_hi and, per sense (ccw, cw), its tip line's alpha_hi and T; the stable
+  // translations' extreme rays
+  bool has_region = false, has_side[2] = {false, false}, has_translations = false;
+  Q region_R_hi, side_alpha_hi[2], side_T[2], translations[2][2];
 };
 
 struct Certificate {

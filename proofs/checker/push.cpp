@@ -441,6 +441,41 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c) {
     const bool sticks = p.mode == "sticks", sliding = p.mode == "slides left" || p.mode == "slides right";
     if ((seen & 8) && !(p.has_stick_pivot && sticks)) r.fail("\"force\" is a sticking pivot's (with \"pivot\", \"mode\": \"sticks\")");
     if (p.has_stick_pivot && !sliding && !(seen & 8)) r.fail("a sticking pivot needs both \"pivot\" and \"force\"");
+  } else if (key == "region") {  // §8.3: the stable region
+    p.has_region = true;
+    begin_object(r, "expected an object {\"R_hi\", \"ccw\", \"cw\", \"translations\"?}");
+    std::string_view k;
+    unsigned seen = 0;
+    while (r.next_key(k)) {
+      if (k == "R_hi") {
+        seen |= 1, p.region_R_hi = read_rational(r);
+      } else if (k == "ccw" || k == "cw") {
+        const int s = k == "ccw" ? 0 : 1;
+        seen |= s == 0 ? 2 : 4;
+        if (r.peek() == Reader::Kind::null) {
+          r.skip();
+          continue;
+        }
+        p.has_side[s] = true;
+        begin_object(r, "expected an object {\"alpha_hi\", \"T\"} or null");
+        std::string_view j;
+        unsigned got = 0;
+        while (r.next_key(j)) {
+          if (j == "alpha_hi") got |= 1, p.side_alpha_hi[s] = read_rational(r);
+          else if (j == "T") got |= 2, p.side_T[s] = read_rational(r);
+          else r.fail("unknown key " + quote(j), true);
+        }
+        if (got != 3) r.fail("a side of the region needs \"alpha_hi\" and \"T\"");
+      } else if (k == "translations") {
+        p.has_translations = true;
+        read_fixed(r, 2, "two directions [[dx, dy], [dx, dy]]", [&](std::size_t m) {
+          read_fixed(r, 2, "a direction [dx, dy]", [&](std::size_t i) { p.translations[m][i] = read_rational(r); });
+        });
+      } else {
+        r.fail("unknown key " + quote(k), true);
+      }
+    }
+    if (seen != 7) r.fail("a region needs \"R_hi\", \"ccw\" and \"cw\"");
   } else if (key == "stable") {  // §8.3
     p.has_stable = true;
     begin_object(r, "expected an object {\"verdict\", \"R2\", …}");
@@ -587,6 +622,38 @@ void check_line_push(const Push_part& p, const Scene& scene, const Limits& lim) 
   if (p.R2 != R2) throw Failure{"stable.R2: " + show(p.R2) + " is not the largest squared distance " + show(R2) +
                                 " from the centre of friction to the support's places with friction"};
   static const char* const facets[4] = {"left edge", "right edge", "end 0", "end 1"};
+  // PU-3 §5's correction E at R_hi, d_lo, alpha_hi (grows with R and alpha, falls with d)
+  const auto correction = [](const Q& R, const Q& dl, const Q& al) {
+    const Q K = R * (2 * al + R) / (2 * dl - R);
+    return Q(K * K * (2 * dl + R) / (8 * dl) + al * R * R * R / (dl * (2 * dl - R)));
+  };
+  if (p.has_region) {  // the stable region: each sense's tip line a.(q - c) >= T holds §5 for every q in it
+    const Q& R = p.region_R_hi;
+    if (sgn(R) < 0 || R * R < R2) throw Failure{"region.R_hi: not an upper bound of R"};
+    for (int k = 0; k < 2; ++k) {
+      if (!p.has_side[k]) continue;
+      const int sg = k == 0 ? 1 : -1, tip = s_end[0] * sg > 0 ? 1 : 0;
+      const Q tx = c[0] - e[tip][0], ty = c[1] - e[tip][1], &al = p.side_alpha_hi[k], &T = p.side_T[k];
+      const std::string path = std::string("region.") + (k == 0 ? "ccw" : "cw");
+      if (sgn(al) <= 0 || al * al < tx * tx + ty * ty) throw Failure{path + ".alpha_hi: not an upper bound of |c - end|"};
+      if (sgn(T) <= 0 || T / al <= R) throw Failure{path + ".T: T/alpha_hi is not more than R_hi"};
+      if (T < R2 + correction(R, T / al, al))
+        throw Failure{path + ".T: " + show(T) + " is below R^2 + E(T/alpha_hi) = " + show(Q(R2 + correction(R, T / al, al))) +
+                      " (the tip line's half-plane must hold PU-3 §5 at every point)"};
+    }
+    if (p.has_translations)
+      for (int m = 0; m < 2; ++m) {
+        const Q(&t)[2] = p.translations[m];
+        if (sgn(cross(t[0], t[1], eL[0], eL[1])) < 0 || sgn(cross(eR[0], eR[1], t[0], t[1])) < 0 ||
+            s_end[0] * sgn(cross(c[0] - e[0][0], c[1] - e[0][1], t[0], t[1])) < 0 ||
+            s_end[1] * sgn(cross(c[0] - e[1][0], c[1] - e[1][1], t[0], t[1])) < 0 || sgn(Q(t[0] * n[0] + t[1] * n[1])) <= 0)
+          throw Failure{"region.translations[" + std::to_string(m) + "]: " + show(t[0], t[1]) +
+                        " is not a stable translation (its load leaves the composite cone)"};
+      }
+    if (p.has_translations && sgn(cross(p.translations[0][0], p.translations[0][1], p.translations[1][0],
+                                        p.translations[1][1])) < 0)
+      throw Failure{"region.translations: not a cone from the first direction counter-clockwise to the second"};
+  }
   const bool stable = p.verdict == "stable";
   if (stable == p.has_facet) throw Failure{"stable: \"facet\" names the facet an unstable push leaves, and only then"};
   const std::string_view expect_rotation = !stable ? "" : sgn(pu.omega) > 0 ? "ccw" : sgn(pu.omega) < 0 ? "cw" : "none";
@@ -663,8 +730,7 @@ void check_line_push(const Push_part& p, const Scene& scene, const Limits& lim) 
     if (sgn(dl) < 0 || dl * dl > w2) throw Failure{"stable.d_lo: not a lower bound of |q - c|"};
     if (sgn(al) < 0 || al * al < tx * tx + ty * ty) throw Failure{"stable.alpha_hi: not an upper bound of |c - end|"};
     if (dl <= R) throw Failure{"stable.d_lo: not more than R_hi (the tip line's theorem needs |q - c| > R)"};
-    const Q K = R * (2 * al + R) / (2 * dl - R);
-    const Q E = K * K * (2 * dl + R) / (8 * dl) + al * R * R * R / (dl * (2 * dl - R));
+    const Q E = correction(R, dl, al);
     if (tx * wx + ty * wy < R2 + E)
       throw Failure{"stable: (c - end " + std::to_string(tip) + ") . (q - c) = " + show(Q(tx * wx + ty * wy)) +
                     " is below R^2 + E = " + show(Q(R2 + E)) + " (the corrected tip line, PU-3 §5)"};

@@ -506,6 +506,9 @@ PUSH_CENTRE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "r
 FENCE_STABLE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "center": ["0", "0"], "stable": {"verdict": "stable", "R2": "2"}}''')
 FENCE_SLANTED = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "center": ["0", "0"], "stable": {"verdict": "unstable", "R2": "2", "facet": "right edge"}}''')
 FENCE_TURNING = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "center": ["0", "0"], "stable": {"verdict": "stable", "R2": "2", "R_hi": "283/200", "d_lo": "10049/1000", "alpha_hi": "1119/1000"}}''')
+# push_fence_turning with --region: each sense's tip line (c - e_t).(q - c) >= T, T = 2.909923 >= 2 + E(T/alpha_hi)
+# (E ~ 0.9099 at d ~ 2.603: the fixed point, rounded up), and the stable translations: the friction cone itself.
+FENCE_REGION = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "center": ["0", "0"], "stable": {"verdict": "stable", "R2": "2", "R_hi": "283/200", "d_lo": "10049/1000", "alpha_hi": "1119/1000"}, "region": {"R_hi": "707107/500000", "ccw": {"alpha_hi": "559017/500000", "T": "2909923/1000000"}, "cw": {"alpha_hi": "559017/500000", "T": "2909923/1000000"}, "translations": [["1/2", "1"], ["-1/2", "1"]]}}''')
 FENCE_NEAR = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "center": ["0", "0"], "stable": {"verdict": "stable", "R2": "2", "duals": {"end 1": ["-37483/1000000", "210017/250000", "132551/500000"]}, "bits": 64}}''')
 FENCE_CLOSE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "center": ["0", "0"], "stable": {"verdict": "unstable", "R2": "2", "facet": "left edge", "witness": {"points": [["-1", "1"], ["1", "-1"]], "weights": ["1", "1"], "bits": 64}}}''')
 
@@ -1093,6 +1096,11 @@ CERTS = [
     ("push_fence_turning", "stable_tip_line", "valid", FENCE_TURNING),
     ("push_fence_turning", "tip_bound_too_high", "invalid:bound|stable.d_lo: not a lower bound of |q - c|",
      tamper(FENCE_TURNING, ["stable", "d_lo"], "11")),
+    ("push_fence_turning", "stable_region", "valid", FENCE_REGION),
+    ("push_fence_turning", "region_tip_too_close", "invalid:region|region.ccw.T: 29/10 is below R^2 + E(T/alpha_hi)",
+     tamper(FENCE_REGION, ["region", "ccw", "T"], "29/10")),
+    ("push_fence_turning", "region_translation_outside", "invalid:region|region.translations[0]: (1, 1) is not a stable translation",
+     tamper(FENCE_REGION, ["region", "translations"], [["1", "1"], ["-1/2", "1"]])),
     ("push_fence_near", "stable_by_dual", "valid", FENCE_NEAR),
     ("push_fence_near", "dual_not_negative", "invalid:dual|stable.duals.end 1: y0 is not negative",
      tamper(FENCE_NEAR, ["stable", "duals", "end 1"], ["1/1000000", "210017/250000", "132551/500000"])),
@@ -2224,7 +2232,7 @@ def sqrt_bounds(s, bits):
 
 def verify_line_push(scene, cert):
     """Section 8.3 (PU-3): a line pusher's stable push, over a support of points (regions are the C++ checker's)."""
-    if set(cert) - {"wrenchkit_certificate", "property", "rotation", "center", "stable"} or "center" not in cert:
+    if set(cert) - {"wrenchkit_certificate", "property", "rotation", "center", "stable", "region"} or "center" not in cert:
         return "keys"
     sup, pu, st = scene["support"], scene["pusher"], cert["stable"]
     if sup.get("regions"):
@@ -2252,6 +2260,28 @@ def verify_line_push(scene, cert):
     R2 = max(dot(sub(x, c), sub(x, c)) for x in S)
     if rational(st["R2"]) != R2:
         return "R2"
+    def correction(R, d, al):  # PU-3 section 5's E at the bounds (grows with R and alpha, falls with d)
+        K = R * (2 * al + R) / (2 * d - R)
+        return K * K * (2 * d + R) / (8 * d) + al * R ** 3 / (d * (2 * d - R))
+
+    if "region" in cert:  # each sense's tip line a.(q - c) >= T: T / alpha_hi > R_hi, T >= R^2 + E(T / alpha_hi)
+        reg = cert["region"]
+        R = rational(reg["R_hi"])
+        if R < 0 or R * R < R2:
+            return "region"
+        for k, sg in (("ccw", 1), ("cw", -1)):
+            if reg[k] is None:
+                continue
+            t = 1 if s_end[0] * sg > 0 else 0
+            a = sub(c, e[t])
+            al, T = rational(reg[k]["alpha_hi"]), rational(reg[k]["T"])
+            if al <= 0 or al * al < dot(a, a) or T <= 0 or T / al <= R or T < R2 + correction(R, T / al, al):
+                return "region"
+        for v in reg.get("translations", []):
+            v = [rational(x) for x in v]
+            if (cross(v, eL) < 0 or cross(eR, v) < 0 or any(s_end[k] * cross(sub(c, e[k]), v) < 0 for k in (0, 1))
+                    or dot(v, (nx, ny)) <= 0):
+                return "region"
     stable = st["verdict"] == "stable"
     sense = (w > 0) - (w < 0)
     if cert.get("rotation") != ({1: "ccw", -1: "cw", 0: "none"}[sense] if stable else None):
@@ -2308,9 +2338,7 @@ def verify_line_push(scene, cert):
     a = sub(c, e[t])
     if R < 0 or R * R < R2 or d < 0 or d * d > dot(wq, wq) or al < 0 or al * al < dot(a, a) or d <= R:
         return "bound"
-    K = R * (2 * al + R) / (2 * d - R)
-    E = K * K * (2 * d + R) / (8 * d) + al * R ** 3 / (d * (2 * d - R))
-    return None if dot(a, wq) >= R2 + E else "tip"
+    return None if dot(a, wq) >= R2 + correction(R, d, al) else "tip"
 
 
 def verify_push(scene, cert):

@@ -534,6 +534,10 @@ def test_push_stable_line_pusher():
     r = wrenchkit.push(square)
     assert r["stable"]["verdict"] == "unstable" and r["stable"]["facet"] == "left edge"
     assert r["stable"]["witness"]["points"] == [(-1, 1), (1, -1)] and r["rotation"] == "undecided"
+    g = wrenchkit.push(square, region=True)["stable_region"]  # the rotation centres certified stable (PU-3 section 6)
+    assert [h["facet"] for h in g["ccw"]["halfplanes"]] == ["left edge", "right edge", "end 0", "end 1"]
+    assert g["ccw"]["halfplanes"][2]["a"] == (1, 2) and g["ccw"]["halfplanes"][2]["b"] == Fraction(-5, 4)
+    assert len(g["ccw"]["polygon"]) >= 3 and g["translations"] == [(Fraction(1, 2), 1), (Fraction(-1, 2), 1)]
 
 
 def test_push_voting_theorem():

@@ -328,7 +328,7 @@ def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, 
     return r
 
 
-def push(scene, *, contact=False):
+def push(scene, *, contact=False, region=False):
     """Which way a pushed body turns (docs/pushing.md), as `wrenchkit push --json`: the scene's "pusher" (a point
     contact with a "velocity" into the body) pushing it over its "support". "rotation": "ccw", "cw", "none" (a
     translation), "depends" (with "witnesses": two distributions of the support's forces that turn it apart) or
@@ -348,9 +348,11 @@ def push(scene, *, contact=False):
     and translating: the composite cone's facets the load is on), "facet" and "witness": {"points", "weights"}
     (unstable: the facet the load leaves by, and a distribution with the centre of friction that breaks the contact)}
     for every distribution with the centre of friction (Lynch & Mason); "rotation" is the pusher's own sense when
-    stable.
+    stable. region=True (a line pusher): also "stable_region": {"ccw", "cw": {"halfplanes": [{"facet", "a", "b"}]
+    (a.q <= b, Fractions), "T", "polygon": [(x, y), ...] (within "box")} or None, "box", "translations": the cone of
+    stable translation velocities or None} — the rotation centres certified stable for every distribution.
     """
-    r = _json.loads(_core.push(_scene(scene), contact))
+    r = _json.loads(_core.push(_scene(scene), contact, region))
     fr = _fractions.Fraction
     for k in ("at", "normal", "velocity"):
         if k in r["pusher"]:
@@ -366,6 +368,17 @@ def push(scene, *, contact=False):
         if "witness" in st:
             st["witness"]["points"] = [tuple(fr(x) for x in p) for p in st["witness"]["points"]]
             st["witness"]["weights"] = [fr(x) for x in st["witness"]["weights"]]
+    if r.get("stable_region") is not None:
+        g = r["stable_region"]
+        for k in ("ccw", "cw"):
+            if g[k] is not None:
+                for h in g[k]["halfplanes"]:
+                    h["a"], h["b"] = tuple(fr(x) for x in h["a"]), fr(h["b"])
+                g[k]["T"] = fr(g[k]["T"])
+                g[k]["polygon"] = [tuple(fr(x) for x in v) for v in g[k]["polygon"]]
+        g["box"] = [tuple(fr(x) for x in v) for v in g["box"]]
+        if g["translations"] is not None:
+            g["translations"] = [tuple(fr(x) for x in v) for v in g["translations"]]
     if r["center_of_friction"] is not None:
         r["center_of_friction"] = tuple(fr(x) for x in r["center_of_friction"])
     for v in r["votes"]:
