@@ -95,6 +95,24 @@ TEST(StablePush, GoldenCasesWorkedByHand) {
   EXPECT_FALSE(x.certificate.empty());
 }
 
+// Unstable, yet the rotation is certain: frictionless along (1/2, −1)–(1, −1), every force the pusher can apply is
+// along (0, 1) through a point right of c — the four corners vote ccw ((e_k − c) × (0, 1) = 1/2 and 1) — so the body
+// turns ccw (PU-1's first lemma), though the line x = 0 through c along v misses the segment (end 0's facet).
+TEST(StablePush, UnstableButEveryForceTurnsItOneWay) {
+  const std::string text = R"({"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]}, "support": {"mu": "1/2",
+    "points": [{"at": [-1, -1], "force": 1}, {"at": [1, -1], "force": 1}, {"at": [1, 1], "force": 1},
+    {"at": [-1, 1], "force": 1}]}, "pusher": {"segment": [["1/2", -1], [1, -1]], "normal": [0, 1], "mu": 0,
+    "velocity": [0, 1]}})";
+  const Push_item r = push(text);
+  EXPECT_EQ(stable(r).verdict, Stability::unstable);
+  EXPECT_EQ(stable(r).facet, Cone_facet::end0);
+  EXPECT_EQ(stable(r).corners, 1);
+  EXPECT_EQ(r.push.rotation, Rotation::ccw) << r.push.why;
+  EXPECT_TRUE(test::checker_accepts(text, r.certificate));
+  EXPECT_TRUE(test::checker_refuses_edit(text, r.certificate, R"("rotation": "ccw")", R"("rotation": "cw")",
+                                         "an unstable push's rotation needs every force"));
+}
+
 TEST(StablePush, SceneErrorsNameTheField) {
   const auto error = [](const std::string& text) {
     const Push_item r = push(text);
@@ -137,12 +155,12 @@ TEST(StablePush, TamperedCertificatesAreRefused) {
   refused(ts, tc, R"("R2": "2")", R"("R2": "3")", "stable.R2: 3 is not the largest squared distance 2");
   refused(ts, tc, R"("center": ["0", "0"])", R"("center": ["0", "1"])", "is not the centre of friction");
   refused(ts, tc, R"("rotation": "none")", R"("rotation": "ccw")", "a stable push turns with the pusher");
-  refused(ts, tc, R"("verdict": "stable")", R"("verdict": "unstable", "facet": "left edge")", "rotation: not allowed");
+  refused(ts, tc, R"("verdict": "stable")", R"("verdict": "unstable", "facet": "left edge")", "an unstable push's rotation needs");
   refused(us, uc, R"("verdict": "unstable", "R2": "2", "facet": "right edge")",
           R"("verdict": "unstable", "R2": "2", "facet": "left edge")", "the load is not beyond the composite cone's left edge");
   refused(us, uc, R"("verdict": "unstable", "R2": "2", "facet": "right edge")", R"("verdict": "stable", "R2": "2")",
           "rotation:");
-  refused(us, uc, R"("center")", R"("rotation": "none", "center")", "rotation: not allowed");
+  refused(us, uc, R"("center")", R"("rotation": "none", "center")", "an unstable push's rotation needs");
   refused(rs, rc, R"("d_lo": "10049/1000")", R"("d_lo": "11")", "stable.d_lo: not a lower bound");
   refused(rs, rc, R"("R_hi": "283/200")", R"("R_hi": "1")", "stable.R_hi: not an upper bound");
   refused(rs, rc, R"("alpha_hi": "1119/1000")", R"("alpha_hi": "1")", "stable.alpha_hi: not an upper bound");
@@ -283,6 +301,11 @@ TEST(StablePush, AgainstBruteForceOverEveryDistribution) {
     const Stable_push& st = *res.push.stable;
     verdicts[static_cast<int>(st.verdict)]++;
     turning_stable += st.verdict == Stability::stable && st.sense != 0;
+    // a stable push turns with the pusher; when every force the pusher can apply passes c on one side, that side
+    // (PU-1's first lemma) — the two must agree (a translation's load passes through c: no corner sign)
+    if (st.verdict == Stability::stable && st.corners != 0) {
+      ASSERT_EQ(st.corners, st.sense) << "seed " << seed << "\n" << test::dump_failure(text, "stable_push");
+    }
     by_dual += st.verdict == Stability::stable && !st.duals.empty();
     if (st.verdict != Stability::undecided) {
       ASSERT_FALSE(res.certificate.empty()) << "seed " << seed << "\n" << test::dump_failure(text, "stable_push");

@@ -321,6 +321,12 @@ Stable_push decide_stable_push(const Support_model& model, const Pusher& pusher)
   const std::vector<Vec2>& vertices = P.vertices;
   const Vec2 c = *P.c;
   a.R2 = P.R2;
+  // the corners: a force of the composite cone is a sum of forces along e₊, e₋ at points of the segment, its moment
+  // about c a positive combination of (e_k − c) × e at the four corners (affine along the segment)
+  std::set<int> corner;
+  for (const Vec2& e : L.end)
+    for (const Vec2& d : {L.left, L.right}) corner.insert(sgn(cross(minus(e, c), d)));
+  a.corners = corner.size() == 1 ? *corner.begin() : 0;
 
   if (L.sigma == 0) {  // the load is v through c (PU-3 §1 with every point moving along v): exact
     const Vec2& v = pusher.velocity;
@@ -588,9 +594,16 @@ Push_answer decide_line_push(const Support_model& model, const Pusher& pusher) {
     a.rotation = a.stable->sense > 0 ? Rotation::ccw : a.stable->sense < 0 ? Rotation::cw : Rotation::none;
     a.why = "the push is stable: the body moves with the pusher, " +
             std::string(a.stable->sense == 0 ? "translating" : a.stable->sense > 0 ? "turning ccw" : "turning cw");
+  } else if (a.stable->verdict == Stability::unstable && a.stable->corners != 0) {
+    // PU-1's first lemma: the body turns as the pusher's force passes the centre of friction, whatever the contact does
+    a.rotation = a.stable->corners > 0 ? Rotation::ccw : Rotation::cw;
+    a.why = std::string("the push is not stable, but every force the pusher can apply passes the centre of friction on ") +
+            (a.stable->corners > 0 ? "its left" : "its right") + " (both friction-cone edges' lines through both ends "
+            "vote " + rotation_name(a.rotation) + "): the body turns " + rotation_name(a.rotation);
   } else {
     a.why = a.stable->verdict == Stability::unstable
-                ? "the push is not stable: the body leaves the pusher's motion, and a line contact's sliding is not answered"
+                ? "the push is not stable: the body leaves the pusher's motion, the pusher's forces pass the centre of "
+                  "friction on both sides, and a line contact's sliding is not answered"
                 : "whether the push is stable is not decided";
   }
   return a;

@@ -62,6 +62,9 @@ struct Stable_push {
   std::vector<Vec2> points;
   std::vector<Rational> weights;
   int bits = 64;
+  // the voting theorem's corners (PU-1 with a line contact): +1 when both cone edges' lines through both ends pass c
+  // on its left ((e_k − c) × e > 0: every force the pusher can apply turns the body ccw), −1 on its right, else 0
+  int corners = 0;
 };
 
 // Precondition: pusher.line(). Throws Input_error when nothing under the body has friction.

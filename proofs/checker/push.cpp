@@ -656,12 +656,20 @@ void check_line_push(const Push_part& p, const Scene& scene, const Limits& lim) 
   }
   const bool stable = p.verdict == "stable";
   if (stable == p.has_facet) throw Failure{"stable: \"facet\" names the facet an unstable push leaves, and only then"};
-  const std::string_view expect_rotation = !stable ? "" : sgn(pu.omega) > 0 ? "ccw" : sgn(pu.omega) < 0 ? "cw" : "none";
-  if (p.rotation != expect_rotation)
-    throw Failure{"rotation: " + (expect_rotation.empty() ? std::string("not allowed when the push is not stable (the body "
-                                                                         "leaves the pusher's motion)")
-                                                           : "a stable push turns with the pusher: \"" +
-                                                                 std::string(expect_rotation) + "\"")};
+  // The rotation: stable, the pusher's own; unstable, only when every force the pusher can apply passes c on one side
+  // (both cone edges' lines through both ends, (e_k - c) x e of one strict sign: PU-1's first lemma)
+  int corners = 2;
+  for (int k = 0; k < 2; ++k)
+    for (const Q* d : {eL, eR}) {
+      const int sg = sgn(cross(e[k][0] - c[0], e[k][1] - c[1], d[0], d[1]));
+      corners = corners == 2 ? sg : corners == sg ? sg : 0;
+    }
+  const std::string_view expect_rotation = !stable ? (corners > 0 ? "ccw" : corners < 0 ? "cw" : "")
+                                           : sgn(pu.omega) > 0 ? "ccw" : sgn(pu.omega) < 0 ? "cw" : "none";
+  if (p.rotation != expect_rotation && !(!stable && p.rotation.empty()))
+    throw Failure{"rotation: " + (!stable ? std::string("an unstable push's rotation needs every force the pusher can "
+                                                        "apply to pass the centre of friction on that side")
+                                          : "a stable push turns with the pusher: \"" + std::string(expect_rotation) + "\"")};
   if (sgn(pu.omega) == 0) {  // translating: the load is v through c, the facets' values exact
     if (p.has_bounds || p.has_witness) throw Failure{"stable: a translating pusher's verdict needs no bounds or witness"};
     const Q value[4] = {cross(v[0], v[1], eL[0], eL[1]), cross(eR[0], eR[1], v[0], v[1]),

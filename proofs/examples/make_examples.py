@@ -270,6 +270,9 @@ SCENES = {
                             pusher=dict(FENCE_PUSHER, velocity=[0, 1], omega="1/6")),
     "push_fence_close": dict(FENCE, name="the fence turning ccw about (-2, -1): unstable, two legs lean past the left edge",
                              pusher=dict(FENCE_PUSHER, velocity=[0, 1], omega="1/2")),
+    "push_fence_aside": dict(FENCE, name="a frictionless fence at the square's right, from (1/2, -1) to (1, -1), translating up: "
+                             "unstable, but every force it can apply turns the body ccw",
+                             pusher={"segment": [["1/2", -1], [1, -1]], "normal": [0, 1], "mu": 0, "velocity": [0, 1]}),
     "push_barbell": {"wrenchkit": 1, "name": "the square on two legs (-1, 0), (1, 0) pushed frictionless at (0, -1): "
                      "the friction lies on one line through c, so the votes do not decide", "body": SQUARE_OUTLINE,
                      "support": {"mu": "1/2", "points": [{"at": [-1, 0], "force": 1}, {"at": [1, 0], "force": 1}]},
@@ -509,6 +512,9 @@ FENCE_TURNING = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", 
 # push_fence_turning with --region: each sense's tip line (c - e_t).(q - c) >= T, T = 2.909923 >= 2 + E(T/alpha_hi)
 # (E ~ 0.9099 at d ~ 2.603: the fixed point, rounded up), and the stable translations: the friction cone itself.
 FENCE_REGION = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "center": ["0", "0"], "stable": {"verdict": "stable", "R2": "2", "R_hi": "283/200", "d_lo": "10049/1000", "alpha_hi": "1119/1000"}, "region": {"R_hi": "707107/500000", "ccw": {"alpha_hi": "559017/500000", "T": "2909923/1000000"}, "cw": {"alpha_hi": "559017/500000", "T": "2909923/1000000"}, "translations": [["1/2", "1"], ["-1/2", "1"]]}}''')
+# push_fence_aside: the line x = 0 through c along v misses the segment (end 0's facet), and every corner (e_k - c) x (0, 1)
+# is positive (1/2 and 1): the body turns ccw (PU-1's first lemma) though it leaves the pusher.
+FENCE_ASIDE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "center": ["0", "0"], "stable": {"verdict": "unstable", "R2": "2", "facet": "end 0"}}''')
 FENCE_NEAR = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "center": ["0", "0"], "stable": {"verdict": "stable", "R2": "2", "duals": {"end 1": ["-37483/1000000", "210017/250000", "132551/500000"]}, "bits": 64}}''')
 FENCE_CLOSE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "center": ["0", "0"], "stable": {"verdict": "unstable", "R2": "2", "facet": "left edge", "witness": {"points": [["-1", "1"], ["1", "-1"]], "weights": ["1", "1"], "bits": 64}}}''')
 
@@ -1101,6 +1107,9 @@ CERTS = [
      tamper(FENCE_REGION, ["region", "ccw", "T"], "29/10")),
     ("push_fence_turning", "region_translation_outside", "invalid:region|region.translations[0]: (1, 1) is not a stable translation",
      tamper(FENCE_REGION, ["region", "translations"], [["1", "1"], ["-1/2", "1"]])),
+    ("push_fence_aside", "unstable_turns_ccw", "valid", FENCE_ASIDE),
+    ("push_fence_aside", "claims_cw", "invalid:rotation|rotation: an unstable push's rotation needs every force",
+     tamper(FENCE_ASIDE, ["rotation"], "cw")),
     ("push_fence_near", "stable_by_dual", "valid", FENCE_NEAR),
     ("push_fence_near", "dual_not_negative", "invalid:dual|stable.duals.end 1: y0 is not negative",
      tamper(FENCE_NEAR, ["stable", "duals", "end 1"], ["1/1000000", "210017/250000", "132551/500000"])),
@@ -2284,7 +2293,11 @@ def verify_line_push(scene, cert):
                 return "region"
     stable = st["verdict"] == "stable"
     sense = (w > 0) - (w < 0)
-    if cert.get("rotation") != ({1: "ccw", -1: "cw", 0: "none"}[sense] if stable else None):
+    corners = {(1 if v > 0 else -1 if v < 0 else 0) for v in (cross(sub(x, c), d) for x in e for d in (eL, eR))}
+    alike = {1: "ccw", -1: "cw"}.get(corners.pop()) if len(corners) == 1 else None
+    if stable and cert.get("rotation") != {1: "ccw", -1: "cw", 0: "none"}[sense]:
+        return "rotation"
+    if not stable and cert.get("rotation") not in (None, alike):
         return "rotation"
     if stable == ("facet" in st):
         return "facet"
