@@ -161,16 +161,17 @@ bool find_witness(const Line_contact& L, Cone_facet f, const std::vector<Vec2>& 
   return false;
 }
 
-// A rational near x: its decimal with `digits` digits (rounded up or down), or x itself (digits 0; a double is a
-// rational) — short numbers for the certificate a person reads.
-Rational decimal_near(double x, int digits, bool up) {
-  const double scale = std::pow(10.0, digits), t = up ? std::ceil(x * scale) : std::floor(x * scale);
-  if (digits == 0 || !(std::abs(t) < 9e15)) return Rational(x);  // (x finite: the callers' guard)
-  Integer den;
-  mpz_ui_pow_ui(den.get_mpz_t(), 10, static_cast<unsigned long>(digits));
-  Rational r(Integer(t), den);  // (|t| < 2⁵³ for the supports read: a double's integer is exact)
-  r.canonicalize();
-  return r;
+// x rounded outward to `digits` decimals (up or down): short numbers for the certificate a person reads
+// (the tip line's bounds, a dual proposed in doubles — a double is a rational).
+Rational outward(const Rational& x, int digits, bool up) {
+  Integer scale, r;
+  mpz_ui_pow_ui(scale.get_mpz_t(), 10, static_cast<unsigned long>(digits));
+  const Integer t = x.get_num() * scale;
+  if (up) mpz_cdiv_q(r.get_mpz_t(), t.get_mpz_t(), x.get_den().get_mpz_t());
+  else mpz_fdiv_q(r.get_mpz_t(), t.get_mpz_t(), x.get_den().get_mpz_t());
+  Rational out(r, scale);
+  out.canonicalize();
+  return out;
 }
 
 // [PU-3 §7] A finite S (points only): the LP max Σ w_i g_i over w ≥ 0, Σ w_i = 1, Σ w_i (x_i − c) = 0 has the dual
@@ -206,7 +207,8 @@ bool find_dual(const Line_contact& L, Cone_facet f, const std::vector<Vec2>& S, 
       }
   if (!(best < -1e-12) || !std::isfinite(by[0]) || !std::isfinite(by[1]) || !std::isfinite(by[2])) return false;
   for (int digits : {6, 12, 0}) {
-    y = {decimal_near(by[0] / 2, digits, true), decimal_near(by[1], digits, false), decimal_near(by[2], digits, false)};
+    const auto near = [&](double x, bool up) { return digits == 0 ? Rational(x) : outward(Rational(x), digits, up); };
+    y = {near(by[0] / 2, true), near(by[1], false), near(by[2], false)};
     if (sgn(y[0]) >= 0) continue;
     for (int b : {64, 128}) {
       bool all = true;
@@ -285,18 +287,6 @@ Prepared prepare(const Support_model& model, const Pusher& pusher) {
   }
   for (const Vec2& x : P.vertices) P.R2 = std::max(P.R2, dot(minus(x, *P.c), minus(x, *P.c)));
   return P;
-}
-
-// x rounded outward to `digits` decimals (up or down): the tip line's bounds as short numbers.
-Rational outward(const Rational& x, int digits, bool up) {
-  Integer scale, r;
-  mpz_ui_pow_ui(scale.get_mpz_t(), 10, static_cast<unsigned long>(digits));
-  const Integer t = x.get_num() * scale;
-  if (up) mpz_cdiv_q(r.get_mpz_t(), t.get_mpz_t(), x.get_den().get_mpz_t());
-  else mpz_fdiv_q(r.get_mpz_t(), t.get_mpz_t(), x.get_den().get_mpz_t());
-  Rational out(r, scale);
-  out.canonicalize();
-  return out;
 }
 
 // PU-3 §5's correction E at the bounds R ≥ R, d ≤ |q − c|, α ≥ |c − e_t| (an upper bound of the true E: it grows with

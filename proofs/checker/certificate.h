@@ -288,5 +288,10 @@ void read_region_member(Reader& r, std::string_view key, Certificate& c);  // gr
 void check_grasp_regions(const Certificate& c, const Scene& scene, const Limits& lim);  // grasp_regions.cpp (§3.6)
 void read_push_member(Reader& r, std::string_view key, Certificate& c);  // push.cpp (§8): a member
 void check_push(const Certificate& c, const Scene& scene, const Limits& lim);  // push.cpp (§8)
+void read_line_push_member(Reader& r, std::string_view key, Push_part& p);  // stable_push.cpp (§8.3): "stable", "region"
+void check_line_push(const Push_part& p, const Scene& scene, const Limits& lim);  // stable_push.cpp (§8.3)
+// lo <= sqrt(s) <= hi for a rational s >= 0, at `bits` (push.cpp; the engine's precision for the same bits)
+void sqrt_bounds(const Q& s, std::size_t bits, Q& lo, Q& hi);
+void read_dual(Reader& r, Q (&out)[3]);  // push.cpp: an LP dual [y0, yx, yy]
 
 }  // namespace wrenchkit_checker::detail
