@@ -193,6 +193,11 @@ const Option kPushRegion{"region", nullptr,
                          "a line pusher: also its stable region — the rotation centres of each sense certified stable "
                          "for every distribution (half-planes and polygons), and the stable translations",
                          [](Options& o, S, S) { o.push.region = true; }};
+const Option kPushLocus{"locus", nullptr,
+                        "a point pusher: also where the body may turn about — an outer bound of the rotation centres "
+                        "over every distribution, per sense and contact mode (half-planes and polygons), and the slowest "
+                        "it can turn",
+                        [](Options& o, S, S) { o.push.locus = true; }};
 const Option kTolerance{"tolerance", "EPS",
                         "the limit surface's certified relative error 1/lambda - 1 <= EPS (EPS > 0, exact: 0.01, "
                         "1/100, 1e-3)",
@@ -676,7 +681,7 @@ std::vector<Command> make_table() {
               with_help(kMode, "exact or hybrid (the default): the votes in rationals, with the certificate; float: the "
                                "float twin's certified signs (a support of points with every force given), no "
                                "certificate, exit 3 when a sign is within its error bound"),
-              kPushContact, kPushRegion,
+              kPushContact, kPushRegion, kPushLocus,
               with_help(kTolerance, "with --contact: the sticking rotation rate's relative bracket width (default 1e-12)"),
               with_help(kCertificate, "write the certificate to FILE (checked first)")},
              kLimits}),

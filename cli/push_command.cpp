@@ -26,6 +26,84 @@ std::string vote_sentence(const Push_vote& v) {
   return "passes through the centre of friction";
 }
 
+// The rotation centres over every distribution (PU-4): per sense the three pieces' half-planes and polygons.
+void write_locus(Json_writer& w, const Push_locus& g) {
+  w.key("locus");
+  if (!g.friction_centre) {
+    w.object().member("why", g.why).end_object();
+    return;
+  }
+  w.object().member("R2", g.R2).member("R_hi", g.R_hi);
+  if (g.T) w.member("alpha_hi", g.alpha_hi).member("T", *g.T);
+  for (int k = 0; k < 2; ++k) {
+    w.key(k == 0 ? "ccw" : "cw");
+    if (!g.side[k].possible) {
+      w.null();
+      continue;
+    }
+    w.array();
+    for (const Locus_piece& piece : g.side[k].pieces) {
+      w.object().member("mode", locus_mode_name(piece.mode)).key("halfplanes").array();
+      for (const Locus_halfplane& h : piece.halfplanes) {
+        w.object().member("why", locus_bound_name(h.why));
+        w.key("a").array().rational(h.h.a.x).rational(h.h.a.y).end_array().member("b", h.h.b).end_object();
+      }
+      w.end_array().member("bounded", piece.bounded).key("polygon").array();
+      std::vector<Rational> flat;
+      for (const Vec2& v : piece.polygon) {
+        w.array().rational(v.x).rational(v.y).end_array();
+        flat.push_back(v.x), flat.push_back(v.y);
+      }
+      w.end_array();
+      write_approx(w, "polygon", flat);
+      w.end_object();
+    }
+    w.end_array();
+  }
+  w.key("box").array();
+  for (const Vec2& v : g.box) w.array().rational(v.x).rational(v.y).end_array();
+  w.end_array();
+  if (g.arm_hi) {
+    w.member("arm_hi", *g.arm_hi);
+    write_approx(w, "arm_hi", {*g.arm_hi});
+  } else {
+    w.member("arm_why", g.arm_why);
+  }
+  w.end_object();
+}
+
+std::string locus_text(const Push_locus& g) {
+  std::ostringstream s;
+  if (!g.friction_centre) return "rotation centres: not answered — " + g.why + "\n";
+  s << "rotation centres over every distribution (an outer bound: the body turns about a point of these pieces";
+  if (g.T) s << "; tip line T = " << number_text(*g.T);
+  s << "):\n";
+  for (int k = 0; k < 2; ++k) {
+    const char* sense = k == 0 ? "ccw" : "cw";
+    if (!g.side[k].possible) {
+      s << "  " << sense << ": none (the rotation is certain)\n";
+      continue;
+    }
+    for (const Locus_piece& piece : g.side[k].pieces) {
+      s << "  " << sense << ", " << locus_mode_name(piece.mode) << ": ";
+      if (piece.polygon.empty()) {
+        s << (piece.bounded ? "none" : "none within the box") << "\n";
+        continue;
+      }
+      s << (piece.bounded ? "" : "unbounded; within the box ")
+        << (piece.polygon.size() == 1 ? "the point" : piece.polygon.size() == 2 ? "the segment" : "the polygon");
+      for (const Vec2& v : piece.polygon) s << " (" << decimal_text(v.x, 6) << ", " << decimal_text(v.y, 6) << ")";
+      s << "\n";
+    }
+  }
+  if (g.arm_hi)
+    s << "  slowest turn: the centre is within " << number_text(*g.arm_hi) << " of the pusher's normal line — the body "
+      << "turns at least 1 radian per " << number_text(*g.arm_hi) << " the pusher advances along its normal\n";
+  else
+    s << "  slowest turn: not bounded — " << g.arm_why << "\n";
+  return s.str();
+}
+
 }  // namespace
 
 void write_push(Json_writer& w, const Push_item& r) {
@@ -155,6 +233,7 @@ void write_push(Json_writer& w, const Push_item& r) {
     if (c.mode == Push_mode::undecided) w.member("why", c.why);
     w.end_object();
   }
+  if (a.locus) write_locus(w, *a.locus);
   if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
 }
 
@@ -302,6 +381,7 @@ std::string push_human(const Push_item& r, const std::string& source) {
       }
     }
   }
+  if (a.locus) s << locus_text(*a.locus);
   if (!r.certificate.empty()) s << "certificate accepted by the independent checker (exact arithmetic)\n";
   return s.str();
 }

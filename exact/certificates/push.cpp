@@ -100,6 +100,27 @@ std::string push_certificate(const Push_answer& a) {
     }
     w.end_object();
   }
+  if (a.locus && a.locus->friction_centre) {  // §8.4: the rotation centres' pieces (their half-planes are the scene's)
+    const Push_locus& g = *a.locus;
+    w.key("locus").object().member("R_hi", g.R_hi);
+    if (g.T) w.member("alpha_hi", g.alpha_hi).member("T", *g.T);
+    for (int k = 0; k < 2; ++k) {
+      w.key(k == 0 ? "ccw" : "cw");
+      if (!g.side[k].possible) {
+        w.null();
+        continue;
+      }
+      w.array();
+      for (const Locus_piece& piece : g.side[k].pieces) {
+        w.object().member("mode", locus_mode_name(piece.mode)).member("bounded", piece.bounded).key("polygon").array();
+        for (const Vec2& x : piece.polygon) w.array().rational(x.x).rational(x.y).end_array();
+        w.end_array().end_object();
+      }
+      w.end_array();
+    }
+    if (g.arm_hi) w.member("arm_hi", *g.arm_hi);
+    w.end_object();
+  }
   return w.end_object().take();
 }
 

@@ -18,6 +18,9 @@ Push_item answer_push(std::string_view text, std::string_view source, const Requ
     if (query.region && !r.scene.pusher->line())
       throw Input_error("--region: the stable region is a line pusher's (\"segment\"); a point pusher's contact mode "
                         "is --contact");
+    if (query.locus && r.scene.pusher->line())
+      throw Input_error("--locus: the rotation centres are answered for a point pusher; a line pusher's are its stable "
+                        "region (--region)");
     if (r.scene.pusher->line()) {  // a line contact (PU-3): is its motion stable — exact in every mode
       if (query.contact)
         throw Input_error("--contact: the contact mode is answered for a point pusher; a line pusher (\"segment\") "
@@ -34,6 +37,11 @@ Push_item answer_push(std::string_view text, std::string_view source, const Requ
     const Mode mode = request.mode == Mode::float_only ? Mode::float_only : request.certify ? Mode::exact : request.mode;
     r.push = decide_push(model, *r.scene.pusher, mode);
     if (query.contact) r.push.contact = push_contact_mode(model, *r.scene.pusher, query.tolerance);
+    if (query.locus) {  // the senses the (certified) rotation leaves
+      const Rotation rot = r.push.rotation;
+      r.push.locus = push_locus(model, *r.scene.pusher,
+                                {rot == Rotation::ccw || rot == Rotation::undecided, rot == Rotation::cw || rot == Rotation::undecided});
+    }
     if (!request.certify || r.push.by_twin || r.push.rotation == Rotation::undecided) return;
     r.certificate = push_certificate(r.push);
     check_into(r, text, {r.certificate}, request);

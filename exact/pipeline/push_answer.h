@@ -16,6 +16,7 @@ namespace wrenchkit {
 struct Push_query {
   bool contact = false;
   bool region = false;  // a line pusher's stable region (PU-3 §6)
+  bool locus = false;   // a point pusher's rotation centres over every distribution and its slowest turn (PU-4)
   Rational tolerance = Rational(1, 1000000000000);
 };
 

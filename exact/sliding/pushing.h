@@ -30,6 +30,7 @@
 #include "core/mode.h"
 #include "exact/sliding/motion.h"
 #include "exact/sliding/precise_motion.h"
+#include "exact/sliding/push_locus.h"
 #include "exact/sliding/stable_push.h"
 
 namespace wrenchkit {
@@ -126,6 +127,7 @@ struct Push_answer {
   bool votes_known = true;  // false: the float twin could not decide, or a line pusher (no votes), `votes` is empty
   std::optional<Stable_push> stable;  // a line pusher (PU-3): is its motion stable
   std::optional<Stable_region> region;  // a line pusher's stable region, when asked (PU-3 §6)
+  std::optional<Push_locus> locus;  // a point pusher's rotation centres over every distribution, when asked (PU-4)
 };
 
 // The rotation sense of the body pushed by `pusher` on `model`'s support. Throws Input_error when some distribution

@@ -161,6 +161,8 @@ bool find_witness(const Line_contact& L, Cone_facet f, const std::vector<Vec2>& 
   return false;
 }
 
+}  // namespace
+
 // x rounded outward to `digits` decimals (up or down): short numbers for the certificate a person reads
 // (the tip line's bounds, a dual proposed in doubles — a double is a rational).
 Rational outward(const Rational& x, int digits, bool up) {
@@ -173,6 +175,8 @@ Rational outward(const Rational& x, int digits, bool up) {
   out.canonicalize();
   return out;
 }
+
+namespace {
 
 // [PU-3 §7] A finite S (points only): the LP max Σ w_i g_i over w ≥ 0, Σ w_i = 1, Σ w_i (x_i − c) = 0 has the dual
 // min y0 over y0 + y·(x_i − c) ≥ g_i (g_i = h(x_i)/|x_i − q|). A dual point with y0 < 0 proves the facet holds for every
@@ -227,8 +231,7 @@ bool find_dual(const Line_contact& L, Cone_facet f, const std::vector<Vec2>& S, 
   return false;
 }
 
-// The line contact, S's vertices (the support's places with μ > 0), the centre of friction when it is one point for
-// every distribution (else `why`), and R² = max |x − c|² over S's vertices: what the query and the region share.
+// What the query and the region share: the line contact and the support's friction disc.
 struct Prepared {
   Line_contact L;
   std::vector<Vec2> vertices;
@@ -238,7 +241,6 @@ struct Prepared {
 };
 
 Prepared prepare(const Support_model& model, const Pusher& pusher) {
-  const Support& s = model.support();
   const Contact& pc = pusher.contact;
   Prepared P;
   Line_contact& L = P.L;
@@ -253,6 +255,23 @@ Prepared prepare(const Support_model& model, const Pusher& pusher) {
   L.sigma = sgn(pusher.omega);
   const Vec2 m{(L.end[0].x + L.end[1].x) / 2, (L.end[0].y + L.end[1].y) / 2};
   if (L.sigma != 0) L.q = rotation_centre(m, pusher.velocity, pusher.omega);
+  Friction_disc d = friction_disc(model);
+  P.vertices = std::move(d.vertices), P.c = d.c, P.why = std::move(d.why), P.R2 = d.R2;
+  return P;
+}
+
+// PU-3 §5's correction E at the bounds R ≥ R, d ≤ |q − c|, α ≥ |c − e_t| (an upper bound of the true E: it grows with
+// R and α and falls with d). Precondition: d > R ≥ 0.
+Rational tip_correction(const Rational& R, const Rational& d, const Rational& al) {
+  const Rational K = R * (2 * al + R) / (2 * d - R);
+  return K * K * (2 * d + R) / (8 * d) + al * R * R * R / (d * (2 * d - R));
+}
+
+}  // namespace
+
+Friction_disc friction_disc(const Support_model& model) {
+  const Support& s = model.support();
+  Friction_disc P;
   std::set<Rational> mus;
   for (const Support_point& p : s.points) {
     mus.insert(s.mu_of(p));
@@ -282,21 +301,38 @@ Prepared prepare(const Support_model& model, const Pusher& pusher) {
     P.c = Vec2{mo.x / W, mo.y / W};
   } else {
     P.why = "the centre of friction moves with the distribution (the support's coefficients differ and some forces are "
-            "not given): stable pushing is answered about one centre of friction";
+            "not given): answered about one centre of friction only";
     return P;
   }
   for (const Vec2& x : P.vertices) P.R2 = std::max(P.R2, dot(minus(x, *P.c), minus(x, *P.c)));
   return P;
 }
 
-// PU-3 §5's correction E at the bounds R ≥ R, d ≤ |q − c|, α ≥ |c − e_t| (an upper bound of the true E: it grows with
-// R and α and falls with d). Precondition: d > R ≥ 0.
-Rational tip_correction(const Rational& R, const Rational& d, const Rational& al) {
-  const Rational K = R * (2 * al + R) / (2 * d - R);
-  return K * K * (2 * d + R) / (8 * d) + al * R * R * R / (d * (2 * d - R));
+std::optional<Rational> tip_line_T(const Rational& R2, const Rational& R_hi, const Rational& al) {
+  const auto holds = [&](const Rational& T) {
+    const Rational d = T / al;
+    return d > R_hi && T >= R2 + tip_correction(R_hi, d, al);
+  };
+  // E falls as T grows: bisect in doubles, then certify a short decimal a little above the fixed point, doubling the
+  // margin until it holds
+  const double Rd = R_hi.get_d(), ad = al.get_d(), R2d = R2.get_d();
+  const auto f = [&](double T) {
+    const double d = T / ad, K = Rd * (2 * ad + Rd) / (2 * d - Rd);
+    return T - R2d - (K * K * (2 * d + Rd) / (8 * d) + ad * Rd * Rd * Rd / (d * (2 * d - Rd)));
+  };
+  double tlo = ad * Rd * (1 + 1e-12), thi = std::max(tlo * 2, R2d + 2 * ad * Rd + 8 * (ad + Rd) * (ad + Rd) + 1);
+  for (int it = 0; it < 200 && f(thi) < 0; ++it) thi *= 2;
+  for (int it = 0; it < 100; ++it) (f((tlo + thi) / 2) < 0 ? tlo : thi) = (tlo + thi) / 2;
+  for (double margin = 1e-9; margin < 1e6 && std::isfinite(thi); margin *= 16) {
+    const Rational T = outward(Rational(thi * (1 + margin) + margin), 6, true);
+    if (holds(T)) return T;
+  }
+  // (the doubles out of range: the exact value a step at a time)
+  Rational T = R2 + al * R_hi + 1;
+  for (int it = 0; it < 64 && !holds(T); ++it) T *= 2;
+  if (holds(T)) return T;
+  return std::nullopt;
 }
-
-}  // namespace
 
 Stable_push decide_stable_push(const Support_model& model, const Pusher& pusher) {
   Stable_push a;
@@ -459,8 +495,6 @@ Stable_push decide_stable_push(const Support_model& model, const Pusher& pusher)
   return a;
 }
 
-namespace {
-
 // The convex polygon `poly` (counter-clockwise) cut by a·q ≤ b (Sutherland–Hodgman, exact).
 std::vector<Vec2> clip(const std::vector<Vec2>& poly, const Halfplane& h) {
   std::vector<Vec2> out;
@@ -477,7 +511,6 @@ std::vector<Vec2> clip(const std::vector<Vec2>& poly, const Halfplane& h) {
   return out;
 }
 
-}  // namespace
 
 Stable_region stable_region(const Support_model& model, const Pusher& pusher) {
   Stable_region g;
@@ -513,38 +546,13 @@ Stable_region stable_region(const Support_model& model, const Pusher& pusher) {
     if (is_zero(a)) continue;  // the tip end at c: no tip line
     side.possible = true;
     side.alpha_hi = outward(sqrt_bracket(dot(a, a), 64).second, 6, true);
-    // T: the least with T/α_hi > R_hi and T ≥ R² + E(T/α_hi) (E falls as T grows: bisect in doubles, then certify a
-    // short decimal a little above it, doubling the margin until it holds)
-    const Rational& al = side.alpha_hi;
-    const auto holds = [&](const Rational& T) {
-      const Rational d = T / al;
-      return d > g.R_hi && T >= g.R2 + tip_correction(g.R_hi, d, al);
-    };
-    const double Rd = g.R_hi.get_d(), ad = al.get_d(), R2d = g.R2.get_d();
-    const auto f = [&](double T) {
-      const double d = T / ad, K = Rd * (2 * ad + Rd) / (2 * d - Rd);
-      return T - R2d - (K * K * (2 * d + Rd) / (8 * d) + ad * Rd * Rd * Rd / (d * (2 * d - Rd)));
-    };
-    double tlo = ad * Rd * (1 + 1e-12), thi = std::max(tlo * 2, R2d + 2 * ad * Rd + 8 * (ad + Rd) * (ad + Rd) + 1);
-    for (int it = 0; it < 200 && f(thi) < 0; ++it) thi *= 2;
-    for (int it = 0; it < 100; ++it) (f((tlo + thi) / 2) < 0 ? tlo : thi) = (tlo + thi) / 2;
-    side.T = Rational(0);
-    for (double margin = 1e-9; margin < 1e6 && std::isfinite(thi); margin *= 16) {
-      const Rational T = outward(Rational(thi * (1 + margin) + margin), 6, true);
-      if (holds(T)) {
-        side.T = T;
-        break;
-      }
+    // T: the least short decimal with T/α_hi > R_hi and T ≥ R² + E(T/α_hi) (PU-3 §6)
+    const std::optional<Rational> T = tip_line_T(g.R2, g.R_hi, side.alpha_hi);
+    if (!T) {
+      side.possible = false;
+      continue;
     }
-    if (side.T == 0) {  // (the doubles out of range: the exact value a step at a time)
-      Rational T = g.R2 + al * g.R_hi + 1;
-      for (int it = 0; it < 64 && !holds(T); ++it) T *= 2;
-      if (!holds(T)) {
-        side.possible = false;
-        continue;
-      }
-      side.T = T;
-    }
+    side.T = *T;
     side.halfplanes[2 + tip] = {Vec2{-a.x, -a.y}, -(side.T + dot(a, c))};  // (c − e_t)·(q − c) ≥ T
     std::vector<Vec2> poly = {g.box[0], {g.box[1].x, g.box[0].y}, g.box[1], {g.box[0].x, g.box[1].y}};
     for (const Halfplane& h : side.halfplanes) poly = clip(poly, h);

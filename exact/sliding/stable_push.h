@@ -99,4 +99,28 @@ struct Stable_region {
 };
 Stable_region stable_region(const Support_model& model, const Pusher& pusher);
 
+// What PU-3's bounds need of the support, shared with a point pusher's locus (push_locus.h): S's vertices (the support
+// points and region rings with μ > 0), the centre of friction c when it is one point for every distribution (every
+// force given, or one μ: else `why`), and R² = max |x − c|² over S's vertices. Throws Input_error when nothing under
+// the body has friction.
+struct Friction_disc {
+  std::vector<Vec2> vertices;
+  std::optional<Vec2> c;
+  std::string why;
+  Rational R2;
+};
+Friction_disc friction_disc(const Support_model& model);
+
+// [PU-3 §5–6] The corrected tip line's offset: the least short decimal T with T/α_hi > R_hi and T ≥ R² +
+// E(T/α_hi, α_hi, R_hi). For a point y with |c − y| ≤ α_hi, every rotation centre q with (c − y)·(q − c) > T has the
+// load's moment about y strictly of the sense's opposite sign (§5) — the load's line misses y — for every distribution
+// with centre c on B(c, R), R ≤ R_hi. None when no T is found (then nothing is certified).
+std::optional<Rational> tip_line_T(const Rational& R2, const Rational& R_hi, const Rational& alpha_hi);
+
+// x rounded outward to `digits` decimals (up or down): short numbers for a certificate a person reads.
+Rational outward(const Rational& x, int digits, bool up);
+
+// The convex polygon `poly` (counter-clockwise) cut by h (Sutherland–Hodgman, exact).
+std::vector<Vec2> clip(const std::vector<Vec2>& poly, const Halfplane& h);
+
 }  // namespace wrenchkit

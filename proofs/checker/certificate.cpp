@@ -257,7 +257,7 @@ Certificate read_certificate(Reader& r) {
     } else if (key == "fingers" || key == "mu" || key == "edges" || key == "pairs" || key == "triples") {
       read_region_member(r, key, c);
     } else if (key == "rotation" || key == "friction" || key == "votes" || key == "center" || key == "turns" ||
-               key == "contact" || key == "stable" || key == "region") {
+               key == "contact" || key == "stable" || key == "region" || key == "locus") {
       read_push_member(r, key, c);
     } else if (key == "holds") {
       if (r.peek() == Kind::string) {  // property "hold" only (checked once the property is known)
@@ -402,7 +402,7 @@ void check_keys(const Certificate& c) {
   };
   need("wrenchkit_certificate"), need("property");
   static const char* const push_keys[] = {"rotation", "friction", "votes", "center", "turns", "contact", "stable",
-                                          "region"};
+                                          "region", "locus"};
   if ((c.version == 6) != c.push)
     throw Failure{c.push ? "wrenchkit_certificate: property \"push\" is format 6 (expected the integer 6)"
                          : "wrenchkit_certificate: format 6 is property \"push\" only"};

@@ -81,7 +81,7 @@ class Key_set {
                                              "constant_beyond", "limit_twist", "scaling", "torque_radius_squared",
                                              "torque_scale_error", "fingers", "mu", "edges", "pairs", "triples",
                                              "rotation", "friction", "votes", "center", "turns",
-                                             "contact", "stable", "region"};
+                                             "contact", "stable", "region", "locus"};
     for (int i = 0; i < static_cast<int>(sizeof known / sizeof known[0]); ++i)
       if (known[i] == key) return i;
     return -1;
@@ -217,6 +217,16 @@ struct Push_part {
   // translations' extreme rays
   bool has_region = false, has_side[2] = {false, false}, has_translations = false;
   Q region_R_hi, side_alpha_hi[2], side_T[2], translations[2][2];
+  // "locus" (§8.4): a point pusher's rotation centres — the bounds, per sense (ccw, cw) null or its three pieces
+  // (a contact mode, bounded or not, a polygon), and the arm's bound
+  struct Piece {
+    std::string_view mode;
+    bool bounded = false;
+    std::vector<std::array<Q, 2>> polygon;
+  };
+  bool has_locus = false, has_tip = false, has_arm = false, has_sense[2] = {false, false};
+  Q locus_R_hi, locus_alpha_hi, locus_T, arm_hi;
+  std::vector<Piece> pieces[2];
 };
 
 struct Certificate {
@@ -290,6 +300,13 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c);  // push
 void check_push(const Certificate& c, const Scene& scene, const Limits& lim);  // push.cpp (§8)
 void read_line_push_member(Reader& r, std::string_view key, Push_part& p);  // stable_push.cpp (§8.3): "stable", "region"
 void check_line_push(const Push_part& p, const Scene& scene, const Limits& lim);  // stable_push.cpp (§8.3)
+// stable_push.cpp: the centre of friction c (one for every distribution, else a Failure under `path`), S's vertices
+// (the places with friction), and R² = max |x − c|² over them; PU-3 §5's correction E at R, d, alpha (an upper bound
+// of the true E when R, alpha are upper bounds and d a lower bound: it grows with R and alpha, falls with d).
+Q friction_disc(const Scene& scene, const Limits& lim, const std::string& path, Q (&c)[2], std::vector<std::array<Q, 2>>& S);
+Q tip_correction(const Q& R, const Q& d, const Q& alpha);
+void read_locus_member(Reader& r, Push_part& p);  // push_locus.cpp (§8.4): "locus"
+void check_locus(const Push_part& p, const Scene& scene, const Limits& lim);  // push_locus.cpp (§8.4)
 // lo <= sqrt(s) <= hi for a rational s >= 0, at `bits` (push.cpp; the engine's precision for the same bits)
 void sqrt_bounds(const Q& s, std::size_t bits, Q& lo, Q& hi);
 void read_dual(Reader& r, Q (&out)[3]);  // push.cpp: an LP dual [y0, yx, yy]

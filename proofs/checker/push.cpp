@@ -444,6 +444,8 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c) {
     if (p.has_stick_pivot && !sliding && !(seen & 8)) r.fail("a sticking pivot needs both \"pivot\" and \"force\"");
   } else if (key == "region" || key == "stable") {  // §8.3 (stable_push.cpp)
     read_line_push_member(r, key, p);
+  } else if (key == "locus") {  // §8.4 (push_locus.cpp)
+    read_locus_member(r, p);
   } else {  // turns
     p.has_turns = true;
     begin_object(r, "expected an object {\"ccw\": [forces], \"cw\": [forces]}");
@@ -554,6 +556,7 @@ void check_push(const Certificate& c, const Scene& scene, const Limits& lim) {
     }
   }
   if (p.has_contact) check_contact(p, s, lim, {px, py}, {nx, ny}, mu, v);
+  if (p.has_locus) check_locus(p, scene, lim);  // (on the rotation claimed: the rest of this check proves it)
   if (p.rotation == "depends") {
     if (!p.has_turns) throw Failure{"missing required key \"turns\" (two distributions that turn the body apart)"};
     if (!p.votes.empty()) throw Failure{"key \"votes\" is not allowed when \"rotation\" is \"depends\""};

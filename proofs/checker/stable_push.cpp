@@ -130,25 +130,15 @@ void read_line_push_member(Reader& r, std::string_view key, Push_part& p) {
 // a term h(x) whose weighted sum over a distribution, sum w h(x)/|x - q|, is > 0 when the load leaves CF by it:
 // left edge sigma (x - q).eL, right edge -sigma (x - q).eR, end k -s_k sigma (x - e_k).(x - q), where s_k = +1 for
 // the end p1 with (p2 - p1) x n > 0 (its moment must be >= 0), -1 for the other.
-void check_line_push(const Push_part& p, const Scene& scene, const Limits& lim) {
-  const Pusher& pu = *scene.pusher;
-  const Support& s = *scene.support;
-  if (!p.has_stable) throw Failure{"stable: a line pusher's certificate claims whether its motion is stable (§8.3)"};
-  if (p.has_friction || !p.votes.empty() || p.has_turns || p.has_contact)
-    throw Failure{"a line pusher's certificate has \"rotation\", \"center\" and \"stable\" only"};
-  const std::vector<Q> pn = contact_numbers(pu.contact, lim);  // x, y, nx, ny, mu
-  const Q e[2][2] = {{pn[0], pn[1]}, {pu.end[0], pu.end[1]}};
-  const Q n[2] = {pn[2], pn[3]}, &mu = pn[4];
-  const Q(&v)[2] = pu.velocity;
-  const Q ax = e[1][0] - e[0][0], ay = e[1][1] - e[0][1];
-  if ((sgn(ax) == 0 && sgn(ay) == 0) || sgn(Q(ax * n[0] + ay * n[1])) != 0)
-    throw Failure{"pusher: a line contact has two ends and a normal perpendicular to its segment"};
-  if (sgn(Q(v[0] * n[0] + v[1] * n[1])) <= 0) throw Failure{"pusher.velocity: does not push into the body (v . n <= 0)"};
-  const int s_end[2] = {sgn(cross(ax, ay, n[0], n[1])) > 0 ? 1 : -1, sgn(cross(ax, ay, n[0], n[1])) > 0 ? -1 : 1};
-  const Q eL[2] = {n[0] - mu * n[1], n[1] + mu * n[0]}, eR[2] = {n[0] + mu * n[1], n[1] - mu * n[0]};
+Q tip_correction(const Q& R, const Q& dl, const Q& al) {
+  const Q K = R * (2 * al + R) / (2 * dl - R);
+  return K * K * (2 * dl + R) / (8 * dl) + al * R * R * R / (dl * (2 * dl - R));
+}
+
+Q friction_disc(const Scene& scene, const Limits& lim, const std::string& path, Q (&c)[2], std::vector<std::array<Q, 2>>& S) {
   // The centre of friction, one for every distribution: every force given, or one coefficient > 0 (the centre of
   // pressure); and S's vertices: the support points and region rings with mu > 0.
-  std::vector<std::array<Q, 2>> S;
+  const Support& s = *scene.support;
   std::vector<Q> mus;
   Q m[2] = {0, 0}, d = 0;
   for (const Support_point& sp : s.points) {
@@ -165,29 +155,45 @@ void check_line_push(const Push_part& p, const Scene& scene, const Limits& lim) 
         for (const P2& x : ring) S.push_back({x.x, x.y});
     m[0] += g.mu * g.M[0], m[1] += g.mu * g.M[1], d += g.mu * g.W;
   }
-  Q c[2];
   if (s.unknown == 0) {
-    if (sgn(d) <= 0) throw Failure{"stable: no friction under the body"};
+    if (sgn(d) <= 0) throw Failure{path + ": no friction under the body"};
     c[0] = m[0] / d, c[1] = m[1] / d;
   } else {
     for (const Q& x : mus)
       if (x != mus.front() || sgn(x) <= 0)
-        throw Failure{"stable: the support's coefficients differ (or are 0) and some force is not given: the centre of "
-                      "friction moves with the distribution"};
+        throw Failure{path + ": the support's coefficients differ (or are 0) and some force is not given: the centre "
+                      "of friction moves with the distribution"};
     c[0] = s.c[0], c[1] = s.c[1];
   }
-  if (p.center[0] != c[0] || p.center[1] != c[1])
-    throw Failure{"center: " + show(p.center[0], p.center[1]) + " is not the centre of friction " + show(c[0], c[1])};
   Q R2 = 0;
   for (const auto& x : S) R2 = std::max(R2, Q((x[0] - c[0]) * (x[0] - c[0]) + (x[1] - c[1]) * (x[1] - c[1])));
+  return R2;
+}
+
+void check_line_push(const Push_part& p, const Scene& scene, const Limits& lim) {
+  const Pusher& pu = *scene.pusher;
+  const Support& s = *scene.support;
+  if (!p.has_stable) throw Failure{"stable: a line pusher's certificate claims whether its motion is stable (§8.3)"};
+  if (p.has_friction || !p.votes.empty() || p.has_turns || p.has_contact || p.has_locus)
+    throw Failure{"a line pusher's certificate has \"rotation\", \"center\" and \"stable\" only"};
+  const std::vector<Q> pn = contact_numbers(pu.contact, lim);  // x, y, nx, ny, mu
+  const Q e[2][2] = {{pn[0], pn[1]}, {pu.end[0], pu.end[1]}};
+  const Q n[2] = {pn[2], pn[3]}, &mu = pn[4];
+  const Q(&v)[2] = pu.velocity;
+  const Q ax = e[1][0] - e[0][0], ay = e[1][1] - e[0][1];
+  if ((sgn(ax) == 0 && sgn(ay) == 0) || sgn(Q(ax * n[0] + ay * n[1])) != 0)
+    throw Failure{"pusher: a line contact has two ends and a normal perpendicular to its segment"};
+  if (sgn(Q(v[0] * n[0] + v[1] * n[1])) <= 0) throw Failure{"pusher.velocity: does not push into the body (v . n <= 0)"};
+  const int s_end[2] = {sgn(cross(ax, ay, n[0], n[1])) > 0 ? 1 : -1, sgn(cross(ax, ay, n[0], n[1])) > 0 ? -1 : 1};
+  const Q eL[2] = {n[0] - mu * n[1], n[1] + mu * n[0]}, eR[2] = {n[0] + mu * n[1], n[1] - mu * n[0]};
+  std::vector<std::array<Q, 2>> S;
+  Q c[2];
+  const Q R2 = friction_disc(scene, lim, "stable", c, S);
+  if (p.center[0] != c[0] || p.center[1] != c[1])
+    throw Failure{"center: " + show(p.center[0], p.center[1]) + " is not the centre of friction " + show(c[0], c[1])};
   if (p.R2 != R2) throw Failure{"stable.R2: " + show(p.R2) + " is not the largest squared distance " + show(R2) +
                                 " from the centre of friction to the support's places with friction"};
   static const char* const facets[4] = {"left edge", "right edge", "end 0", "end 1"};
-  // PU-3 §5's correction E at R_hi, d_lo, alpha_hi (grows with R and alpha, falls with d)
-  const auto correction = [](const Q& R, const Q& dl, const Q& al) {
-    const Q K = R * (2 * al + R) / (2 * dl - R);
-    return Q(K * K * (2 * dl + R) / (8 * dl) + al * R * R * R / (dl * (2 * dl - R)));
-  };
   if (p.has_region) {  // the stable region: each sense's tip line a.(q - c) >= T holds §5 for every q in it
     const Q& R = p.region_R_hi;
     if (sgn(R) < 0 || R * R < R2) throw Failure{"region.R_hi: not an upper bound of R"};
@@ -198,8 +204,8 @@ void check_line_push(const Push_part& p, const Scene& scene, const Limits& lim) 
       const std::string path = std::string("region.") + (k == 0 ? "ccw" : "cw");
       if (sgn(al) <= 0 || al * al < tx * tx + ty * ty) throw Failure{path + ".alpha_hi: not an upper bound of |c - end|"};
       if (sgn(T) <= 0 || T / al <= R) throw Failure{path + ".T: T/alpha_hi is not more than R_hi"};
-      if (T < R2 + correction(R, T / al, al))
-        throw Failure{path + ".T: " + show(T) + " is below R^2 + E(T/alpha_hi) = " + show(Q(R2 + correction(R, T / al, al))) +
+      if (T < R2 + tip_correction(R, T / al, al))
+        throw Failure{path + ".T: " + show(T) + " is below R^2 + E(T/alpha_hi) = " + show(Q(R2 + tip_correction(R, T / al, al))) +
                       " (the tip line's half-plane must hold PU-3 §5 at every point)"};
     }
     if (p.has_translations)
@@ -299,7 +305,7 @@ void check_line_push(const Push_part& p, const Scene& scene, const Limits& lim) 
     if (sgn(dl) < 0 || dl * dl > w2) throw Failure{"stable.d_lo: not a lower bound of |q - c|"};
     if (sgn(al) < 0 || al * al < tx * tx + ty * ty) throw Failure{"stable.alpha_hi: not an upper bound of |c - end|"};
     if (dl <= R) throw Failure{"stable.d_lo: not more than R_hi (the tip line's theorem needs |q - c| > R)"};
-    const Q E = correction(R, dl, al);
+    const Q E = tip_correction(R, dl, al);
     if (tx * wx + ty * wy < R2 + E)
       throw Failure{"stable: (c - end " + std::to_string(tip) + ") . (q - c) = " + show(Q(tx * wx + ty * wy)) +
                     " is below R^2 + E = " + show(Q(R2 + E)) + " (the corrected tip line, PU-3 §5)"};

@@ -1,0 +1,207 @@
+// [PU-4] Where a pushed body may turn about (exact/sliding/push_locus.h, proofs/notes/PU-4-rotation-centres.md): the
+// locus worked by hand, its certificate tampered with, and against the engine's own motion (PU-2) on random known
+// distributions: every rotation centre the contact mode finds lies in the piece of its sense and mode.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "exact/pipeline/push_answer.h"
+#include "exact/sliding/pushing.h"
+#include "tests/test_support.h"
+
+namespace wrenchkit {
+namespace {
+
+// The square [-1, 1]² on four legs of force 1, μ 1/2 (c = 0, R² = 2), pushed at (1/2, −1) with μ 1 along v.
+std::string square(const std::string& velocity, const std::string& forces = "1") {
+  return R"({"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]}, "support": {"mu": "1/2",
+    "points": [{"at": [-1, -1], "force": )" + forces + R"(}, {"at": [1, -1], "force": )" + forces + R"(},
+    {"at": [1, 1], "force": )" + forces + R"(}, {"at": [-1, 1], "force": )" + forces + R"(}]},
+    "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": 1, "velocity": )" + velocity + "}}";
+}
+
+Push_item locus_of(const std::string& text, bool contact = false) {
+  Push_query q;
+  q.locus = true;
+  q.contact = contact;
+  return answer_push(text, "test", Request{}, q);
+}
+
+bool holds(const Locus_piece& piece, double x, double y, double slack) {
+  for (const Locus_halfplane& h : piece.halfplanes)
+    if (h.h.a.x.get_d() * x + h.h.a.y.get_d() * y > h.h.b.get_d() + slack) return false;
+  return true;
+}
+
+// By hand (PU-4 §6): e₊ = (−1, 1), e₋ = (1, 1), a = c − p = (−1/2, 1). The bisector (1, −2)·q ≤ 5/4, the contact
+// advancing (ccw) q.x ≤ 1/2, the sticking line q.x + q.y = −1/2, the legs' extents min x·e₊ = −2, max x·e₋ = 2, the tip
+// line −q.x/2 + q.y ≤ T. On the sticking line the bisector stops at (1/12, −7/12) and the tip line at
+// q.x = −(2/3)(T + 1/2); the left and right facets (q.x ≤ 3/4, and 2 ≥ −1/2) do not cut. The votes say ccw (the edges
+// apart, v passes c on its left): no cw piece. The uniform legs' own sticking centre (PU-2) is on that segment.
+TEST(PushLocus, TheSquareWorkedByHand) {
+  const Push_item r = locus_of(square("[1, 1]"), true);
+  ASSERT_EQ(r.status, Status::answered) << r.message;
+  ASSERT_TRUE(r.push.locus && r.push.locus->T);
+  const Push_locus& g = *r.push.locus;
+  EXPECT_EQ(r.push.rotation, Rotation::ccw);
+  EXPECT_FALSE(g.side[1].possible);
+  ASSERT_TRUE(g.side[0].possible);
+  const Locus_piece& stick = g.side[0].pieces[0];
+  EXPECT_TRUE(stick.bounded);
+  ASSERT_EQ(stick.polygon.size(), 2u);
+  const Rational T = *g.T, x0 = Rational(-2, 3) * (T + Rational(1, 2));
+  EXPECT_EQ(stick.polygon[0].x, x0);
+  EXPECT_EQ(stick.polygon[0].y, Rational(-1, 2) - x0);
+  EXPECT_EQ(stick.polygon[1].x, Rational(1, 12));
+  EXPECT_EQ(stick.polygon[1].y, Rational(-7, 12));
+  EXPECT_GT(T, 2);
+  EXPECT_LT(T, Rational(29100, 10000));  // R² + E at the fixed point: 2.9099…
+  // the sticking centre of the uniform legs: p + rot90(v)/ω
+  ASSERT_TRUE(r.push.contact);
+  EXPECT_EQ(r.push.contact->mode, Push_mode::sticks);
+  const Vec2 q = rotation_centre(r.push.at, r.push.velocity, r.push.contact->omega_lo);
+  EXPECT_TRUE(holds(stick, q.x.get_d(), q.y.get_d(), 1e-9));
+  // the arm: the farthest vertex from the normal line x = 1/2 over the three pieces
+  ASSERT_TRUE(g.arm_hi);
+  Rational H = 0;
+  for (const Locus_piece& piece : g.side[0].pieces)
+    for (const Vec2& v : piece.polygon) H = std::max(H, Rational(Rational(1, 2) - v.x));
+  EXPECT_GE(*g.arm_hi, H);
+  EXPECT_LT(*g.arm_hi, H + Rational(1, 100000));
+  EXPECT_FALSE(r.certificate.empty());
+
+  // pushed straight at the centre of friction (v = (−1/2, 1) through c): the sticking motion translates; the votes
+  // say "none" (an edge and the velocity through c? no: the velocity alone through c, the edges apart) — no piece
+  const Push_item t = locus_of(square("[\"-1/2\", 1]"));
+  ASSERT_EQ(t.status, Status::answered) << t.message;
+  EXPECT_EQ(t.push.rotation, Rotation::none);
+  EXPECT_FALSE(t.push.locus->side[0].possible);
+  EXPECT_FALSE(t.push.locus->side[1].possible);
+  EXPECT_FALSE(t.push.locus->arm_hi);
+}
+
+TEST(PushLocus, WhatItDoesNotAnswer) {
+  // a line pusher: its rotation centres are its stable region
+  const Push_item l = locus_of(R"({"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]},
+    "support": {"mu": "1/2", "points": [{"at": [-1, -1], "force": 1}, {"at": [1, 1], "force": 1}]},
+    "pusher": {"segment": [[0, -1], [1, -1]], "normal": [0, 1], "mu": 1, "velocity": [0, 1]}})");
+  EXPECT_EQ(l.status, Status::bad_input);
+  EXPECT_NE(l.message.find("--locus"), std::string::npos) << l.message;
+  // the centre of friction moves with the distribution: no locus, and why
+  const Push_item m = locus_of(R"({"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]},
+    "support": {"weight": 4, "pressure_center": [0, 0], "points": [{"at": [-1, 0], "mu": 1}, {"at": [1, 0], "mu": "1/10"},
+    {"at": [0, 1], "mu": "1/2"}, {"at": [0, -1], "mu": "1/2"}]},
+    "pusher": {"at": ["-1/10", -1], "normal": [0, 1], "velocity": [0, 1]}})");
+  ASSERT_EQ(m.status, Status::answered) << m.message;
+  ASSERT_TRUE(m.push.locus);
+  EXPECT_FALSE(m.push.locus->friction_centre);
+  EXPECT_NE(m.push.locus->why.find("moves with the distribution"), std::string::npos);
+}
+
+TEST(PushLocus, TamperedCertificatesAreRefused) {
+  const std::string s = square("[1, 1]");
+  const std::string c = locus_of(s).certificate;
+  ASSERT_TRUE(test::checker_accepts(s, c));
+  const auto refused = [&](const std::string& from, const std::string& to, const std::string& reason) {
+    EXPECT_TRUE(test::checker_refuses_edit(s, c, from, to, reason));
+  };
+  refused(R"(["1/2", "5/2"])", R"(["1/2", "2"])", "of the centres' bound is outside it");
+  refused(R"("arm_hi": "1886641/500000")", R"("arm_hi": "3")", "is below a possible centre's distance");
+  refused(R"("T": "2909923/1000000")", R"("T": "2")", "locus.T:");
+  refused(R"("R_hi": "707107/500000")", R"("R_hi": "1")", "locus.R_hi: not an upper bound");
+  refused(R"("alpha_hi": "559017/500000")", R"("alpha_hi": "1")", "locus.alpha_hi: not an upper bound");
+  refused(R"("cw": null)", R"("cw": null, "ccw": null)", "duplicate");
+  refused(R"("mode": "sticks")", R"("mode": "slides left")", "expected \"sticks\"");
+  refused(R"("alpha_hi": "559017/500000", "T": "2909923/1000000", )", "", "claimed bounded, but its half-planes recede");
+}
+
+// Against the engine's own motion (PU-2) on random known distributions (fixed seed): legs on a grid with random
+// forces, a pusher on the bottom edge with a random coefficient and velocity. Wherever the contact mode is decided
+// with its motion, the centre (midpoints of the certified brackets, in doubles) satisfies every half-plane of the
+// piece of its sense and mode (slack 1e-7), is within the arm of the normal line, and the certificate is accepted.
+TEST(PushLocus, ContainsTheMotionOfEveryKnownDistribution) {
+  std::mt19937_64 rng(20261130);
+  std::uniform_int_distribution<int> coord(-4, 4), force(1, 5), count(3, 7), at(-39, 39), vel(-3, 3);
+  int checked[3] = {0, 0, 0}, translating = 0;
+  for (int sc = 0; sc < 400; ++sc) {
+    const std::uint64_t seed = rng();
+    std::mt19937_64 r(seed);
+    const int k = count(r);
+    std::ostringstream t;
+    t << R"({"wrenchkit": 1, "body": {"outline": [[-5, -5], [5, -5], [5, 5], [-5, 5]]}, "support": {"mu": "1/2", "points": [)";
+    for (int i = 0; i < k; ++i) t << (i ? ", " : "") << R"({"at": [)" << coord(r) << ", " << coord(r) << R"(], "force": )" << force(r) << "}";
+    const int mu = static_cast<int>(r() % 5);  // μ in {0, 1/4, …, 1}
+    t << R"(]}, "pusher": {"at": [")" << at(r) << R"(/8", -5], "normal": [0, 1], "mu": ")" << mu << R"(/4", "velocity": [)"
+      << vel(r) << ", " << 1 + static_cast<int>(r() % 3) << "]}}";
+    const std::string text = t.str();
+    const Push_item res = locus_of(text, true);
+    ASSERT_EQ(res.status, Status::answered) << "seed " << seed << "\n" << res.message << "\n" << text;
+    ASSERT_TRUE(res.push.locus && res.push.contact) << "seed " << seed;
+    if (res.push.rotation != Rotation::undecided) {
+      ASSERT_FALSE(res.certificate.empty()) << "seed " << seed << "\n" << test::dump_failure(text, "push_locus");
+    }
+    const Push_locus& g = *res.push.locus;
+    const Push_contact& c = *res.push.contact;
+    const Vec2 p = res.push.at, v = res.push.velocity, n = res.push.normal;
+    std::optional<std::array<double, 2>> q;
+    int sense = 0, mode = -1;
+    const auto centre = [&](const Vec2& u, const Rational& lo, const Rational& hi) {
+      if (sgn(lo) != sgn(hi) || sgn(lo) == 0) return;
+      const Vec2 x = rotation_centre(p, u, (lo + hi) / 2);
+      q = std::array<double, 2>{x.x.get_d(), x.y.get_d()};
+      sense = sgn(lo);
+    };
+    const Support& sup = *res.scene.support;
+    if (c.mode == Push_mode::sticks) {
+      mode = 0;
+      if (c.pivot) {
+        q = std::array<double, 2>{sup.points[*c.pivot].at.x.get_d(), sup.points[*c.pivot].at.y.get_d()};
+        sense = sgn(c.omega_lo);
+      } else if (c.omega_lo == 0 && c.omega_hi == 0) {
+        ++translating;  // a translation: no centre, and the sticking piece must run off (no arm)
+        EXPECT_FALSE(g.arm_hi) << "seed " << seed << ": translates, but the locus claims an arm\n" << text;
+        continue;
+      } else {
+        centre(v, c.omega_lo, c.omega_hi);
+      }
+    } else if ((c.mode == Push_mode::slides_left || c.mode == Push_mode::slides_right) && c.has_motion) {
+      mode = c.mode == Push_mode::slides_left ? 1 : 2;
+      const Rational tau = (c.slip_lo + c.slip_hi) / 2;
+      if (c.motion_pivot) {
+        q = std::array<double, 2>{sup.points[*c.motion_pivot].at.x.get_d(), sup.points[*c.motion_pivot].at.y.get_d()};
+        sense = sgn(c.motion_lo);
+      } else if (c.motion_lo == 0 && c.motion_hi == 0) {
+        ++translating;
+        EXPECT_FALSE(g.arm_hi) << "seed " << seed << ": translates, but the locus claims an arm\n" << text;
+        continue;
+      } else {
+        centre({v.x - tau * n.y, v.y + tau * n.x}, c.motion_lo, c.motion_hi);
+      }
+    }
+    if (!q || sense == 0) continue;
+    const int side = sense > 0 ? 0 : 1;
+    ASSERT_TRUE(g.side[side].possible) << "seed " << seed << ": turns " << (sense > 0 ? "ccw" : "cw")
+                                       << " but the locus excludes that sense\n" << test::dump_failure(text, "push_locus");
+    const double scale = 1e-7 * (1 + std::abs((*q)[0]) + std::abs((*q)[1])) * 64;
+    ASSERT_TRUE(holds(g.side[side].pieces[mode], (*q)[0], (*q)[1], scale))
+        << "seed " << seed << ": the centre (" << (*q)[0] << ", " << (*q)[1] << ") of mode " << mode
+        << " is outside its piece\n" << test::dump_failure(text, "push_locus");
+    if (g.arm_hi) {
+      const double arm = std::abs((p.x.get_d() - (*q)[0]) * n.y.get_d() - (p.y.get_d() - (*q)[1]) * n.x.get_d()) /
+                         std::hypot(n.x.get_d(), n.y.get_d());
+      ASSERT_LE(arm, g.arm_hi->get_d() + scale) << "seed " << seed << "\n" << test::dump_failure(text, "push_locus");
+    }
+    ++checked[mode];
+  }
+  // the oracle is not vacuous: every mode met
+  EXPECT_GT(checked[0], 50);
+  EXPECT_GT(checked[1] + checked[2], 50);
+  std::printf("centres inside their pieces: %d sticking, %d sliding left, %d sliding right; %d translations\n", checked[0],
+              checked[1], checked[2], translating);
+}
+
+}  // namespace
+}  // namespace wrenchkit
