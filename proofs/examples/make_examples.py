@@ -519,6 +519,16 @@ FENCE_NEAR = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "ro
 FENCE_CLOSE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "center": ["0", "0"], "stable": {"verdict": "unstable", "R2": "2", "facet": "left edge", "witness": {"points": [["-1", "1"], ["1", "-1"]], "weights": ["1", "1"], "bits": 64}}}''')
 
 
+# The rotation centres (section 8.4, `push --locus`, PU-4). push_square: ccw only (the votes); on the sticking line
+# x + y = -1/2 the bisector (1, -2).q <= 5/4 stops at (1/12, -7/12) and the tip line -x/2 + y <= T (T = 2.909923, the
+# fixed point of PU-3 section 6 at alpha = |c - p| = sqrt(5)/2) at x = -(2/3)(T + 1/2); the slides' pieces add the
+# load along an edge (the legs' extent) and the slip's side of the line through p across v. push_square_unknown: the
+# same bounds over every distribution of the unknown legs (c the centre of pressure). push_slide: "none", no centre.
+LOCUS_SQUARE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2"}, "votes": [{"lower": "-1", "upper": "-1"}, {"lower": "3", "upper": "3"}, {"lower": "3", "upper": "3"}], "center": ["0", "0"], "locus": {"R_hi": "707107/500000", "alpha_hi": "559017/500000", "T": "2909923/1000000", "ccw": [{"mode": "sticks", "bounded": true, "polygon": [["-1136641/500000", "886641/500000"], ["1/12", "-7/12"]]}, {"mode": "slides left", "bounded": true, "polygon": [["-5/4", "3/4"], ["1/12", "-7/12"], ["1/2", "-3/8"], ["1/2", "5/2"]]}, {"mode": "slides right", "bounded": true, "polygon": [["-1636641/500000", "636641/500000"], ["-11/12", "-13/12"], ["1/12", "-7/12"], ["-1136641/500000", "886641/500000"]]}], "cw": null, "arm_hi": "1886641/500000"}}''')
+LOCUS_UNKNOWN = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2", "dual_lower": ["-1/2", "0", "0"]}, "votes": [{"lower": "1/2", "dual_lower": ["-1/8", "1/2", "1/8"], "upper": "1/2", "dual_upper": ["1/8", "-1/2", "-1/8"]}, {"lower": "3/2", "dual_lower": ["-3/8", "1/2", "-1/8"], "upper": "3/2", "dual_upper": ["3/8", "-1/2", "1/8"]}, {"lower": "1", "dual_lower": ["-1/4", "1/2", "0"], "upper": "1", "dual_upper": ["1/4", "-1/2", "0"]}], "center": ["0", "0"], "locus": {"R_hi": "707107/500000", "alpha_hi": "559017/500000", "T": "2909923/1000000", "ccw": [{"mode": "sticks", "bounded": true, "polygon": [["-3909923/500000", "-1"], ["-3/4", "-1"]]}, {"mode": "slides left", "bounded": true, "polygon": [["-3909923/500000", "-1"], ["-3/4", "-1"], ["1/2", "-3/8"], ["1/2", "11/8"], ["-1659923/250000", "-409923/1000000"]]}, {"mode": "slides right", "bounded": true, "polygon": [["-1", "-1"], ["-5/6", "-25/24"], ["-3/4", "-1"]]}], "cw": null, "arm_hi": "4159923/500000"}}''')
+LOCUS_TRANSLATES = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "2"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "2", "upper": "2"}, {"lower": "-1", "upper": "-1"}], "center": ["0", "0"], "locus": {"R_hi": "707107/500000", "alpha_hi": "559017/500000", "T": "2909923/1000000", "ccw": null, "cw": null}}''')
+
+
 def tamper(base, path, value):
     """A copy of a certificate with the member at `path` (keys and indices) replaced by value (None: removed)."""
     cert = json.loads(json.dumps(base))
@@ -1044,6 +1054,19 @@ CERTS = [
 
     # pushing (certificate-format.md section 8, format 6)
     ("push_square", "ccw", "valid", PUSH_SQUARE),
+    ("push_square", "locus", "valid", LOCUS_SQUARE),
+    ("push_square", "locus_polygon_cut", "invalid:polygon|locus.ccw[1].polygon: the vertex (1/2, 5/2) of the centres' bound is outside it",
+     tamper(LOCUS_SQUARE, ["locus", "ccw", 1, "polygon", 3], ["1/2", "2"])),
+    ("push_square", "locus_arm_short", "invalid:arm|locus.arm_hi: 3 is below a possible centre's distance",
+     tamper(LOCUS_SQUARE, ["locus", "arm_hi"], "3")),
+    ("push_square", "locus_sense_dropped", 'invalid:sense|locus.ccw: null, but the rotation "ccw" does not exclude this sense',
+     dict(LOCUS_SQUARE, locus=dict(LOCUS_SQUARE["locus"], ccw=None, cw=LOCUS_SQUARE["locus"]["ccw"]))),
+    ("push_square", "locus_tip_too_close", "invalid:locus|locus.T: 2 is below R^2 + E(T/alpha_hi)",
+     tamper(LOCUS_SQUARE, ["locus", "T"], "2")),
+    ("push_square_unknown", "locus", "valid", LOCUS_UNKNOWN),
+    ("push_square_unknown", "locus_without_tip_line", "invalid:unbounded|locus.ccw[0]: claimed bounded, but its half-planes recede",
+     tamper(tamper(LOCUS_UNKNOWN, ["locus", "T"], None), ["locus", "alpha_hi"], None)),
+    ("push_slide", "locus_translates", "valid", LOCUS_TRANSLATES),
     ("push_square", "wrong_rotation", 'invalid:rotation|rotation: "cw", but votes cw/ccw/ccw (left edge, right edge, velocity; "none" = through c) allowed by the bounds give "ccw"',
      tamper(PUSH_SQUARE, ["rotation"], "cw")),
     ("push_square", "short_bound", "invalid:bound|votes[2].upper: 2 is less than the proven 3",
@@ -2239,6 +2262,83 @@ def sqrt_bounds(s, bits):
     return F(r, s.denominator << b), F(r + (r * r != x), s.denominator << b)
 
 
+def correction(R, d, al):
+    """PU-3 section 5's E at the bounds (grows with R and alpha, falls with d)."""
+    K = R * (2 * al + R) / (2 * d - R)
+    return K * K * (2 * d + R) / (8 * d) + al * R ** 3 / (d * (2 * d - R))
+
+
+def verify_locus(loc, S, c, p, n, mu, v, rotation):
+    """Section 8.4 (PU-4): the rotation centres' pieces, each sense the rotation allows: the half-planes from the scene,
+    a bounded piece with no direction of recession and every vertex in its polygon, the arm above every vertex."""
+    if set(loc) - {"R_hi", "alpha_hi", "T", "ccw", "cw", "arm_hi"} or not {"R_hi", "ccw", "cw"} <= set(loc):
+        return "keys"
+    dot = lambda a, b: a[0] * b[0] + a[1] * b[1]  # noqa: E731
+    cross = lambda a, b: a[0] * b[1] - a[1] * b[0]  # noqa: E731
+    R2 = max(dot((x[0] - c[0], x[1] - c[1]), (x[0] - c[0], x[1] - c[1])) for x in S)
+    R = rational(loc["R_hi"])
+    if R < 0 or R * R < R2:
+        return "locus"
+    a = (c[0] - p[0], c[1] - p[1])
+    tip = "T" in loc
+    if tip:
+        al, T = rational(loc["alpha_hi"]), rational(loc["T"])
+        if al <= 0 or al * al < dot(a, a) or T <= 0 or T / al <= R or T < R2 + correction(R, T / al, al):
+            return "locus"
+    eL, eR = (n[0] - mu * n[1], n[1] + mu * n[0]), (n[0] + mu * n[1], n[1] - mu * n[0])
+    pv, H, unbounded = dot(p, v), F(0), False
+    for name, s in (("ccw", 1), ("cw", -1)):
+        if loc[name] is None:
+            if rotation not in ({"ccw": "cw", "cw": "ccw"}[name], "none"):
+                return "sense"
+            continue
+        if [q.get("mode") for q in loc[name]] != ["sticks", "slides left", "slides right"]:
+            return "keys"
+        for m, piece in enumerate(loc[name]):
+            hs = [((2 * (p[0] - c[0]), 2 * (p[1] - c[1])), dot(p, p) - dot(c, c)), ((s * n[1], -s * n[0]), s * cross(p, n))]
+            if tip:
+                hs.append((a, T + dot(a, c)))
+            if m == 0:
+                hs += [((-s * eL[0], -s * eL[1]), -min(s * dot(x, eL) for x in S)),
+                       ((s * eR[0], s * eR[1]), max(s * dot(x, eR) for x in S)), (v, pv), ((-v[0], -v[1]), -pv)]
+            else:
+                e, t = (eL, s) if m == 1 else (eR, -s)
+                hs += [(e, max(dot(x, e) for x in S)), ((-e[0], -e[1]), -min(dot(x, e) for x in S)),
+                       ((-t * v[0], -t * v[1]), -t * pv)]
+            if not piece["bounded"]:
+                unbounded = True
+                continue
+            for h in hs:  # a direction of recession: along some boundary line, inside every half-plane
+                for u in ((-h[0][1], h[0][0]), (h[0][1], -h[0][0])):
+                    if u != (0, 0) and all(dot(g[0], u) <= 0 for g in hs):
+                        return "unbounded"
+            poly = [tuple(rational(x) for x in q) for q in piece["polygon"]]
+            for g, h in itertools.combinations(hs, 2):
+                det = cross(g[0], h[0])
+                if det == 0:
+                    continue
+                q = ((g[1] * h[0][1] - h[1] * g[0][1]) / det, (g[0][0] * h[1] - h[0][0] * g[1]) / det)
+                if any(dot(k[0], q) > k[1] for k in hs):
+                    continue
+                if len(poly) == 1:
+                    inside = poly[0] == q
+                elif len(poly) == 2:
+                    d, w = (poly[1][0] - poly[0][0], poly[1][1] - poly[0][1]), (q[0] - poly[0][0], q[1] - poly[0][1])
+                    inside = cross(d, w) == 0 and 0 <= dot(d, w) <= dot(d, d)
+                else:
+                    inside = len(poly) > 0 and all(
+                        cross((b[0] - a_[0], b[1] - a_[1]), (q[0] - a_[0], q[1] - a_[1])) >= 0
+                        for a_, b in zip(poly, poly[1:] + poly[:1]))
+                if not inside:
+                    return "polygon"
+                H = max(H, s * cross((p[0] - q[0], p[1] - q[1]), n))
+    if "arm_hi" in loc:
+        arm = rational(loc["arm_hi"])
+        if unbounded or arm < 0 or arm * arm * dot(n, n) < H * H:
+            return "arm"
+    return None
+
+
 def verify_line_push(scene, cert):
     """Section 8.3 (PU-3): a line pusher's stable push, over a support of points (regions are the C++ checker's)."""
     if set(cert) - {"wrenchkit_certificate", "property", "rotation", "center", "stable", "region"} or "center" not in cert:
@@ -2269,10 +2369,6 @@ def verify_line_push(scene, cert):
     R2 = max(dot(sub(x, c), sub(x, c)) for x in S)
     if rational(st["R2"]) != R2:
         return "R2"
-    def correction(R, d, al):  # PU-3 section 5's E at the bounds (grows with R and alpha, falls with d)
-        K = R * (2 * al + R) / (2 * d - R)
-        return K * K * (2 * d + R) / (8 * d) + al * R ** 3 / (d * (2 * d - R))
-
     if "region" in cert:  # each sense's tip line a.(q - c) >= T: T / alpha_hi > R_hi, T >= R^2 + E(T / alpha_hi)
         reg = cert["region"]
         R = rational(reg["R_hi"])
@@ -2362,7 +2458,8 @@ def verify_push(scene, cert):
     if "segment" in scene.get("pusher", {}):
         return verify_line_push(scene, cert)
     keys = set(cert)
-    if keys - {"wrenchkit_certificate", "property", "rotation", "friction", "votes", "center", "turns", "contact"} or not (
+    if keys - {"wrenchkit_certificate", "property", "rotation", "friction", "votes", "center", "turns", "contact",
+               "locus"} or not (
             {"rotation", "friction"} <= keys) or ({"turns"} if cert["rotation"] == "depends" else {"votes"}) - keys:
         return "keys"
     sup, pu = scene.get("support"), scene.get("pusher")
@@ -2424,6 +2521,18 @@ def verify_push(scene, cert):
         return s if s and v == s else 0
 
     sign = lambda x: (x > 0) - (x < 0)  # noqa: E731
+    if "locus" in cert:  # one centre of friction: every force given, or one coefficient (the centre of pressure)
+        if known:
+            D = value(fric, given)
+            cl = [sum(q[2] * f * q[k] for q, f in zip(pts, given)) / D for k in range(2)]
+        elif len(set(fric)) == 1 and fric[0] > 0:
+            cl = c
+        else:
+            return "locus"
+        why = verify_locus(cert["locus"], [(q[0], q[1]) for q in pts if q[2] > 0], cl, (px, py), (nx, ny), mu, (vx, vy),
+                           cert["rotation"])
+        if why:
+            return why
     if "contact" in cert:
         why = verify_contact(cert["contact"], pts, known, (px, py), (nx, ny), mu, (vx, vy))
         if why:
