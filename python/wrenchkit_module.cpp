@@ -510,10 +510,11 @@ std::string grasp_regions(const Py_scene& s, const std::vector<std::string>& wor
 }
 
 // `wrenchkit push --json`: the answer's JSON text ("rotation": "undecided" is an answer here; the command exits 3).
-std::string push(const Py_scene& s, bool contact, bool region) {
+std::string push(const Py_scene& s, bool contact, bool region, bool locus) {
   Push_query q;
   q.contact = contact;
   q.region = region;
+  q.locus = locus;
   const Push_item r = answer_push(s.text, s.source, request_of("hybrid", s.limits), q);
   raise_unless_answered(r.status, r.message);
   return cli::json_answer([&](Json_writer& w) { cli::write_push(w, r); });

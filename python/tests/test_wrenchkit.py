@@ -540,6 +540,23 @@ def test_push_stable_line_pusher():
     assert len(g["ccw"]["polygon"]) >= 3 and g["translations"] == [(Fraction(1, 2), 1), (Fraction(-1, 2), 1)]
 
 
+def test_push_locus():
+    square = {"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]},
+              "support": {"mu": "1/2", "points": [{"at": [x, y], "force": 1} for x, y in
+                                                  [(-1, -1), (1, -1), (1, 1), (-1, 1)]]},
+              "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": 1, "velocity": [1, 1]}}
+    r = wrenchkit.push(square, locus=True)  # where the body may turn about, for every distribution (PU-4)
+    g = r["locus"]
+    assert r["rotation"] == "ccw" and g["cw"] is None and r["certificate_checked"] is True
+    stick = g["ccw"][0]
+    assert stick["mode"] == "sticks" and stick["bounded"] is True and stick["polygon"][1] == (Fraction(1, 12), Fraction(-7, 12))
+    assert [h["why"] for h in stick["halfplanes"]][:2] == ["bisector", "advance"]
+    assert 3 < g["arm_hi"] < 4
+    square["pusher"]["velocity"] = ["-1/2", 1]  # through the centre of friction: it translates
+    g = wrenchkit.push(square, locus=True)["locus"]
+    assert g["ccw"] is None and g["cw"] is None and "translates" in g["arm_why"]
+
+
 def test_push_voting_theorem():
     square = {"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]},
               "support": {"mu": "1/2", "points": [{"at": [x, y], "force": 1} for x, y in

@@ -328,7 +328,7 @@ def quality(scene, *, norm=None, normalize=None, torque_scale=None, about=None, 
     return r
 
 
-def push(scene, *, contact=False, region=False):
+def push(scene, *, contact=False, region=False, locus=False):
     """Which way a pushed body turns (docs/pushing.md), as `wrenchkit push --json`: the scene's "pusher" (a point
     contact with a "velocity" into the body) pushing it over its "support". "rotation": "ccw", "cw", "none" (a
     translation), "depends" (with "witnesses": two distributions of the support's forces that turn it apart) or
@@ -351,8 +351,14 @@ def push(scene, *, contact=False, region=False):
     stable. region=True (a line pusher): also "stable_region": {"ccw", "cw": {"halfplanes": [{"facet", "a", "b"}]
     (a.q <= b, Fractions), "T", "polygon": [(x, y), ...] (within "box")} or None, "box", "translations": the cone of
     stable translation velocities or None} — the rotation centres certified stable for every distribution.
+
+    locus=True (a point pusher): also "locus": {"ccw", "cw": [three pieces {"mode": "sticks" | "slides left" |
+    "slides right", "halfplanes": [{"why", "a", "b"}] (a.q <= b), "bounded", "polygon": [(x, y), ...]}] or None (a
+    sense the rotation excludes), "T", "box", "arm_hi" (every piece bounded: the rotation centre is within it of the
+    pusher's normal line) or "arm_why"} — where the body may turn about, for every distribution (PU-4), or {"why"}
+    when the centre of friction moves with the distribution.
     """
-    r = _json.loads(_core.push(_scene(scene), contact, region))
+    r = _json.loads(_core.push(_scene(scene), contact, region, locus))
     fr = _fractions.Fraction
     for k in ("at", "normal", "velocity"):
         if k in r["pusher"]:
@@ -379,6 +385,17 @@ def push(scene, *, contact=False, region=False):
         g["box"] = [tuple(fr(x) for x in v) for v in g["box"]]
         if g["translations"] is not None:
             g["translations"] = [tuple(fr(x) for x in v) for v in g["translations"]]
+    if "locus" in r and "why" not in r["locus"]:
+        g = r["locus"]
+        for k in ("R2", "R_hi", "alpha_hi", "T", "arm_hi"):
+            if k in g:
+                g[k] = fr(g[k])
+        for k in ("ccw", "cw"):
+            for piece in g[k] or []:
+                for h in piece["halfplanes"]:
+                    h["a"], h["b"] = tuple(fr(x) for x in h["a"]), fr(h["b"])
+                piece["polygon"] = [tuple(fr(x) for x in v) for v in piece["polygon"]]
+        g["box"] = [tuple(fr(x) for x in v) for v in g["box"]]
     if r["center_of_friction"] is not None:
         r["center_of_friction"] = tuple(fr(x) for x in r["center_of_friction"])
     for v in r["votes"]:
