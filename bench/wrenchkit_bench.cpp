@@ -28,6 +28,7 @@
 #include <functional>
 #include <memory>
 #include <random>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -824,6 +825,27 @@ void register_push() {
         got = r.push.rotation;
       }
       st.SetLabel(rotation_name(got));
+    })->Unit(benchmark::kMicrosecond);
+  // the rotation centres over every distribution (PU-4, --locus) beside the rotation alone, with the certificate
+  // checked: the 10 legs' forces given (c their friction centre) and not given (one coefficient: c the pressure centre)
+  const auto one_mu = std::make_shared<std::string>(
+      R"({"wrenchkit": 1, "support": {"mu": 0.5, "weight": 10, "pressure_center": [0, 0], "points": [)" +
+      std::regex_replace(unknown_legs, std::regex(R"(, "mu": 0\.[36])"), "") +
+      R"(]}, "pusher": {"at": [0.25, -2.5], "normal": [0.1, 1], "mu": 0.3, "velocity": [0.4, 1]}})");
+  for (const auto& [name, text] : {std::pair{"push/10_legs/locus_with_certificate", known},
+                                   std::pair{"push/10_legs_forces_not_given/locus_with_certificate", one_mu}})
+    benchmark::RegisterBenchmark(name, [text = text](benchmark::State& st) {
+      Push_query q;
+      q.locus = true;
+      std::string label;
+      for (auto _ : st) {
+        const Push_item r = answer_push(*text, "legs", Request{}, q);
+        if (r.status != Status::answered || r.certificate.empty() || !r.push.locus || !r.push.locus->friction_centre)
+          throw std::logic_error("push --locus: " + r.message);
+        label = std::string(rotation_name(r.push.rotation)) + (r.push.locus->arm_hi ? ", arm " +
+                                                               std::to_string(r.push.locus->arm_hi->get_d()) : ", no arm");
+      }
+      st.SetLabel(label);
     })->Unit(benchmark::kMicrosecond);
   // the contact mode with its certificate (PU-2; --contact at the default tolerance 1e-12): the pusher's μ 0.3 and
   // 0.02 (then the contact slides and the body's sliding motion is bracketed too, §5)
