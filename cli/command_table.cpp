@@ -487,12 +487,14 @@ std::vector<Command> make_table() {
        "With --what push: the body on its support, the centre of friction, the pusher with its friction cone and\n"
        "velocity, and the three voting lines through it coloured by their votes, as 'wrenchkit push' decides;\n"
        "--contact adds the contact mode and where the body turns (its rotation centre, or its direction); with a\n"
-       "line pusher, the segment, its cones and the verdict, and --region shades its stable region.\n",
+       "line pusher, the segment, its cones and the verdict, and --region shades its stable region; --locus (a point\n"
+       "pusher) shades where the body may turn about, every distribution.\n",
        join({{kHelp, kWhat, kOutput,
               with_help(kSides, "with --what limit-surface: polygon sides, even, 4..4096 (default 32)"), kNorm, kNormalize,
               kTorqueScale, kAbout, kFingerMu, kEdges, kFingers,
               with_help(kPushContact, "with --what push: also the contact mode and the body's rotation centre"),
-              with_help(kPushRegion, "with --what push and a line pusher: also its stable region")},
+              with_help(kPushRegion, "with --what push and a line pusher: also its stable region"),
+              with_help(kPushLocus, "with --what push and a point pusher: also where the body may turn about")},
              kLimits}),
        {kScene},
        run_render});

@@ -404,6 +404,11 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
   for (const Support_region& g : s.support->regions)
     for (const Vec2& v : g.outline) b.add(to_p2(v));
   if (a.center) b.add(to_p2(*a.center));
+  if (a.locus)  // the rotation centres' bounded pieces (PU-4) in view
+    for (const Locus_side& side : a.locus->side)
+      for (const Locus_piece& piece : side.pieces)
+        if (piece.bounded)
+          for (const Vec2& v : piece.polygon) b.add(to_p2(v));
   if (a.region && a.center)  // a line pusher's stable region: each side's vertex nearest the centre of friction in view
     for (const Stable_region_side& side : a.region->side) {
       std::optional<P2> near;
@@ -514,6 +519,23 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
     captions("rotation: " + std::string(rotation_name(a.rotation)) + " \u2014 " + a.why);
     return c.finish();
   }
+  if (a.locus && a.locus->friction_centre) {  // where the body may turn about (PU-4): per sense, the three pieces
+    for (int k = 0; k < 2; ++k)
+      for (const Locus_piece& piece : a.locus->side[k].pieces) {
+        std::vector<P2> poly;
+        for (const Vec2& v : piece.polygon) poly.push_back(to_p2(v));
+        const std::string col = k == 0 ? kPlus : kMinus;
+        const char* dash = piece.mode == Locus_mode::slides_left ? " stroke-dasharray=\"6 3\""
+                           : piece.mode == Locus_mode::slides_right ? " stroke-dasharray=\"2 3\"" : "";
+        if (poly.size() >= 3)
+          c.polygon(poly, "fill=\"" + col + "\" fill-opacity=\"" + (piece.bounded ? "0.16" : "0.07") + "\" stroke=\"" +
+                              col + "\" stroke-width=\"1.5\"" + dash);
+        else if (poly.size() == 2)
+          c.line(poly[0], poly[1], "stroke=\"" + col + "\" stroke-width=\"5\" stroke-opacity=\"0.7\"");
+        else if (poly.size() == 1)
+          c.dot(poly[0], 5, "fill=\"" + col + "\"");
+      }
+  }
   const P2 p = to_p2(a.at), n = unit(to_p2(a.normal));
   const std::string colour[3] = {kMinus, kBoth, kPlus};  // cw, through, ccw
   for (const Push_vote& v : a.votes) {
@@ -568,7 +590,17 @@ std::string render_push(const Scene& s, const Push_item& r, const std::string& s
              "fill=\"" + std::string(k == 0 ? kPlus : kMinus) + "\"");
     }
   }
+  if (a.locus && a.locus->friction_centre) {
+    c.legend(swatch(kPlus, 0.7), "where it may turn ccw, every distribution (PU-4): sticking, on the thick segment");
+    c.legend(swatch(kPlus, 0.16), "... sliding on the left edge (dashed) or the right edge (dotted); red: cw");
+  }
   captions("rotation: " + std::string(rotation_name(a.rotation)) + " \u2014 " + a.why);
+  if (a.locus && !a.locus->friction_centre) captions("rotation centres: not answered \u2014 " + a.locus->why);
+  if (a.locus && a.locus->friction_centre)
+    captions(a.locus->arm_hi ? "rotation centres: within " + decimal_text(*a.locus->arm_hi, 4) +
+                                   " of the pusher's normal line \u2014 the body turns at least 1 radian per " +
+                                   decimal_text(*a.locus->arm_hi, 4) + " the pusher advances"
+                             : "rotation centres: " + a.locus->arm_why);
   if (a.contact) {
     const Push_contact& k = *a.contact;
     std::string mode = "contact: " + std::string(push_mode_name(k.mode));
@@ -596,6 +628,7 @@ std::string render_svg(const Options& o, const std::string& text, const std::str
   if (o.sides && what != Picture::limit_surface) throw Usage_error("--sides goes with --what limit-surface");
   if (o.push.contact && what != Picture::push) throw Usage_error("--contact goes with --what push");
   if (o.push.region && what != Picture::push) throw Usage_error("--region goes with --what push");
+  if (o.push.locus && what != Picture::push) throw Usage_error("--locus goes with --what push");
   const Scene s = read_scene(text, o.limits, source);
   if (what == Picture::hold) {
     const Hold_item h = answered(answer_hold(text, source, request_of(o)));

@@ -897,6 +897,35 @@ TEST(Cli, PushJsonCertificateContactPictureAndRefusals) {
   EXPECT_NE(bad.err.find("pusher.velocity: (0, -1) moves away from the body"), std::string::npos) << bad.err;
 }
 
+// [PU-4] push --locus end to end: the JSON pieces, the certificate written and accepted by `check`, `batch push
+// --locus`, the picture, and the refusals (a line pusher; --locus off --what push) with exit 2.
+TEST(Cli, PushLocusJsonCertificateBatchPictureAndRefusals) {
+  const std::string scene = test::source_dir() + "/docs/pushing/square_apart.json";
+  const fs::path cert = scratch() / "locus.cert.json";
+  const Cli_result r = run("push --json --locus --certificate " + cert.string() + " " + scene);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find(R"("locus": {"R2": "2")"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(R"("cw": null)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(R"("arm_hi": "1886641/500000")"), std::string::npos) << r.out;
+  const Cli_result k = run("check " + scene + " " + cert.string());
+  EXPECT_EQ(k.code, 0) << k.out << k.err;
+  std::string line_text = test::read_text(scene);  // one scene per line
+  std::replace(line_text.begin(), line_text.end(), '\n', ' ');
+  const Cli_result b = run("batch push --locus", line_text + "\n");
+  EXPECT_EQ(b.code, 0) << b.err;
+  EXPECT_NE(b.out.find(R"("arm_hi": "1886641/500000")"), std::string::npos) << b.out;
+  const Cli_result svg = run("render --what push --locus " + scene);
+  EXPECT_EQ(svg.code, 0) << svg.err;
+  EXPECT_NE(svg.out.find("rotation centres: within 3.773 of the pusher's normal line"), std::string::npos) << svg.out;
+  const Cli_result labels = run("render --what labels --locus " + scene);
+  EXPECT_EQ(labels.code, 2);
+  EXPECT_NE(labels.err.find("--locus goes with --what push"), std::string::npos) << labels.err;
+  const Cli_result line = run("push --locus " + test::source_dir() + "/proofs/examples/push_fence.scene.json");
+  EXPECT_EQ(line.code, 2);
+  EXPECT_EQ(line.out, "");
+  EXPECT_NE(line.err.find("--locus: the rotation centres are answered for a point pusher"), std::string::npos) << line.err;
+}
+
 // [PU-3] A line pusher: is its motion stable — JSON, exit codes (0 when decided, stable or not), the certificate `check`
 // accepts, the picture, batch, and the refusals (a slanted normal, --contact).
 TEST(Cli, PushALinePusherStableOrNot) {
