@@ -53,6 +53,8 @@ struct Ref {
   std::string rotation;                    // ccw, cw, none, depends; empty: no certified answer (undecided or refused)
   bool has_contact = false;                // the line has "push.contact" (the pusher's contact mode)
   std::string contact_mode;                // sticks, impending, slides left, slides right; empty: not certified
+  bool has_stable = false;                 // the line has "push.stable" (a line pusher: is its motion stable)
+  std::string stable;                      // stable, unstable; empty: not certified
   bool has_quality = false;                // the line has "quality" (contacts)
   const json::Value* quality_epsilon = nullptr;  // quality.epsilon {lower, upper, …}; none: refused (too much work)
   const json::Value* scene = nullptr;            // the line's canonical scene
@@ -93,7 +95,7 @@ struct Field_tally {
 
 const char* const kFields[] = {"force_closure", "form_closure", "equilibrium", "hold", "motion",
                                "center_of_friction", "power", "power_range", "labels", "epsilon", "rotation",
-                               "contact_mode", "placements"};
+                               "contact_mode", "stable_push", "placements"};
 bool is_verdict(const std::string& f) { return f == "force_closure" || f == "form_closure" || f == "equilibrium"; }
 
 // The words of a wrong verdict: unsafe (the answer claims closure, balance, holding or sticking that does not
@@ -108,6 +110,7 @@ const char* unsafe_words(const std::string& f) {
          : f == "hold"      ? "falsely holds or impending"
          : f == "rotation"  ? "a rotation sense claimed that does not hold for every distribution"
          : f == "contact_mode" ? "a contact mode claimed that does not hold (sticks where it slides, or the wrong edge)"
+         : f == "stable_push" ? "a line pusher's motion claimed stable (or unstable) that is not"
          : f == "placements" ? "a placement claimed closed that is open"
                             : "falsely closed";
 }
@@ -117,13 +120,14 @@ const char* lost_words(const std::string& f) {
          : f == "hold"      ? "falsely fails, impending or depends"
          : f == "rotation"  ? "depends or undecided where the rotation is certain"
          : f == "contact_mode" ? "undecided where the contact mode is certain"
+         : f == "stable_push" ? "undecided where the stable push is certain"
          : f == "placements" ? "a placement claimed open that closes"
                             : "falsely open";
 }
 // Fields with a safety split (unsafe / lost): the verdicts, motion, hold and epsilon (across 0).
 bool has_split(const std::string& f) {
   return is_verdict(f) || f == "motion" || f == "hold" || f == "epsilon" || f == "rotation" || f == "contact_mode" ||
-         f == "placements";
+         f == "stable_push" || f == "placements";
 }
 
 Rational exact_number(const json::Value& v, const std::string& where) {
@@ -239,6 +243,12 @@ Corpus read_corpus(const std::string& path, Read_file read) {
           if (const json::Value* m = k->find("mode"); m && m->type == json::Type::string && m->text != "undecided")
             r.contact_mode = m->text;
         }
+      if (pu->type == json::Type::object)
+        if (const json::Value* st = pu->find("stable"); st && st->type == json::Type::object) {
+          r.has_stable = true;
+          if (const json::Value* m = st->find("verdict"); m && m->type == json::Type::string && m->text != "undecided")
+            r.stable = m->text;
+        }
     }
     if (const json::Value* h = v.find("hold")) {
       r.has_hold = true;
@@ -302,7 +312,8 @@ std::vector<Answer> read_jsonl_answers(const std::string& path, const std::strin
       } else if (std::find(std::begin(kFields), std::end(kFields), k) == std::end(kFields)) {
         throw Input_error(where + ": " + json::quote(k) +
                           ": unknown field (known: id, force_closure, form_closure, equilibrium, hold, motion, "
-                          "center_of_friction, power, power_range, labels, epsilon, rotation, contact_mode, placements, error; fields "
+                          "center_of_friction, power, power_range, labels, epsilon, rotation, contact_mode, stable_push, placements, "
+                          "error; fields "
                           "starting with _ "
                           "are ignored)");
       } else {
@@ -503,6 +514,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
                               : field == "hold"                                       ? ref.has_hold
                               : field == "rotation"                                   ? ref.has_push
                               : field == "contact_mode"                               ? ref.has_contact
+                              : field == "stable_push"                                ? ref.has_stable
                               : field == "center_of_friction" || field == "power"     ? ref.limit_surface != nullptr
                               : field == "power_range"                                ? ref.limit_surface != nullptr
                               : field == "epsilon"                                    ? ref.has_quality
@@ -583,6 +595,26 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
           d.answer = v.text;
           d.unsafe = v.text != "undecided";
           d.kind = d.unsafe ? (v.text == "sticks" ? "falsely sticks" : "a wrong contact mode") : "an uncertain contact mode";
+          disagree(std::move(d));
+        }
+      } else if (field == "stable_push") {
+        // Whether a line pusher's motion keeps the body with it for every distribution (docs/pushing.md, PU-3): unsafe
+        // where the answer claims a verdict that is not the reference's (stable where the contact breaks — a plan that
+        // expects the part to stay on the fence —, or unstable where it holds), lost where it says undecided.
+        if (v.type != json::Type::string || (v.text != "stable" && v.text != "unstable" && v.text != "undecided"))
+          throw Input_error(where + ": " + json::text_of(v) + " is not \"stable\", \"unstable\", \"undecided\" or null");
+        if (!ref.has_stable)
+          throw Input_error(where + ": scene \"" + a.id + "\" has no line pusher on a support (no stable_push answer)");
+        if (ref.stable.empty()) continue;  // the corpus has no certified answer: nothing to compare with
+        count(&Field_tally::compared);
+        if (v.text == ref.stable) {
+          count(&Field_tally::agree);
+        } else {
+          Disagreement d;
+          d.reference = ref.stable;
+          d.answer = v.text;
+          d.unsafe = v.text != "undecided";
+          d.kind = d.unsafe ? (v.text == "stable" ? "falsely stable" : "falsely unstable") : "an uncertain stable push";
           disagree(std::move(d));
         }
       } else if (field == "motion") {
@@ -810,6 +842,7 @@ std::string distance_text(const Disagreement& d) {
           : d.field == "hold"   ? " (over a support, how close the load is to holding is not measured)"
           : d.field == "rotation" ? " (how close a voting line passes the centre of friction is not measured)"
           : d.field == "contact_mode" ? " (how close the pusher's velocity is to a motion-cone edge is not measured)"
+          : d.field == "stable_push" ? " (how close the fence's load is to its composite cone's boundary is not measured)"
           : d.field == "placements" ? " (each placement decided exactly; how far it is from the region's boundary is not measured)"
                               : " (a value: compared within --rtol/--atol)");
   else if (f.distance)

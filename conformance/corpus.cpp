@@ -403,11 +403,12 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
     }
     // Which way a pushed body turns (docs/pushing.md), for a scene with a pusher on a support: the rotation for every
     // admissible distribution, certified (the line says why when undecided or refused); and whether the contact
-    // sticks or slides (PU-2; undecided, with why, for regions and forces not given).
+    // sticks or slides (PU-2; undecided, with why, for regions and forces not given); a line pusher: whether its
+    // motion is stable for every distribution (PU-3).
     Push_item push;
     if (parsed.pusher && parsed.support) {
       Push_query contact;
-      contact.contact = true;
+      contact.contact = !parsed.pusher->line();  // (a line pusher answers whether its motion is stable)
       push = answer_push(text, e.id, request, contact);
       if (push.status == Status::check_failed) {
         b.status = push.status, b.message = push.message;
@@ -421,6 +422,11 @@ Reference_item reference_item(const Reference_scene& e, int sides) {
         if (const std::optional<Push_contact>& k = push.push.contact) {
           w.key("contact").object().member("mode", push_mode_name(k->mode));
           if (k->mode == Push_mode::undecided) w.member("why", k->why);
+          w.end_object();
+        }
+        if (const std::optional<Stable_push>& st = push.push.stable) {  // a line pusher (PU-3)
+          w.key("stable").object().member("verdict", stability_name(st->verdict));
+          if (st->verdict == Stability::undecided) w.member("why", st->why);
           w.end_object();
         }
         w.end_object();

@@ -29,7 +29,7 @@ const int kEpsilonExponents[] = {2, 6, 10, 14, 16, 20, 40};
 // The stress report's families the corpus carries (stress::report_only_families()), in this order; the pushing ones
 // (issue 33) come last, after the polygon parts.
 const char* const kAppendedFamilies[] = {"unknown_support", "region_support", "fixture_pin"};
-const char* const kPushFamilies[] = {"push_near_tie", "push_motion_cone"};
+const char* const kPushFamilies[] = {"push_near_tie", "push_motion_cone", "push_fence_edge"};
 
 std::uint64_t splitmix64(std::uint64_t x) {
   x += 0x9E3779B97F4A7C15ull;
@@ -168,7 +168,8 @@ std::vector<Entry> corpus_entries(const Reference_options& ro) {
                             R"(", "body": {"outline": )" + p.outline + "}}",
                         ""));
   // Issue 33: pushing — which way the body turns beside a tie of the votes (push_near_tie: ccw iff above) and whether
-  // the contact sticks beside a motion-cone edge (push_motion_cone: slides left iff above), appended last.
+  // the contact sticks beside a motion-cone edge (push_motion_cone: slides left iff above), appended last; then a
+  // fence translating beside its friction cone's edge (push_fence_edge: stable iff below), appended after them.
   family_index = 1000;
   for (const char* name : kPushFamilies) append_family(name, ++family_index);
   return out;

@@ -27,6 +27,7 @@ const char* question_name(Question q) {
     case Question::stick_slide_region: return "stick_slide_region";
     case Question::push: return "push";
     case Question::push_contact: return "push_contact";
+    case Question::push_stable: return "push_stable";
   }
   return "?";
 }

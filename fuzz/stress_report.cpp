@@ -50,17 +50,19 @@ const std::vector<double> kEpsilons = {1e-2,  1e-4,  1e-6,  1e-8,  1e-10, 1e-12,
 constexpr int kSides = 16;  // polygonal bounds of the exact stick/slide route (1/λ − 1 ≈ 2 %)
 
 // What a row measures: the family's verdict (closure / equilibrium), its moment labels, or stick/slide.
-enum class Measure { verdict, labels, motion, motion_over, hold, push, push_contact };
+enum class Measure { verdict, labels, motion, motion_over, hold, push, push_contact, push_stable };
 const char* check_name(Measure c) {
   return c == Measure::verdict ? "verdict" : c == Measure::labels ? "labels" : c == Measure::motion ? "stick/slide"
                                            : c == Measure::motion_over ? "stick/slide over F"
                                            : c == Measure::hold ? "hold"
-                                           : c == Measure::push ? "rotation (push)" : "contact mode (push)";
+                                           : c == Measure::push ? "rotation (push)"
+                                           : c == Measure::push_contact ? "contact mode (push)" : "stable push (fence)";
 }
 // The questions without moment labels (a support's, or the support's and the contacts' together).
 bool is_motion(Question q) {
   return q == Question::stick_slide || q == Question::stick_slide_over || q == Question::hold ||
-         q == Question::stick_slide_region || q == Question::push || q == Question::push_contact;
+         q == Question::stick_slide_region || q == Question::push || q == Question::push_contact ||
+         q == Question::push_stable;
 }
 
 struct Row {
@@ -402,6 +404,38 @@ void run_push_contact_case(const families::Case& k, std::uint64_t seed, long ind
   if (wrong(exact) || !why_exact.empty()) ++row.exact_wrong, report_wrong("push contact exact", k, seed, index, why_exact);
 }
 
+// push with a line pusher (push_fence_edge): each mode through the pipeline (the certificate checked there: a rejected
+// one, or any error, is a wrong answer). A line pusher is exact in every mode (PU-3: no float twin), so the three
+// columns measure one method; naive: the four facets' signs in raw doubles (testing/stress_families.h, a guess). The
+// truth by construction: stable iff below.
+void run_push_stable_case(const families::Case& k, std::uint64_t seed, long index, Row& row) {
+  const Scene scene = read_scene(k.text, Input_limits{});
+  const auto answer_in = [&](Mode mode, std::string& why) {
+    Request request;
+    request.mode = mode;
+    const Push_item item = answer_push(k.text, "push_fence_edge", request);
+    if (item.status != Status::answered && item.status != Status::undecided) why = item.message;
+    return item.status == Status::answered && item.push.stable ? item.push.stable->verdict : Stability::undecided;
+  };
+  std::string why_exact, why_twin, why_hybrid;
+  Stability exact = timed(row.t_exact, [&] { return answer_in(Mode::exact, why_exact); });
+  Stability twin = timed(row.t_twin, [&] { return answer_in(Mode::float_only, why_twin); });
+  Stability hybrid = timed(row.t_hybrid, [&] { return answer_in(Mode::hybrid, why_hybrid); });
+  const std::string naive = timed(row.t_naive, [&] { return std::string(stress::naive_push_stable(scene)); });
+  const auto flip = [](Stability v) { return v == Stability::stable ? Stability::unstable : Stability::stable; };
+  inject_faults(twin, hybrid, exact, Stability::undecided, flip);
+  const Stability truth = k.above ? Stability::unstable : Stability::stable;
+  ++row.cases;
+  row.naive_wrong += naive != stability_name(truth);
+  row.twin_undecided += twin == Stability::undecided;
+  row.hybrid_undecided += hybrid == Stability::undecided;
+  row.exact_undecided += exact == Stability::undecided;
+  const auto wrong = [&](Stability v) { return v != Stability::undecided && v != truth; };
+  if (wrong(twin) || !why_twin.empty()) ++row.twin_wrong, report_wrong("push stable twin", k, seed, index, why_twin);
+  if (wrong(hybrid) || !why_hybrid.empty()) ++row.hybrid_wrong, report_wrong("push stable hybrid", k, seed, index, why_hybrid);
+  if (wrong(exact) || !why_exact.empty()) ++row.exact_wrong, report_wrong("push stable exact", k, seed, index, why_exact);
+}
+
 // stick/slide on a support with regions (region_support): each mode through the pipeline, the certificate checked
 // by the independent checker there (a rejected one, or any error, is a wrong answer); the truth is the side, by
 // construction. float has no twin of regions (always undecided); naive: the double search without bounds.
@@ -571,6 +605,8 @@ const char* cross_check(const Family& f, Measure c) {
   const std::string n = f.name;
   if (c == Measure::motion) return "the answer by construction (p(q) on LS, load p(q)·(1 ± 10^-k))";
   if (c == Measure::push) return "the rotation by construction (the velocity's vote) + the checker (exact's certificate)";
+  if (c == Measure::push_stable)
+    return "the verdict by construction (the velocity ε inside or outside the cone's left edge) + the checker";
   if (c == Measure::push_contact)
     return "the mode by construction (the force turns with the velocity past the motion-cone edge) + the checker";
   if (c == Measure::motion_over)
@@ -606,6 +642,7 @@ std::vector<Measure> checks_of(const Family& f) {
   if (f.question == Question::hold) return {Measure::hold};
   if (f.question == Question::push) return {Measure::push};
   if (f.question == Question::push_contact) return {Measure::push_contact};
+  if (f.question == Question::push_stable) return {Measure::push_stable};
   return {Measure::verdict, Measure::labels};
 }
 
@@ -858,6 +895,7 @@ int main(int argc, char** argv) {
                       : fam.question == Question::hold             ? Measure::hold
                       : fam.question == Question::push             ? Measure::push
                       : fam.question == Question::push_contact     ? Measure::push_contact
+                      : fam.question == Question::push_stable      ? Measure::push_stable
                                                                    : Measure::verdict;
       labels.check = Measure::labels;
       for (long c = 0; c < n; ++c) {
@@ -867,6 +905,7 @@ int main(int argc, char** argv) {
         else if (fam.question == Question::hold) run_hold_case(k, seed, c, verdict);
         else if (fam.question == Question::push) run_push_case(k, seed, c, verdict);
         else if (fam.question == Question::push_contact) run_push_contact_case(k, seed, c, verdict);
+        else if (fam.question == Question::push_stable) run_push_stable_case(k, seed, c, verdict);
         else if (fam.question == Question::stick_slide_region) run_region_case(k, seed, c, verdict);
         else run_contact_case(k, seed, c, verdict, labels);
       }

@@ -921,6 +921,12 @@ const std::vector<Family>& report_only_families() {
        "on that edge: a motion-cone edge), its velocity turned by ±ε off p → c: it slides left iff above (turned ccw: "
        "the force turns past the edge), else it sticks",
        Question::push_contact, true, true},
+      {"push_fence_edge",
+       "push with a line pusher: push_near_tie's support, a fence below it (normal (0, 1), μ ∈ {1/4, 1/2, 3/4, 1}) "
+       "across the line through the centre of friction along its left friction-cone edge e₊ = (−μ, 1), translating "
+       "along e₊ turned by ±ε: stable for every distribution iff below (turned into the cone; the load is v through c, "
+       "PU-3 §8)",
+       Question::push_stable, true, true},
       {"region_support",
        "a support region (rectangle or triangle, maybe a hole, uniform or linear pressure, maybe a point); load "
        "p*·(1 ± ε) with p* the exact boundary load of a translation along a Pythagorean direction: slides iff above",
@@ -1030,6 +1036,57 @@ Family_scene push_motion_cone(const Family& fam, double eps, Rng& r) {
   });
 }
 
+// Family "push_fence_edge" (push with a line pusher, issue 33, PU-3 §8): the support of push_near_tie, a fence on the
+// line y = y0 below it with normal (0, 1) and μ, across the line through c along e₊ = (−μ, 1) (its ends a half-width
+// w ∈ [1, 3] either side), translating along v = e₊ − s·10^-k·rot90(e₊): v × e₊ = s·10^-k·|e₊|², e₋ × v > 0 and the
+// line through c along v crosses the fence well inside, so the push is stable iff s = 1 (`above` false: stable iff
+// below).
+Family_scene push_fence_edge(const Family& fam, double eps, Rng& r) {
+  const int k = decimal_exponent(eps);
+  Family_scene out = known_side(fam, eps, r);
+  const int n = r.integer(3, 8);
+  std::string points;
+  Rational mx = 0, my = 0, d = 0;
+  for (int i = 0; i < n; ++i) {
+    const Rational x = short_decimal(r, -2000, 2000, 3), y = short_decimal(r, -2000, 2000, 3);
+    const Rational f = short_decimal(r, 100, 900, 2), mu = short_decimal(r, 10, 90, 2);
+    mx += mu * f * x, my += mu * f * y, d += mu * f;
+    points += std::string(i ? ", " : "") + "{\"at\": [" + exact_text(x) + ", " + exact_text(y) + "], \"force\": " +
+              exact_text(f) + ", \"mu\": " + exact_text(mu) + "}";
+  }
+  const Rational mu(r.integer(1, 4), 4), y0 = short_decimal(r, -4000, -2500, 3), w = short_decimal(r, 1000, 3000, 3);
+  const Rational cx = mx / d, cy = my / d, xs = cx + mu * (cy - y0);  // c − t·e₊ on y = y0: t = cy − y0
+  const Rational s = Rational(out.above ? -1 : 1) * Rational(Integer(1), power_of_ten(k));
+  const Rational vx = -mu + s, vy = 1 + s * mu;  // e₊ − s·rot90(e₊), rot90(e₊) = (−1, −μ)
+  out.text = "{\"wrenchkit\": 1, \"name\": \"" + std::string(fam.name) + "\", \"support\": {\"points\": [" + points +
+             "]}, \"pusher\": {\"segment\": [[" + exact_text(xs - w) + ", " + exact_text(y0) + "], [" + exact_text(xs + w) +
+             ", " + exact_text(y0) + "]], \"normal\": [0, 1], \"mu\": \"" + exact_text(mu) + "\", \"velocity\": [" +
+             exact_text(vx) + ", " + exact_text(vy) + "]}}";
+  return out;
+}
+
+const char* naive_push_stable(const Scene& scene) {
+  const auto D = [](const Rational& x) { return naive_double(x.get_str()); };  // as strtod reads the text
+  const Support& s = *scene.support;
+  const Pusher& ps = *scene.pusher;
+  double mx = 0, my = 0, d = 0;
+  for (const Support_point& q : s.points) {
+    const double w = D(s.mu_of(q)) * D(*q.force);
+    mx += w * D(q.at.x), my += w * D(q.at.y), d += w;
+  }
+  const double cx = mx / d, cy = my / d, nx = D(ps.contact.normal.x), ny = D(ps.contact.normal.y),
+               mu = D(ps.contact.mu), vx = D(ps.velocity.x), vy = D(ps.velocity.y);
+  const double lx = nx - mu * ny, ly = ny + mu * nx, rx = nx + mu * ny, ry = ny - mu * nx;  // e₊, e₋
+  const double ex[2] = {D(ps.contact.at.x), D(ps.end->x)}, ey[2] = {D(ps.contact.at.y), D(ps.end->y)};
+  const double turn = (ex[1] - ex[0]) * ny - (ey[1] - ey[0]) * nx;  // > 0: end 0 is PU-3's p₁ (its moment ≥ 0)
+  const double sk[2] = {turn > 0 ? 1.0 : -1.0, turn > 0 ? -1.0 : 1.0};
+  const double facet[4] = {vx * ly - vy * lx, rx * vy - ry * vx, sk[0] * ((cx - ex[0]) * vy - (cy - ey[0]) * vx),
+                           sk[1] * ((cx - ex[1]) * vy - (cy - ey[1]) * vx)};
+  for (double f : facet)
+    if (f < 0) return "unstable";
+  return "stable";
+}
+
 const char* naive_push_contact(const Scene& scene) {
   const Support& s = *scene.support;
   const Pusher& ps = *scene.pusher;
@@ -1119,6 +1176,7 @@ Family_scene make_scene(const Family& family, double epsilon, Rng& rng) {
   if (name == "fixture_pin") return fixture_pin(family, epsilon, rng);
   if (name == "push_near_tie") return push_near_tie(family, epsilon, rng);
   if (name == "push_motion_cone") return push_motion_cone(family, epsilon, rng);
+  if (name == "push_fence_edge") return push_fence_edge(family, epsilon, rng);
   if (name == "region_support" || name == "region_legs") return region_support(family, epsilon, rng);
   if (name == "long_rational" || name == "rational_rotation" || name == "huge_scale" || name == "tiny_scale" ||
       name == "beyond_double" || name == "many_contacts")

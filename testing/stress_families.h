@@ -63,7 +63,7 @@ struct Gravity_spec {
 // `known` hold scene holds iff not `above`.
 // stick_slide_region: does the load stick or slide on a support with regions (continuous pressure) [RG-1]?
 enum class Question { force_closure, form_closure, equilibrium, all, stick_slide, stick_slide_over, hold,
-                      stick_slide_region, push, push_contact };
+                      stick_slide_region, push, push_contact, push_stable };
 
 // stick_slide_over: the answers a scene's construction leaves possible (a bit set).
 enum Motion_answer : unsigned { answer_sticks = 1, answer_slides = 2, answer_depends = 4 };
@@ -94,7 +94,8 @@ const std::vector<Family>& families();
 // μW·(1 ± 10^-k): holds iff below), "push_near_tie" (push: the pusher's velocity 10^-k beside the line to the
 // centre of friction, the cone's edges apart: it turns ccw iff above), "push_motion_cone" (push --contact: the
 // pusher's velocity 10^-k beside a motion-cone edge — the left friction-cone edge's line through the centre of
-// friction —: it slides left iff above, else it sticks).
+// friction —: it slides left iff above, else it sticks), "push_fence_edge" (push with a line pusher: a fence
+// translating 10^-k beside its friction cone's left edge: stable iff below, PU-3 §8).
 const std::vector<Family>& report_only_families();
 const Family* find_family(std::string_view name);  // either list; nullptr when unknown
 
@@ -162,5 +163,10 @@ double naive_double(std::string_view text);
 // raw doubles), the load's force there against the friction cone's edges by raw double cross products. A guess
 // (no error bound): "sticks", "slides left" or "slides right" (the nearer side when outside both edges' half-planes).
 const char* naive_push_contact(const Scene& scene);
+
+// [PU-3 §8] A translating line pusher's stable push as naive double code decides it: the numbers as strtod reads
+// their text (naive_double) and the four facets' cross products in raw doubles (v × e₊, e₋ × v, the line through c
+// along v against each end) — a guess: "stable" when none is negative, else "unstable".
+const char* naive_push_stable(const Scene& scene);
 
 }  // namespace wrenchkit::stress

@@ -604,6 +604,7 @@ TEST_F(Corpus, PushingFamiliesLandOnTheirSidesAndCompareReadsTheContactMode) {
   std::size_t tie = 0, cone = 0;
   for (const json::Value& v : lines_) {
     const std::string id = v.find("id")->text, family = v.find("family")->text;
+    if (family == "push_fence_edge") continue;  // (the next test)
     if (family != "push_near_tie" && family != "push_motion_cone") {
       EXPECT_EQ(v.find("push"), nullptr) << id;  // no other family has a pusher
       continue;
@@ -645,6 +646,49 @@ TEST_F(Corpus, PushingFamiliesLandOnTheirSidesAndCompareReadsTheContactMode) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("contact_mode: \"slides\" is not \"sticks\""), std::string::npos) << r.err;
   r = run("compare '" + dir_ + "' -", "{\"id\": \"golden.block_corner_mu_0\", \"contact_mode\": \"sticks\"}\n");
+  EXPECT_EQ(r.code, 2);
+}
+
+// Issue 33: the fence family at the end of the corpus (push_fence_edge: a line pusher translating 10^-k beside its
+// friction cone's left edge) is stable iff below, certified, with no contact mode; and `compare` reads a peer's
+// stable_push: "stable" where the contact breaks is unsafe ("falsely stable"), undecided lost, other words refused.
+TEST_F(Corpus, TheFenceFamilyIsStableIffBelowAndCompareReadsStablePush) {
+  std::string good, bad, unstable_id, stable_id;
+  std::size_t fences = 0;
+  for (const json::Value& v : lines_) {
+    const std::string id = v.find("id")->text;
+    if (v.find("family")->text != "push_fence_edge") continue;
+    ++fences;
+    const bool above = v.find("side")->text == "above";
+    const json::Value* push = v.find("push");
+    ASSERT_TRUE(push && push->type == json::Type::object) << id;
+    EXPECT_EQ(push->find("contact"), nullptr) << id;
+    const std::string verdict = push->find("stable")->find("verdict")->text;
+    EXPECT_EQ(verdict, above ? "unstable" : "stable") << id;
+    ASSERT_NE(v.find("certificates")->find("push"), nullptr) << id;
+    EXPECT_NE(v.find("certificates")->find("push")->find("stable"), nullptr) << id;
+    if (above && unstable_id.empty()) unstable_id = id, bad += "{\"id\": \"" + id + "\", \"stable_push\": \"stable\"}\n";
+    if (!above && stable_id.empty()) stable_id = id, bad += "{\"id\": \"" + id + "\", \"stable_push\": \"undecided\"}\n";
+    good += "{\"id\": \"" + id + "\", \"stable_push\": \"" + verdict + "\"}\n";
+  }
+  ASSERT_EQ(fences, 14u);
+  ASSERT_FALSE(unstable_id.empty() || stable_id.empty());
+  Cli_result r = run("compare --json '" + dir_ + "' -", good);
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("\"stable_push\": {\"compared\": 14, \"agree\": 14,"), std::string::npos) << r.out;
+  r = run("compare --json '" + dir_ + "' -", bad);
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  const json::Value rep = json::parse(r.out, Input_limits{}, "report");
+  EXPECT_EQ(rep.find("fields")->find("stable_push")->find("unsafe")->text, "1");
+  EXPECT_EQ(rep.find("fields")->find("stable_push")->find("lost")->text, "1");
+  for (const json::Value& d : rep.find("disagreements")->items) {
+    const std::string id = d.find("id")->text;
+    EXPECT_EQ(d.find("kind")->text, id == unstable_id ? "falsely stable" : "an uncertain stable push") << id;
+  }
+  r = run("compare '" + dir_ + "' -", "{\"id\": \"" + unstable_id + "\", \"stable_push\": \"yes\"}\n");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("stable_push: \"yes\" is not \"stable\""), std::string::npos) << r.err;
+  r = run("compare '" + dir_ + "' -", "{\"id\": \"golden.block_corner_mu_0\", \"stable_push\": \"stable\"}\n");
   EXPECT_EQ(r.code, 2);
 }
 

@@ -178,6 +178,15 @@ TEST(StressFamilies, KnownFamiliesLandOnTheirSideForEveryEpsilon) {
           EXPECT_EQ(c.mode, s.above ? Push_mode::slides_left : Push_mode::sticks) << f.name << " " << eps << "\n" << s.text;
           continue;
         }
+        if (f.question == stress::Question::push_stable) {  // stable iff below (PU-3 §8: the load is v through c)
+          const Scene sc = scene_of(s.text);
+          const Stable_push st = decide_stable_push(Support_model(sc), *sc.pusher);
+          EXPECT_EQ(st.verdict, s.above ? Stability::unstable : Stability::stable) << f.name << " " << eps << "\n" << s.text;
+          if (s.above) {
+            EXPECT_EQ(st.facet, Cone_facet::left_edge) << f.name << " " << eps << "\n" << s.text;
+          }
+          continue;
+        }
         if (f.question == stress::Question::push) {  // ccw iff above, by the velocity's vote (PU-1)
           const Scene sc = scene_of(s.text);
           const Rotation r = decide_push(Support_model(sc), *sc.pusher).rotation;
