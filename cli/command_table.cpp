@@ -187,7 +187,8 @@ const Option kSides{"sides", "N", "polygon sides, even, 4..4096 (default 32)",
                     [](Options& o, S n, S v) { o.sides = sides_value(n, v, kMaxSides); }};
 const Option kPushContact{"contact", nullptr,
                           "also the contact mode: sticks, slides left or right (a support of points with every force "
-                          "given), and the sticking motion's rotation rate, certified",
+                          "given), and the sticking motion's rotation rate, certified; with forces not given, depends "
+                          "(two distributions whose modes differ) where the extreme distributions show it",
                           [](Options& o, S, S) { o.push.contact = true; }};
 const Option kPushRegion{"region", nullptr,
                          "a line pusher: also its stable region — the rotation centres of each sense certified stable "

@@ -205,6 +205,12 @@ void write_push(Json_writer& w, const Push_item& r) {
   if (a.contact) {
     const Push_contact& c = *a.contact;
     w.key("contact").object().member("mode", push_mode_name(c.mode));
+    if (c.mode == Push_mode::depends) {  // two distributions of F whose certified modes differ
+      w.key("witnesses").array();
+      for (const Push_contact& k : c.witnesses)
+        w.object().key("forces").rationals(k.forces).member("mode", push_mode_name(k.mode)).end_object();
+      w.end_array();
+    }
     if (c.mode == Push_mode::sticks || c.mode == Push_mode::impending) {
       // the body moves with the pusher: its twist (vx + ω py, vy − ω px, ω) for ω in the bracket
       w.key("omega").array().rational(c.omega_lo).rational(c.omega_hi).end_array();
@@ -321,7 +327,13 @@ std::string push_human(const Push_item& r, const std::string& source) {
   if (a.contact) {
     const Push_contact& c = *a.contact;
     s << "contact: " << push_mode_name(c.mode);
-    if (c.mode == Push_mode::sticks || c.mode == Push_mode::impending) {
+    if (c.mode == Push_mode::depends) {
+      s << " — the distributions of the support's forces do not all do one thing:";
+      for (std::size_t k = 0; k < c.witnesses.size(); ++k)
+        s << (k ? ";" : "") << " under the forces " << vec_text(c.witnesses[k].forces) << " it "
+          << push_mode_name(c.witnesses[k].mode);
+      s << " (each certified)\n";
+    } else if (c.mode == Push_mode::sticks || c.mode == Push_mode::impending) {
       s << (c.mode == Push_mode::sticks ? " — the body moves with the pusher" : " — the force on a cone edge exactly");
       if (c.pivot) {
         const Support_point& sp = r.scene.support->points[*c.pivot];

@@ -578,9 +578,10 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
         // or the wrong edge), lost where it says undecided; the reference "impending" (the force on a cone edge
         // exactly) is the boundary, where a side is a convention.
         if (v.type != json::Type::string || (v.text != "sticks" && v.text != "impending" && v.text != "slides left" &&
-                                             v.text != "slides right" && v.text != "undecided"))
+                                             v.text != "slides right" && v.text != "depends" && v.text != "undecided"))
           throw Input_error(where + ": " + json::text_of(v) +
-                            " is not \"sticks\", \"impending\", \"slides left\", \"slides right\", \"undecided\" or null");
+                            " is not \"sticks\", \"impending\", \"slides left\", \"slides right\", \"depends\", "
+                            "\"undecided\" or null");
         if (!ref.has_contact)
           throw Input_error(where + ": scene \"" + a.id + "\" has no contact mode (no pusher on support points with every force given)");
         if (ref.contact_mode.empty()) continue;  // the corpus has no certified answer: nothing to compare with
@@ -593,7 +594,9 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
           Disagreement d;
           d.reference = ref.contact_mode;
           d.answer = v.text;
-          d.unsafe = v.text != "undecided";
+          // (a mode where the reference "depends" claims a certainty that does not hold; "depends" where it is certain
+          // is lost, as undecided)
+          d.unsafe = v.text != "undecided" && v.text != "depends";
           d.kind = d.unsafe ? (v.text == "sticks" ? "falsely sticks" : "a wrong contact mode") : "an uncertain contact mode";
           disagree(std::move(d));
         }

@@ -203,5 +203,87 @@ TEST(PushLocus, ContainsTheMotionOfEveryKnownDistribution) {
               checked[1], checked[2], translating);
 }
 
+// [PU-2 over F] Forces not given: the contact mode at F's extreme distributions; two that differ prove "depends". The
+// square with a fifth leg at (0, 1/2), W = 4 at the origin, pushed at (1/2, −1) with μ 1/4 along y: under the
+// diagonal legs (2, 0, 2, 0, 0) the contact slides left, under (0, 2, 0, 2, 0) it sticks — each confirmed by
+// `push --contact` on the scene with those forces given; the certificate's witnesses tampered with are refused.
+// Then 200 random supports of 4–6 legs with forces not given (fixed seed): every "depends" has witnesses in F whose
+// known scenes' own contact modes are the claimed ones, and differ.
+TEST(PushContactOverF, DependsWithTwoCertifiedDistributions) {
+  const auto with_forces = [](const std::vector<std::string>& f) {
+    std::string legs;
+    const char* at[5] = {"[-1, -1]", "[1, -1]", "[1, 1]", "[-1, 1]", "[0, \"1/2\"]"};
+    for (int i = 0; i < 5; ++i) legs += std::string(i ? ", " : "") + "{\"at\": " + at[i] + (f.empty() ? "" : ", \"force\": " + f[i]) + "}";
+    return R"({"wrenchkit": 1, "body": {"outline": [[-1, -1], [1, -1], [1, 1], [-1, 1]]}, "support": {"mu": "1/2", )" +
+           std::string(f.empty() ? R"("weight": 4, "pressure_center": [0, 0], )" : "") + R"("points": [)" + legs +
+           R"(]}, "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": "1/4", "velocity": [0, 1]}})";
+  };
+  Push_query q;
+  q.contact = true;
+  const std::string scene = with_forces({});
+  const Push_item r = answer_push(scene, "test", Request{}, q);
+  ASSERT_EQ(r.status, Status::answered) << r.message;
+  ASSERT_TRUE(r.push.contact);
+  const Push_contact& c = *r.push.contact;
+  ASSERT_EQ(c.mode, Push_mode::depends) << c.why;
+  ASSERT_EQ(c.witnesses.size(), 2u);
+  for (const Push_contact& w : c.witnesses) {
+    std::vector<std::string> f;
+    for (const Rational& x : w.forces) f.push_back("\"" + x.get_str() + "\"");
+    const Push_item k = answer_push(with_forces(f), "test", Request{}, q);
+    ASSERT_EQ(k.status, Status::answered) << k.message;
+    EXPECT_EQ(k.push.contact->mode, w.mode);
+  }
+  EXPECT_EQ(c.witnesses[0].mode, Push_mode::slides_left);
+  EXPECT_EQ(c.witnesses[1].mode, Push_mode::sticks);
+  ASSERT_FALSE(r.certificate.empty());
+  EXPECT_TRUE(test::checker_accepts(scene, r.certificate));
+  EXPECT_TRUE(test::checker_refuses_edit(scene, r.certificate, R"("forces": ["2", "0", "2", "0", "0"])",
+                                         R"("forces": ["1", "0", "2", "0", "0"])", "the forces sum to 3, not the weight 4"));
+  EXPECT_TRUE(test::checker_refuses_edit(scene, r.certificate, R"("mode": "depends")", R"("mode": "sticks")",
+                                         "a contact needs \"mode\", \"bits\" and \"omega\""));
+  EXPECT_TRUE(test::checker_refuses_edit(scene, r.certificate, R"("mode": "slides left")", R"("mode": "sticks")",
+                                         "contact.witnesses: \"depends\" needs two distributions whose contact modes differ"));
+
+  std::mt19937_64 rng(20261130);
+  std::uniform_int_distribution<int> coord(-3, 3), count(4, 6), at(-19, 19), vel(-2, 2);
+  int depends = 0;
+  for (int sc = 0; sc < 200; ++sc) {
+    const std::uint64_t seed = rng();
+    std::mt19937_64 g(seed);
+    const int k = count(g);
+    std::vector<std::array<int, 2>> legs;
+    for (int i = 0; i < k; ++i) legs.push_back({coord(g), coord(g)});
+    const int mu = 1 + static_cast<int>(g() % 4), vx = vel(g), px = at(g);
+    const auto text = [&](const std::vector<std::string>& f) {
+      std::ostringstream t;
+      t << R"({"wrenchkit": 1, "body": {"outline": [[-5, -5], [5, -5], [5, 5], [-5, 5]]}, "support": {"mu": "1/2", )";
+      if (f.empty()) t << R"("weight": 1, "pressure_center": [")" << legs[0][0] + legs[1][0] << R"(/2", ")"
+                       << legs[0][1] + legs[1][1] << R"(/2"], )";
+      t << R"("points": [)";
+      for (int i = 0; i < k; ++i)
+        t << (i ? ", " : "") << R"({"at": [)" << legs[i][0] << ", " << legs[i][1] << "]" << (f.empty() ? "" : ", \"force\": " + f[i]) << "}";
+      t << R"(]}, "pusher": {"at": [")" << px << R"(/4", -5], "normal": [0, 1], "mu": ")" << mu << R"(/4", "velocity": [)"
+        << vx << ", 1]}}";
+      return t.str();
+    };
+    const std::string unknown = text({});
+    const Push_item res = answer_push(unknown, "test", Request{}, q);
+    if (res.status != Status::answered) continue;  // (e.g. the two legs coincide: F empty is refused by the reader)
+    if (!res.push.contact || res.push.contact->mode != Push_mode::depends) continue;
+    ++depends;
+    ASSERT_FALSE(res.certificate.empty()) << "seed " << seed;
+    for (const Push_contact& w : res.push.contact->witnesses) {
+      std::vector<std::string> f;
+      for (const Rational& x : w.forces) f.push_back("\"" + x.get_str() + "\"");
+      const Push_item kn = answer_push(text(f), "test", Request{}, q);
+      ASSERT_EQ(kn.status, Status::answered) << "seed " << seed << ": " << kn.message;
+      ASSERT_EQ(kn.push.contact->mode, w.mode) << "seed " << seed << "\n" << test::dump_failure(unknown, "contact_depends");
+    }
+  }
+  EXPECT_GT(depends, 5);  // not vacuous (12 with this seed)
+  std::printf("depends over F: %d of 200 random supports\n", depends);
+}
+
 }  // namespace
 }  // namespace wrenchkit

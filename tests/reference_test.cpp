@@ -902,8 +902,10 @@ TEST(ReferenceScenes, PushInTheCorpusAndCompared) {
     const std::string id = v.find("id")->text;
     lines.emplace(id, std::move(v));
   }
-  ASSERT_EQ(lines.size(), 5u);
+  ASSERT_EQ(lines.size(), 6u);
   const auto rotation = [&](const char* id) { return lines.at(id).find("push")->find("rotation")->text; };
+  EXPECT_EQ(rotation("legs_depends"), "ccw");
+  EXPECT_EQ(lines.at("legs_depends").find("push")->find("contact")->find("mode")->text, "depends");
   EXPECT_EQ(rotation("square_apart"), "ccw");
   EXPECT_EQ(rotation("square_slides"), "ccw");
   EXPECT_EQ(rotation("square_tie"), "none");
@@ -924,6 +926,15 @@ TEST(ReferenceScenes, PushInTheCorpusAndCompared) {
   EXPECT_EQ(f.find("agree")->text, "1");
   EXPECT_EQ(f.find("unsafe")->text, "2");  // plate cw (truth ccw); two_coefficients ccw (truth depends)
   EXPECT_EQ(f.find("lost")->text, "1");    // square_tie depends (truth none)
+  // the contact mode over forces not given: a certain mode where it depends is unsafe; depends itself agrees
+  r = run("compare --json '" + (d / "corpus").string() + "' -",
+          "{\"id\": \"legs_depends\", \"contact_mode\": \"sticks\"}\n{\"id\": \"square_apart\", \"contact_mode\": \"depends\"}\n");
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  const json::Value cm = json::parse(r.out, Input_limits{}, "report");
+  EXPECT_EQ(cm.find("fields")->find("contact_mode")->find("unsafe")->text, "1");
+  EXPECT_EQ(cm.find("fields")->find("contact_mode")->find("lost")->text, "1");
+  r = run("compare '" + (d / "corpus").string() + "' -", "{\"id\": \"legs_depends\", \"contact_mode\": \"depends\"}\n");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
   r = run("compare '" + (d / "corpus").string() + "' -", "{\"id\": \"plate\", \"rotation\": \"left\"}\n");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("rotation: \"left\" is not \"ccw\""), std::string::npos) << r.err;

@@ -18,6 +18,40 @@ void write_range(Json_writer& w, const F_range& r, bool lower_only) {
   w.end_object();
 }
 
+// §8.2: a contact mode and what proves it; "depends" (forces not given): its two witnesses, each with its distribution.
+void write_contact(Json_writer& w, const Push_contact& c) {
+  w.object();
+  if (!c.forces.empty()) w.key("forces").rationals(c.forces);  // a witness of "depends"
+  w.member("mode", push_mode_name(c.mode));
+  if (c.mode == Push_mode::depends) {
+    w.key("witnesses").array();
+    for (const Push_contact& k : c.witnesses) write_contact(w, k);
+    w.end_array().end_object();
+    return;
+  }
+  w.member("bits", c.bits);
+  w.key("omega").array().rational(c.omega_lo).rational(c.omega_hi).end_array();
+  if (c.pivot) {  // §8.2: the sticking motion a rotation about a support point (PU-2 §7–8)
+    w.member("pivot", *c.pivot);
+    if (c.force) w.key("force").array().rational(c.force->x).rational(c.force->y).end_array();  // sticks
+  }
+  if (c.has_tangent) w.key("tangent_omega").array().rational(c.tangent_lo).rational(c.tangent_hi).end_array();
+  if (c.tangent_pivot) w.member("tangent_pivot", *c.tangent_pivot);  // F(t) a facet's chord (PU-2 §8)
+  if (c.has_motion) {  // §8.2: the sliding motion (PU-2 §5)
+    w.key("sliding").object();
+    if (c.motion_pivot) w.member("pivot", *c.motion_pivot);  // the rotation about that support point (PU-2 §6)
+    w.key("slip").array().rational(c.slip_lo).rational(c.slip_hi).end_array();
+    if (!c.motion_pivot) {
+      w.key("slip_omega").array();
+      for (const auto& b : c.slip_omega) w.array().rational(b[0]).rational(b[1]).end_array();
+      w.end_array();
+    }
+    w.key("omega").array().rational(c.motion_lo).rational(c.motion_hi).end_array();
+    w.end_object();
+  }
+  w.end_object();
+}
+
 }  // namespace
 
 // §8.3: a line pusher's stable push (PU-3): the verdict and what proves it.
@@ -77,28 +111,8 @@ std::string push_certificate(const Push_answer& a) {
   }
   if (a.center) w.key("center").array().rational(a.center->x).rational(a.center->y).end_array();
   if (a.contact && a.contact->mode != Push_mode::undecided) {  // §8.2: the contact mode
-    const Push_contact& c = *a.contact;
-    w.key("contact").object().member("mode", push_mode_name(c.mode)).member("bits", c.bits);
-    w.key("omega").array().rational(c.omega_lo).rational(c.omega_hi).end_array();
-    if (c.pivot) {  // §8.2: the sticking motion a rotation about a support point (PU-2 §7–8)
-      w.member("pivot", *c.pivot);
-      if (c.force) w.key("force").array().rational(c.force->x).rational(c.force->y).end_array();  // sticks
-    }
-    if (c.has_tangent) w.key("tangent_omega").array().rational(c.tangent_lo).rational(c.tangent_hi).end_array();
-    if (c.tangent_pivot) w.member("tangent_pivot", *c.tangent_pivot);  // F(t) a facet's chord (PU-2 §8)
-    if (c.has_motion) {  // §8.2: the sliding motion (PU-2 §5)
-      w.key("sliding").object();
-      if (c.motion_pivot) w.member("pivot", *c.motion_pivot);  // the rotation about that support point (PU-2 §6)
-      w.key("slip").array().rational(c.slip_lo).rational(c.slip_hi).end_array();
-      if (!c.motion_pivot) {
-        w.key("slip_omega").array();
-        for (const auto& b : c.slip_omega) w.array().rational(b[0]).rational(b[1]).end_array();
-        w.end_array();
-      }
-      w.key("omega").array().rational(c.motion_lo).rational(c.motion_hi).end_array();
-      w.end_object();
-    }
-    w.end_object();
+    w.key("contact");
+    write_contact(w, *a.contact);
   }
   if (a.locus && a.locus->friction_centre) {  // §8.4: the rotation centres' pieces (their half-planes are the scene's)
     const Push_locus& g = *a.locus;

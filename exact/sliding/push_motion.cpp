@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/contact_generators.h"
+#include "exact/sliding/distribution.h"
 #include "exact/sliding/pushing.h"
 #include "exact/sliding/sliding.h"
 
@@ -19,6 +20,7 @@ const char* push_mode_name(Push_mode m) {
     case Push_mode::impending: return "impending";
     case Push_mode::slides_left: return "slides left";
     case Push_mode::slides_right: return "slides right";
+    case Push_mode::depends: return "depends";
     case Push_mode::undecided: return "undecided";
   }
   return "?";
@@ -600,16 +602,14 @@ Vec2 rotation_centre(const Vec2& p, const Vec2& u, const Rational& omega) {
   return {p.x - u.y / omega, p.y + u.x / omega};
 }
 
-Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance) {
+namespace {
+
+// PU-2 for the support points with forces `f` (every one given).
+Push_contact contact_mode_on(const Support& s, const std::vector<Rational>& f, const Pusher& pusher,
+                             const Rational& tolerance) {
   Push_contact r;
-  const Support& s = model.support();
-  if (!model.known() || !s.regions.empty()) {
-    r.why = "the contact mode is answered for support points with every force given (not yet for regions or forces "
-            "not given)";
-    return r;
-  }
   std::vector<Rho_point> pts;
-  for (std::size_t i = 0; i < s.points.size(); ++i) pts.push_back({s.points[i].at, s.mu_of(s.points[i]) * model.given()[i]});
+  for (std::size_t i = 0; i < s.points.size(); ++i) pts.push_back({s.points[i].at, s.mu_of(s.points[i]) * f[i]});
   const Contact& c = pusher.contact;
   const Vec2 p = c.at, u = pusher.velocity, t = rot90(c.normal);
   std::array<Vec2, 2> edge;  // left, right: the contacts' one construction
@@ -714,6 +714,46 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
   }
   if (r.mode == Push_mode::undecided && r.why.empty())
     r.why = "the sticking motion's force is within the resolution of a friction-cone edge (the boundary of sticking)";
+  return r;
+}
+
+}  // namespace
+
+Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance) {
+  const Support& s = model.support();
+  if (!s.regions.empty()) {
+    Push_contact r;
+    r.why = "the contact mode is answered for support points (not yet for regions)";
+    return r;
+  }
+  if (model.known()) return contact_mode_on(s, model.given(), pusher, tolerance);
+  // Forces not given: the mode at each extreme distribution of F (PU-2 each, certified); two that differ prove
+  // "depends". Agreeing everywhere proves nothing between them (the mode is not convex in the distribution).
+  Push_contact r;
+  if (model.admissible().unknown.size() > kMaxContactUnknowns) {
+    r.why = "the contact mode over forces not given is sought at F's extreme distributions, for at most " +
+            std::to_string(kMaxContactUnknowns) + " unknown forces";
+    return r;
+  }
+  const std::vector<std::vector<Rational>> corners = vertices(s, model.admissible());
+  std::optional<Push_contact> first;
+  std::size_t tried = 0;
+  for (const std::vector<Rational>& f : corners) {
+    if (++tried > kMaxContactCorners) break;
+    Push_contact k = contact_mode_on(s, f, pusher, tolerance);
+    if (k.mode == Push_mode::undecided || k.mode == Push_mode::impending) continue;
+    k.forces = f;
+    if (!first) {
+      first = std::move(k);
+    } else if (k.mode != first->mode) {
+      r.mode = Push_mode::depends;
+      r.witnesses = {std::move(*first), std::move(k)};
+      return r;
+    }
+  }
+  r.why = first ? std::string("every extreme distribution of F that was decided ") + push_mode_name(first->mode) +
+                      ", but the mode between them is not certified (it is not convex in the distribution)"
+                : "no extreme distribution of F had a certified contact mode";
   return r;
 }
 

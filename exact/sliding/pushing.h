@@ -74,8 +74,9 @@ struct Push_vote {
 // one edge, §8). Undecided: F (or a pivot's forces) within the resolution of a cone edge after narrowing, regions,
 // forces not given. `push --contact` (certificate §8.2).
 // impending: F exactly on a cone edge (only when exact: ω* = 0, a translation along v_p on the cone's edge).
-enum class Push_mode { sticks, impending, slides_left, slides_right, undecided };
-const char* push_mode_name(Push_mode m);  // "sticks", "impending", "slides left", "slides right", "undecided"
+// depends (forces not given): two extreme distributions of F whose modes differ, each certified (`witnesses`).
+enum class Push_mode { sticks, impending, slides_left, slides_right, depends, undecided };
+const char* push_mode_name(Push_mode m);  // "sticks", "impending", "slides left", "slides right", "depends", "undecided"
 
 struct Push_contact {
   Push_mode mode = Push_mode::undecided;
@@ -102,7 +103,14 @@ struct Push_contact {
   std::optional<Vec2> force;
   std::optional<std::size_t> motion_pivot;  // slides as a rotation about this support point (§6): slip, rate exact
   std::string motion_why;       // slides, but the motion not bracketed: the reason
+  // depends: two distributions of F (`forces`, one per support point) and each one's certified mode
+  std::vector<Rational> forces;
+  std::vector<Push_contact> witnesses;
 };
+// The contact mode over forces not given is sought at F's extreme distributions: at most this many unknown forces,
+// and this many distributions tried.
+constexpr std::size_t kMaxContactUnknowns = 12;
+constexpr std::size_t kMaxContactCorners = 64;
 Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance);
 
 // The centre of the body's rotation with velocity u at the point p and rate ω ≠ 0: p + rot90(u)/ω, the point x where

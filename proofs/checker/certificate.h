@@ -182,8 +182,11 @@ struct Push_part {
   Q center[2];
   bool has_turns = false;
   std::vector<Q> turns_ccw, turns_cw;
-  // "contact" (§8.2): the contact mode, the sticking candidate's ω bracket and, sliding, the tangent's
+  // "contact" (§8.2): the contact mode, the sticking candidate's ω bracket and, sliding, the tangent's; "depends" (forces
+  // not given): two witnesses, each a distribution (`witness_forces`) with its own contact claim
   bool has_contact = false;
+  std::vector<Q> witness_forces;
+  std::vector<std::unique_ptr<Push_part>> contact_witnesses;
   std::string_view mode;
   std::size_t bits = 0;
   Q omega[2], tangent[2];

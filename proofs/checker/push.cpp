@@ -295,18 +295,10 @@ void check_sliding(const Push_part& c, const std::vector<Rho>& pts, const Q (&p)
   }
 }
 
-// §8.2: the contact mode claimed in "contact", for support points with every force given.
-void check_contact(const Push_part& c, const Support& s, const Limits& lim, const Q (&p)[2], const Q (&n)[2],
-                   const Q& mu, const Q (&v)[2]) {
+// §8.2: the contact mode claimed in "contact" for the support points with the forces `pts` (every one given).
+void check_contact_on(const Push_part& c, const std::vector<Rho>& pts, const Q (&p)[2], const Q (&n)[2], const Q& mu,
+                      const Q (&v)[2]) {
   if (c.bits < 16 || c.bits > 4096) throw Failure{"contact.bits: expected bits from 16 to 4096"};
-  if (!s.regions.empty() || s.unknown != 0)
-    throw Failure{"contact: the contact mode is claimed for support points with every force given"};
-  std::vector<Rho> pts;
-  for (const Support_point& sp : s.points) {
-    Point_values scratch;
-    const Point_values& pv = values(sp, lim, scratch);
-    pts.push_back({pv.x, pv.y, Q(pv.mu * pv.f)});
-  }
   const Q eL[2] = {n[0] - mu * n[1], n[1] + mu * n[0]}, eR[2] = {n[0] + mu * n[1], n[1] - mu * n[0]};
   const Q rl[2] = {-eL[1], eL[0]}, rr[2] = {-eR[1], eR[0]};  // rot90: rot90(a) . F = a x F
   const Q lr[2] = {rr[0], rr[1]}, ll[2] = {-rl[0], -rl[1]};  // e_R x F > 0, F x e_L > 0: inside the cone
@@ -359,7 +351,122 @@ void check_contact(const Push_part& c, const Support& s, const Limits& lim, cons
   }
 }
 
+// §8.2: every force given — the contact mode on them; forces not given — "depends": two distributions of F whose
+// certified modes differ, each checked as if its forces were the scene's.
+void check_contact(const Push_part& c, const Support& s, const Support_witnesses& sw, const Limits& lim, const Q (&p)[2],
+                   const Q (&n)[2], const Q& mu, const Q (&v)[2]) {
+  if (!s.regions.empty()) throw Failure{"contact: the contact mode is claimed for support points (no regions)"};
+  const auto on = [&](const Push_part& k, const std::vector<Q>* forces) {
+    std::vector<Rho> pts;
+    for (std::size_t i = 0; i < s.points.size(); ++i) {
+      Point_values scratch;
+      const Point_values& pv = values(s.points[i], lim, scratch);
+      pts.push_back({pv.x, pv.y, Q(pv.mu * (forces ? (*forces)[i] : pv.f))});
+    }
+    check_contact_on(k, pts, p, n, mu, v);
+  };
+  if (c.mode != "depends") {
+    if (s.unknown != 0)
+      throw Failure{"contact: a contact mode is claimed for support points with every force given (else \"depends\")"};
+    return on(c, nullptr);
+  }
+  if (s.unknown == 0) throw Failure{"contact: \"depends\" needs a support force that is not given"};
+  if (c.contact_witnesses.size() != 2 || c.contact_witnesses[0]->mode == c.contact_witnesses[1]->mode)
+    throw Failure{"contact.witnesses: \"depends\" needs two distributions whose contact modes differ"};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Push_part& w = *c.contact_witnesses[k];
+    sw.in_f(w.witness_forces, ("contact.witnesses[" + std::to_string(k) + "].forces").c_str());
+    on(w, &w.witness_forces);
+  }
+}
+
 }  // namespace
+
+// §8.2's "contact" (or, `witness`, one of a "depends" claim's two distributions with its own contact mode and "forces").
+static void read_contact(Reader& r, Push_part& p, bool witness) {
+  p.has_contact = true;
+  begin_object(r, "expected an object {\"mode\", \"bits\", \"omega\", \"tangent_omega\"?}");
+  std::string_view k;
+  unsigned seen = 0;
+  while (r.next_key(k)) {
+    if (k == "mode") {
+      seen |= 1;
+      const char* modes = witness ? "expected \"sticks\", \"impending\", \"slides left\" or \"slides right\""
+                                  : "expected \"sticks\", \"impending\", \"slides left\", \"slides right\" or \"depends\"";
+      if (r.peek() != Reader::Kind::string) r.fail(modes);
+      p.mode = r.string_view();
+      if (p.mode != "sticks" && p.mode != "impending" && p.mode != "slides left" && p.mode != "slides right" &&
+          (witness || p.mode != "depends"))
+        r.fail(modes);
+    } else if (k == "forces" && witness) {
+      seen |= 16;
+      p.witness_forces = read_distribution(r);
+    } else if (k == "witnesses" && !witness) {
+      seen |= 32;
+      begin_array(r, "expected the two distributions [{\"forces\", \"mode\", …}, {…}]");
+      while (r.next_item()) {
+        if (p.contact_witnesses.size() == 2) r.fail("\"depends\" has two witnesses");
+        read_contact(r, *p.contact_witnesses.emplace_back(std::make_unique<Push_part>()), true);
+      }
+    } else if (k == "bits") {
+      seen |= 2;
+      p.bits = read_index(r, "number of bits");  // (its range: check_contact, once the certificate is read)
+    } else if (k == "omega") {
+      seen |= 4;
+      read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.omega[m] = read_rational(r); });
+    } else if (k == "pivot") {
+      p.has_stick_pivot = true;
+      p.stick_pivot = read_index(r, "support point index");
+    } else if (k == "force") {
+      seen |= 8;
+      read_fixed(r, 2, "a force direction [fx, fy]", [&](std::size_t m) { p.force[m] = read_rational(r); });
+    } else if (k == "tangent_pivot") {
+      p.has_tangent_pivot = true;
+      p.tangent_pivot = read_index(r, "support point index");
+    } else if (k == "tangent_omega") {
+      p.has_tangent = true;
+      read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.tangent[m] = read_rational(r); });
+    } else if (k == "sliding") {
+      p.has_sliding = true;
+      begin_object(r, "expected an object {\"slip\", \"slip_omega\", \"omega\"}");
+      std::string_view j;
+      unsigned got = 0;
+      while (r.next_key(j)) {
+        if (j == "slip") {
+          got |= 1;
+          read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.slip[m] = read_rational(r); });
+        } else if (j == "pivot") {
+          p.has_pivot = true;
+          p.pivot = read_index(r, "support point index");
+        } else if (j == "slip_omega") {
+          p.has_slip_omega = true;
+          read_fixed(r, 2, "two intervals (one per end of the slip)", [&](std::size_t e) {
+            read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.slip_omega[e][m] = read_rational(r); });
+          });
+        } else if (j == "omega") {
+          got |= 4;
+          read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.motion[m] = read_rational(r); });
+        } else {
+          r.fail("unknown key " + quote(j), true);
+        }
+      }
+      if (got != 5 || p.has_pivot == p.has_slip_omega)
+        r.fail("a sliding motion needs \"slip\", \"omega\" and either \"slip_omega\" or \"pivot\"");
+    } else {
+      r.fail("unknown key " + quote(k), true);
+    }
+  }
+  if (p.mode == "depends") {
+    if (seen != 33) r.fail("\"depends\" has \"mode\" and \"witnesses\" only");
+    return;
+  }
+  if (witness && !(seen & 16)) r.fail("a witness of \"depends\" needs its \"forces\"");
+  if ((seen & 7) != 7) r.fail("a contact needs \"mode\", \"bits\" and \"omega\"");
+  // "pivot": the sticking motion a rotation about a support point — sticking with "force" (§7), or sliding (§8)
+  const bool sticks = p.mode == "sticks", sliding = p.mode == "slides left" || p.mode == "slides right";
+  if ((seen & 8) && !(p.has_stick_pivot && sticks)) r.fail("\"force\" is a sticking pivot's (with \"pivot\", \"mode\": \"sticks\")");
+  if (p.has_stick_pivot && !sliding && !(seen & 8)) r.fail("a sticking pivot needs both \"pivot\" and \"force\"");
+}
 
 void read_push_member(Reader& r, std::string_view key, Certificate& c) {
   Push_part& p = c.pu();
@@ -378,70 +485,7 @@ void read_push_member(Reader& r, std::string_view key, Certificate& c) {
     p.has_center = true;
     read_fixed(r, 2, "a point [x, y]", [&](std::size_t k) { p.center[k] = read_rational(r); });
   } else if (key == "contact") {
-    p.has_contact = true;
-    begin_object(r, "expected an object {\"mode\", \"bits\", \"omega\", \"tangent_omega\"?}");
-    std::string_view k;
-    unsigned seen = 0;
-    while (r.next_key(k)) {
-      if (k == "mode") {
-        seen |= 1;
-        if (r.peek() != Reader::Kind::string) r.fail("expected \"sticks\", \"impending\", \"slides left\" or \"slides right\"");
-        p.mode = r.string_view();
-        if (p.mode != "sticks" && p.mode != "impending" && p.mode != "slides left" && p.mode != "slides right")
-          r.fail("expected \"sticks\", \"impending\", \"slides left\" or \"slides right\"");
-      } else if (k == "bits") {
-        seen |= 2;
-        p.bits = read_index(r, "number of bits");  // (its range: check_contact, once the certificate is read)
-      } else if (k == "omega") {
-        seen |= 4;
-        read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.omega[m] = read_rational(r); });
-      } else if (k == "pivot") {
-        p.has_stick_pivot = true;
-        p.stick_pivot = read_index(r, "support point index");
-      } else if (k == "force") {
-        seen |= 8;
-        read_fixed(r, 2, "a force direction [fx, fy]", [&](std::size_t m) { p.force[m] = read_rational(r); });
-      } else if (k == "tangent_pivot") {
-        p.has_tangent_pivot = true;
-        p.tangent_pivot = read_index(r, "support point index");
-      } else if (k == "tangent_omega") {
-        p.has_tangent = true;
-        read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.tangent[m] = read_rational(r); });
-      } else if (k == "sliding") {
-        p.has_sliding = true;
-        begin_object(r, "expected an object {\"slip\", \"slip_omega\", \"omega\"}");
-        std::string_view j;
-        unsigned got = 0;
-        while (r.next_key(j)) {
-          if (j == "slip") {
-            got |= 1;
-            read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.slip[m] = read_rational(r); });
-          } else if (j == "pivot") {
-            p.has_pivot = true;
-            p.pivot = read_index(r, "support point index");
-          } else if (j == "slip_omega") {
-            p.has_slip_omega = true;
-            read_fixed(r, 2, "two intervals (one per end of the slip)", [&](std::size_t e) {
-              read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.slip_omega[e][m] = read_rational(r); });
-            });
-          } else if (j == "omega") {
-            got |= 4;
-            read_fixed(r, 2, "an interval [lower, upper]", [&](std::size_t m) { p.motion[m] = read_rational(r); });
-          } else {
-            r.fail("unknown key " + quote(j), true);
-          }
-        }
-        if (got != 5 || p.has_pivot == p.has_slip_omega)
-          r.fail("a sliding motion needs \"slip\", \"omega\" and either \"slip_omega\" or \"pivot\"");
-      } else {
-        r.fail("unknown key " + quote(k), true);
-      }
-    }
-    if ((seen & 7) != 7) r.fail("a contact needs \"mode\", \"bits\" and \"omega\"");
-    // "pivot": the sticking motion a rotation about a support point — sticking with "force" (§7), or sliding (§8)
-    const bool sticks = p.mode == "sticks", sliding = p.mode == "slides left" || p.mode == "slides right";
-    if ((seen & 8) && !(p.has_stick_pivot && sticks)) r.fail("\"force\" is a sticking pivot's (with \"pivot\", \"mode\": \"sticks\")");
-    if (p.has_stick_pivot && !sliding && !(seen & 8)) r.fail("a sticking pivot needs both \"pivot\" and \"force\"");
+    read_contact(r, p, false);
   } else if (key == "region" || key == "stable") {  // §8.3 (stable_push.cpp)
     read_line_push_member(r, key, p);
   } else if (key == "locus") {  // §8.4 (push_locus.cpp)
@@ -555,7 +599,7 @@ void check_push(const Certificate& c, const Scene& scene, const Limits& lim) {
                     " (every coefficient is the same: the centre of friction)"};
     }
   }
-  if (p.has_contact) check_contact(p, s, lim, {px, py}, {nx, ny}, mu, v);
+  if (p.has_contact) check_contact(p, s, sw, lim, {px, py}, {nx, ny}, mu, v);
   if (p.has_locus) check_locus(p, scene, lim);  // (on the rotation claimed: the rest of this check proves it)
   if (p.rotation == "depends") {
     if (!p.has_turns) throw Failure{"missing required key \"turns\" (two distributions that turn the body apart)"};

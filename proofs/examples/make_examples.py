@@ -253,6 +253,13 @@ SCENES = {
                             "support": {"mu": "1/2", "weight": 4, "pressure_center": [0, 0],
                                         "points": [{"at": at} for at in CORNERS]},
                             "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": "1/4", "velocity": [0, 1]}},
+    "push_contact_depends": {"wrenchkit": 1, "name": "the square on four legs and a fifth at (0, 1/2), forces not given "
+                             "(W = 4 at the origin, mu = 1/2), pushed at (1/2, -1) with mu = 1/4 along y: the contact "
+                             "slides under some distributions and sticks under others",
+                             "body": SQUARE_OUTLINE,
+                             "support": {"mu": "1/2", "weight": 4, "pressure_center": [0, 0],
+                                         "points": [{"at": at} for at in CORNERS] + [{"at": [0, "1/2"]}]},
+                             "pusher": {"at": ["1/2", -1], "normal": [0, 1], "mu": "1/4", "velocity": [0, 1]}},
     "push_square_centre": {"wrenchkit": 1, "name": "the square on four legs pushed frictionless at (0, -1) along "
                            "(1, 1): both edges pass through the centre of friction, the body translates",
                            "body": SQUARE_OUTLINE,
@@ -524,6 +531,10 @@ FENCE_CLOSE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "c
 # fixed point of PU-3 section 6 at alpha = |c - p| = sqrt(5)/2) at x = -(2/3)(T + 1/2); the slides' pieces add the
 # load along an edge (the legs' extent) and the slip's side of the line through p across v. push_square_unknown: the
 # same bounds over every distribution of the unknown legs (c the centre of pressure). push_slide: "none", no centre.
+# The contact mode over forces not given (section 8.2, "depends"): push_contact_depends — under the legs (2, 0, 2, 0, 0)
+# (the diagonal through (-1, -1) and (1, 1)) the contact slides left, under (0, 2, 0, 2, 0) it sticks, each certified
+# as PU-2 does for given forces, and both distributions are in F (weight 4, pressure centre 0).
+CONTACT_DEPENDS = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2", "dual_lower": ["-1/2", "0", "0"]}, "votes": [{"lower": "1/2", "dual_lower": ["-1/8", "1/2", "1/8"], "upper": "1/2", "dual_upper": ["1/8", "-1/2", "-1/8"]}, {"lower": "3/2", "dual_lower": ["-3/8", "1/2", "-1/8"], "upper": "3/2", "dual_upper": ["3/8", "-1/2", "1/8"]}, {"lower": "1", "dual_lower": ["-1/4", "1/2", "0"], "upper": "1", "dual_upper": ["1/4", "-1/2", "0"]}], "center": ["0", "0"], "contact": {"mode": "depends", "witnesses": [{"forces": ["2", "0", "2", "0", "0"], "mode": "slides left", "bits": 64, "omega": ["1718065340023205/4503599627370496", "1718065340025457/4503599627370496"], "tangent_omega": ["-3791913694410813/9007199254740992", "-3791913694406309/9007199254740992"], "sliding": {"slip": ["-4486075893447883/144115188075855872", "-4486075893375825/144115188075855872"], "slip_omega": [["7149683455126491/18014398509481984", "7149683455127277/18014398509481984"], ["7149683455123011/18014398509481984", "7149683455123797/18014398509481984"]], "omega": ["7149683455110553168983800199/18014398509481984000000000000", "7149683455139734831016199801/18014398509481984000000000000"]}}, {"forces": ["0", "2", "0", "2", "0"], "mode": "sticks", "bits": 64, "omega": ["6293520118068495/36028797018963968", "6293520118086509/36028797018963968"]}]}}''')
 LOCUS_SQUARE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2"}, "votes": [{"lower": "-1", "upper": "-1"}, {"lower": "3", "upper": "3"}, {"lower": "3", "upper": "3"}], "center": ["0", "0"], "locus": {"R_hi": "707107/500000", "alpha_hi": "559017/500000", "T": "2909923/1000000", "ccw": [{"mode": "sticks", "bounded": true, "polygon": [["-1136641/500000", "886641/500000"], ["1/12", "-7/12"]]}, {"mode": "slides left", "bounded": true, "polygon": [["-5/4", "3/4"], ["1/12", "-7/12"], ["1/2", "-3/8"], ["1/2", "5/2"]]}, {"mode": "slides right", "bounded": true, "polygon": [["-1636641/500000", "636641/500000"], ["-11/12", "-13/12"], ["1/12", "-7/12"], ["-1136641/500000", "886641/500000"]]}], "cw": null, "arm_hi": "1886641/500000"}}''')
 LOCUS_UNKNOWN = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2", "dual_lower": ["-1/2", "0", "0"]}, "votes": [{"lower": "1/2", "dual_lower": ["-1/8", "1/2", "1/8"], "upper": "1/2", "dual_upper": ["1/8", "-1/2", "-1/8"]}, {"lower": "3/2", "dual_lower": ["-3/8", "1/2", "-1/8"], "upper": "3/2", "dual_upper": ["3/8", "-1/2", "1/8"]}, {"lower": "1", "dual_lower": ["-1/4", "1/2", "0"], "upper": "1", "dual_upper": ["1/4", "-1/2", "0"]}], "center": ["0", "0"], "locus": {"R_hi": "707107/500000", "alpha_hi": "559017/500000", "T": "2909923/1000000", "ccw": [{"mode": "sticks", "bounded": true, "polygon": [["-3909923/500000", "-1"], ["-3/4", "-1"]]}, {"mode": "slides left", "bounded": true, "polygon": [["-3909923/500000", "-1"], ["-3/4", "-1"], ["1/2", "-3/8"], ["1/2", "11/8"], ["-1659923/250000", "-409923/1000000"]]}, {"mode": "slides right", "bounded": true, "polygon": [["-1", "-1"], ["-5/6", "-25/24"], ["-3/4", "-1"]]}], "cw": null, "arm_hi": "4159923/500000"}}''')
 LOCUS_TRANSLATES = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "2"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "2", "upper": "2"}, {"lower": "-1", "upper": "-1"}], "center": ["0", "0"], "locus": {"R_hi": "707107/500000", "alpha_hi": "559017/500000", "T": "2909923/1000000", "ccw": null, "cw": null}}''')
@@ -1055,6 +1066,11 @@ CERTS = [
     # pushing (certificate-format.md section 8, format 6)
     ("push_square", "ccw", "valid", PUSH_SQUARE),
     ("push_square", "locus", "valid", LOCUS_SQUARE),
+    ("push_contact_depends", "depends", "valid", CONTACT_DEPENDS),
+    ("push_contact_depends", "witness_not_in_f", "invalid:F|contact.witnesses[0].forces: the forces sum to 3, not the weight 4",
+     tamper(CONTACT_DEPENDS, ["contact", "witnesses", 0, "forces"], ["1", "0", "2", "0", "0"])),
+    ("push_contact_depends", "witnesses_alike", 'invalid:contact|contact.witnesses: "depends" needs two distributions whose contact modes differ',
+     tamper(CONTACT_DEPENDS, ["contact", "witnesses", 1], CONTACT_DEPENDS["contact"]["witnesses"][0])),
     ("push_square", "locus_polygon_cut", "invalid:polygon|locus.ccw[1].polygon: the vertex (1/2, 5/2) of the centres' bound is outside it",
      tamper(LOCUS_SQUARE, ["locus", "ccw", 1, "polygon", 3], ["1/2", "2"])),
     ("push_square", "locus_arm_short", "invalid:arm|locus.arm_hi: 3 is below a possible centre's distance",
@@ -2533,7 +2549,21 @@ def verify_push(scene, cert):
                            cert["rotation"])
         if why:
             return why
-    if "contact" in cert:
+    if "contact" in cert and cert["contact"].get("mode") == "depends":  # two distributions of F, modes apart
+        cc = cert["contact"]
+        if set(cc) != {"mode", "witnesses"} or known or len(cc["witnesses"]) != 2:
+            return "contact"
+        if cc["witnesses"][0].get("mode") == cc["witnesses"][1].get("mode"):
+            return "contact"
+        for wt in cc["witnesses"]:
+            f = [rational(x) for x in wt.get("forces", [])]
+            if not in_F(f):
+                return "F"
+            why = verify_contact({k: x for k, x in wt.items() if k != "forces"},
+                                 [(q[0], q[1], q[2], fi) for q, fi in zip(pts, f)], True, (px, py), (nx, ny), mu, (vx, vy))
+            if why:
+                return why
+    elif "contact" in cert:
         why = verify_contact(cert["contact"], pts, known, (px, py), (nx, ny), mu, (vx, vy))
         if why:
             return why

@@ -341,7 +341,8 @@ def push(scene, *, contact=False, region=False, locus=False):
     rotation rate, exact when "pivot" names the support point it turns about; sticking about a support point (the
     pusher's velocity perpendicular to the line to it), "pivot" with the exact "omega" and "force", a force of that
     point's facet strictly inside the friction cone (Fractions); sliding from such a facet (every force of it beyond
-    the edge), "sticking_pivot" and its exact "sticking_omega".
+    the edge), "sticking_pivot" and its exact "sticking_omega". Forces not given: "depends" with "witnesses": two
+    distributions of the support's forces ("forces", Fractions) whose certified modes ("mode") differ.
 
     A line pusher ("segment": [[x1, y1], [x2, y2]], "velocity" at its middle, "omega" its rotation rate) answers
     "stable": {"verdict": "stable" | "unstable" | "undecided", "why", "rotation_centre" (turning), "boundary" (stable
@@ -405,6 +406,8 @@ def push(scene, *, contact=False, region=False, locus=False):
     for k in ("omega", "slip", "force", "sticking_omega"):
         if "contact" in r and k in r["contact"]:
             r["contact"][k] = tuple(fr(x) for x in r["contact"][k])
+    for w in r.get("contact", {}).get("witnesses", []):
+        w["forces"] = [fr(x) for x in w["forces"]]
     return r
 
 
