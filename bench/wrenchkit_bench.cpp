@@ -832,6 +832,18 @@ void register_push() {
       R"({"wrenchkit": 1, "support": {"mu": 0.5, "weight": 10, "pressure_center": [0, 0], "points": [)" +
       std::regex_replace(unknown_legs, std::regex(R"(, "mu": 0\.[36])"), "") +
       R"(]}, "pusher": {"at": [0.25, -2.5], "normal": [0.1, 1], "mu": 0.3, "velocity": [0.4, 1]}})");
+  // the contact mode over forces not given (PU-2 §9): the extreme distributions of F until two differ ("depends")
+  benchmark::RegisterBenchmark("push/10_legs_forces_not_given/contact_with_certificate", [unknown](benchmark::State& st) {
+    Push_query q;
+    q.contact = true;
+    std::string label;
+    for (auto _ : st) {
+      const Push_item r = answer_push(*unknown, "legs", Request{}, q);
+      if (r.status != Status::answered || !r.push.contact) throw std::logic_error("push --contact: " + r.message);
+      label = push_mode_name(r.push.contact->mode);
+    }
+    st.SetLabel(label);
+  })->Unit(benchmark::kMicrosecond);
   for (const auto& [name, text] : {std::pair{"push/10_legs/locus_with_certificate", known},
                                    std::pair{"push/10_legs_forces_not_given/locus_with_certificate", one_mu}})
     benchmark::RegisterBenchmark(name, [text = text](benchmark::State& st) {

@@ -991,15 +991,10 @@ Family_scene fixture_pin(const Family& fam, double eps, Rng& r) {
   return out;
 }
 
-// The scene of the pushing families: 3–8 support points with 3-decimal places, forces and coefficients (every force
-// given: the centre of friction c exact), a pusher at a 3-decimal point p with μ = 1/2, d = c − p, its normal from
-// `normal`(d), and its velocity d + s·10^-k·rot90(d) — s = 1 when `above` and `ccw_above`, or when neither; else −1.
-template <class Normal>
-Family_scene push_family(const Family& fam, double eps, Rng& r, bool ccw_above, Normal normal) {
-  const int k = decimal_exponent(eps);
-  Family_scene out = known_side(fam, eps, r);
+// The pushing families' support: 3–8 points with 3-decimal places, forces and coefficients (every force given), as
+// JSON `points`; returns the centre of friction c, exact.
+std::pair<Rational, Rational> pushed_support(Rng& r, std::string& points) {
   const int n = r.integer(3, 8);
-  std::string points;
   Rational mx = 0, my = 0, d = 0;
   for (int i = 0; i < n; ++i) {
     const Rational x = short_decimal(r, -2000, 2000, 3), y = short_decimal(r, -2000, 2000, 3);
@@ -1008,8 +1003,20 @@ Family_scene push_family(const Family& fam, double eps, Rng& r, bool ccw_above, 
     points += std::string(i ? ", " : "") + "{\"at\": [" + exact_text(x) + ", " + exact_text(y) + "], \"force\": " +
               exact_text(f) + ", \"mu\": " + exact_text(mu) + "}";
   }
+  return {mx / d, my / d};
+}
+
+// The scene of the pushing families: 3–8 support points with 3-decimal places, forces and coefficients (every force
+// given: the centre of friction c exact), a pusher at a 3-decimal point p with μ = 1/2, d = c − p, its normal from
+// `normal`(d), and its velocity d + s·10^-k·rot90(d) — s = 1 when `above` and `ccw_above`, or when neither; else −1.
+template <class Normal>
+Family_scene push_family(const Family& fam, double eps, Rng& r, bool ccw_above, Normal normal) {
+  const int k = decimal_exponent(eps);
+  Family_scene out = known_side(fam, eps, r);
+  std::string points;
+  const auto [cx, cy] = pushed_support(r, points);
   const Rational px = short_decimal(r, -4000, 4000, 3), py = short_decimal(r, -4000, -2500, 3);
-  const Rational dx = mx / d - px, dy = my / d - py;
+  const Rational dx = cx - px, dy = cy - py;
   const auto [nx, ny] = normal(dx, dy);
   const Rational e = Rational(out.above == ccw_above ? 1 : -1) * Rational(Integer(1), power_of_ten(k));
   const Rational vx = dx - e * dy, vy = dy + e * dx;  // d + s ε rot90(d), rot90(d) = (−dy, dx)
@@ -1044,18 +1051,10 @@ Family_scene push_motion_cone(const Family& fam, double eps, Rng& r) {
 Family_scene push_fence_edge(const Family& fam, double eps, Rng& r) {
   const int k = decimal_exponent(eps);
   Family_scene out = known_side(fam, eps, r);
-  const int n = r.integer(3, 8);
   std::string points;
-  Rational mx = 0, my = 0, d = 0;
-  for (int i = 0; i < n; ++i) {
-    const Rational x = short_decimal(r, -2000, 2000, 3), y = short_decimal(r, -2000, 2000, 3);
-    const Rational f = short_decimal(r, 100, 900, 2), mu = short_decimal(r, 10, 90, 2);
-    mx += mu * f * x, my += mu * f * y, d += mu * f;
-    points += std::string(i ? ", " : "") + "{\"at\": [" + exact_text(x) + ", " + exact_text(y) + "], \"force\": " +
-              exact_text(f) + ", \"mu\": " + exact_text(mu) + "}";
-  }
+  const auto [cx, cy] = pushed_support(r, points);
   const Rational mu(r.integer(1, 4), 4), y0 = short_decimal(r, -4000, -2500, 3), w = short_decimal(r, 1000, 3000, 3);
-  const Rational cx = mx / d, cy = my / d, xs = cx + mu * (cy - y0);  // c − t·e₊ on y = y0: t = cy − y0
+  const Rational xs = cx + mu * (cy - y0);  // c − t·e₊ on y = y0: t = cy − y0
   const Rational s = Rational(out.above ? -1 : 1) * Rational(Integer(1), power_of_ten(k));
   const Rational vx = -mu + s, vy = 1 + s * mu;  // e₊ − s·rot90(e₊), rot90(e₊) = (−1, −μ)
   out.text = "{\"wrenchkit\": 1, \"name\": \"" + std::string(fam.name) + "\", \"support\": {\"points\": [" + points +
