@@ -751,9 +751,12 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
       return r;
     }
   }
-  r.why = first ? std::string("every extreme distribution of F that was decided ") + push_mode_name(first->mode) +
+  const std::string which = tried > kMaxContactCorners ? "the first " + std::to_string(kMaxContactCorners) +
+                                                             " extreme distributions of F"
+                                                       : "the extreme distributions of F";
+  r.why = first ? "each of " + which + " whose mode was certified " + push_mode_name(first->mode) +
                       ", but the mode between them is not certified (it is not convex in the distribution)"
-                : "no extreme distribution of F had a certified contact mode";
+                : "none of " + which + " had a certified contact mode";
   return r;
 }
 
