@@ -27,7 +27,8 @@ std::string vote_sentence(const Push_vote& v) {
 }
 
 // The rotation centres over every distribution (PU-4): per sense the three pieces' half-planes and polygons.
-void write_locus(Json_writer& w, const Push_locus& g) {
+void write_locus(Json_writer& w, const Push_answer& a) {
+  const Push_locus& g = *a.locus;
   w.key("locus");
   if (!g.friction_centre) {
     w.object().member("why", g.why).end_object();
@@ -69,10 +70,17 @@ void write_locus(Json_writer& w, const Push_locus& g) {
   } else {
     w.member("arm_why", g.arm_why);
   }
+  if (a.slowest) {  // a distribution that turns this slowly: the slowest turn's arm is at least arm_lo
+    w.member("arm_lo", a.arm_lo);
+    write_approx(w, "arm_lo", {a.arm_lo});
+    w.key("slowest").object().key("forces").rationals(a.slowest->forces);
+    w.member("mode", push_mode_name(a.slowest->mode)).end_object();
+  }
   w.end_object();
 }
 
-std::string locus_text(const Push_locus& g) {
+std::string locus_text(const Push_answer& a) {
+  const Push_locus& g = *a.locus;
   std::ostringstream s;
   if (!g.friction_centre) return "rotation centres: not answered — " + g.why + "\n";
   s << "rotation centres over every distribution (an outer bound: the body turns about a point of these pieces";
@@ -101,6 +109,10 @@ std::string locus_text(const Push_locus& g) {
       << "turns at least 1 radian per " << number_text(*g.arm_hi) << " the pusher advances along its normal\n";
   else
     s << "  slowest turn: not bounded — " << g.arm_why << "\n";
+  if (a.slowest)
+    s << "  a slow distribution: under the forces " << vec_text(a.slowest->forces) << " it "
+      << push_mode_name(a.slowest->mode) << " about a centre at least " << number_text(a.arm_lo)
+      << " from the normal line — the slowest turn's arm is at least that\n";
   return s.str();
 }
 
@@ -239,7 +251,7 @@ void write_push(Json_writer& w, const Push_item& r) {
     if (c.mode == Push_mode::undecided) w.member("why", c.why);
     w.end_object();
   }
-  if (a.locus) write_locus(w, *a.locus);
+  if (a.locus) write_locus(w, a);
   if (!r.certificate.empty()) w.member("certificate_checked", true).key("certificate").raw(r.certificate);
 }
 
@@ -393,7 +405,7 @@ std::string push_human(const Push_item& r, const std::string& source) {
       }
     }
   }
-  if (a.locus) s << locus_text(*a.locus);
+  if (a.locus) s << locus_text(a);
   if (!r.certificate.empty()) s << "certificate accepted by the independent checker (exact arithmetic)\n";
   return s.str();
 }

@@ -72,6 +72,14 @@ TEST(PushLocus, TheSquareWorkedByHand) {
   EXPECT_GE(*g.arm_hi, H);
   EXPECT_LT(*g.arm_hi, H + Rational(1, 100000));
   EXPECT_FALSE(r.certificate.empty());
+  // the other side (PU-4 §5): the legs' own rate puts their centre at least arm_lo from the normal line — just below
+  // its true distance 1/2 − q.x = 1.86549…
+  ASSERT_TRUE(r.push.slowest);
+  EXPECT_EQ(r.push.slowest->mode, Push_mode::sticks);
+  const Rational arm = Rational(1, 2) - q.x;
+  EXPECT_LE(r.push.arm_lo, arm);
+  EXPECT_GT(r.push.arm_lo, arm - Rational(1, 100000));
+  EXPECT_LE(r.push.arm_lo, *g.arm_hi);
 
   // pushed straight at the centre of friction (v = (−1/2, 1) through c): the sticking motion translates; the votes
   // say "none" (an edge and the velocity through c? no: the velocity alone through c, the edges apart) — no piece
@@ -116,6 +124,9 @@ TEST(PushLocus, TamperedCertificatesAreRefused) {
   refused(R"("cw": null)", R"("cw": null, "ccw": null)", "duplicate");
   refused(R"("mode": "sticks")", R"("mode": "slides left")", "expected \"sticks\"");
   refused(R"("alpha_hi": "559017/500000", "T": "2909923/1000000", )", "", "claimed bounded, but its half-planes recede");
+  refused(R"("arm_lo": "186549/100000")", R"("arm_lo": "2")", "locus.arm_lo: 2 is more than v.n / (|omega| |n|)");
+  refused(R"("slowest": {"forces": ["1", "1", "1", "1"])", R"("slowest": {"forces": ["2", "0", "1", "1"])",
+          "locus.slowest.forces: not the given forces");
 }
 
 // Against the engine's own motion (PU-2) on random known distributions (fixed seed): legs on a grid with random
@@ -125,7 +136,7 @@ TEST(PushLocus, TamperedCertificatesAreRefused) {
 TEST(PushLocus, ContainsTheMotionOfEveryKnownDistribution) {
   std::mt19937_64 rng(20261130);
   std::uniform_int_distribution<int> coord(-4, 4), force(1, 5), count(3, 7), at(-39, 39), vel(-3, 3);
-  int checked[3] = {0, 0, 0}, translating = 0;
+  int checked[3] = {0, 0, 0}, translating = 0, with_arm_lo = 0;
   for (int sc = 0; sc < 400; ++sc) {
     const std::uint64_t seed = rng();
     std::mt19937_64 r(seed);
@@ -189,16 +200,21 @@ TEST(PushLocus, ContainsTheMotionOfEveryKnownDistribution) {
     ASSERT_TRUE(holds(g.side[side].pieces[mode], (*q)[0], (*q)[1], scale))
         << "seed " << seed << ": the centre (" << (*q)[0] << ", " << (*q)[1] << ") of mode " << mode
         << " is outside its piece\n" << test::dump_failure(text, "push_locus");
+    const double arm = std::abs((p.x.get_d() - (*q)[0]) * n.y.get_d() - (p.y.get_d() - (*q)[1]) * n.x.get_d()) /
+                       std::hypot(n.x.get_d(), n.y.get_d());
     if (g.arm_hi) {
-      const double arm = std::abs((p.x.get_d() - (*q)[0]) * n.y.get_d() - (p.y.get_d() - (*q)[1]) * n.x.get_d()) /
-                         std::hypot(n.x.get_d(), n.y.get_d());
       ASSERT_LE(arm, g.arm_hi->get_d() + scale) << "seed " << seed << "\n" << test::dump_failure(text, "push_locus");
+    }
+    if (res.push.slowest) {  // (the one distribution: arm_lo is a bound of its own centre's distance)
+      ASSERT_LE(res.push.arm_lo.get_d(), arm + scale) << "seed " << seed << "\n" << test::dump_failure(text, "push_locus");
+      ++with_arm_lo;
     }
     ++checked[mode];
   }
   // the oracle is not vacuous: every mode met
   EXPECT_GT(checked[0], 50);
   EXPECT_GT(checked[1] + checked[2], 50);
+  EXPECT_GT(with_arm_lo, 100);
   std::printf("centres inside their pieces: %d sticking, %d sliding left, %d sliding right; %d translations\n", checked[0],
               checked[1], checked[2], translating);
 }

@@ -2,6 +2,7 @@
 
 #include "exact/certificates/certificates.h"
 #include "exact/io/input_error.h"
+#include "exact/sliding/sliding.h"
 
 namespace wrenchkit {
 
@@ -41,6 +42,18 @@ Push_item answer_push(std::string_view text, std::string_view source, const Requ
       const Rotation rot = r.push.rotation;
       r.push.locus = push_locus(model, *r.scene.pusher,
                                 {rot == Rotation::ccw || rot == Rotation::undecided, rot == Rotation::cw || rot == Rotation::undecided});
+      if (r.push.locus->friction_centre && (rot == Rotation::ccw || rot == Rotation::cw)) {
+        r.push.slowest = slowest_turn(model, *r.scene.pusher, query.tolerance);
+        if (r.push.slowest) {  // arm_lo ≤ v·n / (|ω|_hi |n|), a short decimal below
+          const Push_contact& k = *r.push.slowest;
+          const bool sticks = k.mode == Push_mode::sticks;
+          const Rational w = std::max(abs(sticks ? k.omega_lo : k.motion_lo), abs(sticks ? k.omega_hi : k.motion_hi));
+          const Pusher& pu = *r.scene.pusher;
+          const Rational vn = dot(pu.velocity, pu.contact.normal);
+          r.push.arm_lo = outward(sqrt_bracket(vn * vn / (w * w * dot(pu.contact.normal, pu.contact.normal)), 64).first, 6,
+                                  false);
+        }
+      }
     }
     if (!request.certify || r.push.by_twin || r.push.rotation == Rotation::undecided) return;
     r.certificate = push_certificate(r.push);

@@ -760,4 +760,28 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
   return r;
 }
 
+std::optional<Push_contact> slowest_turn(const Support_model& model, const Pusher& pusher, const Rational& tolerance) {
+  const Support& s = model.support();
+  if (!s.regions.empty() || model.admissible().unknown.size() > kMaxContactUnknowns) return std::nullopt;
+  const std::vector<std::vector<Rational>> corners =
+      model.known() ? std::vector<std::vector<Rational>>{model.given()} : vertices(s, model.admissible());
+  std::optional<Push_contact> best;
+  Rational best_hi;
+  std::size_t tried = 0;
+  for (const std::vector<Rational>& f : corners) {
+    if (++tried > kMaxSlowestCorners) break;
+    Push_contact k = contact_mode_on(s, f, pusher, tolerance);
+    const bool sticks = k.mode == Push_mode::sticks, slides = (k.mode == Push_mode::slides_left ||
+                                                                k.mode == Push_mode::slides_right) && k.has_motion;
+    if (!sticks && !slides) continue;
+    const Rational lo = sticks ? k.omega_lo : k.motion_lo, hi = sticks ? k.omega_hi : k.motion_hi;
+    if (sgn(lo) == 0 || sgn(lo) != sgn(hi)) continue;  // (a translation, or its sense not certain)
+    const Rational most = std::max(abs(lo), abs(hi));
+    if (best && most >= best_hi) continue;
+    k.forces = f;
+    best = std::move(k), best_hi = most;
+  }
+  return best;
+}
+
 }  // namespace wrenchkit

@@ -229,6 +229,9 @@ struct Push_part {
   };
   bool has_locus = false, has_tip = false, has_arm = false, has_sense[2] = {false, false};
   Q locus_R_hi, locus_alpha_hi, locus_T, arm_hi;
+  // "slowest" (§8.4): a distribution of F with its certified contact mode and rate, and arm_lo
+  std::unique_ptr<Push_part> slowest;
+  Q arm_lo;
   std::vector<Piece> pieces[2];
 };
 
@@ -309,6 +312,8 @@ void check_line_push(const Push_part& p, const Scene& scene, const Limits& lim);
 Q friction_disc(const Scene& scene, const Limits& lim, const std::string& path, Q (&c)[2], std::vector<std::array<Q, 2>>& S);
 Q tip_correction(const Q& R, const Q& d, const Q& alpha);
 void read_locus_member(Reader& r, Push_part& p);  // push_locus.cpp (§8.4): "locus"
+// push.cpp (§8.2): a contact object; `witness`: one of given forces ("forces" required, no "depends")
+void read_contact(Reader& r, Push_part& p, bool witness);
 void check_locus(const Push_part& p, const Scene& scene, const Limits& lim);  // push_locus.cpp (§8.4)
 // lo <= sqrt(s) <= hi for a rational s >= 0, at `bits` (push.cpp; the engine's precision for the same bits)
 void sqrt_bounds(const Q& s, std::size_t bits, Q& lo, Q& hi);

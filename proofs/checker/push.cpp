@@ -383,7 +383,7 @@ void check_contact(const Push_part& c, const Support& s, const Support_witnesses
 }  // namespace
 
 // §8.2's "contact" (or, `witness`, one of a "depends" claim's two distributions with its own contact mode and "forces").
-static void read_contact(Reader& r, Push_part& p, bool witness) {
+void read_contact(Reader& r, Push_part& p, bool witness) {
   p.has_contact = true;
   begin_object(r, "expected an object {\"mode\", \"bits\", \"omega\", \"tangent_omega\"?}");
   std::string_view k;
@@ -601,6 +601,30 @@ void check_push(const Certificate& c, const Scene& scene, const Limits& lim) {
   }
   if (p.has_contact) check_contact(p, s, sw, lim, {px, py}, {nx, ny}, mu, v);
   if (p.has_locus) check_locus(p, scene, lim);  // (on the rotation claimed: the rest of this check proves it)
+  if (p.slowest) {  // §8.4: a distribution of F turning the body at a certified rate: its centre at least arm_lo away
+    const Push_part& w = *p.slowest;
+    if (known) {
+      if (w.witness_forces != given) throw Failure{"locus.slowest.forces: not the given forces"};
+    } else {
+      sw.in_f(w.witness_forces, "locus.slowest.forces");
+    }
+    std::vector<Rho> pts;
+    for (std::size_t i = 0; i < n; ++i) {
+      Point_values scratch;
+      const Point_values& pv = values(s.points[i], lim, scratch);
+      pts.push_back({pv.x, pv.y, Q(pv.mu * w.witness_forces[i])});
+    }
+    if (!s.regions.empty()) throw Failure{"locus.slowest: a distribution of support points (no regions)"};
+    check_contact_on(w, pts, {px, py}, {nx, ny}, mu, v);
+    const bool sticks = w.mode == "sticks", slides = (w.mode == "slides left" || w.mode == "slides right") && w.has_sliding;
+    if (!sticks && !slides) throw Failure{"locus.slowest: a sticking or sliding motion with its rate"};
+    const Q(&om)[2] = sticks ? w.omega : w.motion;
+    if (sgn(om[0]) == 0 || sgn(om[0]) != sgn(om[1])) throw Failure{"locus.slowest: its rate's sense is not certain"};
+    const Q most = std::max(abs(om[0]), abs(om[1])), vn = v[0] * nx + v[1] * ny;
+    if (sgn(p.arm_lo) < 0 || p.arm_lo * p.arm_lo * most * most * (nx * nx + ny * ny) > vn * vn)
+      throw Failure{"locus.arm_lo: " + show(p.arm_lo) + " is more than v.n / (|omega| |n|) of the slowest distribution's "
+                    "centre"};
+  }
   if (p.rotation == "depends") {
     if (!p.has_turns) throw Failure{"missing required key \"turns\" (two distributions that turn the body apart)"};
     if (!p.votes.empty()) throw Failure{"key \"votes\" is not allowed when \"rotation\" is \"depends\""};

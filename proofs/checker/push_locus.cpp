@@ -91,6 +91,11 @@ void read_locus_member(Reader& r, Push_part& p) {
       seen |= 16, p.locus_T = read_rational(r);
     } else if (k == "arm_hi") {
       p.has_arm = true, p.arm_hi = read_rational(r);
+    } else if (k == "arm_lo") {
+      seen |= 32, p.arm_lo = read_rational(r);
+    } else if (k == "slowest") {  // checked in push.cpp with the contact modes (§8.2)
+      seen |= 64;
+      read_contact(r, *(p.slowest = std::make_unique<Push_part>()), true);
     } else if (k == "ccw" || k == "cw") {
       const int s = k == "ccw" ? 0 : 1;
       seen |= s == 0 ? 2 : 4;
@@ -136,6 +141,7 @@ void read_locus_member(Reader& r, Push_part& p) {
   }
   if ((seen & 7) != 7) r.fail("a locus needs \"R_hi\", \"ccw\" and \"cw\"");
   if ((seen & 24) != 0 && (seen & 24) != 24) r.fail("the tip line's bounds are \"alpha_hi\" and \"T\" together");
+  if ((seen & 96) != 0 && (seen & 96) != 96) r.fail("\"arm_lo\" and \"slowest\" go together");
   p.has_tip = (seen & 24) == 24;
 }
 

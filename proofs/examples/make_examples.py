@@ -537,6 +537,9 @@ FENCE_CLOSE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "c
 CONTACT_DEPENDS = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2", "dual_lower": ["-1/2", "0", "0"]}, "votes": [{"lower": "1/2", "dual_lower": ["-1/8", "1/2", "1/8"], "upper": "1/2", "dual_upper": ["1/8", "-1/2", "-1/8"]}, {"lower": "3/2", "dual_lower": ["-3/8", "1/2", "-1/8"], "upper": "3/2", "dual_upper": ["3/8", "-1/2", "1/8"]}, {"lower": "1", "dual_lower": ["-1/4", "1/2", "0"], "upper": "1", "dual_upper": ["1/4", "-1/2", "0"]}], "center": ["0", "0"], "contact": {"mode": "depends", "witnesses": [{"forces": ["2", "0", "2", "0", "0"], "mode": "slides left", "bits": 64, "omega": ["1718065340023205/4503599627370496", "1718065340025457/4503599627370496"], "tangent_omega": ["-3791913694410813/9007199254740992", "-3791913694406309/9007199254740992"], "sliding": {"slip": ["-4486075893447883/144115188075855872", "-4486075893375825/144115188075855872"], "slip_omega": [["7149683455126491/18014398509481984", "7149683455127277/18014398509481984"], ["7149683455123011/18014398509481984", "7149683455123797/18014398509481984"]], "omega": ["7149683455110553168983800199/18014398509481984000000000000", "7149683455139734831016199801/18014398509481984000000000000"]}}, {"forces": ["0", "2", "0", "2", "0"], "mode": "sticks", "bits": 64, "omega": ["6293520118068495/36028797018963968", "6293520118086509/36028797018963968"]}]}}''')
 LOCUS_SQUARE = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2"}, "votes": [{"lower": "-1", "upper": "-1"}, {"lower": "3", "upper": "3"}, {"lower": "3", "upper": "3"}], "center": ["0", "0"], "locus": {"R_hi": "707107/500000", "alpha_hi": "559017/500000", "T": "2909923/1000000", "ccw": [{"mode": "sticks", "bounded": true, "polygon": [["-1136641/500000", "886641/500000"], ["1/12", "-7/12"]]}, {"mode": "slides left", "bounded": true, "polygon": [["-5/4", "3/4"], ["1/12", "-7/12"], ["1/2", "-3/8"], ["1/2", "5/2"]]}, {"mode": "slides right", "bounded": true, "polygon": [["-1636641/500000", "636641/500000"], ["-11/12", "-13/12"], ["1/12", "-7/12"], ["-1136641/500000", "886641/500000"]]}], "cw": null, "arm_hi": "1886641/500000"}}''')
 LOCUS_UNKNOWN = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2", "dual_lower": ["-1/2", "0", "0"]}, "votes": [{"lower": "1/2", "dual_lower": ["-1/8", "1/2", "1/8"], "upper": "1/2", "dual_upper": ["1/8", "-1/2", "-1/8"]}, {"lower": "3/2", "dual_lower": ["-3/8", "1/2", "-1/8"], "upper": "3/2", "dual_upper": ["3/8", "-1/2", "1/8"]}, {"lower": "1", "dual_lower": ["-1/4", "1/2", "0"], "upper": "1", "dual_upper": ["1/4", "-1/2", "0"]}], "center": ["0", "0"], "locus": {"R_hi": "707107/500000", "alpha_hi": "559017/500000", "T": "2909923/1000000", "ccw": [{"mode": "sticks", "bounded": true, "polygon": [["-3909923/500000", "-1"], ["-3/4", "-1"]]}, {"mode": "slides left", "bounded": true, "polygon": [["-3909923/500000", "-1"], ["-3/4", "-1"], ["1/2", "-3/8"], ["1/2", "11/8"], ["-1659923/250000", "-409923/1000000"]]}, {"mode": "slides right", "bounded": true, "polygon": [["-1", "-1"], ["-5/6", "-25/24"], ["-3/4", "-1"]]}], "cw": null, "arm_hi": "4159923/500000"}}''')
+# push_square_unknown --locus with its slow distribution: the legs (0, 2, 0, 2) stick at a rate whose centre is at least
+# arm_lo = 5.72474 from the pusher's normal line x = 1/2 (v.n / (|omega| |n|), omega bracketed by PU-2).
+LOCUS_SLOWEST = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "ccw", "friction": {"lower": "2", "dual_lower": ["-1/2", "0", "0"]}, "votes": [{"lower": "1/2", "dual_lower": ["-1/8", "1/2", "1/8"], "upper": "1/2", "dual_upper": ["1/8", "-1/2", "-1/8"]}, {"lower": "3/2", "dual_lower": ["-3/8", "1/2", "-1/8"], "upper": "3/2", "dual_upper": ["3/8", "-1/2", "1/8"]}, {"lower": "1", "dual_lower": ["-1/4", "1/2", "0"], "upper": "1", "dual_upper": ["1/4", "-1/2", "0"]}], "center": ["0", "0"], "locus": {"R_hi": "707107/500000", "alpha_hi": "559017/500000", "T": "2909923/1000000", "ccw": [{"mode": "sticks", "bounded": true, "polygon": [["-3909923/500000", "-1"], ["-3/4", "-1"]]}, {"mode": "slides left", "bounded": true, "polygon": [["-3909923/500000", "-1"], ["-3/4", "-1"], ["1/2", "-3/8"], ["1/2", "11/8"], ["-1659923/250000", "-409923/1000000"]]}, {"mode": "slides right", "bounded": true, "polygon": [["-1", "-1"], ["-5/6", "-25/24"], ["-3/4", "-1"]]}], "cw": null, "arm_hi": "4159923/500000", "arm_lo": "715593/125000", "slowest": {"forces": ["0", "2", "0", "2"], "mode": "sticks", "bits": 64, "omega": ["6293520118068495/36028797018963968", "6293520118086509/36028797018963968"]}}}''')
 LOCUS_TRANSLATES = json.loads(r'''{"wrenchkit_certificate": 6, "property": "push", "rotation": "none", "friction": {"lower": "2"}, "votes": [{"lower": "0", "upper": "0"}, {"lower": "2", "upper": "2"}, {"lower": "-1", "upper": "-1"}], "center": ["0", "0"], "locus": {"R_hi": "707107/500000", "alpha_hi": "559017/500000", "T": "2909923/1000000", "ccw": null, "cw": null}}''')
 
 
@@ -1083,6 +1086,9 @@ CERTS = [
     ("push_square_unknown", "locus_without_tip_line", "invalid:unbounded|locus.ccw[0]: claimed bounded, but its half-planes recede",
      tamper(tamper(LOCUS_UNKNOWN, ["locus", "T"], None), ["locus", "alpha_hi"], None)),
     ("push_slide", "locus_translates", "valid", LOCUS_TRANSLATES),
+    ("push_square_unknown", "locus_slowest", "valid", LOCUS_SLOWEST),
+    ("push_square_unknown", "locus_arm_lo_too_far", "invalid:arm|locus.arm_lo: 6 is more than v.n / (|omega| |n|)",
+     tamper(LOCUS_SLOWEST, ["locus", "arm_lo"], "6")),
     ("push_square", "wrong_rotation", 'invalid:rotation|rotation: "cw", but votes cw/ccw/ccw (left edge, right edge, velocity; "none" = through c) allowed by the bounds give "ccw"',
      tamper(PUSH_SQUARE, ["rotation"], "cw")),
     ("push_square", "short_bound", "invalid:bound|votes[2].upper: 2 is less than the proven 3",
@@ -2545,10 +2551,31 @@ def verify_push(scene, cert):
             cl = c
         else:
             return "locus"
-        why = verify_locus(cert["locus"], [(q[0], q[1]) for q in pts if q[2] > 0], cl, (px, py), (nx, ny), mu, (vx, vy),
+        loc = dict(cert["locus"])
+        slow, arm_lo = loc.pop("slowest", None), loc.pop("arm_lo", None)
+        if (slow is None) != (arm_lo is None):
+            return "keys"
+        why = verify_locus(loc, [(q[0], q[1]) for q in pts if q[2] > 0], cl, (px, py), (nx, ny), mu, (vx, vy),
                            cert["rotation"])
         if why:
             return why
+        if slow is not None:  # a distribution of F with a certified rate: its centre at least arm_lo from the normal line
+            f = [rational(x) for x in slow.get("forces", [])]
+            if not in_F(f):
+                return "F"
+            why = verify_contact({k: x for k, x in slow.items() if k != "forces"},
+                                 [(q[0], q[1], q[2], fi) for q, fi in zip(pts, f)], True, (px, py), (nx, ny), mu, (vx, vy))
+            if why:
+                return why
+            sticks = slow["mode"] == "sticks"
+            if not sticks and not (slow["mode"] in ("slides left", "slides right") and "sliding" in slow):
+                return "slowest"
+            om = [rational(x) for x in (slow["omega"] if sticks else slow["sliding"]["omega"])]
+            if om[0] == 0 or (om[0] > 0) != (om[1] > 0):
+                return "slowest"
+            fastest, vn, a = max(abs(om[0]), abs(om[1])), vx * nx + vy * ny, rational(arm_lo)
+            if a < 0 or a * a * fastest * fastest * (nx * nx + ny * ny) > vn * vn:
+                return "arm"
     if "contact" in cert and cert["contact"].get("mode") == "depends":  # two distributions of F, modes apart
         cc = cert["contact"]
         if set(cc) != {"mode", "witnesses"} or known or len(cc["witnesses"]) != 2:

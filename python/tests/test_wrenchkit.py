@@ -551,7 +551,8 @@ def test_push_locus():
     stick = g["ccw"][0]
     assert stick["mode"] == "sticks" and stick["bounded"] is True and stick["polygon"][1] == (Fraction(1, 12), Fraction(-7, 12))
     assert [h["why"] for h in stick["halfplanes"]][:2] == ["bisector", "advance"]
-    assert 3 < g["arm_hi"] < 4
+    assert 3 < g["arm_hi"] < 4 and Fraction(186, 100) < g["arm_lo"] < Fraction(187, 100)
+    assert g["slowest"] == {"forces": [1, 1, 1, 1], "mode": "sticks"}
     square["pusher"]["velocity"] = ["-1/2", 1]  # through the centre of friction: it translates
     g = wrenchkit.push(square, locus=True)["locus"]
     assert g["ccw"] is None and g["cw"] is None and "translates" in g["arm_why"]

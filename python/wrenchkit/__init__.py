@@ -356,8 +356,9 @@ def push(scene, *, contact=False, region=False, locus=False):
     locus=True (a point pusher): also "locus": {"ccw", "cw": [three pieces {"mode": "sticks" | "slides left" |
     "slides right", "halfplanes": [{"why", "a", "b"}] (a.q <= b), "bounded", "polygon": [(x, y), ...]}] or None (a
     sense the rotation excludes), "T", "box", "arm_hi" (every piece bounded: the rotation centre is within it of the
-    pusher's normal line) or "arm_why"} — where the body may turn about, for every distribution (PU-4), or {"why"}
-    when the centre of friction moves with the distribution.
+    pusher's normal line) or "arm_why", "arm_lo" and "slowest": {"forces", "mode"} (a distribution whose certified
+    rate puts its centre at least arm_lo away: the slowest turn's arm is in [arm_lo, arm_hi])} — where the body may
+    turn about, for every distribution (PU-4), or {"why"} when the centre of friction moves with the distribution.
     """
     r = _json.loads(_core.push(_scene(scene), contact, region, locus))
     fr = _fractions.Fraction
@@ -388,7 +389,7 @@ def push(scene, *, contact=False, region=False, locus=False):
             g["translations"] = [tuple(fr(x) for x in v) for v in g["translations"]]
     if "locus" in r and "why" not in r["locus"]:
         g = r["locus"]
-        for k in ("R2", "R_hi", "alpha_hi", "T", "arm_hi"):
+        for k in ("R2", "R_hi", "alpha_hi", "T", "arm_hi", "arm_lo"):
             if k in g:
                 g[k] = fr(g[k])
         for k in ("ccw", "cw"):
@@ -397,6 +398,8 @@ def push(scene, *, contact=False, region=False, locus=False):
                     h["a"], h["b"] = tuple(fr(x) for x in h["a"]), fr(h["b"])
                 piece["polygon"] = [tuple(fr(x) for x in v) for v in piece["polygon"]]
         g["box"] = [tuple(fr(x) for x in v) for v in g["box"]]
+        if "slowest" in g:
+            g["slowest"]["forces"] = [fr(x) for x in g["slowest"]["forces"]]
     if r["center_of_friction"] is not None:
         r["center_of_friction"] = tuple(fr(x) for x in r["center_of_friction"])
     for v in r["votes"]:
