@@ -20,6 +20,8 @@
 #include "exact/io/json_writer.h"
 #include "exact/io/outline.h"
 #include "exact/io/scene.h"
+#include "exact/sliding/motion.h"
+#include "exact/sliding/push_locus.h"
 #include "exact/statics/closure.h"
 
 namespace wrenchkit {
@@ -95,7 +97,7 @@ struct Field_tally {
 
 const char* const kFields[] = {"force_closure", "form_closure", "equilibrium", "hold", "motion",
                                "center_of_friction", "power", "power_range", "labels", "epsilon", "rotation",
-                               "contact_mode", "stable_push", "placements"};
+                               "contact_mode", "stable_push", "rotation_centre", "placements"};
 bool is_verdict(const std::string& f) { return f == "force_closure" || f == "form_closure" || f == "equilibrium"; }
 
 // The words of a wrong verdict: unsafe (the answer claims closure, balance, holding or sticking that does not
@@ -111,6 +113,7 @@ const char* unsafe_words(const std::string& f) {
          : f == "rotation"  ? "a rotation sense claimed that does not hold for every distribution"
          : f == "contact_mode" ? "a contact mode claimed that does not hold (sticks where it slides, or the wrong edge)"
          : f == "stable_push" ? "a line pusher's motion claimed stable (or unstable) that is not"
+         : f == "rotation_centre" ? "a rotation centre no distribution can turn the body about (outside the certified bound)"
          : f == "placements" ? "a placement claimed closed that is open"
                             : "falsely closed";
 }
@@ -121,13 +124,14 @@ const char* lost_words(const std::string& f) {
          : f == "rotation"  ? "depends or undecided where the rotation is certain"
          : f == "contact_mode" ? "undecided where the contact mode is certain"
          : f == "stable_push" ? "undecided where the stable push is certain"
+         : f == "rotation_centre" ? "(none: a centre is consistent or impossible)"
          : f == "placements" ? "a placement claimed open that closes"
                             : "falsely open";
 }
 // Fields with a safety split (unsafe / lost): the verdicts, motion, hold and epsilon (across 0).
 bool has_split(const std::string& f) {
   return is_verdict(f) || f == "motion" || f == "hold" || f == "epsilon" || f == "rotation" || f == "contact_mode" ||
-         f == "stable_push" || f == "placements";
+         f == "stable_push" || f == "rotation_centre" || f == "placements";
 }
 
 Rational exact_number(const json::Value& v, const std::string& where) {
@@ -312,7 +316,8 @@ std::vector<Answer> read_jsonl_answers(const std::string& path, const std::strin
       } else if (std::find(std::begin(kFields), std::end(kFields), k) == std::end(kFields)) {
         throw Input_error(where + ": " + json::quote(k) +
                           ": unknown field (known: id, force_closure, form_closure, equilibrium, hold, motion, "
-                          "center_of_friction, power, power_range, labels, epsilon, rotation, contact_mode, stable_push, placements, "
+                          "center_of_friction, power, power_range, labels, epsilon, rotation, contact_mode, stable_push, rotation_centre, "
+                          "placements, "
                           "error; fields "
                           "starting with _ "
                           "are ignored)");
@@ -515,6 +520,7 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
                               : field == "rotation"                                   ? ref.has_push
                               : field == "contact_mode"                               ? ref.has_contact
                               : field == "stable_push"                                ? ref.has_stable
+                              : field == "rotation_centre"                            ? ref.has_push
                               : field == "center_of_friction" || field == "power"     ? ref.limit_surface != nullptr
                               : field == "power_range"                                ? ref.limit_surface != nullptr
                               : field == "epsilon"                                    ? ref.has_quality
@@ -618,6 +624,36 @@ Comparison compare(const Corpus& corpus, const std::vector<Answer>& answers, con
           d.answer = v.text;
           d.unsafe = v.text != "undecided";
           d.kind = d.unsafe ? (v.text == "stable" ? "falsely stable" : "falsely unstable") : "an uncertain stable push";
+          disagree(std::move(d));
+        }
+      } else if (field == "rotation_centre") {
+        // A point pusher's rotation centre [x, y] (a simulation's answer for its own pressure distribution), tested
+        // exactly against the certified outer bound of the centres over every distribution (docs/pushing.md --locus,
+        // PU-4): outside every piece of the senses the certain rotation allows — no admissible distribution turns the
+        // body about it — is unsafe; inside, consistent (counted as agree: the bound cannot say more).
+        if (!ref.has_push) throw Input_error(where + ": scene \"" + a.id + "\" has no pusher on a support (no rotation_centre)");
+        if (v.type != json::Type::array || v.items.size() != 2)
+          throw Input_error(where + ": " + json::text_of(v) + " is not a point [x, y]");
+        const Vec2 q{exact_number(v.items[0], where + "[0]"), exact_number(v.items[1], where + "[1]")};
+        if (ref.rotation.empty() || ref.rotation == "depends") continue;  // (no certain sense: the bound is not given)
+        const Scene scene = read_scene(json::text_of(*ref.scene), Input_limits{}, a.id);
+        if (!scene.pusher || scene.pusher->line()) continue;  // (a line pusher's centres are its stable region)
+        const Push_locus g = push_locus(Support_model(scene), *scene.pusher, {ref.rotation == "ccw", ref.rotation == "cw"});
+        if (!g.friction_centre) continue;
+        count(&Field_tally::compared);
+        bool possible = false;
+        for (const Locus_side& side : g.side)
+          for (const Locus_piece& piece : side.pieces)
+            possible = possible || (side.possible && std::all_of(piece.halfplanes.begin(), piece.halfplanes.end(),
+                                                                 [&](const Locus_halfplane& h) { return dot(h.h.a, q) <= h.h.b; }));
+        if (possible) {
+          count(&Field_tally::agree);
+        } else {
+          Disagreement d;
+          d.reference = ref.rotation == "none" ? "none (the body translates)" : "turns " + ref.rotation + " about a centre in the certified bound";
+          d.answer = json::text_of(v);
+          d.unsafe = true;
+          d.kind = "an impossible rotation centre";
           disagree(std::move(d));
         }
       } else if (field == "motion") {
@@ -846,6 +882,7 @@ std::string distance_text(const Disagreement& d) {
           : d.field == "rotation" ? " (how close a voting line passes the centre of friction is not measured)"
           : d.field == "contact_mode" ? " (how close the pusher's velocity is to a motion-cone edge is not measured)"
           : d.field == "stable_push" ? " (how close the fence's load is to its composite cone's boundary is not measured)"
+          : d.field == "rotation_centre" ? " (how far the centre is from the certified bound is not measured)"
           : d.field == "placements" ? " (each placement decided exactly; how far it is from the region's boundary is not measured)"
                               : " (a value: compared within --rtol/--atol)");
   else if (f.distance)

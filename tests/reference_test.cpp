@@ -935,6 +935,20 @@ TEST(ReferenceScenes, PushInTheCorpusAndCompared) {
   EXPECT_EQ(cm.find("fields")->find("contact_mode")->find("lost")->text, "1");
   r = run("compare '" + (d / "corpus").string() + "' -", "{\"id\": \"legs_depends\", \"contact_mode\": \"depends\"}\n");
   EXPECT_EQ(r.code, 0) << r.out << r.err;
+  // a simulation's rotation centre against the certified bound (PU-4): the legs' own centre near (−1.3655, 0.8655) is
+  // consistent; (5, 5) is no centre any distribution turns the plate about; a centre for the tie that translates is
+  // impossible too
+  r = run("compare --json '" + (d / "corpus").string() + "' -",
+          "{\"id\": \"square_apart\", \"rotation_centre\": [-1.3655, 0.8655]}\n{\"id\": \"plate\", \"rotation_centre\": [5, 5]}\n"
+          "{\"id\": \"square_tie\", \"rotation_centre\": [\"0\", \"-1\"]}\n");
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  const json::Value rc = json::parse(r.out, Input_limits{}, "report");
+  EXPECT_EQ(rc.find("fields")->find("rotation_centre")->find("compared")->text, "3");
+  EXPECT_EQ(rc.find("fields")->find("rotation_centre")->find("agree")->text, "1");
+  EXPECT_EQ(rc.find("fields")->find("rotation_centre")->find("unsafe")->text, "2");
+  r = run("compare '" + (d / "corpus").string() + "' -", "{\"id\": \"plate\", \"rotation_centre\": 5}\n");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("rotation_centre: 5 is not a point [x, y]"), std::string::npos) << r.err;
   r = run("compare '" + (d / "corpus").string() + "' -", "{\"id\": \"plate\", \"rotation\": \"left\"}\n");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("rotation: \"left\" is not \"ccw\""), std::string::npos) << r.err;
