@@ -71,10 +71,10 @@ void write_locus(Json_writer& w, const Push_answer& a) {
     w.member("arm_why", g.arm_why);
   }
   if (a.slowest) {  // a distribution that turns this slowly: the slowest turn's arm is at least arm_lo
-    w.member("arm_lo", a.arm_lo);
-    write_approx(w, "arm_lo", {a.arm_lo});
-    w.key("slowest").object().key("forces").rationals(a.slowest->forces);
-    w.member("mode", push_mode_name(a.slowest->mode)).end_object();
+    w.member("arm_lo", a.slowest->arm_lo);
+    write_approx(w, "arm_lo", {a.slowest->arm_lo});
+    w.key("slowest").object().key("forces").rationals(a.slowest->contact.forces);
+    w.member("mode", push_mode_name(a.slowest->contact.mode)).end_object();
   }
   w.end_object();
 }
@@ -110,8 +110,8 @@ std::string locus_text(const Push_answer& a) {
   else
     s << "  slowest turn: not bounded — " << g.arm_why << "\n";
   if (a.slowest)
-    s << "  a slow distribution: under the forces " << vec_text(a.slowest->forces) << " it "
-      << push_mode_name(a.slowest->mode) << " about a centre at least " << number_text(a.arm_lo)
+    s << "  a slow distribution: under the forces " << vec_text(a.slowest->contact.forces) << " it "
+      << push_mode_name(a.slowest->contact.mode) << " about a centre at least " << number_text(a.slowest->arm_lo)
       << " from the normal line — the slowest turn's arm is at least that\n";
   return s.str();
 }

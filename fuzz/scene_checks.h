@@ -418,10 +418,8 @@ inline bool check_scene_text(std::string_view text) {
       if (e.rotation != wrenchkit::Rotation::undecided) {
         wrenchkit::Push_answer with_contact = e;  // [PU-2] the contact mode's claim goes to the checker too
         with_contact.contact = wrenchkit::push_contact_mode(model, *scene.pusher, wrenchkit::Rational(1, 1000000));
-        const wrenchkit::Rotation r = e.rotation;  // [PU-4] and the rotation centres' pieces
-        with_contact.locus = wrenchkit::push_locus(
-            model, *scene.pusher, {r == wrenchkit::Rotation::ccw || r == wrenchkit::Rotation::undecided,
-                                   r == wrenchkit::Rotation::cw || r == wrenchkit::Rotation::undecided});
+        // [PU-4] and the rotation centres' pieces
+        with_contact.locus = wrenchkit::push_locus(model, *scene.pusher, wrenchkit::senses_left(e.rotation));
         push_certificate = wrenchkit::push_certificate(with_contact);
       }
     } catch (const wrenchkit::Input_error&) {  // no friction under the body: refused, as the command refuses it

@@ -75,11 +75,11 @@ TEST(PushLocus, TheSquareWorkedByHand) {
   // the other side (PU-4 §5): the legs' own rate puts their centre at least arm_lo from the normal line — just below
   // its true distance 1/2 − q.x = 1.86549…
   ASSERT_TRUE(r.push.slowest);
-  EXPECT_EQ(r.push.slowest->mode, Push_mode::sticks);
+  EXPECT_EQ(r.push.slowest->contact.mode, Push_mode::sticks);
   const Rational arm = Rational(1, 2) - q.x;
-  EXPECT_LE(r.push.arm_lo, arm);
-  EXPECT_GT(r.push.arm_lo, arm - Rational(1, 100000));
-  EXPECT_LE(r.push.arm_lo, *g.arm_hi);
+  EXPECT_LE(r.push.slowest->arm_lo, arm);
+  EXPECT_GT(r.push.slowest->arm_lo, arm - Rational(1, 100000));
+  EXPECT_LE(r.push.slowest->arm_lo, *g.arm_hi);
 
   // pushed straight at the centre of friction (v = (−1/2, 1) through c): the sticking motion translates; the votes
   // say "none" (an edge and the velocity through c? no: the velocity alone through c, the edges apart) — no piece
@@ -206,7 +206,7 @@ TEST(PushLocus, ContainsTheMotionOfEveryKnownDistribution) {
       ASSERT_LE(arm, g.arm_hi->get_d() + scale) << "seed " << seed << "\n" << test::dump_failure(text, "push_locus");
     }
     if (res.push.slowest) {  // (the one distribution: arm_lo is a bound of its own centre's distance)
-      ASSERT_LE(res.push.arm_lo.get_d(), arm + scale) << "seed " << seed << "\n" << test::dump_failure(text, "push_locus");
+      ASSERT_LE(res.push.slowest->arm_lo.get_d(), arm + scale) << "seed " << seed << "\n" << test::dump_failure(text, "push_locus");
       ++with_arm_lo;
     }
     ++checked[mode];

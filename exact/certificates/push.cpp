@@ -134,8 +134,8 @@ std::string push_certificate(const Push_answer& a) {
     }
     if (g.arm_hi) w.member("arm_hi", *g.arm_hi);
     if (a.slowest) {  // PU-4 §5: a distribution of F whose certified rate puts its centre at least arm_lo away
-      w.member("arm_lo", a.arm_lo).key("slowest");
-      write_contact(w, *a.slowest);
+      w.member("arm_lo", a.slowest->arm_lo).key("slowest");
+      write_contact(w, a.slowest->contact);
     }
     w.end_object();
   }

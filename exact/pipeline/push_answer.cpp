@@ -2,7 +2,6 @@
 
 #include "exact/certificates/certificates.h"
 #include "exact/io/input_error.h"
-#include "exact/sliding/sliding.h"
 
 namespace wrenchkit {
 
@@ -38,22 +37,11 @@ Push_item answer_push(std::string_view text, std::string_view source, const Requ
     const Mode mode = request.mode == Mode::float_only ? Mode::float_only : request.certify ? Mode::exact : request.mode;
     r.push = decide_push(model, *r.scene.pusher, mode);
     if (query.contact) r.push.contact = push_contact_mode(model, *r.scene.pusher, query.tolerance);
-    if (query.locus) {  // the senses the (certified) rotation leaves
+    if (query.locus) {  // the senses the (certified) rotation leaves; with a certain sense, a slow distribution
       const Rotation rot = r.push.rotation;
-      r.push.locus = push_locus(model, *r.scene.pusher,
-                                {rot == Rotation::ccw || rot == Rotation::undecided, rot == Rotation::cw || rot == Rotation::undecided});
-      if (r.push.locus->friction_centre && (rot == Rotation::ccw || rot == Rotation::cw)) {
-        r.push.slowest = slowest_turn(model, *r.scene.pusher, query.tolerance);
-        if (r.push.slowest) {  // arm_lo ≤ v·n / (|ω|_hi |n|), a short decimal below
-          const Push_contact& k = *r.push.slowest;
-          const bool sticks = k.mode == Push_mode::sticks;
-          const Rational w = std::max(abs(sticks ? k.omega_lo : k.motion_lo), abs(sticks ? k.omega_hi : k.motion_hi));
-          const Pusher& pu = *r.scene.pusher;
-          const Rational vn = dot(pu.velocity, pu.contact.normal);
-          r.push.arm_lo = outward(sqrt_bracket(vn * vn / (w * w * dot(pu.contact.normal, pu.contact.normal)), 64).first, 6,
-                                  false);
-        }
-      }
+      r.push.locus = push_locus(model, *r.scene.pusher, senses_left(rot));
+      if (r.push.locus->friction_centre && (rot == Rotation::ccw || rot == Rotation::cw))
+        r.push.slowest = slowest_turn(model, *r.scene.pusher, query.tolerance, r.push.contact);
     }
     if (!request.certify || r.push.by_twin || r.push.rotation == Rotation::undecided) return;
     r.certificate = push_certificate(r.push);

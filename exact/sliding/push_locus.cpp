@@ -68,7 +68,8 @@ std::vector<Vec2> corners(const std::vector<Locus_halfplane>& hs) {
 }
 
 // Their convex hull, counter-clockwise (Andrew's monotone chain, collinear points dropped); a point or a segment as one
-// or two vertices.
+// or two vertices. (statics' planar_region.h has one for the moment labels, behind the wall between statics and
+// sliding — wrenchkit_sliding links io only —; this one is the few lines the pieces need.)
 std::vector<Vec2> hull(std::vector<Vec2> p) {
   std::sort(p.begin(), p.end(), lexless);
   p.erase(std::unique(p.begin(), p.end(), same), p.end());

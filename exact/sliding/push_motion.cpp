@@ -760,7 +760,8 @@ Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher,
   return r;
 }
 
-std::optional<Push_contact> slowest_turn(const Support_model& model, const Pusher& pusher, const Rational& tolerance) {
+std::optional<Slowest_turn> slowest_turn(const Support_model& model, const Pusher& pusher, const Rational& tolerance,
+                                         const std::optional<Push_contact>& given) {
   const Support& s = model.support();
   if (!s.regions.empty() || model.admissible().unknown.size() > kMaxContactUnknowns) return std::nullopt;
   const std::vector<std::vector<Rational>> corners =
@@ -770,7 +771,7 @@ std::optional<Push_contact> slowest_turn(const Support_model& model, const Pushe
   std::size_t tried = 0;
   for (const std::vector<Rational>& f : corners) {
     if (++tried > kMaxSlowestCorners) break;
-    Push_contact k = contact_mode_on(s, f, pusher, tolerance);
+    Push_contact k = model.known() && given ? *given : contact_mode_on(s, f, pusher, tolerance);
     const bool sticks = k.mode == Push_mode::sticks, slides = (k.mode == Push_mode::slides_left ||
                                                                 k.mode == Push_mode::slides_right) && k.has_motion;
     if (!sticks && !slides) continue;
@@ -781,7 +782,11 @@ std::optional<Push_contact> slowest_turn(const Support_model& model, const Pushe
     k.forces = f;
     best = std::move(k), best_hi = most;
   }
-  return best;
+  if (!best) return std::nullopt;
+  // arm_lo ≤ v·n / (|ω|_hi |n|): the contact advances at v·n whether it sticks or slips (the slip is along rot90 n)
+  const Rational vn = dot(pusher.velocity, pusher.contact.normal);
+  const Rational arm2 = vn * vn / (best_hi * best_hi * dot(pusher.contact.normal, pusher.contact.normal));
+  return Slowest_turn{std::move(*best), outward(sqrt_bracket(arm2, 64).first, 6, false)};
 }
 
 }  // namespace wrenchkit

@@ -115,9 +115,22 @@ constexpr std::size_t kMaxSlowestCorners = 16;
 
 // [PU-4 §5] A distribution of F that turns the body slowly: among the given forces (or up to 16 extreme distributions
 // of F), the one whose certified rotation rate ω (PU-2: sticking or sliding, its sense certain) has the smallest
-// |ω|_hi — with `forces` set. Its rotation centre is at least v·n/(|ω|_hi |n|) from the pusher's normal line: a lower
-// bound of the slowest turn's arm. None for regions, or when no distribution tried has such a rate.
-std::optional<Push_contact> slowest_turn(const Support_model& model, const Pusher& pusher, const Rational& tolerance);
+// |ω|_hi — its `contact`, with `forces` set — and `arm_lo`, a short decimal at most v·n/(|ω|_hi |n|): its rotation
+// centre is at least that far from the pusher's normal line. `given`: the contact mode already found for the given
+// forces (push --contact), reused rather than searched again. None for regions, or when no distribution tried has
+// such a rate.
+struct Slowest_turn {
+  Push_contact contact;
+  Rational arm_lo;
+};
+std::optional<Slowest_turn> slowest_turn(const Support_model& model, const Pusher& pusher, const Rational& tolerance,
+                                         const std::optional<Push_contact>& given = std::nullopt);
+
+// The senses (ccw, cw) a push's rotation leaves for its rotation centres (push_locus): ccw or cw that one, none
+// neither (a translation), undecided both.
+inline std::array<bool, 2> senses_left(Rotation r) {
+  return {r == Rotation::ccw || r == Rotation::undecided, r == Rotation::cw || r == Rotation::undecided};
+}
 Push_contact push_contact_mode(const Support_model& model, const Pusher& pusher, const Rational& tolerance);
 
 // The centre of the body's rotation with velocity u at the point p and rate ω ≠ 0: p + rot90(u)/ω, the point x where
@@ -143,10 +156,9 @@ struct Push_answer {
   std::optional<Stable_push> stable;  // a line pusher (PU-3): is its motion stable
   std::optional<Stable_region> region;  // a line pusher's stable region, when asked (PU-3 §6)
   std::optional<Push_locus> locus;  // a point pusher's rotation centres over every distribution, when asked (PU-4)
-  // with the locus: a distribution that turns the body slowly (slowest_turn) and arm_lo ≤ its centre's distance from the
-  // pusher's normal line — the slowest turn's arm is in [arm_lo, locus->arm_hi]
-  std::optional<Push_contact> slowest;
-  Rational arm_lo;
+  // with the locus: a distribution that turns the body slowly and arm_lo ≤ its centre's distance from the pusher's normal
+  // line (slowest_turn) — the slowest turn's arm is in [arm_lo, locus->arm_hi]
+  std::optional<Slowest_turn> slowest;
 };
 
 // The rotation sense of the body pushed by `pusher` on `model`'s support. Throws Input_error when some distribution

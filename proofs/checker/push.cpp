@@ -351,19 +351,24 @@ void check_contact_on(const Push_part& c, const std::vector<Rho>& pts, const Q (
   }
 }
 
+// The support points with ρ_i = μ_i f_i: the given forces, or `forces` (a distribution, one per point).
+std::vector<Rho> contact_points(const Support& s, const Limits& lim, const std::vector<Q>* forces) {
+  std::vector<Rho> pts;
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    Point_values scratch;
+    const Point_values& pv = values(s.points[i], lim, scratch);
+    pts.push_back({pv.x, pv.y, Q(pv.mu * (forces ? (*forces)[i] : pv.f))});
+  }
+  return pts;
+}
+
 // §8.2: every force given — the contact mode on them; forces not given — "depends": two distributions of F whose
 // certified modes differ, each checked as if its forces were the scene's.
 void check_contact(const Push_part& c, const Support& s, const Support_witnesses& sw, const Limits& lim, const Q (&p)[2],
                    const Q (&n)[2], const Q& mu, const Q (&v)[2]) {
   if (!s.regions.empty()) throw Failure{"contact: the contact mode is claimed for support points (no regions)"};
   const auto on = [&](const Push_part& k, const std::vector<Q>* forces) {
-    std::vector<Rho> pts;
-    for (std::size_t i = 0; i < s.points.size(); ++i) {
-      Point_values scratch;
-      const Point_values& pv = values(s.points[i], lim, scratch);
-      pts.push_back({pv.x, pv.y, Q(pv.mu * (forces ? (*forces)[i] : pv.f))});
-    }
-    check_contact_on(k, pts, p, n, mu, v);
+    check_contact_on(k, contact_points(s, lim, forces), p, n, mu, v);
   };
   if (c.mode != "depends") {
     if (s.unknown != 0)
@@ -608,14 +613,8 @@ void check_push(const Certificate& c, const Scene& scene, const Limits& lim) {
     } else {
       sw.in_f(w.witness_forces, "locus.slowest.forces");
     }
-    std::vector<Rho> pts;
-    for (std::size_t i = 0; i < n; ++i) {
-      Point_values scratch;
-      const Point_values& pv = values(s.points[i], lim, scratch);
-      pts.push_back({pv.x, pv.y, Q(pv.mu * w.witness_forces[i])});
-    }
     if (!s.regions.empty()) throw Failure{"locus.slowest: a distribution of support points (no regions)"};
-    check_contact_on(w, pts, {px, py}, {nx, ny}, mu, v);
+    check_contact_on(w, contact_points(s, lim, &w.witness_forces), {px, py}, {nx, ny}, mu, v);
     const bool sticks = w.mode == "sticks", slides = (w.mode == "slides left" || w.mode == "slides right") && w.has_sliding;
     if (!sticks && !slides) throw Failure{"locus.slowest: a sticking or sliding motion with its rate"};
     const Q(&om)[2] = sticks ? w.omega : w.motion;
